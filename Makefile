@@ -1,0 +1,59 @@
+# Toffee — the two commands of the README, and a few more for developers.
+#   make run    install what is missing, build, open the window (on the emulator)
+#   make test   install what is missing, build, run the whole suite headless
+# Builds go to build/ with Ninja; a second `make` rebuilds only what changed.
+
+BUILD_DIR := build
+PRESET    := default
+
+# The Debian packages the build, the tests and `make run` need (bookworm; Qt 6.4.2).
+DEB_PACKAGES := cmake ninja-build g++ make \
+	qt6-base-dev qt6-base-dev-tools qt6-qpa-plugins qt6-serialport-dev \
+	qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev libqt6svg6 \
+	libgl-dev fonts-dejavu-core xvfb xauth
+
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: all deps configure build run test bench format clean
+
+all: build
+
+deps:
+	@missing=""; \
+	for p in $(DEB_PACKAGES); do \
+		dpkg-query -W -f='$${Status}\n' "$$p" 2>/dev/null | grep -q '^install ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+		echo "toffee: installing Debian packages:$$missing"; \
+		$(SUDO) apt-get update -qq && \
+		$(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(BUILD_DIR)/build.ninja: | deps
+	cmake --preset $(PRESET)
+
+configure: deps $(BUILD_DIR)/build.ninja
+
+build: configure
+	cmake --build --preset $(PRESET)
+
+# With no display (a server, a container) the window opens on a virtual X display instead of failing.
+run: build
+	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then \
+		$(BUILD_DIR)/bin/toffee --emulator resources/examples/example.json; \
+	else \
+		echo "toffee: no display found; opening the window on a virtual X display (xvfb-run). Ctrl-C quits."; \
+		xvfb-run -a $(BUILD_DIR)/bin/toffee --emulator resources/examples/example.json; \
+	fi
+
+test: build
+	ctest --preset $(PRESET) --output-on-failure
+
+bench: build
+	$(BUILD_DIR)/bin/toffee-bench-table
+
+format:
+	git ls-files '*.cpp' '*.h' | xargs clang-format -i
+
+clean:
+	rm -rf $(BUILD_DIR)

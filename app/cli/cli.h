@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QHash>
+#include <QStringList>
+#include <QTextStream>
+
+class QJsonObject;
+
+namespace Toffee::Cli {
+
+enum ExitCode { Success = 0, BadInput = 2, ToolBroken = 3, MachineError = 4, LinkFailure = 5 };
+
+// One parsed command line and where its output goes. With --json, every command prints one JSON object on
+// stdout, a failure included ({"error": message}); messages for people go to stderr either way.
+struct Invocation
+{
+    QString command;
+    QStringList arguments; // positional, after the command
+    QHash<QString, QString> options; // --name value, and --flag with an empty value
+    bool json = false;
+    QTextStream &out;
+    QTextStream &err;
+
+    [[nodiscard]] bool has(const QString &option) const { return options.contains(option); }
+    [[nodiscard]] QString option(const QString &name) const { return options.value(name); }
+};
+
+int run(const QStringList &arguments, QTextStream &out, QTextStream &err);
+int fail(Invocation &call, const QString &message, ExitCode code);
+void printJson(Invocation &call, const QJsonObject &object);
+
+int showTable(Invocation &call);
+int convertTable(Invocation &call);
+
+} // namespace Toffee::Cli

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// toffee-cli show and convert: tool tables, no machine.
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include "cli.h"
+#include "tablefile.h"
+#include "toolvalidation.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee::Cli {
+
+namespace {
+
+std::optional<Units> tblUnits(Invocation &call)
+{
+    if (!call.has(u"units"_s))
+        return Units::Millimetre;
+    return unitsFromSymbol(call.option(u"units"_s));
+}
+
+QJsonValue jsonNumber(double v)
+{
+    return QJsonValue(v);
+}
+
+QJsonObject toolJson(const Tool &tool)
+{
+    QJsonObject o {
+        { u"number"_s, tool.number },
+        { u"pocket"_s, tool.pocket },
+        { u"description"_s, tool.description },
+        { u"length_geometry"_s, jsonNumber(tool.lengthGeometry) },
+        { u"length_wear"_s, jsonNumber(tool.lengthWear) },
+        { u"total_length"_s, jsonNumber(tool.totalLength()) },
+        { u"radius_geometry"_s, jsonNumber(tool.radiusGeometry) },
+        { u"radius_wear"_s, jsonNumber(tool.radiusWear) },
+        { u"measured_tlo"_s, tool.measuredTlo ? QJsonValue(*tool.measuredTlo) : QJsonValue() },
+        { u"measured_at"_s,
+          tool.measuredAt.isValid() ? QJsonValue(tool.measuredAt.toUTC().toString(Qt::ISODateWithMs)) : QJsonValue() },
+        { u"notes"_s, tool.notes },
+    };
+    return o;
+}
+
+} // namespace
+
+int showTable(Invocation &call)
+{
+    if (call.arguments.size() != 1)
+        return fail(call, u"usage: toffee-cli show TABLE"_s, BadInput);
+    const auto units = tblUnits(call);
+    if (!units)
+        return fail(call, u"--units must be mm or in."_s, BadInput);
+    const QString path = call.arguments.front();
+    auto table = loadTableFile(path, {}, *units);
+    if (!table)
+        return fail(call, table.error().text(), BadInput);
+
+    const ToolTable &t = table.value();
+    if (call.json) {
+        QJsonArray tools;
+        for (const Tool &tool : t.tools())
+            tools.append(toolJson(tool));
+        printJson(call, QJsonObject { { u"file"_s, path }, { u"units"_s, unitsSymbol(t.units()) }, { u"tools"_s, tools } });
+        return Success;
+    }
+    auto n = [&t](double v) { return displayNumber(v, t.units()); };
+    call.out << path << ": " << t.size() << (t.size() == 1 ? " tool" : " tools") << ", " << unitsSymbol(t.units())
+             << "\n";
+    call.out << u"%1 %2 %3 %4 %5 %6 %7 %8  %9\n"_s.arg(u"Tool"_s, 7)
+                    .arg(u"Pocket"_s, 6)
+                    .arg(u"Length"_s, 10)
+                    .arg(u"Wear"_s, 9)
+                    .arg(u"Total"_s, 10)
+                    .arg(u"Radius"_s, 9)
+                    .arg(u"R.wear"_s, 8)
+                    .arg(u"TLO"_s, 10)
+                    .arg(u"Description"_s);
+    for (const Tool &tool : t.tools()) {
+        call.out << u"%1 %2 %3 %4 %5 %6 %7 %8  %9\n"_s.arg(u"T"_s + QString::number(tool.number), 7)
+                        .arg(tool.pocket, 6)
+                        .arg(n(tool.lengthGeometry), 10)
+                        .arg(n(tool.lengthWear), 9)
+                        .arg(n(tool.totalLength()), 10)
+                        .arg(n(tool.radiusGeometry), 9)
+                        .arg(n(tool.radiusWear), 8)
+                        .arg(tool.measuredTlo ? n(*tool.measuredTlo) : u"-"_s, 10)
+                        .arg(tool.description);
+    }
+    call.out.flush();
+    return Success;
+}
+
+int convertTable(Invocation &call)
+{
+    if (call.arguments.size() != 2)
+        return fail(call, u"usage: toffee-cli convert IN OUT [--to json|tbl|csv]"_s, BadInput);
+    const auto units = tblUnits(call);
+    if (!units)
+        return fail(call, u"--units must be mm or in."_s, BadInput);
+    const QString in = call.arguments.at(0);
+    const QString out = call.arguments.at(1);
+    const auto format = call.has(u"to"_s) ? formatFromName(call.option(u"to"_s)) : formatForPath(out);
+    if (!format)
+        return fail(call,
+                    call.has(u"to"_s) ? u"--to must be json, tbl or csv."_s
+                                      : u"%1: cannot tell the format from the name; add --to json|tbl|csv."_s.arg(out),
+                    BadInput);
+    auto table = loadTableFile(in, {}, *units);
+    if (!table)
+        return fail(call, table.error().text(), BadInput);
+    const QStringList losses = formatLosses(table.value(), *format);
+    if (auto r = saveTableFile(out, table.value(), *format); !r)
+        return fail(call, r.error().text(), BadInput);
+    for (const QString &loss : losses)
+        call.err << "toffee-cli: warning: " << loss << Qt::endl;
+    if (call.json) {
+        printJson(call, QJsonObject { { u"input"_s, in },
+                                      { u"output"_s, out },
+                                      { u"format"_s, formatSuffix(*format) },
+                                      { u"tools"_s, int(table.value().size()) },
+                                      { u"warnings"_s, QJsonArray::fromStringList(losses) } });
+    } else {
+        call.out << "wrote " << table.value().size() << " tools to " << out << " (" << formatName(*format) << ")"
+                 << Qt::endl;
+    }
+    return Success;
+}
+
+} // namespace Toffee::Cli

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// LinuxCNC tool.tbl: `T<n> P<pocket> [X..W <float>] [D<dia>] [I<front>] [J<back>] [Q<0-9>] [;comment]`.
+// T and P are required, lines starting with ';' are ignored, any other token makes the line invalid.
+// Z is the tool length and D the diameter; the table has no wear, TLO or notes columns.
+#include "tablefile.h"
+
+#include <cmath>
+#include <cstring>
+
+#include <QCoreApplication>
+#include <QHash>
+
+#include "textparsing.h"
+#include "toolvalidation.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("Toffee::LinuxCncFormat", text);
+}
+
+bool isSpace(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+
+// The fields Toffee keeps verbatim, in the order LinuxCNC writes them.
+constexpr char kExtraLetters[] = "XYABCUVWIJQ";
+
+Result<Tool> parseLine(QByteArrayView line)
+{
+    QByteArrayView fields = line;
+    QString comment;
+    if (const qsizetype semicolon = line.indexOf(';'); semicolon >= 0) {
+        fields = line.first(semicolon);
+        const auto text = decodeUtf8(line.sliced(semicolon + 1));
+        if (!text)
+            return Error { tr("the comment is not valid UTF-8 text.") };
+        comment = text->trimmed();
+    }
+
+    std::optional<qint64> number;
+    std::optional<qint64> pocket;
+    std::optional<double> z;
+    std::optional<double> diameter;
+    std::optional<double> extra[sizeof kExtraLetters - 1];
+    QByteArray seen;
+
+    qsizetype i = 0;
+    while (i < fields.size()) {
+        while (i < fields.size() && isSpace(fields.at(i)))
+            ++i;
+        if (i >= fields.size())
+            break;
+        qsizetype end = i;
+        while (end < fields.size() && !isSpace(fields.at(end)))
+            ++end;
+        const QByteArrayView token = fields.sliced(i, end - i);
+        i = end;
+
+        const char letter = char(QChar::toUpper(uchar(token.front())));
+        const QByteArrayView value = token.sliced(1);
+        const QString tokenText = QString::fromUtf8(token);
+        if (seen.contains(letter))
+            return Error { tr("\"%1\": the field %2 appears twice.").arg(tokenText, QChar::fromLatin1(letter)) };
+        seen += letter;
+        if (letter == 'T' || letter == 'P' || letter == 'Q') {
+            const auto n = parseInteger(value);
+            if (!n)
+                return Error { tr("\"%1\": %2 needs a whole number.").arg(tokenText, QChar::fromLatin1(letter)) };
+            if (letter == 'T')
+                number = n;
+            else if (letter == 'P')
+                pocket = n;
+            else if (*n < 0 || *n > 9)
+                return Error { tr("\"%1\": the orientation Q must be 0 to 9.").arg(tokenText) };
+            else
+                extra[std::strchr(kExtraLetters, 'Q') - kExtraLetters] = double(*n);
+            continue;
+        }
+        const char *slot = letter ? std::strchr(kExtraLetters, letter) : nullptr;
+        if (letter != 'Z' && letter != 'D' && !slot)
+            return Error { tr("\"%1\" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, "
+                              "J, Q and a ;comment.")
+                               .arg(tokenText) };
+        const auto v = parseDecimal(value);
+        if (!v)
+            return Error { tr("\"%1\": %2 needs a number.").arg(tokenText, QChar::fromLatin1(letter)) };
+        if (letter == 'Z')
+            z = v;
+        else if (letter == 'D')
+            diameter = v;
+        else
+            extra[slot - kExtraLetters] = v;
+    }
+
+    if (!number)
+        return Error { tr("the line has no tool number (T)."), 0 };
+    if (!pocket)
+        return Error { tr("T%1 has no pocket (P).").arg(*number) };
+    if (*number < Limits::kMinToolNumber || *number > Limits::kMaxToolNumber)
+        return Error { tr("tool number %1 is out of range; use %2 to %3.")
+                           .arg(*number)
+                           .arg(Limits::kMinToolNumber)
+                           .arg(Limits::kMaxToolNumber) };
+    if (*pocket < Limits::kMinPocket || *pocket > Limits::kMaxPocket)
+        return Error { tr("T%1: pocket %2 is out of range; use %3 to %4.")
+                           .arg(*number)
+                           .arg(*pocket)
+                           .arg(Limits::kMinPocket)
+                           .arg(Limits::kMaxPocket) };
+
+    Tool tool;
+    tool.number = int(*number);
+    tool.pocket = int(*pocket);
+    tool.lengthGeometry = z.value_or(0.0);
+    tool.radiusGeometry = diameter.value_or(0.0) / 2.0;
+    tool.description = comment;
+    QStringList kept;
+    for (size_t k = 0; k < sizeof kExtraLetters - 1; ++k) {
+        if (extra[k]) {
+            const char letter = kExtraLetters[k];
+            kept << QChar::fromLatin1(letter)
+                    + (letter == 'Q' ? QString::number(int(*extra[k])) : formatNumber(*extra[k]));
+        }
+    }
+    tool.linuxCncExtra = kept.join(u' ');
+    return tool;
+}
+
+// Folding wear into geometry can leave binary noise (100 - 0.1); LinuxCNC works in 1e-6 steps anyway.
+QString folded(double geometry, double wear)
+{
+    if (wear == 0.0)
+        return formatNumber(geometry);
+    return formatNumber(std::round((geometry + wear) * 1e6) / 1e6);
+}
+
+} // namespace
+
+Result<ToolTable> readLinuxCncTable(const QByteArray &data, Units units)
+{
+    QList<Tool> tools;
+    QList<int> lines;
+    QHash<int, int> firstLine;
+    const QByteArrayView all(data);
+    qsizetype start = 0;
+    int lineNumber = 0;
+    while (start < all.size()) {
+        qsizetype end = all.indexOf('\n', start);
+        if (end < 0)
+            end = all.size();
+        const QByteArrayView line = all.sliced(start, end - start).trimmed();
+        start = end + 1;
+        ++lineNumber;
+        if (line.isEmpty() || line.front() == ';')
+            continue;
+        if (line.contains('\0'))
+            return Error { tr("the file holds binary data; it is not a LinuxCNC tool table."), lineNumber };
+        auto tool = parseLine(line);
+        if (!tool)
+            return Error { tool.error().message, lineNumber };
+        if (const int previous = firstLine.value(tool.value().number); previous > 0)
+            return Error { tr("tool T%1 is already defined on line %2; tool numbers must be unique.")
+                               .arg(tool.value().number)
+                               .arg(previous),
+                           lineNumber };
+        firstLine.insert(tool.value().number, lineNumber);
+        tools.append(tool.takeValue());
+        lines.append(lineNumber);
+    }
+    qsizetype bad = -1;
+    auto table = ToolTable::fromTools(std::move(tools), units, &bad);
+    if (!table)
+        return Error { table.error().message, bad >= 0 ? lines.at(bad) : 0 };
+    return table;
+}
+
+QByteArray writeLinuxCncTable(const ToolTable &table)
+{
+    QByteArray out;
+    out.reserve(table.size() * 48);
+    for (const Tool &tool : table.tools()) {
+        QString line = u"T"_s + QString::number(tool.number) + u" P"_s + QString::number(tool.pocket) + u" Z"_s
+            + folded(tool.lengthGeometry, tool.lengthWear);
+        const double radius = tool.radiusGeometry + tool.radiusWear;
+        if (radius != 0.0)
+            line += u" D"_s + folded(2.0 * tool.radiusGeometry, 2.0 * tool.radiusWear);
+        if (!tool.linuxCncExtra.isEmpty())
+            line += u' ' + tool.linuxCncExtra;
+        if (!tool.description.isEmpty())
+            line += u" ;"_s + tool.description;
+        out += line.toUtf8();
+        out += '\n';
+    }
+    return out;
+}
+
+} // namespace Toffee

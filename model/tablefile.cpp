@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "tablefile.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+constexpr qint64 kMaxFileBytes = 256LL * 1024 * 1024;
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("Toffee::TableFile", text);
+}
+
+} // namespace
+
+std::optional<TableFormat> formatForPath(const QString &path)
+{
+    return formatFromName(QFileInfo(path).suffix());
+}
+
+std::optional<TableFormat> formatFromName(QStringView name)
+{
+    const QString n = name.toString().toLower();
+    if (n == u"json")
+        return TableFormat::Json;
+    if (n == u"tbl" || n == u"linuxcnc")
+        return TableFormat::LinuxCnc;
+    if (n == u"csv")
+        return TableFormat::Csv;
+    return std::nullopt;
+}
+
+QString formatName(TableFormat format)
+{
+    switch (format) {
+    case TableFormat::Json:
+        return tr("Toffee tool table (JSON)");
+    case TableFormat::LinuxCnc:
+        return tr("LinuxCNC tool table");
+    case TableFormat::Csv:
+        return tr("CSV spreadsheet");
+    }
+    return {};
+}
+
+QString formatSuffix(TableFormat format)
+{
+    switch (format) {
+    case TableFormat::Json:
+        return u"json"_s;
+    case TableFormat::LinuxCnc:
+        return u"tbl"_s;
+    case TableFormat::Csv:
+        return u"csv"_s;
+    }
+    return {};
+}
+
+Result<ToolTable> readTable(const QByteArray &data, TableFormat format, Units tblUnits)
+{
+    switch (format) {
+    case TableFormat::Json:
+        return readJsonTable(data);
+    case TableFormat::LinuxCnc:
+        return readLinuxCncTable(data, tblUnits);
+    case TableFormat::Csv:
+        return readCsvTable(data);
+    }
+    return Error { tr("unknown table format.") };
+}
+
+QByteArray writeTable(const ToolTable &table, TableFormat format)
+{
+    switch (format) {
+    case TableFormat::Json:
+        return writeJsonTable(table);
+    case TableFormat::LinuxCnc:
+        return writeLinuxCncTable(table);
+    case TableFormat::Csv:
+        return writeCsvTable(table);
+    }
+    return {};
+}
+
+QStringList formatLosses(const ToolTable &table, TableFormat format)
+{
+    if (format != TableFormat::LinuxCnc)
+        return {};
+    bool wear = false;
+    bool tlo = false;
+    bool notes = false;
+    for (const Tool &tool : table.tools()) {
+        wear = wear || tool.lengthWear != 0.0 || tool.radiusWear != 0.0;
+        tlo = tlo || tool.measuredTlo.has_value();
+        notes = notes || !tool.notes.isEmpty();
+    }
+    QStringList losses;
+    if (wear)
+        losses << tr("A LinuxCNC table has no wear columns: wear is added into the length and diameter.");
+    if (tlo)
+        losses << tr("A LinuxCNC table has no place for measured TLOs: they are not saved.");
+    if (notes)
+        losses << tr("A LinuxCNC table has no place for notes: they are not saved.");
+    if (table.units() == Units::Inch)
+        losses << tr("A LinuxCNC table does not record its units: the numbers are written in inches.");
+    return losses;
+}
+
+Result<ToolTable> loadTableFile(const QString &path, std::optional<TableFormat> format, Units tblUnits)
+{
+    if (!format)
+        format = formatForPath(path);
+    if (!format)
+        return Error { tr("%1: unknown file type; use a .json, .tbl or .csv file.").arg(path) };
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return Error { tr("%1: cannot open: %2").arg(path, file.errorString()) };
+    if (file.size() > kMaxFileBytes)
+        return Error { tr("%1: the file is %2 MB, too large to be a tool table.").arg(path).arg(file.size() >> 20) };
+    const QByteArray data = file.readAll();
+    if (file.error() != QFileDevice::NoError)
+        return Error { tr("%1: cannot read: %2").arg(path, file.errorString()) };
+    auto result = readTable(data, *format, tblUnits);
+    if (!result)
+        return Error { path + u": "_s + result.error().text(), result.error().line };
+    return result;
+}
+
+Result<void> saveTableFile(const QString &path, const ToolTable &table, TableFormat format)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return Error { tr("%1: cannot write: %2").arg(path, file.errorString()) };
+    const QByteArray data = writeTable(table, format);
+    if (file.write(data) != data.size() || !file.commit())
+        return Error { tr("%1: saving failed, the old file is unchanged: %2").arg(path, file.errorString()) };
+    return {};
+}
+
+} // namespace Toffee

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <optional>
+
+#include <QByteArray>
+#include <QStringList>
+
+#include "result.h"
+#include "tooltable.h"
+
+namespace Toffee {
+
+enum class TableFormat { Json, LinuxCnc, Csv };
+
+[[nodiscard]] std::optional<TableFormat> formatForPath(const QString &path); // by suffix: .json .tbl .csv
+[[nodiscard]] std::optional<TableFormat> formatFromName(QStringView name); // json, tbl, csv
+[[nodiscard]] QString formatName(TableFormat format);
+[[nodiscard]] QString formatSuffix(TableFormat format);
+
+// A reader either returns the whole table or an Error naming the line; it never returns part of a file.
+// LinuxCNC tables carry no units: `tblUnits` says what their numbers are.
+[[nodiscard]] Result<ToolTable> readTable(const QByteArray &data, TableFormat format,
+                                          Units tblUnits = Units::Millimetre);
+[[nodiscard]] QByteArray writeTable(const ToolTable &table, TableFormat format);
+
+// What `format` cannot hold of `table`, one sentence each, for a warning before a lossy save.
+[[nodiscard]] QStringList formatLosses(const ToolTable &table, TableFormat format);
+
+[[nodiscard]] Result<ToolTable> loadTableFile(const QString &path, std::optional<TableFormat> format = {},
+                                              Units tblUnits = Units::Millimetre);
+// Written through QSaveFile: a crash or a full disk leaves the old file whole.
+[[nodiscard]] Result<void> saveTableFile(const QString &path, const ToolTable &table, TableFormat format);
+
+// The individual formats, for tests and benchmarks.
+[[nodiscard]] Result<ToolTable> readJsonTable(const QByteArray &data);
+[[nodiscard]] QByteArray writeJsonTable(const ToolTable &table);
+[[nodiscard]] Result<ToolTable> readLinuxCncTable(const QByteArray &data, Units units);
+[[nodiscard]] QByteArray writeLinuxCncTable(const ToolTable &table);
+[[nodiscard]] Result<ToolTable> readCsvTable(const QByteArray &data);
+[[nodiscard]] QByteArray writeCsvTable(const ToolTable &table);
+
+} // namespace Toffee

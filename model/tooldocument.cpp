@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "tooldocument.h"
+
+#include "toolcommands.h"
+#include "toolvalidation.h"
+
+namespace Toffee {
+
+ToolDocument::ToolDocument(QObject *parent)
+    : QObject(parent)
+{
+    m_model.setEditHandler([this](const Tool &before, const Tool &after) {
+        m_undoStack.push(new EditToolCommand(&m_model, before, after));
+    });
+    connect(&m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { Q_EMIT modifiedChanged(!clean); });
+}
+
+void ToolDocument::setFile(const QString &path, TableFormat format)
+{
+    m_fileFormat = format;
+    if (m_filePath != path) {
+        m_filePath = path;
+        Q_EMIT filePathChanged(path);
+    }
+}
+
+void ToolDocument::newTable(Units units)
+{
+    m_undoStack.clear();
+    m_model.resetTable(ToolTable(units));
+    setFile({}, TableFormat::Json);
+}
+
+Result<void> ToolDocument::open(const QString &path, std::optional<TableFormat> format, Units tblUnits)
+{
+    if (!format)
+        format = formatForPath(path);
+    auto table = loadTableFile(path, format, tblUnits);
+    if (!table)
+        return table.error();
+    m_undoStack.clear();
+    m_model.resetTable(table.value());
+    setFile(path, *format);
+    return {};
+}
+
+Result<void> ToolDocument::save()
+{
+    if (m_filePath.isEmpty())
+        return Error { tr("This table has no file yet; use Save As.") };
+    return saveAs(m_filePath, m_fileFormat);
+}
+
+Result<void> ToolDocument::saveAs(const QString &path, TableFormat format)
+{
+    if (auto r = saveTableFile(path, table(), format); !r)
+        return r;
+    setFile(path, format);
+    m_undoStack.setClean();
+    return {};
+}
+
+Result<void> ToolDocument::exportTo(const QString &path, TableFormat format) const
+{
+    return saveTableFile(path, table(), format);
+}
+
+Result<int> ToolDocument::importFrom(const QString &path, std::optional<TableFormat> format, Units tblUnits)
+{
+    auto imported = loadTableFile(path, format, tblUnits);
+    if (!imported)
+        return imported.error();
+    if (imported.value().units() != table().units() && !imported.value().isEmpty())
+        return Error { tr("%1 is in %2 but this table is in %3; Toffee does not convert units on import.")
+                           .arg(path, unitsSymbol(imported.value().units()), unitsSymbol(table().units())) };
+    ToolTable merged = table();
+    for (const Tool &tool : imported.value().tools()) {
+        auto r = merged.contains(tool.number) ? merged.replace(tool.number, tool) : merged.insert(tool);
+        if (!r)
+            return r.error();
+    }
+    const int count = int(imported.value().size());
+    m_undoStack.push(new ReplaceTableCommand(&m_model, table(), merged, tr("Import %1 tools").arg(count)));
+    return count;
+}
+
+Result<void> ToolDocument::addTool(const Tool &tool)
+{
+    if (auto r = table().checkInsert(tool); !r)
+        return r;
+    m_undoStack.push(new AddToolCommand(&m_model, tool));
+    return {};
+}
+
+Result<void> ToolDocument::editTool(int number, const Tool &after)
+{
+    if (auto r = table().checkReplace(number, after); !r)
+        return r;
+    const Tool before = *table().find(number);
+    if (before != after)
+        m_undoStack.push(new EditToolCommand(&m_model, before, after));
+    return {};
+}
+
+void ToolDocument::removeTools(const QList<int> &numbers)
+{
+    QList<Tool> tools;
+    for (int number : numbers) {
+        if (const Tool *tool = table().find(number))
+            tools.append(*tool);
+    }
+    if (!tools.isEmpty())
+        m_undoStack.push(new RemoveToolsCommand(&m_model, tools));
+}
+
+Tool ToolDocument::newTool() const
+{
+    Tool tool;
+    tool.number = table().nextFreeNumber(1);
+    tool.pocket = defaultPocket(tool.number);
+    return tool;
+}
+
+} // namespace Toffee

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QObject>
+#include <QUndoStack>
+
+#include "tablefile.h"
+#include "tooltablemodel.h"
+
+namespace Toffee {
+
+// An open tool table: the model, its file and format, and the one undo stack every edit goes through.
+// Saved means "the undo stack is at its clean index".
+class ToolDocument final : public QObject
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(ToolDocument)
+
+public:
+    explicit ToolDocument(QObject *parent = nullptr);
+
+    [[nodiscard]] ToolTableModel *model() { return &m_model; }
+    [[nodiscard]] QUndoStack *undoStack() { return &m_undoStack; }
+    [[nodiscard]] const ToolTable &table() const { return m_model.table(); }
+    [[nodiscard]] QString filePath() const { return m_filePath; }
+    [[nodiscard]] TableFormat fileFormat() const { return m_fileFormat; }
+    [[nodiscard]] bool isModified() const { return !m_undoStack.isClean(); }
+
+    void newTable(Units units = Units::Millimetre);
+    Result<void> open(const QString &path, std::optional<TableFormat> format = {}, Units tblUnits = Units::Millimetre);
+    Result<void> save();
+    Result<void> saveAs(const QString &path, TableFormat format);
+    // Writes a copy; the document keeps its own file and its modified state.
+    [[nodiscard]] Result<void> exportTo(const QString &path, TableFormat format) const;
+    // Merges another file's tools in as one undoable step: same numbers are replaced, new ones added.
+    // Returns how many tools it brought in.
+    Result<int> importFrom(const QString &path, std::optional<TableFormat> format = {},
+                           Units tblUnits = Units::Millimetre);
+
+    Result<void> addTool(const Tool &tool);
+    Result<void> editTool(int number, const Tool &after);
+    void removeTools(const QList<int> &numbers);
+    // A new tool with the next free number and its default pocket.
+    [[nodiscard]] Tool newTool() const;
+
+Q_SIGNALS:
+    void modifiedChanged(bool modified);
+    void filePathChanged(const QString &path);
+
+private:
+    void setFile(const QString &path, TableFormat format);
+
+    ToolTableModel m_model;
+    QUndoStack m_undoStack;
+    QString m_filePath;
+    TableFormat m_fileFormat = TableFormat::Json;
+};
+
+} // namespace Toffee

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "tooltable.h"
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+#include <QCoreApplication>
+
+#include "toolvalidation.h"
+
+namespace Toffee {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("Toffee::ToolTable", text);
+}
+
+Error duplicateError(int number)
+{
+    return Error { tr("tool number %1 is already in the table; tool numbers must be unique.").arg(number) };
+}
+
+} // namespace
+
+Result<ToolTable> ToolTable::fromTools(QList<Tool> tools, Units units, qsizetype *badIndex)
+{
+    for (qsizetype i = 0; i < tools.size(); ++i) {
+        if (auto r = validateTool(tools.at(i), units); !r) {
+            if (badIndex)
+                *badIndex = i;
+            return r.error();
+        }
+    }
+    // Sort a permutation, not the tools, so a duplicate can be reported at its place in the input.
+    std::vector<qsizetype> order(tools.size());
+    std::iota(order.begin(), order.end(), qsizetype(0));
+    std::stable_sort(order.begin(), order.end(),
+                     [&tools](qsizetype a, qsizetype b) { return tools.at(a).number < tools.at(b).number; });
+    for (size_t k = 1; k < order.size(); ++k) {
+        if (tools.at(order[k]).number == tools.at(order[k - 1]).number) {
+            if (badIndex)
+                *badIndex = order[k];
+            return duplicateError(tools.at(order[k]).number);
+        }
+    }
+    ToolTable table(units);
+    table.m_tools.reserve(tools.size());
+    for (qsizetype i : order)
+        table.m_tools.append(std::move(tools[i]));
+    return table;
+}
+
+qsizetype ToolTable::insertionIndex(int number) const
+{
+    const auto it = std::lower_bound(m_tools.cbegin(), m_tools.cend(), number,
+                                     [](const Tool &t, int n) { return t.number < n; });
+    return it - m_tools.cbegin();
+}
+
+qsizetype ToolTable::indexOf(int number) const
+{
+    const qsizetype i = insertionIndex(number);
+    return i < m_tools.size() && m_tools.at(i).number == number ? i : -1;
+}
+
+const Tool *ToolTable::find(int number) const
+{
+    const qsizetype i = indexOf(number);
+    return i < 0 ? nullptr : &m_tools.at(i);
+}
+
+int ToolTable::nextFreeNumber(int from) const
+{
+    int candidate = std::max(from, 0);
+    for (qsizetype i = insertionIndex(candidate); i < m_tools.size() && m_tools.at(i).number == candidate; ++i)
+        ++candidate;
+    return candidate <= Limits::kMaxToolNumber ? candidate : -1;
+}
+
+Result<void> ToolTable::checkInsert(const Tool &tool) const
+{
+    if (auto r = validateTool(tool, m_units); !r)
+        return r;
+    if (contains(tool.number))
+        return duplicateError(tool.number);
+    return {};
+}
+
+Result<void> ToolTable::checkReplace(int number, const Tool &tool) const
+{
+    if (!contains(number))
+        return Error { tr("there is no tool %1 in the table.").arg(number) };
+    if (auto r = validateTool(tool, m_units); !r)
+        return r;
+    if (tool.number != number && contains(tool.number))
+        return duplicateError(tool.number);
+    return {};
+}
+
+Result<void> ToolTable::insert(const Tool &tool)
+{
+    if (auto r = checkInsert(tool); !r)
+        return r;
+    m_tools.insert(insertionIndex(tool.number), tool);
+    return {};
+}
+
+Result<void> ToolTable::replace(int number, const Tool &tool)
+{
+    if (auto r = checkReplace(number, tool); !r)
+        return r;
+    const qsizetype i = indexOf(number);
+    if (tool.number == number) {
+        m_tools[i] = tool;
+        return {};
+    }
+    m_tools.removeAt(i);
+    m_tools.insert(insertionIndex(tool.number), tool);
+    return {};
+}
+
+bool ToolTable::remove(int number)
+{
+    const qsizetype i = indexOf(number);
+    if (i < 0)
+        return false;
+    m_tools.removeAt(i);
+    return true;
+}
+
+} // namespace Toffee

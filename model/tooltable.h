@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QList>
+
+#include "result.h"
+#include "tool.h"
+#include "units.h"
+
+namespace Toffee {
+
+// The tool table as a value: tools kept sorted by number, numbers unique, every value valid.
+// Every mutator validates first; a refused change leaves the table exactly as it was.
+class ToolTable
+{
+public:
+    ToolTable() = default;
+    explicit ToolTable(Units units)
+        : m_units(units)
+    {
+    }
+
+    // Builds a table from tools in any order; the first invalid or duplicate tool refuses the lot,
+    // and `badIndex` (when given) says which of `tools` it was, so a reader can name its line.
+    [[nodiscard]] static Result<ToolTable> fromTools(QList<Tool> tools, Units units, qsizetype *badIndex = nullptr);
+
+    [[nodiscard]] Units units() const { return m_units; }
+    [[nodiscard]] const QList<Tool> &tools() const { return m_tools; }
+    [[nodiscard]] qsizetype size() const { return m_tools.size(); }
+    [[nodiscard]] bool isEmpty() const { return m_tools.isEmpty(); }
+    [[nodiscard]] const Tool &at(qsizetype index) const { return m_tools.at(index); }
+
+    // Index of the tool with this number, or -1.
+    [[nodiscard]] qsizetype indexOf(int number) const;
+    [[nodiscard]] bool contains(int number) const { return indexOf(number) >= 0; }
+    [[nodiscard]] const Tool *find(int number) const;
+    // The index a tool with this number has, or would have once inserted.
+    [[nodiscard]] qsizetype insertionIndex(int number) const;
+    // The lowest unused tool number from `from` up, or -1 when the range is full.
+    [[nodiscard]] int nextFreeNumber(int from = 1) const;
+
+    // Whether insert / replace would succeed, without changing anything.
+    [[nodiscard]] Result<void> checkInsert(const Tool &tool) const;
+    [[nodiscard]] Result<void> checkReplace(int number, const Tool &tool) const;
+
+    Result<void> insert(const Tool &tool);
+    // Replaces the tool numbered `number` by `tool` (which may carry a new, unused number).
+    Result<void> replace(int number, const Tool &tool);
+    bool remove(int number);
+
+    friend bool operator==(const ToolTable &, const ToolTable &) = default;
+
+private:
+    Units m_units = Units::Millimetre;
+    QList<Tool> m_tools;
+};
+
+} // namespace Toffee

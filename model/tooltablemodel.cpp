@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "tooltablemodel.h"
+
+#include "textparsing.h"
+#include "toolvalidation.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+ToolTableModel::ToolTableModel(QObject *parent)
+    : QAbstractTableModel(parent)
+{
+}
+
+int ToolTableModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(m_table.size());
+}
+
+int ToolTableModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QString ToolTableModel::formatLength(double value) const
+{
+    return displayNumber(value, m_table.units());
+}
+
+QVariant ToolTableModel::data(const QModelIndex &index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return {};
+    const Tool &tool = m_table.at(index.row());
+    if (role == ToolNumberRole)
+        return tool.number;
+    if (role == Qt::TextAlignmentRole) {
+        const bool text = index.column() == DescriptionColumn || index.column() == NotesColumn;
+        return QVariant::fromValue(Qt::AlignVCenter | (text ? Qt::AlignLeft : Qt::AlignRight));
+    }
+    if (role != Qt::DisplayRole && role != Qt::EditRole && role != SortRole && role != Qt::ToolTipRole)
+        return {};
+
+    const bool display = role == Qt::DisplayRole || role == Qt::ToolTipRole;
+    auto length = [&](double v) -> QVariant { return display ? QVariant(formatLength(v)) : QVariant(v); };
+    switch (index.column()) {
+    case NumberColumn:
+        return tool.number;
+    case PocketColumn:
+        return tool.pocket;
+    case DescriptionColumn:
+        return tool.description;
+    case LengthGeometryColumn:
+        return length(tool.lengthGeometry);
+    case LengthWearColumn:
+        return length(tool.lengthWear);
+    case TotalLengthColumn:
+        return length(tool.totalLength());
+    case RadiusGeometryColumn:
+        return length(tool.radiusGeometry);
+    case RadiusWearColumn:
+        return length(tool.radiusWear);
+    case MeasuredTloColumn:
+        if (!tool.measuredTlo)
+            return role == SortRole ? QVariant(-1e300) : QVariant();
+        return length(*tool.measuredTlo);
+    case MeasuredAtColumn:
+        if (!tool.measuredAt.isValid())
+            return {};
+        if (role == SortRole || role == Qt::EditRole)
+            return tool.measuredAt;
+        return QLocale().toString(tool.measuredAt.toLocalTime(), QLocale::ShortFormat);
+    case NotesColumn:
+        return role == Qt::DisplayRole ? QString(tool.notes).replace(u'\n', u' ') : tool.notes;
+    default:
+        return {};
+    }
+}
+
+QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case NumberColumn:
+        return tr("Tool");
+    case PocketColumn:
+        return tr("Pocket");
+    case DescriptionColumn:
+        return tr("Description");
+    case LengthGeometryColumn:
+        return tr("Length");
+    case LengthWearColumn:
+        return tr("Length wear");
+    case TotalLengthColumn:
+        return tr("Total length");
+    case RadiusGeometryColumn:
+        return tr("Radius");
+    case RadiusWearColumn:
+        return tr("Radius wear");
+    case MeasuredTloColumn:
+        return tr("Measured TLO");
+    case MeasuredAtColumn:
+        return tr("Measured at");
+    case NotesColumn:
+        return tr("Notes");
+    default:
+        return {};
+    }
+}
+
+Qt::ItemFlags ToolTableModel::flags(const QModelIndex &index) const
+{
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (!index.isValid())
+        return f;
+    // The total is computed and the measurement comes from the tool setter: neither is typed in.
+    const int c = index.column();
+    if (c != TotalLengthColumn && c != MeasuredTloColumn && c != MeasuredAtColumn)
+        f |= Qt::ItemIsEditable;
+    return f;
+}
+
+Result<Tool> ToolTableModel::editedTool(const Tool &tool, int column, const QVariant &value) const
+{
+    Tool edited = tool;
+    const QString text = value.toString().trimmed();
+    auto number = [&](const QString &what, double &field) -> Result<void> {
+        QByteArray bytes = text.toUtf8();
+        bytes.replace(',', '.'); // a decimal comma is what many operators type
+        const auto v = value.typeId() == QMetaType::Double ? std::optional<double>(value.toDouble())
+                                                           : parseDecimal(bytes);
+        if (!v)
+            return Error { tr("%1: \"%2\" is not a number; enter a value such as -12.345.").arg(what, text) };
+        field = *v;
+        return {};
+    };
+    auto integer = [&](const QString &what, int &field) -> Result<void> {
+        const auto v = parseInteger(text.toUtf8());
+        if (!v || *v < INT_MIN || *v > INT_MAX)
+            return Error { tr("%1: \"%2\" is not a whole number.").arg(what, text) };
+        field = int(*v);
+        return {};
+    };
+
+    Result<void> parsed;
+    switch (column) {
+    case NumberColumn:
+        parsed = integer(tr("Tool"), edited.number);
+        break;
+    case PocketColumn:
+        parsed = integer(tr("Pocket"), edited.pocket);
+        break;
+    case DescriptionColumn:
+        edited.description = text;
+        break;
+    case LengthGeometryColumn:
+        parsed = number(tr("Length"), edited.lengthGeometry);
+        break;
+    case LengthWearColumn:
+        parsed = number(tr("Length wear"), edited.lengthWear);
+        break;
+    case RadiusGeometryColumn:
+        parsed = number(tr("Radius"), edited.radiusGeometry);
+        break;
+    case RadiusWearColumn:
+        parsed = number(tr("Radius wear"), edited.radiusWear);
+        break;
+    case NotesColumn:
+        edited.notes = value.toString();
+        break;
+    default:
+        return Error { tr("this column cannot be edited.") };
+    }
+    if (!parsed)
+        return parsed.error();
+    if (auto r = validateTool(edited, m_table.units()); !r)
+        return r.error();
+    if (edited.number != tool.number && m_table.contains(edited.number))
+        return Error { tr("tool number %1 is already in the table; tool numbers must be unique.").arg(edited.number) };
+    return edited;
+}
+
+bool ToolTableModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    if (role != Qt::EditRole || !checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return false;
+    const Tool before = m_table.at(index.row());
+    auto after = editedTool(before, index.column(), value);
+    if (!after) {
+        Q_EMIT editRejected(after.error().message);
+        return false;
+    }
+    if (after.value() == before)
+        return true;
+    if (m_editHandler) {
+        m_editHandler(before, after.value());
+        return true;
+    }
+    return replaceTool(before.number, after.value()).ok();
+}
+
+void ToolTableModel::resetTable(const ToolTable &table)
+{
+    beginResetModel();
+    m_table = table;
+    endResetModel();
+}
+
+Result<void> ToolTableModel::insertTool(const Tool &tool)
+{
+    if (auto r = m_table.checkInsert(tool); !r)
+        return r;
+    const int row = int(m_table.insertionIndex(tool.number));
+    beginInsertRows({}, row, row);
+    (void)m_table.insert(tool);
+    endInsertRows();
+    return {};
+}
+
+Result<void> ToolTableModel::replaceTool(int number, const Tool &tool)
+{
+    if (auto r = m_table.checkReplace(number, tool); !r)
+        return r;
+    const int oldRow = rowOfTool(number);
+    // A new number can move the row; a move (not remove + insert) keeps views' selection on the tool.
+    const int destination = int(m_table.insertionIndex(tool.number));
+    const bool moves = tool.number != number && destination != oldRow && destination != oldRow + 1;
+    if (moves)
+        beginMoveRows({}, oldRow, oldRow, {}, destination);
+    (void)m_table.replace(number, tool);
+    if (moves)
+        endMoveRows();
+    const int row = rowOfTool(tool.number);
+    Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1),
+                       { Qt::DisplayRole, Qt::EditRole, SortRole, ToolNumberRole, Qt::ToolTipRole });
+    return {};
+}
+
+bool ToolTableModel::removeTool(int number)
+{
+    const int row = rowOfTool(number);
+    if (row < 0)
+        return false;
+    beginRemoveRows({}, row, row);
+    m_table.remove(number);
+    endRemoveRows();
+    return true;
+}
+
+} // namespace Toffee

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <functional>
+
+#include <QAbstractTableModel>
+
+#include "tooltable.h"
+
+namespace Toffee {
+
+// The tool table for views. Edits from a view are validated here; when an edit handler is installed
+// (the document's undo stack) the change goes through it, and only the public API below changes the table.
+class ToolTableModel final : public QAbstractTableModel
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(ToolTableModel)
+
+public:
+    enum Column {
+        NumberColumn,
+        PocketColumn,
+        DescriptionColumn,
+        LengthGeometryColumn,
+        LengthWearColumn,
+        TotalLengthColumn,
+        RadiusGeometryColumn,
+        RadiusWearColumn,
+        MeasuredTloColumn,
+        MeasuredAtColumn,
+        NotesColumn,
+        ColumnCount
+    };
+    enum Role {
+        SortRole = Qt::UserRole + 1, // numbers as numbers, for QSortFilterProxyModel::setSortRole
+        ToolNumberRole,
+    };
+    using EditHandler = std::function<void(const Tool &before, const Tool &after)>;
+
+    explicit ToolTableModel(QObject *parent = nullptr);
+
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
+
+    [[nodiscard]] const ToolTable &table() const { return m_table; }
+    [[nodiscard]] int rowOfTool(int number) const { return int(m_table.indexOf(number)); }
+
+    void resetTable(const ToolTable &table);
+    Result<void> insertTool(const Tool &tool);
+    Result<void> replaceTool(int number, const Tool &tool);
+    bool removeTool(int number);
+
+    // What an edit of `column` to `value` (text as typed, or a number) would make of `tool`.
+    [[nodiscard]] Result<Tool> editedTool(const Tool &tool, int column, const QVariant &value) const;
+
+    void setEditHandler(EditHandler handler) { m_editHandler = std::move(handler); }
+
+Q_SIGNALS:
+    // An edit from a view was refused; the message says why and what to enter instead.
+    void editRejected(const QString &message);
+
+private:
+    [[nodiscard]] QString formatLength(double value) const;
+
+    ToolTable m_table;
+    EditHandler m_editHandler;
+};
+
+} // namespace Toffee

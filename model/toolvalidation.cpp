@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "toolvalidation.h"
+
+#include <cmath>
+
+#include <QCoreApplication>
+#include <QLocale>
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("Toffee::ToolValidation", text);
+}
+
+QString shown(double value, Units units)
+{
+    return QString::number(value, 'f', units == Units::Inch ? 4 : 3);
+}
+
+} // namespace
+
+double maxGeometry(Units units)
+{
+    return units == Units::Inch ? Limits::kMaxGeometryInch : Limits::kMaxGeometryMm;
+}
+
+int defaultPocket(int toolNumber)
+{
+    return toolNumber >= Limits::kMinPocket && toolNumber <= Limits::kMaxPocket ? toolNumber : Limits::kMinPocket;
+}
+
+double maxWear(Units units)
+{
+    return units == Units::Inch ? Limits::kMaxWearInch : Limits::kMaxWearMm;
+}
+
+QString formatNumber(double value)
+{
+    if (value == 0.0)
+        return u"0"_s; // never "-0"
+    return QString::number(value, 'f', QLocale::FloatingPointShortest);
+}
+
+QString displayNumber(double value, Units units)
+{
+    const int minimum = units == Units::Inch ? 4 : 3;
+    const QString exact = formatNumber(value);
+    const qsizetype point = exact.indexOf(u'.');
+    const int decimals = point < 0 ? 0 : int(exact.size() - point - 1);
+    return decimals > minimum ? exact : QString::number(value, 'f', minimum);
+}
+
+Result<void> validateToolNumber(int number)
+{
+    if (number < Limits::kMinToolNumber || number > Limits::kMaxToolNumber)
+        return Error { tr("tool number %1 is out of range; use %2 to %3.")
+                           .arg(number)
+                           .arg(Limits::kMinToolNumber)
+                           .arg(Limits::kMaxToolNumber) };
+    return {};
+}
+
+Result<void> validatePocket(int pocket)
+{
+    if (pocket < Limits::kMinPocket || pocket > Limits::kMaxPocket)
+        return Error { tr("pocket %1 is out of range; use %2 to %3.")
+                           .arg(pocket)
+                           .arg(Limits::kMinPocket)
+                           .arg(Limits::kMaxPocket) };
+    return {};
+}
+
+Result<void> validateLength(const QString &what, double value, double limit, Units units)
+{
+    if (!std::isfinite(value))
+        return Error { tr("%1 is not a number; enter a value from %2 to %3 %4.")
+                           .arg(what, shown(-limit, units), shown(limit, units), unitsSymbol(units)) };
+    if (std::fabs(value) > limit)
+        return Error { tr("%1 %2 %3 is out of range; a controller takes %4 to %5 %3.")
+                           .arg(what, formatNumber(value), unitsSymbol(units), shown(-limit, units),
+                                shown(limit, units)) };
+    return {};
+}
+
+Result<void> validateLinuxCncExtra(const QString &extra)
+{
+    static const QString kLetters = u"XYABCUVWIJQ"_s;
+    const auto tokens = QStringView(extra).split(u' ', Qt::SkipEmptyParts);
+    for (QStringView token : tokens) {
+        bool isNumber = false;
+        const QChar letter = token.isEmpty() ? QChar() : token.front().toUpper();
+        if (kLetters.contains(letter)) {
+            if (letter == u'Q') {
+                const int q = token.mid(1).toInt(&isNumber);
+                isNumber = isNumber && q >= 0 && q <= 9;
+            } else {
+                isNumber = std::isfinite(token.mid(1).toDouble(&isNumber)) && isNumber;
+            }
+        }
+        if (!isNumber)
+            return Error { tr("\"%1\" is not a LinuxCNC tool field (X, Y, A, B, C, U, V, W, I, J or Q0-Q9).")
+                               .arg(token.toString()) };
+    }
+    return {};
+}
+
+Result<void> validateTool(const Tool &tool, Units units)
+{
+    const QString prefix = u"T"_s + QString::number(tool.number) + u": "_s;
+    auto withPrefix = [&](const Result<void> &r) -> Result<void> {
+        if (r.ok())
+            return r;
+        return Error { prefix + r.error().message };
+    };
+
+    if (auto r = validateToolNumber(tool.number); !r)
+        return r;
+    if (auto r = validatePocket(tool.pocket); !r)
+        return withPrefix(r);
+    if (tool.description.size() > Limits::kMaxDescriptionLength)
+        return Error { prefix
+                       + tr("the description is %1 characters long; keep it to %2.")
+                             .arg(tool.description.size())
+                             .arg(Limits::kMaxDescriptionLength) };
+    for (QChar c : tool.description) {
+        if (c.category() == QChar::Other_Control)
+            return Error { prefix + tr("the description must be one line of text, without tabs or line breaks.") };
+    }
+    if (tool.notes.size() > Limits::kMaxNotesLength)
+        return Error { prefix
+                       + tr("the notes are %1 characters long; keep them to %2.")
+                             .arg(tool.notes.size())
+                             .arg(Limits::kMaxNotesLength) };
+
+    const double geometry = maxGeometry(units);
+    const double wear = maxWear(units);
+    if (auto r = validateLength(tr("length geometry"), tool.lengthGeometry, geometry, units); !r)
+        return withPrefix(r);
+    if (auto r = validateLength(tr("length wear"), tool.lengthWear, wear, units); !r)
+        return withPrefix(r);
+    if (auto r = validateLength(tr("radius geometry"), tool.radiusGeometry, geometry, units); !r)
+        return withPrefix(r);
+    if (auto r = validateLength(tr("radius wear"), tool.radiusWear, wear, units); !r)
+        return withPrefix(r);
+    if (tool.measuredTlo) {
+        if (auto r = validateLength(tr("measured TLO"), *tool.measuredTlo, geometry, units); !r)
+            return withPrefix(r);
+    }
+    if (auto r = validateLinuxCncExtra(tool.linuxCncExtra); !r)
+        return withPrefix(r);
+    return {};
+}
+
+} // namespace Toffee

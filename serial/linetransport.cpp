@@ -1,0 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "linetransport.h"
+
+namespace Toffee {
+
+LineTransport::~LineTransport() = default;
+
+} // namespace Toffee

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "appsettings.h"
+
+#include <QDir>
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+namespace Key {
+const auto Geometry = u"window/geometry"_s;
+const auto State = u"window/state"_s;
+const auto LastDirectory = u"files/lastDirectory"_s;
+const auto RecentFiles = u"files/recent"_s;
+} // namespace Key
+} // namespace
+
+QByteArray AppSettings::windowGeometry() const
+{
+    return m_settings.value(Key::Geometry).toByteArray();
+}
+
+void AppSettings::setWindowGeometry(const QByteArray &geometry)
+{
+    m_settings.setValue(Key::Geometry, geometry);
+}
+
+QByteArray AppSettings::windowState() const
+{
+    return m_settings.value(Key::State).toByteArray();
+}
+
+void AppSettings::setWindowState(const QByteArray &state)
+{
+    m_settings.setValue(Key::State, state);
+}
+
+QString AppSettings::lastDirectory() const
+{
+    return m_settings.value(Key::LastDirectory, QDir::homePath()).toString();
+}
+
+void AppSettings::setLastDirectory(const QString &directory)
+{
+    m_settings.setValue(Key::LastDirectory, directory);
+}
+
+QStringList AppSettings::recentFiles() const
+{
+    return m_settings.value(Key::RecentFiles).toStringList();
+}
+
+void AppSettings::addRecentFile(const QString &path)
+{
+    QStringList files = recentFiles();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    m_settings.setValue(Key::RecentFiles, files);
+}
+
+} // namespace Toffee

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QByteArray>
+#include <QSettings>
+#include <QStringList>
+
+namespace Toffee {
+
+// Every remembered setting, typed, with its key in one place. Tests enable QStandardPaths' test mode so
+// that they never touch the user's settings.
+class AppSettings
+{
+public:
+    [[nodiscard]] QByteArray windowGeometry() const;
+    void setWindowGeometry(const QByteArray &geometry);
+    [[nodiscard]] QByteArray windowState() const;
+    void setWindowState(const QByteArray &state);
+    [[nodiscard]] QString lastDirectory() const;
+    void setLastDirectory(const QString &directory);
+    [[nodiscard]] QStringList recentFiles() const;
+    // Puts `path` first, keeps at most kMaxRecentFiles.
+    void addRecentFile(const QString &path);
+
+    static constexpr int kMaxRecentFiles = 8;
+
+private:
+    QSettings m_settings;
+};
+
+} // namespace Toffee

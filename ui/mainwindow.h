@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QMainWindow>
+
+class QAction;
+class QLabel;
+class QMenu;
+
+namespace Toffee {
+
+class ToolDocument;
+class ToolTablePanel;
+
+// Wires the panels, actions and the document together; the work is done by the classes it wires.
+class MainWindow final : public QMainWindow
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(MainWindow)
+
+public:
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    [[nodiscard]] ToolDocument *document() const { return m_document; }
+    [[nodiscard]] ToolTablePanel *toolTablePanel() const { return m_tablePanel; }
+    // Opens a table, reporting a failure in a message box; the current table stays if it fails.
+    bool openFile(const QString &path);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    void createActions();
+    void newTable();
+    void open();
+    bool save();
+    bool saveAs();
+    void importTable();
+    void exportTable();
+    void addTool();
+    void removeTools();
+    bool maybeSave();
+    bool confirmLossySave(const QString &path);
+    void updateTitle();
+    void updateRecentFiles();
+    void showError(const QString &title, const QString &message);
+    void readSettings();
+    void writeSettings();
+
+    ToolDocument *m_document;
+    ToolTablePanel *m_tablePanel;
+    QMenu *m_recentMenu = nullptr;
+    QAction *m_removeAction = nullptr;
+    QLabel *m_countLabel = nullptr;
+};
+
+} // namespace Toffee

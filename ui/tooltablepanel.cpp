@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "tooltablepanel.h"
+
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QSortFilterProxyModel>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include "tooltabledelegate.h"
+#include "tooltablemodel.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
+    : QWidget(parent)
+    , m_model(model)
+    , m_proxy(new QSortFilterProxyModel(this))
+    , m_filter(new QLineEdit(this))
+    , m_view(new QTableView(this))
+{
+    m_proxy->setSourceModel(model);
+    m_proxy->setSortRole(ToolTableModel::SortRole);
+    m_proxy->setFilterKeyColumn(-1);
+    m_proxy->setFilterCaseSensitivity(Qt::CaseInsensitive);
+
+    m_filter->setObjectName(u"toolFilter"_s);
+    m_filter->setAccessibleName(tr("Filter tools"));
+    m_filter->setPlaceholderText(tr("Filter tools (number, description, notes…)"));
+    m_filter->setClearButtonEnabled(true);
+    connect(m_filter, &QLineEdit::textChanged, m_proxy, &QSortFilterProxyModel::setFilterFixedString);
+
+    m_view->setObjectName(u"toolTable"_s);
+    m_view->setAccessibleName(tr("Tool table"));
+    m_view->setModel(m_proxy);
+    m_view->setItemDelegate(new ToolTableDelegate(m_view));
+    m_view->setSortingEnabled(true);
+    m_view->sortByColumn(ToolTableModel::NumberColumn, Qt::AscendingOrder);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setAlternatingRowColors(true);
+    m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                            | QAbstractItemView::AnyKeyPressed);
+    m_view->verticalHeader()->hide();
+    m_view->horizontalHeader()->setStretchLastSection(true);
+    m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+    m_view->resizeColumnsToContents();
+    m_view->setColumnWidth(ToolTableModel::DescriptionColumn, 220);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_filter);
+    layout->addWidget(m_view);
+}
+
+QList<int> ToolTablePanel::selectedToolNumbers() const
+{
+    QList<int> numbers;
+    const auto rows = m_view->selectionModel()->selectedRows();
+    for (const QModelIndex &row : rows)
+        numbers.append(row.data(ToolTableModel::ToolNumberRole).toInt());
+    return numbers;
+}
+
+void ToolTablePanel::selectTool(int number)
+{
+    const int row = m_model->rowOfTool(number);
+    if (row < 0)
+        return;
+    const QModelIndex index = m_proxy->mapFromSource(m_model->index(row, ToolTableModel::NumberColumn));
+    if (!index.isValid())
+        return;
+    m_view->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    m_view->scrollTo(index);
+}
+
+} // namespace Toffee
