@@ -33,3 +33,5 @@ struct Tool
 };
 
 } // namespace Toffee
+
+Q_DECLARE_METATYPE(Toffee::Tool)

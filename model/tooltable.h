@@ -56,3 +56,5 @@ private:
 };
 
 } // namespace Toffee
+
+Q_DECLARE_METATYPE(Toffee::ToolTable)

@@ -31,7 +31,7 @@ double maxGeometry(Units units)
 
 int defaultPocket(int toolNumber)
 {
-    return toolNumber >= Limits::kMinPocket && toolNumber <= Limits::kMaxPocket ? toolNumber : Limits::kMinPocket;
+    return toolNumber >= 1 && toolNumber <= Limits::kMaxPocket ? toolNumber : 1;
 }
 
 double maxWear(Units units)

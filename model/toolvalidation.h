@@ -12,8 +12,9 @@ namespace Toffee {
 namespace Limits {
 constexpr int kMinToolNumber = 0; // T0: the Carvera's wireless probe
 constexpr int kMaxToolNumber = 999999; // the Carvera's 3-axis probe uses T999990-999999
-constexpr int kMinPocket = 1; // LinuxCNC pockets 1-1000
-constexpr int kMaxPocket = 1000;
+// LinuxCNC writes P0 for the spindle of a random tool changer, and its own sample table has P99999.
+constexpr int kMinPocket = 0;
+constexpr int kMaxPocket = 99999;
 constexpr int kMaxDescriptionLength = 255;
 constexpr int kMaxNotesLength = 10000;
 constexpr double kMaxGeometryMm = 999.999;

@@ -83,12 +83,12 @@ void MainWindow::createActions()
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     m_recentMenu->setObjectName(u"menuRecent"_s);
     toolBar->addAction(add(file, u"actionSave"_s, tr("&Save"), QKeySequence::Save, [this] { save(); }));
-    add(file, u"actionSaveAs"_s, tr("Save &As…"), QKeySequence::SaveAs, [this] { saveAs(); });
+    add(file, u"actionSaveAs"_s, tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), [this] { saveAs(); });
     file->addSeparator();
     add(file, u"actionImport"_s, tr("&Import…"), QKeySequence(Qt::CTRL | Qt::Key_I), &MainWindow::importTable);
     add(file, u"actionExport"_s, tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), &MainWindow::exportTable);
     file->addSeparator();
-    add(file, u"actionQuit"_s, tr("&Quit"), QKeySequence::Quit, &QWidget::close);
+    add(file, u"actionQuit"_s, tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), &QWidget::close);
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
     QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+struct Run
+{
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Run cli(const QStringList &arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"), arguments);
+    Run run;
+    if (!process.waitForFinished(30000))
+        return run;
+    run.exitCode = process.exitCode();
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
+}
+
+const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
+
+void write(const QString &path, const QByteArray &data)
+{
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(data);
+}
+
+} // namespace
+
+class TestCli : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void showsATable()
+    {
+        const Run run = cli({ u"show"_s, kExample });
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(run.out.contains("6 tools, mm"));
+        QVERIFY(run.out.contains("-33.388"));
+        QVERIFY(run.out.contains("6 mm flat end mill, 3 flutes"));
+        QVERIFY(run.err.isEmpty());
+    }
+
+    void showsATableAsOneJsonObject()
+    {
+        const Run run = cli({ u"--json"_s, u"show"_s, kExample });
+        QCOMPARE(run.exitCode, 0);
+        QJsonParseError error;
+        const QJsonObject o = QJsonDocument::fromJson(run.out, &error).object();
+        QCOMPARE(error.error, QJsonParseError::NoError);
+        QCOMPARE(o.value(u"units"_s).toString(), u"mm"_s);
+        const QJsonArray tools = o.value(u"tools"_s).toArray();
+        QCOMPARE(tools.size(), 6);
+        QCOMPARE(tools.at(1).toObject().value(u"measured_tlo"_s).toDouble(), -33.388);
+        QCOMPARE(tools.at(2).toObject().value(u"total_length"_s).toDouble(), 41.23);
+    }
+
+    void convertsAndWarnsWhatIsLost()
+    {
+        QTemporaryDir dir;
+        const QString tbl = dir.filePath(u"tool.tbl"_s);
+        Run run = cli({ u"convert"_s, kExample, tbl });
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(run.err.contains("warning: A LinuxCNC table has no place for measured TLOs"));
+        QFile f(tbl);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QVERIFY(f.readAll().startsWith("T1 P1 Z38.1 D3.175 ;3.175 mm flat end mill, 2 flutes\n"));
+
+        const QString csv = dir.filePath(u"out.txt"_s);
+        run = cli({ u"--json"_s, u"convert"_s, tbl, csv, u"--to"_s, u"csv"_s });
+        QCOMPARE(run.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(run.out).object();
+        QCOMPARE(o.value(u"tools"_s).toInt(), 6);
+        QCOMPARE(o.value(u"format"_s).toString(), u"csv"_s);
+        run = cli({ u"show"_s, csv });
+        QCOMPARE(run.exitCode, 2); // .txt: the format cannot be told from the name
+        QVERIFY(run.err.contains("unknown file type"));
+    }
+
+    void refusesBadInputWithExitCode2AndAMessage_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QByteArray>("message");
+        QTest::newRow("no command") << QStringList() << QByteArray("no command given");
+        QTest::newRow("unknown command") << QStringList { u"explode"_s } << QByteArray("unknown command \"explode\"");
+        QTest::newRow("unknown option") << QStringList { u"--frobnicate"_s, u"show"_s } << QByteArray("--frobnicate");
+        QTest::newRow("missing file") << QStringList { u"show"_s, u"/nonexistent/t.json"_s }
+                                      << QByteArray("cannot open");
+        QTest::newRow("show without a file") << QStringList { u"show"_s } << QByteArray("usage: toffee-cli show");
+        QTest::newRow("bad --to") << QStringList { u"convert"_s, kExample, u"x"_s, u"--to"_s, u"xml"_s }
+                                  << QByteArray("--to must be json, tbl or csv");
+        QTest::newRow("--to without value") << QStringList { u"convert"_s, kExample, u"x"_s, u"--to"_s }
+                                            << QByteArray("--to needs a value");
+        QTest::newRow("bad --units") << QStringList { u"show"_s, kExample, u"--units"_s, u"cm"_s }
+                                     << QByteArray("--units must be mm or in");
+    }
+    void refusesBadInputWithExitCode2AndAMessage()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QByteArray, message);
+        const Run run = cli(arguments);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(message), run.err.constData());
+    }
+
+    void namesTheLineOfAMalformedFile()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"bad.tbl"_s);
+        write(path, "T1 P1 Z1\n; fine\nT2 P2 Z1 Z2\n");
+        const QString out = dir.filePath(u"out.json"_s);
+        const Run run = cli({ u"--json"_s, u"convert"_s, path, out });
+        QCOMPARE(run.exitCode, 2);
+        const QString error = QJsonDocument::fromJson(run.out).object().value(u"error"_s).toString();
+        QVERIFY2(error.contains(u"line 3"_s), qPrintable(error));
+        QVERIFY(run.err.contains("line 3"));
+        QVERIFY(!QFile::exists(out)); // nothing half-written
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "tablefile.h"
+#include "testtables.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+class TestTableFile : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void tellsTheFormatFromTheName()
+    {
+        QCOMPARE(formatForPath(u"/a/b/tools.json"_s), TableFormat::Json);
+        QCOMPARE(formatForPath(u"tool.TBL"_s), TableFormat::LinuxCnc);
+        QCOMPARE(formatForPath(u"x.csv"_s), TableFormat::Csv);
+        QVERIFY(!formatForPath(u"x.txt"_s));
+        QVERIFY(!formatForPath(u"noext"_s));
+        QCOMPARE(formatFromName(u"tbl"), TableFormat::LinuxCnc);
+        QVERIFY(!formatFromName(u"xml"));
+    }
+
+    void convertsBetweenEveryFormat_data()
+    {
+        QTest::addColumn<int>("from");
+        QTest::addColumn<int>("to");
+        for (int from = 0; from < 3; ++from) {
+            for (int to = 0; to < 3; ++to)
+                QTest::addRow("%s to %s", qPrintable(formatSuffix(TableFormat(from))),
+                              qPrintable(formatSuffix(TableFormat(to))))
+                    << from << to;
+        }
+    }
+    void convertsBetweenEveryFormat()
+    {
+        QFETCH(int, from);
+        QFETCH(int, to);
+        QTemporaryDir dir;
+        const ToolTable table = Test::linuxCncTable(); // what every format holds
+        const QString a = dir.filePath(u"a."_s + formatSuffix(TableFormat(from)));
+        const QString b = dir.filePath(u"b."_s + formatSuffix(TableFormat(to)));
+        QVERIFY(saveTableFile(a, table, TableFormat(from)).ok());
+        auto first = loadTableFile(a);
+        QVERIFY2(first.ok(), qPrintable(first.error().text()));
+        QVERIFY(saveTableFile(b, first.value(), TableFormat(to)).ok());
+        auto second = loadTableFile(b);
+        QVERIFY2(second.ok(), qPrintable(second.error().text()));
+        QCOMPARE(second.value(), table);
+    }
+
+    void namesTheFileInItsErrors()
+    {
+        QTemporaryDir dir;
+        const auto missing = loadTableFile(dir.filePath(u"missing.json"_s));
+        QVERIFY(!missing.ok());
+        QVERIFY(missing.error().message.contains(u"missing.json: cannot open"_s));
+
+        const auto unknown = loadTableFile(dir.filePath(u"tools.txt"_s));
+        QVERIFY(!unknown.ok());
+        QVERIFY(unknown.error().message.contains(u"unknown file type"_s));
+
+        QFile bad(dir.filePath(u"bad.tbl"_s));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write("T1 P1\nT2 P2 Zx\n");
+        bad.close();
+        const auto malformed = loadTableFile(bad.fileName());
+        QVERIFY(!malformed.ok());
+        QCOMPARE(malformed.error().line, 2);
+        QVERIFY2(malformed.error().message.contains(u"bad.tbl: line 2: "_s), qPrintable(malformed.error().message));
+    }
+
+    void aFailedSaveLeavesTheOldFileWhole()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"tools.json"_s);
+        QVERIFY(saveTableFile(path, Test::awkwardTable(), TableFormat::Json).ok());
+        const QByteArray before = [&] {
+            QFile f(path);
+            f.open(QIODevice::ReadOnly);
+            return f.readAll();
+        }();
+        // A directory that cannot be written: QSaveFile cannot make its temporary file, the old file stays.
+        QVERIFY(QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner));
+        const auto r = saveTableFile(path, Test::generatedTable(10), TableFormat::Json);
+        QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        if (r.ok())
+            QSKIP("running as root: the directory could be written anyway");
+        QVERIFY(r.error().message.contains(u"tools.json"_s));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), before);
+    }
+
+    void saysWhatALinuxCncTableLoses()
+    {
+        QVERIFY(formatLosses(Test::awkwardTable(), TableFormat::Json).isEmpty());
+        QVERIFY(formatLosses(Test::awkwardTable(), TableFormat::Csv).isEmpty());
+        QVERIFY(formatLosses(Test::linuxCncTable(), TableFormat::LinuxCnc).isEmpty());
+        const QStringList losses = formatLosses(Test::awkwardTable(), TableFormat::LinuxCnc);
+        QCOMPARE(losses.size(), 2); // measured TLOs and notes
+        QVERIFY(losses.join(u' ').contains(u"TLO"_s));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestTableFile)
+#include "tst_tablefile.moc"

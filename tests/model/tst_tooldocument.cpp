@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <QAbstractItemModelTester>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "testtables.h"
+#include "tooldocument.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+Tool tool(int number, double length = 10.0)
+{
+    Tool t;
+    t.number = number;
+    t.pocket = 1;
+    t.lengthGeometry = length;
+    return t;
+}
+
+} // namespace
+
+class TestToolDocument : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void addRemoveAndEditUndoAndRedo()
+    {
+        ToolDocument doc;
+        QAbstractItemModelTester tester(doc.model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QVERIFY(doc.addTool(tool(1)).ok());
+        QVERIFY(doc.addTool(tool(2)).ok());
+        QVERIFY(doc.editTool(2, tool(5, 20)).ok());
+        doc.removeTools({ 1 });
+        QCOMPARE(doc.table().size(), 1);
+        QCOMPARE(doc.table().at(0).number, 5);
+
+        doc.undoStack()->undo(); // remove
+        QVERIFY(doc.table().contains(1));
+        doc.undoStack()->undo(); // edit
+        QCOMPARE(doc.table().find(2)->lengthGeometry, 10.0);
+        QVERIFY(!doc.table().contains(5));
+        doc.undoStack()->undo(); // add T2
+        doc.undoStack()->undo(); // add T1
+        QVERIFY(doc.table().isEmpty());
+        QVERIFY(!doc.isModified());
+
+        while (doc.undoStack()->canRedo())
+            doc.undoStack()->redo();
+        QCOMPARE(doc.table().size(), 1);
+        QCOMPARE(doc.table().at(0).lengthGeometry, 20.0);
+    }
+
+    void aRefusedEditIsNotAnUndoStep()
+    {
+        ToolDocument doc;
+        QVERIFY(doc.addTool(tool(1)).ok());
+        QVERIFY(doc.addTool(tool(2)).ok());
+        const int steps = doc.undoStack()->count();
+        QVERIFY(!doc.addTool(tool(1)).ok());
+        QVERIFY(!doc.editTool(1, tool(2)).ok());
+        QVERIFY(!doc.editTool(1, tool(1, 1e9)).ok());
+        QCOMPARE(doc.undoStack()->count(), steps);
+    }
+
+    void anEditFromAViewIsOneUndoStep()
+    {
+        ToolDocument doc;
+        QVERIFY(doc.addTool(tool(3)).ok());
+        ToolTableModel *model = doc.model();
+        QVERIFY(model->setData(model->index(0, ToolTableModel::LengthWearColumn), u"-0.05"_s));
+        QCOMPARE(doc.table().at(0).lengthWear, -0.05);
+        QCOMPARE(doc.undoStack()->undoText(), u"Edit tool T3"_s);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.table().at(0).lengthWear, 0.0);
+        QVERIFY(!model->setData(model->index(0, ToolTableModel::LengthWearColumn), u"500"_s));
+        QCOMPARE(doc.undoStack()->index(), 1);
+    }
+
+    void tracksUnsavedChanges()
+    {
+        QTemporaryDir dir;
+        ToolDocument doc;
+        QSignalSpy modified(&doc, &ToolDocument::modifiedChanged);
+        QVERIFY(!doc.isModified());
+        QVERIFY(doc.addTool(tool(1)).ok());
+        QVERIFY(doc.isModified());
+        QVERIFY(!doc.save().ok()); // untitled: Save As first
+        const QString path = dir.filePath(u"t.json"_s);
+        QVERIFY(doc.saveAs(path, TableFormat::Json).ok());
+        QVERIFY(!doc.isModified());
+        QCOMPARE(doc.filePath(), path);
+        doc.undoStack()->undo();
+        QVERIFY(doc.isModified()); // undoing past the save is a change too
+        doc.undoStack()->redo();
+        QVERIFY(!doc.isModified());
+        QCOMPARE(modified.size(), 4);
+    }
+
+    void openingReplacesTheTableAndForgetsUndo()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"a.csv"_s);
+        QVERIFY(saveTableFile(path, Test::awkwardTable(), TableFormat::Csv).ok());
+        ToolDocument doc;
+        QVERIFY(doc.addTool(tool(42)).ok());
+        QVERIFY(doc.open(path).ok());
+        QCOMPARE(doc.table(), Test::awkwardTable());
+        QCOMPARE(doc.fileFormat(), TableFormat::Csv);
+        QVERIFY(!doc.undoStack()->canUndo());
+        QVERIFY(!doc.isModified());
+    }
+
+    void aFailedOpenKeepsTheTable()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"bad.tbl"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("T1 P1\nT1 P2\n");
+        f.close();
+        ToolDocument doc;
+        QVERIFY(doc.addTool(tool(42)).ok());
+        const auto r = doc.open(path);
+        QVERIFY(!r.ok());
+        QCOMPARE(r.error().line, 2);
+        QCOMPARE(doc.table().size(), 1);
+        QVERIFY(doc.table().contains(42));
+        QVERIFY(doc.undoStack()->canUndo());
+    }
+
+    void importMergesAsOneUndoStep()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"more.tbl"_s);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("T2 P2 Z99\nT7 P7 Z7\n");
+        f.close();
+        ToolDocument doc;
+        QVERIFY(doc.addTool(tool(1)).ok());
+        QVERIFY(doc.addTool(tool(2)).ok());
+        const auto count = doc.importFrom(path);
+        QVERIFY2(count.ok(), qPrintable(count.error().text()));
+        QCOMPARE(count.value(), 2);
+        QCOMPARE(doc.table().size(), 3);
+        QCOMPARE(doc.table().find(2)->lengthGeometry, 99.0);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.table().size(), 2);
+        QCOMPARE(doc.table().find(2)->lengthGeometry, 10.0);
+    }
+
+    void importRefusesOtherUnitsAndChangesNothing()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"inch.json"_s);
+        QVERIFY(saveTableFile(path, Test::awkwardTable(Units::Inch), TableFormat::Json).ok());
+        ToolDocument doc;
+        QVERIFY(doc.addTool(tool(1)).ok());
+        const ToolTable before = doc.table();
+        const int steps = doc.undoStack()->count();
+        const auto r = doc.importFrom(path);
+        QVERIFY(!r.ok());
+        QVERIFY(r.error().message.contains(u"does not convert units"_s));
+        QCOMPARE(doc.table(), before);
+        QCOMPARE(doc.undoStack()->count(), steps);
+    }
+
+    void newToolTakesTheNextFreeNumber()
+    {
+        ToolDocument doc;
+        QVERIFY(doc.addTool(tool(1)).ok());
+        QVERIFY(doc.addTool(tool(3)).ok());
+        QCOMPARE(doc.newTool().number, 2);
+        QCOMPARE(doc.newTool().pocket, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestToolDocument)
+#include "tst_tooldocument.moc"

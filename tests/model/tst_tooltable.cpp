@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <QTest>
+
+#include "tooltable.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+Tool tool(int number, double length = 10.0)
+{
+    Tool t;
+    t.number = number;
+    t.pocket = 1;
+    t.lengthGeometry = length;
+    return t;
+}
+
+} // namespace
+
+class TestToolTable : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void keepsToolsSortedByNumber()
+    {
+        ToolTable table;
+        QVERIFY(table.insert(tool(5)).ok());
+        QVERIFY(table.insert(tool(1)).ok());
+        QVERIFY(table.insert(tool(3)).ok());
+        QCOMPARE(table.size(), 3);
+        QCOMPARE(table.at(0).number, 1);
+        QCOMPARE(table.at(1).number, 3);
+        QCOMPARE(table.at(2).number, 5);
+        QCOMPARE(table.indexOf(3), 1);
+        QCOMPARE(table.indexOf(4), -1);
+        QVERIFY(table.find(5));
+        QVERIFY(!table.find(2));
+    }
+
+    void refusesDuplicateNumbersAndStaysUnchanged()
+    {
+        ToolTable table;
+        QVERIFY(table.insert(tool(1, 10)).ok());
+        const ToolTable before = table;
+        const auto r = table.insert(tool(1, 20));
+        QVERIFY(!r.ok());
+        QVERIFY(r.error().message.contains(u"already in the table"_s));
+        QCOMPARE(table, before);
+    }
+
+    void refusesAnInvalidValueAndStaysUnchanged()
+    {
+        ToolTable table;
+        QVERIFY(table.insert(tool(1, 10)).ok());
+        const ToolTable before = table;
+        QVERIFY(!table.insert(tool(2, 5000)).ok());
+        QVERIFY(!table.replace(1, tool(1, 5000)).ok());
+        QCOMPARE(table, before);
+    }
+
+    void replaceCanRenumberButNotOntoAnotherTool()
+    {
+        ToolTable table;
+        QVERIFY(table.insert(tool(1)).ok());
+        QVERIFY(table.insert(tool(2)).ok());
+        QVERIFY(table.replace(1, tool(7, 3)).ok());
+        QCOMPARE(table.at(1).number, 7);
+        QCOMPARE(table.at(1).lengthGeometry, 3.0);
+        const ToolTable before = table;
+        QVERIFY(!table.replace(7, tool(2)).ok());
+        QVERIFY(!table.replace(42, tool(42)).ok());
+        QCOMPARE(table, before);
+    }
+
+    void removesByNumber()
+    {
+        ToolTable table;
+        QVERIFY(table.insert(tool(1)).ok());
+        QVERIFY(table.remove(1));
+        QVERIFY(!table.remove(1));
+        QVERIFY(table.isEmpty());
+    }
+
+    void findsTheNextFreeNumber()
+    {
+        ToolTable table;
+        QCOMPARE(table.nextFreeNumber(), 1);
+        QVERIFY(table.insert(tool(1)).ok());
+        QVERIFY(table.insert(tool(2)).ok());
+        QVERIFY(table.insert(tool(4)).ok());
+        QCOMPARE(table.nextFreeNumber(), 3);
+        QCOMPARE(table.nextFreeNumber(4), 5);
+        QVERIFY(table.insert(tool(999999)).ok());
+        QCOMPARE(table.nextFreeNumber(999999), -1);
+    }
+
+    void fromToolsNamesTheBadTool()
+    {
+        qsizetype bad = -1;
+        auto r = ToolTable::fromTools({ tool(3), tool(1), tool(2, 1e6) }, Units::Millimetre, &bad);
+        QVERIFY(!r.ok());
+        QCOMPARE(bad, 2);
+        bad = -1;
+        r = ToolTable::fromTools({ tool(3), tool(1), tool(5), tool(1) }, Units::Millimetre, &bad);
+        QVERIFY(!r.ok());
+        QCOMPARE(bad, 3); // the second T1, where it stands in the input
+        r = ToolTable::fromTools({ tool(3), tool(1) }, Units::Inch);
+        QVERIFY(r.ok());
+        QCOMPARE(r.value().units(), Units::Inch);
+        QCOMPARE(r.value().at(0).number, 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestToolTable)
+#include "tst_tooltable.moc"

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <QAction>
+#include <QApplication>
+#include <QDialogButtonBox>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+#include "mainwindow.h"
+#include "tooldocument.h"
+#include "tooltablemodel.h"
+#include "tooltablepanel.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
+
+// Answers the next message box with `button` once it is up.
+void answerNextMessageBox(QMessageBox::StandardButton button, QString *text = nullptr)
+{
+    QTimer::singleShot(0, [button, text] {
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        QVERIFY(box);
+        if (text)
+            *text = box->text();
+        box->button(button)->click();
+    });
+}
+
+} // namespace
+
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QApplication::setOrganizationName(u"ToffeeTest"_s);
+        QApplication::setApplicationName(u"tst_mainwindow"_s);
+    }
+
+    void opensATableAndShowsIt()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(kExample));
+        auto *view = window.findChild<QTableView *>(u"toolTable"_s);
+        QVERIFY(view);
+        QCOMPARE(view->model()->rowCount(), 6);
+        QVERIFY(window.windowTitle().startsWith(u"example.json"_s));
+    }
+
+    void editsACellByKeyboardAndUndoes()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(kExample));
+        auto *view = window.findChild<QTableView *>(u"toolTable"_s);
+        view->setFocus();
+        view->setCurrentIndex(view->model()->index(1, ToolTableModel::LengthWearColumn));
+        QTest::keyClick(view, Qt::Key_F2);
+        auto *editor = view->findChild<QLineEdit *>(u"cellEditor"_s);
+        QVERIFY(editor);
+        editor->selectAll();
+        QTest::keyClicks(editor, u"-0.05"_s);
+        QTest::keyClick(editor, Qt::Key_Return); // the delegate commits on the next event-loop turn
+        QTRY_COMPARE(window.document()->table().find(2)->lengthWear, -0.05);
+        QVERIFY(window.isWindowModified());
+
+        window.findChild<QAction *>(u"actionUndo"_s)->trigger();
+        QCOMPARE(window.document()->table().find(2)->lengthWear, 0.0);
+        QVERIFY(!window.isWindowModified());
+    }
+
+    void addsAndRemovesTools()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openFile(kExample));
+        window.findChild<QAction *>(u"actionAddTool"_s)->trigger();
+        QCOMPARE(window.document()->table().size(), 7);
+        QVERIFY(window.document()->table().contains(7));
+        QCOMPARE(window.toolTablePanel()->selectedToolNumbers(), QList<int> { 7 });
+        window.findChild<QAction *>(u"actionRemoveTool"_s)->trigger();
+        QCOMPARE(window.document()->table().size(), 6);
+        QVERIFY(!window.document()->table().contains(7));
+    }
+
+    void filtersTheTable()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openFile(kExample));
+        auto *filter = window.findChild<QLineEdit *>(u"toolFilter"_s);
+        QTest::keyClicks(filter, u"drill"_s);
+        auto *view = window.findChild<QTableView *>(u"toolTable"_s);
+        QCOMPARE(view->model()->rowCount(), 1);
+        QCOMPARE(view->model()->index(0, 0).data().toInt(), 6);
+    }
+
+    void aBadValueIsRefusedWithAMessage()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openFile(kExample));
+        auto *view = window.findChild<QTableView *>(u"toolTable"_s);
+        QString text;
+        answerNextMessageBox(QMessageBox::Ok, &text);
+        QVERIFY(!view->model()->setData(view->model()->index(0, ToolTableModel::LengthWearColumn), u"250"_s));
+        QVERIFY2(text.contains(u"out of range"_s), qPrintable(text));
+        QCOMPARE(window.document()->table().find(1)->lengthWear, 0.0);
+    }
+
+    void unsavedChangesPromptBeforeClosing()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openFile(kExample));
+        window.findChild<QAction *>(u"actionAddTool"_s)->trigger();
+        QString text;
+        answerNextMessageBox(QMessageBox::Cancel, &text);
+        QVERIFY(!window.close());
+        QVERIFY(text.contains(u"not saved"_s));
+        QVERIFY(window.isVisible());
+        answerNextMessageBox(QMessageBox::Discard);
+        QVERIFY(window.close());
+    }
+
+    void everyActionHasAShortcutAndAName()
+    {
+        MainWindow window;
+        const auto actions = window.findChildren<QAction *>();
+        int named = 0;
+        for (const QAction *action : actions) {
+            if (action->objectName().startsWith(u"action"_s)) {
+                ++named;
+                QVERIFY2(!action->shortcut().isEmpty(), qPrintable(action->objectName()));
+            }
+        }
+        QVERIFY(named >= 12);
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"
