@@ -3,9 +3,11 @@
 // A spreadsheet saved with ';' between fields and decimal commas (as German Excel does) reads too.
 #include "tablefile.h"
 
-#include <QCoreApplication>
-#include <QHash>
+#include <list>
 
+#include <QCoreApplication>
+
+#include "tablereading.h"
 #include "textparsing.h"
 #include "toolvalidation.h"
 
@@ -41,65 +43,93 @@ QString tr(const char *text)
     return QCoreApplication::translate("Toffee::CsvFormat", text);
 }
 
+// One row: each field a view into the file, or into `unescaped` for a quoted field with doubled quotes.
 struct Record
 {
-    QList<QByteArray> fields;
+    QList<QByteArrayView> fields;
+    std::list<QByteArray> unescaped; // std::list: views into it stay valid as it grows
     int line = 0;
+
+    void clear()
+    {
+        fields.clear();
+        unescaped.clear();
+    }
 };
 
-// Splits the next record off `data` at `pos`; quoted fields may hold separators, quotes ("") and line breaks.
-Result<Record> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char separator)
+QByteArrayView trimmed(QByteArrayView v)
 {
-    Record record;
+    while (!v.isEmpty() && (v.front() == ' ' || v.front() == '\t'))
+        v = v.sliced(1);
+    while (!v.isEmpty() && (v.back() == ' ' || v.back() == '\t'))
+        v.chop(1);
+    return v;
+}
+
+// Splits the next record off `data` at `pos`; quoted fields may hold separators, quotes ("") and line breaks.
+Result<void> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char separator, Record &record)
+{
+    record.clear();
     record.line = line;
-    QByteArray field;
-    bool quoted = false;
-    bool wasQuoted = false;
-    while (pos < data.size()) {
-        const char c = data.at(pos++);
-        if (quoted) {
-            if (c == '"') {
-                if (pos < data.size() && data.at(pos) == '"') {
-                    field += '"';
-                    ++pos;
-                } else {
-                    quoted = false;
+    const qsizetype size = data.size();
+    while (true) {
+        // Leading blanks, then either a quoted field or a plain one.
+        qsizetype start = pos;
+        while (pos < size && (data.at(pos) == ' ' || data.at(pos) == '\t'))
+            ++pos;
+        if (pos < size && data.at(pos) == '"') {
+            ++pos;
+            const qsizetype inner = pos;
+            bool doubled = false;
+            while (true) {
+                if (pos >= size)
+                    return Error { tr("a quoted field is never closed; add the closing quote (\")."), record.line };
+                const char c = data.at(pos);
+                if (c == '"') {
+                    if (pos + 1 < size && data.at(pos + 1) == '"') {
+                        doubled = true;
+                        pos += 2;
+                        continue;
+                    }
+                    break;
                 }
-            } else {
                 if (c == '\n')
                     ++line;
-                field += c;
+                ++pos;
             }
-            continue;
-        }
-        if (c == '"') {
-            if (!field.trimmed().isEmpty() || wasQuoted)
-                return Error { tr("a quote (\") inside an unquoted field; put the whole field in quotes and double "
-                                  "the quote."),
-                               line };
-            field.clear();
-            quoted = true;
-            wasQuoted = true;
-        } else if (c == separator) {
-            record.fields.append(wasQuoted ? field : field.trimmed());
-            field.clear();
-            wasQuoted = false;
-        } else if (c == '\n') {
-            ++line;
-            break;
-        } else if (c == '\r') {
-            continue;
-        } else if (wasQuoted) {
-            if (c != ' ' && c != '\t')
+            const QByteArrayView content = data.sliced(inner, pos - inner);
+            ++pos; // the closing quote
+            if (doubled) {
+                record.unescaped.push_back(content.toByteArray().replace("\"\"", "\""));
+                record.fields.append(record.unescaped.back());
+            } else {
+                record.fields.append(content);
+            }
+            while (pos < size && (data.at(pos) == ' ' || data.at(pos) == '\t' || data.at(pos) == '\r'))
+                ++pos;
+            if (pos < size && data.at(pos) != separator && data.at(pos) != '\n')
                 return Error { tr("text after a closing quote; put the whole field in quotes."), line };
         } else {
-            field += c;
+            start = pos;
+            while (pos < size && data.at(pos) != separator && data.at(pos) != '\n') {
+                if (data.at(pos) == '"')
+                    return Error { tr("a quote (\") inside an unquoted field; put the whole field in quotes and "
+                                      "double the quote."),
+                                   line };
+                ++pos;
+            }
+            QByteArrayView field = data.sliced(start, pos - start);
+            if (field.endsWith('\r'))
+                field.chop(1);
+            record.fields.append(trimmed(field));
+        }
+        if (pos >= size)
+            return {};
+        if (data.at(pos++) == '\n') {
+            ++line;
+            return {};
         }
     }
-    if (quoted)
-        return Error { tr("a quoted field is never closed; add the closing quote (\")."), record.line };
-    record.fields.append(wasQuoted ? field : field.trimmed());
-    return record;
 }
 
 bool isBlank(const Record &record)
@@ -107,14 +137,31 @@ bool isBlank(const Record &record)
     return record.fields.size() == 1 && record.fields.front().isEmpty();
 }
 
-QByteArray quoted(const QString &text)
+QString fromUtf8(QByteArrayView v)
 {
-    QByteArray bytes = text.toUtf8();
-    if (!bytes.contains(',') && !bytes.contains('"') && !bytes.contains('\n') && !bytes.contains('\r')
-        && bytes.trimmed() == bytes)
-        return bytes;
-    bytes.replace("\"", "\"\"");
-    return '"' + bytes + '"';
+    return QString::fromUtf8(v); // the whole file was checked to be UTF-8 up front
+}
+
+// A field as RFC 4180 wants it: quoted (quotes doubled) when it holds a separator, a quote, a line break, or
+// blanks at either end that a reader would otherwise trim.
+void appendField(QByteArray &out, const QString &text)
+{
+    if (text.isEmpty())
+        return;
+    bool needsQuotes = text.front() == u' ' || text.back() == u' ' || text.front() == u'\t' || text.back() == u'\t';
+    for (QChar c : text) {
+        if (c == u',' || c == u'"' || c == u'\n' || c == u'\r' || c == u';') {
+            needsQuotes = true;
+            break;
+        }
+    }
+    if (!needsQuotes) {
+        appendUtf8(out, text);
+        return;
+    }
+    out += '"';
+    appendUtf8(out, QString(text).replace(u'"', u"\"\""_s));
+    out += '"';
 }
 
 } // namespace
@@ -137,10 +184,8 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
 
     Record header;
     do {
-        auto r = nextRecord(all, pos, line, separator);
-        if (!r)
+        if (auto r = nextRecord(all, pos, line, separator, header); !r)
             return r.error();
-        header = r.takeValue();
     } while (isBlank(header) && pos < all.size());
     if (isBlank(header))
         return Error { tr("the file is empty; a CSV tool table starts with a header row such as "
@@ -150,14 +195,14 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
     int columnOf[ColumnCount];
     std::fill(std::begin(columnOf), std::end(columnOf), -1);
     for (int i = 0; i < header.fields.size(); ++i) {
-        const QByteArray name = header.fields.at(i).toLower();
+        const QByteArray name = header.fields.at(i).toByteArray().toLower();
         const auto found = std::find_if(std::begin(kColumnNames), std::end(kColumnNames),
                                         [&name](const char *n) { return name == n; });
         if (found == std::end(kColumnNames))
             return Error { tr("unknown column \"%1\" in the header; the columns are number, pocket, description, "
                               "length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, "
                               "measured_at, notes, units and linuxcnc.")
-                               .arg(QString::fromUtf8(header.fields.at(i))),
+                               .arg(fromUtf8(header.fields.at(i))),
                            header.line };
         const auto column = found - std::begin(kColumnNames);
         if (columnOf[column] >= 0)
@@ -171,12 +216,13 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
     std::optional<Units> units;
     QList<Tool> tools;
     QList<int> lines;
-    QHash<int, int> firstLine;
+    tools.reserve(countLines(all));
+    lines.reserve(tools.capacity());
+    Record record;
+    QByteArray commaDecimal;
     while (pos < all.size()) {
-        auto r = nextRecord(all, pos, line, separator);
-        if (!r)
+        if (auto r = nextRecord(all, pos, line, separator, record); !r)
             return r.error();
-        const Record &record = r.value();
         if (isBlank(record))
             continue;
         if (record.fields.size() != header.fields.size())
@@ -185,28 +231,31 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
                                .arg(header.fields.size()),
                            record.line };
 
-        auto cell = [&](Column c) -> QByteArray { return columnOf[c] < 0 ? QByteArray() : record.fields.at(columnOf[c]); };
-        auto text = [&](Column c) -> QString { return QString::fromUtf8(cell(c)); };
+        auto cell = [&](Column c) { return columnOf[c] < 0 ? QByteArrayView() : record.fields.at(columnOf[c]); };
+        auto text = [&](Column c) { return fromUtf8(cell(c)); };
         QString problem;
         auto decimal = [&](Column c, double fallback) -> double {
-            QByteArray s = cell(c);
+            QByteArrayView s = cell(c);
             if (s.isEmpty())
                 return fallback;
-            if (separator == ';')
-                s.replace(',', '.');
+            if (separator == ';' && s.contains(',')) {
+                commaDecimal = s.toByteArray().replace(',', '.');
+                s = commaDecimal;
+            }
             const auto v = parseDecimal(s);
             if (!v && problem.isEmpty())
                 problem = tr("%1 \"%2\" is not a number.").arg(QLatin1StringView(kColumnNames[c]), text(c));
             return v.value_or(fallback);
         };
         auto integer = [&](Column c, int fallback) -> int {
-            const QByteArray s = cell(c);
+            const QByteArrayView s = cell(c);
             if (s.isEmpty())
                 return fallback;
             const auto v = parseInteger(s);
-            if ((!v || *v < INT_MIN || *v > INT_MAX) && problem.isEmpty())
+            const bool fits = v && *v >= INT_MIN && *v <= INT_MAX;
+            if (!fits && problem.isEmpty())
                 problem = tr("%1 \"%2\" is not a whole number.").arg(QLatin1StringView(kColumnNames[c]), text(c));
-            return v && *v >= INT_MIN && *v <= INT_MAX ? int(*v) : fallback;
+            return fits ? int(*v) : fallback;
         };
 
         if (cell(Number).isEmpty())
@@ -222,15 +271,15 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
         if (!cell(MeasuredTlo).isEmpty())
             tool.measuredTlo = decimal(MeasuredTlo, 0.0);
         if (!cell(MeasuredAt).isEmpty()) {
-            tool.measuredAt = QDateTime::fromString(text(MeasuredAt), Qt::ISODateWithMs).toUTC();
+            tool.measuredAt = parseIsoDateTime(cell(MeasuredAt));
             if (!tool.measuredAt.isValid() && problem.isEmpty())
                 problem = tr("measured_at \"%1\" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).")
                               .arg(text(MeasuredAt));
         }
         tool.notes = text(Notes);
         tool.linuxCncExtra = text(LinuxCnc);
-        if (!cell(UnitsColumn).isEmpty()) {
-            const auto rowUnits = unitsFromSymbol(text(UnitsColumn));
+        if (const QByteArrayView u = cell(UnitsColumn); !u.isEmpty()) {
+            const auto rowUnits = u == "mm" ? Units::Millimetre : u == "in" ? Units::Inch : unitsFromSymbol(text(UnitsColumn));
             if (!rowUnits)
                 return Error { tr("units \"%1\" must be mm or in.").arg(text(UnitsColumn)), record.line };
             if (units && *units != *rowUnits)
@@ -241,43 +290,53 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
         }
         if (!problem.isEmpty())
             return Error { problem, record.line };
-        if (const int previous = firstLine.value(tool.number); previous > 0)
-            return Error { tr("tool %1 is already on line %2; tool numbers must be unique.").arg(tool.number).arg(previous),
-                           record.line };
-        firstLine.insert(tool.number, record.line);
         tools.append(std::move(tool));
         lines.append(record.line);
     }
-
-    qsizetype bad = -1;
-    auto table = ToolTable::fromTools(std::move(tools), units.value_or(Units::Millimetre), &bad);
-    if (!table)
-        return Error { table.error().message, bad >= 0 ? lines.at(bad) : 0 };
-    return table;
+    return buildTable(std::move(tools), lines, units.value_or(Units::Millimetre));
 }
 
-QByteArray writeCsvTable(const ToolTable &table)
+bool writeCsvTable(const ToolTable &table, const ByteSink &sink)
 {
-    QByteArray out;
-    out.reserve(128 + table.size() * 80);
+    ChunkedWriter w(sink);
+    QByteArray &out = w.out;
     for (int c = 0; c < ColumnCount; ++c) {
         out += kColumnNames[c];
         out += c + 1 < ColumnCount ? ',' : '\n';
     }
     const QByteArray units = unitsSymbol(table.units()).toLatin1();
     for (const Tool &tool : table.tools()) {
-        out += QByteArray::number(tool.number) + ',' + QByteArray::number(tool.pocket) + ','
-            + quoted(tool.description) + ',' + formatNumber(tool.lengthGeometry).toLatin1() + ','
-            + formatNumber(tool.lengthWear).toLatin1() + ',' + formatNumber(tool.radiusGeometry).toLatin1() + ','
-            + formatNumber(tool.radiusWear).toLatin1() + ',';
+        out += QByteArray::number(tool.number);
+        out += ',';
+        out += QByteArray::number(tool.pocket);
+        out += ',';
+        appendField(out, tool.description);
+        for (double v : { tool.lengthGeometry, tool.lengthWear, tool.radiusGeometry, tool.radiusWear }) {
+            out += ',';
+            appendNumber(out, v);
+        }
+        out += ',';
         if (tool.measuredTlo)
-            out += formatNumber(*tool.measuredTlo).toLatin1();
+            appendNumber(out, *tool.measuredTlo);
         out += ',';
         if (tool.measuredAt.isValid())
-            out += tool.measuredAt.toUTC().toString(Qt::ISODateWithMs).toLatin1();
-        out += ',' + quoted(tool.notes) + ',' + units + ',' + quoted(tool.linuxCncExtra) + '\n';
+            appendIsoUtc(out, tool.measuredAt);
+        out += ',';
+        appendField(out, tool.notes);
+        out += ',';
+        out += units;
+        out += ',';
+        appendField(out, tool.linuxCncExtra);
+        out += '\n';
+        if (!w.next())
+            return false;
     }
-    return out;
+    return w.finish();
+}
+
+QByteArray writeCsvTable(const ToolTable &table)
+{
+    return collect(table, [](const ToolTable &t, const ByteSink &s) { return writeCsvTable(t, s); });
 }
 
 } // namespace Toffee

@@ -3,13 +3,11 @@
 #include "tablefile.h"
 
 #include <cmath>
+#include <cstring>
 
 #include <QCoreApplication>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
-#include <QSet>
 
+#include "tablereading.h"
 #include "textparsing.h"
 #include "toolvalidation.h"
 
@@ -45,165 +43,384 @@ QString tr(const char *text)
     return QCoreApplication::translate("Toffee::JsonFormat", text);
 }
 
-int lineAt(const QByteArray &data, qsizetype offset)
+// A JSON value that is not an object or array (those are parsed and kept as "Composite").
+struct Scalar
 {
-    offset = std::clamp<qsizetype>(offset, 0, data.size());
-    return int(QByteArrayView(data).first(offset).count('\n')) + 1;
-}
-
-// QJsonDocument keeps no positions: find where the index-th element of the top-level "tools" array starts.
-qsizetype toolOffset(const QByteArray &data, qsizetype index)
-{
-    int depth = 0;
-    bool inString = false;
-    bool escaped = false;
-    bool inTools = false;
-    bool expectElement = false;
-    qsizetype stringStart = 0;
-    QByteArrayView lastKey;
-    qsizetype count = -1;
-    for (qsizetype i = 0; i < data.size(); ++i) {
-        const char c = data.at(i);
-        if (inString) {
-            if (escaped)
-                escaped = false;
-            else if (c == '\\')
-                escaped = true;
-            else if (c == '"') {
-                inString = false;
-                if (depth == 1)
-                    lastKey = QByteArrayView(data).sliced(stringStart, i - stringStart);
-            }
-            continue;
-        }
-        if (expectElement && c != ' ' && c != '\n' && c != '\r' && c != '\t' && c != ']') {
-            expectElement = false;
-            if (++count == index)
-                return i;
-        }
-        switch (c) {
-        case '"':
-            inString = true;
-            stringStart = i + 1;
-            break;
-        case '{':
-        case '[':
-            ++depth;
-            if (c == '[' && depth == 2 && lastKey == "tools") {
-                inTools = true;
-                expectElement = true;
-            }
-            break;
-        case '}':
-        case ']':
-            --depth;
-            if (inTools && depth < 2)
-                inTools = false;
-            break;
-        case ',':
-            if (inTools && depth == 2)
-                expectElement = true;
-            break;
-        default:
-            break;
-        }
-    }
-    return -1;
-}
-
-Error toolError(const QByteArray &data, qsizetype index, const QString &message)
-{
-    const qsizetype offset = toolOffset(data, index);
-    return Error { message, offset < 0 ? 0 : lineAt(data, offset) };
-}
-
-struct ToolReader
-{
-    const QJsonObject &object;
-    QString problem;
-
-    double number(QLatin1StringView key, double fallback)
-    {
-        const QJsonValue v = object.value(key);
-        if (v.isUndefined() || v.isNull())
-            return fallback;
-        if (!v.isDouble()) {
-            fail(tr("\"%1\" must be a number.").arg(key));
-            return fallback;
-        }
-        return v.toDouble();
-    }
-
-    int integer(QLatin1StringView key, int fallback)
-    {
-        const double d = number(key, fallback);
-        if (d != std::floor(d) || std::fabs(d) > 2e9) {
-            fail(tr("\"%1\" must be a whole number.").arg(key));
-            return fallback;
-        }
-        return int(d);
-    }
-
-    QString string(QLatin1StringView key)
-    {
-        const QJsonValue v = object.value(key);
-        if (v.isUndefined() || v.isNull())
-            return {};
-        if (!v.isString()) {
-            fail(tr("\"%1\" must be text.").arg(key));
-            return {};
-        }
-        return v.toString();
-    }
-
-    void fail(const QString &message)
-    {
-        if (problem.isEmpty())
-            problem = message;
-    }
+    enum Kind { Null, Bool, Number, String, Composite } kind = Null;
+    double number = 0.0;
+    QString string;
 };
 
-Result<Tool> readTool(const QJsonObject &object)
+// A strict streaming JSON reader (RFC 8259) that knows the line of everything it reads: errors name the
+// line of the value at fault, and no document tree is built.
+class JsonScanner
 {
-    static const QSet<QString> known = { Key::Number,     Key::Pocket,     Key::Description,
-                                         Key::LengthGeometry, Key::LengthWear, Key::RadiusGeometry,
-                                         Key::RadiusWear, Key::MeasuredTlo, Key::MeasuredAt,
-                                         Key::Notes,      Key::LinuxCnc };
-    for (auto it = object.constBegin(); it != object.constEnd(); ++it) {
-        if (!known.contains(it.key()))
-            return Error { tr("unknown field \"%1\" in a tool.").arg(it.key()) };
+public:
+    explicit JsonScanner(QByteArrayView data)
+        : m_p(data.data())
+        , m_end(data.data() + data.size())
+    {
     }
-    if (!object.contains(Key::Number))
-        return Error { tr("a tool has no \"number\".") };
 
-    ToolReader r { object, {} };
-    Tool tool;
-    tool.number = r.integer(Key::Number, 0);
-    tool.pocket = r.integer(Key::Pocket, defaultPocket(tool.number));
-    tool.description = r.string(Key::Description);
-    tool.lengthGeometry = r.number(Key::LengthGeometry, 0.0);
-    tool.lengthWear = r.number(Key::LengthWear, 0.0);
-    tool.radiusGeometry = r.number(Key::RadiusGeometry, 0.0);
-    tool.radiusWear = r.number(Key::RadiusWear, 0.0);
-    if (object.contains(Key::MeasuredTlo) && !object.value(Key::MeasuredTlo).isNull())
-        tool.measuredTlo = r.number(Key::MeasuredTlo, 0.0);
-    const QString at = r.string(Key::MeasuredAt);
-    if (!at.isEmpty()) {
-        tool.measuredAt = QDateTime::fromString(at, Qt::ISODateWithMs);
-        if (!tool.measuredAt.isValid())
-            r.fail(tr("\"measured_at\" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z)."));
-        tool.measuredAt = tool.measuredAt.toUTC();
+    int line() const { return m_line; }
+    bool failed() const { return m_failed; }
+    const Error &error() const { return m_error; }
+
+    bool fail(const QString &message)
+    {
+        if (!m_failed) {
+            m_failed = true;
+            m_error = Error { message, m_line };
+        }
+        return false;
     }
-    tool.notes = r.string(Key::Notes);
-    tool.linuxCncExtra = r.string(Key::LinuxCnc);
-    if (!r.problem.isEmpty())
-        return Error { r.problem };
-    return tool;
+    bool syntax(const char *expected)
+    {
+        return fail(tr("this is not valid JSON: expected %1.").arg(QLatin1StringView(expected)));
+    }
+
+    void skipSpace()
+    {
+        while (m_p < m_end) {
+            const char c = *m_p;
+            if (c == '\n')
+                ++m_line;
+            else if (c != ' ' && c != '\t' && c != '\r')
+                return;
+            ++m_p;
+        }
+    }
+    char peek()
+    {
+        skipSpace();
+        return m_p < m_end ? *m_p : '\0';
+    }
+    bool consume(char c)
+    {
+        if (peek() != c)
+            return false;
+        ++m_p;
+        return true;
+    }
+    bool expect(char c, const char *what) { return consume(c) || syntax(what); }
+    bool atEnd()
+    {
+        skipSpace();
+        return m_p >= m_end;
+    }
+
+    // A key: read in place when it has no escapes (every key Toffee knows), else decoded as a string.
+    bool key(QByteArrayView &raw, QString &decoded)
+    {
+        if (peek() != '"')
+            return syntax("a key in double quotes");
+        const char *start = m_p + 1;
+        const char *q = start;
+        while (q < m_end && *q != '"' && *q != '\\' && uchar(*q) >= 0x20 && uchar(*q) < 0x80)
+            ++q;
+        if (q < m_end && *q == '"') {
+            raw = QByteArrayView(start, q - start);
+            m_p = q + 1;
+            return true;
+        }
+        if (!string(decoded))
+            return false;
+        m_keyBuffer = decoded.toUtf8();
+        raw = m_keyBuffer;
+        return true;
+    }
+
+    bool string(QString &out)
+    {
+        if (!consume('"'))
+            return syntax("a string in double quotes");
+        const char *start = m_p;
+        uchar high = 0;
+        while (m_p < m_end && *m_p != '"' && *m_p != '\\' && uchar(*m_p) >= 0x20)
+            high |= uchar(*m_p++);
+        if (m_p < m_end && *m_p == '"') {
+            const QByteArrayView raw(start, m_p - start);
+            ++m_p;
+            return decode(raw, high, out);
+        }
+        QByteArray buffer(start, m_p - start);
+        while (m_p < m_end) {
+            const char c = *m_p++;
+            if (c == '"')
+                return decode(buffer, 0x80, out);
+            if (uchar(c) < 0x20)
+                return fail(tr("this is not valid JSON: a line break or control character inside a string; "
+                               "write it as \\n."));
+            if (c != '\\') {
+                buffer += c;
+                continue;
+            }
+            if (m_p >= m_end)
+                break;
+            const char e = *m_p++;
+            switch (e) {
+            case '"': buffer += '"'; break;
+            case '\\': buffer += '\\'; break;
+            case '/': buffer += '/'; break;
+            case 'b': buffer += '\b'; break;
+            case 'f': buffer += '\f'; break;
+            case 'n': buffer += '\n'; break;
+            case 'r': buffer += '\r'; break;
+            case 't': buffer += '\t'; break;
+            case 'u': {
+                char32_t code = 0;
+                if (!hex4(code))
+                    return false;
+                if (code >= 0xD800 && code <= 0xDBFF) {
+                    char32_t low = 0;
+                    if (m_end - m_p < 6 || m_p[0] != '\\' || m_p[1] != 'u')
+                        return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
+                    m_p += 2;
+                    if (!hex4(low) || low < 0xDC00 || low > 0xDFFF)
+                        return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
+                    code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
+                } else if (code >= 0xDC00 && code <= 0xDFFF) {
+                    return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
+                }
+                buffer += QString::fromUcs4(&code, 1).toUtf8();
+                break;
+            }
+            default:
+                return fail(tr("this is not valid JSON: unknown escape \\%1 in a string.").arg(QLatin1Char(e)));
+            }
+        }
+        return fail(tr("this is not valid JSON: a string is never closed."));
+    }
+
+    bool number(double &out)
+    {
+        skipSpace();
+        const char *start = m_p;
+        auto digits = [this] {
+            const char *from = m_p;
+            while (m_p < m_end && *m_p >= '0' && *m_p <= '9')
+                ++m_p;
+            return m_p - from;
+        };
+        if (m_p < m_end && *m_p == '-')
+            ++m_p;
+        const char *intStart = m_p;
+        const auto intDigits = digits();
+        if (intDigits == 0 || (intDigits > 1 && *intStart == '0'))
+            return syntax("a number");
+        if (m_p < m_end && *m_p == '.') {
+            ++m_p;
+            if (digits() == 0)
+                return syntax("digits after the decimal point");
+        }
+        if (m_p < m_end && (*m_p == 'e' || *m_p == 'E')) {
+            ++m_p;
+            if (m_p < m_end && (*m_p == '+' || *m_p == '-'))
+                ++m_p;
+            if (digits() == 0)
+                return syntax("digits in the exponent");
+        }
+        const auto value = parseDecimal(QByteArrayView(start, m_p - start));
+        if (!value)
+            return fail(tr("the number %1 is too large.").arg(QString::fromLatin1(start, m_p - start)));
+        out = *value;
+        return true;
+    }
+
+    bool value(Scalar &out, int depth = 0)
+    {
+        if (depth > 64)
+            return fail(tr("this is not valid JSON for a tool table: nested too deeply."));
+        const char c = peek();
+        out = Scalar();
+        if (c == '"') {
+            out.kind = Scalar::String;
+            return string(out.string);
+        }
+        if (c == '-' || (c >= '0' && c <= '9')) {
+            out.kind = Scalar::Number;
+            return number(out.number);
+        }
+        if (c == '{' || c == '[') {
+            out.kind = Scalar::Composite;
+            ++m_p;
+            const char close = c == '{' ? '}' : ']';
+            if (consume(close))
+                return true;
+            do {
+                Scalar inner;
+                if (c == '{') {
+                    QString key;
+                    if (!string(key) || !expect(':', "':' after a key"))
+                        return false;
+                }
+                if (!value(inner, depth + 1))
+                    return false;
+            } while (consume(','));
+            return expect(close, c == '{' ? "',' or '}'" : "',' or ']'");
+        }
+        for (const auto &[word, kind] : { std::pair { "true", Scalar::Bool }, std::pair { "false", Scalar::Bool },
+                                          std::pair { "null", Scalar::Null } }) {
+            const qsizetype n = qsizetype(std::strlen(word));
+            if (m_end - m_p >= n && QByteArrayView(m_p, n) == word) {
+                m_p += n;
+                out.kind = kind;
+                return true;
+            }
+        }
+        return syntax("a value");
+    }
+
+private:
+    bool hex4(char32_t &code)
+    {
+        if (m_end - m_p < 4)
+            return fail(tr("this is not valid JSON: a \\u escape needs four hex digits."));
+        for (int i = 0; i < 4; ++i) {
+            const char h = *m_p++;
+            const int v = h >= '0' && h <= '9' ? h - '0' : h >= 'a' && h <= 'f' ? h - 'a' + 10 : h >= 'A' && h <= 'F' ? h - 'A' + 10 : -1;
+            if (v < 0)
+                return fail(tr("this is not valid JSON: a \\u escape needs four hex digits."));
+            code = code * 16 + char32_t(v);
+        }
+        return true;
+    }
+
+    bool decode(QByteArrayView raw, uchar high, QString &out)
+    {
+        if (!(high & 0x80)) {
+            out = QString::fromLatin1(raw);
+            return true;
+        }
+        auto text = decodeUtf8(raw);
+        if (!text)
+            return fail(tr("a string is not valid UTF-8 text."));
+        out = std::move(*text);
+        return true;
+    }
+
+    const char *m_p;
+    const char *m_end;
+    int m_line = 1;
+    bool m_failed = false;
+    Error m_error;
+    QByteArray m_keyBuffer;
+};
+
+bool wholeNumber(JsonScanner &json, const Scalar &v, QLatin1StringView key, int &out)
+{
+    if (v.kind != Scalar::Number || v.number != std::floor(v.number) || std::fabs(v.number) > 2e9)
+        return json.fail(tr("\"%1\" must be a whole number.").arg(key));
+    out = int(v.number);
+    return true;
+}
+
+bool decimal(JsonScanner &json, const Scalar &v, QLatin1StringView key, double &out)
+{
+    if (v.kind != Scalar::Number)
+        return json.fail(tr("\"%1\" must be a number.").arg(key));
+    out = v.number;
+    return true;
+}
+
+bool text(JsonScanner &json, const Scalar &v, QLatin1StringView key, QString &out)
+{
+    if (v.kind == Scalar::Null)
+        return true;
+    if (v.kind != Scalar::String)
+        return json.fail(tr("\"%1\" must be text.").arg(key));
+    out = v.string;
+    return true;
+}
+
+// One tool object; `json` is at its '{'.
+bool readTool(JsonScanner &json, Tool &tool)
+{
+    if (json.peek() != '{')
+        return json.fail(tr("each entry of \"tools\" must be a JSON object such as {\"number\": 1}."));
+    json.consume('{');
+    bool hasNumber = false;
+    bool hasPocket = false;
+    quint32 seen = 0;
+    static const QLatin1StringView keys[] = { Key::Number,         Key::Pocket,     Key::Description,
+                                              Key::LengthGeometry, Key::LengthWear, Key::RadiusGeometry,
+                                              Key::RadiusWear,     Key::MeasuredTlo, Key::MeasuredAt,
+                                              Key::Notes,          Key::LinuxCnc };
+    if (!json.consume('}')) {
+        do {
+            QByteArrayView key;
+            QString decodedKey;
+            Scalar v;
+            if (!json.key(key, decodedKey) || !json.expect(':', "':' after a key") || !json.value(v))
+                return false;
+            const auto found = std::find_if(std::begin(keys), std::end(keys),
+                                            [&key](QLatin1StringView k) { return QByteArrayView(k.data(), k.size()) == key; });
+            if (found == std::end(keys))
+                return json.fail(tr("unknown field \"%1\" in a tool.").arg(QString::fromUtf8(key)));
+            const auto bit = quint32(1) << (found - std::begin(keys));
+            if (seen & bit)
+                return json.fail(tr("the field \"%1\" appears twice in a tool.").arg(QString::fromUtf8(key)));
+            seen |= bit;
+            const QLatin1StringView k = *found;
+            bool ok = true;
+            if (k == Key::Number) {
+                ok = wholeNumber(json, v, k, tool.number);
+                hasNumber = true;
+            } else if (k == Key::Pocket) {
+                ok = wholeNumber(json, v, k, tool.pocket);
+                hasPocket = true;
+            } else if (k == Key::Description) {
+                ok = text(json, v, k, tool.description);
+            } else if (k == Key::LengthGeometry) {
+                ok = decimal(json, v, k, tool.lengthGeometry);
+            } else if (k == Key::LengthWear) {
+                ok = decimal(json, v, k, tool.lengthWear);
+            } else if (k == Key::RadiusGeometry) {
+                ok = decimal(json, v, k, tool.radiusGeometry);
+            } else if (k == Key::RadiusWear) {
+                ok = decimal(json, v, k, tool.radiusWear);
+            } else if (k == Key::MeasuredTlo) {
+                if (v.kind != Scalar::Null) {
+                    double tlo = 0.0;
+                    ok = decimal(json, v, k, tlo);
+                    tool.measuredTlo = tlo;
+                }
+            } else if (k == Key::MeasuredAt) {
+                QString at;
+                ok = text(json, v, k, at);
+                if (ok && !at.isEmpty()) {
+                    tool.measuredAt = parseIsoDateTime(at.toLatin1());
+                    if (!tool.measuredAt.isValid())
+                        ok = json.fail(tr("\"measured_at\" is not a date and time (use ISO 8601, e.g. "
+                                          "2026-11-22T10:15:00Z)."));
+                }
+            } else if (k == Key::Notes) {
+                ok = text(json, v, k, tool.notes);
+            } else {
+                ok = text(json, v, k, tool.linuxCncExtra);
+            }
+            if (!ok)
+                return false;
+        } while (json.consume(','));
+        if (!json.expect('}', "',' or '}' in a tool"))
+            return false;
+    }
+    if (!hasNumber)
+        return json.fail(tr("a tool has no \"number\"."));
+    if (!hasPocket)
+        tool.pocket = defaultPocket(tool.number);
+    return true;
 }
 
 void appendString(QByteArray &out, const QString &s)
 {
     out += '"';
+    const bool plain = std::none_of(s.cbegin(), s.cend(), [](QChar c) { return c.unicode() < 0x20 || c == u'"' || c == u'\\'; });
+    if (plain) {
+        appendUtf8(out, s);
+        out += '"';
+        return;
+    }
     const QByteArray utf8 = s.toUtf8();
     for (char c : utf8) {
         switch (c) {
@@ -241,66 +458,108 @@ void appendField(QByteArray &out, QLatin1StringView key, double value)
     out += ", \"";
     out += key.data();
     out += "\": ";
-    out += formatNumber(value).toLatin1();
+    appendNumber(out, value);
 }
 
 } // namespace
 
 Result<ToolTable> readJsonTable(const QByteArray &data)
 {
-    QJsonParseError parseError;
-    const QJsonDocument document = QJsonDocument::fromJson(data, &parseError);
-    if (parseError.error != QJsonParseError::NoError)
-        return Error { tr("this is not valid JSON: %1.").arg(parseError.errorString()),
-                       lineAt(data, parseError.offset) };
-    if (!document.isObject())
-        return Error { tr("this is not a Toffee tool table: the file must hold one JSON object."), 1 };
-    const QJsonObject root = document.object();
-    if (root.value(Key::Format).toString() != kFormatId)
-        return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1 };
-    const QJsonValue version = root.value(Key::Version);
-    if (!version.isDouble() || version.toDouble() != std::floor(version.toDouble()) || version.toDouble() < 1)
-        return Error { tr("\"version\" must be a whole number from 1 up."), 1 };
-    if (version.toDouble() > kJsonVersion)
-        return Error { tr("this table was written by a newer Toffee (format version %1); this one reads up to "
-                          "version %2. Update Toffee to open it.")
-                           .arg(version.toInt())
-                           .arg(kJsonVersion),
-                       1 };
-    for (auto it = root.constBegin(); it != root.constEnd(); ++it) {
-        if (it.key() != Key::Format && it.key() != Key::Version && it.key() != Key::Units && it.key() != Key::Tools)
-            return Error { tr("unknown field \"%1\" in the table.").arg(it.key()), 1 };
+    JsonScanner json(data);
+    if (json.atEnd())
+        return Error { tr("this is not valid JSON: the file is empty."), 1 };
+    if (json.peek() != '{')
+        return Error { tr("this is not a Toffee tool table: the file must hold one JSON object."), json.line() };
+    json.consume('{');
+
+    std::optional<Units> units;
+    bool hasFormat = false;
+    bool hasVersion = false;
+    bool hasTools = false;
+    QList<Tool> tools;
+    QList<int> lines;
+    tools.reserve(countLines(data)); // Toffee writes one tool a line
+    lines.reserve(tools.capacity());
+    if (!json.consume('}')) {
+        do {
+            QString key;
+            if (!json.string(key) || !json.expect(':', "':' after a key"))
+                return json.error();
+            if (key == Key::Tools) {
+                if (!hasFormat)
+                    return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\", before "
+                                      "\"tools\".")
+                                       .arg(kFormatId),
+                                   json.line() };
+                if (!hasVersion)
+                    return Error { tr("\"version\" must come before \"tools\"."), json.line() };
+                if (hasTools)
+                    return Error { tr("\"tools\" appears twice."), json.line() };
+                hasTools = true;
+                if (!json.consume('['))
+                    return Error { tr("\"tools\" must be a list of tools."), json.line() };
+                if (!json.consume(']')) {
+                    do {
+                        Tool tool;
+                        lines.append((json.peek(), json.line()));
+                        if (!readTool(json, tool))
+                            return json.error();
+                        tools.append(std::move(tool));
+                    } while (json.consume(','));
+                    if (!json.expect(']', "',' or ']' after a tool"))
+                        return json.error();
+                }
+                continue;
+            }
+            Scalar v;
+            const int line = (json.peek(), json.line());
+            if (!json.value(v))
+                return json.error();
+            if (key == Key::Format) {
+                if (v.kind != Scalar::String || v.string != kFormatId)
+                    return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId),
+                                   line };
+                hasFormat = true;
+            } else if (key == Key::Version) {
+                if (v.kind != Scalar::Number || v.number != std::floor(v.number) || v.number < 1)
+                    return Error { tr("\"version\" must be a whole number from 1 up."), line };
+                if (v.number > kJsonVersion)
+                    return Error { tr("this table was written by a newer Toffee (format version %1); this one "
+                                      "reads up to version %2. Update Toffee to open it.")
+                                       .arg(v.number)
+                                       .arg(kJsonVersion),
+                                   line };
+                hasVersion = true;
+            } else if (key == Key::Units) {
+                units = v.kind == Scalar::String ? unitsFromSymbol(v.string) : std::nullopt;
+                if (!units)
+                    return Error { tr("\"units\" must be \"mm\" or \"in\"."), line };
+            } else if (!hasFormat) {
+                return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1 };
+            } else {
+                return Error { tr("unknown field \"%1\" in the table.").arg(key), line };
+            }
+        } while (json.consume(','));
+        if (!json.expect('}', "',' or '}' at the end of the table"))
+            return json.error();
     }
-    const auto units = unitsFromSymbol(root.value(Key::Units).toString());
+    if (!json.atEnd())
+        return Error { tr("this is not valid JSON: there is more text after the table."), json.line() };
+    if (!hasFormat)
+        return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1 };
+    if (!hasVersion)
+        return Error { tr("\"version\" must be a whole number from 1 up."), 1 };
     if (!units)
         return Error { tr("\"units\" must be \"mm\" or \"in\"."), 1 };
-    const QJsonValue toolsValue = root.value(Key::Tools);
-    if (!toolsValue.isArray())
+    if (!hasTools)
         return Error { tr("\"tools\" must be a list of tools."), 1 };
-
-    const QJsonArray array = toolsValue.toArray();
-    QList<Tool> tools;
-    tools.reserve(array.size());
-    for (qsizetype i = 0; i < array.size(); ++i) {
-        const QJsonValue value = array.at(i);
-        if (!value.isObject())
-            return toolError(data, i, tr("tool %1 in the list is not a JSON object.").arg(i + 1));
-        auto tool = readTool(value.toObject());
-        if (!tool)
-            return toolError(data, i, tool.error().message);
-        tools.append(tool.takeValue());
-    }
-    qsizetype bad = -1;
-    auto table = ToolTable::fromTools(std::move(tools), *units, &bad);
-    if (!table)
-        return toolError(data, bad, table.error().message);
-    return table;
+    return buildTable(std::move(tools), lines, *units);
 }
 
-QByteArray writeJsonTable(const ToolTable &table)
+bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
 {
-    QByteArray out;
-    out.reserve(64 + table.size() * 200);
+    ChunkedWriter w(sink);
+    QByteArray &out = w.out;
     out += "{\n  \"format\": \"toffee-tool-table\",\n  \"version\": ";
     out += QByteArray::number(kJsonVersion);
     out += ",\n  \"units\": \"";
@@ -323,8 +582,9 @@ QByteArray writeJsonTable(const ToolTable &table)
         if (tool.measuredTlo)
             appendField(out, Key::MeasuredTlo, *tool.measuredTlo);
         if (tool.measuredAt.isValid()) {
-            out += ", \"measured_at\": ";
-            appendString(out, tool.measuredAt.toUTC().toString(Qt::ISODateWithMs));
+            out += ", \"measured_at\": \"";
+            appendIsoUtc(out, tool.measuredAt);
+            out += '"';
         }
         if (!tool.notes.isEmpty()) {
             out += ", \"notes\": ";
@@ -335,9 +595,16 @@ QByteArray writeJsonTable(const ToolTable &table)
             appendString(out, tool.linuxCncExtra);
         }
         out += '}';
+        if (!w.next())
+            return false;
     }
     out += table.isEmpty() ? "]\n}\n" : "\n  ]\n}\n";
-    return out;
+    return w.finish();
+}
+
+QByteArray writeJsonTable(const ToolTable &table)
+{
+    return collect(table, [](const ToolTable &t, const ByteSink &s) { return writeJsonTable(t, s); });
 }
 
 } // namespace Toffee

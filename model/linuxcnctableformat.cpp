@@ -8,8 +8,8 @@
 #include <cstring>
 
 #include <QCoreApplication>
-#include <QHash>
 
+#include "tablereading.h"
 #include "textparsing.h"
 #include "toolvalidation.h"
 
@@ -65,20 +65,20 @@ Result<Tool> parseLine(QByteArrayView line)
 
         const char letter = char(QChar::toUpper(uchar(token.front())));
         const QByteArrayView value = token.sliced(1);
-        const QString tokenText = QString::fromUtf8(token);
+        const auto tokenText = [token] { return QString::fromUtf8(token); }; // for messages only
         if (seen.contains(letter))
-            return Error { tr("\"%1\": the field %2 appears twice.").arg(tokenText, QChar::fromLatin1(letter)) };
+            return Error { tr("\"%1\": the field %2 appears twice.").arg(tokenText(), QChar::fromLatin1(letter)) };
         seen += letter;
         if (letter == 'T' || letter == 'P' || letter == 'Q') {
             const auto n = parseInteger(value);
             if (!n)
-                return Error { tr("\"%1\": %2 needs a whole number.").arg(tokenText, QChar::fromLatin1(letter)) };
+                return Error { tr("\"%1\": %2 needs a whole number.").arg(tokenText(), QChar::fromLatin1(letter)) };
             if (letter == 'T')
                 number = n;
             else if (letter == 'P')
                 pocket = n;
             else if (*n < 0 || *n > 9)
-                return Error { tr("\"%1\": the orientation Q must be 0 to 9.").arg(tokenText) };
+                return Error { tr("\"%1\": the orientation Q must be 0 to 9.").arg(tokenText()) };
             else
                 extra[std::strchr(kExtraLetters, 'Q') - kExtraLetters] = double(*n);
             continue;
@@ -87,10 +87,10 @@ Result<Tool> parseLine(QByteArrayView line)
         if (letter != 'Z' && letter != 'D' && !slot)
             return Error { tr("\"%1\" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, "
                               "J, Q and a ;comment.")
-                               .arg(tokenText) };
+                               .arg(tokenText()) };
         const auto v = parseDecimal(value);
         if (!v)
-            return Error { tr("\"%1\": %2 needs a number.").arg(tokenText, QChar::fromLatin1(letter)) };
+            return Error { tr("\"%1\": %2 needs a number.").arg(tokenText(), QChar::fromLatin1(letter)) };
         if (letter == 'Z')
             z = v;
         else if (letter == 'D')
@@ -134,11 +134,9 @@ Result<Tool> parseLine(QByteArrayView line)
 }
 
 // Folding wear into geometry can leave binary noise (100 - 0.1); LinuxCNC works in 1e-6 steps anyway.
-QString folded(double geometry, double wear)
+void appendFolded(QByteArray &out, double geometry, double wear)
 {
-    if (wear == 0.0)
-        return formatNumber(geometry);
-    return formatNumber(std::round((geometry + wear) * 1e6) / 1e6);
+    appendNumber(out, wear == 0.0 ? geometry : std::round((geometry + wear) * 1e6) / 1e6);
 }
 
 } // namespace
@@ -147,7 +145,8 @@ Result<ToolTable> readLinuxCncTable(const QByteArray &data, Units units)
 {
     QList<Tool> tools;
     QList<int> lines;
-    QHash<int, int> firstLine;
+    tools.reserve(countLines(data));
+    lines.reserve(tools.capacity());
     const QByteArrayView all(data);
     qsizetype start = 0;
     int lineNumber = 0;
@@ -165,40 +164,45 @@ Result<ToolTable> readLinuxCncTable(const QByteArray &data, Units units)
         auto tool = parseLine(line);
         if (!tool)
             return Error { tool.error().message, lineNumber };
-        if (const int previous = firstLine.value(tool.value().number); previous > 0)
-            return Error { tr("tool T%1 is already defined on line %2; tool numbers must be unique.")
-                               .arg(tool.value().number)
-                               .arg(previous),
-                           lineNumber };
-        firstLine.insert(tool.value().number, lineNumber);
         tools.append(tool.takeValue());
         lines.append(lineNumber);
     }
-    qsizetype bad = -1;
-    auto table = ToolTable::fromTools(std::move(tools), units, &bad);
-    if (!table)
-        return Error { table.error().message, bad >= 0 ? lines.at(bad) : 0 };
-    return table;
+    return buildTable(std::move(tools), lines, units);
+}
+
+bool writeLinuxCncTable(const ToolTable &table, const ByteSink &sink)
+{
+    ChunkedWriter w(sink);
+    QByteArray &out = w.out;
+    for (const Tool &tool : table.tools()) {
+        out += 'T';
+        out += QByteArray::number(tool.number);
+        out += " P";
+        out += QByteArray::number(tool.pocket);
+        out += " Z";
+        appendFolded(out, tool.lengthGeometry, tool.lengthWear);
+        if (tool.radiusGeometry + tool.radiusWear != 0.0) {
+            out += " D";
+            appendFolded(out, 2.0 * tool.radiusGeometry, 2.0 * tool.radiusWear);
+        }
+        if (!tool.linuxCncExtra.isEmpty()) {
+            out += ' ';
+            out += tool.linuxCncExtra.toLatin1();
+        }
+        if (!tool.description.isEmpty()) {
+            out += " ;";
+            out += tool.description.toUtf8();
+        }
+        out += '\n';
+        if (!w.next())
+            return false;
+    }
+    return w.finish();
 }
 
 QByteArray writeLinuxCncTable(const ToolTable &table)
 {
-    QByteArray out;
-    out.reserve(table.size() * 48);
-    for (const Tool &tool : table.tools()) {
-        QString line = u"T"_s + QString::number(tool.number) + u" P"_s + QString::number(tool.pocket) + u" Z"_s
-            + folded(tool.lengthGeometry, tool.lengthWear);
-        const double radius = tool.radiusGeometry + tool.radiusWear;
-        if (radius != 0.0)
-            line += u" D"_s + folded(2.0 * tool.radiusGeometry, 2.0 * tool.radiusWear);
-        if (!tool.linuxCncExtra.isEmpty())
-            line += u' ' + tool.linuxCncExtra;
-        if (!tool.description.isEmpty())
-            line += u" ;"_s + tool.description;
-        out += line.toUtf8();
-        out += '\n';
-    }
-    return out;
+    return collect(table, [](const ToolTable &t, const ByteSink &s) { return writeLinuxCncTable(t, s); });
 }
 
 } // namespace Toffee

@@ -90,6 +90,19 @@ QByteArray writeTable(const ToolTable &table, TableFormat format)
     return {};
 }
 
+bool writeTable(const ToolTable &table, TableFormat format, const ByteSink &sink)
+{
+    switch (format) {
+    case TableFormat::Json:
+        return writeJsonTable(table, sink);
+    case TableFormat::LinuxCnc:
+        return writeLinuxCncTable(table, sink);
+    case TableFormat::Csv:
+        return writeCsvTable(table, sink);
+    }
+    return false;
+}
+
 QStringList formatLosses(const ToolTable &table, TableFormat format)
 {
     if (format != TableFormat::LinuxCnc)
@@ -139,8 +152,10 @@ Result<void> saveTableFile(const QString &path, const ToolTable &table, TableFor
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return Error { tr("%1: cannot write: %2").arg(path, file.errorString()) };
-    const QByteArray data = writeTable(table, format);
-    if (file.write(data) != data.size() || !file.commit())
+    const bool written = writeTable(table, format, [&file](QByteArrayView piece) {
+        return file.write(piece.data(), piece.size()) == piece.size();
+    });
+    if (!written || !file.commit())
         return Error { tr("%1: saving failed, the old file is unchanged: %2").arg(path, file.errorString()) };
     return {};
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include <QByteArray>
@@ -32,12 +33,19 @@ enum class TableFormat { Json, LinuxCnc, Csv };
 // Written through QSaveFile: a crash or a full disk leaves the old file whole.
 [[nodiscard]] Result<void> saveTableFile(const QString &path, const ToolTable &table, TableFormat format);
 
+// Writers hand the file over in pieces of about a megabyte, in order; a sink returning false stops them.
+using ByteSink = std::function<bool(QByteArrayView piece)>;
+bool writeTable(const ToolTable &table, TableFormat format, const ByteSink &sink);
+
 // The individual formats, for tests and benchmarks.
 [[nodiscard]] Result<ToolTable> readJsonTable(const QByteArray &data);
 [[nodiscard]] QByteArray writeJsonTable(const ToolTable &table);
+bool writeJsonTable(const ToolTable &table, const ByteSink &sink);
 [[nodiscard]] Result<ToolTable> readLinuxCncTable(const QByteArray &data, Units units);
 [[nodiscard]] QByteArray writeLinuxCncTable(const ToolTable &table);
+bool writeLinuxCncTable(const ToolTable &table, const ByteSink &sink);
 [[nodiscard]] Result<ToolTable> readCsvTable(const QByteArray &data);
 [[nodiscard]] QByteArray writeCsvTable(const ToolTable &table);
+bool writeCsvTable(const ToolTable &table, const ByteSink &sink);
 
 } // namespace Toffee

@@ -3,7 +3,9 @@
 
 #include <optional>
 
+#include <QByteArray>
 #include <QByteArrayView>
+#include <QDateTime>
 #include <QString>
 
 namespace Toffee {
@@ -12,6 +14,17 @@ namespace Toffee {
 // (an optional leading + or -), and the result finite. Anything else is "not a number", never 0.
 [[nodiscard]] std::optional<double> parseDecimal(QByteArrayView text);
 [[nodiscard]] std::optional<qint64> parseInteger(QByteArrayView text);
+
+// The shortest text that reads back as the same double, in fixed notation (never an exponent, never "-0").
+void appendNumber(QByteArray &out, double value);
+
+// Appends `text` as UTF-8; ASCII (nearly all tool data) is copied straight, without a temporary.
+void appendUtf8(QByteArray &out, QStringView text);
+
+// ISO 8601 in UTC with milliseconds ("2026-11-22T10:15:00.125Z"), as files store times.
+void appendIsoUtc(QByteArray &out, const QDateTime &time);
+// ISO 8601 with or without milliseconds and with Z or an offset; invalid QDateTime when it is not one.
+[[nodiscard]] QDateTime parseIsoDateTime(QByteArrayView text);
 
 // UTF-8 to QString, or nothing when the bytes are not valid UTF-8 (a garbled or binary file).
 [[nodiscard]] std::optional<QString> decodeUtf8(QByteArrayView bytes);

@@ -25,14 +25,22 @@ Error duplicateError(int number)
 
 } // namespace
 
-Result<ToolTable> ToolTable::fromTools(QList<Tool> tools, Units units, qsizetype *badIndex)
+Result<ToolTable> ToolTable::fromTools(QList<Tool> tools, Units units, Problem *problem)
 {
     for (qsizetype i = 0; i < tools.size(); ++i) {
         if (auto r = validateTool(tools.at(i), units); !r) {
-            if (badIndex)
-                *badIndex = i;
+            if (problem)
+                *problem = { i, -1, tools.at(i).number };
             return r.error();
         }
+    }
+    // Files Toffee writes are in tool order: then the list is the table, with no copy.
+    const auto ascending = std::adjacent_find(tools.cbegin(), tools.cend(),
+                                              [](const Tool &a, const Tool &b) { return a.number >= b.number; });
+    if (ascending == tools.cend()) {
+        ToolTable table(units);
+        table.m_tools = std::move(tools);
+        return table;
     }
     // Sort a permutation, not the tools, so a duplicate can be reported at its place in the input.
     std::vector<qsizetype> order(tools.size());
@@ -41,8 +49,8 @@ Result<ToolTable> ToolTable::fromTools(QList<Tool> tools, Units units, qsizetype
                      [&tools](qsizetype a, qsizetype b) { return tools.at(a).number < tools.at(b).number; });
     for (size_t k = 1; k < order.size(); ++k) {
         if (tools.at(order[k]).number == tools.at(order[k - 1]).number) {
-            if (badIndex)
-                *badIndex = order[k];
+            if (problem)
+                *problem = { order[k], order[k - 1], tools.at(order[k]).number };
             return duplicateError(tools.at(order[k]).number);
         }
     }

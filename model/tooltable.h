@@ -20,9 +20,16 @@ public:
     {
     }
 
-    // Builds a table from tools in any order; the first invalid or duplicate tool refuses the lot,
-    // and `badIndex` (when given) says which of `tools` it was, so a reader can name its line.
-    [[nodiscard]] static Result<ToolTable> fromTools(QList<Tool> tools, Units units, qsizetype *badIndex = nullptr);
+    // Which of the tools given to fromTools was refused, so a reader can name its line.
+    struct Problem
+    {
+        qsizetype index = -1; // the refused tool
+        qsizetype duplicateOf = -1; // for a repeated number: the earlier tool with it
+        int number = 0; // the refused tool's number
+    };
+
+    // Builds a table from tools in any order; the first invalid or duplicate tool refuses the lot.
+    [[nodiscard]] static Result<ToolTable> fromTools(QList<Tool> tools, Units units, Problem *problem = nullptr);
 
     [[nodiscard]] Units units() const { return m_units; }
     [[nodiscard]] const QList<Tool> &tools() const { return m_tools; }

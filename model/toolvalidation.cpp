@@ -6,6 +6,8 @@
 #include <QCoreApplication>
 #include <QLocale>
 
+#include "textparsing.h"
+
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
@@ -41,9 +43,9 @@ double maxWear(Units units)
 
 QString formatNumber(double value)
 {
-    if (value == 0.0)
-        return u"0"_s; // never "-0"
-    return QString::number(value, 'f', QLocale::FloatingPointShortest);
+    QByteArray text;
+    appendNumber(text, value);
+    return QString::fromLatin1(text);
 }
 
 QString displayNumber(double value, Units units)
@@ -109,8 +111,38 @@ Result<void> validateLinuxCncExtra(const QString &extra)
     return {};
 }
 
+namespace {
+
+bool withinLimit(double value, double limit)
+{
+    return std::isfinite(value) && std::fabs(value) <= limit;
+}
+
+// The common case, without building a single message: loading 100,000 tools validates each one.
+bool isPlainlyValid(const Tool &tool, Units units)
+{
+    const double geometry = maxGeometry(units);
+    const double wear = maxWear(units);
+    if (tool.number < Limits::kMinToolNumber || tool.number > Limits::kMaxToolNumber
+        || tool.pocket < Limits::kMinPocket || tool.pocket > Limits::kMaxPocket
+        || tool.description.size() > Limits::kMaxDescriptionLength || tool.notes.size() > Limits::kMaxNotesLength
+        || !tool.linuxCncExtra.isEmpty() || !withinLimit(tool.lengthGeometry, geometry)
+        || !withinLimit(tool.lengthWear, wear) || !withinLimit(tool.radiusGeometry, geometry)
+        || !withinLimit(tool.radiusWear, wear) || (tool.measuredTlo && !withinLimit(*tool.measuredTlo, geometry)))
+        return false;
+    for (QChar c : tool.description) {
+        if (c.unicode() < 0x20 || (c.unicode() >= 0x7f && c.category() == QChar::Other_Control))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
 Result<void> validateTool(const Tool &tool, Units units)
 {
+    if (isPlainlyValid(tool, units))
+        return {};
     const QString prefix = u"T"_s + QString::number(tool.number) + u": "_s;
     auto withPrefix = [&](const Result<void> &r) -> Result<void> {
         if (r.ok())

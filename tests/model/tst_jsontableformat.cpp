@@ -56,6 +56,13 @@ private Q_SLOTS:
         QCOMPARE(table.value().find(2)->measuredTlo.value_or(0), -33.388);
     }
 
+    void decodesEscapes()
+    {
+        const auto read = readJsonTable(table({ R"({"number": 1, "notes": "\"a\"\\b\/\n\u00e9\ud83d\udd27"})" }));
+        QVERIFY2(read.ok(), qPrintable(read.error().text()));
+        QCOMPARE(read.value().at(0).notes, u"\"a\"\\b/\n\u00e9\U0001F527"_s);
+    }
+
     void readsOptionalFieldsAsDefaults()
     {
         const auto read = readJsonTable(table({ R"({"number": 12})" }));
@@ -100,7 +107,7 @@ private Q_SLOTS:
         QTest::newRow("unknown table field")
             << QByteArray(R"({"format": "toffee-tool-table", "version": 1, "units": "mm", "tools": [], "x": 1})") << 1
             << u"unknown field \"x\""_s;
-        QTest::newRow("a tool that is not an object") << table({ kGood, "42" }) << 7 << u"not a JSON object"_s;
+        QTest::newRow("a tool that is not an object") << table({ kGood, "42" }) << 7 << u"must be a JSON object"_s;
         QTest::newRow("a tool without a number") << table({ kGood, R"({"pocket": 2})" }) << 7 << u"no \"number\""_s;
         QTest::newRow("fractional tool number") << table({ R"({"number": 1.5})" }) << 6 << u"whole number"_s;
         QTest::newRow("huge tool number") << table({ R"({"number": 1e12})" }) << 6 << u"whole number"_s;
@@ -111,7 +118,7 @@ private Q_SLOTS:
         QTest::newRow("wear out of range")
             << table({ kGood, R"({"number": 2, "length_wear": 120})" }) << 7 << u"length wear 120 mm"_s;
         QTest::newRow("duplicate tool")
-            << table({ kGood, R"({"number": 2})", R"({"number": 1})" }) << 8 << u"already in the table"_s;
+            << table({ kGood, R"({"number": 2})", R"({"number": 1})" }) << 8 << u"tool 1 is already on line 6"_s;
         QTest::newRow("unknown tool field") << table({ R"({"number": 1, "lenght": 3})" }) << 6 << u"\"lenght\""_s;
         QTest::newRow("bad date") << table({ R"({"number": 1, "measured_at": "yesterday"})" }) << 6 << u"not a date"_s;
         QTest::newRow("description not text") << table({ R"({"number": 1, "description": 5})" }) << 6
@@ -120,6 +127,18 @@ private Q_SLOTS:
             << table({ R"({"number": 1, "description": "a\nb"})" }) << 6 << u"one line"_s;
         QTest::newRow("bad LinuxCNC extra") << table({ R"({"number": 1, "linuxcnc": "K3"})" }) << 6
                                             << u"LinuxCNC tool field"_s;
+        QTest::newRow("string not UTF-8") << table({ "{\"number\": 1, \"notes\": \"caf\xe9\"}" }) << 6
+                                          << u"not valid UTF-8"_s;
+        QTest::newRow("unknown escape") << table({ R"({"number": 1, "notes": "a\qb"})" }) << 6 << u"unknown escape"_s;
+        QTest::newRow("raw line break in a string") << table({ "{\"number\": 1, \"notes\": \"a\nb\"}" }) << 6
+                                                    << u"line break or control character"_s;
+        QTest::newRow("lone surrogate") << table({ R"({"number": 1, "notes": "\ud800"})" }) << 6 << u"surrogate"_s;
+        QTest::newRow("leading zero") << table({ R"({"number": 01})" }) << 6 << u"expected a number"_s;
+        QTest::newRow("field twice") << table({ R"({"number": 1, "number": 2})" }) << 6 << u"appears twice"_s;
+        QTest::newRow("number too large") << table({ R"({"number": 1, "length_wear": 1e999})" }) << 6
+                                          << u"too large"_s;
+        QTest::newRow("deeply nested garbage")
+            << QByteArray(R"({"format": "toffee-tool-table", "x": )") + QByteArray(200, '[') << 1 << u"nested too deeply"_s;
         QTest::newRow("tools on one line, the third bad")
             << table({ R"({"number": 1}, {"number": 2}, {"number": 3, "pocket": -1})" }) << 6 << u"pocket -1"_s;
     }

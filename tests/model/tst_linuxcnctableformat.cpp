@@ -116,7 +116,7 @@ private Q_SLOTS:
         QTest::newRow("fractional orientation") << ok + "T2 P2 Q1.5" << 4 << u"Q needs a whole number"_s;
         QTest::newRow("negative tool") << ok + "T-3 P2" << 4 << u"tool number -3"_s;
         QTest::newRow("pocket out of range") << ok + "T2 P100000" << 4 << u"pocket 100000"_s;
-        QTest::newRow("duplicate tool") << ok + "T1 P2 Z3" << 4 << u"already defined on line 2"_s;
+        QTest::newRow("duplicate tool") << ok + "T1 P2 Z3" << 4 << u"tool 1 is already on line 2"_s;
         QTest::newRow("length out of range") << ok + "T2 P2 Z5000" << 4 << u"out of range"_s;
         QTest::newRow("binary data") << ok + QByteArray("T2 P2\0Z1", 8) << 4 << u"binary data"_s;
         QTest::newRow("comment not UTF-8") << ok + "T2 P2 ;caf\xe9" << 4 << u"not valid UTF-8"_s;

@@ -99,14 +99,18 @@ private Q_SLOTS:
 
     void fromToolsNamesTheBadTool()
     {
-        qsizetype bad = -1;
-        auto r = ToolTable::fromTools({ tool(3), tool(1), tool(2, 1e6) }, Units::Millimetre, &bad);
+        ToolTable::Problem problem;
+        auto r = ToolTable::fromTools({ tool(3), tool(1), tool(2, 1e6) }, Units::Millimetre, &problem);
         QVERIFY(!r.ok());
-        QCOMPARE(bad, 2);
-        bad = -1;
-        r = ToolTable::fromTools({ tool(3), tool(1), tool(5), tool(1) }, Units::Millimetre, &bad);
+        QCOMPARE(problem.index, 2);
+        QCOMPARE(problem.duplicateOf, -1);
+        QCOMPARE(problem.number, 2);
+        problem = {};
+        r = ToolTable::fromTools({ tool(3), tool(1), tool(5), tool(1) }, Units::Millimetre, &problem);
         QVERIFY(!r.ok());
-        QCOMPARE(bad, 3); // the second T1, where it stands in the input
+        QCOMPARE(problem.index, 3); // the second T1, where it stands in the input
+        QCOMPARE(problem.duplicateOf, 1);
+        QCOMPARE(problem.number, 1);
         r = ToolTable::fromTools({ tool(3), tool(1) }, Units::Inch);
         QVERIFY(r.ok());
         QCOMPARE(r.value().units(), Units::Inch);
