@@ -46,7 +46,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_countLabel->setObjectName(u"toolCountLabel"_s);
     statusBar()->addPermanentWidget(m_countLabel);
     auto updateCount = [this] {
-        m_countLabel->setText(tr("%n tool(s)", nullptr, int(m_document->table().size())));
+        const auto count = m_document->table().size();
+        m_countLabel->setText(count == 1 ? tr("1 tool") : tr("%1 tools").arg(count));
     };
     connect(m_document->model(), &QAbstractItemModel::modelReset, this, updateCount);
     connect(m_document->model(), &QAbstractItemModel::rowsInserted, this, updateCount);
@@ -235,7 +236,7 @@ void MainWindow::importTable()
         showError(tr("Cannot import"), count.error().text() + u"\n\n"_s + tr("Nothing was imported."));
         return;
     }
-    statusBar()->showMessage(tr("Imported %n tool(s) from %1", nullptr, count.value()).arg(path), 5000);
+    statusBar()->showMessage(tr("Imported %1 tools from %2").arg(count.value()).arg(path), 5000);
 }
 
 void MainWindow::exportTable()

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tooltablepanel.h"
 
+#include <algorithm>
+
 #include <QHeaderView>
 #include <QLineEdit>
 #include <QSortFilterProxyModel>
@@ -42,16 +44,29 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
     m_view->setAlternatingRowColors(true);
     m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
                             | QAbstractItemView::AnyKeyPressed);
+    m_view->setWordWrap(false);
+    m_view->setTextElideMode(Qt::ElideRight);
     m_view->verticalHeader()->hide();
+    m_view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 8);
     m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
-    m_view->resizeColumnsToContents();
-    m_view->setColumnWidth(ToolTableModel::DescriptionColumn, 220);
+    connect(model, &QAbstractItemModel::modelReset, this, &ToolTablePanel::fitColumns);
+    fitColumns();
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_filter);
     layout->addWidget(m_view);
+}
+
+void ToolTablePanel::fitColumns()
+{
+    // Fit to the data, but keep free text from pushing the numbers off screen.
+    m_view->resizeColumnsToContents();
+    const int text = m_view->fontMetrics().averageCharWidth();
+    m_view->setColumnWidth(ToolTableModel::DescriptionColumn,
+                           std::clamp(m_view->columnWidth(ToolTableModel::DescriptionColumn), 24 * text, 40 * text));
 }
 
 QList<int> ToolTablePanel::selectedToolNumbers() const

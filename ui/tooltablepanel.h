@@ -27,6 +27,8 @@ public:
     void selectTool(int number);
 
 private:
+    void fitColumns();
+
     ToolTableModel *m_model;
     QSortFilterProxyModel *m_proxy;
     QLineEdit *m_filter;

@@ -2,6 +2,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QDialogButtonBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
@@ -59,6 +60,7 @@ private Q_SLOTS:
         QVERIFY(view);
         QCOMPARE(view->model()->rowCount(), 6);
         QVERIFY(window.windowTitle().startsWith(u"example.json"_s));
+        QCOMPARE(window.findChild<QLabel *>(u"toolCountLabel"_s)->text(), u"6 tools"_s);
     }
 
     void editsACellByKeyboardAndUndoes()
