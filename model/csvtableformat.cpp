@@ -34,8 +34,18 @@ enum Column {
 };
 
 constexpr const char *kColumnNames[ColumnCount] = {
-    "number",      "pocket",      "description", "length_geometry", "length_wear", "radius_geometry",
-    "radius_wear", "measured_tlo", "measured_at", "notes",           "units",       "linuxcnc",
+    "number",
+    "pocket",
+    "description",
+    "length_geometry",
+    "length_wear",
+    "radius_geometry",
+    "radius_wear",
+    "measured_tlo",
+    "measured_at",
+    "notes",
+    "units",
+    "linuxcnc",
 };
 
 QString tr(const char *text)
@@ -83,7 +93,8 @@ Result<void> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char sep
             bool doubled = false;
             while (true) {
                 if (pos >= size)
-                    return Error { tr("a quoted field is never closed; add the closing quote (\")."), record.line };
+                    return Error { tr("a quoted field is never closed; add the closing quote (\")."),
+                        record.line };
                 const char c = data.at(pos);
                 if (c == '"') {
                     if (pos + 1 < size && data.at(pos + 1) == '"') {
@@ -113,9 +124,11 @@ Result<void> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char sep
             start = pos;
             while (pos < size && data.at(pos) != separator && data.at(pos) != '\n') {
                 if (data.at(pos) == '"')
-                    return Error { tr("a quote (\") inside an unquoted field; put the whole field in quotes and "
-                                      "double the quote."),
-                                   line };
+                    return Error {
+                        tr("a quote (\") inside an unquoted field; put the whole field in quotes and "
+                           "double the quote."),
+                        line
+                    };
                 ++pos;
             }
             QByteArrayView field = data.sliced(start, pos - start);
@@ -148,7 +161,8 @@ void appendField(QByteArray &out, const QString &text)
 {
     if (text.isEmpty())
         return;
-    bool needsQuotes = text.front() == u' ' || text.back() == u' ' || text.front() == u'\t' || text.back() == u'\t';
+    bool needsQuotes
+        = text.front() == u' ' || text.back() == u' ' || text.front() == u'\t' || text.back() == u'\t';
     for (QChar c : text) {
         if (c == u',' || c == u'"' || c == u'\n' || c == u'\r' || c == u';') {
             needsQuotes = true;
@@ -190,24 +204,28 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
     if (isBlank(header))
         return Error { tr("the file is empty; a CSV tool table starts with a header row such as "
                           "\"number,pocket,description,...\"."),
-                       1 };
+            1 };
 
     int columnOf[ColumnCount];
     std::fill(std::begin(columnOf), std::end(columnOf), -1);
     for (int i = 0; i < header.fields.size(); ++i) {
         const QByteArray name = header.fields.at(i).toByteArray().toLower();
-        const auto found = std::find_if(std::begin(kColumnNames), std::end(kColumnNames),
-                                        [&name](const char *n) { return name == n; });
+        const auto found = std::find_if(
+            std::begin(kColumnNames), std::end(kColumnNames), [&name](const char *n) { return name == n; });
         if (found == std::end(kColumnNames))
-            return Error { tr("unknown column \"%1\" in the header; the columns are number, pocket, description, "
-                              "length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, "
-                              "measured_at, notes, units and linuxcnc.")
-                               .arg(fromUtf8(header.fields.at(i))),
-                           header.line };
+            return Error {
+                tr("unknown column \"%1\" in the header; the columns are number, pocket, description, "
+                   "length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, "
+                   "measured_at, notes, units and linuxcnc.")
+                    .arg(fromUtf8(header.fields.at(i))),
+                header.line
+            };
         const auto column = found - std::begin(kColumnNames);
         if (columnOf[column] >= 0)
-            return Error { tr("the column \"%1\" appears twice in the header.").arg(QLatin1StringView(*found)),
-                           header.line };
+            return Error {
+                tr("the column \"%1\" appears twice in the header.").arg(QLatin1StringView(*found)),
+                header.line
+            };
         columnOf[column] = i;
     }
     if (columnOf[Number] < 0)
@@ -229,10 +247,14 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
             return Error { tr("this row has %1 fields but the header has %2.")
                                .arg(record.fields.size())
                                .arg(header.fields.size()),
-                           record.line };
+                record.line };
 
-        auto cell = [&](Column c) { return columnOf[c] < 0 ? QByteArrayView() : record.fields.at(columnOf[c]); };
-        auto text = [&](Column c) { return fromUtf8(cell(c)); };
+        auto cell = [&](Column c) {
+            return columnOf[c] < 0 ? QByteArrayView() : record.fields.at(columnOf[c]);
+        };
+        auto text = [&](Column c) {
+            return fromUtf8(cell(c));
+        };
         QString problem;
         auto decimal = [&](Column c, double fallback) -> double {
             QByteArrayView s = cell(c);
@@ -254,7 +276,8 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
             const auto v = parseInteger(s);
             const bool fits = v && *v >= INT_MIN && *v <= INT_MAX;
             if (!fits && problem.isEmpty())
-                problem = tr("%1 \"%2\" is not a whole number.").arg(QLatin1StringView(kColumnNames[c]), text(c));
+                problem
+                    = tr("%1 \"%2\" is not a whole number.").arg(QLatin1StringView(kColumnNames[c]), text(c));
             return fits ? int(*v) : fallback;
         };
 
@@ -273,19 +296,22 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
         if (!cell(MeasuredAt).isEmpty()) {
             tool.measuredAt = parseIsoDateTime(cell(MeasuredAt));
             if (!tool.measuredAt.isValid() && problem.isEmpty())
-                problem = tr("measured_at \"%1\" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).")
+                problem = tr(
+                    "measured_at \"%1\" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).")
                               .arg(text(MeasuredAt));
         }
         tool.notes = text(Notes);
         tool.linuxCncExtra = text(LinuxCnc);
         if (const QByteArrayView u = cell(UnitsColumn); !u.isEmpty()) {
-            const auto rowUnits = u == "mm" ? Units::Millimetre : u == "in" ? Units::Inch : unitsFromSymbol(text(UnitsColumn));
+            const auto rowUnits = u == "mm" ? Units::Millimetre
+                : u == "in"                 ? Units::Inch
+                                            : unitsFromSymbol(text(UnitsColumn));
             if (!rowUnits)
                 return Error { tr("units \"%1\" must be mm or in.").arg(text(UnitsColumn)), record.line };
             if (units && *units != *rowUnits)
                 return Error { tr("this row is in %1 but the rows above are in %2; a table has one unit.")
                                    .arg(unitsSymbol(*rowUnits), unitsSymbol(*units)),
-                               record.line };
+                    record.line };
             units = rowUnits;
         }
         if (!problem.isEmpty())

@@ -59,8 +59,7 @@ public:
     explicit JsonScanner(QByteArrayView data)
         : m_p(data.data())
         , m_end(data.data() + data.size())
-    {
-    }
+    { }
 
     int line() const { return m_line; }
     bool failed() const { return m_failed; }
@@ -159,14 +158,30 @@ public:
                 break;
             const char e = *m_p++;
             switch (e) {
-            case '"': buffer += '"'; break;
-            case '\\': buffer += '\\'; break;
-            case '/': buffer += '/'; break;
-            case 'b': buffer += '\b'; break;
-            case 'f': buffer += '\f'; break;
-            case 'n': buffer += '\n'; break;
-            case 'r': buffer += '\r'; break;
-            case 't': buffer += '\t'; break;
+            case '"':
+                buffer += '"';
+                break;
+            case '\\':
+                buffer += '\\';
+                break;
+            case '/':
+                buffer += '/';
+                break;
+            case 'b':
+                buffer += '\b';
+                break;
+            case 'f':
+                buffer += '\f';
+                break;
+            case 'n':
+                buffer += '\n';
+                break;
+            case 'r':
+                buffer += '\r';
+                break;
+            case 't':
+                buffer += '\t';
+                break;
             case 'u': {
                 char32_t code = 0;
                 if (!hex4(code))
@@ -186,7 +201,8 @@ public:
                 break;
             }
             default:
-                return fail(tr("this is not valid JSON: unknown escape \\%1 in a string.").arg(QLatin1Char(e)));
+                return fail(
+                    tr("this is not valid JSON: unknown escape \\%1 in a string.").arg(QLatin1Char(e)));
             }
         }
         return fail(tr("this is not valid JSON: a string is never closed."));
@@ -259,8 +275,8 @@ public:
             } while (consume(','));
             return expect(close, c == '{' ? "',' or '}'" : "',' or ']'");
         }
-        for (const auto &[word, kind] : { std::pair { "true", Scalar::Bool }, std::pair { "false", Scalar::Bool },
-                                          std::pair { "null", Scalar::Null } }) {
+        for (const auto &[word, kind] : { std::pair { "true", Scalar::Bool },
+                 std::pair { "false", Scalar::Bool }, std::pair { "null", Scalar::Null } }) {
             const qsizetype n = qsizetype(std::strlen(word));
             if (m_end - m_p >= n && QByteArrayView(m_p, n) == word) {
                 m_p += n;
@@ -278,7 +294,10 @@ private:
             return fail(tr("this is not valid JSON: a \\u escape needs four hex digits."));
         for (int i = 0; i < 4; ++i) {
             const char h = *m_p++;
-            const int v = h >= '0' && h <= '9' ? h - '0' : h >= 'a' && h <= 'f' ? h - 'a' + 10 : h >= 'A' && h <= 'F' ? h - 'A' + 10 : -1;
+            const int v = h >= '0' && h <= '9' ? h - '0'
+                : h >= 'a' && h <= 'f'         ? h - 'a' + 10
+                : h >= 'A' && h <= 'F'         ? h - 'A' + 10
+                                               : -1;
             if (v < 0)
                 return fail(tr("this is not valid JSON: a \\u escape needs four hex digits."));
             code = code * 16 + char32_t(v);
@@ -342,10 +361,9 @@ bool readTool(JsonScanner &json, Tool &tool)
     bool hasNumber = false;
     bool hasPocket = false;
     quint32 seen = 0;
-    static const QLatin1StringView keys[] = { Key::Number,         Key::Pocket,     Key::Description,
-                                              Key::LengthGeometry, Key::LengthWear, Key::RadiusGeometry,
-                                              Key::RadiusWear,     Key::MeasuredTlo, Key::MeasuredAt,
-                                              Key::Notes,          Key::LinuxCnc };
+    static const QLatin1StringView keys[] = { Key::Number, Key::Pocket, Key::Description, Key::LengthGeometry,
+        Key::LengthWear, Key::RadiusGeometry, Key::RadiusWear, Key::MeasuredTlo, Key::MeasuredAt, Key::Notes,
+        Key::LinuxCnc };
     if (!json.consume('}')) {
         do {
             QByteArrayView key;
@@ -354,7 +372,7 @@ bool readTool(JsonScanner &json, Tool &tool)
             if (!json.key(key, decodedKey) || !json.expect(':', "':' after a key") || !json.value(v))
                 return false;
             const auto found = std::find_if(std::begin(keys), std::end(keys),
-                                            [&key](QLatin1StringView k) { return QByteArrayView(k.data(), k.size()) == key; });
+                [&key](QLatin1StringView k) { return QByteArrayView(k.data(), k.size()) == key; });
             if (found == std::end(keys))
                 return json.fail(tr("unknown field \"%1\" in a tool.").arg(QString::fromUtf8(key)));
             const auto bit = quint32(1) << (found - std::begin(keys));
@@ -415,7 +433,8 @@ bool readTool(JsonScanner &json, Tool &tool)
 void appendString(QByteArray &out, const QString &s)
 {
     out += '"';
-    const bool plain = std::none_of(s.cbegin(), s.cend(), [](QChar c) { return c.unicode() < 0x20 || c == u'"' || c == u'\\'; });
+    const bool plain = std::none_of(
+        s.cbegin(), s.cend(), [](QChar c) { return c.unicode() < 0x20 || c == u'"' || c == u'\\'; });
     if (plain) {
         appendUtf8(out, s);
         out += '"';
@@ -469,7 +488,8 @@ Result<ToolTable> readJsonTable(const QByteArray &data)
     if (json.atEnd())
         return Error { tr("this is not valid JSON: the file is empty."), 1 };
     if (json.peek() != '{')
-        return Error { tr("this is not a Toffee tool table: the file must hold one JSON object."), json.line() };
+        return Error { tr("this is not a Toffee tool table: the file must hold one JSON object."),
+            json.line() };
     json.consume('{');
 
     std::optional<Units> units;
@@ -490,7 +510,7 @@ Result<ToolTable> readJsonTable(const QByteArray &data)
                     return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\", before "
                                       "\"tools\".")
                                        .arg(kFormatId),
-                                   json.line() };
+                        json.line() };
                 if (!hasVersion)
                     return Error { tr("\"version\" must come before \"tools\"."), json.line() };
                 if (hasTools)
@@ -517,25 +537,30 @@ Result<ToolTable> readJsonTable(const QByteArray &data)
                 return json.error();
             if (key == Key::Format) {
                 if (v.kind != Scalar::String || v.string != kFormatId)
-                    return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId),
-                                   line };
+                    return Error {
+                        tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), line
+                    };
                 hasFormat = true;
             } else if (key == Key::Version) {
                 if (v.kind != Scalar::Number || v.number != std::floor(v.number) || v.number < 1)
                     return Error { tr("\"version\" must be a whole number from 1 up."), line };
                 if (v.number > kJsonVersion)
-                    return Error { tr("this table was written by a newer Toffee (format version %1); this one "
-                                      "reads up to version %2. Update Toffee to open it.")
-                                       .arg(v.number)
-                                       .arg(kJsonVersion),
-                                   line };
+                    return Error {
+                        tr("this table was written by a newer Toffee (format version %1); this one "
+                           "reads up to version %2. Update Toffee to open it.")
+                            .arg(v.number)
+                            .arg(kJsonVersion),
+                        line
+                    };
                 hasVersion = true;
             } else if (key == Key::Units) {
                 units = v.kind == Scalar::String ? unitsFromSymbol(v.string) : std::nullopt;
                 if (!units)
                     return Error { tr("\"units\" must be \"mm\" or \"in\"."), line };
             } else if (!hasFormat) {
-                return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1 };
+                return Error {
+                    tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1
+                };
             } else {
                 return Error { tr("unknown field \"%1\" in the table.").arg(key), line };
             }

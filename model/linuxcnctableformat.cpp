@@ -65,14 +65,20 @@ Result<Tool> parseLine(QByteArrayView line)
 
         const char letter = char(QChar::toUpper(uchar(token.front())));
         const QByteArrayView value = token.sliced(1);
-        const auto tokenText = [token] { return QString::fromUtf8(token); }; // for messages only
+        const auto tokenText = [token] {
+            return QString::fromUtf8(token);
+        }; // for messages only
         if (seen.contains(letter))
-            return Error { tr("\"%1\": the field %2 appears twice.").arg(tokenText(), QChar::fromLatin1(letter)) };
+            return Error {
+                tr("\"%1\": the field %2 appears twice.").arg(tokenText(), QChar::fromLatin1(letter))
+            };
         seen += letter;
         if (letter == 'T' || letter == 'P' || letter == 'Q') {
             const auto n = parseInteger(value);
             if (!n)
-                return Error { tr("\"%1\": %2 needs a whole number.").arg(tokenText(), QChar::fromLatin1(letter)) };
+                return Error {
+                    tr("\"%1\": %2 needs a whole number.").arg(tokenText(), QChar::fromLatin1(letter))
+                };
             if (letter == 'T')
                 number = n;
             else if (letter == 'P')
@@ -85,8 +91,9 @@ Result<Tool> parseLine(QByteArrayView line)
         }
         const char *slot = letter ? std::strchr(kExtraLetters, letter) : nullptr;
         if (letter != 'Z' && letter != 'D' && !slot)
-            return Error { tr("\"%1\" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, "
-                              "J, Q and a ;comment.")
+            return Error { tr(
+                "\"%1\" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, "
+                "J, Q and a ;comment.")
                                .arg(tokenText()) };
         const auto v = parseDecimal(value);
         if (!v)

@@ -137,7 +137,9 @@ Result<ToolTable> loadTableFile(const QString &path, std::optional<TableFormat> 
     if (!file.open(QIODevice::ReadOnly))
         return Error { tr("%1: cannot open: %2").arg(path, file.errorString()) };
     if (file.size() > kMaxFileBytes)
-        return Error { tr("%1: the file is %2 MB, too large to be a tool table.").arg(path).arg(file.size() >> 20) };
+        return Error {
+            tr("%1: the file is %2 MB, too large to be a tool table.").arg(path).arg(file.size() >> 20)
+        };
     const QByteArray data = file.readAll();
     if (file.error() != QFileDevice::NoError)
         return Error { tr("%1: cannot read: %2").arg(path, file.errorString()) };
@@ -152,9 +154,8 @@ Result<void> saveTableFile(const QString &path, const ToolTable &table, TableFor
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return Error { tr("%1: cannot write: %2").arg(path, file.errorString()) };
-    const bool written = writeTable(table, format, [&file](QByteArrayView piece) {
-        return file.write(piece.data(), piece.size()) == piece.size();
-    });
+    const bool written = writeTable(table, format,
+        [&file](QByteArrayView piece) { return file.write(piece.data(), piece.size()) == piece.size(); });
     if (!written || !file.commit())
         return Error { tr("%1: saving failed, the old file is unchanged: %2").arg(path, file.errorString()) };
     return {};

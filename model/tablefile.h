@@ -21,15 +21,15 @@ enum class TableFormat { Json, LinuxCnc, Csv };
 
 // A reader either returns the whole table or an Error naming the line; it never returns part of a file.
 // LinuxCNC tables carry no units: `tblUnits` says what their numbers are.
-[[nodiscard]] Result<ToolTable> readTable(const QByteArray &data, TableFormat format,
-                                          Units tblUnits = Units::Millimetre);
+[[nodiscard]] Result<ToolTable> readTable(
+    const QByteArray &data, TableFormat format, Units tblUnits = Units::Millimetre);
 [[nodiscard]] QByteArray writeTable(const ToolTable &table, TableFormat format);
 
 // What `format` cannot hold of `table`, one sentence each, for a warning before a lossy save.
 [[nodiscard]] QStringList formatLosses(const ToolTable &table, TableFormat format);
 
-[[nodiscard]] Result<ToolTable> loadTableFile(const QString &path, std::optional<TableFormat> format = {},
-                                              Units tblUnits = Units::Millimetre);
+[[nodiscard]] Result<ToolTable> loadTableFile(
+    const QString &path, std::optional<TableFormat> format = {}, Units tblUnits = Units::Millimetre);
 // Written through QSaveFile: a crash or a full disk leaves the old file whole.
 [[nodiscard]] Result<void> saveTableFile(const QString &path, const ToolTable &table, TableFormat format);
 

@@ -13,13 +13,15 @@ Result<ToolTable> buildTable(QList<Tool> tools, const QList<int> &lines, Units u
     auto table = ToolTable::fromTools(std::move(tools), units, &problem);
     if (table)
         return table;
-    const auto lineOf = [&lines](qsizetype i) { return i >= 0 && i < lines.size() ? lines.at(i) : 0; };
+    const auto lineOf = [&lines](qsizetype i) {
+        return i >= 0 && i < lines.size() ? lines.at(i) : 0;
+    };
     if (problem.duplicateOf >= 0)
         return Error { QCoreApplication::translate("Toffee::TableReading",
-                                                   "tool %1 is already on line %2; tool numbers must be unique.")
+                           "tool %1 is already on line %2; tool numbers must be unique.")
                            .arg(problem.number)
                            .arg(lineOf(problem.duplicateOf)),
-                       lineOf(problem.index) };
+            lineOf(problem.index) };
     return Error { table.error().message, lineOf(problem.index) };
 }
 

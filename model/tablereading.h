@@ -32,8 +32,7 @@ private:
 };
 
 // A writer's whole output as one array, for the QByteArray overloads.
-template<typename Writer>
-QByteArray collect(const ToolTable &table, Writer write)
+template<typename Writer> QByteArray collect(const ToolTable &table, Writer write)
 {
     QByteArray all;
     write(table, [&all](QByteArrayView piece) {

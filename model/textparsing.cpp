@@ -101,11 +101,12 @@ void appendNumber(QByteArray &out, double value)
     }
     char buffer[400]; // fixed notation of the largest double fits in 310 characters
     // Tool data has three to six decimals: print those directly. v == round(v * 10^k) / 10^k means the
-    // k-decimal text reads back as v (division and parsing both round the same exact quotient), and no shorter
-    // text can, since doubles this small hold more than 15 significant digits.
+    // k-decimal text reads back as v (division and parsing both round the same exact quotient), and no
+    // shorter text can, since doubles this small hold more than 15 significant digits.
     const double magnitude = std::fabs(value);
     if (magnitude < 1e9) {
-        for (const auto &[decimals, divisor] : { std::pair { 3, quint64(1000) }, std::pair { 6, quint64(1000000) } }) {
+        for (const auto &[decimals, divisor] :
+            { std::pair { 3, quint64(1000) }, std::pair { 6, quint64(1000000) } }) {
             const double scaled = std::round(magnitude * double(divisor));
             if (scaled / double(divisor) == magnitude) {
                 out.append(buffer, writeScaled(buffer, quint64(scaled), value < 0, decimals, divisor));
@@ -141,8 +142,8 @@ void appendIsoUtc(QByteArray &out, const QDateTime &time)
         out += utc.toString(Qt::ISODateWithMs).toLatin1();
         return;
     }
-    char b[24] = { '0', '0', '0', '0', '-', '0', '0', '-', '0', '0', 'T', '0', '0', ':',
-                   '0', '0', ':', '0', '0', '.', '0', '0', '0', 'Z' };
+    char b[24] = { '0', '0', '0', '0', '-', '0', '0', '-', '0', '0', 'T', '0', '0', ':', '0', '0', ':', '0',
+        '0', '.', '0', '0', '0', 'Z' };
     auto put = [&b](int at, int width, int value) {
         for (int i = at + width - 1; i >= at; --i, value /= 10)
             b[i] = char('0' + value % 10);
@@ -173,9 +174,9 @@ QDateTime parseIsoDateTime(QByteArrayView text)
     int y, mo, d, h, mi, s, ms = 0;
     const bool shortForm = text.size() == 20 && text.at(19) == 'Z';
     const bool msForm = text.size() == 24 && text.at(19) == '.' && text.at(23) == 'Z';
-    if ((shortForm || msForm) && text.at(4) == '-' && text.at(7) == '-' && text.at(10) == 'T' && text.at(13) == ':'
-        && text.at(16) == ':' && digits(0, 4, y) && digits(5, 2, mo) && digits(8, 2, d) && digits(11, 2, h)
-        && digits(14, 2, mi) && digits(17, 2, s) && (!msForm || digits(20, 3, ms))) {
+    if ((shortForm || msForm) && text.at(4) == '-' && text.at(7) == '-' && text.at(10) == 'T'
+        && text.at(13) == ':' && text.at(16) == ':' && digits(0, 4, y) && digits(5, 2, mo) && digits(8, 2, d)
+        && digits(11, 2, h) && digits(14, 2, mi) && digits(17, 2, s) && (!msForm || digits(20, 3, ms))) {
         const QDate date(y, mo, d);
         const QTime time(h, mi, s, ms);
         if (!date.isValid() || !time.isValid())

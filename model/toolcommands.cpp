@@ -20,8 +20,7 @@ AddToolCommand::AddToolCommand(ToolTableModel *model, const Tool &tool)
     : QUndoCommand(tr("Add tool T%1").arg(tool.number))
     , m_model(model)
     , m_tool(tool)
-{
-}
+{ }
 
 void AddToolCommand::redo()
 {
@@ -38,8 +37,7 @@ RemoveToolsCommand::RemoveToolsCommand(ToolTableModel *model, const QList<Tool> 
                                      : tr("Remove %1 tools").arg(tools.size()))
     , m_model(model)
     , m_tools(tools)
-{
-}
+{ }
 
 void RemoveToolsCommand::redo()
 {
@@ -58,8 +56,7 @@ EditToolCommand::EditToolCommand(ToolTableModel *model, const Tool &before, cons
     , m_model(model)
     , m_before(before)
     , m_after(after)
-{
-}
+{ }
 
 void EditToolCommand::redo()
 {
@@ -71,14 +68,13 @@ void EditToolCommand::undo()
     (void)m_model->replaceTool(m_after.number, m_before);
 }
 
-ReplaceTableCommand::ReplaceTableCommand(ToolTableModel *model, const ToolTable &before, const ToolTable &after,
-                                         const QString &text)
+ReplaceTableCommand::ReplaceTableCommand(
+    ToolTableModel *model, const ToolTable &before, const ToolTable &after, const QString &text)
     : QUndoCommand(text)
     , m_model(model)
     , m_before(before)
     , m_after(after)
-{
-}
+{ }
 
 void ReplaceTableCommand::redo()
 {

@@ -53,7 +53,8 @@ private:
 class ReplaceTableCommand final : public QUndoCommand
 {
 public:
-    ReplaceTableCommand(ToolTableModel *model, const ToolTable &before, const ToolTable &after, const QString &text);
+    ReplaceTableCommand(
+        ToolTableModel *model, const ToolTable &before, const ToolTable &after, const QString &text);
     void redo() override;
     void undo() override;
 

@@ -12,7 +12,8 @@ ToolDocument::ToolDocument(QObject *parent)
     m_model.setEditHandler([this](const Tool &before, const Tool &after) {
         m_undoStack.push(new EditToolCommand(&m_model, before, after));
     });
-    connect(&m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { Q_EMIT modifiedChanged(!clean); });
+    connect(&m_undoStack, &QUndoStack::cleanChanged, this,
+        [this](bool clean) { Q_EMIT modifiedChanged(!clean); });
 }
 
 void ToolDocument::setFile(const QString &path, TableFormat format)

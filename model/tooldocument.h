@@ -27,15 +27,16 @@ public:
     [[nodiscard]] bool isModified() const { return !m_undoStack.isClean(); }
 
     void newTable(Units units = Units::Millimetre);
-    Result<void> open(const QString &path, std::optional<TableFormat> format = {}, Units tblUnits = Units::Millimetre);
+    Result<void> open(
+        const QString &path, std::optional<TableFormat> format = {}, Units tblUnits = Units::Millimetre);
     Result<void> save();
     Result<void> saveAs(const QString &path, TableFormat format);
     // Writes a copy; the document keeps its own file and its modified state.
     [[nodiscard]] Result<void> exportTo(const QString &path, TableFormat format) const;
     // Merges another file's tools in as one undoable step: same numbers are replaced, new ones added.
     // Returns how many tools it brought in.
-    Result<int> importFrom(const QString &path, std::optional<TableFormat> format = {},
-                           Units tblUnits = Units::Millimetre);
+    Result<int> importFrom(
+        const QString &path, std::optional<TableFormat> format = {}, Units tblUnits = Units::Millimetre);
 
     Result<void> addTool(const Tool &tool);
     Result<void> editTool(int number, const Tool &after);

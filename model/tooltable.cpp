@@ -35,8 +35,8 @@ Result<ToolTable> ToolTable::fromTools(QList<Tool> tools, Units units, Problem *
         }
     }
     // Files Toffee writes are in tool order: then the list is the table, with no copy.
-    const auto ascending = std::adjacent_find(tools.cbegin(), tools.cend(),
-                                              [](const Tool &a, const Tool &b) { return a.number >= b.number; });
+    const auto ascending = std::adjacent_find(
+        tools.cbegin(), tools.cend(), [](const Tool &a, const Tool &b) { return a.number >= b.number; });
     if (ascending == tools.cend()) {
         ToolTable table(units);
         table.m_tools = std::move(tools);
@@ -46,7 +46,7 @@ Result<ToolTable> ToolTable::fromTools(QList<Tool> tools, Units units, Problem *
     std::vector<qsizetype> order(tools.size());
     std::iota(order.begin(), order.end(), qsizetype(0));
     std::stable_sort(order.begin(), order.end(),
-                     [&tools](qsizetype a, qsizetype b) { return tools.at(a).number < tools.at(b).number; });
+        [&tools](qsizetype a, qsizetype b) { return tools.at(a).number < tools.at(b).number; });
     for (size_t k = 1; k < order.size(); ++k) {
         if (tools.at(order[k]).number == tools.at(order[k - 1]).number) {
             if (problem)
@@ -63,8 +63,8 @@ Result<ToolTable> ToolTable::fromTools(QList<Tool> tools, Units units, Problem *
 
 qsizetype ToolTable::insertionIndex(int number) const
 {
-    const auto it = std::lower_bound(m_tools.cbegin(), m_tools.cend(), number,
-                                     [](const Tool &t, int n) { return t.number < n; });
+    const auto it = std::lower_bound(
+        m_tools.cbegin(), m_tools.cend(), number, [](const Tool &t, int n) { return t.number < n; });
     return it - m_tools.cbegin();
 }
 
@@ -83,7 +83,8 @@ const Tool *ToolTable::find(int number) const
 int ToolTable::nextFreeNumber(int from) const
 {
     int candidate = std::max(from, 0);
-    for (qsizetype i = insertionIndex(candidate); i < m_tools.size() && m_tools.at(i).number == candidate; ++i)
+    for (qsizetype i = insertionIndex(candidate); i < m_tools.size() && m_tools.at(i).number == candidate;
+         ++i)
         ++candidate;
     return candidate <= Limits::kMaxToolNumber ? candidate : -1;
 }

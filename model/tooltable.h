@@ -17,8 +17,7 @@ public:
     ToolTable() = default;
     explicit ToolTable(Units units)
         : m_units(units)
-    {
-    }
+    { }
 
     // Which of the tools given to fromTools was refused, so a reader can name its line.
     struct Problem
@@ -29,7 +28,8 @@ public:
     };
 
     // Builds a table from tools in any order; the first invalid or duplicate tool refuses the lot.
-    [[nodiscard]] static Result<ToolTable> fromTools(QList<Tool> tools, Units units, Problem *problem = nullptr);
+    [[nodiscard]] static Result<ToolTable> fromTools(
+        QList<Tool> tools, Units units, Problem *problem = nullptr);
 
     [[nodiscard]] Units units() const { return m_units; }
     [[nodiscard]] const QList<Tool> &tools() const { return m_tools; }

@@ -10,8 +10,7 @@ namespace Toffee {
 
 ToolTableModel::ToolTableModel(QObject *parent)
     : QAbstractTableModel(parent)
-{
-}
+{ }
 
 int ToolTableModel::rowCount(const QModelIndex &parent) const
 {
@@ -43,7 +42,9 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
         return {};
 
     const bool display = role == Qt::DisplayRole || role == Qt::ToolTipRole;
-    auto length = [&](double v) -> QVariant { return display ? QVariant(formatLength(v)) : QVariant(v); };
+    auto length = [&](double v) -> QVariant {
+        return display ? QVariant(formatLength(v)) : QVariant(v);
+    };
     switch (index.column()) {
     case NumberColumn:
         return tool.number;
@@ -178,13 +179,16 @@ Result<Tool> ToolTableModel::editedTool(const Tool &tool, int column, const QVar
     if (auto r = validateTool(edited, m_table.units()); !r)
         return r.error();
     if (edited.number != tool.number && m_table.contains(edited.number))
-        return Error { tr("tool number %1 is already in the table; tool numbers must be unique.").arg(edited.number) };
+        return Error {
+            tr("tool number %1 is already in the table; tool numbers must be unique.").arg(edited.number)
+        };
     return edited;
 }
 
 bool ToolTableModel::setData(const QModelIndex &index, const QVariant &value, int role)
 {
-    if (role != Qt::EditRole || !checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+    if (role != Qt::EditRole
+        || !checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
         return false;
     const Tool before = m_table.at(index.row());
     auto after = editedTool(before, index.column(), value);
@@ -234,7 +238,7 @@ Result<void> ToolTableModel::replaceTool(int number, const Tool &tool)
         endMoveRows();
     const int row = rowOfTool(tool.number);
     Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1),
-                       { Qt::DisplayRole, Qt::EditRole, SortRole, ToolNumberRole, Qt::ToolTipRole });
+        { Qt::DisplayRole, Qt::EditRole, SortRole, ToolNumberRole, Qt::ToolTipRole });
     return {};
 }
 

@@ -85,7 +85,7 @@ Result<void> validateLength(const QString &what, double value, double limit, Uni
     if (std::fabs(value) > limit)
         return Error { tr("%1 %2 %3 is out of range; a controller takes %4 to %5 %3.")
                            .arg(what, formatNumber(value), unitsSymbol(units), shown(-limit, units),
-                                shown(limit, units)) };
+                               shown(limit, units)) };
     return {};
 }
 
@@ -125,10 +125,11 @@ bool isPlainlyValid(const Tool &tool, Units units)
     const double wear = maxWear(units);
     if (tool.number < Limits::kMinToolNumber || tool.number > Limits::kMaxToolNumber
         || tool.pocket < Limits::kMinPocket || tool.pocket > Limits::kMaxPocket
-        || tool.description.size() > Limits::kMaxDescriptionLength || tool.notes.size() > Limits::kMaxNotesLength
-        || !tool.linuxCncExtra.isEmpty() || !withinLimit(tool.lengthGeometry, geometry)
-        || !withinLimit(tool.lengthWear, wear) || !withinLimit(tool.radiusGeometry, geometry)
-        || !withinLimit(tool.radiusWear, wear) || (tool.measuredTlo && !withinLimit(*tool.measuredTlo, geometry)))
+        || tool.description.size() > Limits::kMaxDescriptionLength
+        || tool.notes.size() > Limits::kMaxNotesLength || !tool.linuxCncExtra.isEmpty()
+        || !withinLimit(tool.lengthGeometry, geometry) || !withinLimit(tool.lengthWear, wear)
+        || !withinLimit(tool.radiusGeometry, geometry) || !withinLimit(tool.radiusWear, wear)
+        || (tool.measuredTlo && !withinLimit(*tool.measuredTlo, geometry)))
         return false;
     for (QChar c : tool.description) {
         if (c.unicode() < 0x20 || (c.unicode() >= 0x7f && c.category() == QChar::Other_Control))
@@ -156,18 +157,19 @@ Result<void> validateTool(const Tool &tool, Units units)
         return withPrefix(r);
     if (tool.description.size() > Limits::kMaxDescriptionLength)
         return Error { prefix
-                       + tr("the description is %1 characters long; keep it to %2.")
-                             .arg(tool.description.size())
-                             .arg(Limits::kMaxDescriptionLength) };
+            + tr("the description is %1 characters long; keep it to %2.")
+                  .arg(tool.description.size())
+                  .arg(Limits::kMaxDescriptionLength) };
     for (QChar c : tool.description) {
         if (c.category() == QChar::Other_Control)
-            return Error { prefix + tr("the description must be one line of text, without tabs or line breaks.") };
+            return Error { prefix
+                + tr("the description must be one line of text, without tabs or line breaks.") };
     }
     if (tool.notes.size() > Limits::kMaxNotesLength)
         return Error { prefix
-                       + tr("the notes are %1 characters long; keep them to %2.")
-                             .arg(tool.notes.size())
-                             .arg(Limits::kMaxNotesLength) };
+            + tr("the notes are %1 characters long; keep them to %2.")
+                  .arg(tool.notes.size())
+                  .arg(Limits::kMaxNotesLength) };
 
     const double geometry = maxGeometry(units);
     const double wear = maxWear(units);

@@ -40,7 +40,8 @@ constexpr double kMaxWearInch = 9.9999;
 // Numbers for people: 3 decimals in mm, 4 in inches, more when the value has more, so nothing is hidden.
 [[nodiscard]] QString displayNumber(double value, Units units);
 
-// Numbers as Toffee writes them in files: the shortest text that reads back as the same double, never exponent.
+// Numbers as Toffee writes them in files: the shortest text that reads back as the same double, never
+// exponent.
 [[nodiscard]] QString formatNumber(double value);
 
 } // namespace Toffee

@@ -57,7 +57,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_document, &ToolDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ToolDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document->model(), &ToolTableModel::editRejected, this,
-            [this](const QString &message) { showError(tr("Value not accepted"), message); });
+        [this](const QString &message) { showError(tr("Value not accepted"), message); });
     updateTitle();
     readSettings();
 }
@@ -70,24 +70,27 @@ void MainWindow::createActions()
     QToolBar *toolBar = addToolBar(tr("Main"));
     toolBar->setObjectName(u"mainToolBar"_s);
 
-    auto add = [this](QMenu *menu, const QString &name, const QString &text, QKeySequence shortcut,
-                      auto slot) {
-        auto *action = new QAction(text, this);
-        action->setObjectName(name);
-        action->setShortcut(shortcut);
-        connect(action, &QAction::triggered, this, slot);
-        menu->addAction(action);
-        return action;
-    };
+    auto add
+        = [this](QMenu *menu, const QString &name, const QString &text, QKeySequence shortcut, auto slot) {
+              auto *action = new QAction(text, this);
+              action->setObjectName(name);
+              action->setShortcut(shortcut);
+              connect(action, &QAction::triggered, this, slot);
+              menu->addAction(action);
+              return action;
+          };
     toolBar->addAction(add(file, u"actionNew"_s, tr("&New"), QKeySequence::New, &MainWindow::newTable));
     toolBar->addAction(add(file, u"actionOpen"_s, tr("&Open…"), QKeySequence::Open, &MainWindow::open));
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     m_recentMenu->setObjectName(u"menuRecent"_s);
     toolBar->addAction(add(file, u"actionSave"_s, tr("&Save"), QKeySequence::Save, [this] { save(); }));
-    add(file, u"actionSaveAs"_s, tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), [this] { saveAs(); });
+    add(file, u"actionSaveAs"_s, tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
+        [this] { saveAs(); });
     file->addSeparator();
-    add(file, u"actionImport"_s, tr("&Import…"), QKeySequence(Qt::CTRL | Qt::Key_I), &MainWindow::importTable);
-    add(file, u"actionExport"_s, tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), &MainWindow::exportTable);
+    add(file, u"actionImport"_s, tr("&Import…"), QKeySequence(Qt::CTRL | Qt::Key_I),
+        &MainWindow::importTable);
+    add(file, u"actionExport"_s, tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E),
+        &MainWindow::exportTable);
     file->addSeparator();
     add(file, u"actionQuit"_s, tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), &QWidget::close);
 
@@ -105,10 +108,10 @@ void MainWindow::createActions()
     toolBar->addAction(undo);
     toolBar->addAction(redo);
     toolBar->addSeparator();
-    toolBar->addAction(add(edit, u"actionAddTool"_s, tr("&Add Tool"), QKeySequence(Qt::CTRL | Qt::Key_T),
-                           &MainWindow::addTool));
-    m_removeAction = add(edit, u"actionRemoveTool"_s, tr("&Remove Tool"), QKeySequence::Delete,
-                         &MainWindow::removeTools);
+    toolBar->addAction(add(
+        edit, u"actionAddTool"_s, tr("&Add Tool"), QKeySequence(Qt::CTRL | Qt::Key_T), &MainWindow::addTool));
+    m_removeAction = add(
+        edit, u"actionRemoveTool"_s, tr("&Remove Tool"), QKeySequence::Delete, &MainWindow::removeTools);
     m_removeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_tablePanel->view()->addAction(m_removeAction);
     toolBar->addAction(m_removeAction);
@@ -122,7 +125,8 @@ void MainWindow::createActions()
 
 void MainWindow::updateTitle()
 {
-    const QString name = m_document->filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document->filePath()).fileName();
+    const QString name
+        = m_document->filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document->filePath()).fileName();
     setWindowFilePath(m_document->filePath());
     setWindowTitle(name + u"[*] — Toffee"_s);
     setWindowModified(m_document->isModified());
@@ -152,7 +156,7 @@ bool MainWindow::openFile(const QString &path)
 {
     if (auto r = m_document->open(path); !r) {
         showError(tr("Cannot open the tool table"),
-                  r.error().text() + u"\n\n"_s + tr("The table on screen has not been changed."));
+            r.error().text() + u"\n\n"_s + tr("The table on screen has not been changed."));
         return false;
     }
     AppSettings settings;
@@ -173,8 +177,8 @@ void MainWindow::open()
 {
     if (!maybeSave())
         return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Tool Table"), AppSettings().lastDirectory(),
-                                                      fileFilters());
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open Tool Table"), AppSettings().lastDirectory(), fileFilters());
     if (!path.isEmpty())
         openFile(path);
 }
@@ -186,7 +190,7 @@ bool MainWindow::confirmLossySave(const QString &path)
     if (losses.isEmpty())
         return true;
     return QMessageBox::question(this, tr("Save as %1?").arg(formatName(format)),
-                                 losses.join(u'\n') + u"\n\n"_s + tr("Save anyway?"))
+               losses.join(u'\n') + u"\n\n"_s + tr("Save anyway?"))
         == QMessageBox::Yes;
 }
 
@@ -206,8 +210,8 @@ bool MainWindow::save()
 
 bool MainWindow::saveAs()
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Tool Table"), AppSettings().lastDirectory(),
-                                                fileFilters());
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Tool Table"), AppSettings().lastDirectory(), fileFilters());
     if (path.isEmpty())
         return false;
     if (!formatForPath(path))
@@ -227,8 +231,8 @@ bool MainWindow::saveAs()
 
 void MainWindow::importTable()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import Tools"), AppSettings().lastDirectory(),
-                                                      fileFilters());
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import Tools"), AppSettings().lastDirectory(), fileFilters());
     if (path.isEmpty())
         return;
     auto count = m_document->importFrom(path);
@@ -241,8 +245,8 @@ void MainWindow::importTable()
 
 void MainWindow::exportTable()
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Export Tool Table"), AppSettings().lastDirectory(),
-                                                fileFilters());
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Export Tool Table"), AppSettings().lastDirectory(), fileFilters());
     if (path.isEmpty())
         return;
     if (!formatForPath(path))
@@ -280,9 +284,8 @@ bool MainWindow::maybeSave()
     if (!m_document->isModified())
         return true;
     const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
-                                             tr("The tool table has changes that are not saved.\nSave them first?"),
-                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
-                                             QMessageBox::Save);
+        tr("The tool table has changes that are not saved.\nSave them first?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Save)
         return save();
     return answer == QMessageBox::Discard;

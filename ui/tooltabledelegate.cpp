@@ -7,7 +7,8 @@
 
 namespace Toffee {
 
-QWidget *ToolTableDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem &, const QModelIndex &index) const
+QWidget *ToolTableDelegate::createEditor(
+    QWidget *parent, const QStyleOptionViewItem &, const QModelIndex &index) const
 {
     auto *editor = new QLineEdit(parent);
     editor->setFrame(false);
@@ -24,7 +25,8 @@ void ToolTableDelegate::setEditorData(QWidget *editor, const QModelIndex &index)
     line->selectAll();
 }
 
-void ToolTableDelegate::setModelData(QWidget *editor, QAbstractItemModel *model, const QModelIndex &index) const
+void ToolTableDelegate::setModelData(
+    QWidget *editor, QAbstractItemModel *model, const QModelIndex &index) const
 {
     model->setData(index, static_cast<QLineEdit *>(editor)->text(), Qt::EditRole);
 }

@@ -43,7 +43,7 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setAlternatingRowColors(true);
     m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
-                            | QAbstractItemView::AnyKeyPressed);
+        | QAbstractItemView::AnyKeyPressed);
     m_view->setWordWrap(false);
     m_view->setTextElideMode(Qt::ElideRight);
     m_view->verticalHeader()->hide();
@@ -66,7 +66,7 @@ void ToolTablePanel::fitColumns()
     m_view->resizeColumnsToContents();
     const int text = m_view->fontMetrics().averageCharWidth();
     m_view->setColumnWidth(ToolTableModel::DescriptionColumn,
-                           std::clamp(m_view->columnWidth(ToolTableModel::DescriptionColumn), 24 * text, 40 * text));
+        std::clamp(m_view->columnWidth(ToolTableModel::DescriptionColumn), 24 * text, 40 * text));
 }
 
 QList<int> ToolTablePanel::selectedToolNumbers() const
@@ -86,7 +86,8 @@ void ToolTablePanel::selectTool(int number)
     const QModelIndex index = m_proxy->mapFromSource(m_model->index(row, ToolTableModel::NumberColumn));
     if (!index.isValid())
         return;
-    m_view->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    m_view->selectionModel()->setCurrentIndex(
+        index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
     m_view->scrollTo(index);
 }
 

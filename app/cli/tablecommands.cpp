@@ -38,7 +38,8 @@ QJsonObject toolJson(const Tool &tool)
         { u"radius_wear"_s, jsonNumber(tool.radiusWear) },
         { u"measured_tlo"_s, tool.measuredTlo ? QJsonValue(*tool.measuredTlo) : QJsonValue() },
         { u"measured_at"_s,
-          tool.measuredAt.isValid() ? QJsonValue(tool.measuredAt.toUTC().toString(Qt::ISODateWithMs)) : QJsonValue() },
+            tool.measuredAt.isValid() ? QJsonValue(tool.measuredAt.toUTC().toString(Qt::ISODateWithMs))
+                                      : QJsonValue() },
         { u"notes"_s, tool.notes },
     };
     return o;
@@ -63,12 +64,16 @@ int showTable(Invocation &call)
         QJsonArray tools;
         for (const Tool &tool : t.tools())
             tools.append(toolJson(tool));
-        printJson(call, QJsonObject { { u"file"_s, path }, { u"units"_s, unitsSymbol(t.units()) }, { u"tools"_s, tools } });
+        printJson(call,
+            QJsonObject {
+                { u"file"_s, path }, { u"units"_s, unitsSymbol(t.units()) }, { u"tools"_s, tools } });
         return Success;
     }
-    auto n = [&t](double v) { return displayNumber(v, t.units()); };
-    call.out << path << ": " << t.size() << (t.size() == 1 ? " tool" : " tools") << ", " << unitsSymbol(t.units())
-             << "\n";
+    auto n = [&t](double v) {
+        return displayNumber(v, t.units());
+    };
+    call.out << path << ": " << t.size() << (t.size() == 1 ? " tool" : " tools") << ", "
+             << unitsSymbol(t.units()) << "\n";
     call.out << u"%1 %2 %3 %4 %5 %6 %7 %8  %9\n"_s.arg(u"Tool"_s, 7)
                     .arg(u"Pocket"_s, 6)
                     .arg(u"Length"_s, 10)
@@ -105,9 +110,10 @@ int convertTable(Invocation &call)
     const auto format = call.has(u"to"_s) ? formatFromName(call.option(u"to"_s)) : formatForPath(out);
     if (!format)
         return fail(call,
-                    call.has(u"to"_s) ? u"--to must be json, tbl or csv."_s
-                                      : u"%1: cannot tell the format from the name; add --to json|tbl|csv."_s.arg(out),
-                    BadInput);
+            call.has(u"to"_s)
+                ? u"--to must be json, tbl or csv."_s
+                : u"%1: cannot tell the format from the name; add --to json|tbl|csv."_s.arg(out),
+            BadInput);
     auto table = loadTableFile(in, {}, *units);
     if (!table)
         return fail(call, table.error().text(), BadInput);
@@ -117,14 +123,13 @@ int convertTable(Invocation &call)
     for (const QString &loss : losses)
         call.err << "toffee-cli: warning: " << loss << Qt::endl;
     if (call.json) {
-        printJson(call, QJsonObject { { u"input"_s, in },
-                                      { u"output"_s, out },
-                                      { u"format"_s, formatSuffix(*format) },
-                                      { u"tools"_s, int(table.value().size()) },
-                                      { u"warnings"_s, QJsonArray::fromStringList(losses) } });
+        printJson(call,
+            QJsonObject { { u"input"_s, in }, { u"output"_s, out }, { u"format"_s, formatSuffix(*format) },
+                { u"tools"_s, int(table.value().size()) },
+                { u"warnings"_s, QJsonArray::fromStringList(losses) } });
     } else {
-        call.out << "wrote " << table.value().size() << " tools to " << out << " (" << formatName(*format) << ")"
-                 << Qt::endl;
+        call.out << "wrote " << table.value().size() << " tools to " << out << " (" << formatName(*format)
+                 << ")" << Qt::endl;
     }
     return Success;
 }

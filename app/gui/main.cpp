@@ -19,7 +19,8 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QApplication::translate("main", "Toffee, the tool offset manager."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
+    parser.addPositionalArgument(
+        u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
     parser.process(app);
 
     Toffee::MainWindow window;

@@ -98,15 +98,18 @@ private Q_SLOTS:
         QTest::addColumn<QStringList>("arguments");
         QTest::addColumn<QByteArray>("message");
         QTest::newRow("no command") << QStringList() << QByteArray("no command given");
-        QTest::newRow("unknown command") << QStringList { u"explode"_s } << QByteArray("unknown command \"explode\"");
-        QTest::newRow("unknown option") << QStringList { u"--frobnicate"_s, u"show"_s } << QByteArray("--frobnicate");
-        QTest::newRow("missing file") << QStringList { u"show"_s, u"/nonexistent/t.json"_s }
-                                      << QByteArray("cannot open");
-        QTest::newRow("show without a file") << QStringList { u"show"_s } << QByteArray("usage: toffee-cli show");
+        QTest::newRow("unknown command")
+            << QStringList { u"explode"_s } << QByteArray("unknown command \"explode\"");
+        QTest::newRow("unknown option")
+            << QStringList { u"--frobnicate"_s, u"show"_s } << QByteArray("--frobnicate");
+        QTest::newRow("missing file")
+            << QStringList { u"show"_s, u"/nonexistent/t.json"_s } << QByteArray("cannot open");
+        QTest::newRow("show without a file")
+            << QStringList { u"show"_s } << QByteArray("usage: toffee-cli show");
         QTest::newRow("bad --to") << QStringList { u"convert"_s, kExample, u"x"_s, u"--to"_s, u"xml"_s }
                                   << QByteArray("--to must be json, tbl or csv");
-        QTest::newRow("--to without value") << QStringList { u"convert"_s, kExample, u"x"_s, u"--to"_s }
-                                            << QByteArray("--to needs a value");
+        QTest::newRow("--to without value")
+            << QStringList { u"convert"_s, kExample, u"x"_s, u"--to"_s } << QByteArray("--to needs a value");
         QTest::newRow("bad --units") << QStringList { u"show"_s, kExample, u"--units"_s, u"cm"_s }
                                      << QByteArray("--units must be mm or in");
     }

@@ -25,8 +25,7 @@ namespace {
 
 constexpr int kRepeats = 5;
 
-template<typename F>
-double medianMs(F &&f)
+template<typename F> double medianMs(F &&f)
 {
     QList<double> times;
     for (int i = 0; i < kRepeats; ++i) {
@@ -98,15 +97,16 @@ int runCase(int count, TableFormat format)
     const double sortMs = medianMs([&] {
         // What a click on a column header does: sort the view of the whole table by length.
         descending = !descending;
-        proxy.sort(ToolTableModel::LengthGeometryColumn, descending ? Qt::DescendingOrder : Qt::AscendingOrder);
+        proxy.sort(
+            ToolTableModel::LengthGeometryColumn, descending ? Qt::DescendingOrder : Qt::AscendingOrder);
     });
     const double saveMs = medianMs([&] {
         if (!saveTableFile(path, model.table(), format).ok())
             qFatal("save failed");
     });
     const qint64 bytes = QFileInfo(path).size();
-    QTextStream(stdout) << count << ' ' << formatSuffix(format) << ' ' << bytes << ' ' << loadMs << ' ' << saveMs << ' '
-                        << sortMs << ' ' << peakMegabytes() << Qt::endl;
+    QTextStream(stdout) << count << ' ' << formatSuffix(format) << ' ' << bytes << ' ' << loadMs << ' '
+                        << saveMs << ' ' << sortMs << ' ' << peakMegabytes() << Qt::endl;
     return 0;
 }
 
@@ -130,18 +130,20 @@ int main(int argc, char *argv[])
         for (const char *format : { "json", "tbl", "csv" }) {
             QProcess child;
             child.start(QCoreApplication::applicationFilePath(),
-                        { u"--case"_s, QString::number(count), QString::fromLatin1(format) });
+                { u"--case"_s, QString::number(count), QString::fromLatin1(format) });
             if (!child.waitForFinished(300000) || child.exitCode() != 0) {
-                QTextStream(stderr) << "case " << count << ' ' << format << " failed: " << child.readAllStandardError();
+                QTextStream(stderr) << "case " << count << ' ' << format
+                                    << " failed: " << child.readAllStandardError();
                 return 1;
             }
             const QStringList f = QString::fromUtf8(child.readAllStandardOutput()).simplified().split(u' ');
             if (f.size() != 7)
                 return 1;
-            out << "| " << f[0] << " | " << f[1] << " | " << QString::number(f[2].toDouble() / 1024, 'f', 0) << " KiB | "
-                << QString::number(f[3].toDouble(), 'f', 1) << " | " << QString::number(f[4].toDouble(), 'f', 1)
-                << " | " << QString::number(f[5].toDouble(), 'f', 1) << " | " << QString::number(f[6].toDouble(), 'f', 1)
-                << " |\n";
+            out << "| " << f[0] << " | " << f[1] << " | " << QString::number(f[2].toDouble() / 1024, 'f', 0)
+                << " KiB | " << QString::number(f[3].toDouble(), 'f', 1) << " | "
+                << QString::number(f[4].toDouble(), 'f', 1) << " | "
+                << QString::number(f[5].toDouble(), 'f', 1) << " | "
+                << QString::number(f[6].toDouble(), 'f', 1) << " |\n";
             out.flush();
         }
     }

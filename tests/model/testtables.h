@@ -68,7 +68,9 @@ inline ToolTable generatedTable(int count, quint32 seed = 42)
     QRandomGenerator random(seed);
     QList<Tool> tools;
     tools.reserve(count);
-    auto value = [&random](double limit) { return std::round((random.generateDouble() * 2 - 1) * limit * 1000) / 1000; };
+    auto value = [&random](double limit) {
+        return std::round((random.generateDouble() * 2 - 1) * limit * 1000) / 1000;
+    };
     for (int i = 0; i < count; ++i) {
         Tool tool;
         tool.number = i + 1;

@@ -32,10 +32,11 @@ private Q_SLOTS:
     {
         const QByteArray written = writeLinuxCncTable(Test::linuxCncTable());
         QCOMPARE(written,
-                 QByteArray("T0 P0 Z0.1\n"
-                            "T1 P1 Z38.1 D3.175 ;3.175 mm flat, \"2F\"; \xc3\x98" "1/8\n"
-                            "T2 P7 Z71.488 ;6 mm end mill\n"
-                            "T99999 P99999 Z-999.999 D0.125 X0.25 I95 J155 Q2 ;big tool number\n"));
+            QByteArray("T0 P0 Z0.1\n"
+                       "T1 P1 Z38.1 D3.175 ;3.175 mm flat, \"2F\"; \xc3\x98"
+                       "1/8\n"
+                       "T2 P7 Z71.488 ;6 mm end mill\n"
+                       "T99999 P99999 Z-999.999 D0.125 X0.25 I95 J155 Q2 ;big tool number\n"));
     }
 
     void foldsWearIntoLengthAndDiameter()
@@ -60,15 +61,16 @@ private Q_SLOTS:
         QTest::addColumn<double>("radius");
         QTest::addColumn<QString>("description");
         QTest::addColumn<QString>("extra");
-        QTest::newRow("mill") << u"linuxcnc-mill.tbl"_s << 5 << 3 << 1.273 << 0.1005 << u"#7 tap drill"_s << QString();
+        QTest::newRow("mill") << u"linuxcnc-mill.tbl"_s << 5 << 3 << 1.273 << 0.1005 << u"#7 tap drill"_s
+                              << QString();
         QTest::newRow("mill, lower case") << u"linuxcnc-mill.tbl"_s << 5 << 4 << -0.25 << 0.0
                                           << u"lower-case letters load too"_s << QString();
-        QTest::newRow("mill, big number") << u"linuxcnc-mill.tbl"_s << 5 << 99999 << 0.1 << 0.0
-                                          << u"big tool number"_s << QString();
+        QTest::newRow("mill, big number")
+            << u"linuxcnc-mill.tbl"_s << 5 << 99999 << 0.1 << 0.0 << u"big tool number"_s << QString();
         QTest::newRow("lathe, CRLF") << u"linuxcnc-lathe.tbl"_s << 2 << 1 << 1.5 << 0.015625
                                      << u"lathe tool in the spindle"_s << u"X0 I95 J155 Q2"_s;
-        QTest::newRow("lathe, no comment") << u"linuxcnc-lathe.tbl"_s << 2 << 2 << 0.25 << 0.0 << QString()
-                                           << u"X-0.1 Q7"_s;
+        QTest::newRow("lathe, no comment")
+            << u"linuxcnc-lathe.tbl"_s << 2 << 2 << 0.25 << 0.0 << QString() << u"X-0.1 Q7"_s;
     }
     void loadsLinuxCncsOwnFiles()
     {

@@ -25,8 +25,8 @@ private Q_SLOTS:
     {
         QFETCH(int, format);
         const auto f = TableFormat(format);
-        const QByteArray original = writeTable(
-            f == TableFormat::LinuxCnc ? Test::linuxCncTable() : Test::awkwardTable(), f);
+        const QByteArray original
+            = writeTable(f == TableFormat::LinuxCnc ? Test::linuxCncTable() : Test::awkwardTable(), f);
         QRandomGenerator random(20261122 + format);
         const char interesting[] = "{}[]\",;:\\\n\r\t -+.0123456789eETPZDQ\x00\xff\xc3";
         int refused = 0;

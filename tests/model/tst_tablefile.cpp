@@ -32,7 +32,7 @@ private Q_SLOTS:
         for (int from = 0; from < 3; ++from) {
             for (int to = 0; to < 3; ++to)
                 QTest::addRow("%s to %s", qPrintable(formatSuffix(TableFormat(from))),
-                              qPrintable(formatSuffix(TableFormat(to))))
+                    qPrintable(formatSuffix(TableFormat(to))))
                     << from << to;
         }
     }
@@ -71,7 +71,8 @@ private Q_SLOTS:
         const auto malformed = loadTableFile(bad.fileName());
         QVERIFY(!malformed.ok());
         QCOMPARE(malformed.error().line, 2);
-        QVERIFY2(malformed.error().message.contains(u"bad.tbl: line 2: "_s), qPrintable(malformed.error().message));
+        QVERIFY2(malformed.error().message.contains(u"bad.tbl: line 2: "_s),
+            qPrintable(malformed.error().message));
     }
 
     void aFailedSaveLeavesTheOldFileWhole()
@@ -87,7 +88,8 @@ private Q_SLOTS:
         // A directory that cannot be written: QSaveFile cannot make its temporary file, the old file stays.
         QVERIFY(QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner));
         const auto r = saveTableFile(path, Test::generatedTable(10), TableFormat::Json);
-        QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        QFile::setPermissions(
+            dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
         if (r.ok())
             QSKIP("running as root: the directory could be written anyway");
         QVERIFY(r.error().message.contains(u"tools.json"_s));

@@ -23,9 +23,9 @@ Tool tool(int number, double length, const QString &description = {})
 
 ToolTable threeTools()
 {
-    return ToolTable::fromTools({ tool(2, 71.488, u"end mill"_s), tool(10, 41.25, u"ball nose"_s),
-                                  tool(9, 45.0, u"V-bit"_s) },
-                                Units::Millimetre)
+    return ToolTable::fromTools(
+        { tool(2, 71.488, u"end mill"_s), tool(10, 41.25, u"ball nose"_s), tool(9, 45.0, u"V-bit"_s) },
+        Units::Millimetre)
         .takeValue();
 }
 
@@ -81,12 +81,18 @@ private Q_SLOTS:
         QTest::addColumn<int>("column");
         QTest::addColumn<QString>("typed");
         QTest::addColumn<QString>("message");
-        QTest::newRow("not a number") << int(ToolTableModel::LengthGeometryColumn) << u"abc"_s << u"not a number"_s;
-        QTest::newRow("wear out of range") << int(ToolTableModel::LengthWearColumn) << u"150"_s << u"out of range"_s;
-        QTest::newRow("duplicate number") << int(ToolTableModel::NumberColumn) << u"10"_s << u"already in the table"_s;
-        QTest::newRow("fractional number") << int(ToolTableModel::NumberColumn) << u"2.5"_s << u"whole number"_s;
-        QTest::newRow("pocket out of range") << int(ToolTableModel::PocketColumn) << u"-3"_s << u"pocket -3"_s;
-        QTest::newRow("empty length") << int(ToolTableModel::LengthGeometryColumn) << QString() << u"not a number"_s;
+        QTest::newRow("not a number")
+            << int(ToolTableModel::LengthGeometryColumn) << u"abc"_s << u"not a number"_s;
+        QTest::newRow("wear out of range")
+            << int(ToolTableModel::LengthWearColumn) << u"150"_s << u"out of range"_s;
+        QTest::newRow("duplicate number")
+            << int(ToolTableModel::NumberColumn) << u"10"_s << u"already in the table"_s;
+        QTest::newRow("fractional number")
+            << int(ToolTableModel::NumberColumn) << u"2.5"_s << u"whole number"_s;
+        QTest::newRow("pocket out of range")
+            << int(ToolTableModel::PocketColumn) << u"-3"_s << u"pocket -3"_s;
+        QTest::newRow("empty length")
+            << int(ToolTableModel::LengthGeometryColumn) << QString() << u"not a number"_s;
     }
     void refusesABadEditWithAMessageAndKeepsTheTable()
     {
@@ -99,7 +105,8 @@ private Q_SLOTS:
         QSignalSpy rejected(&model, &ToolTableModel::editRejected);
         QVERIFY(!model.setData(model.index(0, column), typed));
         QCOMPARE(rejected.size(), 1);
-        QVERIFY2(rejected.front().front().toString().contains(message), qPrintable(rejected.front().front().toString()));
+        QVERIFY2(rejected.front().front().toString().contains(message),
+            qPrintable(rejected.front().front().toString()));
         QCOMPARE(model.table(), before);
     }
 
@@ -120,7 +127,8 @@ private Q_SLOTS:
         QCOMPARE(seenBefore.lengthWear, 0.0);
         QCOMPARE(seenAfter.lengthWear, -0.1);
         QCOMPARE(model.table().find(2)->lengthWear, 0.0); // the handler decides; the model did not apply it
-        QVERIFY(model.setData(model.index(0, ToolTableModel::LengthWearColumn), u"0"_s)); // no change: no call
+        QVERIFY(
+            model.setData(model.index(0, ToolTableModel::LengthWearColumn), u"0"_s)); // no change: no call
         QCOMPARE(calls, 1);
     }
 
@@ -156,7 +164,8 @@ private Q_SLOTS:
     void headersAreTranslatable()
     {
         ToolTableModel model;
-        QCOMPARE(model.headerData(ToolTableModel::TotalLengthColumn, Qt::Horizontal).toString(), u"Total length"_s);
+        QCOMPARE(model.headerData(ToolTableModel::TotalLengthColumn, Qt::Horizontal).toString(),
+            u"Total length"_s);
         QCOMPARE(model.columnCount(), int(ToolTableModel::ColumnCount));
         QCOMPARE(model.rowCount(model.index(0, 0)), 0);
     }
