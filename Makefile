@@ -9,7 +9,7 @@ PRESET    := default
 # The Debian packages the build, the tests and `make run` need (bookworm; Qt 6.4.2).
 DEB_PACKAGES := cmake ninja-build g++ make \
 	qt6-base-dev qt6-base-dev-tools qt6-qpa-plugins qt6-serialport-dev \
-	qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev libqt6svg6 \
+	qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools \
 	libgl-dev fonts-dejavu-core xvfb xauth
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
