@@ -189,6 +189,21 @@ QDateTime parseIsoDateTime(QByteArrayView text)
     return QDateTime::fromString(*string, Qt::ISODateWithMs).toUTC();
 }
 
+QList<QByteArrayView> splitView(QByteArrayView text, char separator)
+{
+    QList<QByteArrayView> parts;
+    qsizetype start = 0;
+    while (true) {
+        const qsizetype at = text.indexOf(separator, start);
+        if (at < 0) {
+            parts.append(text.sliced(start));
+            return parts;
+        }
+        parts.append(text.sliced(start, at - start));
+        start = at + 1;
+    }
+}
+
 std::optional<QString> decodeUtf8(QByteArrayView bytes)
 {
     bool ascii = true;

@@ -6,6 +6,7 @@
 #include <QByteArray>
 #include <QByteArrayView>
 #include <QDateTime>
+#include <QList>
 #include <QString>
 
 namespace Toffee {
@@ -25,6 +26,9 @@ void appendUtf8(QByteArray &out, QStringView text);
 void appendIsoUtc(QByteArray &out, const QDateTime &time);
 // ISO 8601 with or without milliseconds and with Z or an offset; invalid QDateTime when it is not one.
 [[nodiscard]] QDateTime parseIsoDateTime(QByteArrayView text);
+
+// `text` cut at every `separator`, as views into it (Qt 6.4's QByteArrayView has no split()).
+[[nodiscard]] QList<QByteArrayView> splitView(QByteArrayView text, char separator);
 
 // UTF-8 to QString, or nothing when the bytes are not valid UTF-8 (a garbled or binary file).
 [[nodiscard]] std::optional<QString> decodeUtf8(QByteArrayView bytes);

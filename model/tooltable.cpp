@@ -131,6 +131,22 @@ Result<void> ToolTable::replace(int number, const Tool &tool)
     return {};
 }
 
+Result<void> ToolTable::recordMeasurement(int number, double tlo, const QDateTime &at)
+{
+    if (const Tool *existing = find(number)) {
+        Tool tool = *existing;
+        tool.measuredTlo = tlo;
+        tool.measuredAt = at.toUTC();
+        return replace(number, tool);
+    }
+    Tool tool;
+    tool.number = number;
+    tool.pocket = defaultPocket(number);
+    tool.measuredTlo = tlo;
+    tool.measuredAt = at.toUTC();
+    return insert(tool);
+}
+
 bool ToolTable::remove(int number)
 {
     const qsizetype i = indexOf(number);

@@ -54,6 +54,8 @@ public:
     // Replaces the tool numbered `number` by `tool` (which may carry a new, unused number).
     Result<void> replace(int number, const Tool &tool);
     bool remove(int number);
+    // Stores a TLO measured on the machine into tool `number`, adding the tool when the table has none.
+    Result<void> recordMeasurement(int number, double tlo, const QDateTime &at);
 
     friend bool operator==(const ToolTable &, const ToolTable &) = default;
 

@@ -17,17 +17,33 @@ Tool tables:
   show TABLE                 print a tool table (.json, .tbl or .csv)
   convert IN OUT             convert between formats, by extension or --to json|tbl|csv
 
+The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMMAND
+  status                     state, active tool, TLO, positions
+  report                     the tool length offsets (M493.4)
+  probe                      measure the current tool on the tool setter (M491); the machine moves
+  break-test [--tolerance H] re-measure and compare with the stored TLO (M491.1; H >= 0.02, default 0.1)
+  set-tlo --z V              set the TLO directly (M493.3 Z)
+  set-tlo --above-z0 H       set the TLO from the current position, the tip H above work Z0 (M493.3 H)
+  select-tool N              make tool N active without a change (M493.2 T)
+  change-tool N              change to tool N and measure it (M6 T); the machine moves
+  unlock                     clear a halt ($X)
+  link-test --count N        N round trips; median, p99 and max in milliseconds
+
 Options:
   --json                     print one JSON object on stdout (errors too: {"error": message})
   --to FORMAT                convert: the output format (json, tbl, csv)
   --units mm|in              the units of a LinuxCNC .tbl file, which does not record them (default mm)
+  --table FILE               probe, change-tool: record the measured TLO and its time in FILE
+  --timeout S                give up on any command after S seconds (default: 5, 120 for motion)
   --help                     this text
 
-Exit codes: 0 success, 2 bad input or usage.
+Exit codes: 0 success, 2 bad input or usage, 3 broken tool detected, 4 machine error or alarm,
+5 link failure or timeout.
 )"_s;
 
-const QSet<QString> kValueOptions = { u"to"_s, u"units"_s };
-const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s };
+const QSet<QString> kValueOptions = { u"to"_s,   u"units"_s, u"port"_s,     u"baud"_s,  u"table"_s,
+                                      u"tolerance"_s, u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s };
+const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s };
 
 int usageError(Invocation &call, const QString &message)
 {
@@ -93,6 +109,8 @@ int run(const QStringList &arguments, QTextStream &out, QTextStream &err)
         return showTable(call);
     if (call.command == u"convert")
         return convertTable(call);
+    if (isMachineCommand(call.command))
+        return runMachineCommand(call);
     return usageError(call, u"unknown command \"%1\"."_s.arg(call.command));
 }
 

@@ -32,5 +32,7 @@ void printJson(Invocation &call, const QJsonObject &object);
 
 int showTable(Invocation &call);
 int convertTable(Invocation &call);
+[[nodiscard]] bool isMachineCommand(const QString &command);
+int runMachineCommand(Invocation &call);
 
 } // namespace Toffee::Cli

@@ -1,12 +1,135 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// toffee-emulator will serve the Carvera emulator on a pseudo-terminal (issue 3). Until the emulator exists
-// it says so and fails, rather than pretending to be a machine.
+// toffee-emulator: a Carvera on a pseudo-terminal, for QSerialPort, toffee-cli --port, or a terminal program.
+#include <cstdio>
+
+#include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QTextStream>
+
+#include "emulator/carveraemulator.h"
+#include "emulator/ptyserver.h"
+#include "textparsing.h"
+
+using namespace Qt::StringLiterals;
+using Toffee::CarveraEmulator;
+
+namespace {
+
+// "2=44.312" into (2, 44.312).
+std::optional<std::pair<int, double>> toolValue(const QString &text)
+{
+    const auto parts = text.split(u'=');
+    if (parts.size() != 2)
+        return std::nullopt;
+    const auto tool = Toffee::parseInteger(parts.at(0).toUtf8());
+    const auto value = Toffee::parseDecimal(parts.at(1).toUtf8());
+    if (!tool || !value)
+        return std::nullopt;
+    return std::pair { int(*tool), *value };
+}
+
+std::optional<CarveraEmulator::Fault> faultFromName(const QString &name)
+{
+    if (name == u"drop-ok")
+        return CarveraEmulator::Fault::DropOk;
+    if (name == u"no-answer")
+        return CarveraEmulator::Fault::NoAnswer;
+    if (name == u"garble")
+        return CarveraEmulator::Fault::Garble;
+    if (name == u"close")
+        return CarveraEmulator::Fault::CloseLink;
+    if (name == u"fail-probe")
+        return CarveraEmulator::Fault::FailProbe;
+    if (name.startsWith(u"delay:"))
+        return CarveraEmulator::Fault::Delay;
+    return std::nullopt;
+}
+
+int usageError(const QString &message)
+{
+    QTextStream(stderr) << "toffee-emulator: " << message << '\n';
+    return 2;
+}
+
+} // namespace
 
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
-    QTextStream(stderr) << "toffee-emulator: the machine emulator is not built yet; nothing to serve.\n";
-    return 2;
+    QCoreApplication::setApplicationName(u"toffee-emulator"_s);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(u"A Carvera controller on a pseudo-terminal. Prints the device path, then "
+                                     u"serves until stopped."_s);
+    parser.addHelpOption();
+    const QCommandLineOption link(u"link"_s, u"Also make a symbolic link to the device at PATH."_s, u"PATH"_s);
+    const QCommandLineOption tool(u"tool"_s, u"The physical length of tool N in mm (repeatable)."_s, u"N=LENGTH"_s);
+    const QCommandLineOption broken(u"break-tool"_s, u"Tool N is MM shorter than its length (repeatable)."_s,
+                                    u"N=MM"_s);
+    const QCommandLineOption probeMs(u"probe-ms"_s, u"How long a probing cycle takes (default 2000)."_s, u"MS"_s,
+                                     u"2000"_s);
+    const QCommandLineOption moveMs(u"move-ms"_s, u"How long any other command takes (default 0)."_s, u"MS"_s,
+                                    u"0"_s);
+    const QCommandLineOption fixedReference(u"fixed-reference"_s,
+                                            u"Firmware 2.1.0c: the reference tool MCS Z is configured, not probed."_s,
+                                            u"MZ"_s);
+    const QCommandLineOption notHomed(u"not-homed"_s, u"Start unhomed: probing halts until $H."_s);
+    const QCommandLineOption halted(u"halted"_s, u"Start halted with this reason (1-16)."_s, u"REASON"_s);
+    const QCommandLineOption fault(u"fault"_s,
+                                   u"A one-shot fault: drop-ok, no-answer, garble, close, fail-probe or delay:MS, "
+                                   u"optionally @PREFIX to hit the first command starting with PREFIX (repeatable)."_s,
+                                   u"KIND[@PREFIX]"_s);
+    parser.addOptions({ link, tool, broken, probeMs, moveMs, fixedReference, notHomed, halted, fault });
+    parser.process(app);
+
+    CarveraEmulator emulator;
+    for (const QString &value : parser.values(tool)) {
+        const auto tv = toolValue(value);
+        if (!tv)
+            return usageError(u"--tool %1: write N=LENGTH, e.g. 3=52.5."_s.arg(value));
+        emulator.setToolLength(tv->first, tv->second);
+    }
+    for (const QString &value : parser.values(broken)) {
+        const auto tv = toolValue(value);
+        if (!tv)
+            return usageError(u"--break-tool %1: write N=MM, e.g. 2=0.5."_s.arg(value));
+        emulator.breakTool(tv->first, tv->second);
+    }
+    const auto probe = Toffee::parseInteger(parser.value(probeMs).toUtf8());
+    const auto move = Toffee::parseInteger(parser.value(moveMs).toUtf8());
+    if (!probe || !move || *probe < 0 || *move < 0)
+        return usageError(u"--probe-ms and --move-ms take milliseconds."_s);
+    emulator.setTiming({ int(*probe), int(*move) });
+    if (parser.isSet(fixedReference)) {
+        const auto mz = Toffee::parseDecimal(parser.value(fixedReference).toUtf8());
+        if (!mz)
+            return usageError(u"--fixed-reference takes an MCS Z in mm."_s);
+        emulator.setProfile(CarveraEmulator::Profile::FixedReference, *mz);
+    }
+    emulator.setHomed(!parser.isSet(notHomed));
+    if (parser.isSet(halted)) {
+        const auto reason = Toffee::parseInteger(parser.value(halted).toUtf8());
+        if (!reason || *reason < 1)
+            return usageError(u"--halted takes a halt reason, e.g. 3."_s);
+        emulator.halt(int(*reason));
+    }
+    for (const QString &value : parser.values(fault)) {
+        const QString kind = value.section(u'@', 0, 0);
+        const QString prefix = value.contains(u'@') ? value.section(u'@', 1) : QString();
+        const auto f = faultFromName(kind);
+        const auto delay = kind.startsWith(u"delay:") ? Toffee::parseInteger(kind.mid(6).toUtf8()) : qint64(0);
+        if (!f || !delay)
+            return usageError(u"--fault %1: use drop-ok, no-answer, garble, close, fail-probe or delay:MS."_s.arg(value));
+        emulator.injectFault(*f, prefix.toUtf8(), int(*delay));
+    }
+
+    Toffee::PtyServer server(&emulator, parser.value(link));
+    QObject::connect(&server, &Toffee::PtyServer::deviceChanged, &app, [](const QString &path) {
+        std::printf("%s\n", qPrintable(path));
+        std::fflush(stdout);
+    });
+    if (!server.start())
+        return usageError(server.errorString());
+    if (!server.errorString().isEmpty())
+        QTextStream(stderr) << "toffee-emulator: " << server.errorString() << '\n';
+    return QCoreApplication::exec();
 }

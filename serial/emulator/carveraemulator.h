@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include <QHash>
+#include <QList>
+#include <QObject>
+#include <QTimer>
+
+namespace Toffee {
+
+// A Carvera controller as the firmware behaves (see CARVERA.md): it keeps positions, the reference and current
+// tool MCS Z, a tool setter, the physical length of each tool (so a broken tool really measures shorter) and the
+// halt state, and answers with the firmware's own strings. Not a mock: tests and toffee-emulator drive it.
+class CarveraEmulator final : public QObject
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(CarveraEmulator)
+
+public:
+    // Seed: the first tool probed becomes the reference (the seed document). FixedReference: the reference is
+    // configured, as in firmware 2.1.0c.
+    enum class Profile { Seed, FixedReference };
+    enum class Fault {
+        DropOk, // the command runs but its "ok" never comes
+        NoAnswer, // the command is swallowed: no output, no "ok"
+        Garble, // the command's first reply line arrives mangled
+        CloseLink, // the link drops when the command arrives
+        FailProbe, // the probe does not trigger: ALARM, halt 3
+        Delay, // the command is answered `delayMs` late
+    };
+    struct Timing
+    {
+        int probeMs = 0; // how long a probing cycle takes
+        int moveMs = 0; // how long any other command takes
+    };
+
+    // The MCS Z at which the spindle nose itself would touch the setter; a tool of length L triggers L higher.
+    static constexpr double kNoseTriggerZ = -150.0;
+    static constexpr double kZTravelLimit = -145.0; // the probe gives up here
+    static constexpr double kClearanceZ = -10.0;
+
+    explicit CarveraEmulator(QObject *parent = nullptr);
+
+    void setProfile(Profile profile, double fixedReferenceMz = -72.3);
+    void setTiming(Timing timing) { m_timing = timing; }
+    void setToolLength(int tool, double millimetres) { m_lengths.insert(tool, millimetres); }
+    [[nodiscard]] double toolLength(int tool) const;
+    void breakTool(int tool, double millimetres) { m_lengths.insert(tool, toolLength(tool) - millimetres); }
+    // A one-shot fault on the next command that starts with `prefix` (any command when empty).
+    void injectFault(Fault fault, const QByteArray &prefix = {}, int delayMs = 0);
+    void setHomed(bool homed) { m_homed = homed; }
+    void halt(int reason);
+
+    [[nodiscard]] int tool() const { return m_tool; }
+    [[nodiscard]] bool isHalted() const { return m_haltReason != 0; }
+    [[nodiscard]] int haltReason() const { return m_haltReason; }
+    [[nodiscard]] double referenceMz() const { return m_refMz; }
+    [[nodiscard]] double currentMz() const { return m_curMz; }
+    [[nodiscard]] double tlo() const { return m_curMz - m_refMz; }
+    [[nodiscard]] QByteArray statusReport() const;
+
+public Q_SLOTS:
+    // One command line, without its line end.
+    void receiveLine(const QByteArray &line);
+    // A real-time character: '?' status, 0x18 abort, '!' hold, '~' resume.
+    void receiveRealtime(char c);
+
+Q_SIGNALS:
+    void lineSent(const QByteArray &line);
+    void linkClosed();
+
+private:
+    struct PendingFault
+    {
+        Fault fault;
+        QByteArray prefix;
+        int delayMs = 0;
+    };
+
+    void processNext();
+    void execute(const QByteArray &line);
+    void say(const QByteArray &line);
+    void finish();
+    void later(int ms, std::function<void()> step);
+    [[nodiscard]] bool allowedWhileHalted(const QByteArray &upper) const;
+
+    void calibrate(bool breakTest, double tolerance);
+    void reportOffsets();
+    void reportTlo();
+
+    Profile m_profile = Profile::Seed;
+    Timing m_timing;
+    QHash<int, double> m_lengths;
+    QList<PendingFault> m_faults;
+    QList<QByteArray> m_queue;
+    QTimer m_step; // the running command's next step, if it takes time
+    std::function<void()> m_stepAction;
+    bool m_busy = false;
+    bool m_dropOk = false;
+    bool m_garble = false;
+    bool m_held = false;
+
+    bool m_homed = true;
+    int m_haltReason = 0;
+    std::array<double, 3> m_mpos { 0.0, 0.0, kClearanceZ };
+    std::array<double, 3> m_wcs { 0.0, 0.0, -59.0 };
+    std::array<double, 3> m_setter { -88.0, -9.0, -2.0 };
+    bool m_absolute = true;
+    int m_tool = 1;
+    bool m_calibrated = false;
+    bool m_hasReference = false;
+    double m_refMz = 0.0;
+    double m_curMz = 0.0;
+    std::optional<double> m_lastProbeZ;
+};
+
+} // namespace Toffee

@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "machinelink.h"
+
+#include "linetransport.h"
+
+namespace Toffee {
+
+MachineLink::MachineLink(LineTransport *transport, QObject *parent)
+    : QObject(parent)
+    , m_transport(transport)
+{
+    m_timeout.setSingleShot(true);
+    m_grace.setSingleShot(true);
+    m_poll.setInterval(kPollIntervalMs);
+    connect(&m_timeout, &QTimer::timeout, this, [this] {
+        if (!m_current)
+            return;
+        const QString command = QString::fromUtf8(m_current->line);
+        const QString message = tr("The machine did not answer \"%1\" within %2 s. The link was closed, because a "
+                                   "late answer could be taken for the next command's. Reconnect, and check the "
+                                   "machine before you go on.")
+                                    .arg(command)
+                                    .arg(m_timeout.interval() / 1000.0, 0, 'f', 1);
+        complete(CommandReply::Status::Timeout, message);
+        failAll(CommandReply::Status::Timeout, message);
+        m_lastError = message;
+        m_transport->close();
+    });
+    connect(&m_grace, &QTimer::timeout, this,
+            [this] { complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm)); });
+    connect(&m_poll, &QTimer::timeout, this, &MachineLink::requestStatus);
+    connect(m_transport, &LineTransport::lineReceived, this, &MachineLink::handleLine);
+    connect(m_transport, &LineTransport::errorOccurred, this, [this](const QString &message) { m_lastError = message; });
+    connect(m_transport, &LineTransport::closed, this, &MachineLink::handleClosed);
+    connect(m_transport, &LineTransport::opened, this, [this] {
+        m_lastError.clear();
+        m_status.reset();
+        m_statusClock.invalidate();
+        if (m_poll.interval() > 0)
+            m_poll.start();
+        Q_EMIT opened();
+    });
+}
+
+bool MachineLink::isOpen() const
+{
+    return m_transport->isOpen();
+}
+
+void MachineLink::open()
+{
+    m_transport->open();
+}
+
+void MachineLink::close()
+{
+    m_transport->close();
+}
+
+void MachineLink::setPollInterval(int ms)
+{
+    m_poll.setInterval(ms);
+    if (ms <= 0)
+        m_poll.stop();
+    else if (isOpen())
+        m_poll.start();
+}
+
+void MachineLink::send(const QByteArray &line, int timeoutMs, ReplyHandler handler)
+{
+    if (!isOpen()) {
+        CommandReply reply { CommandReply::Status::LinkLost, line, {},
+                             tr("Not connected to the machine; connect first.") };
+        QMetaObject::invokeMethod(this, [handler, reply] { handler(reply); }, Qt::QueuedConnection);
+        return;
+    }
+    m_queue.append({ line, timeoutMs, std::move(handler) });
+    if (!m_current)
+        startNext();
+}
+
+void MachineLink::sendRealtime(char c)
+{
+    if (isOpen())
+        m_transport->writeRealtime(c);
+}
+
+void MachineLink::requestStatus()
+{
+    sendRealtime('?');
+}
+
+void MachineLink::startNext()
+{
+    if (m_current || m_queue.isEmpty() || !isOpen())
+        return;
+    m_current = m_queue.takeFirst();
+    m_lines.clear();
+    m_alarm.clear();
+    m_timeout.start(m_timeoutOverride > 0 ? m_timeoutOverride : int(m_current->timeoutMs * m_timeoutScale));
+    Q_EMIT lineSent(m_current->line);
+    m_transport->writeLine(m_current->line);
+}
+
+void MachineLink::handleLine(const QByteArray &line)
+{
+    Q_EMIT lineReceived(line);
+    const ReplyKind kind = classifyReply(line);
+    if (kind == ReplyKind::Status) {
+        if (auto status = parseStatusReport(line)) {
+            m_status = *status;
+            m_statusClock.start();
+            Q_EMIT statusChanged(*status);
+        }
+        return;
+    }
+    if (!m_current) {
+        if (kind == ReplyKind::Alarm || kind == ReplyKind::HaltError)
+            Q_EMIT alarmRaised(replyMessage(line));
+        return; // stray output, kept for the console only
+    }
+    switch (kind) {
+    case ReplyKind::Ok:
+        if (m_alarm.isEmpty())
+            complete(CommandReply::Status::Ok, {});
+        else
+            complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm));
+        break;
+    case ReplyKind::Error:
+        complete(CommandReply::Status::Refused,
+                 tr("The machine refused \"%1\": %2").arg(QString::fromUtf8(m_current->line), replyMessage(line)));
+        break;
+    case ReplyKind::Alarm:
+    case ReplyKind::HaltError:
+        m_lines.append(line);
+        if (m_alarm.isEmpty())
+            m_alarm = replyMessage(line);
+        m_grace.start(int(kAlarmGraceMs * m_timeoutScale));
+        break;
+    default:
+        m_lines.append(line);
+    }
+}
+
+void MachineLink::complete(CommandReply::Status status, const QString &message)
+{
+    if (!m_current)
+        return;
+    m_timeout.stop();
+    m_grace.stop();
+    Pending done = std::move(*m_current);
+    m_current.reset();
+    CommandReply reply { status, done.line, std::move(m_lines), message };
+    m_lines.clear();
+    m_alarm.clear();
+    if (status != CommandReply::Status::Timeout && status != CommandReply::Status::LinkLost)
+        QMetaObject::invokeMethod(this, &MachineLink::startNext, Qt::QueuedConnection);
+    if (done.handler)
+        done.handler(reply);
+}
+
+void MachineLink::failAll(CommandReply::Status status, const QString &message)
+{
+    const QList<Pending> queued = std::exchange(m_queue, {});
+    for (const Pending &p : queued) {
+        if (p.handler)
+            p.handler(CommandReply { status, p.line, {}, message });
+    }
+}
+
+void MachineLink::handleClosed()
+{
+    m_poll.stop();
+    const QString reason = m_lastError.isEmpty() ? tr("the link was closed") : m_lastError;
+    if (m_current) {
+        complete(CommandReply::Status::LinkLost, tr("The connection to the machine was lost while it ran \"%1\": %2")
+                                                      .arg(QString::fromUtf8(m_current->line), reason));
+    }
+    failAll(CommandReply::Status::LinkLost, tr("The connection to the machine was lost: %1").arg(reason));
+    Q_EMIT closed(reason);
+}
+
+} // namespace Toffee

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include <QElapsedTimer>
+#include <QList>
+#include <QObject>
+#include <QTimer>
+
+#include "machinereplies.h"
+
+namespace Toffee {
+
+class LineTransport;
+
+// The outcome of one command line: its terminator and everything it printed before it.
+struct CommandReply
+{
+    enum class Status {
+        Ok, // "ok", and no alarm on the way
+        Refused, // "error:..."
+        Halted, // an ALARM or halting ERROR line came with it
+        Timeout, // no answer in time: the link is closed, since its replies can no longer be matched
+        LinkLost, // the port closed or vanished
+    };
+    Status status = Status::Ok;
+    QByteArray command;
+    QList<QByteArray> lines;
+    QString message; // for an operator, on failure
+    [[nodiscard]] bool ok() const { return status == Status::Ok; }
+};
+
+// Sends command lines to the controller one at a time and matches each terminator to its command by exact token
+// ("ok" is the whole line; "error:" starts it), polls the status report about every 200 ms as real-time traffic,
+// and fails a command that gets no answer in its time limit. Never hangs: a stalled or closed link fails the
+// pending commands with a message.
+class MachineLink final : public QObject
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(MachineLink)
+
+public:
+    using ReplyHandler = std::function<void(const CommandReply &reply)>;
+    static constexpr int kDefaultTimeoutMs = 5000;
+    static constexpr int kMotionTimeoutMs = 120000; // a probing cycle takes tens of seconds
+    static constexpr int kPollIntervalMs = 200;
+    static constexpr int kAlarmGraceMs = 1000; // after an ALARM, how long to wait for the command's terminator
+
+    explicit MachineLink(LineTransport *transport, QObject *parent = nullptr);
+
+    [[nodiscard]] LineTransport *transport() const { return m_transport; }
+    [[nodiscard]] bool isOpen() const;
+    void open();
+    void close();
+
+    void send(const QByteArray &line, int timeoutMs, ReplyHandler handler);
+    void sendRealtime(char c);
+    void requestStatus();
+    void setPollInterval(int ms); // 0: no polling
+    // Scales every time limit, for tests that inject silence (1.0 = as given).
+    void setTimeoutScale(double scale) { m_timeoutScale = scale; }
+    // Gives up on any command after `ms` whatever its own limit (0: each command's own limit).
+    void setTimeoutOverride(int ms) { m_timeoutOverride = ms; }
+
+    [[nodiscard]] const std::optional<MachineStatus> &lastStatus() const { return m_status; }
+    // Milliseconds since the last good status report, or -1 when there has been none.
+    [[nodiscard]] qint64 statusAgeMs() const { return m_statusClock.isValid() ? m_statusClock.elapsed() : -1; }
+    [[nodiscard]] bool isBusy() const { return m_current.has_value() || !m_queue.isEmpty(); }
+
+Q_SIGNALS:
+    void opened();
+    void closed(const QString &reason);
+    void statusChanged(const Toffee::MachineStatus &status);
+    void lineSent(const QByteArray &line);
+    void lineReceived(const QByteArray &line);
+    // An ALARM with no command in flight (an abort, a limit switch).
+    void alarmRaised(const QString &message);
+
+private:
+    struct Pending
+    {
+        QByteArray line;
+        int timeoutMs = kDefaultTimeoutMs;
+        ReplyHandler handler;
+    };
+
+    void startNext();
+    void handleLine(const QByteArray &line);
+    void complete(CommandReply::Status status, const QString &message);
+    void failAll(CommandReply::Status status, const QString &message);
+    void handleClosed();
+
+    LineTransport *m_transport;
+    QList<Pending> m_queue;
+    std::optional<Pending> m_current;
+    QList<QByteArray> m_lines;
+    QString m_alarm;
+    QString m_lastError;
+    QTimer m_timeout;
+    QTimer m_grace;
+    QTimer m_poll;
+    double m_timeoutScale = 1.0;
+    int m_timeoutOverride = 0;
+    std::optional<MachineStatus> m_status;
+    QElapsedTimer m_statusClock;
+};
+
+} // namespace Toffee

@@ -1,0 +1,192 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "machinereplies.h"
+
+#include <QCoreApplication>
+#include <QList>
+
+#include "textparsing.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("Toffee::MachineReplies", text);
+}
+
+// "a,b,c" into up to three numbers; the status report has five axes, the first three are X Y Z.
+bool parseAxes(QByteArrayView text, std::array<double, 3> &out)
+{
+    int i = 0;
+    for (QByteArrayView part : splitView(text, ',')) {
+        const auto v = parseDecimal(part.trimmed());
+        if (!v)
+            return false;
+        if (i < 3)
+            out[size_t(i)] = *v;
+        ++i;
+    }
+    return i >= 3;
+}
+
+// The number between `open` and `close` after `from`, e.g. "[" "]".
+std::optional<double> bracketed(QByteArrayView line, qsizetype &from)
+{
+    const qsizetype open = line.indexOf('[', from);
+    if (open < 0)
+        return std::nullopt;
+    const qsizetype close = line.indexOf(']', open);
+    if (close < 0)
+        return std::nullopt;
+    from = close + 1;
+    return parseDecimal(line.sliced(open + 1, close - open - 1).trimmed());
+}
+
+} // namespace
+
+ReplyKind classifyReply(QByteArrayView line)
+{
+    line = line.trimmed();
+    if (line == "ok")
+        return ReplyKind::Ok;
+    if (line.startsWith("error:"))
+        return ReplyKind::Error;
+    if (line.startsWith("ALARM:"))
+        return ReplyKind::Alarm;
+    if (line.startsWith("ERROR:"))
+        return ReplyKind::HaltError;
+    if (line.startsWith('<') && line.endsWith('>'))
+        return ReplyKind::Status;
+    return ReplyKind::Other;
+}
+
+QString replyMessage(QByteArrayView line)
+{
+    line = line.trimmed();
+    const qsizetype colon = line.indexOf(':');
+    return QString::fromUtf8(colon < 0 ? line : line.sliced(colon + 1)).trimmed();
+}
+
+std::optional<MachineStatus> parseStatusReport(QByteArrayView line)
+{
+    line = line.trimmed();
+    if (!line.startsWith('<') || !line.endsWith('>') || line.size() < 3)
+        return std::nullopt;
+    const QList<QByteArrayView> fields = splitView(line.sliced(1, line.size() - 2), '|');
+    MachineStatus status;
+    status.state = QString::fromLatin1(fields.front());
+    if (status.state.isEmpty())
+        return std::nullopt;
+    for (QChar c : std::as_const(status.state)) {
+        if (!c.isLetter())
+            return std::nullopt;
+    }
+    bool hasMpos = false;
+    for (qsizetype i = 1; i < fields.size(); ++i) {
+        const QByteArrayView field = fields.at(i);
+        const qsizetype colon = field.indexOf(':');
+        if (colon < 0)
+            continue; // a field without a name: skipped like any unknown field
+        const QByteArrayView name = field.first(colon);
+        const QByteArrayView value = field.sliced(colon + 1);
+        if (name == "MPos") {
+            if (!parseAxes(value, status.mpos))
+                return std::nullopt;
+            hasMpos = true;
+        } else if (name == "WPos") {
+            if (!parseAxes(value, status.wpos))
+                return std::nullopt;
+        } else if (name == "T") {
+            const QList<QByteArrayView> parts = splitView(value, ',');
+            const auto tool = parseInteger(parts.front());
+            const auto tlo = parts.size() > 1 ? parseDecimal(parts.at(1)) : std::nullopt;
+            if (!tool || parts.size() < 2 || !tlo)
+                return std::nullopt;
+            status.tool = int(*tool);
+            status.tlo = *tlo;
+        } else if (name == "H") {
+            const auto reason = parseInteger(value);
+            if (!reason)
+                return std::nullopt;
+            status.haltReason = int(*reason);
+        }
+    }
+    if (!hasMpos)
+        return std::nullopt;
+    return status;
+}
+
+std::optional<TloReading> parseTloReport(QByteArrayView line)
+{
+    line = line.trimmed();
+    if (!line.startsWith("current tool offset [") || !line.contains("] , reference tool offset ["))
+        return std::nullopt;
+    qsizetype from = 0;
+    const auto current = bracketed(line, from);
+    const auto reference = bracketed(line, from);
+    if (!current || !reference || from != line.size())
+        return std::nullopt;
+    return TloReading { *current, *reference };
+}
+
+std::optional<ProbeResult> parseProbeResult(QByteArrayView line)
+{
+    line = line.trimmed();
+    if (!line.startsWith("[PRB:") || !line.endsWith(']'))
+        return std::nullopt;
+    const QByteArrayView body = line.sliced(5, line.size() - 6);
+    const qsizetype colon = body.lastIndexOf(':');
+    if (colon < 0)
+        return std::nullopt;
+    std::array<double, 3> axes {};
+    const QList<QByteArrayView> parts = splitView(body.first(colon), ',');
+    if (parts.size() != 3 || !parseAxes(body.first(colon), axes))
+        return std::nullopt;
+    const QByteArrayView flag = body.sliced(colon + 1);
+    if (flag != "ok" && flag != "1" && flag != "0" && flag != "fail")
+        return std::nullopt;
+    return ProbeResult { axes[0], axes[1], axes[2], flag == "ok" || flag == "1" };
+}
+
+std::optional<BreakTestReading> parseBreakTest(QByteArrayView line)
+{
+    line = line.trimmed();
+    if (!line.startsWith("Old:"))
+        return std::nullopt;
+    const qsizetype comma = line.indexOf(',');
+    if (comma < 0)
+        return std::nullopt;
+    const QByteArrayView rest = line.sliced(comma + 1).trimmed();
+    if (!rest.startsWith("new:"))
+        return std::nullopt;
+    const auto oldTlo = parseDecimal(line.sliced(4, comma - 4).trimmed());
+    const auto newTlo = parseDecimal(rest.sliced(4).trimmed());
+    if (!oldTlo || !newTlo)
+        return std::nullopt;
+    return BreakTestReading { *oldTlo, *newTlo };
+}
+
+QString haltReasonName(int reason)
+{
+    static const char *const names[] = { "MANUAL",          "HOME_FAIL",        "PROBE_FAIL",   "CALIBRATE_FAIL",
+                                         "ATC_HOME_FAIL",   "ATC_TOOL_INVALID", "ATC_NO_TOOL",  "ATC_HAS_TOOL",
+                                         "SPINDLE_OVERHEATED", "SOFT_LIMIT",    "COVER_OPEN",   "PROBE_INVALID",
+                                         "E_STOP",          "POWER_OVERHEATED", "NON_HOME",     "CRASH_DETECTED" };
+    if (reason >= 1 && reason <= 16)
+        return QString::fromLatin1(names[reason - 1]) + u" ("_s + QString::number(reason) + u')';
+    return tr("halt reason %1").arg(reason);
+}
+
+QString haltRecovery(int reason)
+{
+    if (reason >= 21 && reason <= 26)
+        return tr("This halt needs a reset of the controller.");
+    if (reason == 41)
+        return tr("This halt needs the machine switched off and on again.");
+    return tr("Check the machine, then Unlock ($X).");
+}
+
+} // namespace Toffee

@@ -1,0 +1,413 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "machinesession.h"
+
+#include <cmath>
+
+#include <QTimer>
+
+#include "linetransport.h"
+#include "textparsing.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString text(const QByteArray &line)
+{
+    return QString::fromUtf8(line);
+}
+
+} // namespace
+
+MachineSession::MachineSession(MachineLink *link, QObject *parent)
+    : QObject(parent)
+    , m_link(link)
+{
+    connect(m_link, &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
+        if (status.tool)
+            m_tool = status.tool;
+    });
+}
+
+Result<void> MachineSession::validateTolerance(double tolerance)
+{
+    if (!std::isfinite(tolerance))
+        return Error { tr("The break-test tolerance is not a number; enter a value such as 0.1 mm.") };
+    if (tolerance < kMinTolerance)
+        return Error { tr("A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm "
+                          "or more (%3 mm is the default).")
+                           .arg(tolerance)
+                           .arg(kMinTolerance)
+                           .arg(kDefaultTolerance) };
+    if (tolerance > kMaxOffset)
+        return Error { tr("A break-test tolerance of %1 mm is larger than any tool.").arg(tolerance) };
+    return {};
+}
+
+Result<void> MachineSession::validateOffset(const QString &what, double value)
+{
+    if (!std::isfinite(value) || std::fabs(value) > kMaxOffset)
+        return Error { tr("%1 must be a number from -%2 to %2 mm.").arg(what).arg(kMaxOffset) };
+    return {};
+}
+
+Result<void> MachineSession::validateToolNumber(int tool)
+{
+    if (tool < -1 || tool > 999999)
+        return Error { tr("Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(tool) };
+    return {};
+}
+
+QByteArray MachineSession::number(double value)
+{
+    QByteArray out;
+    appendNumber(out, std::round(value * 10000.0) / 10000.0);
+    return out;
+}
+
+void MachineSession::refuse(Done done, const QString &message)
+{
+    SessionResult result;
+    result.outcome = SessionResult::Outcome::Refused;
+    result.message = message;
+    QTimer::singleShot(0, [done, result] { done(result); });
+}
+
+SessionResult MachineSession::failure(const CommandReply &reply)
+{
+    SessionResult result;
+    result.message = reply.message;
+    switch (reply.status) {
+    case CommandReply::Status::Timeout:
+    case CommandReply::Status::LinkLost:
+        result.outcome = SessionResult::Outcome::LinkFailure;
+        break;
+    default:
+        result.outcome = SessionResult::Outcome::MachineError;
+    }
+    return result;
+}
+
+void MachineSession::run(const QByteArray &command, int timeoutMs, Done done,
+                         std::function<void(const CommandReply &)> next)
+{
+    m_link->send(command, timeoutMs, [done, next = std::move(next)](const CommandReply &reply) {
+        if (!reply.ok()) {
+            done(failure(reply));
+            return;
+        }
+        next(reply);
+    });
+}
+
+void MachineSession::awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next)
+{
+    auto *timer = new QTimer(this);
+    timer->setSingleShot(true);
+    auto connection = std::make_shared<QMetaObject::Connection>();
+    auto finish = [timer, connection, next](std::optional<MachineStatus> status) {
+        QObject::disconnect(*connection);
+        timer->stop();
+        timer->deleteLater();
+        next(status);
+    };
+    *connection = connect(m_link, &MachineLink::statusChanged, timer, [finish](const MachineStatus &s) { finish(s); });
+    connect(timer, &QTimer::timeout, timer, [finish] { finish(std::nullopt); });
+    timer->start(timeoutMs);
+    m_link->requestStatus();
+}
+
+void MachineSession::connectToMachine(Done done)
+{
+    auto afterOpen = [this, done] {
+        // The controller app sends "\n;\n" on opening to flush whatever the machine had half-received.
+        run("", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
+            run(";", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
+                awaitStatus(2000, [this, done](std::optional<MachineStatus> status) {
+                    if (!status) {
+                        SessionResult result;
+                        result.outcome = SessionResult::Outcome::LinkFailure;
+                        result.message = tr("The machine answered but sent no status report; is this a Carvera?");
+                        done(result);
+                        return;
+                    }
+                    SessionResult result;
+                    result.status = status;
+                    result.tool = status->tool;
+                    if (status->isAlarm()) {
+                        // Reachable while halted, so that it can be unlocked; M493.4 would get "Alarm lock".
+                        done(result);
+                        return;
+                    }
+                    readOffsets(done, result);
+                });
+            });
+        });
+    };
+    if (m_link->isOpen()) {
+        afterOpen();
+        return;
+    }
+    auto opened = std::make_shared<QMetaObject::Connection>();
+    auto failed = std::make_shared<QMetaObject::Connection>();
+    auto *guard = new QTimer(this);
+    guard->setSingleShot(true);
+    auto cleanup = [opened, failed, guard] {
+        QObject::disconnect(*opened);
+        QObject::disconnect(*failed);
+        guard->stop();
+        guard->deleteLater();
+    };
+    *opened = connect(m_link, &MachineLink::opened, guard, [cleanup, afterOpen] {
+        cleanup();
+        afterOpen();
+    });
+    auto fail = [cleanup, done](const QString &message) {
+        cleanup();
+        SessionResult result;
+        result.outcome = SessionResult::Outcome::LinkFailure;
+        result.message = message;
+        done(result);
+    };
+    *failed = connect(m_link->transport(), &LineTransport::errorOccurred, guard, fail);
+    connect(guard, &QTimer::timeout, guard, [fail] { fail(tr("The port did not open within 5 s.")); });
+    guard->start(5000);
+    m_link->open();
+}
+
+void MachineSession::readOffsets(Done done, SessionResult result)
+{
+    run("M493.4", MachineLink::kDefaultTimeoutMs, done, [this, done, result](const CommandReply &reply) mutable {
+        for (const QByteArray &line : reply.lines) {
+            if (auto tlo = parseTloReport(line)) {
+                result.tlo = tlo;
+                result.tool = result.tool ? result.tool : m_tool;
+                done(result);
+                return;
+            }
+        }
+        SessionResult bad;
+        bad.outcome = SessionResult::Outcome::MachineError;
+        bad.message = tr("The machine's offset report (M493.4) could not be read%1. Nothing was recorded; try "
+                         "again, and check the cable if it happens twice.")
+                          .arg(reply.lines.isEmpty() ? QString() : u": \""_s + text(reply.lines.front()) + u'"');
+        done(bad);
+    });
+}
+
+void MachineSession::status(Done done)
+{
+    awaitStatus(2000, [done](std::optional<MachineStatus> status) {
+        SessionResult result;
+        if (!status) {
+            result.outcome = SessionResult::Outcome::LinkFailure;
+            result.message = tr("The machine sent no status report within 2 s.");
+        } else {
+            result.status = status;
+            result.tool = status->tool;
+        }
+        done(result);
+    });
+}
+
+void MachineSession::report(Done done)
+{
+    readOffsets(done, SessionResult {});
+}
+
+void MachineSession::probe(Done done)
+{
+    run("M491", MachineLink::kMotionTimeoutMs, done, [this, done](const CommandReply &reply) {
+        const auto probe = std::find_if(reply.lines.cbegin(), reply.lines.cend(),
+                                        [](const QByteArray &l) { return parseProbeResult(l).has_value(); });
+        if (probe == reply.lines.cend() || !parseProbeResult(*probe)->triggered) {
+            SessionResult bad;
+            bad.outcome = SessionResult::Outcome::MachineError;
+            bad.message = tr("The machine finished probing but its probe result ([PRB:…]) could not be read. "
+                             "Nothing was recorded; check the offsets (Report) before you cut.");
+            done(bad);
+            return;
+        }
+        readOffsets(done, SessionResult {});
+    });
+}
+
+void MachineSession::breakTest(double tolerance, Done done)
+{
+    if (auto r = validateTolerance(tolerance); !r)
+        return refuse(done, r.error().message);
+    const QByteArray command = "M491.1 H" + number(tolerance);
+    m_link->send(command, MachineLink::kMotionTimeoutMs, [this, done, tolerance](const CommandReply &reply) {
+        std::optional<BreakTestReading> reading;
+        bool noPrevious = false;
+        bool broken = false;
+        for (const QByteArray &line : reply.lines) {
+            if (!reading)
+                reading = parseBreakTest(line);
+            noPrevious = noPrevious || line.trimmed() == "No previous TLO included, aborting";
+            broken = broken || line.contains("Tool Break Check - check tool for breakage");
+        }
+        SessionResult result;
+        result.tool = m_tool;
+        result.tolerance = tolerance;
+        result.breakTest = reading;
+        if (broken && reading) {
+            result.outcome = SessionResult::Outcome::ToolBroken;
+            result.message = tr("Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a "
+                                "difference of %4 mm; the tolerance is %5 mm). The machine has halted. Check the "
+                                "tool and replace it if it is damaged, then Unlock.")
+                                 .arg(m_tool.value_or(-1))
+                                 .arg(reading->newTlo, 0, 'f', 3)
+                                 .arg(reading->oldTlo, 0, 'f', 3)
+                                 .arg(std::fabs(reading->newTlo - reading->oldTlo), 0, 'f', 3)
+                                 .arg(tolerance);
+            done(result);
+            return;
+        }
+        if (!reply.ok()) {
+            done(failure(reply));
+            return;
+        }
+        if (noPrevious) {
+            result.outcome = SessionResult::Outcome::MachineError;
+            result.message = tr("The machine has no TLO for this tool to compare with. Probe the tool first, then "
+                                "run the break test.");
+        } else if (!reading) {
+            result.outcome = SessionResult::Outcome::MachineError;
+            result.message = tr("The break test ran but its result (\"Old: … , new: …\") could not be read. Run it "
+                                "again before you trust the tool.");
+        } else if (std::fabs(reading->newTlo - reading->oldTlo) > tolerance) {
+            // The firmware should have halted; do not call this tool good on our side either.
+            result.outcome = SessionResult::Outcome::ToolBroken;
+            result.message = tr("Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.")
+                                 .arg(m_tool.value_or(-1))
+                                 .arg(reading->newTlo, 0, 'f', 3)
+                                 .arg(reading->oldTlo, 0, 'f', 3)
+                                 .arg(tolerance);
+        }
+        done(result);
+    });
+}
+
+void MachineSession::finishWithReport(const QList<QByteArray> &lines, Done done, const QString &what)
+{
+    for (const QByteArray &line : lines) {
+        if (auto tlo = parseTloReport(line)) {
+            SessionResult result;
+            result.tlo = tlo;
+            result.tool = m_tool;
+            done(result);
+            return;
+        }
+    }
+    SessionResult bad;
+    bad.outcome = SessionResult::Outcome::MachineError;
+    bad.message = tr("The machine's reply to %1 could not be read. Check the offsets (Report) before you cut.")
+                      .arg(what);
+    done(bad);
+}
+
+void MachineSession::setTlo(double tlo, Done done)
+{
+    if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
+        return refuse(done, r.error().message);
+    run("M493.3 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done, [this, done, tlo](const CommandReply &reply) {
+        finishWithReport(reply.lines, [done, tlo](const SessionResult &result) {
+            if (result.ok() && std::fabs(result.tlo->tlo() - tlo) > 0.0005) {
+                SessionResult bad = result;
+                bad.outcome = SessionResult::Outcome::MachineError;
+                bad.message = tr("The machine was told TLO %1 mm but reports %2 mm. Check the offsets before you cut.")
+                                  .arg(tlo, 0, 'f', 3)
+                                  .arg(result.tlo->tlo(), 0, 'f', 3);
+                done(bad);
+                return;
+            }
+            done(result);
+        }, u"M493.3"_s);
+    });
+}
+
+void MachineSession::setTloAboveZ0(double height, Done done)
+{
+    if (auto r = validateOffset(tr("The height above Z0"), height); !r)
+        return refuse(done, r.error().message);
+    run("M493.3 H" + number(height), MachineLink::kDefaultTimeoutMs, done,
+        [this, done](const CommandReply &reply) { finishWithReport(reply.lines, done, u"M493.3"_s); });
+}
+
+void MachineSession::selectTool(int tool, Done done)
+{
+    if (auto r = validateToolNumber(tool); !r)
+        return refuse(done, r.error().message);
+    run("M493.2 T" + QByteArray::number(tool), MachineLink::kDefaultTimeoutMs, done,
+        [this, done, tool](const CommandReply &) {
+            m_tool = tool;
+            SessionResult result;
+            result.tool = tool;
+            done(result);
+        });
+}
+
+void MachineSession::changeTool(int tool, Done done)
+{
+    if (auto r = validateToolNumber(tool); !r)
+        return refuse(done, r.error().message);
+    run("M6 T" + QByteArray::number(tool), MachineLink::kMotionTimeoutMs, done,
+        [this, done, tool](const CommandReply &reply) {
+            m_tool = tool;
+            const bool probed = std::any_of(reply.lines.cbegin(), reply.lines.cend(), [](const QByteArray &l) {
+                const auto p = parseProbeResult(l);
+                return p && p->triggered;
+            });
+            if (!probed) {
+                SessionResult bad;
+                bad.outcome = SessionResult::Outcome::MachineError;
+                bad.message = tr("T%1 is in the spindle, but its probe result ([PRB:…]) could not be read. Nothing "
+                                 "was recorded; probe the tool again.")
+                                  .arg(tool);
+                done(bad);
+                return;
+            }
+            readOffsets(done, SessionResult {});
+        });
+}
+
+void MachineSession::unlock(Done done)
+{
+    run("$X", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &reply) {
+        const bool unlocked = std::any_of(reply.lines.cbegin(), reply.lines.cend(),
+                                          [](const QByteArray &l) { return l.trimmed() == "[Caution: Unlocked]"; });
+        if (!unlocked) {
+            SessionResult bad;
+            bad.outcome = SessionResult::Outcome::MachineError;
+            bad.message = tr("The machine did not confirm the unlock; check its state before you go on.");
+            done(bad);
+            return;
+        }
+        status(done);
+    });
+}
+
+void MachineSession::restoreTlo(int tool, double tlo, Done done)
+{
+    if (auto r = validateToolNumber(tool); !r)
+        return refuse(done, r.error().message);
+    if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
+        return refuse(done, r.error().message);
+    selectTool(tool, [this, done, tlo](const SessionResult &selected) {
+        if (!selected.ok()) {
+            done(selected);
+            return;
+        }
+        setTlo(tlo, done);
+    });
+}
+
+void MachineSession::abort()
+{
+    m_link->sendRealtime(0x18);
+}
+
+} // namespace Toffee

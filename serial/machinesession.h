@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include <QObject>
+
+#include "machinelink.h"
+#include "machinereplies.h"
+#include "result.h"
+
+namespace Toffee {
+
+// One operation's outcome, for an operator: success with the new values, or a failure with what to do.
+struct SessionResult
+{
+    enum class Outcome {
+        Success,
+        Refused, // the input was refused before anything was sent
+        ToolBroken, // the break test found the tool shorter or longer than its TLO
+        MachineError, // the machine refused, halted, or sent what could not be read
+        LinkFailure, // no answer in time, or the connection was lost
+    };
+    Outcome outcome = Outcome::Success;
+    QString message;
+    std::optional<int> tool;
+    std::optional<TloReading> tlo;
+    std::optional<BreakTestReading> breakTest;
+    double tolerance = 0.0;
+    std::optional<MachineStatus> status;
+
+    [[nodiscard]] bool ok() const { return outcome == Outcome::Success; }
+};
+
+// Turns operator intents into command sequences and results. It validates before sending (a tolerance under
+// 0.02 never leaves the computer), tracks the active tool from the status reports, and reports each operation's
+// outcome as one value. It writes no table: callers record a measurement only from a successful result.
+class MachineSession final : public QObject
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(MachineSession)
+
+public:
+    using Done = std::function<void(const SessionResult &result)>;
+    static constexpr double kMinTolerance = 0.02; // the firmware halts below this
+    static constexpr double kDefaultTolerance = 0.1;
+    static constexpr double kMaxOffset = 999.999;
+
+    explicit MachineSession(MachineLink *link, QObject *parent = nullptr);
+
+    [[nodiscard]] MachineLink *link() const { return m_link; }
+    [[nodiscard]] std::optional<int> activeTool() const { return m_tool; }
+
+    // Opens the link, flushes the controller's buffer, reads the status and, unless halted, the offsets.
+    void connectToMachine(Done done);
+    void status(Done done);
+    void report(Done done);
+    void probe(Done done);
+    void breakTest(double tolerance, Done done);
+    void setTlo(double tlo, Done done);
+    void setTloAboveZ0(double height, Done done);
+    void selectTool(int tool, Done done);
+    void changeTool(int tool, Done done);
+    void unlock(Done done);
+    // Makes `tool` active with a TLO already known (from the table), without probing.
+    void restoreTlo(int tool, double tlo, Done done);
+    // Ctrl-X: stops whatever the machine is doing. It halts; Unlock afterwards.
+    void abort();
+
+    [[nodiscard]] static Result<void> validateTolerance(double tolerance);
+    [[nodiscard]] static Result<void> validateOffset(const QString &what, double value);
+    [[nodiscard]] static Result<void> validateToolNumber(int tool);
+
+private:
+    void run(const QByteArray &command, int timeoutMs, Done done, std::function<void(const CommandReply &)> next);
+    void finishWithReport(const QList<QByteArray> &lines, Done done, const QString &what);
+    void readOffsets(Done done, SessionResult result);
+    void awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next);
+    static void refuse(Done done, const QString &message);
+    static SessionResult failure(const CommandReply &reply);
+    static QByteArray number(double value);
+
+    MachineLink *m_link;
+    std::optional<int> m_tool;
+};
+
+} // namespace Toffee

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "serialporttransport.h"
+
+namespace Toffee {
+
+SerialPortTransport::SerialPortTransport(const QString &portName, int baud, QObject *parent)
+    : LineTransport(parent)
+    , m_baud(baud)
+{
+    m_port.setPortName(portName);
+    connect(&m_port, &QSerialPort::readyRead, this, &SerialPortTransport::readAvailable);
+    connect(&m_port, &QSerialPort::errorOccurred, this, &SerialPortTransport::handleError);
+}
+
+void SerialPortTransport::open()
+{
+    m_buffer.clear();
+    m_discarding = false;
+    m_port.setBaudRate(m_baud);
+    m_port.setDataBits(QSerialPort::Data8);
+    m_port.setParity(QSerialPort::NoParity);
+    m_port.setStopBits(QSerialPort::OneStop);
+    m_port.setFlowControl(QSerialPort::NoFlowControl);
+    if (!m_port.open(QIODevice::ReadWrite)) {
+        Q_EMIT errorOccurred(tr("Cannot open %1: %2. Check the cable, that no other program has the port open, "
+                                "and that you may use serial ports (the dialout group).")
+                                 .arg(m_port.portName(), m_port.errorString()));
+        return;
+    }
+    QMetaObject::invokeMethod(this, &LineTransport::opened, Qt::QueuedConnection);
+}
+
+void SerialPortTransport::close()
+{
+    if (!m_port.isOpen())
+        return;
+    m_port.close();
+    Q_EMIT closed();
+}
+
+void SerialPortTransport::writeLine(const QByteArray &line)
+{
+    if (!m_port.isOpen()) {
+        Q_EMIT errorOccurred(tr("%1 is not open.").arg(m_port.portName()));
+        return;
+    }
+    m_port.write(line + '\n');
+}
+
+void SerialPortTransport::writeRealtime(char c)
+{
+    if (m_port.isOpen())
+        m_port.write(&c, 1);
+}
+
+QString SerialPortTransport::description() const
+{
+    return tr("%1 at %2 baud").arg(m_port.portName()).arg(m_baud);
+}
+
+void SerialPortTransport::readAvailable()
+{
+    m_buffer += m_port.readAll();
+    qsizetype start = 0;
+    for (qsizetype i = 0; i < m_buffer.size(); ++i) {
+        const char c = m_buffer.at(i);
+        if (c != '\n' && c != '\r')
+            continue;
+        if (!m_discarding && i > start)
+            Q_EMIT lineReceived(m_buffer.sliced(start, i - start));
+        m_discarding = false;
+        start = i + 1;
+    }
+    m_buffer.remove(0, start);
+    if (m_buffer.size() > kMaxLineBytes) {
+        // Not a controller's line: drop it rather than grow without bound, and say so once.
+        m_buffer.clear();
+        if (!m_discarding)
+            Q_EMIT errorOccurred(tr("%1 sent a line longer than %2 bytes; it was dropped.")
+                                     .arg(m_port.portName())
+                                     .arg(kMaxLineBytes));
+        m_discarding = true;
+    }
+}
+
+void SerialPortTransport::handleError(QSerialPort::SerialPortError error)
+{
+    // Errors while opening are reported by open() itself.
+    if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError || !m_port.isOpen())
+        return;
+    const QString message = error == QSerialPort::ResourceError
+        ? tr("The port %1 went away (unplugged, or the machine was switched off).").arg(m_port.portName())
+        : tr("%1: %2").arg(m_port.portName(), m_port.errorString());
+    Q_EMIT errorOccurred(message);
+    if (error == QSerialPort::ResourceError || error == QSerialPort::PermissionError)
+        close();
+}
+
+} // namespace Toffee
