@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include <QDateTime>
 #include <QTimer>
 
 #include "linetransport.h"
@@ -36,8 +37,9 @@ Result<void> MachineSession::validateTolerance(double tolerance)
     if (!std::isfinite(tolerance))
         return Error { tr("The break-test tolerance is not a number; enter a value such as 0.1 mm.") };
     if (tolerance < kMinTolerance)
-        return Error { tr("A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm "
-                          "or more (%3 mm is the default).")
+        return Error { tr(
+            "A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm "
+            "or more (%3 mm is the default).")
                            .arg(tolerance)
                            .arg(kMinTolerance)
                            .arg(kDefaultTolerance) };
@@ -56,7 +58,9 @@ Result<void> MachineSession::validateOffset(const QString &what, double value)
 Result<void> MachineSession::validateToolNumber(int tool)
 {
     if (tool < -1 || tool > 999999)
-        return Error { tr("Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(tool) };
+        return Error {
+            tr("Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(tool)
+        };
     return {};
 }
 
@@ -90,8 +94,8 @@ SessionResult MachineSession::failure(const CommandReply &reply)
     return result;
 }
 
-void MachineSession::run(const QByteArray &command, int timeoutMs, Done done,
-                         std::function<void(const CommandReply &)> next)
+void MachineSession::run(
+    const QByteArray &command, int timeoutMs, Done done, std::function<void(const CommandReply &)> next)
 {
     m_link->send(command, timeoutMs, [done, next = std::move(next)](const CommandReply &reply) {
         if (!reply.ok()) {
@@ -113,38 +117,73 @@ void MachineSession::awaitStatus(int timeoutMs, std::function<void(std::optional
         timer->deleteLater();
         next(status);
     };
-    *connection = connect(m_link, &MachineLink::statusChanged, timer, [finish](const MachineStatus &s) { finish(s); });
+    *connection = connect(
+        m_link, &MachineLink::statusChanged, timer, [finish](const MachineStatus &s) { finish(s); });
     connect(timer, &QTimer::timeout, timer, [finish] { finish(std::nullopt); });
     timer->start(timeoutMs);
     m_link->requestStatus();
 }
 
+void MachineSession::awaitIdle(qint64 deadlineMs, std::function<void(bool, const QString &)> next)
+{
+    awaitStatus(2000, [this, deadlineMs, next](std::optional<MachineStatus> status) {
+        const QString state = status ? status->state : QString();
+        const bool busy = state == u"Run" || state == u"Home" || state == u"Tool";
+        if (!busy) {
+            QTimer::singleShot(150, this, [next, state] { next(true, state); });
+            return;
+        }
+        if (QDateTime::currentMSecsSinceEpoch() > deadlineMs || !m_link->isOpen()) {
+            next(false, state);
+            return;
+        }
+        QTimer::singleShot(
+            MachineLink::kPollIntervalMs, this, [this, deadlineMs, next] { awaitIdle(deadlineMs, next); });
+    });
+}
+
 void MachineSession::connectToMachine(Done done)
 {
     auto afterOpen = [this, done] {
-        // The controller app sends "\n;\n" on opening to flush whatever the machine had half-received.
-        run("", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
-            run(";", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
-                awaitStatus(2000, [this, done](std::optional<MachineStatus> status) {
-                    if (!status) {
-                        SessionResult result;
-                        result.outcome = SessionResult::Outcome::LinkFailure;
-                        result.message = tr("The machine answered but sent no status report; is this a Carvera?");
-                        done(result);
-                        return;
-                    }
+        awaitIdle(QDateTime::currentMSecsSinceEpoch() + MachineLink::kMotionTimeoutMs + 10000,
+            [this, done](bool idle, const QString &state) {
+                if (!idle) {
                     SessionResult result;
-                    result.status = status;
-                    result.tool = status->tool;
-                    if (status->isAlarm()) {
-                        // Reachable while halted, so that it can be unlocked; M493.4 would get "Alarm lock".
-                        done(result);
-                        return;
-                    }
-                    readOffsets(done, result);
+                    result.outcome = SessionResult::Outcome::LinkFailure;
+                    result.message = tr("The machine stayed busy (%1) too long to connect. Wait for it to "
+                                        "finish, or stop it, "
+                                        "then connect again.")
+                                         .arg(state);
+                    done(result);
+                    return;
+                }
+                // The controller app sends "\n;\n" on opening to flush whatever the machine had
+                // half-received.
+                run("", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
+                    run(";", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
+                        awaitStatus(2000, [this, done](std::optional<MachineStatus> status) {
+                            if (!status) {
+                                SessionResult result;
+                                result.outcome = SessionResult::Outcome::LinkFailure;
+                                result.message = tr(
+                                    "The machine answered but sent no status report; is this a Carvera?");
+                                done(result);
+                                return;
+                            }
+                            SessionResult result;
+                            result.status = status;
+                            result.tool = status->tool;
+                            if (status->isAlarm()) {
+                                // Reachable while halted, so that it can be unlocked; M493.4 would get "Alarm
+                                // lock".
+                                done(result);
+                                return;
+                            }
+                            readOffsets(done, result);
+                        });
+                    });
                 });
             });
-        });
     };
     if (m_link->isOpen()) {
         afterOpen();
@@ -179,22 +218,24 @@ void MachineSession::connectToMachine(Done done)
 
 void MachineSession::readOffsets(Done done, SessionResult result)
 {
-    run("M493.4", MachineLink::kDefaultTimeoutMs, done, [this, done, result](const CommandReply &reply) mutable {
-        for (const QByteArray &line : reply.lines) {
-            if (auto tlo = parseTloReport(line)) {
-                result.tlo = tlo;
-                result.tool = result.tool ? result.tool : m_tool;
-                done(result);
-                return;
+    run("M493.4", MachineLink::kDefaultTimeoutMs, done,
+        [this, done, result](const CommandReply &reply) mutable {
+            for (const QByteArray &line : reply.lines) {
+                if (auto tlo = parseTloReport(line)) {
+                    result.tlo = tlo;
+                    result.tool = result.tool ? result.tool : m_tool;
+                    done(result);
+                    return;
+                }
             }
-        }
-        SessionResult bad;
-        bad.outcome = SessionResult::Outcome::MachineError;
-        bad.message = tr("The machine's offset report (M493.4) could not be read%1. Nothing was recorded; try "
-                         "again, and check the cable if it happens twice.")
-                          .arg(reply.lines.isEmpty() ? QString() : u": \""_s + text(reply.lines.front()) + u'"');
-        done(bad);
-    });
+            SessionResult bad;
+            bad.outcome = SessionResult::Outcome::MachineError;
+            bad.message
+                = tr("The machine's offset report (M493.4) could not be read%1. Nothing was recorded; try "
+                     "again, and check the cable if it happens twice.")
+                      .arg(reply.lines.isEmpty() ? QString() : u": \""_s + text(reply.lines.front()) + u'"');
+            done(bad);
+        });
 }
 
 void MachineSession::status(Done done)
@@ -221,7 +262,7 @@ void MachineSession::probe(Done done)
 {
     run("M491", MachineLink::kMotionTimeoutMs, done, [this, done](const CommandReply &reply) {
         const auto probe = std::find_if(reply.lines.cbegin(), reply.lines.cend(),
-                                        [](const QByteArray &l) { return parseProbeResult(l).has_value(); });
+            [](const QByteArray &l) { return parseProbeResult(l).has_value(); });
         if (probe == reply.lines.cend() || !parseProbeResult(*probe)->triggered) {
             SessionResult bad;
             bad.outcome = SessionResult::Outcome::MachineError;
@@ -255,14 +296,15 @@ void MachineSession::breakTest(double tolerance, Done done)
         result.breakTest = reading;
         if (broken && reading) {
             result.outcome = SessionResult::Outcome::ToolBroken;
-            result.message = tr("Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a "
-                                "difference of %4 mm; the tolerance is %5 mm). The machine has halted. Check the "
-                                "tool and replace it if it is damaged, then Unlock.")
-                                 .arg(m_tool.value_or(-1))
-                                 .arg(reading->newTlo, 0, 'f', 3)
-                                 .arg(reading->oldTlo, 0, 'f', 3)
-                                 .arg(std::fabs(reading->newTlo - reading->oldTlo), 0, 'f', 3)
-                                 .arg(tolerance);
+            result.message
+                = tr("Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a "
+                     "difference of %4 mm; the tolerance is %5 mm). The machine has halted. Check the "
+                     "tool and replace it if it is damaged, then Unlock.")
+                      .arg(m_tool.value_or(-1))
+                      .arg(reading->newTlo, 0, 'f', 3)
+                      .arg(reading->oldTlo, 0, 'f', 3)
+                      .arg(std::fabs(reading->newTlo - reading->oldTlo), 0, 'f', 3)
+                      .arg(tolerance);
             done(result);
             return;
         }
@@ -272,12 +314,14 @@ void MachineSession::breakTest(double tolerance, Done done)
         }
         if (noPrevious) {
             result.outcome = SessionResult::Outcome::MachineError;
-            result.message = tr("The machine has no TLO for this tool to compare with. Probe the tool first, then "
-                                "run the break test.");
+            result.message
+                = tr("The machine has no TLO for this tool to compare with. Probe the tool first, then "
+                     "run the break test.");
         } else if (!reading) {
             result.outcome = SessionResult::Outcome::MachineError;
-            result.message = tr("The break test ran but its result (\"Old: … , new: …\") could not be read. Run it "
-                                "again before you trust the tool.");
+            result.message
+                = tr("The break test ran but its result (\"Old: … , new: …\") could not be read. Run it "
+                     "again before you trust the tool.");
         } else if (std::fabs(reading->newTlo - reading->oldTlo) > tolerance) {
             // The firmware should have halted; do not call this tool good on our side either.
             result.outcome = SessionResult::Outcome::ToolBroken;
@@ -304,8 +348,9 @@ void MachineSession::finishWithReport(const QList<QByteArray> &lines, Done done,
     }
     SessionResult bad;
     bad.outcome = SessionResult::Outcome::MachineError;
-    bad.message = tr("The machine's reply to %1 could not be read. Check the offsets (Report) before you cut.")
-                      .arg(what);
+    bad.message
+        = tr("The machine's reply to %1 could not be read. Check the offsets (Report) before you cut.")
+              .arg(what);
     done(bad);
 }
 
@@ -313,20 +358,25 @@ void MachineSession::setTlo(double tlo, Done done)
 {
     if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
         return refuse(done, r.error().message);
-    run("M493.3 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done, [this, done, tlo](const CommandReply &reply) {
-        finishWithReport(reply.lines, [done, tlo](const SessionResult &result) {
-            if (result.ok() && std::fabs(result.tlo->tlo() - tlo) > 0.0005) {
-                SessionResult bad = result;
-                bad.outcome = SessionResult::Outcome::MachineError;
-                bad.message = tr("The machine was told TLO %1 mm but reports %2 mm. Check the offsets before you cut.")
-                                  .arg(tlo, 0, 'f', 3)
-                                  .arg(result.tlo->tlo(), 0, 'f', 3);
-                done(bad);
-                return;
-            }
-            done(result);
-        }, u"M493.3"_s);
-    });
+    run("M493.3 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done,
+        [this, done, tlo](const CommandReply &reply) {
+            finishWithReport(
+                reply.lines,
+                [done, tlo](const SessionResult &result) {
+                    if (result.ok() && std::fabs(result.tlo->tlo() - tlo) > 0.0005) {
+                        SessionResult bad = result;
+                        bad.outcome = SessionResult::Outcome::MachineError;
+                        bad.message = tr("The machine was told TLO %1 mm but reports %2 mm. Check the "
+                                         "offsets before you cut.")
+                                          .arg(tlo, 0, 'f', 3)
+                                          .arg(result.tlo->tlo(), 0, 'f', 3);
+                        done(bad);
+                        return;
+                    }
+                    done(result);
+                },
+                u"M493.3"_s);
+        });
 }
 
 void MachineSession::setTloAboveZ0(double height, Done done)
@@ -357,16 +407,18 @@ void MachineSession::changeTool(int tool, Done done)
     run("M6 T" + QByteArray::number(tool), MachineLink::kMotionTimeoutMs, done,
         [this, done, tool](const CommandReply &reply) {
             m_tool = tool;
-            const bool probed = std::any_of(reply.lines.cbegin(), reply.lines.cend(), [](const QByteArray &l) {
-                const auto p = parseProbeResult(l);
-                return p && p->triggered;
-            });
+            const bool probed
+                = std::any_of(reply.lines.cbegin(), reply.lines.cend(), [](const QByteArray &l) {
+                      const auto p = parseProbeResult(l);
+                      return p && p->triggered;
+                  });
             if (!probed) {
                 SessionResult bad;
                 bad.outcome = SessionResult::Outcome::MachineError;
-                bad.message = tr("T%1 is in the spindle, but its probe result ([PRB:…]) could not be read. Nothing "
-                                 "was recorded; probe the tool again.")
-                                  .arg(tool);
+                bad.message
+                    = tr("T%1 is in the spindle, but its probe result ([PRB:…]) could not be read. Nothing "
+                         "was recorded; probe the tool again.")
+                          .arg(tool);
                 done(bad);
                 return;
             }
@@ -378,7 +430,7 @@ void MachineSession::unlock(Done done)
 {
     run("$X", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &reply) {
         const bool unlocked = std::any_of(reply.lines.cbegin(), reply.lines.cend(),
-                                          [](const QByteArray &l) { return l.trimmed() == "[Caution: Unlocked]"; });
+            [](const QByteArray &l) { return l.trimmed() == "[Caution: Unlocked]"; });
         if (!unlocked) {
             SessionResult bad;
             bad.outcome = SessionResult::Outcome::MachineError;

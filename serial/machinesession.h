@@ -77,6 +77,9 @@ private:
     void finishWithReport(const QList<QByteArray> &lines, Done done, const QString &what);
     void readOffsets(Done done, SessionResult result);
     void awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next);
+    // Polls until the machine is no longer running a command (a late answer of a timed-out command would
+    // otherwise be taken for the next command's), then lets stray output settle. `next` gets false on give-up.
+    void awaitIdle(qint64 deadlineMs, std::function<void(bool idle, const QString &state)> next);
     static void refuse(Done done, const QString &message);
     static SessionResult failure(const CommandReply &reply);
     static QByteArray number(double value);

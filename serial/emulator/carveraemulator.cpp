@@ -154,6 +154,7 @@ void CarveraEmulator::processNext()
         return;
     const QByteArray line = m_queue.takeFirst().trimmed();
     m_busy = true;
+    m_printed = 0;
     const QByteArray upper = line.toUpper();
     for (qsizetype i = 0; i < m_faults.size(); ++i) {
         const PendingFault f = m_faults.at(i);
@@ -198,8 +199,11 @@ void CarveraEmulator::later(int ms, std::function<void()> step)
 
 void CarveraEmulator::say(const QByteArray &line)
 {
-    if (m_garble) {
-        m_garble = false;
+    // Garbling hits every line the command prints, and its "ok" only when it prints nothing else.
+    const bool garble = m_garble && (line != "ok" || m_printed == 0);
+    if (line != "ok")
+        ++m_printed;
+    if (garble) {
         QByteArray mangled = line;
         for (char &c : mangled) {
             if ((c >= '0' && c <= '9') || c == 'k')
@@ -217,6 +221,7 @@ void CarveraEmulator::finish()
         m_dropOk = false;
     else
         say("ok");
+    m_garble = false;
     m_busy = false;
     if (!m_queue.isEmpty())
         QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
@@ -240,13 +245,13 @@ void CarveraEmulator::execute(const QByteArray &line)
     }
     if (isHalted() && !allowedWhileHalted(upper)) {
         say("error:Alarm lock");
-        m_busy = false;
+        m_busy = m_dropOk = m_garble = false;
         QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
         return;
     }
     auto refuse = [this, &line](const QByteArray &why) {
         say(why.isEmpty() ? "error:Unsupported command - " + line : why);
-        m_dropOk = false;
+        m_dropOk = m_garble = false;
         m_busy = false;
         QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
     };

@@ -101,6 +101,7 @@ private:
     bool m_busy = false;
     bool m_dropOk = false;
     bool m_garble = false;
+    int m_printed = 0; // lines the running command printed
     bool m_held = false;
 
     bool m_homed = true;

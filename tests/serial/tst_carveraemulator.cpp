@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <QSignalSpy>
+#include <QTest>
+
+#include "emulator/carveraemulator.h"
+#include "machinereplies.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// Sends one line and returns everything up to and including its terminator (or what came in 2 s).
+QList<QByteArray> command(CarveraEmulator &emulator, const QByteArray &line, int ms = 2000)
+{
+    QList<QByteArray> out;
+    bool done = false;
+    auto c = QObject::connect(&emulator, &CarveraEmulator::lineSent, &emulator, [&](const QByteArray &l) {
+        out.append(l);
+        const ReplyKind kind = classifyReply(l);
+        done = done || kind == ReplyKind::Ok || kind == ReplyKind::Error;
+    });
+    emulator.receiveLine(line);
+    if (!QTest::qWaitFor([&] { return done; }, ms))
+        out.append("TEST: no terminator");
+    QObject::disconnect(c);
+    return out;
+}
+
+QByteArray status(CarveraEmulator &emulator)
+{
+    QByteArray report;
+    auto c = QObject::connect(&emulator, &CarveraEmulator::lineSent, &emulator,
+                              [&](const QByteArray &l) { report = l; });
+    emulator.receiveRealtime('?');
+    QObject::disconnect(c);
+    return report;
+}
+
+} // namespace
+
+class TestCarveraEmulator : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void followsTheSeedsWorkedExample()
+    {
+        CarveraEmulator emulator;
+        QList<QByteArray> out = command(emulator, "M491");
+        QVERIFY(out.contains("[PRB:-88.000,-9.000,-72.300:1]"));
+        QCOMPARE(out.last(), QByteArray("ok"));
+        QVERIFY(out.contains("Done ATC"));
+        QCOMPARE(emulator.referenceMz(), -72.3); // the first tool probed becomes the reference
+        QCOMPARE(command(emulator, "M493.2 T2"), QList<QByteArray> { "ok" });
+        command(emulator, "M491");
+        out = command(emulator, "M493.4");
+        QCOMPARE(out.size(), 4);
+        QCOMPARE(out.at(0), QByteArray("current tool offset [-105.688] , reference tool offset [-72.300]"));
+        QCOMPARE(out.at(1), QByteArray("no one-off tool setter position offsets configured"));
+        QCOMPARE(out.at(2), QByteArray("using default Tool setter position: X[-88.000] Y[-9.000] Z[-2.000]"));
+        QVERIFY(qFuzzyCompare(emulator.tlo(), -33.388));
+        // "Adding 2.9mm length to the current tool": -33.388 + 2.9 = -30.488
+        out = command(emulator, "M493.3 Z-30.488");
+        QCOMPARE(out.at(0), QByteArray("current tool offset [-102.788] , reference tool offset [-72.300]"));
+        QVERIFY(status(emulator).contains("|T:2,-30.488,-1,0|"));
+    }
+
+    void aBrokenToolMeasuresShorter()
+    {
+        CarveraEmulator emulator;
+        command(emulator, "M491");
+        QList<QByteArray> out = command(emulator, "M491.1 H0.05");
+        QVERIFY(out.contains("Old: 0.000 , new: 0.000"));
+        QVERIFY(!emulator.isHalted());
+        emulator.breakTool(1, 0.5);
+        out = command(emulator, "M491.1");
+        QVERIFY(out.contains("Old: 0.000 , new: -0.500"));
+        QVERIFY(out.contains("ERROR: Tool Break Check - check tool for breakage"));
+        QCOMPARE(emulator.haltReason(), 4);
+        QVERIFY(status(emulator).contains("|H:4>"));
+        QVERIFY(status(emulator).startsWith("<Alarm|"));
+    }
+
+    void refusesATooSmallToleranceBeforeMoving()
+    {
+        CarveraEmulator emulator;
+        command(emulator, "M491");
+        const QList<QByteArray> out = command(emulator, "M491.1 H0.01");
+        QCOMPARE(out.front(), QByteArray("ERROR: Tool Break Check - tolerance set too small"));
+        QVERIFY(!out.contains("M497.3")); // no probing script ran
+        QCOMPARE(emulator.haltReason(), 4);
+    }
+
+    void needsAPreviousTloForTheBreakTest()
+    {
+        CarveraEmulator emulator;
+        QCOMPARE(command(emulator, "M491.1").front(), QByteArray("No previous TLO included, aborting"));
+        QVERIFY(!emulator.isHalted());
+    }
+
+    void locksWhileHaltedAndUnlocks()
+    {
+        CarveraEmulator emulator;
+        emulator.halt(3);
+        QCOMPARE(command(emulator, "M491"), QList<QByteArray> { "error:Alarm lock" });
+        QCOMPARE(command(emulator, "M493.4"), QList<QByteArray> { "error:Alarm lock" });
+        QCOMPARE(command(emulator, "M5"), QList<QByteArray> { "ok" }); // allowed while halted
+        const QList<QByteArray> unlock { "[Caution: Unlocked]", "ok" };
+        QCOMPARE(command(emulator, "$X"), unlock);
+        QVERIFY(!emulator.isHalted());
+        emulator.halt(1);
+        QCOMPARE(command(emulator, "M999").front(),
+                 QByteArray("WARNING: After HALT you should HOME as position is currently unknown"));
+        QVERIFY(!emulator.isHalted());
+    }
+
+    void selectingAToolNeedsT()
+    {
+        CarveraEmulator emulator;
+        QCOMPARE(command(emulator, "M493.2").front(), QByteArray("ERROR: No tool was set!"));
+        QCOMPARE(emulator.haltReason(), 7);
+    }
+
+    void aToolTooShortFailsToTrigger()
+    {
+        CarveraEmulator emulator;
+        emulator.setToolLength(1, 2.0);
+        const QList<QByteArray> out = command(emulator, "M491");
+        QVERIFY(out.contains("ALARM: Probe failed to trigger within safety margin (135.00mm)"));
+        QCOMPARE(emulator.haltReason(), 3);
+    }
+
+    void refusesProbingUnhomed()
+    {
+        CarveraEmulator emulator;
+        emulator.setHomed(false);
+        QCOMPARE(command(emulator, "M491").front(), QByteArray("Machine has not been homed"));
+        QCOMPARE(emulator.haltReason(), 2);
+    }
+
+    void changesToolsAndSetsTloWithoutProbing()
+    {
+        CarveraEmulator emulator;
+        command(emulator, "M491");
+        QList<QByteArray> out = command(emulator, "M6 T2");
+        QCOMPARE(out.front(), QByteArray("Start manually picking new tool: T2"));
+        QVERIFY(qFuzzyCompare(emulator.tlo(), -33.388));
+        out = command(emulator, "M6 T3 H-12.5");
+        QCOMPARE(out, QList<QByteArray> { "ok" });
+        QCOMPARE(emulator.tool(), 3);
+        QCOMPARE(emulator.tlo(), -12.5);
+        out = command(emulator, "M6 T-5");
+        QCOMPARE(out.front(), QByteArray("ALARM: Invalid tool: T-5"));
+        QCOMPARE(emulator.haltReason(), 6);
+    }
+
+    void setsTloFromAGaugeAboveZ0()
+    {
+        CarveraEmulator emulator;
+        command(emulator, "M491"); // reference -72.300, TLO 0
+        command(emulator, "G53 G0 Z-40");
+        command(emulator, "G10 L20 P1 Z0"); // work Z0 here
+        command(emulator, "G53 G0 Z-37"); // 3 mm up: a 3 mm gauge under the tip
+        const QList<QByteArray> out = command(emulator, "M493.3 H3.0");
+        const auto r = parseTloReport(out.front());
+        QVERIFY(r);
+        QVERIFY2(std::fabs(r->tlo()) < 1e-9, out.front().constData());
+    }
+
+    void theFixedReferenceProfileKeepsItsReference()
+    {
+        CarveraEmulator emulator;
+        emulator.setProfile(CarveraEmulator::Profile::FixedReference, -70.0);
+        command(emulator, "M491");
+        QCOMPARE(emulator.referenceMz(), -70.0);
+        QVERIFY(qFuzzyCompare(emulator.tlo(), -2.3));
+    }
+
+    void answersUnknownCommandsAndEmptyLines()
+    {
+        CarveraEmulator emulator;
+        QCOMPARE(command(emulator, "M12345"), QList<QByteArray> { "error:Unsupported command - M12345" });
+        QCOMPARE(command(emulator, ""), QList<QByteArray> { "ok" });
+        QCOMPARE(command(emulator, ";"), QList<QByteArray> { "ok" });
+    }
+
+    void abortsAProbeWithCtrlX()
+    {
+        CarveraEmulator emulator;
+        emulator.setTiming({ 5000, 0 });
+        QSignalSpy lines(&emulator, &CarveraEmulator::lineSent);
+        emulator.receiveLine("M491");
+        QVERIFY(status(emulator).startsWith("<Run|"));
+        emulator.receiveRealtime(0x18);
+        QCOMPARE(lines.last().front().toByteArray(), QByteArray("ALARM: Abort during cycle"));
+        QVERIFY(emulator.isHalted());
+        QTest::qWait(50);
+        QVERIFY(!lines.contains(QVariantList { QByteArray("ok") }));
+    }
+
+    void injectsFaults()
+    {
+        CarveraEmulator emulator;
+        emulator.injectFault(CarveraEmulator::Fault::DropOk, "M493.4");
+        QList<QByteArray> out = command(emulator, "G90");
+        QCOMPARE(out, QList<QByteArray> { "ok" }); // the fault waits for its command
+        out = command(emulator, "M493.4", 100);
+        QCOMPARE(out.size(), 4); // the three report lines, then no terminator
+        QCOMPARE(out.last(), QByteArray("TEST: no terminator"));
+        emulator.injectFault(CarveraEmulator::Fault::Garble);
+        out = command(emulator, "M493.4");
+        QVERIFY(!parseTloReport(out.front()));
+        QCOMPARE(out.last(), QByteArray("ok"));
+        emulator.injectFault(CarveraEmulator::Fault::FailProbe);
+        out = command(emulator, "M491");
+        QVERIFY(out.contains("ALARM: Probe failed to trigger within safety margin (135.00mm)"));
+        QSignalSpy closed(&emulator, &CarveraEmulator::linkClosed);
+        emulator.injectFault(CarveraEmulator::Fault::CloseLink);
+        emulator.receiveLine("$X");
+        QCOMPARE(closed.size(), 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCarveraEmulator)
+#include "tst_carveraemulator.moc"

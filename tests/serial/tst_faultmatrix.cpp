@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every machine-session operation under every injected fault: a clear error, no change to the tool table, and a
+// link that works again after an unlock or a reconnect.
+#include <QTest>
+
+#include "sessionharness.h"
+#include "tooltable.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+using Test::SessionHarness;
+using Fault = CarveraEmulator::Fault;
+using Outcome = SessionResult::Outcome;
+
+namespace {
+
+enum Operation { Report, Probe, BreakTest, SetTlo, SetAboveZ0, SelectTool, ChangeTool, Unlock, RestoreTlo, OperationCount };
+enum Injected { DropOk, NoAnswer, Garble, CloseLink, Alarm, LateAnswer, InjectedCount };
+
+const char *const kOperationNames[] = { "report",      "probe",       "break-test", "set-tlo", "set-above-z0",
+                                        "select-tool", "change-tool", "unlock",     "restore-tlo" };
+const char *const kFaultNames[] = { "dropped ok", "no answer", "garbled reply", "link closed", "alarm", "late answer" };
+// The first command each operation sends, which the fault is aimed at.
+const char *const kFirstCommand[] = { "M493.4", "M491", "M491.1", "M493.3", "M493.3", "M493.2", "M6", "$X", "M493.2" };
+
+void start(MachineSession &session, int operation, MachineSession::Done done)
+{
+    switch (operation) {
+    case Report:
+        return session.report(done);
+    case Probe:
+        return session.probe(done);
+    case BreakTest:
+        return session.breakTest(0.1, done);
+    case SetTlo:
+        return session.setTlo(-30.488, done);
+    case SetAboveZ0:
+        return session.setTloAboveZ0(3.0, done);
+    case SelectTool:
+        return session.selectTool(2, done);
+    case ChangeTool:
+        return session.changeTool(2, done);
+    case Unlock:
+        return session.unlock(done);
+    default:
+        return session.restoreTlo(2, -20.0, done);
+    }
+}
+
+bool probes(int operation)
+{
+    return operation == Probe || operation == BreakTest || operation == ChangeTool;
+}
+
+} // namespace
+
+class TestFaultMatrix : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void everyOperationUnderEveryFault_data()
+    {
+        QTest::addColumn<int>("operation");
+        QTest::addColumn<int>("fault");
+        for (int o = 0; o < OperationCount; ++o) {
+            for (int f = 0; f < InjectedCount; ++f)
+                QTest::addRow("%s, %s", kOperationNames[o], kFaultNames[f]) << o << f;
+        }
+    }
+    void everyOperationUnderEveryFault()
+    {
+        QFETCH(int, operation);
+        QFETCH(int, fault);
+        SessionHarness h;
+        h.link.setTimeoutScale(0.005); // 5 s -> 25 ms, a probe's 120 s -> 600 ms
+        QVERIFY(h.connect().ok());
+        QVERIFY(h.run([&](auto done) { h.session.probe(done); }).ok()); // so the break test has a TLO
+
+        ToolTable table = ToolTable::fromTools({ Tool { 1, 1, u"end mill"_s, 40, 0, 3, 0, -1.5, {}, {}, {} },
+                                                 Tool { 2, 2, u"drill"_s, 50, 0, 2, 0, {}, {}, {}, {} } },
+                                               Units::Millimetre)
+                              .takeValue();
+        const ToolTable before = table;
+
+        const QByteArray target = kFirstCommand[operation];
+        switch (fault) {
+        case DropOk:
+            h.emulator.injectFault(Fault::DropOk, target);
+            break;
+        case NoAnswer:
+            h.emulator.injectFault(Fault::NoAnswer, target);
+            break;
+        case Garble:
+            h.emulator.injectFault(Fault::Garble, target);
+            break;
+        case CloseLink:
+            h.emulator.injectFault(Fault::CloseLink, target);
+            break;
+        case Alarm:
+            if (probes(operation))
+                h.emulator.injectFault(Fault::FailProbe); // the alarm comes in the middle of the cycle
+            else
+                h.emulator.halt(3); // already halted: every command gets "Alarm lock"
+            break;
+        case LateAnswer:
+            h.emulator.injectFault(Fault::Delay, target, 800); // beyond any limit the test set
+            break;
+        }
+
+        const SessionResult r = h.run([&](auto done) { start(h.session, operation, done); });
+        // What the window and the CLI do: record only a whole success.
+        if (r.ok() && r.tlo && r.tool)
+            QVERIFY(table.recordMeasurement(*r.tool, r.tlo->tlo(), QDateTime::currentDateTimeUtc()).ok());
+
+        if (operation == Unlock && fault == Alarm) {
+            QVERIFY2(r.ok(), qPrintable(r.message)); // unlocking a halted machine is what unlock is for
+        } else {
+            QVERIFY2(!r.ok(), "the fault went unnoticed");
+            QVERIFY(r.outcome == Outcome::MachineError || r.outcome == Outcome::LinkFailure);
+            QVERIFY2(r.message.size() > 20, qPrintable(r.message));
+            QVERIFY2(!r.message.startsWith(u"TEST:"_s), "the operation hung");
+            QCOMPARE(table, before);
+        }
+
+        // Recovery: reconnect when the link dropped, unlock when the machine halted; then it answers again.
+        if (!h.link.isOpen()) {
+            const SessionResult again = h.connect();
+            QVERIFY2(again.ok(), qPrintable(again.message));
+        }
+        if (h.emulator.isHalted())
+            QVERIFY(h.run([&](auto done) { h.session.unlock(done); }).ok());
+        const SessionResult report = h.run([&](auto done) { h.session.report(done); });
+        QVERIFY2(report.ok(), qPrintable(report.message));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFaultMatrix)
+#include "tst_faultmatrix.moc"

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <cmath>
+#include <limits>
+
+#include <QTest>
+
+#include "sessionharness.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+using Test::SessionHarness;
+using Outcome = SessionResult::Outcome;
+
+class TestMachineSession : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void connectsFlushesAndReadsTheOffsets()
+    {
+        SessionHarness h;
+        const SessionResult r = h.connect();
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(h.sent.mid(0, 3), (QList<QByteArray> { "", ";", "M493.4" }));
+        QVERIFY(r.status.has_value());
+        QCOMPARE(r.tool.value_or(-2), 1);
+        QVERIFY(r.tlo.has_value());
+    }
+
+    void followsTheSeedsWorkedExample()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        SessionResult r = h.run([&](auto done) { h.session.probe(done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(r.tlo->referenceMz, -72.3);
+        QCOMPARE(r.tlo->tlo(), 0.0);
+        QVERIFY(h.run([&](auto done) { h.session.selectTool(2, done); }).ok());
+        r = h.run([&](auto done) { h.session.probe(done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(r.tool.value_or(-1), 2);
+        QCOMPARE(r.tlo->currentMz, -105.688);
+        QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-33.388"_s);
+        r = h.run([&](auto done) { h.session.setTlo(r.tlo->tlo() + 2.9, done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-30.488"_s);
+        QCOMPARE(h.sent.last(), QByteArray("M493.3 Z-30.488"));
+    }
+
+    void refusesBadInputWithoutSendingIt_data()
+    {
+        QTest::addColumn<int>("operation");
+        QTest::addColumn<double>("value");
+        QTest::addColumn<QString>("message");
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        QTest::newRow("tolerance below 0.02") << 0 << 0.01 << u"too small"_s;
+        QTest::newRow("tolerance 0.0199") << 0 << 0.0199 << u"too small"_s;
+        QTest::newRow("tolerance negative") << 0 << -0.1 << u"too small"_s;
+        QTest::newRow("tolerance NaN") << 0 << nan << u"not a number"_s;
+        QTest::newRow("TLO NaN") << 1 << nan << u"from -999.999 to 999.999"_s;
+        QTest::newRow("TLO too large") << 1 << 5000.0 << u"from -999.999 to 999.999"_s;
+        QTest::newRow("height infinite") << 2 << std::numeric_limits<double>::infinity() << u"height above Z0"_s;
+        QTest::newRow("tool -2") << 3 << -2.0 << u"not a tool number"_s;
+        QTest::newRow("tool too large") << 4 << 1e7 << u"not a tool number"_s;
+        QTest::newRow("restore with NaN") << 5 << nan << u"tool length offset"_s;
+    }
+    void refusesBadInputWithoutSendingIt()
+    {
+        QFETCH(int, operation);
+        QFETCH(double, value);
+        QFETCH(QString, message);
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        const qsizetype before = h.sent.size();
+        const SessionResult r = h.run([&](MachineSession::Done done) {
+            switch (operation) {
+            case 0:
+                return h.session.breakTest(value, done);
+            case 1:
+                return h.session.setTlo(value, done);
+            case 2:
+                return h.session.setTloAboveZ0(value, done);
+            case 3:
+                return h.session.selectTool(int(value), done);
+            case 4:
+                return h.session.changeTool(int(value), done);
+            default:
+                return h.session.restoreTlo(2, value, done);
+            }
+        });
+        QCOMPARE(r.outcome, Outcome::Refused);
+        QVERIFY2(r.message.contains(message), qPrintable(r.message));
+        QCOMPARE(h.sent.size(), before); // nothing left the computer
+    }
+
+    void theMinimumToleranceIsSent()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        QVERIFY(h.run([&](auto done) { h.session.probe(done); }).ok());
+        const SessionResult r = h.run([&](auto done) { h.session.breakTest(0.02, done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(h.sent.last(), QByteArray("M491.1 H0.02"));
+        QCOMPARE(r.breakTest->newTlo, r.breakTest->oldTlo);
+    }
+
+    void findsABrokenTool()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        QVERIFY(h.run([&](auto done) { h.session.probe(done); }).ok());
+        h.emulator.breakTool(1, 0.3);
+        const SessionResult r = h.run([&](auto done) { h.session.breakTest(0.1, done); });
+        QCOMPARE(r.outcome, Outcome::ToolBroken);
+        QVERIFY(r.breakTest.has_value());
+        QCOMPARE(QString::number(r.breakTest->newTlo - r.breakTest->oldTlo, 'f', 3), u"-0.300"_s);
+        QVERIFY2(r.message.contains(u"may be broken"_s) && r.message.contains(u"Unlock"_s), qPrintable(r.message));
+        QVERIFY(h.emulator.isHalted());
+    }
+
+    void aBreakTestWithoutAPreviousTloSaysSo()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        const SessionResult r = h.run([&](auto done) { h.session.breakTest(0.1, done); });
+        QCOMPARE(r.outcome, Outcome::MachineError);
+        QVERIFY(r.message.contains(u"Probe the tool first"_s));
+    }
+
+    void reachesAHaltedMachineToUnlockIt()
+    {
+        SessionHarness h;
+        h.emulator.halt(3);
+        SessionResult r = h.connect();
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QVERIFY(r.status->isAlarm());
+        QCOMPARE(r.status->haltReason.value_or(0), 3);
+        QVERIFY(!h.sent.contains("M493.4")); // it would only get "Alarm lock"
+        r = h.run([&](auto done) { h.session.probe(done); });
+        QCOMPARE(r.outcome, Outcome::MachineError);
+        QVERIFY(r.message.contains(u"Alarm lock"_s));
+        r = h.run([&](auto done) { h.session.unlock(done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QVERIFY(!r.status->isAlarm());
+    }
+
+    void restoresAKnownTloWithoutProbing()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        QVERIFY(h.run([&](auto done) { h.session.probe(done); }).ok());
+        const SessionResult r = h.run([&](auto done) { h.session.restoreTlo(5, -12.25, done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(r.tool.value_or(-1), 5);
+        QCOMPARE(r.tlo->tlo(), -12.25);
+        QVERIFY(!h.sent.contains("M491") || h.sent.count("M491") == 1);
+        QCOMPARE(h.emulator.tool(), 5);
+    }
+
+    void changesToolsAndMeasuresThem()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        QVERIFY(h.run([&](auto done) { h.session.probe(done); }).ok());
+        const SessionResult r = h.run([&](auto done) { h.session.changeTool(2, done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(r.tool.value_or(-1), 2);
+        QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-33.388"_s);
+    }
+
+    void abortStopsAProbe()
+    {
+        SessionHarness h;
+        h.emulator.setTiming({ 3000, 0 });
+        QVERIFY(h.connect().ok());
+        std::optional<SessionResult> result;
+        h.session.probe([&](const SessionResult &r) { result = r; });
+        QTest::qWait(50);
+        h.session.abort();
+        QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), 3000);
+        QCOMPARE(result->outcome, Outcome::MachineError);
+        QVERIFY2(result->message.contains(u"Abort during cycle"_s), qPrintable(result->message));
+        QVERIFY(h.emulator.isHalted());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMachineSession)
+#include "tst_machinesession.moc"
