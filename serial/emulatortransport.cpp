@@ -10,14 +10,16 @@ EmulatorTransport::EmulatorTransport(CarveraEmulator *emulator, QObject *parent)
     , m_emulator(emulator ? emulator : new CarveraEmulator)
     , m_ownsEmulator(emulator == nullptr)
 {
-    connect(m_emulator, &CarveraEmulator::lineSent, this,
-            [this](const QByteArray &line) {
-                if (m_open)
-                    Q_EMIT lineReceived(line);
-            },
-            Qt::QueuedConnection);
-    connect(m_emulator, &CarveraEmulator::linkClosed, this,
-            [this] { lose(tr("The link to the emulator dropped.")); }, Qt::QueuedConnection);
+    connect(
+        m_emulator, &CarveraEmulator::lineSent, this,
+        [this](const QByteArray &line) {
+            if (m_open)
+                Q_EMIT lineReceived(line);
+        },
+        Qt::QueuedConnection);
+    connect(
+        m_emulator, &CarveraEmulator::linkClosed, this,
+        [this] { lose(tr("The link to the emulator dropped.")); }, Qt::QueuedConnection);
 }
 
 EmulatorTransport::~EmulatorTransport()
@@ -54,13 +56,15 @@ void EmulatorTransport::writeLine(const QByteArray &line)
         Q_EMIT errorOccurred(tr("The link to the emulator is not open."));
         return;
     }
-    QMetaObject::invokeMethod(m_emulator, [e = m_emulator, line] { e->receiveLine(line); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        m_emulator, [e = m_emulator, line] { e->receiveLine(line); }, Qt::QueuedConnection);
 }
 
 void EmulatorTransport::writeRealtime(char c)
 {
     if (m_open)
-        QMetaObject::invokeMethod(m_emulator, [e = m_emulator, c] { e->receiveRealtime(c); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            m_emulator, [e = m_emulator, c] { e->receiveRealtime(c); }, Qt::QueuedConnection);
 }
 
 QString EmulatorTransport::description() const

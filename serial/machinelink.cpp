@@ -16,21 +16,23 @@ MachineLink::MachineLink(LineTransport *transport, QObject *parent)
         if (!m_current)
             return;
         const QString command = QString::fromUtf8(m_current->line);
-        const QString message = tr("The machine did not answer \"%1\" within %2 s. The link was closed, because a "
-                                   "late answer could be taken for the next command's. Reconnect, and check the "
-                                   "machine before you go on.")
-                                    .arg(command)
-                                    .arg(m_timeout.interval() / 1000.0, 0, 'f', 1);
+        const QString message
+            = tr("The machine did not answer \"%1\" within %2 s. The link was closed, because a "
+                 "late answer could be taken for the next command's. Reconnect, and check the "
+                 "machine before you go on.")
+                  .arg(command)
+                  .arg(m_timeout.interval() / 1000.0, 0, 'f', 1);
         complete(CommandReply::Status::Timeout, message);
         failAll(CommandReply::Status::Timeout, message);
         m_lastError = message;
         m_transport->close();
     });
     connect(&m_grace, &QTimer::timeout, this,
-            [this] { complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm)); });
+        [this] { complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm)); });
     connect(&m_poll, &QTimer::timeout, this, &MachineLink::requestStatus);
     connect(m_transport, &LineTransport::lineReceived, this, &MachineLink::handleLine);
-    connect(m_transport, &LineTransport::errorOccurred, this, [this](const QString &message) { m_lastError = message; });
+    connect(m_transport, &LineTransport::errorOccurred, this,
+        [this](const QString &message) { m_lastError = message; });
     connect(m_transport, &LineTransport::closed, this, &MachineLink::handleClosed);
     connect(m_transport, &LineTransport::opened, this, [this] {
         m_lastError.clear();
@@ -70,8 +72,9 @@ void MachineLink::send(const QByteArray &line, int timeoutMs, ReplyHandler handl
 {
     if (!isOpen()) {
         CommandReply reply { CommandReply::Status::LinkLost, line, {},
-                             tr("Not connected to the machine; connect first.") };
-        QMetaObject::invokeMethod(this, [handler, reply] { handler(reply); }, Qt::QueuedConnection);
+            tr("Not connected to the machine; connect first.") };
+        QMetaObject::invokeMethod(
+            this, [handler, reply] { handler(reply); }, Qt::QueuedConnection);
         return;
     }
     m_queue.append({ line, timeoutMs, std::move(handler) });
@@ -128,7 +131,7 @@ void MachineLink::handleLine(const QByteArray &line)
         break;
     case ReplyKind::Error:
         complete(CommandReply::Status::Refused,
-                 tr("The machine refused \"%1\": %2").arg(QString::fromUtf8(m_current->line), replyMessage(line)));
+            tr("The machine refused \"%1\": %2").arg(QString::fromUtf8(m_current->line), replyMessage(line)));
         break;
     case ReplyKind::Alarm:
     case ReplyKind::HaltError:
@@ -173,8 +176,9 @@ void MachineLink::handleClosed()
     m_poll.stop();
     const QString reason = m_lastError.isEmpty() ? tr("the link was closed") : m_lastError;
     if (m_current) {
-        complete(CommandReply::Status::LinkLost, tr("The connection to the machine was lost while it ran \"%1\": %2")
-                                                      .arg(QString::fromUtf8(m_current->line), reason));
+        complete(CommandReply::Status::LinkLost,
+            tr("The connection to the machine was lost while it ran \"%1\": %2")
+                .arg(QString::fromUtf8(m_current->line), reason));
     }
     failAll(CommandReply::Status::LinkLost, tr("The connection to the machine was lost: %1").arg(reason));
     Q_EMIT closed(reason);

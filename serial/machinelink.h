@@ -32,10 +32,11 @@ struct CommandReply
     [[nodiscard]] bool ok() const { return status == Status::Ok; }
 };
 
-// Sends command lines to the controller one at a time and matches each terminator to its command by exact token
-// ("ok" is the whole line; "error:" starts it), polls the status report about every 200 ms as real-time traffic,
-// and fails a command that gets no answer in its time limit. Never hangs: a stalled or closed link fails the
-// pending commands with a message.
+// Sends command lines to the controller one at a time and matches each terminator to its command by exact
+// token
+// ("ok" is the whole line; "error:" starts it), polls the status report about every 200 ms as real-time
+// traffic, and fails a command that gets no answer in its time limit. Never hangs: a stalled or closed link
+// fails the pending commands with a message.
 class MachineLink final : public QObject
 {
     Q_OBJECT
@@ -46,7 +47,8 @@ public:
     static constexpr int kDefaultTimeoutMs = 5000;
     static constexpr int kMotionTimeoutMs = 120000; // a probing cycle takes tens of seconds
     static constexpr int kPollIntervalMs = 200;
-    static constexpr int kAlarmGraceMs = 1000; // after an ALARM, how long to wait for the command's terminator
+    static constexpr int kAlarmGraceMs
+        = 1000; // after an ALARM, how long to wait for the command's terminator
 
     explicit MachineLink(LineTransport *transport, QObject *parent = nullptr);
 
@@ -66,7 +68,10 @@ public:
 
     [[nodiscard]] const std::optional<MachineStatus> &lastStatus() const { return m_status; }
     // Milliseconds since the last good status report, or -1 when there has been none.
-    [[nodiscard]] qint64 statusAgeMs() const { return m_statusClock.isValid() ? m_statusClock.elapsed() : -1; }
+    [[nodiscard]] qint64 statusAgeMs() const
+    {
+        return m_statusClock.isValid() ? m_statusClock.elapsed() : -1;
+    }
     [[nodiscard]] bool isBusy() const { return m_current.has_value() || !m_queue.isEmpty(); }
 
 Q_SIGNALS:

@@ -171,10 +171,10 @@ std::optional<BreakTestReading> parseBreakTest(QByteArrayView line)
 
 QString haltReasonName(int reason)
 {
-    static const char *const names[] = { "MANUAL",          "HOME_FAIL",        "PROBE_FAIL",   "CALIBRATE_FAIL",
-                                         "ATC_HOME_FAIL",   "ATC_TOOL_INVALID", "ATC_NO_TOOL",  "ATC_HAS_TOOL",
-                                         "SPINDLE_OVERHEATED", "SOFT_LIMIT",    "COVER_OPEN",   "PROBE_INVALID",
-                                         "E_STOP",          "POWER_OVERHEATED", "NON_HOME",     "CRASH_DETECTED" };
+    static const char *const names[]
+        = { "MANUAL", "HOME_FAIL", "PROBE_FAIL", "CALIBRATE_FAIL", "ATC_HOME_FAIL", "ATC_TOOL_INVALID",
+              "ATC_NO_TOOL", "ATC_HAS_TOOL", "SPINDLE_OVERHEATED", "SOFT_LIMIT", "COVER_OPEN",
+              "PROBE_INVALID", "E_STOP", "POWER_OVERHEATED", "NON_HOME", "CRASH_DETECTED" };
     if (reason >= 1 && reason <= 16)
         return QString::fromLatin1(names[reason - 1]) + u" ("_s + QString::number(reason) + u')';
     return tr("halt reason %1").arg(reason);

@@ -34,8 +34,9 @@ struct SessionResult
 };
 
 // Turns operator intents into command sequences and results. It validates before sending (a tolerance under
-// 0.02 never leaves the computer), tracks the active tool from the status reports, and reports each operation's
-// outcome as one value. It writes no table: callers record a measurement only from a successful result.
+// 0.02 never leaves the computer), tracks the active tool from the status reports, and reports each
+// operation's outcome as one value. It writes no table: callers record a measurement only from a successful
+// result.
 class MachineSession final : public QObject
 {
     Q_OBJECT
@@ -73,12 +74,14 @@ public:
     [[nodiscard]] static Result<void> validateToolNumber(int tool);
 
 private:
-    void run(const QByteArray &command, int timeoutMs, Done done, std::function<void(const CommandReply &)> next);
+    void run(
+        const QByteArray &command, int timeoutMs, Done done, std::function<void(const CommandReply &)> next);
     void finishWithReport(const QList<QByteArray> &lines, Done done, const QString &what);
     void readOffsets(Done done, SessionResult result);
     void awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next);
     // Polls until the machine is no longer running a command (a late answer of a timed-out command would
-    // otherwise be taken for the next command's), then lets stray output settle. `next` gets false on give-up.
+    // otherwise be taken for the next command's), then lets stray output settle. `next` gets false on
+    // give-up.
     void awaitIdle(qint64 deadlineMs, std::function<void(bool idle, const QString &state)> next);
     static void refuse(Done done, const QString &message);
     static SessionResult failure(const CommandReply &reply);

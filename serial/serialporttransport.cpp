@@ -5,6 +5,7 @@ namespace Toffee {
 
 SerialPortTransport::SerialPortTransport(const QString &portName, int baud, QObject *parent)
     : LineTransport(parent)
+    , m_name(portName)
     , m_baud(baud)
 {
     m_port.setPortName(portName);
@@ -22,9 +23,13 @@ void SerialPortTransport::open()
     m_port.setStopBits(QSerialPort::OneStop);
     m_port.setFlowControl(QSerialPort::NoFlowControl);
     if (!m_port.open(QIODevice::ReadWrite)) {
-        Q_EMIT errorOccurred(tr("Cannot open %1: %2. Check the cable, that no other program has the port open, "
-                                "and that you may use serial ports (the dialout group).")
-                                 .arg(m_port.portName(), m_port.errorString()));
+        // Queued, like every other signal of a transport: callers connect after calling open().
+        const QString message
+            = tr("Cannot open %1: %2. Check the cable, that no other program has the port open, "
+                 "and that you may use serial ports (the dialout group).")
+                  .arg(m_name, m_port.errorString());
+        QMetaObject::invokeMethod(
+            this, [this, message] { Q_EMIT errorOccurred(message); }, Qt::QueuedConnection);
         return;
     }
     QMetaObject::invokeMethod(this, &LineTransport::opened, Qt::QueuedConnection);
@@ -41,7 +46,7 @@ void SerialPortTransport::close()
 void SerialPortTransport::writeLine(const QByteArray &line)
 {
     if (!m_port.isOpen()) {
-        Q_EMIT errorOccurred(tr("%1 is not open.").arg(m_port.portName()));
+        Q_EMIT errorOccurred(tr("%1 is not open.").arg(m_name));
         return;
     }
     m_port.write(line + '\n');
@@ -55,7 +60,7 @@ void SerialPortTransport::writeRealtime(char c)
 
 QString SerialPortTransport::description() const
 {
-    return tr("%1 at %2 baud").arg(m_port.portName()).arg(m_baud);
+    return tr("%1 at %2 baud").arg(m_name).arg(m_baud);
 }
 
 void SerialPortTransport::readAvailable()
@@ -76,9 +81,8 @@ void SerialPortTransport::readAvailable()
         // Not a controller's line: drop it rather than grow without bound, and say so once.
         m_buffer.clear();
         if (!m_discarding)
-            Q_EMIT errorOccurred(tr("%1 sent a line longer than %2 bytes; it was dropped.")
-                                     .arg(m_port.portName())
-                                     .arg(kMaxLineBytes));
+            Q_EMIT errorOccurred(
+                tr("%1 sent a line longer than %2 bytes; it was dropped.").arg(m_name).arg(kMaxLineBytes));
         m_discarding = true;
     }
 }
@@ -89,8 +93,8 @@ void SerialPortTransport::handleError(QSerialPort::SerialPortError error)
     if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError || !m_port.isOpen())
         return;
     const QString message = error == QSerialPort::ResourceError
-        ? tr("The port %1 went away (unplugged, or the machine was switched off).").arg(m_port.portName())
-        : tr("%1: %2").arg(m_port.portName(), m_port.errorString());
+        ? tr("The port %1 went away (unplugged, or the machine was switched off).").arg(m_name)
+        : tr("%1: %2").arg(m_name, m_port.errorString());
     Q_EMIT errorOccurred(message);
     if (error == QSerialPort::ResourceError || error == QSerialPort::PermissionError)
         close();

@@ -31,6 +31,7 @@ private:
     void handleError(QSerialPort::SerialPortError error);
 
     QSerialPort m_port;
+    QString m_name; // as the user gave it: QSerialPort drops "/dev/"
     int m_baud;
     QByteArray m_buffer;
     bool m_discarding = false; // inside an over-long line, until its end

@@ -8,6 +8,7 @@
 #include <QEventLoop>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QTimer>
 
 #include "cli.h"
 #include "emulatortransport.h"
@@ -22,8 +23,8 @@ namespace Toffee::Cli {
 
 namespace {
 
-const QStringList kMachineCommands = { u"status"_s,      u"report"_s,      u"probe"_s,  u"break-test"_s, u"set-tlo"_s,
-                                       u"select-tool"_s, u"change-tool"_s, u"unlock"_s, u"link-test"_s };
+const QStringList kMachineCommands = { u"status"_s, u"report"_s, u"probe"_s, u"break-test"_s, u"set-tlo"_s,
+    u"select-tool"_s, u"change-tool"_s, u"unlock"_s, u"link-test"_s };
 
 ExitCode exitCodeFor(SessionResult::Outcome outcome)
 {
@@ -61,30 +62,29 @@ void printTlo(Invocation &call, const SessionResult &r)
 {
     const int tool = r.tool.value_or(-1);
     if (call.json) {
-        printJson(call, QJsonObject { { u"tool"_s, tool },
-                                      { u"reference_mz"_s, r.tlo->referenceMz },
-                                      { u"current_mz"_s, r.tlo->currentMz },
-                                      { u"tlo"_s, r.tlo->tlo() } });
+        printJson(call,
+            QJsonObject { { u"tool"_s, tool }, { u"reference_mz"_s, r.tlo->referenceMz },
+                { u"current_mz"_s, r.tlo->currentMz }, { u"tlo"_s, r.tlo->tlo() } });
         return;
     }
-    call.out << "T" << tool << ": TLO " << mm(r.tlo->tlo()) << " mm (current tool MCS Z " << mm(r.tlo->currentMz)
-             << ", reference MCS Z " << mm(r.tlo->referenceMz) << ")" << Qt::endl;
+    call.out << "T" << tool << ": TLO " << mm(r.tlo->tlo()) << " mm (current tool MCS Z "
+             << mm(r.tlo->currentMz) << ", reference MCS Z " << mm(r.tlo->referenceMz) << ")" << Qt::endl;
 }
 
 void printStatus(Invocation &call, const MachineStatus &s)
 {
     if (call.json) {
-        printJson(call, QJsonObject { { u"state"_s, s.state },
-                                      { u"tool"_s, s.tool ? QJsonValue(*s.tool) : QJsonValue() },
-                                      { u"tlo"_s, s.tlo ? QJsonValue(*s.tlo) : QJsonValue() },
-                                      { u"mpos"_s, axes(s.mpos) },
-                                      { u"wpos"_s, axes(s.wpos) },
-                                      { u"halt_reason"_s, s.haltReason ? QJsonValue(*s.haltReason) : QJsonValue() } });
+        printJson(call,
+            QJsonObject { { u"state"_s, s.state }, { u"tool"_s, s.tool ? QJsonValue(*s.tool) : QJsonValue() },
+                { u"tlo"_s, s.tlo ? QJsonValue(*s.tlo) : QJsonValue() }, { u"mpos"_s, axes(s.mpos) },
+                { u"wpos"_s, axes(s.wpos) },
+                { u"halt_reason"_s, s.haltReason ? QJsonValue(*s.haltReason) : QJsonValue() } });
         return;
     }
     call.out << s.state;
     if (s.haltReason)
-        call.out << " (halted: " << haltReasonName(*s.haltReason) << ". " << haltRecovery(*s.haltReason) << ")";
+        call.out << " (halted: " << haltReasonName(*s.haltReason) << ". " << haltRecovery(*s.haltReason)
+                 << ")";
     if (s.tool)
         call.out << "  T" << *s.tool << "  TLO " << mm(s.tlo.value_or(0));
     call.out << "  MPos " << mm(s.mpos[0]) << ' ' << mm(s.mpos[1]) << ' ' << mm(s.mpos[2]) << "  WPos "
@@ -96,11 +96,9 @@ void printBreakTest(Invocation &call, const SessionResult &r)
     const double diff = std::fabs(r.breakTest->newTlo - r.breakTest->oldTlo);
     const bool broken = r.outcome == SessionResult::Outcome::ToolBroken;
     if (call.json) {
-        printJson(call, QJsonObject { { u"old_tlo"_s, r.breakTest->oldTlo },
-                                      { u"new_tlo"_s, r.breakTest->newTlo },
-                                      { u"difference"_s, diff },
-                                      { u"tolerance"_s, r.tolerance },
-                                      { u"broken"_s, broken } });
+        printJson(call,
+            QJsonObject { { u"old_tlo"_s, r.breakTest->oldTlo }, { u"new_tlo"_s, r.breakTest->newTlo },
+                { u"difference"_s, diff }, { u"tolerance"_s, r.tolerance }, { u"broken"_s, broken } });
     } else {
         call.out << "T" << r.tool.value_or(-1) << ": old TLO " << mm(r.breakTest->oldTlo) << ", new "
                  << mm(r.breakTest->newTlo) << ", difference " << mm(diff) << " (tolerance " << r.tolerance
@@ -123,9 +121,10 @@ int runMachineCommand(Invocation &call)
     const QString command = call.command;
     const bool wantsTool = command == u"select-tool" || command == u"change-tool";
     if (call.arguments.size() != (wantsTool ? 1 : 0))
-        return fail(call, wantsTool ? u"usage: toffee-cli ... %1 N"_s.arg(command)
-                                    : u"%1 takes no arguments."_s.arg(command),
-                    BadInput);
+        return fail(call,
+            wantsTool ? u"usage: toffee-cli ... %1 N"_s.arg(command)
+                      : u"%1 takes no arguments."_s.arg(command),
+            BadInput);
     if (call.has(u"port"_s) == call.has(u"emulator"_s))
         return fail(call, u"say which machine: --port DEVICE or --emulator."_s, BadInput);
     int tool = 0;
@@ -215,12 +214,15 @@ int runMachineCommand(Invocation &call)
             exitCode = MachineError;
             return false;
         }
-        Result<void> saved = table->recordMeasurement(measured, r.tlo->tlo(), QDateTime::currentDateTimeUtc());
+        Result<void> saved
+            = table->recordMeasurement(measured, r.tlo->tlo(), QDateTime::currentDateTimeUtc());
         if (saved)
             saved = saveTableFile(tablePath, *table, formatForPath(tablePath).value_or(TableFormat::Json));
         if (!saved) {
-            fail(call, u"measured T%1 (TLO %2 mm) but could not record it: %3"_s.arg(measured).arg(mm(r.tlo->tlo()), saved.error().text()),
-                 BadInput);
+            fail(call,
+                u"measured T%1 (TLO %2 mm) but could not record it: %3"_s.arg(measured).arg(
+                    mm(r.tlo->tlo()), saved.error().text()),
+                BadInput);
             exitCode = BadInput;
             return false;
         }
@@ -278,41 +280,50 @@ int runMachineCommand(Invocation &call)
                 if (times->size() == count) {
                     std::sort(times->begin(), times->end());
                     const double median = times->at(times->size() / 2);
-                    const double p99 = times->at(std::min<qsizetype>(times->size() - 1, qsizetype(times->size() * 0.99)));
-                    const double mean = std::accumulate(times->cbegin(), times->cend(), 0.0) / double(times->size());
+                    const double p99
+                        = times->at(std::min<qsizetype>(times->size() - 1, qsizetype(times->size() * 0.99)));
+                    const double mean
+                        = std::accumulate(times->cbegin(), times->cend(), 0.0) / double(times->size());
                     if (call.json)
-                        printJson(call, QJsonObject { { u"count"_s, count }, { u"median_ms"_s, median },
-                                                      { u"p99_ms"_s, p99 }, { u"max_ms"_s, times->last() },
-                                                      { u"mean_ms"_s, mean }, { u"link"_s, transport->description() } });
+                        printJson(call,
+                            QJsonObject { { u"count"_s, count }, { u"median_ms"_s, median },
+                                { u"p99_ms"_s, p99 }, { u"max_ms"_s, times->last() }, { u"mean_ms"_s, mean },
+                                { u"link"_s, transport->description() } });
                     else
                         call.out << count << " round trips over " << transport->description() << ": median "
-                                 << QString::number(median, 'f', 3) << " ms, p99 " << QString::number(p99, 'f', 3)
-                                 << " ms, max " << QString::number(times->last(), 'f', 3) << " ms" << Qt::endl;
+                                 << QString::number(median, 'f', 3) << " ms, p99 "
+                                 << QString::number(p99, 'f', 3) << " ms, max "
+                                 << QString::number(times->last(), 'f', 3) << " ms" << Qt::endl;
                     *next = nullptr; // break the cycle
                     return finishWith(SessionResult {});
                 }
                 clock->start();
-                link.send("G90", MachineLink::kDefaultTimeoutMs, [&, times, clock, next](const CommandReply &reply) {
-                    if (!reply.ok()) {
-                        SessionResult r;
-                        r.outcome = reply.status == CommandReply::Status::Refused ? SessionResult::Outcome::MachineError
-                                                                                  : SessionResult::Outcome::LinkFailure;
-                        r.message = reply.message;
-                        *next = nullptr;
-                        return finishWith(r);
-                    }
-                    times->append(double(clock->nsecsElapsed()) / 1e6);
-                    (*next)();
-                });
+                link.send("G90", MachineLink::kDefaultTimeoutMs,
+                    [&, times, clock, next](const CommandReply &reply) {
+                        if (!reply.ok()) {
+                            SessionResult r;
+                            r.outcome = reply.status == CommandReply::Status::Refused
+                                ? SessionResult::Outcome::MachineError
+                                : SessionResult::Outcome::LinkFailure;
+                            r.message = reply.message;
+                            *next = nullptr;
+                            return finishWith(r);
+                        }
+                        times->append(double(clock->nsecsElapsed()) / 1e6);
+                        (*next)();
+                    });
             };
             (*next)();
         }
     };
 
-    session.connectToMachine([&](const SessionResult &r) {
-        if (!r.ok())
-            return finishWith(r);
-        operate();
+    // Started from inside the loop, so that a failure reported at once still ends it.
+    QTimer::singleShot(0, &loop, [&] {
+        session.connectToMachine([&](const SessionResult &r) {
+            if (!r.ok())
+                return finishWith(r);
+            operate();
+        });
     });
     loop.exec();
     link.close();

@@ -42,6 +42,8 @@ std::optional<CarveraEmulator::Fault> faultFromName(const QString &name)
         return CarveraEmulator::Fault::FailProbe;
     if (name.startsWith(u"delay:"))
         return CarveraEmulator::Fault::Delay;
+    if (name.startsWith(u"break:"))
+        return CarveraEmulator::Fault::BreakTool;
     return std::nullopt;
 }
 
@@ -58,26 +60,28 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(u"toffee-emulator"_s);
     QCommandLineParser parser;
-    parser.setApplicationDescription(u"A Carvera controller on a pseudo-terminal. Prints the device path, then "
-                                     u"serves until stopped."_s);
+    parser.setApplicationDescription(
+        u"A Carvera controller on a pseudo-terminal. Prints the device path, then "
+        u"serves until stopped."_s);
     parser.addHelpOption();
-    const QCommandLineOption link(u"link"_s, u"Also make a symbolic link to the device at PATH."_s, u"PATH"_s);
-    const QCommandLineOption tool(u"tool"_s, u"The physical length of tool N in mm (repeatable)."_s, u"N=LENGTH"_s);
-    const QCommandLineOption broken(u"break-tool"_s, u"Tool N is MM shorter than its length (repeatable)."_s,
-                                    u"N=MM"_s);
-    const QCommandLineOption probeMs(u"probe-ms"_s, u"How long a probing cycle takes (default 2000)."_s, u"MS"_s,
-                                     u"2000"_s);
-    const QCommandLineOption moveMs(u"move-ms"_s, u"How long any other command takes (default 0)."_s, u"MS"_s,
-                                    u"0"_s);
+    const QCommandLineOption link(
+        u"link"_s, u"Also make a symbolic link to the device at PATH."_s, u"PATH"_s);
+    const QCommandLineOption tool(
+        u"tool"_s, u"The physical length of tool N in mm (repeatable)."_s, u"N=LENGTH"_s);
+    const QCommandLineOption broken(
+        u"break-tool"_s, u"Tool N is MM shorter than its length (repeatable)."_s, u"N=MM"_s);
+    const QCommandLineOption probeMs(
+        u"probe-ms"_s, u"How long a probing cycle takes (default 2000)."_s, u"MS"_s, u"2000"_s);
+    const QCommandLineOption moveMs(
+        u"move-ms"_s, u"How long any other command takes (default 0)."_s, u"MS"_s, u"0"_s);
     const QCommandLineOption fixedReference(u"fixed-reference"_s,
-                                            u"Firmware 2.1.0c: the reference tool MCS Z is configured, not probed."_s,
-                                            u"MZ"_s);
+        u"Firmware 2.1.0c: the reference tool MCS Z is configured, not probed."_s, u"MZ"_s);
     const QCommandLineOption notHomed(u"not-homed"_s, u"Start unhomed: probing halts until $H."_s);
     const QCommandLineOption halted(u"halted"_s, u"Start halted with this reason (1-16)."_s, u"REASON"_s);
     const QCommandLineOption fault(u"fault"_s,
-                                   u"A one-shot fault: drop-ok, no-answer, garble, close, fail-probe or delay:MS, "
-                                   u"optionally @PREFIX to hit the first command starting with PREFIX (repeatable)."_s,
-                                   u"KIND[@PREFIX]"_s);
+        u"A one-shot fault: drop-ok, no-answer, garble, close, fail-probe, delay:MS or break:MM, "
+        u"optionally @PREFIX to hit the first command starting with PREFIX (repeatable)."_s,
+        u"KIND[@PREFIX]"_s);
     parser.addOptions({ link, tool, broken, probeMs, moveMs, fixedReference, notHomed, halted, fault });
     parser.process(app);
 
@@ -116,10 +120,13 @@ int main(int argc, char *argv[])
         const QString kind = value.section(u'@', 0, 0);
         const QString prefix = value.contains(u'@') ? value.section(u'@', 1) : QString();
         const auto f = faultFromName(kind);
-        const auto delay = kind.startsWith(u"delay:") ? Toffee::parseInteger(kind.mid(6).toUtf8()) : qint64(0);
-        if (!f || !delay)
-            return usageError(u"--fault %1: use drop-ok, no-answer, garble, close, fail-probe or delay:MS."_s.arg(value));
-        emulator.injectFault(*f, prefix.toUtf8(), int(*delay));
+        const qsizetype colon = kind.indexOf(u':');
+        const auto amount
+            = colon < 0 ? std::optional<double>(0.0) : Toffee::parseDecimal(kind.mid(colon + 1).toUtf8());
+        if (!f || !amount)
+            return usageError(u"--fault %1: use drop-ok, no-answer, garble, close, fail-probe, delay:MS or "
+                              u"break:MM."_s.arg(value));
+        emulator.injectFault(*f, prefix.toUtf8(), *amount);
     }
 
     Toffee::PtyServer server(&emulator, parser.value(link));

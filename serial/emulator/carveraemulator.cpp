@@ -32,7 +32,7 @@ struct Words
     [[nodiscard]] bool has(char letter, QByteArrayView value) const
     {
         return std::any_of(words.cbegin(), words.cend(),
-                           [&](const auto &w) { return w.first == letter && w.second == value; });
+            [&](const auto &w) { return w.first == letter && w.second == value; });
     }
     [[nodiscard]] std::optional<QByteArray> text(char letter) const
     {
@@ -87,9 +87,9 @@ double CarveraEmulator::toolLength(int tool) const
     return m_lengths.value(tool, 40.0 + (tool % 20) * 2.5);
 }
 
-void CarveraEmulator::injectFault(Fault fault, const QByteArray &prefix, int delayMs)
+void CarveraEmulator::injectFault(Fault fault, const QByteArray &prefix, double amount)
 {
-    m_faults.append({ fault, prefix.toUpper(), delayMs });
+    m_faults.append({ fault, prefix.toUpper(), amount });
 }
 
 void CarveraEmulator::halt(int reason)
@@ -180,8 +180,11 @@ void CarveraEmulator::processNext()
             m_faults.insert(i, f); // consumed by the probing cycle itself
             break;
         case Fault::Delay:
-            later(f.delayMs, [this, line] { execute(line); });
+            later(int(f.amount), [this, line] { execute(line); });
             return;
+        case Fault::BreakTool:
+            breakTool(m_tool, f.amount);
+            break;
         }
         break;
     }
@@ -229,8 +232,8 @@ void CarveraEmulator::finish()
 
 bool CarveraEmulator::allowedWhileHalted(const QByteArray &upper) const
 {
-    static const QList<QByteArray> allowed = { "M2",   "M5",   "M9",   "M30",  "M80",  "M81",  "M105",
-                                               "M106", "M107", "M114", "M115", "M119", "M503", "M911" };
+    static const QList<QByteArray> allowed = { "M2", "M5", "M9", "M30", "M80", "M81", "M105", "M106", "M107",
+        "M114", "M115", "M119", "M503", "M911" };
     const QByteArray first = upper.simplified().split(' ').front();
     return first.isEmpty() || first == "$X" || first == "M999" || allowed.contains(first);
 }
@@ -350,7 +353,8 @@ void CarveraEmulator::execute(const QByteArray &line)
             m_absolute = true;
         if (w.has('G', "91"))
             m_absolute = false;
-        std::array<std::optional<double>, 3> axis { w.number('X', bad), w.number('Y', bad), w.number('Z', bad) };
+        std::array<std::optional<double>, 3> axis { w.number('X', bad), w.number('Y', bad),
+            w.number('Z', bad) };
         if (bad)
             return refuse({});
         if (w.has('G', "10")) {

@@ -11,9 +11,10 @@
 
 namespace Toffee {
 
-// A Carvera controller as the firmware behaves (see CARVERA.md): it keeps positions, the reference and current
-// tool MCS Z, a tool setter, the physical length of each tool (so a broken tool really measures shorter) and the
-// halt state, and answers with the firmware's own strings. Not a mock: tests and toffee-emulator drive it.
+// A Carvera controller as the firmware behaves (see CARVERA.md): it keeps positions, the reference and
+// current tool MCS Z, a tool setter, the physical length of each tool (so a broken tool really measures
+// shorter) and the halt state, and answers with the firmware's own strings. Not a mock: tests and
+// toffee-emulator drive it.
 class CarveraEmulator final : public QObject
 {
     Q_OBJECT
@@ -29,7 +30,8 @@ public:
         Garble, // the command's first reply line arrives mangled
         CloseLink, // the link drops when the command arrives
         FailProbe, // the probe does not trigger: ALARM, halt 3
-        Delay, // the command is answered `delayMs` late
+        Delay, // the command is answered `amount` milliseconds late
+        BreakTool, // the tool in the spindle loses `amount` mm as the command arrives
     };
     struct Timing
     {
@@ -37,7 +39,8 @@ public:
         int moveMs = 0; // how long any other command takes
     };
 
-    // The MCS Z at which the spindle nose itself would touch the setter; a tool of length L triggers L higher.
+    // The MCS Z at which the spindle nose itself would touch the setter; a tool of length L triggers L
+    // higher.
     static constexpr double kNoseTriggerZ = -150.0;
     static constexpr double kZTravelLimit = -145.0; // the probe gives up here
     static constexpr double kClearanceZ = -10.0;
@@ -50,7 +53,7 @@ public:
     [[nodiscard]] double toolLength(int tool) const;
     void breakTool(int tool, double millimetres) { m_lengths.insert(tool, toolLength(tool) - millimetres); }
     // A one-shot fault on the next command that starts with `prefix` (any command when empty).
-    void injectFault(Fault fault, const QByteArray &prefix = {}, int delayMs = 0);
+    void injectFault(Fault fault, const QByteArray &prefix = {}, double amount = 0);
     void setHomed(bool homed) { m_homed = homed; }
     void halt(int reason);
 
@@ -77,7 +80,7 @@ private:
     {
         Fault fault;
         QByteArray prefix;
-        int delayMs = 0;
+        double amount = 0;
     };
 
     void processNext();

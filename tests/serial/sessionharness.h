@@ -21,7 +21,8 @@ struct SessionHarness
 
     SessionHarness()
     {
-        QObject::connect(&link, &MachineLink::lineSent, &link, [this](const QByteArray &l) { sent.append(l); });
+        QObject::connect(
+            &link, &MachineLink::lineSent, &link, [this](const QByteArray &l) { sent.append(l); });
     }
 
     // Runs one operation to its end (or gives up after `ms`, which no operation should need).

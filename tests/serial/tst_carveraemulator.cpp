@@ -30,8 +30,8 @@ QList<QByteArray> command(CarveraEmulator &emulator, const QByteArray &line, int
 QByteArray status(CarveraEmulator &emulator)
 {
     QByteArray report;
-    auto c = QObject::connect(&emulator, &CarveraEmulator::lineSent, &emulator,
-                              [&](const QByteArray &l) { report = l; });
+    auto c = QObject::connect(
+        &emulator, &CarveraEmulator::lineSent, &emulator, [&](const QByteArray &l) { report = l; });
     emulator.receiveRealtime('?');
     QObject::disconnect(c);
     return report;
@@ -111,7 +111,7 @@ private Q_SLOTS:
         QVERIFY(!emulator.isHalted());
         emulator.halt(1);
         QCOMPARE(command(emulator, "M999").front(),
-                 QByteArray("WARNING: After HALT you should HOME as position is currently unknown"));
+            QByteArray("WARNING: After HALT you should HOME as position is currently unknown"));
         QVERIFY(!emulator.isHalted());
     }
 

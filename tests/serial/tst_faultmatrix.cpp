@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Every machine-session operation under every injected fault: a clear error, no change to the tool table, and a
-// link that works again after an unlock or a reconnect.
+// Every machine-session operation under every injected fault: a clear error, no change to the tool table, and
+// a link that works again after an unlock or a reconnect.
 #include <QTest>
 
 #include "sessionharness.h"
@@ -14,14 +14,27 @@ using Outcome = SessionResult::Outcome;
 
 namespace {
 
-enum Operation { Report, Probe, BreakTest, SetTlo, SetAboveZ0, SelectTool, ChangeTool, Unlock, RestoreTlo, OperationCount };
+enum Operation {
+    Report,
+    Probe,
+    BreakTest,
+    SetTlo,
+    SetAboveZ0,
+    SelectTool,
+    ChangeTool,
+    Unlock,
+    RestoreTlo,
+    OperationCount
+};
 enum Injected { DropOk, NoAnswer, Garble, CloseLink, Alarm, LateAnswer, InjectedCount };
 
-const char *const kOperationNames[] = { "report",      "probe",       "break-test", "set-tlo", "set-above-z0",
-                                        "select-tool", "change-tool", "unlock",     "restore-tlo" };
-const char *const kFaultNames[] = { "dropped ok", "no answer", "garbled reply", "link closed", "alarm", "late answer" };
+const char *const kOperationNames[] = { "report", "probe", "break-test", "set-tlo", "set-above-z0",
+    "select-tool", "change-tool", "unlock", "restore-tlo" };
+const char *const kFaultNames[]
+    = { "dropped ok", "no answer", "garbled reply", "link closed", "alarm", "late answer" };
 // The first command each operation sends, which the fault is aimed at.
-const char *const kFirstCommand[] = { "M493.4", "M491", "M491.1", "M493.3", "M493.3", "M493.2", "M6", "$X", "M493.2" };
+const char *const kFirstCommand[]
+    = { "M493.4", "M491", "M491.1", "M493.3", "M493.3", "M493.2", "M6", "$X", "M493.2" };
 
 void start(MachineSession &session, int operation, MachineSession::Done done)
 {
@@ -78,8 +91,8 @@ private Q_SLOTS:
         QVERIFY(h.run([&](auto done) { h.session.probe(done); }).ok()); // so the break test has a TLO
 
         ToolTable table = ToolTable::fromTools({ Tool { 1, 1, u"end mill"_s, 40, 0, 3, 0, -1.5, {}, {}, {} },
-                                                 Tool { 2, 2, u"drill"_s, 50, 0, 2, 0, {}, {}, {}, {} } },
-                                               Units::Millimetre)
+                                                   Tool { 2, 2, u"drill"_s, 50, 0, 2, 0, {}, {}, {}, {} } },
+            Units::Millimetre)
                               .takeValue();
         const ToolTable before = table;
 

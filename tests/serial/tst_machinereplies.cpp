@@ -22,12 +22,13 @@ private Q_SLOTS:
         QTest::newRow("ok then text") << QByteArray("ok T1") << int(ReplyKind::Other);
         QTest::newRow("error") << QByteArray("error:Alarm lock") << int(ReplyKind::Error);
         QTest::newRow("error inside a line") << QByteArray("no error:here") << int(ReplyKind::Other);
-        QTest::newRow("unsupported") << QByteArray("error:Unsupported command - M999.9") << int(ReplyKind::Error);
+        QTest::newRow("unsupported") << QByteArray("error:Unsupported command - M999.9")
+                                     << int(ReplyKind::Error);
         QTest::newRow("alarm") << QByteArray("ALARM: Probe failed to trigger within safety margin (135.00mm)")
                                << int(ReplyKind::Alarm);
         QTest::newRow("abort") << QByteArray("ALARM: Abort during cycle") << int(ReplyKind::Alarm);
-        QTest::newRow("halting error") << QByteArray("ERROR: Tool Break Check - check tool for breakage")
-                                       << int(ReplyKind::HaltError);
+        QTest::newRow("halting error")
+            << QByteArray("ERROR: Tool Break Check - check tool for breakage") << int(ReplyKind::HaltError);
         QTest::newRow("status") << QByteArray("<Idle|MPos:0,0,0,0,0>") << int(ReplyKind::Status);
         QTest::newRow("echo") << QByteArray("G38.6 Z-145.000 F500") << int(ReplyKind::Other);
         QTest::newRow("garbage") << QByteArray("\xbf\xbf\x01") << int(ReplyKind::Other);
@@ -56,29 +57,30 @@ private Q_SLOTS:
         QTest::addColumn<int>("tool");
         QTest::addColumn<double>("tlo");
         QTest::addColumn<int>("halt");
-        QTest::newRow("firmware example")
-            << QByteArray("<Idle|MPos:0.0000,0.0000,-2.0000,0.0000,0.0000|WPos:0.0000,0.0000,57.0000,0.0000,0.0000|"
-                          "R:0.0000|G:0|F:0.0,3000.0,100.0|S:0.0,0.0,100.0,0,23.5,24.1|T:2,-33.388,-1,0|W:0.00|"
-                          "C:1,0,0,1>")
-            << true << u"Idle"_s << -2.0 << 57.0 << 2 << -33.388 << 0;
-        QTest::newRow("halted") << QByteArray("<Alarm|MPos:0,0,-145,0,0|WPos:0,0,0,0,0|T:1,0.000,-1,0|H:3>") << true
-                                << u"Alarm"_s << -145.0 << 0.0 << 1 << 0.0 << 3;
+        QTest::newRow("firmware example") << QByteArray(
+            "<Idle|MPos:0.0000,0.0000,-2.0000,0.0000,0.0000|WPos:0.0000,0.0000,57.0000,0.0000,0.0000|"
+            "R:0.0000|G:0|F:0.0,3000.0,100.0|S:0.0,0.0,100.0,0,23.5,24.1|T:2,-33.388,-1,0|W:0.00|"
+            "C:1,0,0,1>") << true << u"Idle"_s
+                                          << -2.0 << 57.0 << 2 << -33.388 << 0;
+        QTest::newRow("halted") << QByteArray("<Alarm|MPos:0,0,-145,0,0|WPos:0,0,0,0,0|T:1,0.000,-1,0|H:3>")
+                                << true << u"Alarm"_s << -145.0 << 0.0 << 1 << 0.0 << 3;
         QTest::newRow("unknown fields skipped")
-            << QByteArray("<Run|Q:what|MPos:1,2,3,4,5|Z|NEW:1,2|WPos:1,2,3,4,5>") << true << u"Run"_s << 3.0 << 3.0
-            << -1 << 0.0 << 0;
-        QTest::newRow("three axes") << QByteArray("<Idle|MPos:1,2,3>") << true << u"Idle"_s << 3.0 << 0.0 << -1 << 0.0
-                                    << 0;
-        QTest::newRow("no MPos") << QByteArray("<Idle|WPos:1,2,3>") << false << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
-        QTest::newRow("garbled number") << QByteArray("<Idle|MPos:1,\xbf,3>") << false << QString() << 0.0 << 0.0 << -1
-                                        << 0.0 << 0;
-        QTest::newRow("garbled T") << QByteArray("<Idle|MPos:1,2,3|T:x,1>") << false << QString() << 0.0 << 0.0 << -1
-                                   << 0.0 << 0;
-        QTest::newRow("no closing bracket") << QByteArray("<Idle|MPos:1,2,3") << false << QString() << 0.0 << 0.0 << -1
-                                            << 0.0 << 0;
-        QTest::newRow("empty state") << QByteArray("<|MPos:1,2,3>") << false << QString() << 0.0 << 0.0 << -1 << 0.0
-                                     << 0;
-        QTest::newRow("too few axes") << QByteArray("<Idle|MPos:1,2>") << false << QString() << 0.0 << 0.0 << -1 << 0.0
-                                      << 0;
+            << QByteArray("<Run|Q:what|MPos:1,2,3,4,5|Z|NEW:1,2|WPos:1,2,3,4,5>") << true << u"Run"_s << 3.0
+            << 3.0 << -1 << 0.0 << 0;
+        QTest::newRow("three axes") << QByteArray("<Idle|MPos:1,2,3>") << true << u"Idle"_s << 3.0 << 0.0
+                                    << -1 << 0.0 << 0;
+        QTest::newRow("no MPos") << QByteArray("<Idle|WPos:1,2,3>") << false << QString() << 0.0 << 0.0 << -1
+                                 << 0.0 << 0;
+        QTest::newRow("garbled number")
+            << QByteArray("<Idle|MPos:1,\xbf,3>") << false << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
+        QTest::newRow("garbled T") << QByteArray("<Idle|MPos:1,2,3|T:x,1>") << false << QString() << 0.0
+                                   << 0.0 << -1 << 0.0 << 0;
+        QTest::newRow("no closing bracket")
+            << QByteArray("<Idle|MPos:1,2,3") << false << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
+        QTest::newRow("empty state") << QByteArray("<|MPos:1,2,3>") << false << QString() << 0.0 << 0.0 << -1
+                                     << 0.0 << 0;
+        QTest::newRow("too few axes")
+            << QByteArray("<Idle|MPos:1,2>") << false << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
     }
     void parsesStatusReports()
     {
@@ -108,19 +110,22 @@ private Q_SLOTS:
         QTest::addColumn<QByteArray>("line");
         QTest::addColumn<bool>("valid");
         QTest::addColumn<double>("tlo");
-        QTest::newRow("seed") << QByteArray("current tool offset [-105.688] , reference tool offset [-72.300]") << true
-                              << -33.388;
-        QTest::newRow("zero") << QByteArray("current tool offset [0.000] , reference tool offset [0.000]") << true
-                              << 0.0;
-        QTest::newRow("CR") << QByteArray("current tool offset [1.5] , reference tool offset [0.5]\r") << true << 1.0;
-        QTest::newRow("second report line") << QByteArray("no one-off tool setter position offsets configured")
-                                            << false << 0.0;
-        QTest::newRow("garbled") << QByteArray("current tool offset [-\xbf\xbf.688] , reference tool offset [-72.300]")
+        QTest::newRow("seed") << QByteArray(
+            "current tool offset [-105.688] , reference tool offset [-72.300]")
+                              << true << -33.388;
+        QTest::newRow("zero") << QByteArray("current tool offset [0.000] , reference tool offset [0.000]")
+                              << true << 0.0;
+        QTest::newRow("CR") << QByteArray("current tool offset [1.5] , reference tool offset [0.5]\r") << true
+                            << 1.0;
+        QTest::newRow("second report line")
+            << QByteArray("no one-off tool setter position offsets configured") << false << 0.0;
+        QTest::newRow("garbled") << QByteArray(
+            "current tool offset [-\xbf\xbf.688] , reference tool offset [-72.300]")
                                  << false << 0.0;
         QTest::newRow("trailing text")
             << QByteArray("current tool offset [1] , reference tool offset [2] extra") << false << 0.0;
-        QTest::newRow("missing bracket") << QByteArray("current tool offset [1 , reference tool offset [2]") << false
-                                         << 0.0;
+        QTest::newRow("missing bracket")
+            << QByteArray("current tool offset [1 , reference tool offset [2]") << false << 0.0;
     }
     void parsesTheTloReport()
     {
@@ -142,7 +147,8 @@ private Q_SLOTS:
         QTest::newRow("ok") << QByteArray("[PRB:-88.000,-9.000,-72.300:ok]") << true << true << -72.3;
         QTest::newRow("grbl 1") << QByteArray("[PRB:-88.000,-9.000,-105.688:1]") << true << true << -105.688;
         QTest::newRow("grbl 0") << QByteArray("[PRB:0,0,0:0]") << true << false << 0.0;
-        QTest::newRow("garbled") << QByteArray("[PRB:-\xbf\xbf.000,-9.000,-72.300:1]") << false << false << 0.0;
+        QTest::newRow("garbled") << QByteArray("[PRB:-\xbf\xbf.000,-9.000,-72.300:1]") << false << false
+                                 << 0.0;
         QTest::newRow("two axes") << QByteArray("[PRB:1,2:1]") << false << false << 0.0;
         QTest::newRow("no flag") << QByteArray("[PRB:1,2,3]") << false << false << 0.0;
         QTest::newRow("odd flag") << QByteArray("[PRB:1,2,3:maybe]") << false << false << 0.0;
@@ -171,7 +177,8 @@ private Q_SLOTS:
         QTest::newRow("broken") << QByteArray("Old: -33.388 , new: -34.388") << true << -33.388 << -34.388;
         QTest::newRow("no new") << QByteArray("Old: -33.388") << false << 0.0 << 0.0;
         QTest::newRow("garbled") << QByteArray("Old: -\xbf.388 , new: -33.390") << false << 0.0 << 0.0;
-        QTest::newRow("other line") << QByteArray("No previous TLO included, aborting") << false << 0.0 << 0.0;
+        QTest::newRow("other line") << QByteArray("No previous TLO included, aborting") << false << 0.0
+                                    << 0.0;
     }
     void parsesTheBreakTest()
     {

@@ -59,7 +59,8 @@ private Q_SLOTS:
         QTest::newRow("tolerance NaN") << 0 << nan << u"not a number"_s;
         QTest::newRow("TLO NaN") << 1 << nan << u"from -999.999 to 999.999"_s;
         QTest::newRow("TLO too large") << 1 << 5000.0 << u"from -999.999 to 999.999"_s;
-        QTest::newRow("height infinite") << 2 << std::numeric_limits<double>::infinity() << u"height above Z0"_s;
+        QTest::newRow("height infinite")
+            << 2 << std::numeric_limits<double>::infinity() << u"height above Z0"_s;
         QTest::newRow("tool -2") << 3 << -2.0 << u"not a tool number"_s;
         QTest::newRow("tool too large") << 4 << 1e7 << u"not a tool number"_s;
         QTest::newRow("restore with NaN") << 5 << nan << u"tool length offset"_s;
@@ -114,7 +115,8 @@ private Q_SLOTS:
         QCOMPARE(r.outcome, Outcome::ToolBroken);
         QVERIFY(r.breakTest.has_value());
         QCOMPARE(QString::number(r.breakTest->newTlo - r.breakTest->oldTlo, 'f', 3), u"-0.300"_s);
-        QVERIFY2(r.message.contains(u"may be broken"_s) && r.message.contains(u"Unlock"_s), qPrintable(r.message));
+        QVERIFY2(
+            r.message.contains(u"may be broken"_s) && r.message.contains(u"Unlock"_s), qPrintable(r.message));
         QVERIFY(h.emulator.isHalted());
     }
 

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Running toffee-cli and toffee-emulator as a user or a script runs them.
+#pragma once
+
+#include <QFile>
+#include <QProcess>
+#include <QTest>
+
+namespace Toffee::Test {
+
+struct Run
+{
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+inline Run cli(const QStringList &arguments, int timeoutMs = 60000)
+{
+    QProcess process;
+    process.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"), arguments);
+    Run run;
+    if (!process.waitForFinished(timeoutMs)) {
+        process.kill();
+        process.waitForFinished();
+        run.err = "TEST: toffee-cli did not finish";
+        return run;
+    }
+    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
+}
+
+// toffee-emulator serving on a pseudo-terminal, with a link at `link`; stopped when destroyed.
+class Emulator
+{
+public:
+    Emulator(const QString &link, QStringList arguments)
+    {
+        arguments << QStringLiteral("--link") << link;
+        if (!arguments.contains(QStringLiteral("--probe-ms")))
+            arguments << QStringLiteral("--probe-ms") << QStringLiteral("0");
+        m_process.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-emulator"), arguments);
+        if (m_process.waitForReadyRead(10000))
+            m_device = QString::fromUtf8(m_process.readLine()).trimmed();
+    }
+    ~Emulator()
+    {
+        m_process.terminate();
+        if (!m_process.waitForFinished(3000))
+            m_process.kill();
+    }
+    [[nodiscard]] bool started() const { return m_device.startsWith(QStringLiteral("/dev/")); }
+    [[nodiscard]] QString device() const { return m_device; }
+    QProcess &process() { return m_process; }
+
+private:
+    QProcess m_process;
+    QString m_device;
+};
+
+inline QByteArray readFile(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+} // namespace Toffee::Test

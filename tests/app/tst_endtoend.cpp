@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// toffee-cli, through a real QSerialPort, against toffee-emulator on a pseudo-terminal.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "processes.h"
+
+using namespace Qt::StringLiterals;
+using Toffee::Test::cli;
+using Toffee::Test::Emulator;
+using Toffee::Test::readFile;
+using Toffee::Test::Run;
+
+namespace {
+
+QJsonObject json(const Run &run)
+{
+    return QJsonDocument::fromJson(run.out).object();
+}
+
+QString fixed3(const QJsonValue &v)
+{
+    return QString::number(v.toDouble(), 'f', 3);
+}
+
+} // namespace
+
+class TestEndToEnd : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    QString tty() const { return m_dir.filePath(u"ttyCARVERA"_s); }
+    Run machine(const QStringList &arguments)
+    {
+        return cli(QStringList { u"--json"_s, u"--port"_s, tty() } + arguments);
+    }
+
+private Q_SLOTS:
+    void followsTheSeedsWorkedExampleOverAPty()
+    {
+        Emulator emulator(tty(), {});
+        QVERIFY(emulator.started());
+        const QString table = m_dir.filePath(u"tools.json"_s);
+        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table));
+
+        Run run = machine({ u"probe"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(
+            fixed3(json(run).value(u"reference_mz"_s)), u"-72.300"_s); // the first tool becomes the reference
+        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"0.000"_s);
+
+        run = machine({ u"select-tool"_s, u"2"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(json(run).value(u"tool"_s).toInt(), 2);
+
+        run = machine({ u"--table"_s, table, u"probe"_s });
+        QCOMPARE(run.exitCode, 0);
+        QJsonObject o = json(run);
+        QCOMPARE(o.value(u"tool"_s).toInt(), 2);
+        QCOMPARE(fixed3(o.value(u"current_mz"_s)), u"-105.688"_s);
+        QCOMPARE(fixed3(o.value(u"reference_mz"_s)), u"-72.300"_s);
+        QCOMPARE(fixed3(o.value(u"tlo"_s)), u"-33.388"_s);
+        const Run shown = cli({ u"--json"_s, u"show"_s, table });
+        const QJsonObject t2
+            = QJsonDocument::fromJson(shown.out).object()[u"tools"_s].toArray().at(1).toObject();
+        QCOMPARE(fixed3(t2.value(u"measured_tlo"_s)), u"-33.388"_s); // recorded, with its time
+        QVERIFY(QDateTime::fromString(t2.value(u"measured_at"_s).toString(), Qt::ISODateWithMs)
+                    .secsTo(QDateTime::currentDateTimeUtc())
+            < 60);
+
+        run = machine({ u"break-test"_s, u"--tolerance"_s, u"0.05"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(json(run).value(u"broken"_s).toBool(), false);
+
+        // "Adding 2.9mm length to the current tool": -33.388 + 2.9 = -30.488
+        run = machine({ u"set-tlo"_s, u"--z"_s, u"-30.488"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"-30.488"_s);
+        run = machine({ u"report"_s });
+        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"-30.488"_s);
+        QCOMPARE(fixed3(json(run).value(u"current_mz"_s)), u"-102.788"_s);
+
+        run = machine({ u"status"_s });
+        QCOMPARE(run.exitCode, 0);
+        o = json(run);
+        QCOMPARE(o.value(u"state"_s).toString(), u"Idle"_s);
+        QCOMPARE(o.value(u"tool"_s).toInt(), 2);
+        QCOMPARE(fixed3(o.value(u"tlo"_s)), u"-30.488"_s);
+        QVERIFY(o.value(u"halt_reason"_s).isNull());
+        QCOMPARE(o.value(u"mpos"_s).toArray().size(), 3);
+    }
+
+    void findsABrokenToolAndUnlocks()
+    {
+        Emulator emulator(tty(), { u"--fault"_s, u"break:0.5@M491.1"_s });
+        QVERIFY(emulator.started());
+        QCOMPARE(machine({ u"probe"_s }).exitCode, 0);
+        Run run = machine({ u"break-test"_s });
+        QCOMPARE(run.exitCode, 3);
+        const QJsonObject o = json(run);
+        QCOMPARE(o.value(u"broken"_s).toBool(), true);
+        QCOMPARE(fixed3(o.value(u"difference"_s)), u"0.500"_s);
+        QCOMPARE(o.value(u"tolerance"_s).toDouble(), 0.1);
+        QVERIFY(run.err.contains("may be broken"));
+        run = machine({ u"status"_s });
+        QCOMPARE(json(run).value(u"state"_s).toString(), u"Alarm"_s);
+        QCOMPARE(json(run).value(u"halt_reason"_s).toInt(), 4);
+        QCOMPARE(machine({ u"probe"_s }).exitCode, 4); // Alarm lock
+        run = machine({ u"unlock"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(json(run).value(u"state"_s).toString(), u"Idle"_s);
+    }
+
+    void reachesAHaltedMachine()
+    {
+        Emulator emulator(tty(), { u"--halted"_s, u"3"_s });
+        QVERIFY(emulator.started());
+        Run run = machine({ u"status"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(json(run).value(u"halt_reason"_s).toInt(), 3);
+        run = machine({ u"report"_s });
+        QCOMPARE(run.exitCode, 4);
+        QVERIFY(json(run).value(u"error"_s).toString().contains(u"Alarm lock"_s));
+        QCOMPARE(machine({ u"unlock"_s }).exitCode, 0);
+        QCOMPARE(machine({ u"report"_s }).exitCode, 0);
+    }
+
+    void refusesATooSmallToleranceWithoutTouchingTheMachine()
+    {
+        const Run run
+            = cli({ u"--port"_s, u"/dev/nonexistent-port"_s, u"break-test"_s, u"--tolerance"_s, u"0.01"_s });
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.err.contains("too small"));
+    }
+
+    void reportsFaultsAndWorksAgain_data()
+    {
+        QTest::addColumn<QString>("fault");
+        QTest::addColumn<QStringList>("command");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("dropped ok") << u"drop-ok@M493.4"_s << QStringList { u"report"_s } << 5
+                                    << u"did not answer"_s;
+        QTest::newRow("no answer") << u"no-answer@M493.3"_s << QStringList { u"set-tlo"_s, u"--z"_s, u"-1"_s }
+                                   << 5 << u"did not answer"_s;
+        QTest::newRow("garbled reply")
+            << u"garble@M493.4"_s << QStringList { u"report"_s } << 4 << u"could not be read"_s;
+        QTest::newRow("link closed") << u"close@M493.2"_s << QStringList { u"select-tool"_s, u"3"_s } << 5
+                                     << u"lost"_s;
+        QTest::newRow("probe fails") << u"fail-probe@M491"_s << QStringList { u"probe"_s } << 4
+                                     << u"Probe failed to trigger"_s;
+    }
+    void reportsFaultsAndWorksAgain()
+    {
+        QFETCH(QString, fault);
+        QFETCH(QStringList, command);
+        QFETCH(int, exitCode);
+        QFETCH(QString, message);
+        Emulator emulator(tty(), { u"--fault"_s, fault });
+        QVERIFY(emulator.started());
+        const QString table = m_dir.filePath(u"fault.json"_s);
+        QFile::remove(table);
+        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table));
+        const QByteArray before = readFile(table);
+
+        const Run run = machine(QStringList { u"--timeout"_s, u"1"_s, u"--table"_s, table } + command);
+        QCOMPARE(run.exitCode, exitCode);
+        const QString error = json(run).value(u"error"_s).toString();
+        QVERIFY2(error.contains(message), qPrintable(error));
+        QCOMPARE(readFile(table), before);
+
+        // A new connection (through the same link, even when the emulator had to open a new terminal) works.
+        if (exitCode == 4)
+            QCOMPARE(machine({ u"unlock"_s }).exitCode, 0);
+        const Run again = machine({ u"report"_s });
+        QVERIFY2(again.exitCode == 0, again.err.constData());
+    }
+
+    void aPortThatVanishesMidProbeIsALinkFailure()
+    {
+        auto emulator = std::make_unique<Emulator>(tty(), QStringList { u"--probe-ms"_s, u"5000"_s });
+        QVERIFY(emulator->started());
+        const QString table = m_dir.filePath(u"vanish.json"_s);
+        QFile::remove(table);
+        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table));
+        const QByteArray before = readFile(table);
+        QProcess probe;
+        probe.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"),
+            { u"--json"_s, u"--port"_s, tty(), u"--table"_s, table, u"probe"_s });
+        QVERIFY(probe.waitForStarted());
+        QTest::qWait(1000); // connected and probing
+        emulator.reset(); // the machine goes away
+        QVERIFY(probe.waitForFinished(20000));
+        QCOMPARE(probe.exitCode(), 5);
+        const QString error
+            = QJsonDocument::fromJson(probe.readAllStandardOutput()).object()[u"error"_s].toString();
+        QVERIFY2(error.contains(u"lost"_s) || error.contains(u"did not answer"_s), qPrintable(error));
+        QCOMPARE(readFile(table), before);
+    }
+
+    void saysWhenThePortCannotBeOpened()
+    {
+        const Run run = cli({ u"--port"_s, u"/dev/nonexistent-port"_s, u"status"_s });
+        QCOMPARE(run.exitCode, 5);
+        QVERIFY2(run.err.contains("Cannot open /dev/nonexistent-port"), run.err.constData());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestEndToEnd)
+#include "tst_endtoend.moc"
