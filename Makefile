@@ -51,6 +51,12 @@ test: build
 
 bench: build
 	$(BUILD_DIR)/bin/toffee-bench-table
+	$(BUILD_DIR)/bin/toffee-cli --emulator link-test --count 10000
+	@link=$$(mktemp -u /tmp/toffee-bench-tty.XXXXXX); \
+	$(BUILD_DIR)/bin/toffee-emulator --link $$link > /dev/null & pid=$$!; \
+	for i in 1 2 3 4 5 6 7 8 9 10; do [ -e $$link ] && break; sleep 0.2; done; \
+	$(BUILD_DIR)/bin/toffee-cli --port $$link link-test --count 10000; status=$$?; \
+	kill $$pid; exit $$status
 
 format:
 	git ls-files '*.cpp' '*.h' | xargs clang-format -i
