@@ -92,12 +92,15 @@ void SerialPortTransport::handleError(QSerialPort::SerialPortError error)
     // Errors while opening are reported by open() itself.
     if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError || !m_port.isOpen())
         return;
+    // Any other error means the port can no longer be trusted: a hung-up device makes QSerialPort repeat its
+    // error endlessly. Say it once and close, so that pending commands fail at once.
     const QString message = error == QSerialPort::ResourceError
         ? tr("The port %1 went away (unplugged, or the machine was switched off).").arg(m_name)
-        : tr("%1: %2").arg(m_name, m_port.errorString());
+        : tr("The port %1 failed (%2); the link was closed. Check the cable and connect again.")
+              .arg(m_name, m_port.errorString());
+    m_port.clearError();
     Q_EMIT errorOccurred(message);
-    if (error == QSerialPort::ResourceError || error == QSerialPort::PermissionError)
-        close();
+    close();
 }
 
 } // namespace Toffee

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// SerialPortTransport on a real pseudo-terminal that the test writes to byte by byte.
+#include <cstdlib>
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include "serialporttransport.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+struct Pty
+{
+    int master = -1;
+    QString slave;
+
+    Pty()
+    {
+        master = posix_openpt(O_RDWR | O_NOCTTY);
+        if (master >= 0 && grantpt(master) == 0 && unlockpt(master) == 0) {
+            slave = QString::fromLocal8Bit(ptsname(master));
+            ::fcntl(master, F_SETFL, ::fcntl(master, F_GETFL) | O_NONBLOCK);
+        }
+    }
+    ~Pty() { close(); }
+    void write(const QByteArray &bytes) const
+    {
+        QVERIFY(::write(master, bytes.constData(), size_t(bytes.size())) == bytes.size());
+    }
+    QByteArray read() const
+    {
+        QByteArray out(4096, '\0');
+        const ssize_t n = ::read(master, out.data(), size_t(out.size()));
+        out.resize(n > 0 ? n : 0);
+        return out;
+    }
+    void close()
+    {
+        if (master >= 0)
+            ::close(master);
+        master = -1;
+    }
+};
+
+} // namespace
+
+class TestSerialPortTransport : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void buffersPartialLinesAndSplitsOnCrOrLf()
+    {
+        Pty pty;
+        QVERIFY(!pty.slave.isEmpty());
+        SerialPortTransport transport(pty.slave);
+        QSignalSpy opened(&transport, &LineTransport::opened);
+        QSignalSpy lines(&transport, &LineTransport::lineReceived);
+        transport.open();
+        QTRY_COMPARE(opened.size(), 1);
+        QCOMPARE(transport.description(), pty.slave + u" at 115200 baud"_s);
+
+        pty.write("o");
+        QTest::qWait(50);
+        QCOMPARE(lines.size(), 0); // half a line is not a line
+        pty.write("k\r\n<Idle|MPos:0,0,0>\rcurrent tool offset [1] , ref");
+        QTRY_COMPARE(lines.size(), 2);
+        QCOMPARE(lines.at(0).front().toByteArray(), QByteArray("ok"));
+        QCOMPARE(lines.at(1).front().toByteArray(), QByteArray("<Idle|MPos:0,0,0>"));
+        pty.write("erence tool offset [0]\n");
+        QTRY_COMPARE(lines.size(), 3);
+        QCOMPARE(lines.at(2).front().toByteArray(),
+            QByteArray("current tool offset [1] , reference tool offset [0]"));
+    }
+
+    void writesLinesAndRealtimeCharacters()
+    {
+        Pty pty;
+        SerialPortTransport transport(pty.slave);
+        QSignalSpy opened(&transport, &LineTransport::opened);
+        transport.open();
+        QTRY_COMPARE(opened.size(), 1);
+        transport.writeLine("M493.4");
+        transport.writeRealtime('?');
+        QByteArray received;
+        QTRY_VERIFY((received += pty.read()).size() >= 8);
+        QCOMPARE(received, QByteArray("M493.4\n?"));
+    }
+
+    void dropsAnOverlongLineOnce()
+    {
+        Pty pty;
+        SerialPortTransport transport(pty.slave);
+        QSignalSpy opened(&transport, &LineTransport::opened);
+        QSignalSpy lines(&transport, &LineTransport::lineReceived);
+        QSignalSpy errors(&transport, &LineTransport::errorOccurred);
+        transport.open();
+        QTRY_COMPARE(opened.size(), 1);
+        for (int i = 0; i < 3; ++i) {
+            pty.write(QByteArray(3000, 'x'));
+            QTest::qWait(20);
+        }
+        pty.write("\nok\n");
+        QTRY_COMPARE(lines.size(), 1);
+        QCOMPARE(lines.front().front().toByteArray(), QByteArray("ok")); // the garbage never became a line
+        QCOMPARE(errors.size(), 1);
+        QVERIFY(errors.front().front().toString().contains(u"longer than 4096 bytes"_s));
+    }
+
+    void reportsAPortThatGoesAway()
+    {
+        Pty pty;
+        SerialPortTransport transport(pty.slave);
+        QSignalSpy opened(&transport, &LineTransport::opened);
+        QSignalSpy errors(&transport, &LineTransport::errorOccurred);
+        QSignalSpy closed(&transport, &LineTransport::closed);
+        transport.open();
+        QTRY_COMPARE(opened.size(), 1);
+        pty.close(); // the machine is switched off
+        QTRY_COMPARE_WITH_TIMEOUT(closed.size(), 1, 5000);
+        QVERIFY(!transport.isOpen());
+        QCOMPARE(errors.size(), 1); // once, not a flood
+        QVERIFY2(errors.last().front().toString().contains(pty.slave),
+            qPrintable(errors.last().front().toString()));
+    }
+
+    void saysWhyAPortCannotOpen()
+    {
+        SerialPortTransport transport(u"/dev/no-such-port"_s);
+        QSignalSpy errors(&transport, &LineTransport::errorOccurred);
+        transport.open();
+        QVERIFY(!transport.isOpen());
+        QCOMPARE(errors.size(), 0); // queued, like every signal of a transport
+        QTRY_COMPARE(errors.size(), 1);
+        QVERIFY(errors.front().front().toString().startsWith(u"Cannot open /dev/no-such-port"_s));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSerialPortTransport)
+#include "tst_serialporttransport.moc"
