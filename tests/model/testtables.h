@@ -3,10 +3,30 @@
 #pragma once
 
 #include <QRandomGenerator>
+#include <QTest>
 
 #include "tooltable.h"
 
 namespace Toffee::Test {
+
+// A plain tool for tests that care about the number and the length.
+inline Tool tool(int number, double length = 10.0, const QString &description = {})
+{
+    Tool t;
+    t.number = number;
+    t.pocket = 1;
+    t.lengthGeometry = length;
+    t.description = description;
+    return t;
+}
+
+// A reader's refusal: it failed, on `line`, with a message that contains `message`.
+inline void verifyRefused(const Result<ToolTable> &read, int line, const QString &message)
+{
+    QVERIFY(!read.ok());
+    QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
+    QCOMPARE(read.error().line, line);
+}
 
 // Every awkward value a file must carry: quotes, commas, semicolons, non-ASCII text, multi-line notes,
 // negative numbers, the limits, a measured TLO with milliseconds, LinuxCNC extras.

@@ -117,10 +117,7 @@ private Q_SLOTS:
         QFETCH(QByteArray, data);
         QFETCH(int, line);
         QFETCH(QString, message);
-        const auto read = readCsvTable(data);
-        QVERIFY(!read.ok());
-        QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
-        QCOMPARE(read.error().line, line);
+        Test::verifyRefused(readCsvTable(data), line, message);
     }
 };
 

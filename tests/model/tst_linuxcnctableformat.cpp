@@ -136,10 +136,7 @@ private Q_SLOTS:
         QFETCH(QByteArray, data);
         QFETCH(int, line);
         QFETCH(QString, message);
-        const auto read = readLinuxCncTable(data, Units::Millimetre);
-        QVERIFY(!read.ok());
-        QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
-        QCOMPARE(read.error().line, line);
+        Test::verifyRefused(readLinuxCncTable(data, Units::Millimetre), line, message);
     }
 };
 

@@ -8,20 +8,8 @@
 #include "tooldocument.h"
 
 using namespace Toffee;
+using Toffee::Test::tool;
 using namespace Qt::StringLiterals;
-
-namespace {
-
-Tool tool(int number, double length = 10.0)
-{
-    Tool t;
-    t.number = number;
-    t.pocket = 1;
-    t.lengthGeometry = length;
-    return t;
-}
-
-} // namespace
 
 class TestToolDocument : public QObject
 {

@@ -1,23 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
+#include "testtables.h"
+
 #include "tooltable.h"
 
 using namespace Toffee;
+using Toffee::Test::tool;
 using namespace Qt::StringLiterals;
-
-namespace {
-
-Tool tool(int number, double length = 10.0)
-{
-    Tool t;
-    t.number = number;
-    t.pocket = 1;
-    t.lengthGeometry = length;
-    return t;
-}
-
-} // namespace
 
 class TestToolTable : public QObject
 {

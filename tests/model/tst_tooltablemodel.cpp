@@ -4,22 +4,15 @@
 #include <QSortFilterProxyModel>
 #include <QTest>
 
+#include "testtables.h"
+
 #include "tooltablemodel.h"
 
 using namespace Toffee;
+using Toffee::Test::tool;
 using namespace Qt::StringLiterals;
 
 namespace {
-
-Tool tool(int number, double length, const QString &description = {})
-{
-    Tool t;
-    t.number = number;
-    t.pocket = 1;
-    t.lengthGeometry = length;
-    t.description = description;
-    return t;
-}
 
 ToolTable threeTools()
 {
