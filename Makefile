@@ -40,10 +40,10 @@ build: configure
 # With no display (a server, a container) the window opens on a virtual X display instead of failing.
 run: build
 	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then \
-		$(BUILD_DIR)/bin/toffee resources/examples/example.json; \
+		$(BUILD_DIR)/bin/toffee --emulator resources/examples/example.json; \
 	else \
 		echo "toffee: no display found; opening the window on a virtual X display (xvfb-run). Ctrl-C quits."; \
-		xvfb-run -a $(BUILD_DIR)/bin/toffee resources/examples/example.json; \
+		xvfb-run -a $(BUILD_DIR)/bin/toffee --emulator resources/examples/example.json; \
 	fi
 
 test: build

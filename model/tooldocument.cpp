@@ -114,6 +114,22 @@ void ToolDocument::removeTools(const QList<int> &numbers)
         m_undoStack.push(new RemoveToolsCommand(&m_model, tools));
 }
 
+Result<void> ToolDocument::recordMeasurement(int number, double tlo, const QDateTime &at)
+{
+    ToolTable next = table();
+    if (auto r = next.recordMeasurement(number, tlo, at); !r)
+        return r;
+    const Tool &measured = *next.find(number);
+    if (const Tool *existing = table().find(number)) {
+        auto *command = new EditToolCommand(&m_model, *existing, measured);
+        command->setText(tr("Measure T%1").arg(number));
+        m_undoStack.push(command);
+    } else {
+        m_undoStack.push(new AddToolCommand(&m_model, measured));
+    }
+    return {};
+}
+
 Tool ToolDocument::newTool() const
 {
     Tool tool;

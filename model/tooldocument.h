@@ -41,6 +41,8 @@ public:
     Result<void> addTool(const Tool &tool);
     Result<void> editTool(int number, const Tool &after);
     void removeTools(const QList<int> &numbers);
+    // A TLO measured on the machine, as one undoable step; the tool is added when the table has none.
+    Result<void> recordMeasurement(int number, double tlo, const QDateTime &at);
     // A new tool with the next free number and its default pocket.
     [[nodiscard]] Tool newTool() const;
 

@@ -13,6 +13,9 @@ const auto Geometry = u"window/geometry"_s;
 const auto State = u"window/state"_s;
 const auto LastDirectory = u"files/lastDirectory"_s;
 const auto RecentFiles = u"files/recent"_s;
+const auto ConnectionPort = u"machine/port"_s;
+const auto ConnectionBaud = u"machine/baud"_s;
+const auto Tolerance = u"machine/breakTestTolerance"_s;
 } // namespace Key
 } // namespace
 
@@ -59,6 +62,36 @@ void AppSettings::addRecentFile(const QString &path)
     while (files.size() > kMaxRecentFiles)
         files.removeLast();
     m_settings.setValue(Key::RecentFiles, files);
+}
+
+QString AppSettings::connectionPort() const
+{
+    return m_settings.value(Key::ConnectionPort, u"emulator"_s).toString();
+}
+
+void AppSettings::setConnectionPort(const QString &port)
+{
+    m_settings.setValue(Key::ConnectionPort, port);
+}
+
+int AppSettings::connectionBaud() const
+{
+    return m_settings.value(Key::ConnectionBaud, 115200).toInt();
+}
+
+void AppSettings::setConnectionBaud(int baud)
+{
+    m_settings.setValue(Key::ConnectionBaud, baud);
+}
+
+double AppSettings::breakTestTolerance() const
+{
+    return m_settings.value(Key::Tolerance, 0.1).toDouble();
+}
+
+void AppSettings::setBreakTestTolerance(double millimetres)
+{
+    m_settings.setValue(Key::Tolerance, millimetres);
 }
 
 } // namespace Toffee

@@ -22,6 +22,14 @@ public:
     // Puts `path` first, keeps at most kMaxRecentFiles.
     void addRecentFile(const QString &path);
 
+    // "emulator", or a serial port's path.
+    [[nodiscard]] QString connectionPort() const;
+    void setConnectionPort(const QString &port);
+    [[nodiscard]] int connectionBaud() const;
+    void setConnectionBaud(int baud);
+    [[nodiscard]] double breakTestTolerance() const;
+    void setBreakTestTolerance(double millimetres);
+
     static constexpr int kMaxRecentFiles = 8;
 
 private:

@@ -16,6 +16,13 @@
 #include <QUndoStack>
 
 #include "appsettings.h"
+#include "breaktestpanel.h"
+#include "connectionpanel.h"
+#include "consoledock.h"
+#include "machineconnection.h"
+#include "machinedock.h"
+#include "probepanel.h"
+#include "tlopanel.h"
 #include "tooldocument.h"
 #include "tooltablepanel.h"
 
@@ -37,10 +44,32 @@ MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
     , m_document(new ToolDocument(this))
     , m_tablePanel(new ToolTablePanel(m_document->model(), this))
+    , m_connection(new MachineConnection(this))
+    , m_machineDock(new MachineDock(m_connection, m_document, this))
+    , m_consoleDock(new ConsoleDock(m_connection, this))
 {
     setObjectName(u"mainWindow"_s);
     setCentralWidget(m_tablePanel);
+    addDockWidget(Qt::RightDockWidgetArea, m_machineDock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
     createActions();
+    createMachineActions();
+
+    m_machineLabel = new QLabel(this);
+    m_machineLabel->setObjectName(u"machineStatusLabel"_s);
+    statusBar()->addPermanentWidget(m_machineLabel);
+    connect(m_connection, &MachineConnection::stateChanged, this, &MainWindow::updateMachineStatus);
+    connect(m_connection, &MachineConnection::statusChanged, this, &MainWindow::updateMachineStatus);
+    connect(m_connection, &MachineConnection::busyChanged, this, &MainWindow::updateMachineStatus);
+    connect(m_connection, &MachineConnection::connectFailed, this,
+            [this](const QString &message) { showError(tr("Cannot connect to the machine"), message); });
+    connect(m_connection, &MachineConnection::disconnected, this,
+            [this](const QString &reason) { statusBar()->showMessage(tr("Disconnected: %1").arg(reason), 10000); });
+    connect(m_tablePanel->view()->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
+        const QList<int> selected = m_tablePanel->selectedToolNumbers();
+        m_machineDock->probePanel()->setSelectedTool(selected.size() == 1 ? selected.front() : -1);
+    });
+    updateMachineStatus();
 
     m_countLabel = new QLabel(this);
     m_countLabel->setObjectName(u"toolCountLabel"_s);
@@ -121,6 +150,60 @@ void MainWindow::createActions()
         m_tablePanel->filterEdit()->selectAll();
     });
     updateRecentFiles();
+}
+
+void MainWindow::createMachineActions()
+{
+    QMenu *machine = menuBar()->addMenu(tr("&Machine"));
+    auto add = [this, machine](const QString &name, const QString &text, QKeySequence shortcut, auto slot) {
+        auto *action = new QAction(text, this);
+        action->setObjectName(name);
+        action->setShortcut(shortcut);
+        connect(action, &QAction::triggered, this, slot);
+        machine->addAction(action);
+        return action;
+    };
+    add(u"actionConnect"_s, tr("&Connect / Disconnect"), QKeySequence(Qt::CTRL | Qt::Key_K),
+        [this] { m_machineDock->connectionPanel()->toggleConnection(); });
+    machine->addSeparator();
+    add(u"actionProbe"_s, tr("&Probe Current Tool…"), QKeySequence(Qt::CTRL | Qt::Key_P),
+        [this] { m_machineDock->probePanel()->probe(); });
+    add(u"actionBreakTest"_s, tr("&Break Test…"), QKeySequence(Qt::CTRL | Qt::Key_B),
+        [this] { m_machineDock->breakTestPanel()->run(); });
+    add(u"actionUnlock"_s, tr("&Unlock"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+        [this] { m_machineDock->tloPanel()->unlock(); });
+    add(u"actionStop"_s, tr("&Stop the Machine"), QKeySequence(Qt::CTRL | Qt::Key_Period),
+        [this] { m_machineDock->probePanel()->cancel(); });
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    QAction *machineView = m_machineDock->toggleViewAction();
+    machineView->setObjectName(u"actionShowMachine"_s);
+    machineView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_1));
+    view->addAction(machineView);
+    QAction *consoleView = m_consoleDock->toggleViewAction();
+    consoleView->setObjectName(u"actionShowConsole"_s);
+    consoleView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_2));
+    view->addAction(consoleView);
+}
+
+void MainWindow::updateMachineStatus()
+{
+    QString text;
+    switch (m_connection->state()) {
+    case MachineConnection::State::Disconnected:
+        text = tr("Not connected");
+        break;
+    case MachineConnection::State::Connecting:
+        text = tr("Connecting to %1…").arg(m_connection->description());
+        break;
+    case MachineConnection::State::Connected: {
+        const auto status = m_connection->link() ? m_connection->link()->lastStatus() : std::nullopt;
+        text = m_connection->description() + u" — "_s + (status ? status->state : tr("connected"));
+        if (m_connection->isBusy())
+            text += u" — "_s + m_connection->operation();
+        break;
+    }
+    }
+    m_machineLabel->setText(text);
 }
 
 void MainWindow::updateTitle()
@@ -305,8 +388,11 @@ void MainWindow::readSettings()
 {
     AppSettings settings;
     if (!restoreGeometry(settings.windowGeometry()))
-        resize(1100, 640);
-    restoreState(settings.windowState());
+        resize(1360, 800);
+    if (!restoreState(settings.windowState())) {
+        resizeDocks({ m_consoleDock }, { 150 }, Qt::Vertical);
+        resizeDocks({ m_machineDock }, { 430 }, Qt::Horizontal);
+    }
 }
 
 void MainWindow::writeSettings()

@@ -9,6 +9,9 @@ class QMenu;
 
 namespace Toffee {
 
+class ConsoleDock;
+class MachineConnection;
+class MachineDock;
 class ToolDocument;
 class ToolTablePanel;
 
@@ -24,6 +27,9 @@ public:
 
     [[nodiscard]] ToolDocument *document() const { return m_document; }
     [[nodiscard]] ToolTablePanel *toolTablePanel() const { return m_tablePanel; }
+    [[nodiscard]] MachineConnection *connection() const { return m_connection; }
+    [[nodiscard]] MachineDock *machineDock() const { return m_machineDock; }
+    [[nodiscard]] ConsoleDock *consoleDock() const { return m_consoleDock; }
     // Opens a table, reporting a failure in a message box; the current table stays if it fails.
     bool openFile(const QString &path);
 
@@ -32,6 +38,8 @@ protected:
 
 private:
     void createActions();
+    void createMachineActions();
+    void updateMachineStatus();
     void newTable();
     void open();
     bool save();
@@ -50,6 +58,10 @@ private:
 
     ToolDocument *m_document;
     ToolTablePanel *m_tablePanel;
+    MachineConnection *m_connection;
+    MachineDock *m_machineDock;
+    ConsoleDock *m_consoleDock;
+    QLabel *m_machineLabel = nullptr;
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;

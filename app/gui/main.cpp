@@ -1,13 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <cstdio>
+
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QElapsedTimer>
+#include <QStandardPaths>
 
+#include "connectionpanel.h"
+#include "machineconnection.h"
+#include "machinedock.h"
 #include "mainwindow.h"
+#include "selftest.h"
 
 using namespace Qt::StringLiterals;
 
 int main(int argc, char *argv[])
 {
+    QElapsedTimer sinceLaunch;
+    sinceLaunch.start();
     QApplication app(argc, argv);
     QApplication::setOrganizationName(u"Toffee"_s);
     QApplication::setApplicationName(u"Toffee"_s);
@@ -19,13 +29,38 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QApplication::translate("main", "Toffee, the tool offset manager."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(
-        u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
+    const QCommandLineOption emulator(u"emulator"_s, QApplication::translate("main", "Connect to the built-in emulator."));
+    const QCommandLineOption port(u"port"_s, QApplication::translate("main", "Connect to the machine on PORT."),
+                                  u"PORT"_s);
+    const QCommandLineOption baud(u"baud"_s, QApplication::translate("main", "Baud rate (default 115200)."), u"N"_s,
+                                  u"115200"_s);
+    const QCommandLineOption selfTest(
+        u"self-test"_s,
+        QApplication::translate("main", "Open the window, connect to the emulator, load the example table, probe, "
+                                        "render once, and exit (0 when all went well)."));
+    parser.addOptions({ emulator, port, baud, selfTest });
+    parser.addPositionalArgument(u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
     parser.process(app);
 
+    if (parser.isSet(selfTest))
+        QStandardPaths::setTestModeEnabled(true); // a smoke test leaves the user's settings alone
     Toffee::MainWindow window;
+    if (parser.isSet(selfTest)) {
+        Toffee::SelfTest test(&window, [](int code, const QString &message) {
+            std::fprintf(code == 0 ? stdout : stderr, "toffee: %s\n", qPrintable(message));
+            QApplication::exit(code);
+        });
+        test.start(sinceLaunch);
+        return QApplication::exec();
+    }
     if (!parser.positionalArguments().isEmpty())
         window.openFile(parser.positionalArguments().constFirst());
     window.show();
+    if (parser.isSet(emulator) || parser.isSet(port)) {
+        const Toffee::ConnectionTarget target { parser.isSet(emulator), parser.value(port),
+                                                parser.value(baud).toInt() };
+        window.machineDock()->connectionPanel()->setTarget(target);
+        window.connection()->connectTo(target);
+    }
     return QApplication::exec();
 }

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <memory>
+
+#include <QObject>
+
+#include "machinesession.h"
+
+namespace Toffee {
+
+class CarveraEmulator;
+class LineTransport;
+
+// Where to find the machine: a serial port at a baud rate, or the built-in emulator.
+struct ConnectionTarget
+{
+    bool emulator = true;
+    QString port;
+    int baud = 115200;
+};
+
+// The window's one machine: it builds the transport, the link and the session for a target, keeps them for
+// the connection's lifetime, and says what state the link is in. No widgets: the panels watch it.
+class MachineConnection final : public QObject
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(MachineConnection)
+
+public:
+    enum class State { Disconnected, Connecting, Connected };
+
+    explicit MachineConnection(QObject *parent = nullptr);
+    ~MachineConnection() override;
+
+    void connectTo(const ConnectionTarget &target);
+    void disconnectFromMachine();
+    [[nodiscard]] State state() const { return m_state; }
+    [[nodiscard]] QString description() const;
+    // Null while disconnected.
+    [[nodiscard]] MachineSession *session() const { return m_session.get(); }
+    [[nodiscard]] MachineLink *link() const { return m_link.get(); }
+    // The built-in emulator while connected to it, else null (for tests and the self-test).
+    [[nodiscard]] CarveraEmulator *emulator() const;
+    // The result of the last connect, with the status and offsets read then.
+    [[nodiscard]] const SessionResult &connectResult() const { return m_connectResult; }
+    // The status is stale when the last report is older than this (a link that stopped answering).
+    static constexpr int kStaleAfterMs = 1500;
+    [[nodiscard]] bool isStatusStale() const;
+
+    // One operation at a time, whichever panel starts it: begin returns false while another runs.
+    bool beginOperation(const QString &what);
+    void endOperation(const SessionResult &result);
+    [[nodiscard]] bool isBusy() const { return !m_operation.isEmpty(); }
+    [[nodiscard]] QString operation() const { return m_operation; }
+
+Q_SIGNALS:
+    void stateChanged(Toffee::MachineConnection::State state);
+    void connectFailed(const QString &message);
+    void disconnected(const QString &reason);
+    void statusChanged(const Toffee::MachineStatus &status);
+    // Every line sent (outgoing = true) and received, for the console.
+    void consoleLine(const QByteArray &line, bool outgoing);
+    void alarmRaised(const QString &message);
+    void busyChanged(bool busy, const QString &operation);
+    // Offsets learned from any operation (M493.4 and M493.3 replies).
+    void offsetsChanged(const Toffee::TloReading &offsets, int tool);
+
+private:
+    void setState(State state);
+    void teardown();
+
+    State m_state = State::Disconnected;
+    std::unique_ptr<LineTransport> m_transport;
+    std::unique_ptr<MachineLink> m_link;
+    std::unique_ptr<MachineSession> m_session;
+    SessionResult m_connectResult;
+    QString m_operation;
+};
+
+} // namespace Toffee

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QWidget>
+
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace Toffee {
+
+class MachineConnection;
+struct SessionResult;
+
+// The tool-break test (M491.1): a tolerance that cannot go under the firmware's 0.02 mm, the old, new and
+// difference, and an unmistakable alarm with an Unlock when the tool is broken.
+class BreakTestPanel final : public QWidget
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(BreakTestPanel)
+
+public:
+    explicit BreakTestPanel(MachineConnection *connection, QWidget *parent = nullptr);
+
+    [[nodiscard]] double tolerance() const;
+    void run(bool confirm = true);
+
+Q_SIGNALS:
+    void finished(const Toffee::SessionResult &result);
+
+private:
+    void updateState();
+    void showResult(const SessionResult &result);
+    void raiseBrokenAlarm(const SessionResult &result);
+
+    MachineConnection *m_connection;
+    QDoubleSpinBox *m_tolerance;
+    QPushButton *m_run;
+    QLabel *m_old;
+    QLabel *m_new;
+    QLabel *m_difference;
+    QLabel *m_verdict;
+};
+
+} // namespace Toffee

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QDockWidget>
+#include <QStringList>
+
+class QLineEdit;
+class QListWidget;
+
+namespace Toffee {
+
+class MachineConnection;
+
+// Every line sent and received, with its time, filterable; and a line to type a command by hand, with history.
+class ConsoleDock final : public QDockWidget
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(ConsoleDock)
+
+public:
+    explicit ConsoleDock(MachineConnection *connection, QWidget *parent = nullptr);
+
+    void sendCommand(const QString &command);
+    [[nodiscard]] QStringList lines() const;
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
+private:
+    void append(const QByteArray &line, bool outgoing);
+    void applyFilter();
+
+    static constexpr int kMaxLines = 5000;
+    MachineConnection *m_connection;
+    QListWidget *m_log;
+    QLineEdit *m_filter;
+    QLineEdit *m_command;
+    QStringList m_history;
+    qsizetype m_historyIndex = 0;
+};
+
+} // namespace Toffee

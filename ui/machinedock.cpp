@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "machinedock.h"
+
+#include <QGroupBox>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+#include "breaktestpanel.h"
+#include "connectionpanel.h"
+#include "offseteditor.h"
+#include "probepanel.h"
+#include "tlopanel.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QGroupBox *group(const QString &title, QWidget *content)
+{
+    auto *box = new QGroupBox(title);
+    auto *layout = new QVBoxLayout(box);
+    layout->addWidget(content);
+    return box;
+}
+
+} // namespace
+
+MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, QWidget *parent)
+    : QDockWidget(tr("Machine"), parent)
+    , m_connection(new ConnectionPanel(connection))
+    , m_tlo(new TloPanel(connection))
+    , m_probe(new ProbePanel(connection, document))
+    , m_offsets(new OffsetEditor(connection))
+    , m_breakTest(new BreakTestPanel(connection))
+{
+    setObjectName(u"machineDock"_s);
+    auto *body = new QWidget;
+    auto *layout = new QVBoxLayout(body);
+    layout->addWidget(group(tr("Connection"), m_connection));
+    layout->addWidget(group(tr("Tool length offset"), m_tlo));
+    layout->addWidget(group(tr("Probe"), m_probe));
+    layout->addWidget(group(tr("Set the offset by hand"), m_offsets));
+    layout->addWidget(group(tr("Tool break test"), m_breakTest));
+    layout->addStretch(1);
+    auto *scroll = new QScrollArea;
+    scroll->setWidget(body);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    setWidget(scroll);
+}
+
+} // namespace Toffee

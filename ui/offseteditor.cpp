@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "offseteditor.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+
+#include "machineconnection.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString mm(double v)
+{
+    return QString::number(v, 'f', 3);
+}
+
+} // namespace
+
+OffsetEditor::OffsetEditor(MachineConnection *connection, QWidget *parent)
+    : QWidget(parent)
+    , m_connection(connection)
+    , m_mode(new QComboBox(this))
+    , m_value(new QDoubleSpinBox(this))
+    , m_command(new QLabel(this))
+    , m_result(new QLabel(this))
+    , m_send(new QPushButton(tr("Send"), this))
+{
+    m_mode->setObjectName(u"offsetModeCombo"_s);
+    m_mode->setAccessibleName(tr("How to set the offset"));
+    m_mode->addItem(tr("Set TLO to"), SetTlo);
+    m_mode->addItem(tr("Change TLO by"), ChangeTlo);
+    m_mode->addItem(tr("Gauge height above Z0"), AboveZ0);
+    m_value->setObjectName(u"offsetValueSpin"_s);
+    m_value->setAccessibleName(tr("Offset value in millimetres"));
+    m_value->setRange(-MachineSession::kMaxOffset, MachineSession::kMaxOffset);
+    m_value->setDecimals(3);
+    m_value->setSingleStep(0.01);
+    m_value->setSuffix(u" mm"_s);
+    m_value->setKeyboardTracking(true);
+    m_command->setObjectName(u"offsetCommandPreview"_s);
+    m_command->setAccessibleName(tr("Command that will be sent"));
+    m_command->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    QFont mono = m_command->font();
+    mono.setFamily(u"monospace"_s);
+    mono.setStyleHint(QFont::Monospace);
+    m_command->setFont(mono);
+    m_result->setObjectName(u"offsetResultPreview"_s);
+    m_result->setAccessibleName(tr("Resulting tool length offset"));
+    m_send->setObjectName(u"sendOffsetButton"_s);
+    m_send->setAccessibleName(tr("Send the offset to the machine"));
+    m_send->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
+    m_send->setToolTip(tr("Send the command above — Ctrl+Enter"));
+
+    auto *form = new QFormLayout(this);
+    form->addRow(m_mode, m_value);
+    form->addRow(tr("Sends:"), m_command);
+    form->addRow(tr("TLO:"), m_result);
+    form->addRow(m_send);
+
+    connect(m_mode, &QComboBox::currentIndexChanged, this, &OffsetEditor::updatePreview);
+    connect(m_value, &QDoubleSpinBox::valueChanged, this, &OffsetEditor::updatePreview);
+    connect(m_send, &QPushButton::clicked, this, [this] { send(); });
+    connect(m_connection, &MachineConnection::offsetsChanged, this, [this](const TloReading &offsets) {
+        m_currentTlo = offsets.tlo();
+        updatePreview();
+    });
+    connect(m_connection, &MachineConnection::statusChanged, this, [this](const MachineStatus &status) {
+        if (status.tlo && !m_connection->isBusy()) {
+            m_currentTlo = status.tlo;
+            updatePreview();
+        }
+    });
+    connect(m_connection, &MachineConnection::stateChanged, this, &OffsetEditor::updatePreview);
+    connect(m_connection, &MachineConnection::busyChanged, this, &OffsetEditor::updatePreview);
+    updatePreview();
+}
+
+void OffsetEditor::setMode(Mode mode)
+{
+    m_mode->setCurrentIndex(m_mode->findData(mode));
+}
+
+void OffsetEditor::setValue(double value)
+{
+    m_value->setValue(value);
+}
+
+std::optional<double> OffsetEditor::targetTlo() const
+{
+    switch (Mode(m_mode->currentData().toInt())) {
+    case SetTlo:
+        return m_value->value();
+    case ChangeTlo:
+        if (!m_currentTlo)
+            return std::nullopt;
+        return std::round((*m_currentTlo + m_value->value()) * 1000.0) / 1000.0;
+    case AboveZ0:
+        return std::nullopt; // the machine works it out from where the spindle is
+    }
+    return std::nullopt;
+}
+
+QString OffsetEditor::commandPreview() const
+{
+    if (Mode(m_mode->currentData().toInt()) == AboveZ0)
+        return u"M493.3 H"_s + mm(m_value->value());
+    const auto target = targetTlo();
+    return target ? u"M493.3 Z"_s + mm(*target) : tr("(the current TLO is not known yet)");
+}
+
+QString OffsetEditor::resultPreview() const
+{
+    const QString now = m_currentTlo ? mm(*m_currentTlo) : u"?"_s;
+    const auto target = targetTlo();
+    if (!target)
+        return tr("%1 → set by the machine from the spindle's position").arg(now);
+    return now + u" → "_s + mm(*target) + u" mm"_s;
+}
+
+void OffsetEditor::updatePreview()
+{
+    m_command->setText(commandPreview());
+    m_result->setText(resultPreview());
+    const bool known = Mode(m_mode->currentData().toInt()) != ChangeTlo || m_currentTlo.has_value();
+    m_send->setEnabled(known && m_connection->state() == MachineConnection::State::Connected
+                       && !m_connection->isBusy());
+}
+
+void OffsetEditor::send(bool confirm)
+{
+    const Mode mode = Mode(m_mode->currentData().toInt());
+    const auto target = targetTlo();
+    if (mode != AboveZ0 && !target)
+        return;
+    if (confirm
+        && QMessageBox::question(this, tr("Change the tool length offset?"),
+                                 tr("Send %1?\nTLO %2\n\nThe next cut uses the new offset.")
+                                     .arg(commandPreview(), resultPreview()),
+                                 QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+            != QMessageBox::Yes)
+        return;
+    if (!m_connection->beginOperation(tr("Setting the TLO…")))
+        return;
+    auto done = [this](const SessionResult &r) {
+        m_connection->endOperation(r);
+        if (!r.ok())
+            QMessageBox::warning(this, tr("The offset was not set"), r.message);
+    };
+    if (mode == AboveZ0)
+        m_connection->session()->setTloAboveZ0(m_value->value(), done);
+    else
+        m_connection->session()->setTlo(*target, done);
+}
+
+} // namespace Toffee

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <optional>
+
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace Toffee {
+
+class MachineConnection;
+struct TloReading;
+
+// Sets the TLO by hand: directly (M493.3 Z), by a change to the current TLO (the seed's "add 2.9 mm"), or from
+// a gauge of known height under the tip (M493.3 H). It shows the exact command and the resulting TLO first.
+class OffsetEditor final : public QWidget
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(OffsetEditor)
+
+public:
+    enum Mode { SetTlo, ChangeTlo, AboveZ0 };
+
+    explicit OffsetEditor(MachineConnection *connection, QWidget *parent = nullptr);
+
+    void setMode(Mode mode);
+    void setValue(double value);
+    [[nodiscard]] QString commandPreview() const;
+    [[nodiscard]] QString resultPreview() const;
+    void send(bool confirm = true);
+
+private:
+    void updatePreview();
+    [[nodiscard]] std::optional<double> targetTlo() const;
+
+    MachineConnection *m_connection;
+    std::optional<double> m_currentTlo;
+    QComboBox *m_mode;
+    QDoubleSpinBox *m_value;
+    QLabel *m_command;
+    QLabel *m_result;
+    QPushButton *m_send;
+};
+
+} // namespace Toffee

@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "probepanel.h"
+
+#include <QGridLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+
+#include "machineconnection.h"
+#include "tooldocument.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QWidget *parent)
+    : QWidget(parent)
+    , m_connection(connection)
+    , m_document(document)
+    , m_probe(new QPushButton(tr("Probe Current Tool"), this))
+    , m_restore(new QPushButton(tr("Restore Known TLO"), this))
+    , m_progress(new QProgressBar(this))
+    , m_cancel(new QPushButton(tr("Cancel"), this))
+    , m_result(new QLabel(this))
+{
+    m_probe->setObjectName(u"probeButton"_s);
+    m_probe->setAccessibleName(tr("Probe the current tool on the tool setter"));
+    m_probe->setShortcut(QKeySequence(Qt::Key_F5));
+    m_probe->setToolTip(tr("Measure the tool in the spindle on the tool setter (M491) — F5"));
+    m_restore->setObjectName(u"restoreButton"_s);
+    m_restore->setAccessibleName(tr("Restore the selected tool's known TLO"));
+    m_restore->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_restore->setToolTip(tr("Make the selected tool active with the TLO measured before, without probing — Ctrl+R"));
+    m_progress->setObjectName(u"probeProgress"_s);
+    m_progress->setAccessibleName(tr("Machine busy"));
+    m_progress->setRange(0, 0);
+    m_progress->hide();
+    m_cancel->setObjectName(u"cancelButton"_s);
+    m_cancel->setAccessibleName(tr("Stop the machine"));
+    m_cancel->setShortcut(QKeySequence(Qt::Key_Escape));
+    m_cancel->setToolTip(tr("Stop the machine now (Ctrl-X to the controller) — Esc"));
+    m_cancel->hide();
+    m_result->setObjectName(u"probeResultLabel"_s);
+    m_result->setWordWrap(true);
+
+    auto *grid = new QGridLayout(this);
+    grid->addWidget(m_probe, 0, 0);
+    grid->addWidget(m_restore, 0, 1);
+    grid->addWidget(m_progress, 1, 0);
+    grid->addWidget(m_cancel, 1, 1);
+    grid->addWidget(m_result, 2, 0, 1, 2);
+
+    connect(m_probe, &QPushButton::clicked, this, [this] { probe(); });
+    connect(m_restore, &QPushButton::clicked, this, [this] { restore(); });
+    connect(m_cancel, &QPushButton::clicked, this, &ProbePanel::cancel);
+    connect(m_connection, &MachineConnection::stateChanged, this, &ProbePanel::updateState);
+    connect(m_connection, &MachineConnection::busyChanged, this, &ProbePanel::updateState);
+    connect(m_document->model(), &QAbstractItemModel::dataChanged, this, &ProbePanel::updateState);
+    updateState();
+}
+
+void ProbePanel::setSelectedTool(int number)
+{
+    m_selectedTool = number;
+    updateState();
+}
+
+void ProbePanel::updateState()
+{
+    const bool ready = m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy();
+    m_probe->setEnabled(ready);
+    const Tool *tool = m_document->table().find(m_selectedTool);
+    m_restore->setEnabled(ready && tool && tool->measuredTlo);
+    m_restore->setText(tool && tool->measuredTlo ? tr("Restore T%1 TLO").arg(m_selectedTool) : tr("Restore Known TLO"));
+    const bool busy = m_connection->isBusy();
+    m_progress->setVisible(busy);
+    m_cancel->setVisible(busy);
+    if (busy)
+        m_progress->setFormat(m_connection->operation());
+}
+
+void ProbePanel::report(const SessionResult &result, const QString &title)
+{
+    if (result.ok())
+        return;
+    m_result->setText(result.message);
+    QMessageBox::warning(this, title, result.message + u"\n\n"_s + tr("Nothing was written to the tool table."));
+}
+
+void ProbePanel::probe(bool confirm)
+{
+    const auto tool = m_connection->session() ? m_connection->session()->activeTool() : std::nullopt;
+    const QString name = tool ? u"T"_s + QString::number(*tool) : tr("the current tool");
+    if (confirm
+        && QMessageBox::question(this, tr("Probe %1?").arg(name),
+                                 tr("The machine will move: up to clearance, over the tool setter, then down until "
+                                    "%1 touches it. Keep hands clear.\n\nProbe now?")
+                                     .arg(name),
+                                 QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+            != QMessageBox::Yes)
+        return;
+    if (!m_connection->beginOperation(tr("Probing %1…").arg(name)))
+        return;
+    m_result->clear();
+    m_connection->session()->probe([this](const SessionResult &r) {
+        m_connection->endOperation(r);
+        if (r.ok()) {
+            const int number = r.tool.value_or(-1);
+            auto recorded = number >= 0 ? m_document->recordMeasurement(number, r.tlo->tlo(),
+                                                                         QDateTime::currentDateTimeUtc())
+                                        : Result<void>(Error { tr("there is no tool in the spindle.") });
+            m_result->setText(recorded ? tr("T%1 measured: TLO %2 mm, recorded in the table.")
+                                             .arg(number)
+                                             .arg(r.tlo->tlo(), 0, 'f', 3)
+                                       : tr("Measured TLO %1 mm, but it could not be recorded: %2")
+                                             .arg(r.tlo->tlo(), 0, 'f', 3)
+                                             .arg(recorded.error().message));
+        }
+        report(r, tr("Probing failed"));
+        Q_EMIT finished(r);
+    });
+}
+
+void ProbePanel::restore(bool confirm)
+{
+    const Tool *tool = m_document->table().find(m_selectedTool);
+    if (!tool || !tool->measuredTlo)
+        return;
+    const int number = tool->number;
+    const double tlo = *tool->measuredTlo;
+    if (confirm
+        && QMessageBox::question(this, tr("Restore T%1?").arg(number),
+                                 tr("Make T%1 the active tool with TLO %2 mm, as measured %3, without probing?\n\n"
+                                    "Sends: M493.2 T%1, then M493.3 Z%2")
+                                     .arg(number)
+                                     .arg(tlo, 0, 'f', 3)
+                                     .arg(QLocale().toString(tool->measuredAt.toLocalTime(), QLocale::ShortFormat)),
+                                 QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+            != QMessageBox::Yes)
+        return;
+    if (!m_connection->beginOperation(tr("Restoring T%1…").arg(number)))
+        return;
+    m_connection->session()->restoreTlo(number, tlo, [this, number](const SessionResult &r) {
+        m_connection->endOperation(r);
+        if (r.ok())
+            m_result->setText(tr("T%1 is active with TLO %2 mm.").arg(number).arg(r.tlo->tlo(), 0, 'f', 3));
+        report(r, tr("Restoring failed"));
+        Q_EMIT finished(r);
+    });
+}
+
+void ProbePanel::cancel()
+{
+    if (m_connection->session())
+        m_connection->session()->abort();
+}
+
+} // namespace Toffee

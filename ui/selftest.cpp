@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "selftest.h"
+
+#include <QImage>
+#include <QPixmap>
+
+#include "machineconnection.h"
+#include "machinedock.h"
+#include "mainwindow.h"
+#include "probepanel.h"
+#include "tooldocument.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+SelfTest::SelfTest(MainWindow *window, std::function<void(int, const QString &)> finished, QObject *parent)
+    : QObject(parent)
+    , m_window(window)
+    , m_finished(std::move(finished))
+{
+    m_watchdog.setSingleShot(true);
+    connect(&m_watchdog, &QTimer::timeout, this, [this] { fail(tr("no progress within 20 s")); });
+}
+
+void SelfTest::step(const QString &what)
+{
+    m_step = what;
+    m_watchdog.start(20000);
+}
+
+void SelfTest::fail(const QString &reason)
+{
+    if (m_done)
+        return;
+    m_done = true;
+    m_watchdog.stop();
+    m_finished(1, tr("self-test failed while %1: %2").arg(m_step, reason));
+}
+
+void SelfTest::start(const QElapsedTimer &sinceLaunch)
+{
+    step(tr("showing the window"));
+    m_window->show();
+    const QImage frame = m_window->grab().toImage();
+    m_firstFrameMs = sinceLaunch.elapsed();
+    if (frame.isNull() || frame.width() < 100)
+        return fail(tr("the window did not render"));
+
+    step(tr("loading the example table"));
+    if (!m_window->openFile(u":/examples/example.json"_s))
+        return fail(tr("the example table did not load"));
+
+    step(tr("connecting to the built-in emulator"));
+    MachineConnection *connection = m_window->connection();
+    connect(connection, &MachineConnection::connectFailed, this, [this](const QString &m) { fail(m); });
+    connect(connection, &MachineConnection::stateChanged, this, [this, connection](MachineConnection::State s) {
+        if (s != MachineConnection::State::Connected || m_done)
+            return;
+        step(tr("probing the current tool"));
+        ProbePanel *probe = m_window->machineDock()->probePanel();
+        connect(probe, &ProbePanel::finished, this, [this](const SessionResult &r) {
+            if (!r.ok())
+                return fail(r.message);
+            const Tool *tool = m_window->document()->table().find(r.tool.value_or(-1));
+            if (!tool || !tool->measuredTlo || std::fabs(*tool->measuredTlo - r.tlo->tlo()) > 1e-9)
+                return fail(tr("the measurement did not reach the table"));
+            step(tr("rendering"));
+            if (m_window->grab().isNull())
+                return fail(tr("the window did not render"));
+            m_done = true;
+            m_watchdog.stop();
+            m_finished(0, tr("self-test passed: first frame after %1 ms; T%2 probed, TLO %3 mm recorded")
+                              .arg(m_firstFrameMs)
+                              .arg(r.tool.value_or(-1))
+                              .arg(r.tlo->tlo(), 0, 'f', 3));
+        });
+        probe->probe(false);
+    });
+    connection->connectTo({ true, {}, 115200 });
+}
+
+} // namespace Toffee
