@@ -8,8 +8,7 @@ namespace Toffee {
 
 MachineConnection::MachineConnection(QObject *parent)
     : QObject(parent)
-{
-}
+{ }
 
 MachineConnection::~MachineConnection()
 {
@@ -69,7 +68,8 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
     m_session = std::make_unique<MachineSession>(m_link.get());
     connect(m_link.get(), &MachineLink::statusChanged, this, &MachineConnection::statusChanged);
     connect(m_link.get(), &MachineLink::alarmRaised, this, &MachineConnection::alarmRaised);
-    connect(m_link.get(), &MachineLink::lineSent, this, [this](const QByteArray &l) { Q_EMIT consoleLine(l, true); });
+    connect(m_link.get(), &MachineLink::lineSent, this,
+        [this](const QByteArray &l) { Q_EMIT consoleLine(l, true); });
     connect(m_link.get(), &MachineLink::lineReceived, this, [this](const QByteArray &l) {
         if (classifyReply(l) != ReplyKind::Status) // four a second would drown the console
             Q_EMIT consoleLine(l, false);

@@ -52,9 +52,9 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
     m_run->setAccessibleName(tr("Run the tool break test"));
     m_run->setShortcut(QKeySequence(Qt::Key_F6));
     m_run->setToolTip(tr("Re-measure the tool and compare it with its stored TLO (M491.1) — F6"));
-    for (auto [label, name] : { std::pair { m_old, u"breakOldLabel"_s }, std::pair { m_new, u"breakNewLabel"_s },
-                                std::pair { m_difference, u"breakDifferenceLabel"_s },
-                                std::pair { m_verdict, u"breakVerdictLabel"_s } }) {
+    for (auto [label, name] : { std::pair { m_old, u"breakOldLabel"_s },
+             std::pair { m_new, u"breakNewLabel"_s }, std::pair { m_difference, u"breakDifferenceLabel"_s },
+             std::pair { m_verdict, u"breakVerdictLabel"_s } }) {
         label->setObjectName(name);
         label->setAccessibleName(name);
     }
@@ -69,7 +69,8 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
     form->addRow(m_verdict);
 
     connect(m_run, &QPushButton::clicked, this, [this] { run(); });
-    connect(m_tolerance, &QDoubleSpinBox::valueChanged, this, [](double v) { AppSettings().setBreakTestTolerance(v); });
+    connect(m_tolerance, &QDoubleSpinBox::valueChanged, this,
+        [](double v) { AppSettings().setBreakTestTolerance(v); });
     connect(m_connection, &MachineConnection::stateChanged, this, &BreakTestPanel::updateState);
     connect(m_connection, &MachineConnection::busyChanged, this, &BreakTestPanel::updateState);
     updateState();
@@ -82,7 +83,8 @@ double BreakTestPanel::tolerance() const
 
 void BreakTestPanel::updateState()
 {
-    m_run->setEnabled(m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy());
+    m_run->setEnabled(
+        m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy());
 }
 
 void BreakTestPanel::run(bool confirm)
@@ -91,10 +93,10 @@ void BreakTestPanel::run(bool confirm)
     const double tolerance = m_tolerance->value();
     if (confirm
         && QMessageBox::question(this, tr("Run the break test?"),
-                                 tr("The machine will move to the tool setter and measure the tool again, then "
-                                    "compare it with its stored TLO (tolerance %1 mm). Keep hands clear.")
-                                     .arg(tolerance),
-                                 QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+               tr("The machine will move to the tool setter and measure the tool again, then "
+                  "compare it with its stored TLO (tolerance %1 mm). Keep hands clear.")
+                   .arg(tolerance),
+               QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
     if (!m_connection->beginOperation(tr("Break test…")))
@@ -131,8 +133,8 @@ void BreakTestPanel::showResult(const SessionResult &r)
 
 void BreakTestPanel::raiseBrokenAlarm(const SessionResult &r)
 {
-    QMessageBox box(QMessageBox::Critical, tr("Broken tool"), tr("The tool may be broken. The machine has halted."),
-                    QMessageBox::NoButton, this);
+    QMessageBox box(QMessageBox::Critical, tr("Broken tool"),
+        tr("The tool may be broken. The machine has halted."), QMessageBox::NoButton, this);
     box.setObjectName(u"brokenToolAlarm"_s);
     box.setInformativeText(r.message);
     QPushButton *unlock = box.addButton(tr("Unlock"), QMessageBox::AcceptRole);

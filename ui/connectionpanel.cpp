@@ -52,8 +52,8 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
     refreshPorts();
     AppSettings settings;
     setTarget({ settings.connectionPort().isEmpty() || settings.connectionPort() == kEmulator,
-                settings.connectionPort() == kEmulator ? QString() : settings.connectionPort(),
-                settings.connectionBaud() });
+        settings.connectionPort() == kEmulator ? QString() : settings.connectionPort(),
+        settings.connectionBaud() });
     updateState();
 }
 
@@ -64,8 +64,9 @@ void ConnectionPanel::refreshPorts()
     m_port->addItem(tr("Built-in emulator"), kEmulator);
     const auto ports = QSerialPortInfo::availablePorts();
     for (const QSerialPortInfo &info : ports) {
-        const QString label = info.description().isEmpty() ? info.systemLocation()
-                                                            : info.systemLocation() + u" — "_s + info.description();
+        const QString label = info.description().isEmpty()
+            ? info.systemLocation()
+            : info.systemLocation() + u" — "_s + info.description();
         m_port->addItem(label, info.systemLocation());
     }
     const int index = m_port->findData(current);
@@ -114,8 +115,8 @@ void ConnectionPanel::updateState()
     m_baud->setEnabled(idle && m_port->currentData().toString() != kEmulator);
     m_refresh->setEnabled(idle);
     m_connect->setText(state == MachineConnection::State::Connected ? tr("Disconnect")
-                       : state == MachineConnection::State::Connecting ? tr("Connecting…")
-                                                                       : tr("Connect"));
+            : state == MachineConnection::State::Connecting         ? tr("Connecting…")
+                                                                    : tr("Connect"));
     m_connect->setAccessibleName(m_connect->text());
     m_connect->setEnabled(state != MachineConnection::State::Connecting);
 }

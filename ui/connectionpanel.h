@@ -11,7 +11,8 @@ namespace Toffee {
 class MachineConnection;
 struct ConnectionTarget;
 
-// Which machine: a serial port (discovered, refreshable) at a baud rate, or the built-in emulator. Remembered.
+// Which machine: a serial port (discovered, refreshable) at a baud rate, or the built-in emulator.
+// Remembered.
 class ConnectionPanel final : public QWidget
 {
     Q_OBJECT

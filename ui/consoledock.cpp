@@ -100,11 +100,12 @@ void ConsoleDock::sendCommand(const QString &command)
         append(tr("the machine is busy with %1; wait for it").arg(m_connection->operation()).toUtf8(), false);
         return;
     }
-    m_connection->link()->send(command.toUtf8(), MachineLink::kMotionTimeoutMs, [this](const CommandReply &reply) {
-        m_connection->endOperation(SessionResult {});
-        if (!reply.ok())
-            append(reply.message.toUtf8(), false);
-    });
+    m_connection->link()->send(
+        command.toUtf8(), MachineLink::kMotionTimeoutMs, [this](const CommandReply &reply) {
+            m_connection->endOperation(SessionResult {});
+            if (!reply.ok())
+                append(reply.message.toUtf8(), false);
+        });
 }
 
 bool ConsoleDock::eventFilter(QObject *watched, QEvent *event)
@@ -112,7 +113,8 @@ bool ConsoleDock::eventFilter(QObject *watched, QEvent *event)
     if (watched == m_command && event->type() == QEvent::KeyPress && !m_history.isEmpty()) {
         const int key = static_cast<QKeyEvent *>(event)->key();
         if (key == Qt::Key_Up || key == Qt::Key_Down) {
-            m_historyIndex = std::clamp<qsizetype>(m_historyIndex + (key == Qt::Key_Up ? -1 : 1), 0, m_history.size());
+            m_historyIndex
+                = std::clamp<qsizetype>(m_historyIndex + (key == Qt::Key_Up ? -1 : 1), 0, m_history.size());
             m_command->setText(m_historyIndex < m_history.size() ? m_history.at(m_historyIndex) : QString());
             return true;
         }

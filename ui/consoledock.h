@@ -11,7 +11,8 @@ namespace Toffee {
 
 class MachineConnection;
 
-// Every line sent and received, with its time, filterable; and a line to type a command by hand, with history.
+// Every line sent and received, with its time, filterable; and a line to type a command by hand, with
+// history.
 class ConsoleDock final : public QDockWidget
 {
     Q_OBJECT

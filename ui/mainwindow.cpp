@@ -62,9 +62,10 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_connection, &MachineConnection::statusChanged, this, &MainWindow::updateMachineStatus);
     connect(m_connection, &MachineConnection::busyChanged, this, &MainWindow::updateMachineStatus);
     connect(m_connection, &MachineConnection::connectFailed, this,
-            [this](const QString &message) { showError(tr("Cannot connect to the machine"), message); });
-    connect(m_connection, &MachineConnection::disconnected, this,
-            [this](const QString &reason) { statusBar()->showMessage(tr("Disconnected: %1").arg(reason), 10000); });
+        [this](const QString &message) { showError(tr("Cannot connect to the machine"), message); });
+    connect(m_connection, &MachineConnection::disconnected, this, [this](const QString &reason) {
+        statusBar()->showMessage(tr("Disconnected: %1").arg(reason), 10000);
+    });
     connect(m_tablePanel->view()->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
         const QList<int> selected = m_tablePanel->selectedToolNumbers();
         m_machineDock->probePanel()->setSelectedTool(selected.size() == 1 ? selected.front() : -1);

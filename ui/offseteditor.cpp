@@ -129,8 +129,8 @@ void OffsetEditor::updatePreview()
     m_command->setText(commandPreview());
     m_result->setText(resultPreview());
     const bool known = Mode(m_mode->currentData().toInt()) != ChangeTlo || m_currentTlo.has_value();
-    m_send->setEnabled(known && m_connection->state() == MachineConnection::State::Connected
-                       && !m_connection->isBusy());
+    m_send->setEnabled(
+        known && m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy());
 }
 
 void OffsetEditor::send(bool confirm)
@@ -141,9 +141,9 @@ void OffsetEditor::send(bool confirm)
         return;
     if (confirm
         && QMessageBox::question(this, tr("Change the tool length offset?"),
-                                 tr("Send %1?\nTLO %2\n\nThe next cut uses the new offset.")
-                                     .arg(commandPreview(), resultPreview()),
-                                 QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+               tr("Send %1?\nTLO %2\n\nThe next cut uses the new offset.")
+                   .arg(commandPreview(), resultPreview()),
+               QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
     if (!m_connection->beginOperation(tr("Setting the TLO…")))

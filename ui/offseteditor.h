@@ -15,8 +15,9 @@ namespace Toffee {
 class MachineConnection;
 struct TloReading;
 
-// Sets the TLO by hand: directly (M493.3 Z), by a change to the current TLO (the seed's "add 2.9 mm"), or from
-// a gauge of known height under the tip (M493.3 H). It shows the exact command and the resulting TLO first.
+// Sets the TLO by hand: directly (M493.3 Z), by a change to the current TLO (the seed's "add 2.9 mm"), or
+// from a gauge of known height under the tip (M493.3 H). It shows the exact command and the resulting TLO
+// first.
 class OffsetEditor final : public QWidget
 {
     Q_OBJECT

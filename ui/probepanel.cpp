@@ -31,7 +31,8 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     m_restore->setObjectName(u"restoreButton"_s);
     m_restore->setAccessibleName(tr("Restore the selected tool's known TLO"));
     m_restore->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
-    m_restore->setToolTip(tr("Make the selected tool active with the TLO measured before, without probing — Ctrl+R"));
+    m_restore->setToolTip(
+        tr("Make the selected tool active with the TLO measured before, without probing — Ctrl+R"));
     m_progress->setObjectName(u"probeProgress"_s);
     m_progress->setAccessibleName(tr("Machine busy"));
     m_progress->setRange(0, 0);
@@ -68,11 +69,13 @@ void ProbePanel::setSelectedTool(int number)
 
 void ProbePanel::updateState()
 {
-    const bool ready = m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy();
+    const bool ready
+        = m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy();
     m_probe->setEnabled(ready);
     const Tool *tool = m_document->table().find(m_selectedTool);
     m_restore->setEnabled(ready && tool && tool->measuredTlo);
-    m_restore->setText(tool && tool->measuredTlo ? tr("Restore T%1 TLO").arg(m_selectedTool) : tr("Restore Known TLO"));
+    m_restore->setText(
+        tool && tool->measuredTlo ? tr("Restore T%1 TLO").arg(m_selectedTool) : tr("Restore Known TLO"));
     const bool busy = m_connection->isBusy();
     m_progress->setVisible(busy);
     m_cancel->setVisible(busy);
@@ -85,7 +88,8 @@ void ProbePanel::report(const SessionResult &result, const QString &title)
     if (result.ok())
         return;
     m_result->setText(result.message);
-    QMessageBox::warning(this, title, result.message + u"\n\n"_s + tr("Nothing was written to the tool table."));
+    QMessageBox::warning(
+        this, title, result.message + u"\n\n"_s + tr("Nothing was written to the tool table."));
 }
 
 void ProbePanel::probe(bool confirm)
@@ -94,10 +98,10 @@ void ProbePanel::probe(bool confirm)
     const QString name = tool ? u"T"_s + QString::number(*tool) : tr("the current tool");
     if (confirm
         && QMessageBox::question(this, tr("Probe %1?").arg(name),
-                                 tr("The machine will move: up to clearance, over the tool setter, then down until "
-                                    "%1 touches it. Keep hands clear.\n\nProbe now?")
-                                     .arg(name),
-                                 QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+               tr("The machine will move: up to clearance, over the tool setter, then down until "
+                  "%1 touches it. Keep hands clear.\n\nProbe now?")
+                   .arg(name),
+               QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
     if (!m_connection->beginOperation(tr("Probing %1…").arg(name)))
@@ -107,9 +111,9 @@ void ProbePanel::probe(bool confirm)
         m_connection->endOperation(r);
         if (r.ok()) {
             const int number = r.tool.value_or(-1);
-            auto recorded = number >= 0 ? m_document->recordMeasurement(number, r.tlo->tlo(),
-                                                                         QDateTime::currentDateTimeUtc())
-                                        : Result<void>(Error { tr("there is no tool in the spindle.") });
+            auto recorded = number >= 0
+                ? m_document->recordMeasurement(number, r.tlo->tlo(), QDateTime::currentDateTimeUtc())
+                : Result<void>(Error { tr("there is no tool in the spindle.") });
             m_result->setText(recorded ? tr("T%1 measured: TLO %2 mm, recorded in the table.")
                                              .arg(number)
                                              .arg(r.tlo->tlo(), 0, 'f', 3)
@@ -131,12 +135,12 @@ void ProbePanel::restore(bool confirm)
     const double tlo = *tool->measuredTlo;
     if (confirm
         && QMessageBox::question(this, tr("Restore T%1?").arg(number),
-                                 tr("Make T%1 the active tool with TLO %2 mm, as measured %3, without probing?\n\n"
-                                    "Sends: M493.2 T%1, then M493.3 Z%2")
-                                     .arg(number)
-                                     .arg(tlo, 0, 'f', 3)
-                                     .arg(QLocale().toString(tool->measuredAt.toLocalTime(), QLocale::ShortFormat)),
-                                 QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+               tr("Make T%1 the active tool with TLO %2 mm, as measured %3, without probing?\n\n"
+                  "Sends: M493.2 T%1, then M493.3 Z%2")
+                   .arg(number)
+                   .arg(tlo, 0, 'f', 3)
+                   .arg(QLocale().toString(tool->measuredAt.toLocalTime(), QLocale::ShortFormat)),
+               QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
     if (!m_connection->beginOperation(tr("Restoring T%1…").arg(number)))

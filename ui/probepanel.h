@@ -13,8 +13,8 @@ class MachineConnection;
 class ToolDocument;
 struct SessionResult;
 
-// Probe the tool in the spindle on the tool setter (after a confirmation: the machine moves), with progress and
-// a Cancel that stops the machine; the result goes into the table. Also: restore a tool's known TLO.
+// Probe the tool in the spindle on the tool setter (after a confirmation: the machine moves), with progress
+// and a Cancel that stops the machine; the result goes into the table. Also: restore a tool's known TLO.
 class ProbePanel final : public QWidget
 {
     Q_OBJECT

@@ -54,29 +54,31 @@ void SelfTest::start(const QElapsedTimer &sinceLaunch)
     step(tr("connecting to the built-in emulator"));
     MachineConnection *connection = m_window->connection();
     connect(connection, &MachineConnection::connectFailed, this, [this](const QString &m) { fail(m); });
-    connect(connection, &MachineConnection::stateChanged, this, [this, connection](MachineConnection::State s) {
-        if (s != MachineConnection::State::Connected || m_done)
-            return;
-        step(tr("probing the current tool"));
-        ProbePanel *probe = m_window->machineDock()->probePanel();
-        connect(probe, &ProbePanel::finished, this, [this](const SessionResult &r) {
-            if (!r.ok())
-                return fail(r.message);
-            const Tool *tool = m_window->document()->table().find(r.tool.value_or(-1));
-            if (!tool || !tool->measuredTlo || std::fabs(*tool->measuredTlo - r.tlo->tlo()) > 1e-9)
-                return fail(tr("the measurement did not reach the table"));
-            step(tr("rendering"));
-            if (m_window->grab().isNull())
-                return fail(tr("the window did not render"));
-            m_done = true;
-            m_watchdog.stop();
-            m_finished(0, tr("self-test passed: first frame after %1 ms; T%2 probed, TLO %3 mm recorded")
-                              .arg(m_firstFrameMs)
-                              .arg(r.tool.value_or(-1))
-                              .arg(r.tlo->tlo(), 0, 'f', 3));
+    connect(
+        connection, &MachineConnection::stateChanged, this, [this, connection](MachineConnection::State s) {
+            if (s != MachineConnection::State::Connected || m_done)
+                return;
+            step(tr("probing the current tool"));
+            ProbePanel *probe = m_window->machineDock()->probePanel();
+            connect(probe, &ProbePanel::finished, this, [this](const SessionResult &r) {
+                if (!r.ok())
+                    return fail(r.message);
+                const Tool *tool = m_window->document()->table().find(r.tool.value_or(-1));
+                if (!tool || !tool->measuredTlo || std::fabs(*tool->measuredTlo - r.tlo->tlo()) > 1e-9)
+                    return fail(tr("the measurement did not reach the table"));
+                step(tr("rendering"));
+                if (m_window->grab().isNull())
+                    return fail(tr("the window did not render"));
+                m_done = true;
+                m_watchdog.stop();
+                m_finished(0,
+                    tr("self-test passed: first frame after %1 ms; T%2 probed, TLO %3 mm recorded")
+                        .arg(m_firstFrameMs)
+                        .arg(r.tool.value_or(-1))
+                        .arg(r.tlo->tlo(), 0, 'f', 3));
+            });
+            probe->probe(false);
         });
-        probe->probe(false);
-    });
     connection->connectTo({ true, {}, 115200 });
 }
 

@@ -21,7 +21,7 @@ class SelfTest final : public QObject
 public:
     // `finished` gets 0 and a summary, or non-zero and the reason.
     SelfTest(MainWindow *window, std::function<void(int code, const QString &message)> finished,
-             QObject *parent = nullptr);
+        QObject *parent = nullptr);
     void start(const QElapsedTimer &sinceLaunch);
 
 private:

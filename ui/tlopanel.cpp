@@ -73,7 +73,7 @@ TloPanel::TloPanel(MachineConnection *connection, QWidget *parent)
 void TloPanel::clear()
 {
     m_state->setText(m_connection->state() == MachineConnection::State::Connecting ? tr("Connecting…")
-                                                                                  : tr("Not connected"));
+                                                                                   : tr("Not connected"));
     for (QLabel *l : { m_tool, m_reference, m_current, m_tlo })
         l->setText(u"—"_s);
     m_unlock->hide();
@@ -88,7 +88,8 @@ void TloPanel::showStatus(const MachineStatus &status)
         state = tr("%1 — halted: %2").arg(status.state, haltReasonName(*status.haltReason));
     m_state->setText(state);
     QPalette palette = m_state->palette();
-    palette.setColor(QPalette::WindowText, status.isAlarm() ? QColor(0xc0, 0x1c, 0x28) : this->palette().color(QPalette::WindowText));
+    palette.setColor(QPalette::WindowText,
+        status.isAlarm() ? QColor(0xc0, 0x1c, 0x28) : this->palette().color(QPalette::WindowText));
     m_state->setPalette(palette);
     m_unlock->setVisible(status.isAlarm());
     if (status.tool)

@@ -13,8 +13,8 @@ class MachineConnection;
 struct MachineStatus;
 struct TloReading;
 
-// The machine as it is now: state, active tool, reference and current MCS Z, TLO. Marked stale when the status
-// reports stop, with an Unlock button while the machine is halted.
+// The machine as it is now: state, active tool, reference and current MCS Z, TLO. Marked stale when the
+// status reports stop, with an Unlock button while the machine is halted.
 class TloPanel final : public QWidget
 {
     Q_OBJECT

@@ -29,17 +29,19 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QApplication::translate("main", "Toffee, the tool offset manager."));
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption emulator(u"emulator"_s, QApplication::translate("main", "Connect to the built-in emulator."));
-    const QCommandLineOption port(u"port"_s, QApplication::translate("main", "Connect to the machine on PORT."),
-                                  u"PORT"_s);
-    const QCommandLineOption baud(u"baud"_s, QApplication::translate("main", "Baud rate (default 115200)."), u"N"_s,
-                                  u"115200"_s);
-    const QCommandLineOption selfTest(
-        u"self-test"_s,
-        QApplication::translate("main", "Open the window, connect to the emulator, load the example table, probe, "
-                                        "render once, and exit (0 when all went well)."));
+    const QCommandLineOption emulator(
+        u"emulator"_s, QApplication::translate("main", "Connect to the built-in emulator."));
+    const QCommandLineOption port(
+        u"port"_s, QApplication::translate("main", "Connect to the machine on PORT."), u"PORT"_s);
+    const QCommandLineOption baud(
+        u"baud"_s, QApplication::translate("main", "Baud rate (default 115200)."), u"N"_s, u"115200"_s);
+    const QCommandLineOption selfTest(u"self-test"_s,
+        QApplication::translate("main",
+            "Open the window, connect to the emulator, load the example table, probe, "
+            "render once, and exit (0 when all went well)."));
     parser.addOptions({ emulator, port, baud, selfTest });
-    parser.addPositionalArgument(u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
+    parser.addPositionalArgument(
+        u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
     parser.process(app);
 
     if (parser.isSet(selfTest))
@@ -58,7 +60,7 @@ int main(int argc, char *argv[])
     window.show();
     if (parser.isSet(emulator) || parser.isSet(port)) {
         const Toffee::ConnectionTarget target { parser.isSet(emulator), parser.value(port),
-                                                parser.value(baud).toInt() };
+            parser.value(baud).toInt() };
         window.machineDock()->connectionPanel()->setTarget(target);
         window.connection()->connectTo(target);
     }

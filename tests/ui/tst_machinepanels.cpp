@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The machine panels driven as an operator drives them, against the built-in emulator.
+#include <QAbstractButton>
+#include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+#include "consoledock.h"
+#include "emulator/carveraemulator.h"
+#include "machineconnection.h"
+#include "mainwindow.h"
+#include "tooldocument.h"
+#include "tooltablepanel.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
+
+// Clicks `buttonName` (an object name) or the standard `button` in the next modal box, and keeps its text.
+void answerNextBox(
+    QMessageBox::StandardButton button, QString *text = nullptr, const QString &buttonName = {})
+{
+    QTimer::singleShot(0, [=] {
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        if (!box) {
+            answerNextBox(button, text, buttonName); // not up yet
+            return;
+        }
+        if (text)
+            *text = box->text() + u'\n' + box->informativeText();
+        QAbstractButton *b
+            = buttonName.isEmpty() ? box->button(button) : box->findChild<QAbstractButton *>(buttonName);
+        QVERIFY(b);
+        b->click();
+    });
+}
+
+struct Fixture
+{
+    MainWindow window;
+    QList<QByteArray> sent;
+
+    Fixture()
+    {
+        window.show();
+        if (!window.openFile(kExample))
+            qFatal("the example did not open");
+        window.connection()->connectTo({ true, {}, 115200 });
+        if (!QTest::qWaitFor(
+                [this] { return window.connection()->state() == MachineConnection::State::Connected; }))
+            qFatal("the emulator did not connect");
+        QObject::connect(window.connection(), &MachineConnection::consoleLine, &window,
+            [this](const QByteArray &line, bool outgoing) {
+                if (outgoing)
+                    sent.append(line);
+            });
+    }
+    template<typename T> T *find(const QString &name) const { return window.findChild<T *>(name); }
+    bool idle() const { return !window.connection()->isBusy(); }
+    void probe()
+    {
+        answerNextBox(QMessageBox::Yes);
+        QTest::mouseClick(find<QPushButton>(u"probeButton"_s), Qt::LeftButton);
+        QVERIFY(QTest::qWaitFor([this] { return idle(); }, 10000));
+    }
+};
+
+} // namespace
+
+class TestMachinePanels : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QApplication::setOrganizationName(u"ToffeeTest"_s);
+        QApplication::setApplicationName(u"tst_machinepanels"_s);
+    }
+
+    void aProbeAsksFirstAndUpdatesTheTable()
+    {
+        Fixture f;
+        QString question;
+        answerNextBox(QMessageBox::Cancel, &question);
+        QTest::mouseClick(f.find<QPushButton>(u"probeButton"_s), Qt::LeftButton);
+        QVERIFY2(question.contains(u"will move"_s), qPrintable(question));
+        QVERIFY(!f.sent.contains("M491")); // cancelled: nothing moved
+
+        f.window.document()->undoStack()->setClean();
+        f.probe();
+        QVERIFY(f.sent.contains("M491"));
+        const Tool *t1 = f.window.document()->table().find(1);
+        QCOMPARE(t1->measuredTlo.value_or(99), 0.0);
+        QVERIFY(t1->measuredAt.secsTo(QDateTime::currentDateTimeUtc()) < 10);
+        QVERIFY(f.window.document()->isModified());
+        QCOMPARE(f.find<QLabel>(u"referenceMzLabel"_s)->text(), u"-72.300 mm"_s);
+        f.window.document()->undoStack()->undo(); // the measurement is one undo step
+        QCOMPARE(f.window.document()->table().find(1)->measuredAt,
+            QDateTime::fromString(u"2026-11-20T08:12:40.000Z"_s, Qt::ISODateWithMs));
+    }
+
+    void aToleranceUnderTheMinimumCannotBeSent()
+    {
+        Fixture f;
+        f.probe();
+        auto *spin = f.find<QDoubleSpinBox>(u"toleranceSpin"_s);
+        QCOMPARE(spin->value(), 0.1); // the seed's default
+        spin->selectAll();
+        QTest::keyClicks(spin, u"0.01"_s);
+        QTest::keyClick(spin, Qt::Key_Tab);
+        QVERIFY(spin->value() >= 0.02);
+        answerNextBox(QMessageBox::Yes);
+        QTest::mouseClick(f.find<QPushButton>(u"runBreakTestButton"_s), Qt::LeftButton);
+        QVERIFY(QTest::qWaitFor([&f] { return f.idle(); }, 10000));
+        const auto breakTests = std::count_if(
+            f.sent.cbegin(), f.sent.cend(), [](const QByteArray &l) { return l.startsWith("M491.1"); });
+        QCOMPARE(breakTests, 1);
+        QVERIFY(!f.sent.contains("M491.1 H0.01"));
+        QVERIFY(f.sent.contains("M491.1 H0.02"));
+        QVERIFY(!f.window.connection()->emulator()->isHalted());
+    }
+
+    void aBrokenToolRaisesTheAlarmAndUnlockClearsIt()
+    {
+        Fixture f;
+        f.probe();
+        f.window.connection()->emulator()->breakTool(1, 0.4);
+        QString alarm;
+        answerNextBox(QMessageBox::Yes); // the confirmation
+        QTimer::singleShot(
+            50, [&alarm] { answerNextBox(QMessageBox::NoButton, &alarm, u"alarmUnlockButton"_s); });
+        QTest::mouseClick(f.find<QPushButton>(u"runBreakTestButton"_s), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(alarm.contains(u"may be broken"_s), 10000);
+        QCOMPARE(f.find<QLabel>(u"breakVerdictLabel"_s)->text(), u"BROKEN TOOL"_s);
+        QCOMPARE(f.find<QLabel>(u"breakDifferenceLabel"_s)->text(), u"0.400 mm"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(!f.window.connection()->emulator()->isHalted(), 5000);
+        QVERIFY(f.sent.contains("$X"));
+    }
+
+    void theSeedsAddTwoPointNineExample()
+    {
+        Fixture f;
+        f.probe(); // T1: the reference
+        QVERIFY(QTest::qWaitFor([&f] { return f.idle(); }));
+        f.window.consoleDock()->sendCommand(u"M493.2 T2"_s);
+        QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.2 T2"); }));
+        f.probe(); // T2: -105.688, TLO -33.388
+        QCOMPARE(f.find<QLabel>(u"tloLabel"_s)->text(), u"-33.388 mm"_s);
+
+        auto *mode = f.find<QComboBox>(u"offsetModeCombo"_s);
+        mode->setCurrentIndex(mode->findText(u"Change TLO by"_s));
+        auto *value = f.find<QDoubleSpinBox>(u"offsetValueSpin"_s);
+        value->selectAll();
+        QTest::keyClicks(value, u"2.9"_s);
+        QCOMPARE(f.find<QLabel>(u"offsetCommandPreview"_s)->text(), u"M493.3 Z-30.488"_s);
+        QCOMPARE(f.find<QLabel>(u"offsetResultPreview"_s)->text(), u"-33.388 → -30.488 mm"_s);
+        QString question;
+        answerNextBox(QMessageBox::Yes, &question);
+        QTest::mouseClick(f.find<QPushButton>(u"sendOffsetButton"_s), Qt::LeftButton);
+        QVERIFY(question.contains(u"M493.3 Z-30.488"_s));
+        QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.3 Z-30.488"); }));
+        QTRY_COMPARE(f.find<QLabel>(u"tloLabel"_s)->text(), u"-30.488 mm"_s);
+        QVERIFY(std::fabs(f.window.connection()->emulator()->tlo() + 30.488) < 1e-9);
+    }
+
+    void restoresAKnownTloFromTheTable()
+    {
+        Fixture f;
+        f.probe();
+        f.window.connection()->emulator()->setToolLength(2, 10.0); // would measure very differently
+        f.window.toolTablePanel()->selectTool(2); // measured -33.388 in the example
+        answerNextBox(QMessageBox::Yes);
+        QTest::mouseClick(f.find<QPushButton>(u"restoreButton"_s), Qt::LeftButton);
+        QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.3 Z-33.388"); }));
+        QCOMPARE(f.window.connection()->emulator()->tool(), 2);
+        QVERIFY(std::fabs(f.window.connection()->emulator()->tlo() + 33.388) < 1e-9);
+        QVERIFY(!f.sent.contains("M491") || f.sent.count("M491") == 1); // no probe for the restore
+    }
+
+    void theConsoleSendsTypedCommandsWithHistory()
+    {
+        Fixture f;
+        auto *line = f.find<QLineEdit>(u"consoleCommand"_s);
+        QTest::keyClicks(line, u"M493.4"_s);
+        QTest::keyClick(line, Qt::Key_Return);
+        QVERIFY(QTest::qWaitFor([&f] {
+            return f.window.consoleDock()->lines().join(u'\n').contains(
+                u"< using default Tool setter position"_s);
+        }));
+        QTest::keyClick(line, Qt::Key_Up);
+        QCOMPARE(line->text(), u"M493.4"_s);
+        auto *filter = f.find<QLineEdit>(u"consoleFilter"_s);
+        QTest::keyClicks(filter, u"setter"_s);
+        QVERIFY(f.window.consoleDock()->lines().size() > 1);
+    }
+
+    void showsWhenTheStatusGoesStale()
+    {
+        Fixture f;
+        auto *state = f.find<QLabel>(u"machineStateLabel"_s);
+        QTRY_COMPARE(state->text(), u"Idle"_s);
+        f.window.connection()->link()->setPollInterval(0); // the reports stop, as on a stalled link
+        QTRY_VERIFY_WITH_TIMEOUT(state->text().contains(u"stale"_s), 5000);
+        QVERIFY(!state->isEnabled());
+        f.window.connection()->disconnectFromMachine();
+        QCOMPARE(state->text(), u"Not connected"_s);
+    }
+};
+
+QTEST_MAIN(TestMachinePanels)
+#include "tst_machinepanels.moc"
