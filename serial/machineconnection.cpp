@@ -12,7 +12,12 @@ MachineConnection::MachineConnection(QObject *parent)
 
 MachineConnection::~MachineConnection()
 {
-    teardown();
+    // Whoever started a command may be gone already (the window closes): drop pending handlers unheard,
+    // the link before the transport, so that closing the port calls none of them.
+    const QSignalBlocker blocker(this);
+    m_session.reset();
+    m_link.reset();
+    m_transport.reset();
 }
 
 void MachineConnection::setState(State state)

@@ -377,6 +377,16 @@ bool MainWindow::maybeSave()
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    if (m_connection->isBusy()) {
+        const auto answer = QMessageBox::warning(this, tr("The machine is busy"),
+            tr("The machine is running \"%1\". Stop it and quit?").arg(m_connection->operation()),
+            QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Yes) {
+            event->ignore();
+            return;
+        }
+        m_connection->session()->abort();
+    }
     if (maybeSave()) {
         writeSettings();
         event->accept();

@@ -8,6 +8,7 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
 #include <QTimer>
@@ -48,8 +49,8 @@ void answerNextBox(
 
 struct Fixture
 {
+    QList<QByteArray> sent; // before the window: its teardown still reports lines
     MainWindow window;
-    QList<QByteArray> sent;
 
     Fixture()
     {
@@ -88,6 +89,11 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true);
         QApplication::setOrganizationName(u"ToffeeTest"_s);
         QApplication::setApplicationName(u"tst_machinepanels"_s);
+    }
+
+    void init()
+    {
+        QSettings().clear(); // each test starts from the defaults, whatever the last one remembered
     }
 
     void aProbeAsksFirstAndUpdatesTheTable()
@@ -205,6 +211,24 @@ private Q_SLOTS:
         auto *filter = f.find<QLineEdit>(u"consoleFilter"_s);
         QTest::keyClicks(filter, u"setter"_s);
         QVERIFY(f.window.consoleDock()->lines().size() > 1);
+    }
+
+    void closingWhileProbingAsksThenStopsTheMachine()
+    {
+        Fixture f;
+        f.window.connection()->emulator()->setTiming({ 3000, 0 });
+        answerNextBox(QMessageBox::Yes);
+        QTest::mouseClick(f.find<QPushButton>(u"probeButton"_s), Qt::LeftButton);
+        QVERIFY(f.window.connection()->isBusy());
+        QString question;
+        answerNextBox(QMessageBox::Cancel, &question);
+        QVERIFY(!f.window.close());
+        QVERIFY(question.contains(u"Stop it and quit?"_s));
+        QVERIFY(f.window.connection()->isBusy());
+        answerNextBox(QMessageBox::Yes);
+        QVERIFY(f.window.close());
+        QTRY_VERIFY(f.window.connection()->emulator()->isHalted()); // stopped by Ctrl-X
+        // The fixture now destroys the window with the link still open: that must not crash.
     }
 
     void showsWhenTheStatusGoesStale()
