@@ -19,6 +19,7 @@
 #include "breaktestpanel.h"
 #include "connectionpanel.h"
 #include "consoledock.h"
+#include "filewatcher.h"
 #include "machineconnection.h"
 #include "machinedock.h"
 #include "probepanel.h"
@@ -47,6 +48,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_connection(new MachineConnection(this))
     , m_machineDock(new MachineDock(m_connection, m_document, this))
     , m_consoleDock(new ConsoleDock(m_connection, this))
+    , m_fileWatcher(new FileWatcher(this))
 {
     setObjectName(u"mainWindow"_s);
     setCentralWidget(m_tablePanel);
@@ -86,6 +88,7 @@ MainWindow::MainWindow(QWidget *parent)
 
     connect(m_document, &ToolDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ToolDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_fileWatcher, &FileWatcher::changedOnDisk, this, &MainWindow::fileChangedOnDisk);
     connect(m_document->model(), &ToolTableModel::editRejected, this,
         [this](const QString &message) { showError(tr("Value not accepted"), message); });
     updateTitle();
@@ -151,6 +154,24 @@ void MainWindow::createActions()
         m_tablePanel->filterEdit()->selectAll();
     });
     updateRecentFiles();
+}
+
+void MainWindow::fileChangedOnDisk(const QString &path)
+{
+    if (path != m_document->filePath())
+        return;
+    const QString question = m_document->isModified()
+        ? tr("%1 was changed by another program.\n\nReload it? Your unsaved changes in Toffee would be lost.")
+        : tr("%1 was changed by another program.\n\nReload it?");
+    if (QMessageBox::question(this, tr("File changed on disk"), question.arg(path)) != QMessageBox::Yes)
+        return;
+    if (auto r = m_document->open(path); !r) {
+        showError(tr("Cannot reload the tool table"),
+            r.error().text() + u"\n\n"_s + tr("The table on screen has not been changed."));
+        return;
+    }
+    m_fileWatcher->watch(path);
+    statusBar()->showMessage(tr("Reloaded %1").arg(path), 5000);
 }
 
 void MainWindow::createMachineActions()
@@ -243,6 +264,7 @@ bool MainWindow::openFile(const QString &path)
             r.error().text() + u"\n\n"_s + tr("The table on screen has not been changed."));
         return false;
     }
+    m_fileWatcher->watch(path);
     AppSettings settings;
     settings.addRecentFile(QFileInfo(path).absoluteFilePath());
     settings.setLastDirectory(QFileInfo(path).absolutePath());
@@ -253,8 +275,10 @@ bool MainWindow::openFile(const QString &path)
 
 void MainWindow::newTable()
 {
-    if (maybeSave())
+    if (maybeSave()) {
         m_document->newTable();
+        m_fileWatcher->watch({});
+    }
 }
 
 void MainWindow::open()
@@ -288,6 +312,7 @@ bool MainWindow::save()
         showError(tr("Cannot save the tool table"), r.error().text());
         return false;
     }
+    m_fileWatcher->watch(m_document->filePath());
     statusBar()->showMessage(tr("Saved %1").arg(m_document->filePath()), 5000);
     return true;
 }
@@ -306,6 +331,7 @@ bool MainWindow::saveAs()
         showError(tr("Cannot save the tool table"), r.error().text());
         return false;
     }
+    m_fileWatcher->watch(path);
     AppSettings settings;
     settings.addRecentFile(QFileInfo(path).absoluteFilePath());
     settings.setLastDirectory(QFileInfo(path).absolutePath());

@@ -10,6 +10,7 @@ class QMenu;
 namespace Toffee {
 
 class ConsoleDock;
+class FileWatcher;
 class MachineConnection;
 class MachineDock;
 class ToolDocument;
@@ -40,6 +41,7 @@ private:
     void createActions();
     void createMachineActions();
     void updateMachineStatus();
+    void fileChangedOnDisk(const QString &path);
     void newTable();
     void open();
     bool save();
@@ -62,6 +64,7 @@ private:
     MachineDock *m_machineDock;
     ConsoleDock *m_consoleDock;
     QLabel *m_machineLabel = nullptr;
+    FileWatcher *m_fileWatcher;
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;

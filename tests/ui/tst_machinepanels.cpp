@@ -18,34 +18,17 @@
 #include "emulator/carveraemulator.h"
 #include "machineconnection.h"
 #include "mainwindow.h"
+#include "messageboxes.h"
 #include "tooldocument.h"
 #include "tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
+using Toffee::Test::answerNextBox;
 
 namespace {
 
 const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
-
-// Clicks `buttonName` (an object name) or the standard `button` in the next modal box, and keeps its text.
-void answerNextBox(
-    QMessageBox::StandardButton button, QString *text = nullptr, const QString &buttonName = {})
-{
-    QTimer::singleShot(0, [=] {
-        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
-        if (!box) {
-            answerNextBox(button, text, buttonName); // not up yet
-            return;
-        }
-        if (text)
-            *text = box->text() + u'\n' + box->informativeText();
-        QAbstractButton *b
-            = buttonName.isEmpty() ? box->button(button) : box->findChild<QAbstractButton *>(buttonName);
-        QVERIFY(b);
-        b->click();
-    });
-}
 
 struct Fixture
 {

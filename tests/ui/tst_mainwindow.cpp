@@ -2,39 +2,31 @@
 #include <QAction>
 #include <QApplication>
 #include <QDialogButtonBox>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTableView>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <QUndoStack>
 
 #include "mainwindow.h"
+#include "messageboxes.h"
 #include "tooldocument.h"
 #include "tooltablemodel.h"
 #include "tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
+using Toffee::Test::answerNextBox;
 
 namespace {
 
 const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
-
-// Answers the next message box with `button` once it is up.
-void answerNextMessageBox(QMessageBox::StandardButton button, QString *text = nullptr)
-{
-    QTimer::singleShot(0, [button, text] {
-        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
-        QVERIFY(box);
-        if (text)
-            *text = box->text();
-        box->button(button)->click();
-    });
-}
 
 } // namespace
 
@@ -119,7 +111,7 @@ private Q_SLOTS:
         QVERIFY(window.openFile(kExample));
         auto *view = window.findChild<QTableView *>(u"toolTable"_s);
         QString text;
-        answerNextMessageBox(QMessageBox::Ok, &text);
+        answerNextBox(QMessageBox::Ok, &text);
         QVERIFY(!view->model()->setData(view->model()->index(0, ToolTableModel::LengthWearColumn), u"250"_s));
         QVERIFY2(text.contains(u"out of range"_s), qPrintable(text));
         QCOMPARE(window.document()->table().find(1)->lengthWear, 0.0);
@@ -132,12 +124,39 @@ private Q_SLOTS:
         QVERIFY(window.openFile(kExample));
         window.findChild<QAction *>(u"actionAddTool"_s)->trigger();
         QString text;
-        answerNextMessageBox(QMessageBox::Cancel, &text);
+        answerNextBox(QMessageBox::Cancel, &text);
         QVERIFY(!window.close());
         QVERIFY(text.contains(u"not saved"_s));
         QVERIFY(window.isVisible());
-        answerNextMessageBox(QMessageBox::Discard);
+        answerNextBox(QMessageBox::Discard);
         QVERIFY(window.close());
+    }
+
+    void noticesAChangeOnDiskAndReloads()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"tools.json"_s);
+        QVERIFY(QFile::copy(kExample, path));
+        QFile::setPermissions(path, QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openFile(path));
+        window.findChild<QAction *>(u"actionAddTool"_s)->trigger();
+        window.findChild<QAction *>(u"actionSave"_s)->trigger();
+        QTest::qWait(400); // Toffee's own save is not a change from outside: no question, nothing reloaded
+        QVERIFY(!QApplication::activeModalWidget());
+        QCOMPARE(window.document()->table().size(), 7);
+
+        QString text;
+        answerNextBox(QMessageBox::Yes, &text);
+        QFile other(path); // another program rewrites the table
+        QVERIFY(other.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        other.write(
+            R"({"format": "toffee-tool-table", "version": 1, "units": "mm", "tools": [{"number": 42}]})");
+        other.close();
+        QTRY_VERIFY_WITH_TIMEOUT(text.contains(u"changed by another program"_s), 5000);
+        QTRY_COMPARE(window.document()->table().size(), 1);
+        QVERIFY(window.document()->table().contains(42));
     }
 
     void everyActionHasAShortcutAndAName()
