@@ -16,6 +16,7 @@ const auto RecentFiles = u"files/recent"_s;
 const auto ConnectionPort = u"machine/port"_s;
 const auto ConnectionBaud = u"machine/baud"_s;
 const auto Tolerance = u"machine/breakTestTolerance"_s;
+const auto DarkPalette = u"view/darkPalette"_s;
 } // namespace Key
 } // namespace
 
@@ -92,6 +93,16 @@ double AppSettings::breakTestTolerance() const
 void AppSettings::setBreakTestTolerance(double millimetres)
 {
     m_settings.setValue(Key::Tolerance, millimetres);
+}
+
+bool AppSettings::darkPalette() const
+{
+    return m_settings.value(Key::DarkPalette, false).toBool();
+}
+
+void AppSettings::setDarkPalette(bool dark)
+{
+    m_settings.setValue(Key::DarkPalette, dark);
 }
 
 } // namespace Toffee

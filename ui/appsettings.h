@@ -30,6 +30,9 @@ public:
     [[nodiscard]] double breakTestTolerance() const;
     void setBreakTestTolerance(double millimetres);
 
+    [[nodiscard]] bool darkPalette() const;
+    void setDarkPalette(bool dark);
+
     static constexpr int kMaxRecentFiles = 8;
 
 private:

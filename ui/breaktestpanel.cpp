@@ -9,6 +9,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 
+#include "appearance.h"
 #include "appsettings.h"
 #include "machineconnection.h"
 
@@ -49,6 +50,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
                                 .arg(MachineSession::kDefaultTolerance));
     m_tolerance->setValue(AppSettings().breakTestTolerance());
     m_run->setObjectName(u"runBreakTestButton"_s);
+    m_run->setIcon(themeIcon(u"breaktest"_s));
     m_run->setAccessibleName(tr("Run the tool break test"));
     m_run->setShortcut(QKeySequence(Qt::Key_F6));
     m_run->setToolTip(tr("Re-measure the tool and compare it with its stored TLO (M491.1) — F6"));
@@ -89,6 +91,8 @@ void BreakTestPanel::updateState()
 
 void BreakTestPanel::run(bool confirm)
 {
+    if (m_connection->state() != MachineConnection::State::Connected || m_connection->isBusy())
+        return;
     m_tolerance->interpretText(); // what is typed counts, after the field's own correction
     const double tolerance = m_tolerance->value();
     if (confirm

@@ -6,6 +6,7 @@
 #include <QPushButton>
 #include <QSerialPortInfo>
 
+#include "appearance.h"
 #include "appsettings.h"
 #include "machineconnection.h"
 
@@ -36,6 +37,7 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
     m_refresh->setObjectName(u"refreshPortsButton"_s);
     m_refresh->setAccessibleName(tr("Refresh the list of ports"));
     m_connect->setObjectName(u"connectButton"_s);
+    m_connect->setIcon(themeIcon(u"connect"_s));
 
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

@@ -7,6 +7,7 @@
 #include <QTime>
 #include <QVBoxLayout>
 
+#include "appearance.h"
 #include "machineconnection.h"
 
 using namespace Qt::StringLiterals;
@@ -61,7 +62,7 @@ void ConsoleDock::append(const QByteArray &line, bool outgoing)
         + QString::fromUtf8(line);
     auto *item = new QListWidgetItem(text, m_log);
     if (!outgoing && (line.startsWith("ALARM") || line.startsWith("ERROR") || line.startsWith("error:")))
-        item->setForeground(QColor(0xc0, 0x1c, 0x28));
+        item->setForeground(alarmColor(palette()));
     item->setHidden(!m_filter->text().isEmpty() && !text.contains(m_filter->text(), Qt::CaseInsensitive));
     while (m_log->count() > kMaxLines)
         delete m_log->takeItem(0);

@@ -3,6 +3,7 @@
 
 #include <QGroupBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QVBoxLayout>
 
 #include "breaktestpanel.h"
@@ -46,6 +47,9 @@ MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, 
     layout->addStretch(1);
     auto *scroll = new QScrollArea;
     scroll->setWidget(body);
+    // Wide enough for every panel's controls; only the height scrolls.
+    scroll->setMinimumWidth(body->sizeHint().width() + scroll->verticalScrollBar()->sizeHint().width() + 4);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     setWidget(scroll);

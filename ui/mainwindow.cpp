@@ -6,6 +6,7 @@
 #include <QCloseEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHash>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -15,6 +16,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 
+#include "appearance.h"
 #include "appsettings.h"
 #include "breaktestpanel.h"
 #include "connectionpanel.h"
@@ -32,6 +34,24 @@ using namespace Qt::StringLiterals;
 namespace Toffee {
 
 namespace {
+
+// The icon of each action, by its object name (empty: none).
+QString iconFor(const QString &action)
+{
+    static const QHash<QString, QString> icons = {
+        { u"actionNew"_s, u"new"_s },
+        { u"actionOpen"_s, u"open"_s },
+        { u"actionSave"_s, u"save"_s },
+        { u"actionAddTool"_s, u"add"_s },
+        { u"actionRemoveTool"_s, u"remove"_s },
+        { u"actionProbe"_s, u"probe"_s },
+        { u"actionBreakTest"_s, u"breaktest"_s },
+        { u"actionUnlock"_s, u"unlock"_s },
+        { u"actionStop"_s, u"stop"_s },
+        { u"actionConnect"_s, u"connect"_s },
+    };
+    return icons.value(action);
+}
 
 QString fileFilters()
 {
@@ -51,6 +71,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_fileWatcher(new FileWatcher(this))
 {
     setObjectName(u"mainWindow"_s);
+    setWindowIcon(themeIcon(u"toffee"_s));
     setCentralWidget(m_tablePanel);
     addDockWidget(Qt::RightDockWidgetArea, m_machineDock);
     addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
@@ -97,21 +118,29 @@ MainWindow::MainWindow(QWidget *parent)
 
 MainWindow::~MainWindow() = default;
 
+template<typename Slot>
+QAction *MainWindow::addMenuAction(
+    QMenu *menu, const QString &name, const QString &text, const QKeySequence &shortcut, Slot slot)
+{
+    auto *action = new QAction(text, this);
+    action->setObjectName(name);
+    action->setShortcut(shortcut);
+    action->setIcon(themeIcon(iconFor(name)));
+    connect(action, &QAction::triggered, this, slot);
+    menu->addAction(action);
+    return action;
+}
+
 void MainWindow::createActions()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
     QToolBar *toolBar = addToolBar(tr("Main"));
     toolBar->setObjectName(u"mainToolBar"_s);
 
-    auto add
-        = [this](QMenu *menu, const QString &name, const QString &text, QKeySequence shortcut, auto slot) {
-              auto *action = new QAction(text, this);
-              action->setObjectName(name);
-              action->setShortcut(shortcut);
-              connect(action, &QAction::triggered, this, slot);
-              menu->addAction(action);
-              return action;
-          };
+    auto add = [this](QMenu *menu, const QString &name, const QString &text, const QKeySequence &shortcut,
+                   auto slot) {
+        return addMenuAction(menu, name, text, shortcut, slot);
+    };
     toolBar->addAction(add(file, u"actionNew"_s, tr("&New"), QKeySequence::New, &MainWindow::newTable));
     toolBar->addAction(add(file, u"actionOpen"_s, tr("&Open…"), QKeySequence::Open, &MainWindow::open));
     m_recentMenu = file->addMenu(tr("Open &Recent"));
@@ -130,9 +159,11 @@ void MainWindow::createActions()
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
     QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setObjectName(u"actionUndo"_s);
+    undo->setIcon(themeIcon(u"undo"_s));
     undo->setShortcut(QKeySequence::Undo);
     QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setObjectName(u"actionRedo"_s);
+    redo->setIcon(themeIcon(u"redo"_s));
     redo->setShortcut(QKeySequence::Redo);
     edit->addAction(undo);
     edit->addAction(redo);
@@ -177,25 +208,24 @@ void MainWindow::fileChangedOnDisk(const QString &path)
 void MainWindow::createMachineActions()
 {
     QMenu *machine = menuBar()->addMenu(tr("&Machine"));
-    auto add = [this, machine](const QString &name, const QString &text, QKeySequence shortcut, auto slot) {
-        auto *action = new QAction(text, this);
-        action->setObjectName(name);
-        action->setShortcut(shortcut);
-        connect(action, &QAction::triggered, this, slot);
-        machine->addAction(action);
-        return action;
-    };
-    add(u"actionConnect"_s, tr("&Connect / Disconnect"), QKeySequence(Qt::CTRL | Qt::Key_K),
-        [this] { m_machineDock->connectionPanel()->toggleConnection(); });
+    auto add
+        = [this, machine](const QString &name, const QString &text, const QKeySequence &shortcut, auto slot) {
+              return addMenuAction(machine, name, text, shortcut, slot);
+          };
+    QToolBar *toolBar = addToolBar(tr("Machine"));
+    toolBar->setObjectName(u"machineToolBar"_s);
+    toolBar->addAction(
+        add(u"actionConnect"_s, tr("&Connect / Disconnect"), QKeySequence(Qt::CTRL | Qt::Key_K),
+            [this] { m_machineDock->connectionPanel()->toggleConnection(); }));
     machine->addSeparator();
-    add(u"actionProbe"_s, tr("&Probe Current Tool…"), QKeySequence(Qt::CTRL | Qt::Key_P),
-        [this] { m_machineDock->probePanel()->probe(); });
-    add(u"actionBreakTest"_s, tr("&Break Test…"), QKeySequence(Qt::CTRL | Qt::Key_B),
-        [this] { m_machineDock->breakTestPanel()->run(); });
-    add(u"actionUnlock"_s, tr("&Unlock"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
-        [this] { m_machineDock->tloPanel()->unlock(); });
-    add(u"actionStop"_s, tr("&Stop the Machine"), QKeySequence(Qt::CTRL | Qt::Key_Period),
-        [this] { m_machineDock->probePanel()->cancel(); });
+    toolBar->addAction(add(u"actionProbe"_s, tr("&Probe Current Tool…"), QKeySequence(Qt::CTRL | Qt::Key_P),
+        [this] { m_machineDock->probePanel()->probe(); }));
+    toolBar->addAction(add(u"actionBreakTest"_s, tr("&Break Test…"), QKeySequence(Qt::CTRL | Qt::Key_B),
+        [this] { m_machineDock->breakTestPanel()->run(); }));
+    toolBar->addAction(add(u"actionUnlock"_s, tr("&Unlock"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+        [this] { m_machineDock->tloPanel()->unlock(); }));
+    toolBar->addAction(add(u"actionStop"_s, tr("&Stop the Machine"), QKeySequence(Qt::CTRL | Qt::Key_Period),
+        [this] { m_machineDock->probePanel()->cancel(); }));
     QMenu *view = menuBar()->addMenu(tr("&View"));
     QAction *machineView = m_machineDock->toggleViewAction();
     machineView->setObjectName(u"actionShowMachine"_s);
@@ -205,6 +235,17 @@ void MainWindow::createMachineActions()
     consoleView->setObjectName(u"actionShowConsole"_s);
     consoleView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_2));
     view->addAction(consoleView);
+    view->addSeparator();
+    auto *dark = new QAction(tr("&Dark Palette"), this);
+    dark->setObjectName(u"actionDarkPalette"_s);
+    dark->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
+    dark->setCheckable(true);
+    dark->setChecked(palette().color(QPalette::Window).lightness() < 128);
+    connect(dark, &QAction::toggled, this, [](bool on) {
+        AppSettings().setDarkPalette(on);
+        applyPalette(on);
+    });
+    view->addAction(dark);
 }
 
 void MainWindow::updateMachineStatus()
@@ -226,6 +267,14 @@ void MainWindow::updateMachineStatus()
     }
     }
     m_machineLabel->setText(text);
+    const bool ready
+        = m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy();
+    for (const char *name : { "actionProbe", "actionBreakTest", "actionUnlock" }) {
+        if (auto *action = findChild<QAction *>(QString::fromLatin1(name)))
+            action->setEnabled(ready);
+    }
+    if (auto *stop = findChild<QAction *>(u"actionStop"_s))
+        stop->setEnabled(m_connection->state() == MachineConnection::State::Connected);
 }
 
 void MainWindow::updateTitle()

@@ -38,6 +38,9 @@ protected:
     void closeEvent(QCloseEvent *event) override;
 
 private:
+    template<typename Slot>
+    QAction *addMenuAction(QMenu *menu, const QString &name, const QString &text, const QKeySequence &shortcut,
+                           Slot slot);
     void createActions();
     void createMachineActions();
     void updateMachineStatus();

@@ -135,6 +135,8 @@ void OffsetEditor::updatePreview()
 
 void OffsetEditor::send(bool confirm)
 {
+    if (m_connection->state() != MachineConnection::State::Connected || m_connection->isBusy())
+        return;
     const Mode mode = Mode(m_mode->currentData().toInt());
     const auto target = targetTlo();
     if (mode != AboveZ0 && !target)

@@ -7,6 +7,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 
+#include "appearance.h"
 #include "machineconnection.h"
 #include "tooldocument.h"
 
@@ -25,6 +26,7 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     , m_result(new QLabel(this))
 {
     m_probe->setObjectName(u"probeButton"_s);
+    m_probe->setIcon(themeIcon(u"probe"_s));
     m_probe->setAccessibleName(tr("Probe the current tool on the tool setter"));
     m_probe->setShortcut(QKeySequence(Qt::Key_F5));
     m_probe->setToolTip(tr("Measure the tool in the spindle on the tool setter (M491) — F5"));
@@ -38,6 +40,7 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     m_progress->setRange(0, 0);
     m_progress->hide();
     m_cancel->setObjectName(u"cancelButton"_s);
+    m_cancel->setIcon(themeIcon(u"stop"_s));
     m_cancel->setAccessibleName(tr("Stop the machine"));
     m_cancel->setShortcut(QKeySequence(Qt::Key_Escape));
     m_cancel->setToolTip(tr("Stop the machine now (Ctrl-X to the controller) — Esc"));
@@ -94,6 +97,8 @@ void ProbePanel::report(const SessionResult &result, const QString &title)
 
 void ProbePanel::probe(bool confirm)
 {
+    if (m_connection->state() != MachineConnection::State::Connected || m_connection->isBusy())
+        return;
     const auto tool = m_connection->session() ? m_connection->session()->activeTool() : std::nullopt;
     const QString name = tool ? u"T"_s + QString::number(*tool) : tr("the current tool");
     if (confirm
@@ -128,6 +133,8 @@ void ProbePanel::probe(bool confirm)
 
 void ProbePanel::restore(bool confirm)
 {
+    if (m_connection->state() != MachineConnection::State::Connected || m_connection->isBusy())
+        return;
     const Tool *tool = m_document->table().find(m_selectedTool);
     if (!tool || !tool->measuredTlo)
         return;

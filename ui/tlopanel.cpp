@@ -6,6 +6,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 
+#include "appearance.h"
 #include "machineconnection.h"
 
 using namespace Qt::StringLiterals;
@@ -45,6 +46,7 @@ TloPanel::TloPanel(MachineConnection *connection, QWidget *parent)
     big.setBold(true);
     m_tlo->setFont(big);
     m_unlock->setObjectName(u"unlockButton"_s);
+    m_unlock->setIcon(themeIcon(u"unlock"_s));
     m_unlock->setAccessibleName(tr("Unlock the machine"));
     m_unlock->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_U));
     m_unlock->setToolTip(tr("Clear the halt ($X) — Ctrl+Shift+U"));

@@ -6,6 +6,8 @@
 #include <QElapsedTimer>
 #include <QStandardPaths>
 
+#include "appearance.h"
+#include "appsettings.h"
 #include "connectionpanel.h"
 #include "machineconnection.h"
 #include "machinedock.h"
@@ -39,13 +41,15 @@ int main(int argc, char *argv[])
         QApplication::translate("main",
             "Open the window, connect to the emulator, load the example table, probe, "
             "render once, and exit (0 when all went well)."));
-    parser.addOptions({ emulator, port, baud, selfTest });
+    const QCommandLineOption dark(u"dark"_s, QApplication::translate("main", "Use the dark palette."));
+    parser.addOptions({ emulator, port, baud, selfTest, dark });
     parser.addPositionalArgument(
         u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
     parser.process(app);
 
     if (parser.isSet(selfTest))
         QStandardPaths::setTestModeEnabled(true); // a smoke test leaves the user's settings alone
+    Toffee::applyPalette(parser.isSet(dark) || Toffee::AppSettings().darkPalette());
     Toffee::MainWindow window;
     if (parser.isSet(selfTest)) {
         Toffee::SelfTest test(&window, [](int code, const QString &message) {

@@ -159,6 +159,29 @@ private Q_SLOTS:
         QVERIFY(window.document()->table().contains(42));
     }
 
+    void machineActionsWaitForAConnection()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(!window.findChild<QAction *>(u"actionProbe"_s)->isEnabled());
+        QVERIFY(!window.findChild<QAction *>(u"actionBreakTest"_s)->isEnabled());
+        window.findChild<QAction *>(u"actionProbe"_s)->trigger(); // even forced: no question, nothing sent
+        QVERIFY(!QApplication::activeModalWidget());
+    }
+
+    void toolbarActionsHaveIconsThatRender()
+    {
+        MainWindow window;
+        for (const char *name : { "actionNew", "actionOpen", "actionSave", "actionAddTool",
+                 "actionRemoveTool", "actionUndo", "actionRedo", "actionProbe", "actionBreakTest",
+                 "actionUnlock", "actionStop", "actionConnect" }) {
+            auto *action = window.findChild<QAction *>(QString::fromLatin1(name));
+            QVERIFY2(action, name);
+            QVERIFY2(!action->icon().pixmap(24, 24).isNull(), name); // the SVG icon engine is there
+        }
+        QVERIFY(!window.windowIcon().pixmap(64, 64).isNull());
+    }
+
     void everyActionHasAShortcutAndAName()
     {
         MainWindow window;
