@@ -48,9 +48,10 @@ constexpr const char *kColumnNames[ColumnCount] = {
     "linuxcnc",
 };
 
+// Free functions translate in the context lupdate gives them: the namespace.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("Toffee::CsvFormat", text);
+    return QCoreApplication::translate("Toffee", text);
 }
 
 // One row: each field a view into the file, or into `unescaped` for a quoted field with doubled quotes.

@@ -38,9 +38,10 @@ const auto Notes = "notes"_L1;
 const auto LinuxCnc = "linuxcnc"_L1;
 } // namespace Key
 
+// Free functions translate in the context lupdate gives them: the namespace.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("Toffee::JsonFormat", text);
+    return QCoreApplication::translate("Toffee", text);
 }
 
 // A JSON value that is not an object or array (those are parsed and kept as "Composite").
@@ -55,6 +56,8 @@ struct Scalar
 // line of the value at fault, and no document tree is built.
 class JsonScanner
 {
+    Q_DECLARE_TR_FUNCTIONS(Toffee::JsonScanner)
+
 public:
     explicit JsonScanner(QByteArrayView data)
         : m_p(data.data())

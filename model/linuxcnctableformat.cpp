@@ -19,9 +19,10 @@ namespace Toffee {
 
 namespace {
 
+// Free functions translate in the context lupdate gives them: the namespace.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("Toffee::LinuxCncFormat", text);
+    return QCoreApplication::translate("Toffee", text);
 }
 
 bool isSpace(char c)

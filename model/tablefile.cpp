@@ -14,9 +14,10 @@ namespace {
 
 constexpr qint64 kMaxFileBytes = 256LL * 1024 * 1024;
 
+// Free functions translate in the context lupdate gives them: the namespace.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("Toffee::TableFile", text);
+    return QCoreApplication::translate("Toffee", text);
 }
 
 } // namespace

@@ -1,20 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "toolcommands.h"
 
-#include <QCoreApplication>
-
 #include "tooltablemodel.h"
 
 namespace Toffee {
-
-namespace {
-
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee::ToolCommands", text);
-}
-
-} // namespace
 
 AddToolCommand::AddToolCommand(ToolTableModel *model, const Tool &tool)
     : QUndoCommand(tr("Add tool T%1").arg(tool.number))

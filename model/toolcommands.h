@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QCoreApplication>
+
 #include <QUndoCommand>
 
 #include "tooltable.h"
@@ -14,6 +16,8 @@ class ToolTableModel;
 
 class AddToolCommand final : public QUndoCommand
 {
+    Q_DECLARE_TR_FUNCTIONS(Toffee::AddToolCommand)
+
 public:
     AddToolCommand(ToolTableModel *model, const Tool &tool);
     void redo() override;
@@ -26,6 +30,8 @@ private:
 
 class RemoveToolsCommand final : public QUndoCommand
 {
+    Q_DECLARE_TR_FUNCTIONS(Toffee::RemoveToolsCommand)
+
 public:
     RemoveToolsCommand(ToolTableModel *model, const QList<Tool> &tools);
     void redo() override;
@@ -38,6 +44,8 @@ private:
 
 class EditToolCommand final : public QUndoCommand
 {
+    Q_DECLARE_TR_FUNCTIONS(Toffee::EditToolCommand)
+
 public:
     EditToolCommand(ToolTableModel *model, const Tool &before, const Tool &after);
     void redo() override;

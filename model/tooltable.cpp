@@ -13,9 +13,10 @@ namespace Toffee {
 
 namespace {
 
+// Free functions translate in the context lupdate gives them: the namespace.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("Toffee::ToolTable", text);
+    return QCoreApplication::translate("Toffee", text);
 }
 
 Error duplicateError(int number)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QCoreApplication>
+
 #include <QList>
 
 #include "result.h"
@@ -13,6 +15,8 @@ namespace Toffee {
 // Every mutator validates first; a refused change leaves the table exactly as it was.
 class ToolTable
 {
+    Q_DECLARE_TR_FUNCTIONS(Toffee::ToolTable)
+
 public:
     ToolTable() = default;
     explicit ToolTable(Units units)

@@ -14,9 +14,10 @@ namespace Toffee {
 
 namespace {
 
+// Free functions translate in the context lupdate gives them: the namespace.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("Toffee::ToolValidation", text);
+    return QCoreApplication::translate("Toffee", text);
 }
 
 QString shown(double value, Units units)

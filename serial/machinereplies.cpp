@@ -12,9 +12,10 @@ namespace Toffee {
 
 namespace {
 
+// Free functions translate in the context lupdate gives them: the namespace.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("Toffee::MachineReplies", text);
+    return QCoreApplication::translate("Toffee", text);
 }
 
 // "a,b,c" into up to three numbers; the status report has five axes, the first three are X Y Z.
