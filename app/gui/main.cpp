@@ -13,6 +13,7 @@
 #include "machinedock.h"
 #include "mainwindow.h"
 #include "selftest.h"
+#include "translations.h"
 
 using namespace Qt::StringLiterals;
 
@@ -42,10 +43,14 @@ int main(int argc, char *argv[])
             "Open the window, connect to the emulator, load the example table, probe, "
             "render once, and exit (0 when all went well)."));
     const QCommandLineOption dark(u"dark"_s, QApplication::translate("main", "Use the dark palette."));
-    parser.addOptions({ emulator, port, baud, selfTest, dark });
+    const QCommandLineOption lang(u"lang"_s,
+        QApplication::translate("main", "Language: de, zh_CN or en (default: the system's)."), u"LANGUAGE"_s);
+    parser.addOptions({ emulator, port, baud, selfTest, dark, lang });
     parser.addPositionalArgument(
         u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
     parser.process(app);
+    if (parser.value(lang) != u"en")
+        Toffee::installTranslations(&app, parser.value(lang));
 
     if (parser.isSet(selfTest))
         QStandardPaths::setTestModeEnabled(true); // a smoke test leaves the user's settings alone

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The translations are complete, and what the window shows really comes out translated.
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QHeaderView>
+#include <QMenuBar>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QTranslator>
+#include <QXmlStreamReader>
+
+#include "mainwindow.h"
+#include "tooldocument.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+struct Message
+{
+    QString source;
+    QString translation;
+    QString type;
+};
+
+QList<Message> readTs(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    QXmlStreamReader xml(&file);
+    QList<Message> messages;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (xml.isStartElement() && xml.name() == u"message")
+            messages.append(Message {});
+        else if (xml.isStartElement() && xml.name() == u"source")
+            messages.last().source = xml.readElementText();
+        else if (xml.isStartElement() && xml.name() == u"translation") {
+            messages.last().type = xml.attributes().value(u"type"_s).toString();
+            messages.last().translation = xml.readElementText();
+        }
+    }
+    return messages;
+}
+
+QStringList placeholders(const QString &text)
+{
+    QStringList found;
+    auto it = QRegularExpression(u"%\\d"_s).globalMatch(text);
+    while (it.hasNext())
+        found << it.next().captured();
+    found.sort();
+    found.removeDuplicates();
+    return found;
+}
+
+} // namespace
+
+class TestTranslations : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void everyStringIsTranslated_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::newRow("German") << u"toffee_de.ts"_s;
+        QTest::newRow("Simplified Chinese") << u"toffee_zh_CN.ts"_s;
+    }
+    void everyStringIsTranslated()
+    {
+        QFETCH(QString, file);
+        const QList<Message> messages = readTs(QStringLiteral(TOFFEE_SOURCE_DIR "/translations/") + file);
+        QVERIFY(messages.size() > 300);
+        for (const Message &m : messages) {
+            QVERIFY2(m.type.isEmpty(), qPrintable(m.type + u": "_s + m.source));
+            QVERIFY2(!m.translation.isEmpty(), qPrintable(m.source));
+            QVERIFY2(placeholders(m.source) == placeholders(m.translation), qPrintable(m.source));
+            QVERIFY2(m.source.contains(u'&') == m.translation.contains(u'&'), qPrintable(m.source));
+        }
+    }
+
+    void theFilesCoverEveryStringInTheSources()
+    {
+        // lupdate over the sources into a copy: nothing new may turn up (run `cmake --build build -t
+        // update_translations` and translate, when this fails).
+        QTemporaryDir dir;
+        const QString copy = dir.filePath(u"toffee_de.ts"_s);
+        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/translations/toffee_de.ts"), copy));
+        QFile::setPermissions(copy, QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+        QProcess lupdate;
+        lupdate.setWorkingDirectory(QStringLiteral(TOFFEE_SOURCE_DIR));
+        lupdate.start(QStringLiteral(TOFFEE_LUPDATE),
+            { u"-no-obsolete"_s, u"-locations"_s, u"none"_s, u"model"_s, u"serial"_s, u"ui"_s, u"app/gui"_s,
+                u"-ts"_s, copy });
+        QVERIFY(lupdate.waitForFinished(60000));
+        QCOMPARE(lupdate.exitCode(), 0);
+        for (const Message &m : readTs(copy))
+            QVERIFY2(m.type.isEmpty(), qPrintable(u"not in translations/*.ts yet: "_s + m.source));
+    }
+
+    void theWindowSpeaksGerman()
+    {
+        QTranslator german;
+        QVERIFY(german.load(QStringLiteral(TOFFEE_BUILD_DIR "/translations/toffee_de.qm")));
+        QCoreApplication::installTranslator(&german);
+        {
+            MainWindow window;
+            QStringList menus;
+            for (QAction *a : window.menuBar()->actions())
+                menus << a->text();
+            QVERIFY2(
+                menus.contains(u"&Datei"_s) && menus.contains(u"&Maschine"_s), qPrintable(menus.join(u' ')));
+            auto *view = window.findChild<QTableView *>(u"toolTable"_s);
+            QCOMPARE(view->model()->headerData(0, Qt::Horizontal).toString(), u"Werkzeug"_s);
+            // A message from the model library, a free function's tr(): the contexts must line up.
+            QVERIFY(window.document()->addTool(Tool { 1, 1, {}, 10, 0, 0, 0, {}, {}, {}, {} }).ok());
+            QSignalSpy rejected(window.document()->model(), &ToolTableModel::editRejected);
+            QTimer::singleShot(0, [] {
+                if (auto *box = QApplication::activeModalWidget())
+                    box->close();
+            });
+            QVERIFY(!window.document()->model()->setData(
+                window.document()->model()->index(0, ToolTableModel::LengthWearColumn), u"250"_s));
+            QCOMPARE(rejected.size(), 1);
+            const QString message = rejected.front().front().toString();
+            QVERIFY2(message.contains(u"Längenverschleiß"_s) && message.contains(u"außerhalb des Bereichs"_s),
+                qPrintable(message));
+        }
+        QCoreApplication::removeTranslator(&german);
+    }
+};
+
+QTEST_MAIN(TestTranslations)
+#include "tst_translations.moc"

@@ -1,0 +1,1469 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>Toffee</name>
+    <message>
+        <source>tool number %1 is out of range; use %2 to %3.</source>
+        <translation>Werkzeugnummer %1 liegt außerhalb des Bereichs; verwenden Sie %2 bis %3.</translation>
+    </message>
+    <message>
+        <source>pocket %1 is out of range; use %2 to %3.</source>
+        <translation>Platz %1 liegt außerhalb des Bereichs; verwenden Sie %2 bis %3.</translation>
+    </message>
+    <message>
+        <source>%1 is not a number; enter a value from %2 to %3 %4.</source>
+        <translation>%1 ist keine Zahl; geben Sie einen Wert von %2 bis %3 %4 ein.</translation>
+    </message>
+    <message>
+        <source>%1 %2 %3 is out of range; a controller takes %4 to %5 %3.</source>
+        <translation>%1 %2 %3 liegt außerhalb des Bereichs; eine Steuerung nimmt %4 bis %5 %3.</translation>
+    </message>
+    <message>
+        <source>"%1" is not a LinuxCNC tool field (X, Y, A, B, C, U, V, W, I, J or Q0-Q9).</source>
+        <translation>„%1“ ist kein LinuxCNC-Werkzeugfeld (X, Y, A, B, C, U, V, W, I, J oder Q0-Q9).</translation>
+    </message>
+    <message>
+        <source>the description is %1 characters long; keep it to %2.</source>
+        <translation>Die Beschreibung ist %1 Zeichen lang; höchstens %2 sind erlaubt.</translation>
+    </message>
+    <message>
+        <source>the description must be one line of text, without tabs or line breaks.</source>
+        <translation>Die Beschreibung muss eine Textzeile sein, ohne Tabulatoren oder Zeilenumbrüche.</translation>
+    </message>
+    <message>
+        <source>the notes are %1 characters long; keep them to %2.</source>
+        <translation>Die Notizen sind %1 Zeichen lang; höchstens %2 sind erlaubt.</translation>
+    </message>
+    <message>
+        <source>length geometry</source>
+        <translation>Längengeometrie</translation>
+    </message>
+    <message>
+        <source>length wear</source>
+        <translation>Längenverschleiß</translation>
+    </message>
+    <message>
+        <source>radius geometry</source>
+        <translation>Radiusgeometrie</translation>
+    </message>
+    <message>
+        <source>radius wear</source>
+        <translation>Radiusverschleiß</translation>
+    </message>
+    <message>
+        <source>measured TLO</source>
+        <translation>gemessene Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>tool number %1 is already in the table; tool numbers must be unique.</source>
+        <translation>Werkzeugnummer %1 ist schon in der Tabelle; Werkzeugnummern müssen eindeutig sein.</translation>
+    </message>
+    <message>
+        <source>Toffee tool table (JSON)</source>
+        <translation>Toffee-Werkzeugtabelle (JSON)</translation>
+    </message>
+    <message>
+        <source>LinuxCNC tool table</source>
+        <translation>LinuxCNC-Werkzeugtabelle</translation>
+    </message>
+    <message>
+        <source>CSV spreadsheet</source>
+        <translation>CSV-Tabelle</translation>
+    </message>
+    <message>
+        <source>unknown table format.</source>
+        <translation>Unbekanntes Tabellenformat.</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no wear columns: wear is added into the length and diameter.</source>
+        <translation>Eine LinuxCNC-Tabelle hat keine Verschleißspalten: Der Verschleiß wird in Länge und Durchmesser eingerechnet.</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for measured TLOs: they are not saved.</source>
+        <translation>Eine LinuxCNC-Tabelle hat keinen Platz für gemessene Längenkorrekturen: Sie werden nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for notes: they are not saved.</source>
+        <translation>Eine LinuxCNC-Tabelle hat keinen Platz für Notizen: Sie werden nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table does not record its units: the numbers are written in inches.</source>
+        <translation>Eine LinuxCNC-Tabelle speichert keine Einheit: Die Zahlen werden in Zoll geschrieben.</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type; use a .json, .tbl or .csv file.</source>
+        <translation>%1: unbekannter Dateityp; verwenden Sie eine .json-, .tbl- oder .csv-Datei.</translation>
+    </message>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1: lässt sich nicht öffnen: %2</translation>
+    </message>
+    <message>
+        <source>%1: the file is %2 MB, too large to be a tool table.</source>
+        <translation>%1: Die Datei ist %2 MB groß, zu groß für eine Werkzeugtabelle.</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1: lässt sich nicht lesen: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: lässt sich nicht schreiben: %2</translation>
+    </message>
+    <message>
+        <source>%1: saving failed, the old file is unchanged: %2</source>
+        <translation>%1: Speichern fehlgeschlagen, die alte Datei ist unverändert: %2</translation>
+    </message>
+    <message>
+        <source>"%1" must be a whole number.</source>
+        <translation>„%1“ muss eine ganze Zahl sein.</translation>
+    </message>
+    <message>
+        <source>"%1" must be a number.</source>
+        <translation>„%1“ muss eine Zahl sein.</translation>
+    </message>
+    <message>
+        <source>"%1" must be text.</source>
+        <translation>„%1“ muss Text sein.</translation>
+    </message>
+    <message>
+        <source>each entry of "tools" must be a JSON object such as {"number": 1}.</source>
+        <translation>Jeder Eintrag in „tools“ muss ein JSON-Objekt sein, etwa {"number": 1}.</translation>
+    </message>
+    <message>
+        <source>unknown field "%1" in a tool.</source>
+        <translation>Unbekanntes Feld „%1“ in einem Werkzeug.</translation>
+    </message>
+    <message>
+        <source>the field "%1" appears twice in a tool.</source>
+        <translation>Das Feld „%1“ kommt in einem Werkzeug zweimal vor.</translation>
+    </message>
+    <message>
+        <source>"measured_at" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
+        <translation>„measured_at“ ist kein Datum mit Uhrzeit (ISO 8601 verwenden, z. B. 2026-11-22T10:15:00Z).</translation>
+    </message>
+    <message>
+        <source>a tool has no "number".</source>
+        <translation>Ein Werkzeug hat keine „number“.</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: the file is empty.</source>
+        <translation>Das ist kein gültiges JSON: Die Datei ist leer.</translation>
+    </message>
+    <message>
+        <source>this is not a Toffee tool table: the file must hold one JSON object.</source>
+        <translation>Das ist keine Toffee-Werkzeugtabelle: Die Datei muss genau ein JSON-Objekt enthalten.</translation>
+    </message>
+    <message>
+        <source>this is not a Toffee tool table: "format" must be "%1", before "tools".</source>
+        <translation>Das ist keine Toffee-Werkzeugtabelle: „format“ muss „%1“ sein und vor „tools“ stehen.</translation>
+    </message>
+    <message>
+        <source>"version" must come before "tools".</source>
+        <translation>„version“ muss vor „tools“ stehen.</translation>
+    </message>
+    <message>
+        <source>"tools" appears twice.</source>
+        <translation>„tools“ kommt zweimal vor.</translation>
+    </message>
+    <message>
+        <source>"tools" must be a list of tools.</source>
+        <translation>„tools“ muss eine Liste von Werkzeugen sein.</translation>
+    </message>
+    <message>
+        <source>this is not a Toffee tool table: "format" must be "%1".</source>
+        <translation>Das ist keine Toffee-Werkzeugtabelle: „format“ muss „%1“ sein.</translation>
+    </message>
+    <message>
+        <source>"version" must be a whole number from 1 up.</source>
+        <translation>„version“ muss eine ganze Zahl ab 1 sein.</translation>
+    </message>
+    <message>
+        <source>this table was written by a newer Toffee (format version %1); this one reads up to version %2. Update Toffee to open it.</source>
+        <translation>Diese Tabelle stammt von einem neueren Toffee (Formatversion %1); dieses liest bis Version %2. Aktualisieren Sie Toffee, um sie zu öffnen.</translation>
+    </message>
+    <message>
+        <source>"units" must be "mm" or "in".</source>
+        <translation>„units“ muss „mm“ oder „in“ sein.</translation>
+    </message>
+    <message>
+        <source>unknown field "%1" in the table.</source>
+        <translation>Unbekanntes Feld „%1“ in der Tabelle.</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: there is more text after the table.</source>
+        <translation>Das ist kein gültiges JSON: Nach der Tabelle folgt weiterer Text.</translation>
+    </message>
+    <message>
+        <source>the comment is not valid UTF-8 text.</source>
+        <translation>Der Kommentar ist kein gültiger UTF-8-Text.</translation>
+    </message>
+    <message>
+        <source>"%1": the field %2 appears twice.</source>
+        <translation>„%1“: Das Feld %2 kommt zweimal vor.</translation>
+    </message>
+    <message>
+        <source>"%1": %2 needs a whole number.</source>
+        <translation>„%1“: %2 braucht eine ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>"%1": the orientation Q must be 0 to 9.</source>
+        <translation>„%1“: Die Orientierung Q muss 0 bis 9 sein.</translation>
+    </message>
+    <message>
+        <source>"%1" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, J, Q and a ;comment.</source>
+        <translation>„%1“ ist kein Feld einer Werkzeugtabelle; eine Zeile enthält T, P, X, Y, Z, A, B, C, U, V, W, D, I, J, Q und einen ;Kommentar.</translation>
+    </message>
+    <message>
+        <source>"%1": %2 needs a number.</source>
+        <translation>„%1“: %2 braucht eine Zahl.</translation>
+    </message>
+    <message>
+        <source>the line has no tool number (T).</source>
+        <translation>Die Zeile hat keine Werkzeugnummer (T).</translation>
+    </message>
+    <message>
+        <source>T%1 has no pocket (P).</source>
+        <translation>T%1 hat keinen Platz (P).</translation>
+    </message>
+    <message>
+        <source>T%1: pocket %2 is out of range; use %3 to %4.</source>
+        <translation>T%1: Platz %2 liegt außerhalb des Bereichs; verwenden Sie %3 bis %4.</translation>
+    </message>
+    <message>
+        <source>the file holds binary data; it is not a LinuxCNC tool table.</source>
+        <translation>Die Datei enthält Binärdaten; sie ist keine LinuxCNC-Werkzeugtabelle.</translation>
+    </message>
+    <message>
+        <source>a quoted field is never closed; add the closing quote (").</source>
+        <translation>Ein Feld in Anführungszeichen wird nie geschlossen; ergänzen Sie das schließende Anführungszeichen (").</translation>
+    </message>
+    <message>
+        <source>text after a closing quote; put the whole field in quotes.</source>
+        <translation>Text nach einem schließenden Anführungszeichen; setzen Sie das ganze Feld in Anführungszeichen.</translation>
+    </message>
+    <message>
+        <source>a quote (") inside an unquoted field; put the whole field in quotes and double the quote.</source>
+        <translation>Ein Anführungszeichen (") in einem Feld ohne Anführungszeichen; setzen Sie das ganze Feld in Anführungszeichen und verdoppeln Sie das Zeichen.</translation>
+    </message>
+    <message>
+        <source>the file holds binary data; it is not a CSV table.</source>
+        <translation>Die Datei enthält Binärdaten; sie ist keine CSV-Tabelle.</translation>
+    </message>
+    <message>
+        <source>the file is not UTF-8 text; save it from the spreadsheet as "CSV UTF-8".</source>
+        <translation>Die Datei ist kein UTF-8-Text; speichern Sie sie in der Tabellenkalkulation als „CSV UTF-8“.</translation>
+    </message>
+    <message>
+        <source>the file is empty; a CSV tool table starts with a header row such as "number,pocket,description,...".</source>
+        <translation>Die Datei ist leer; eine CSV-Werkzeugtabelle beginnt mit einer Kopfzeile wie „number,pocket,description,...“.</translation>
+    </message>
+    <message>
+        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, units and linuxcnc.</source>
+        <translation>Unbekannte Spalte „%1“ in der Kopfzeile; die Spalten heißen number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, units und linuxcnc.</translation>
+    </message>
+    <message>
+        <source>the column "%1" appears twice in the header.</source>
+        <translation>Die Spalte „%1“ kommt in der Kopfzeile zweimal vor.</translation>
+    </message>
+    <message>
+        <source>the header has no "number" column.</source>
+        <translation>Die Kopfzeile hat keine Spalte „number“.</translation>
+    </message>
+    <message>
+        <source>this row has %1 fields but the header has %2.</source>
+        <translation>Diese Zeile hat %1 Felder, die Kopfzeile aber %2.</translation>
+    </message>
+    <message>
+        <source>%1 "%2" is not a number.</source>
+        <translation>%1 „%2“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>%1 "%2" is not a whole number.</source>
+        <translation>%1 „%2“ ist keine ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>the row has no tool number.</source>
+        <translation>Die Zeile hat keine Werkzeugnummer.</translation>
+    </message>
+    <message>
+        <source>measured_at "%1" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
+        <translation>measured_at „%1“ ist kein Datum mit Uhrzeit (ISO 8601 verwenden, z. B. 2026-11-22T10:15:00Z).</translation>
+    </message>
+    <message>
+        <source>units "%1" must be mm or in.</source>
+        <translation>Einheit „%1“ muss mm oder in sein.</translation>
+    </message>
+    <message>
+        <source>this row is in %1 but the rows above are in %2; a table has one unit.</source>
+        <translation>Diese Zeile ist in %1, die Zeilen darüber aber in %2; eine Tabelle hat eine Einheit.</translation>
+    </message>
+    <message>
+        <source>halt reason %1</source>
+        <translation>Haltgrund %1</translation>
+    </message>
+    <message>
+        <source>This halt needs a reset of the controller.</source>
+        <translation>Dieser Halt erfordert einen Reset der Steuerung.</translation>
+    </message>
+    <message>
+        <source>This halt needs the machine switched off and on again.</source>
+        <translation>Dieser Halt erfordert, die Maschine aus- und wieder einzuschalten.</translation>
+    </message>
+    <message>
+        <source>Check the machine, then Unlock ($X).</source>
+        <translation>Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::AddToolCommand</name>
+    <message>
+        <source>Add tool T%1</source>
+        <translation>Werkzeug T%1 hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::BreakTestPanel</name>
+    <message>
+        <source>Run Break Test</source>
+        <translation>Bruchtest starten</translation>
+    </message>
+    <message>
+        <source>Break-test tolerance in millimetres</source>
+        <translation>Toleranz des Bruchtests in Millimetern</translation>
+    </message>
+    <message>
+        <source>How far the new measurement may differ from the stored TLO; at least %1 mm, %2 mm by default.</source>
+        <translation>Wie weit die neue Messung von der gespeicherten Längenkorrektur abweichen darf; mindestens %1 mm, standardmäßig %2 mm.</translation>
+    </message>
+    <message>
+        <source>Run the tool break test</source>
+        <translation>Werkzeugbruchtest starten</translation>
+    </message>
+    <message>
+        <source>Re-measure the tool and compare it with its stored TLO (M491.1) — F6</source>
+        <translation>Werkzeug neu messen und mit der gespeicherten Längenkorrektur vergleichen (M491.1) — F6</translation>
+    </message>
+    <message>
+        <source>Tolerance:</source>
+        <translation>Toleranz:</translation>
+    </message>
+    <message>
+        <source>Stored TLO:</source>
+        <translation>Gespeicherte TLO:</translation>
+    </message>
+    <message>
+        <source>Measured TLO:</source>
+        <translation>Gemessene TLO:</translation>
+    </message>
+    <message>
+        <source>Difference:</source>
+        <translation>Abweichung:</translation>
+    </message>
+    <message>
+        <source>Run the break test?</source>
+        <translation>Bruchtest starten?</translation>
+    </message>
+    <message>
+        <source>The machine will move to the tool setter and measure the tool again, then compare it with its stored TLO (tolerance %1 mm). Keep hands clear.</source>
+        <translation>Die Maschine fährt zum Werkzeugtaster, misst das Werkzeug erneut und vergleicht es mit der gespeicherten Längenkorrektur (Toleranz %1 mm). Hände weg von der Maschine.</translation>
+    </message>
+    <message>
+        <source>Break test…</source>
+        <translation>Bruchtest …</translation>
+    </message>
+    <message>
+        <source>BROKEN TOOL</source>
+        <translation>WERKZEUGBRUCH</translation>
+    </message>
+    <message>
+        <source>Tool OK: within %1 mm.</source>
+        <translation>Werkzeug in Ordnung: innerhalb %1 mm.</translation>
+    </message>
+    <message>
+        <source>The break test did not run</source>
+        <translation>Der Bruchtest ist nicht gelaufen</translation>
+    </message>
+    <message>
+        <source>Broken tool</source>
+        <translation>Werkzeugbruch</translation>
+    </message>
+    <message>
+        <source>The tool may be broken. The machine has halted.</source>
+        <translation>Das Werkzeug ist möglicherweise gebrochen. Die Maschine hat angehalten.</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>Entsperren</translation>
+    </message>
+    <message>
+        <source>Leave Halted</source>
+        <translation>Angehalten lassen</translation>
+    </message>
+    <message>
+        <source>Unlock failed</source>
+        <translation>Entsperren fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ConnectionPanel</name>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>Machine port</source>
+        <translation>Maschinenanschluss</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baudrate</translation>
+    </message>
+    <message>
+        <source>Refresh the list of ports</source>
+        <translation>Liste der Anschlüsse aktualisieren</translation>
+    </message>
+    <message>
+        <source>Built-in emulator</source>
+        <translation>Eingebauter Emulator</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Verbinde …</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ConsoleDock</name>
+    <message>
+        <source>Console</source>
+        <translation>Konsole</translation>
+    </message>
+    <message>
+        <source>Lines sent to and received from the machine</source>
+        <translation>Zeilen, die an die Maschine gesendet und von ihr empfangen wurden</translation>
+    </message>
+    <message>
+        <source>Filter the console</source>
+        <translation>Konsole filtern</translation>
+    </message>
+    <message>
+        <source>Filter…</source>
+        <translation>Filtern …</translation>
+    </message>
+    <message>
+        <source>Command to send to the machine</source>
+        <translation>Befehl an die Maschine</translation>
+    </message>
+    <message>
+        <source>Type a command (e.g. M493.4) and press Enter; ↑ ↓ for history</source>
+        <translation>Befehl eingeben (z. B. M493.4) und Enter drücken; ↑ ↓ für den Verlauf</translation>
+    </message>
+    <message>
+        <source>not connected; connect first</source>
+        <translation>nicht verbunden; zuerst verbinden</translation>
+    </message>
+    <message>
+        <source>the machine is busy with %1; wait for it</source>
+        <translation>die Maschine ist mit %1 beschäftigt; bitte warten</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::EditToolCommand</name>
+    <message>
+        <source>Edit tool T%1</source>
+        <translation>Werkzeug T%1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::EmulatorTransport</name>
+    <message>
+        <source>The link to the emulator dropped.</source>
+        <translation>Die Verbindung zum Emulator ist abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The link to the emulator is not open.</source>
+        <translation>Die Verbindung zum Emulator ist nicht offen.</translation>
+    </message>
+    <message>
+        <source>built-in emulator</source>
+        <translation>eingebauter Emulator</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::Error</name>
+    <message>
+        <source>line %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JsonScanner</name>
+    <message>
+        <source>this is not valid JSON: expected %1.</source>
+        <translation>Das ist kein gültiges JSON: erwartet wurde %1.</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: a line break or control character inside a string; write it as \n.</source>
+        <translation>Das ist kein gültiges JSON: ein Zeilenumbruch oder Steuerzeichen in einer Zeichenkette; schreiben Sie ihn als \n.</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: a lone UTF-16 surrogate in a \u escape.</source>
+        <translation>Das ist kein gültiges JSON: ein einzelnes UTF-16-Surrogat in einer \u-Sequenz.</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: unknown escape \%1 in a string.</source>
+        <translation>Das ist kein gültiges JSON: unbekannte Escape-Sequenz \%1 in einer Zeichenkette.</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: a string is never closed.</source>
+        <translation>Das ist kein gültiges JSON: Eine Zeichenkette wird nie geschlossen.</translation>
+    </message>
+    <message>
+        <source>the number %1 is too large.</source>
+        <translation>Die Zahl %1 ist zu groß.</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON for a tool table: nested too deeply.</source>
+        <translation>Das ist kein gültiges JSON für eine Werkzeugtabelle: zu tief verschachtelt.</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: a \u escape needs four hex digits.</source>
+        <translation>Das ist kein gültiges JSON: Eine \u-Sequenz braucht vier Hexadezimalziffern.</translation>
+    </message>
+    <message>
+        <source>a string is not valid UTF-8 text.</source>
+        <translation>Eine Zeichenkette ist kein gültiger UTF-8-Text.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineConnection</name>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Getrennt.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineDock</name>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Tool length offset</source>
+        <translation>Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>Vermessen</translation>
+    </message>
+    <message>
+        <source>Set the offset by hand</source>
+        <translation>Korrektur von Hand setzen</translation>
+    </message>
+    <message>
+        <source>Tool break test</source>
+        <translation>Werkzeugbruchtest</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineLink</name>
+    <message>
+        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command's. Reconnect, and check the machine before you go on.</source>
+        <translation>Die Maschine hat auf „%1“ nicht innerhalb von %2 s geantwortet. Die Verbindung wurde geschlossen, weil eine späte Antwort für die des nächsten Befehls gehalten werden könnte. Verbinden Sie neu und prüfen Sie die Maschine, bevor Sie weitermachen.</translation>
+    </message>
+    <message>
+        <source>The machine halted: %1</source>
+        <translation>Die Maschine hat angehalten: %1</translation>
+    </message>
+    <message>
+        <source>Not connected to the machine; connect first.</source>
+        <translation>Nicht mit der Maschine verbunden; zuerst verbinden.</translation>
+    </message>
+    <message>
+        <source>The machine refused "%1": %2</source>
+        <translation>Die Maschine hat „%1“ abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>the link was closed</source>
+        <translation>die Verbindung wurde geschlossen</translation>
+    </message>
+    <message>
+        <source>The connection to the machine was lost while it ran "%1": %2</source>
+        <translation>Die Verbindung zur Maschine ging verloren, während sie „%1“ ausführte: %2</translation>
+    </message>
+    <message>
+        <source>The connection to the machine was lost: %1</source>
+        <translation>Die Verbindung zur Maschine ging verloren: %1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineSession</name>
+    <message>
+        <source>The break-test tolerance is not a number; enter a value such as 0.1 mm.</source>
+        <translation>Die Toleranz des Bruchtests ist keine Zahl; geben Sie einen Wert wie 0,1 mm ein.</translation>
+    </message>
+    <message>
+        <source>A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm or more (%3 mm is the default).</source>
+        <translation>Eine Bruchtest-Toleranz von %1 mm ist zu klein: Unter %2 mm hält die Maschine an. Verwenden Sie %2 mm oder mehr (Standard: %3 mm).</translation>
+    </message>
+    <message>
+        <source>A break-test tolerance of %1 mm is larger than any tool.</source>
+        <translation>Eine Bruchtest-Toleranz von %1 mm ist größer als jedes Werkzeug.</translation>
+    </message>
+    <message>
+        <source>%1 must be a number from -%2 to %2 mm.</source>
+        <translation>%1 muss eine Zahl von -%2 bis %2 mm sein.</translation>
+    </message>
+    <message>
+        <source>Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
+        <translation>Werkzeug %1 ist keine Werkzeugnummer; verwenden Sie 0 bis 999999 (-1 für eine leere Spindel).</translation>
+    </message>
+    <message>
+        <source>The machine stayed busy (%1) too long to connect. Wait for it to finish, or stop it, then connect again.</source>
+        <translation>Die Maschine war zu lange beschäftigt (%1), um zu verbinden. Warten Sie, bis sie fertig ist, oder halten Sie sie an, und verbinden Sie dann erneut.</translation>
+    </message>
+    <message>
+        <source>The machine answered but sent no status report; is this a Carvera?</source>
+        <translation>Die Maschine hat geantwortet, aber keinen Statusbericht gesendet; ist das eine Carvera?</translation>
+    </message>
+    <message>
+        <source>The port did not open within 5 s.</source>
+        <translation>Der Anschluss hat sich nicht innerhalb von 5 s geöffnet.</translation>
+    </message>
+    <message>
+        <source>The machine's offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
+        <translation>Der Korrekturbericht der Maschine (M493.4) war nicht lesbar%1. Nichts wurde gespeichert; versuchen Sie es erneut und prüfen Sie das Kabel, wenn es wieder passiert.</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s.</source>
+        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet.</translation>
+    </message>
+    <message>
+        <source>The machine finished probing but its probe result ([PRB:…]) could not be read. Nothing was recorded; check the offsets (Report) before you cut.</source>
+        <translation>Die Maschine hat die Messung beendet, aber das Messergebnis ([PRB:…]) war nicht lesbar. Nichts wurde gespeichert; prüfen Sie die Korrekturen (Bericht), bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a difference of %4 mm; the tolerance is %5 mm). The machine has halted. Check the tool and replace it if it is damaged, then Unlock.</source>
+        <translation>Werkzeug T%1 ist möglicherweise gebrochen: Es hat eine Längenkorrektur von %2 mm gemessen, vorher %3 mm (Abweichung %4 mm; Toleranz %5 mm). Die Maschine hat angehalten. Prüfen Sie das Werkzeug, ersetzen Sie es, wenn es beschädigt ist, und entsperren Sie dann.</translation>
+    </message>
+    <message>
+        <source>The machine has no TLO for this tool to compare with. Probe the tool first, then run the break test.</source>
+        <translation>Die Maschine hat für dieses Werkzeug keine Längenkorrektur zum Vergleich. Vermessen Sie das Werkzeug zuerst und starten Sie dann den Bruchtest.</translation>
+    </message>
+    <message>
+        <source>The break test ran but its result ("Old: … , new: …") could not be read. Run it again before you trust the tool.</source>
+        <translation>Der Bruchtest ist gelaufen, aber sein Ergebnis („Old: … , new: …“) war nicht lesbar. Starten Sie ihn erneut, bevor Sie dem Werkzeug trauen.</translation>
+    </message>
+    <message>
+        <source>Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.</source>
+        <translation>Werkzeug T%1 hat %2 mm gemessen, vorher %3 mm, mehr als die Toleranz von %4 mm.</translation>
+    </message>
+    <message>
+        <source>The machine's reply to %1 could not be read. Check the offsets (Report) before you cut.</source>
+        <translation>Die Antwort der Maschine auf %1 war nicht lesbar. Prüfen Sie die Korrekturen (Bericht), bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>The tool length offset</source>
+        <translation>Die Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>The machine was told TLO %1 mm but reports %2 mm. Check the offsets before you cut.</source>
+        <translation>Der Maschine wurde eine Längenkorrektur von %1 mm gesendet, sie meldet aber %2 mm. Prüfen Sie die Korrekturen, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>The height above Z0</source>
+        <translation>Die Höhe über Z0</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle, but its probe result ([PRB:…]) could not be read. Nothing was recorded; probe the tool again.</source>
+        <translation>T%1 ist in der Spindel, aber das Messergebnis ([PRB:…]) war nicht lesbar. Nichts wurde gespeichert; vermessen Sie das Werkzeug erneut.</translation>
+    </message>
+    <message>
+        <source>The machine did not confirm the unlock; check its state before you go on.</source>
+        <translation>Die Maschine hat das Entsperren nicht bestätigt; prüfen Sie ihren Zustand, bevor Sie weitermachen.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MainWindow</name>
+    <message>
+        <source>Tool tables (*.json *.tbl *.csv);;Toffee tool table (*.json);;LinuxCNC tool table (*.tbl);;CSV spreadsheet (*.csv);;All files (*)</source>
+        <translation>Werkzeugtabellen (*.json *.tbl *.csv);;Toffee-Werkzeugtabelle (*.json);;LinuxCNC-Werkzeugtabelle (*.tbl);;CSV-Tabelle (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Cannot connect to the machine</source>
+        <translation>Keine Verbindung zur Maschine möglich</translation>
+    </message>
+    <message>
+        <source>Disconnected: %1</source>
+        <translation>Getrennt: %1</translation>
+    </message>
+    <message>
+        <source>1 tool</source>
+        <translation>1 Werkzeug</translation>
+    </message>
+    <message>
+        <source>%1 tools</source>
+        <translation>%1 Werkzeuge</translation>
+    </message>
+    <message>
+        <source>Value not accepted</source>
+        <translation>Wert nicht übernommen</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Haupt</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Öffnen …</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>&amp;Importieren …</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportieren …</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>&amp;Add Tool</source>
+        <translation>Werkzeug &amp;hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Tool</source>
+        <translation>Werkzeug &amp;entfernen</translation>
+    </message>
+    <message>
+        <source>&amp;Filter…</source>
+        <translation>&amp;Filtern …</translation>
+    </message>
+    <message>
+        <source>%1 was changed by another program.
+
+Reload it? Your unsaved changes in Toffee would be lost.</source>
+        <translation>%1 wurde von einem anderen Programm geändert.
+
+Neu laden? Ihre ungespeicherten Änderungen in Toffee gingen verloren.</translation>
+    </message>
+    <message>
+        <source>%1 was changed by another program.
+
+Reload it?</source>
+        <translation>%1 wurde von einem anderen Programm geändert.
+
+Neu laden?</translation>
+    </message>
+    <message>
+        <source>File changed on disk</source>
+        <translation>Datei auf der Festplatte geändert</translation>
+    </message>
+    <message>
+        <source>Cannot reload the tool table</source>
+        <translation>Die Werkzeugtabelle lässt sich nicht neu laden</translation>
+    </message>
+    <message>
+        <source>The table on screen has not been changed.</source>
+        <translation>Die angezeigte Tabelle wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <source>Reloaded %1</source>
+        <translation>%1 neu geladen</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>&amp;Maschine</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>&amp;Connect / Disconnect</source>
+        <translation>&amp;Verbinden / Trennen</translation>
+    </message>
+    <message>
+        <source>&amp;Probe Current Tool…</source>
+        <translation>Aktuelles Werkzeug &amp;vermessen …</translation>
+    </message>
+    <message>
+        <source>&amp;Break Test…</source>
+        <translation>&amp;Bruchtest …</translation>
+    </message>
+    <message>
+        <source>&amp;Unlock</source>
+        <translation>&amp;Entsperren</translation>
+    </message>
+    <message>
+        <source>&amp;Stop the Machine</source>
+        <translation>Maschine &amp;anhalten</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Dark Palette</source>
+        <translation>&amp;Dunkle Farben</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>Verbinde mit %1 …</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>Cannot open the tool table</source>
+        <translation>Die Werkzeugtabelle lässt sich nicht öffnen</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>Open Tool Table</source>
+        <translation>Werkzeugtabelle öffnen</translation>
+    </message>
+    <message>
+        <source>Save as %1?</source>
+        <translation>Als %1 speichern?</translation>
+    </message>
+    <message>
+        <source>Save anyway?</source>
+        <translation>Trotzdem speichern?</translation>
+    </message>
+    <message>
+        <source>Cannot save the tool table</source>
+        <translation>Die Werkzeugtabelle lässt sich nicht speichern</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Save Tool Table</source>
+        <translation>Werkzeugtabelle speichern</translation>
+    </message>
+    <message>
+        <source>Import Tools</source>
+        <translation>Werkzeuge importieren</translation>
+    </message>
+    <message>
+        <source>Cannot import</source>
+        <translation>Import nicht möglich</translation>
+    </message>
+    <message>
+        <source>Nothing was imported.</source>
+        <translation>Nichts wurde importiert.</translation>
+    </message>
+    <message>
+        <source>Imported %1 tools from %2</source>
+        <translation>%1 Werkzeuge aus %2 importiert</translation>
+    </message>
+    <message>
+        <source>Export Tool Table</source>
+        <translation>Werkzeugtabelle exportieren</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>Nach %1 exportiert</translation>
+    </message>
+    <message>
+        <source>Cannot add a tool</source>
+        <translation>Werkzeug lässt sich nicht hinzufügen</translation>
+    </message>
+    <message>
+        <source>Every tool number is in use.</source>
+        <translation>Alle Werkzeugnummern sind vergeben.</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The tool table has changes that are not saved.
+Save them first?</source>
+        <translation>Die Werkzeugtabelle hat ungespeicherte Änderungen.
+Zuerst speichern?</translation>
+    </message>
+    <message>
+        <source>The machine is busy</source>
+        <translation>Die Maschine ist beschäftigt</translation>
+    </message>
+    <message>
+        <source>The machine is running "%1". Stop it and quit?</source>
+        <translation>Die Maschine führt „%1“ aus. Anhalten und beenden?</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::OffsetEditor</name>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+    <message>
+        <source>How to set the offset</source>
+        <translation>Wie die Korrektur gesetzt wird</translation>
+    </message>
+    <message>
+        <source>Set TLO to</source>
+        <translation>Längenkorrektur setzen auf</translation>
+    </message>
+    <message>
+        <source>Change TLO by</source>
+        <translation>Längenkorrektur ändern um</translation>
+    </message>
+    <message>
+        <source>Gauge height above Z0</source>
+        <translation>Lehrenhöhe über Z0</translation>
+    </message>
+    <message>
+        <source>Offset value in millimetres</source>
+        <translation>Korrekturwert in Millimetern</translation>
+    </message>
+    <message>
+        <source>Command that will be sent</source>
+        <translation>Befehl, der gesendet wird</translation>
+    </message>
+    <message>
+        <source>Resulting tool length offset</source>
+        <translation>Resultierende Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>Send the offset to the machine</source>
+        <translation>Korrektur an die Maschine senden</translation>
+    </message>
+    <message>
+        <source>Send the command above — Ctrl+Enter</source>
+        <translation>Den Befehl oben senden — Strg+Enter</translation>
+    </message>
+    <message>
+        <source>Sends:</source>
+        <translation>Sendet:</translation>
+    </message>
+    <message>
+        <source>TLO:</source>
+        <translation>TLO:</translation>
+    </message>
+    <message>
+        <source>(the current TLO is not known yet)</source>
+        <translation>(die aktuelle Längenkorrektur ist noch nicht bekannt)</translation>
+    </message>
+    <message>
+        <source>%1 → set by the machine from the spindle's position</source>
+        <translation>%1 → von der Maschine aus der Spindelposition gesetzt</translation>
+    </message>
+    <message>
+        <source>Change the tool length offset?</source>
+        <translation>Werkzeuglängenkorrektur ändern?</translation>
+    </message>
+    <message>
+        <source>Send %1?
+TLO %2
+
+The next cut uses the new offset.</source>
+        <translation>%1 senden?
+TLO %2
+
+Der nächste Schnitt verwendet die neue Korrektur.</translation>
+    </message>
+    <message>
+        <source>Setting the TLO…</source>
+        <translation>Setze die Längenkorrektur …</translation>
+    </message>
+    <message>
+        <source>The offset was not set</source>
+        <translation>Die Korrektur wurde nicht gesetzt</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ProbePanel</name>
+    <message>
+        <source>Probe Current Tool</source>
+        <translation>Aktuelles Werkzeug vermessen</translation>
+    </message>
+    <message>
+        <source>Restore Known TLO</source>
+        <translation>Bekannte TLO wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Probe the current tool on the tool setter</source>
+        <translation>Das aktuelle Werkzeug am Werkzeugtaster vermessen</translation>
+    </message>
+    <message>
+        <source>Measure the tool in the spindle on the tool setter (M491) — F5</source>
+        <translation>Das Werkzeug in der Spindel am Werkzeugtaster messen (M491) — F5</translation>
+    </message>
+    <message>
+        <source>Restore the selected tool's known TLO</source>
+        <translation>Bekannte Längenkorrektur des gewählten Werkzeugs wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Make the selected tool active with the TLO measured before, without probing — Ctrl+R</source>
+        <translation>Das gewählte Werkzeug mit der früher gemessenen Längenkorrektur aktivieren, ohne zu vermessen — Strg+R</translation>
+    </message>
+    <message>
+        <source>Machine busy</source>
+        <translation>Maschine beschäftigt</translation>
+    </message>
+    <message>
+        <source>Stop the machine</source>
+        <translation>Maschine anhalten</translation>
+    </message>
+    <message>
+        <source>Stop the machine now (Ctrl-X to the controller) — Esc</source>
+        <translation>Die Maschine sofort anhalten (Strg-X an die Steuerung) — Esc</translation>
+    </message>
+    <message>
+        <source>Restore T%1 TLO</source>
+        <translation>TLO von T%1 wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the tool table.</source>
+        <translation>In die Werkzeugtabelle wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>the current tool</source>
+        <translation>das aktuelle Werkzeug</translation>
+    </message>
+    <message>
+        <source>Probe %1?</source>
+        <translation>%1 vermessen?</translation>
+    </message>
+    <message>
+        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
+
+Probe now?</source>
+        <translation>Die Maschine fährt: hoch auf Sicherheitshöhe, über den Werkzeugtaster, dann herunter, bis %1 ihn berührt. Hände weg von der Maschine.
+
+Jetzt vermessen?</translation>
+    </message>
+    <message>
+        <source>Probing %1…</source>
+        <translation>Vermesse %1 …</translation>
+    </message>
+    <message>
+        <source>there is no tool in the spindle.</source>
+        <translation>In der Spindel ist kein Werkzeug.</translation>
+    </message>
+    <message>
+        <source>T%1 measured: TLO %2 mm, recorded in the table.</source>
+        <translation>T%1 gemessen: Längenkorrektur %2 mm, in der Tabelle gespeichert.</translation>
+    </message>
+    <message>
+        <source>Measured TLO %1 mm, but it could not be recorded: %2</source>
+        <translation>Längenkorrektur %1 mm gemessen, aber nicht gespeichert: %2</translation>
+    </message>
+    <message>
+        <source>Probing failed</source>
+        <translation>Vermessen fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Restore T%1?</source>
+        <translation>T%1 wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Make T%1 the active tool with TLO %2 mm, as measured %3, without probing?
+
+Sends: M493.2 T%1, then M493.3 Z%2</source>
+        <translation>T%1 mit der Längenkorrektur %2 mm (gemessen %3) aktivieren, ohne zu vermessen?
+
+Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
+    </message>
+    <message>
+        <source>Restoring T%1…</source>
+        <translation>Stelle T%1 wieder her …</translation>
+    </message>
+    <message>
+        <source>T%1 is active with TLO %2 mm.</source>
+        <translation>T%1 ist aktiv mit Längenkorrektur %2 mm.</translation>
+    </message>
+    <message>
+        <source>Restoring failed</source>
+        <translation>Wiederherstellen fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::PtyServer</name>
+    <message>
+        <source>cannot open a pseudo-terminal: %1</source>
+        <translation>Kein Pseudoterminal verfügbar: %1</translation>
+    </message>
+    <message>
+        <source>cannot make the link %1</source>
+        <translation>Der Link %1 lässt sich nicht anlegen</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::RemoveToolsCommand</name>
+    <message>
+        <source>Remove tool T%1</source>
+        <translation>Werkzeug T%1 entfernen</translation>
+    </message>
+    <message>
+        <source>Remove %1 tools</source>
+        <translation>%1 Werkzeuge entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::SelfTest</name>
+    <message>
+        <source>no progress within 20 s</source>
+        <translation>kein Fortschritt innerhalb von 20 s</translation>
+    </message>
+    <message>
+        <source>self-test failed while %1: %2</source>
+        <translation>Selbsttest fehlgeschlagen beim Schritt „%1“: %2</translation>
+    </message>
+    <message>
+        <source>showing the window</source>
+        <translation>Fenster anzeigen</translation>
+    </message>
+    <message>
+        <source>the window did not render</source>
+        <translation>Das Fenster wurde nicht gezeichnet</translation>
+    </message>
+    <message>
+        <source>loading the example table</source>
+        <translation>Beispieltabelle laden</translation>
+    </message>
+    <message>
+        <source>the example table did not load</source>
+        <translation>Die Beispieltabelle wurde nicht geladen</translation>
+    </message>
+    <message>
+        <source>connecting to the built-in emulator</source>
+        <translation>Mit dem eingebauten Emulator verbinden</translation>
+    </message>
+    <message>
+        <source>probing the current tool</source>
+        <translation>Aktuelles Werkzeug vermessen</translation>
+    </message>
+    <message>
+        <source>the measurement did not reach the table</source>
+        <translation>Die Messung ist nicht in der Tabelle angekommen</translation>
+    </message>
+    <message>
+        <source>rendering</source>
+        <translation>Zeichnen</translation>
+    </message>
+    <message>
+        <source>self-test passed: first frame after %1 ms; T%2 probed, TLO %3 mm recorded</source>
+        <translation>Selbsttest bestanden: erstes Bild nach %1 ms; T%2 vermessen, Längenkorrektur %3 mm gespeichert</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::SerialPortTransport</name>
+    <message>
+        <source>Cannot open %1: %2. Check the cable, that no other program has the port open, and that you may use serial ports (the dialout group).</source>
+        <translation>%1 lässt sich nicht öffnen: %2. Prüfen Sie das Kabel, ob ein anderes Programm den Anschluss geöffnet hat und ob Sie serielle Anschlüsse verwenden dürfen (Gruppe dialout).</translation>
+    </message>
+    <message>
+        <source>%1 is not open.</source>
+        <translation>%1 ist nicht geöffnet.</translation>
+    </message>
+    <message>
+        <source>%1 at %2 baud</source>
+        <translation>%1 mit %2 Baud</translation>
+    </message>
+    <message>
+        <source>%1 sent a line longer than %2 bytes; it was dropped.</source>
+        <translation>%1 hat eine Zeile mit mehr als %2 Bytes gesendet; sie wurde verworfen.</translation>
+    </message>
+    <message>
+        <source>The port %1 went away (unplugged, or the machine was switched off).</source>
+        <translation>Der Anschluss %1 ist verschwunden (ausgesteckt oder die Maschine ausgeschaltet).</translation>
+    </message>
+    <message>
+        <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
+        <translation>Der Anschluss %1 ist ausgefallen (%2); die Verbindung wurde geschlossen. Prüfen Sie das Kabel und verbinden Sie erneut.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::TableReading</name>
+    <message>
+        <source>tool %1 is already on line %2; tool numbers must be unique.</source>
+        <translation>Werkzeug %1 steht schon in Zeile %2; Werkzeugnummern müssen eindeutig sein.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::TloPanel</name>
+    <message>
+        <source>Machine state</source>
+        <translation>Maschinenzustand</translation>
+    </message>
+    <message>
+        <source>Active tool</source>
+        <translation>Aktives Werkzeug</translation>
+    </message>
+    <message>
+        <source>Reference tool MCS Z</source>
+        <translation>Maschinen-Z des Referenzwerkzeugs</translation>
+    </message>
+    <message>
+        <source>Current tool MCS Z</source>
+        <translation>Maschinen-Z des aktuellen Werkzeugs</translation>
+    </message>
+    <message>
+        <source>Tool length offset</source>
+        <translation>Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>Entsperren</translation>
+    </message>
+    <message>
+        <source>Unlock the machine</source>
+        <translation>Maschine entsperren</translation>
+    </message>
+    <message>
+        <source>Clear the halt ($X) — Ctrl+Shift+U</source>
+        <translation>Den Halt aufheben ($X) — Strg+Umschalt+U</translation>
+    </message>
+    <message>
+        <source>State:</source>
+        <translation>Zustand:</translation>
+    </message>
+    <message>
+        <source>Active tool:</source>
+        <translation>Aktives Werkzeug:</translation>
+    </message>
+    <message>
+        <source>Reference MCS Z:</source>
+        <translation>Referenz-Maschinen-Z:</translation>
+    </message>
+    <message>
+        <source>Current MCS Z:</source>
+        <translation>Aktuelle Maschinen-Z:</translation>
+    </message>
+    <message>
+        <source>TLO:</source>
+        <translation>TLO:</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Verbinde …</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Nicht verbunden</translation>
+    </message>
+    <message>
+        <source>%1 — halted: %2</source>
+        <translation>%1 — angehalten: %2</translation>
+    </message>
+    <message>
+        <source>%1 (stale: no status report)</source>
+        <translation>%1 (veraltet: kein Statusbericht)</translation>
+    </message>
+    <message>
+        <source>Unlock failed</source>
+        <translation>Entsperren fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolDocument</name>
+    <message>
+        <source>This table has no file yet; use Save As.</source>
+        <translation>Diese Tabelle hat noch keine Datei; verwenden Sie „Speichern unter“.</translation>
+    </message>
+    <message>
+        <source>%1 is in %2 but this table is in %3; Toffee does not convert units on import.</source>
+        <translation>%1 ist in %2, diese Tabelle aber in %3; Toffee rechnet beim Import keine Einheiten um.</translation>
+    </message>
+    <message>
+        <source>Import %1 tools</source>
+        <translation>%1 Werkzeuge importieren</translation>
+    </message>
+    <message>
+        <source>Measure T%1</source>
+        <translation>T%1 vermessen</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolTable</name>
+    <message>
+        <source>there is no tool %1 in the table.</source>
+        <translation>Es gibt kein Werkzeug %1 in der Tabelle.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolTableModel</name>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>Platz</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Length wear</source>
+        <translation>Längenverschleiß</translation>
+    </message>
+    <message>
+        <source>Total length</source>
+        <translation>Gesamtlänge</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source>Radius wear</source>
+        <translation>Radiusverschleiß</translation>
+    </message>
+    <message>
+        <source>Measured TLO</source>
+        <translation>Gemessene TLO</translation>
+    </message>
+    <message>
+        <source>Measured at</source>
+        <translation>Gemessen am</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notizen</translation>
+    </message>
+    <message>
+        <source>%1: "%2" is not a number; enter a value such as -12.345.</source>
+        <translation>%1: „%2“ ist keine Zahl; geben Sie einen Wert wie -12,345 ein.</translation>
+    </message>
+    <message>
+        <source>%1: "%2" is not a whole number.</source>
+        <translation>%1: „%2“ ist keine ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>this column cannot be edited.</source>
+        <translation>Diese Spalte lässt sich nicht bearbeiten.</translation>
+    </message>
+    <message>
+        <source>tool number %1 is already in the table; tool numbers must be unique.</source>
+        <translation>Werkzeugnummer %1 ist schon in der Tabelle; Werkzeugnummern müssen eindeutig sein.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolTablePanel</name>
+    <message>
+        <source>Filter tools</source>
+        <translation>Werkzeuge filtern</translation>
+    </message>
+    <message>
+        <source>Filter tools (number, description, notes…)</source>
+        <translation>Werkzeuge filtern (Nummer, Beschreibung, Notizen …)</translation>
+    </message>
+    <message>
+        <source>Tool table</source>
+        <translation>Werkzeugtabelle</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Toffee, the tool offset manager.</source>
+        <translation>Toffee, die Verwaltung für Werkzeugkorrekturen.</translation>
+    </message>
+    <message>
+        <source>Connect to the built-in emulator.</source>
+        <translation>Mit dem eingebauten Emulator verbinden.</translation>
+    </message>
+    <message>
+        <source>Connect to the machine on PORT.</source>
+        <translation>Mit der Maschine an PORT verbinden.</translation>
+    </message>
+    <message>
+        <source>Baud rate (default 115200).</source>
+        <translation>Baudrate (Standard 115200).</translation>
+    </message>
+    <message>
+        <source>Open the window, connect to the emulator, load the example table, probe, render once, and exit (0 when all went well).</source>
+        <translation>Fenster öffnen, mit dem Emulator verbinden, die Beispieltabelle laden, vermessen, einmal zeichnen und beenden (0, wenn alles geklappt hat).</translation>
+    </message>
+    <message>
+        <source>Use the dark palette.</source>
+        <translation>Dunkle Farben verwenden.</translation>
+    </message>
+    <message>
+        <source>Language: de, zh_CN or en (default: the system's).</source>
+        <translation>Sprache: de, zh_CN oder en (Standard: die des Systems).</translation>
+    </message>
+    <message>
+        <source>A tool table to open.</source>
+        <translation>Eine Werkzeugtabelle zum Öffnen.</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,1469 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>Toffee</name>
+    <message>
+        <source>tool number %1 is out of range; use %2 to %3.</source>
+        <translation>刀具号 %1 超出范围；请使用 %2 到 %3。</translation>
+    </message>
+    <message>
+        <source>pocket %1 is out of range; use %2 to %3.</source>
+        <translation>刀位 %1 超出范围；请使用 %2 到 %3。</translation>
+    </message>
+    <message>
+        <source>%1 is not a number; enter a value from %2 to %3 %4.</source>
+        <translation>%1 不是数字；请输入 %2 到 %3 %4 之间的值。</translation>
+    </message>
+    <message>
+        <source>%1 %2 %3 is out of range; a controller takes %4 to %5 %3.</source>
+        <translation>%1 %2 %3 超出范围；控制器接受 %4 到 %5 %3。</translation>
+    </message>
+    <message>
+        <source>"%1" is not a LinuxCNC tool field (X, Y, A, B, C, U, V, W, I, J or Q0-Q9).</source>
+        <translation>“%1”不是 LinuxCNC 刀具字段（X、Y、A、B、C、U、V、W、I、J 或 Q0-Q9）。</translation>
+    </message>
+    <message>
+        <source>the description is %1 characters long; keep it to %2.</source>
+        <translation>描述长 %1 个字符；请不超过 %2 个。</translation>
+    </message>
+    <message>
+        <source>the description must be one line of text, without tabs or line breaks.</source>
+        <translation>描述必须是一行文字，不能有制表符或换行。</translation>
+    </message>
+    <message>
+        <source>the notes are %1 characters long; keep them to %2.</source>
+        <translation>备注长 %1 个字符；请不超过 %2 个。</translation>
+    </message>
+    <message>
+        <source>length geometry</source>
+        <translation>长度几何值</translation>
+    </message>
+    <message>
+        <source>length wear</source>
+        <translation>长度磨损</translation>
+    </message>
+    <message>
+        <source>radius geometry</source>
+        <translation>半径几何值</translation>
+    </message>
+    <message>
+        <source>radius wear</source>
+        <translation>半径磨损</translation>
+    </message>
+    <message>
+        <source>measured TLO</source>
+        <translation>测得的刀长补偿</translation>
+    </message>
+    <message>
+        <source>tool number %1 is already in the table; tool numbers must be unique.</source>
+        <translation>刀具号 %1 已在表中；刀具号必须唯一。</translation>
+    </message>
+    <message>
+        <source>Toffee tool table (JSON)</source>
+        <translation>Toffee 刀具表（JSON）</translation>
+    </message>
+    <message>
+        <source>LinuxCNC tool table</source>
+        <translation>LinuxCNC 刀具表</translation>
+    </message>
+    <message>
+        <source>CSV spreadsheet</source>
+        <translation>CSV 电子表格</translation>
+    </message>
+    <message>
+        <source>unknown table format.</source>
+        <translation>未知的表格格式。</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no wear columns: wear is added into the length and diameter.</source>
+        <translation>LinuxCNC 刀具表没有磨损列：磨损会计入长度和直径。</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for measured TLOs: they are not saved.</source>
+        <translation>LinuxCNC 刀具表无法存放测得的刀长补偿：它们不会被保存。</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for notes: they are not saved.</source>
+        <translation>LinuxCNC 刀具表无法存放备注：它们不会被保存。</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table does not record its units: the numbers are written in inches.</source>
+        <translation>LinuxCNC 刀具表不记录单位：数字以英寸写入。</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type; use a .json, .tbl or .csv file.</source>
+        <translation>%1：未知的文件类型；请使用 .json、.tbl 或 .csv 文件。</translation>
+    </message>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1：无法打开：%2</translation>
+    </message>
+    <message>
+        <source>%1: the file is %2 MB, too large to be a tool table.</source>
+        <translation>%1：文件大小为 %2 MB，不可能是刀具表。</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1：无法读取：%2</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1：无法写入：%2</translation>
+    </message>
+    <message>
+        <source>%1: saving failed, the old file is unchanged: %2</source>
+        <translation>%1：保存失败，原文件未改变：%2</translation>
+    </message>
+    <message>
+        <source>"%1" must be a whole number.</source>
+        <translation>“%1”必须是整数。</translation>
+    </message>
+    <message>
+        <source>"%1" must be a number.</source>
+        <translation>“%1”必须是数字。</translation>
+    </message>
+    <message>
+        <source>"%1" must be text.</source>
+        <translation>“%1”必须是文本。</translation>
+    </message>
+    <message>
+        <source>each entry of "tools" must be a JSON object such as {"number": 1}.</source>
+        <translation>“tools”中的每一项都必须是 JSON 对象，例如 {"number": 1}。</translation>
+    </message>
+    <message>
+        <source>unknown field "%1" in a tool.</source>
+        <translation>刀具中有未知字段“%1”。</translation>
+    </message>
+    <message>
+        <source>the field "%1" appears twice in a tool.</source>
+        <translation>字段“%1”在一个刀具中出现了两次。</translation>
+    </message>
+    <message>
+        <source>"measured_at" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
+        <translation>“measured_at”不是日期时间（请使用 ISO 8601，例如 2026-11-22T10:15:00Z）。</translation>
+    </message>
+    <message>
+        <source>a tool has no "number".</source>
+        <translation>有一个刀具没有“number”。</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: the file is empty.</source>
+        <translation>这不是有效的 JSON：文件为空。</translation>
+    </message>
+    <message>
+        <source>this is not a Toffee tool table: the file must hold one JSON object.</source>
+        <translation>这不是 Toffee 刀具表：文件必须只包含一个 JSON 对象。</translation>
+    </message>
+    <message>
+        <source>this is not a Toffee tool table: "format" must be "%1", before "tools".</source>
+        <translation>这不是 Toffee 刀具表：“format”必须是“%1”，并且位于“tools”之前。</translation>
+    </message>
+    <message>
+        <source>"version" must come before "tools".</source>
+        <translation>“version”必须位于“tools”之前。</translation>
+    </message>
+    <message>
+        <source>"tools" appears twice.</source>
+        <translation>“tools”出现了两次。</translation>
+    </message>
+    <message>
+        <source>"tools" must be a list of tools.</source>
+        <translation>“tools”必须是刀具列表。</translation>
+    </message>
+    <message>
+        <source>this is not a Toffee tool table: "format" must be "%1".</source>
+        <translation>这不是 Toffee 刀具表：“format”必须是“%1”。</translation>
+    </message>
+    <message>
+        <source>"version" must be a whole number from 1 up.</source>
+        <translation>“version”必须是从 1 开始的整数。</translation>
+    </message>
+    <message>
+        <source>this table was written by a newer Toffee (format version %1); this one reads up to version %2. Update Toffee to open it.</source>
+        <translation>此表由更新版本的 Toffee 写入（格式版本 %1）；当前版本最多读取版本 %2。请更新 Toffee 后再打开。</translation>
+    </message>
+    <message>
+        <source>"units" must be "mm" or "in".</source>
+        <translation>“units”必须是“mm”或“in”。</translation>
+    </message>
+    <message>
+        <source>unknown field "%1" in the table.</source>
+        <translation>表中有未知字段“%1”。</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: there is more text after the table.</source>
+        <translation>这不是有效的 JSON：表格之后还有其他文本。</translation>
+    </message>
+    <message>
+        <source>the comment is not valid UTF-8 text.</source>
+        <translation>注释不是有效的 UTF-8 文本。</translation>
+    </message>
+    <message>
+        <source>"%1": the field %2 appears twice.</source>
+        <translation>“%1”：字段 %2 出现了两次。</translation>
+    </message>
+    <message>
+        <source>"%1": %2 needs a whole number.</source>
+        <translation>“%1”：%2 需要整数。</translation>
+    </message>
+    <message>
+        <source>"%1": the orientation Q must be 0 to 9.</source>
+        <translation>“%1”：方向 Q 必须是 0 到 9。</translation>
+    </message>
+    <message>
+        <source>"%1" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, J, Q and a ;comment.</source>
+        <translation>“%1”不是刀具表字段；一行包含 T、P、X、Y、Z、A、B、C、U、V、W、D、I、J、Q 和 ;注释。</translation>
+    </message>
+    <message>
+        <source>"%1": %2 needs a number.</source>
+        <translation>“%1”：%2 需要数字。</translation>
+    </message>
+    <message>
+        <source>the line has no tool number (T).</source>
+        <translation>该行没有刀具号（T）。</translation>
+    </message>
+    <message>
+        <source>T%1 has no pocket (P).</source>
+        <translation>T%1 没有刀位（P）。</translation>
+    </message>
+    <message>
+        <source>T%1: pocket %2 is out of range; use %3 to %4.</source>
+        <translation>T%1：刀位 %2 超出范围；请使用 %3 到 %4。</translation>
+    </message>
+    <message>
+        <source>the file holds binary data; it is not a LinuxCNC tool table.</source>
+        <translation>文件包含二进制数据；它不是 LinuxCNC 刀具表。</translation>
+    </message>
+    <message>
+        <source>a quoted field is never closed; add the closing quote (").</source>
+        <translation>有一个带引号的字段没有结束；请补上结束引号（"）。</translation>
+    </message>
+    <message>
+        <source>text after a closing quote; put the whole field in quotes.</source>
+        <translation>结束引号之后还有文本；请把整个字段放在引号内。</translation>
+    </message>
+    <message>
+        <source>a quote (") inside an unquoted field; put the whole field in quotes and double the quote.</source>
+        <translation>未加引号的字段中有引号（"）；请把整个字段放在引号内，并将引号写两次。</translation>
+    </message>
+    <message>
+        <source>the file holds binary data; it is not a CSV table.</source>
+        <translation>文件包含二进制数据；它不是 CSV 表格。</translation>
+    </message>
+    <message>
+        <source>the file is not UTF-8 text; save it from the spreadsheet as "CSV UTF-8".</source>
+        <translation>文件不是 UTF-8 文本；请在电子表格软件中另存为“CSV UTF-8”。</translation>
+    </message>
+    <message>
+        <source>the file is empty; a CSV tool table starts with a header row such as "number,pocket,description,...".</source>
+        <translation>文件为空；CSV 刀具表以表头行开始，例如“number,pocket,description,...”。</translation>
+    </message>
+    <message>
+        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, units and linuxcnc.</source>
+        <translation>表头中有未知列“%1”；列名为 number、pocket、description、length_geometry、length_wear、radius_geometry、radius_wear、measured_tlo、measured_at、notes、units 和 linuxcnc。</translation>
+    </message>
+    <message>
+        <source>the column "%1" appears twice in the header.</source>
+        <translation>列“%1”在表头中出现了两次。</translation>
+    </message>
+    <message>
+        <source>the header has no "number" column.</source>
+        <translation>表头没有“number”列。</translation>
+    </message>
+    <message>
+        <source>this row has %1 fields but the header has %2.</source>
+        <translation>此行有 %1 个字段，但表头有 %2 个。</translation>
+    </message>
+    <message>
+        <source>%1 "%2" is not a number.</source>
+        <translation>%1“%2”不是数字。</translation>
+    </message>
+    <message>
+        <source>%1 "%2" is not a whole number.</source>
+        <translation>%1“%2”不是整数。</translation>
+    </message>
+    <message>
+        <source>the row has no tool number.</source>
+        <translation>该行没有刀具号。</translation>
+    </message>
+    <message>
+        <source>measured_at "%1" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
+        <translation>measured_at“%1”不是日期时间（请使用 ISO 8601，例如 2026-11-22T10:15:00Z）。</translation>
+    </message>
+    <message>
+        <source>units "%1" must be mm or in.</source>
+        <translation>单位“%1”必须是 mm 或 in。</translation>
+    </message>
+    <message>
+        <source>this row is in %1 but the rows above are in %2; a table has one unit.</source>
+        <translation>此行单位为 %1，但上面各行为 %2；一张表只能有一种单位。</translation>
+    </message>
+    <message>
+        <source>halt reason %1</source>
+        <translation>停机原因 %1</translation>
+    </message>
+    <message>
+        <source>This halt needs a reset of the controller.</source>
+        <translation>此次停机需要复位控制器。</translation>
+    </message>
+    <message>
+        <source>This halt needs the machine switched off and on again.</source>
+        <translation>此次停机需要关闭机床电源后重新开启。</translation>
+    </message>
+    <message>
+        <source>Check the machine, then Unlock ($X).</source>
+        <translation>请检查机床，然后解锁（$X）。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::AddToolCommand</name>
+    <message>
+        <source>Add tool T%1</source>
+        <translation>添加刀具 T%1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::BreakTestPanel</name>
+    <message>
+        <source>Run Break Test</source>
+        <translation>运行断刀检测</translation>
+    </message>
+    <message>
+        <source>Break-test tolerance in millimetres</source>
+        <translation>断刀检测公差（毫米）</translation>
+    </message>
+    <message>
+        <source>How far the new measurement may differ from the stored TLO; at least %1 mm, %2 mm by default.</source>
+        <translation>新测量值与已存刀长补偿之间允许的差值；至少 %1 mm，默认 %2 mm。</translation>
+    </message>
+    <message>
+        <source>Run the tool break test</source>
+        <translation>运行断刀检测</translation>
+    </message>
+    <message>
+        <source>Re-measure the tool and compare it with its stored TLO (M491.1) — F6</source>
+        <translation>重新测量刀具并与已存刀长补偿比较（M491.1）— F6</translation>
+    </message>
+    <message>
+        <source>Tolerance:</source>
+        <translation>公差：</translation>
+    </message>
+    <message>
+        <source>Stored TLO:</source>
+        <translation>已存 TLO：</translation>
+    </message>
+    <message>
+        <source>Measured TLO:</source>
+        <translation>测得 TLO：</translation>
+    </message>
+    <message>
+        <source>Difference:</source>
+        <translation>差值：</translation>
+    </message>
+    <message>
+        <source>Run the break test?</source>
+        <translation>运行断刀检测？</translation>
+    </message>
+    <message>
+        <source>The machine will move to the tool setter and measure the tool again, then compare it with its stored TLO (tolerance %1 mm). Keep hands clear.</source>
+        <translation>机床将移动到对刀仪，重新测量刀具，并与已存的刀长补偿比较（公差 %1 mm）。请让双手远离机床。</translation>
+    </message>
+    <message>
+        <source>Break test…</source>
+        <translation>断刀检测…</translation>
+    </message>
+    <message>
+        <source>BROKEN TOOL</source>
+        <translation>刀具已断</translation>
+    </message>
+    <message>
+        <source>Tool OK: within %1 mm.</source>
+        <translation>刀具正常：在 %1 mm 以内。</translation>
+    </message>
+    <message>
+        <source>The break test did not run</source>
+        <translation>断刀检测未能运行</translation>
+    </message>
+    <message>
+        <source>Broken tool</source>
+        <translation>断刀</translation>
+    </message>
+    <message>
+        <source>The tool may be broken. The machine has halted.</source>
+        <translation>刀具可能已断。机床已停机。</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>解锁</translation>
+    </message>
+    <message>
+        <source>Leave Halted</source>
+        <translation>保持停机</translation>
+    </message>
+    <message>
+        <source>Unlock failed</source>
+        <translation>解锁失败</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ConnectionPanel</name>
+    <message>
+        <source>Refresh</source>
+        <translation>刷新</translation>
+    </message>
+    <message>
+        <source>Machine port</source>
+        <translation>机床端口</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>Refresh the list of ports</source>
+        <translation>刷新端口列表</translation>
+    </message>
+    <message>
+        <source>Built-in emulator</source>
+        <translation>内置模拟器</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>断开</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>正在连接…</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ConsoleDock</name>
+    <message>
+        <source>Console</source>
+        <translation>控制台</translation>
+    </message>
+    <message>
+        <source>Lines sent to and received from the machine</source>
+        <translation>发送到机床和从机床接收的各行</translation>
+    </message>
+    <message>
+        <source>Filter the console</source>
+        <translation>筛选控制台</translation>
+    </message>
+    <message>
+        <source>Filter…</source>
+        <translation>筛选…</translation>
+    </message>
+    <message>
+        <source>Command to send to the machine</source>
+        <translation>要发送给机床的命令</translation>
+    </message>
+    <message>
+        <source>Type a command (e.g. M493.4) and press Enter; ↑ ↓ for history</source>
+        <translation>输入命令（例如 M493.4）后按回车；↑ ↓ 查看历史</translation>
+    </message>
+    <message>
+        <source>not connected; connect first</source>
+        <translation>未连接；请先连接</translation>
+    </message>
+    <message>
+        <source>the machine is busy with %1; wait for it</source>
+        <translation>机床正忙于 %1；请等待</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::EditToolCommand</name>
+    <message>
+        <source>Edit tool T%1</source>
+        <translation>编辑刀具 T%1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::EmulatorTransport</name>
+    <message>
+        <source>The link to the emulator dropped.</source>
+        <translation>与模拟器的连接已中断。</translation>
+    </message>
+    <message>
+        <source>The link to the emulator is not open.</source>
+        <translation>与模拟器的连接未打开。</translation>
+    </message>
+    <message>
+        <source>built-in emulator</source>
+        <translation>内置模拟器</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::Error</name>
+    <message>
+        <source>line %1: %2</source>
+        <translation>第 %1 行：%2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JsonScanner</name>
+    <message>
+        <source>this is not valid JSON: expected %1.</source>
+        <translation>这不是有效的 JSON：应为 %1。</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: a line break or control character inside a string; write it as \n.</source>
+        <translation>这不是有效的 JSON：字符串中有换行或控制字符；请写成 \n。</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: a lone UTF-16 surrogate in a \u escape.</source>
+        <translation>这不是有效的 JSON：\u 转义中有单独的 UTF-16 代理项。</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: unknown escape \%1 in a string.</source>
+        <translation>这不是有效的 JSON：字符串中有未知转义 \%1。</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: a string is never closed.</source>
+        <translation>这不是有效的 JSON：有一个字符串没有结束。</translation>
+    </message>
+    <message>
+        <source>the number %1 is too large.</source>
+        <translation>数字 %1 太大。</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON for a tool table: nested too deeply.</source>
+        <translation>这不是有效的刀具表 JSON：嵌套过深。</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: a \u escape needs four hex digits.</source>
+        <translation>这不是有效的 JSON：\u 转义需要四个十六进制数字。</translation>
+    </message>
+    <message>
+        <source>a string is not valid UTF-8 text.</source>
+        <translation>字符串不是有效的 UTF-8 文本。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineConnection</name>
+    <message>
+        <source>Disconnected.</source>
+        <translation>已断开。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineDock</name>
+    <message>
+        <source>Machine</source>
+        <translation>机床</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Tool length offset</source>
+        <translation>刀具长度补偿</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>对刀</translation>
+    </message>
+    <message>
+        <source>Set the offset by hand</source>
+        <translation>手动设置补偿</translation>
+    </message>
+    <message>
+        <source>Tool break test</source>
+        <translation>断刀检测</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineLink</name>
+    <message>
+        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command's. Reconnect, and check the machine before you go on.</source>
+        <translation>机床在 %2 秒内没有回应“%1”。连接已关闭，因为迟到的回应可能被当成下一条命令的回应。请重新连接，并在继续之前检查机床。</translation>
+    </message>
+    <message>
+        <source>The machine halted: %1</source>
+        <translation>机床已停机：%1</translation>
+    </message>
+    <message>
+        <source>Not connected to the machine; connect first.</source>
+        <translation>未连接到机床；请先连接。</translation>
+    </message>
+    <message>
+        <source>The machine refused "%1": %2</source>
+        <translation>机床拒绝了“%1”：%2</translation>
+    </message>
+    <message>
+        <source>the link was closed</source>
+        <translation>连接已关闭</translation>
+    </message>
+    <message>
+        <source>The connection to the machine was lost while it ran "%1": %2</source>
+        <translation>机床执行“%1”时连接丢失：%2</translation>
+    </message>
+    <message>
+        <source>The connection to the machine was lost: %1</source>
+        <translation>与机床的连接丢失：%1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineSession</name>
+    <message>
+        <source>The break-test tolerance is not a number; enter a value such as 0.1 mm.</source>
+        <translation>断刀检测公差不是数字；请输入例如 0.1 mm 的值。</translation>
+    </message>
+    <message>
+        <source>A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm or more (%3 mm is the default).</source>
+        <translation>断刀检测公差 %1 mm 太小：低于 %2 mm 时机床会停机。请使用 %2 mm 或以上（默认为 %3 mm）。</translation>
+    </message>
+    <message>
+        <source>A break-test tolerance of %1 mm is larger than any tool.</source>
+        <translation>断刀检测公差 %1 mm 比任何刀具都大。</translation>
+    </message>
+    <message>
+        <source>%1 must be a number from -%2 to %2 mm.</source>
+        <translation>%1 必须是 -%2 到 %2 mm 之间的数字。</translation>
+    </message>
+    <message>
+        <source>Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
+        <translation>刀具 %1 不是有效刀具号；请使用 0 到 999999（空主轴为 -1）。</translation>
+    </message>
+    <message>
+        <source>The machine stayed busy (%1) too long to connect. Wait for it to finish, or stop it, then connect again.</source>
+        <translation>机床忙碌（%1）时间过长，无法连接。请等待其完成或将其停止，然后重新连接。</translation>
+    </message>
+    <message>
+        <source>The machine answered but sent no status report; is this a Carvera?</source>
+        <translation>机床有回应，但没有发送状态报告；这是 Carvera 吗？</translation>
+    </message>
+    <message>
+        <source>The port did not open within 5 s.</source>
+        <translation>端口在 5 秒内未能打开。</translation>
+    </message>
+    <message>
+        <source>The machine's offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
+        <translation>无法读取机床的补偿报告（M493.4）%1。未记录任何内容；请重试，如果再次发生请检查线缆。</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s.</source>
+        <translation>机床在 2 秒内没有发送状态报告。</translation>
+    </message>
+    <message>
+        <source>The machine finished probing but its probe result ([PRB:…]) could not be read. Nothing was recorded; check the offsets (Report) before you cut.</source>
+        <translation>机床已完成对刀，但无法读取对刀结果（[PRB:…]）。未记录任何内容；切削前请检查补偿（报告）。</translation>
+    </message>
+    <message>
+        <source>Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a difference of %4 mm; the tolerance is %5 mm). The machine has halted. Check the tool and replace it if it is damaged, then Unlock.</source>
+        <translation>刀具 T%1 可能已断：测得刀长补偿 %2 mm，之前为 %3 mm（差值 %4 mm；公差 %5 mm）。机床已停机。请检查刀具，如有损坏请更换，然后解锁。</translation>
+    </message>
+    <message>
+        <source>The machine has no TLO for this tool to compare with. Probe the tool first, then run the break test.</source>
+        <translation>机床没有此刀具的刀长补偿可供比较。请先对刀，再运行断刀检测。</translation>
+    </message>
+    <message>
+        <source>The break test ran but its result ("Old: … , new: …") could not be read. Run it again before you trust the tool.</source>
+        <translation>断刀检测已运行，但无法读取其结果（“Old: … , new: …”）。在信任该刀具之前请重新运行。</translation>
+    </message>
+    <message>
+        <source>Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.</source>
+        <translation>刀具 T%1 测得 %2 mm，之前为 %3 mm，超出了 %4 mm 的公差。</translation>
+    </message>
+    <message>
+        <source>The machine's reply to %1 could not be read. Check the offsets (Report) before you cut.</source>
+        <translation>无法读取机床对 %1 的回应。切削前请检查补偿（报告）。</translation>
+    </message>
+    <message>
+        <source>The tool length offset</source>
+        <translation>刀具长度补偿</translation>
+    </message>
+    <message>
+        <source>The machine was told TLO %1 mm but reports %2 mm. Check the offsets before you cut.</source>
+        <translation>已向机床设置刀长补偿 %1 mm，但机床报告为 %2 mm。切削前请检查补偿。</translation>
+    </message>
+    <message>
+        <source>The height above Z0</source>
+        <translation>Z0 以上的高度</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle, but its probe result ([PRB:…]) could not be read. Nothing was recorded; probe the tool again.</source>
+        <translation>T%1 已在主轴上，但无法读取对刀结果（[PRB:…]）。未记录任何内容；请重新对刀。</translation>
+    </message>
+    <message>
+        <source>The machine did not confirm the unlock; check its state before you go on.</source>
+        <translation>机床未确认解锁；继续之前请检查其状态。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MainWindow</name>
+    <message>
+        <source>Tool tables (*.json *.tbl *.csv);;Toffee tool table (*.json);;LinuxCNC tool table (*.tbl);;CSV spreadsheet (*.csv);;All files (*)</source>
+        <translation>刀具表 (*.json *.tbl *.csv);;Toffee 刀具表 (*.json);;LinuxCNC 刀具表 (*.tbl);;CSV 电子表格 (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Cannot connect to the machine</source>
+        <translation>无法连接到机床</translation>
+    </message>
+    <message>
+        <source>Disconnected: %1</source>
+        <translation>已断开：%1</translation>
+    </message>
+    <message>
+        <source>1 tool</source>
+        <translation>1 把刀具</translation>
+    </message>
+    <message>
+        <source>%1 tools</source>
+        <translation>%1 把刀具</translation>
+    </message>
+    <message>
+        <source>Value not accepted</source>
+        <translation>数值未被接受</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>主工具栏</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>新建(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>导入(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>导出(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Add Tool</source>
+        <translation>添加刀具(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Tool</source>
+        <translation>删除刀具(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Filter…</source>
+        <translation>筛选(&amp;F)…</translation>
+    </message>
+    <message>
+        <source>%1 was changed by another program.
+
+Reload it? Your unsaved changes in Toffee would be lost.</source>
+        <translation>%1 已被其他程序修改。
+
+重新加载？您在 Toffee 中未保存的更改将会丢失。</translation>
+    </message>
+    <message>
+        <source>%1 was changed by another program.
+
+Reload it?</source>
+        <translation>%1 已被其他程序修改。
+
+重新加载？</translation>
+    </message>
+    <message>
+        <source>File changed on disk</source>
+        <translation>磁盘上的文件已更改</translation>
+    </message>
+    <message>
+        <source>Cannot reload the tool table</source>
+        <translation>无法重新加载刀具表</translation>
+    </message>
+    <message>
+        <source>The table on screen has not been changed.</source>
+        <translation>屏幕上的表格未被更改。</translation>
+    </message>
+    <message>
+        <source>Reloaded %1</source>
+        <translation>已重新加载 %1</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>机床(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>机床</translation>
+    </message>
+    <message>
+        <source>&amp;Connect / Disconnect</source>
+        <translation>连接 / 断开(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Probe Current Tool…</source>
+        <translation>对当前刀具对刀(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>&amp;Break Test…</source>
+        <translation>断刀检测(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>&amp;Unlock</source>
+        <translation>解锁(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Stop the Machine</source>
+        <translation>停止机床(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Dark Palette</source>
+        <translation>深色配色(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>正在连接到 %1…</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>已连接</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <source>Cannot open the tool table</source>
+        <translation>无法打开刀具表</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>已打开 %1</translation>
+    </message>
+    <message>
+        <source>Open Tool Table</source>
+        <translation>打开刀具表</translation>
+    </message>
+    <message>
+        <source>Save as %1?</source>
+        <translation>另存为 %1？</translation>
+    </message>
+    <message>
+        <source>Save anyway?</source>
+        <translation>仍然保存？</translation>
+    </message>
+    <message>
+        <source>Cannot save the tool table</source>
+        <translation>无法保存刀具表</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <source>Save Tool Table</source>
+        <translation>保存刀具表</translation>
+    </message>
+    <message>
+        <source>Import Tools</source>
+        <translation>导入刀具</translation>
+    </message>
+    <message>
+        <source>Cannot import</source>
+        <translation>无法导入</translation>
+    </message>
+    <message>
+        <source>Nothing was imported.</source>
+        <translation>未导入任何内容。</translation>
+    </message>
+    <message>
+        <source>Imported %1 tools from %2</source>
+        <translation>已从 %2 导入 %1 把刀具</translation>
+    </message>
+    <message>
+        <source>Export Tool Table</source>
+        <translation>导出刀具表</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>无法导出</translation>
+    </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>已导出到 %1</translation>
+    </message>
+    <message>
+        <source>Cannot add a tool</source>
+        <translation>无法添加刀具</translation>
+    </message>
+    <message>
+        <source>Every tool number is in use.</source>
+        <translation>所有刀具号都已被使用。</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <source>The tool table has changes that are not saved.
+Save them first?</source>
+        <translation>刀具表有未保存的更改。
+先保存吗？</translation>
+    </message>
+    <message>
+        <source>The machine is busy</source>
+        <translation>机床正忙</translation>
+    </message>
+    <message>
+        <source>The machine is running "%1". Stop it and quit?</source>
+        <translation>机床正在执行“%1”。停止并退出吗？</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::OffsetEditor</name>
+    <message>
+        <source>Send</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <source>How to set the offset</source>
+        <translation>补偿的设置方式</translation>
+    </message>
+    <message>
+        <source>Set TLO to</source>
+        <translation>将 TLO 设为</translation>
+    </message>
+    <message>
+        <source>Change TLO by</source>
+        <translation>将 TLO 改变</translation>
+    </message>
+    <message>
+        <source>Gauge height above Z0</source>
+        <translation>Z0 以上的量规高度</translation>
+    </message>
+    <message>
+        <source>Offset value in millimetres</source>
+        <translation>补偿值（毫米）</translation>
+    </message>
+    <message>
+        <source>Command that will be sent</source>
+        <translation>将要发送的命令</translation>
+    </message>
+    <message>
+        <source>Resulting tool length offset</source>
+        <translation>得到的刀具长度补偿</translation>
+    </message>
+    <message>
+        <source>Send the offset to the machine</source>
+        <translation>把补偿发送到机床</translation>
+    </message>
+    <message>
+        <source>Send the command above — Ctrl+Enter</source>
+        <translation>发送上面的命令 — Ctrl+Enter</translation>
+    </message>
+    <message>
+        <source>Sends:</source>
+        <translation>发送：</translation>
+    </message>
+    <message>
+        <source>TLO:</source>
+        <translation>TLO：</translation>
+    </message>
+    <message>
+        <source>(the current TLO is not known yet)</source>
+        <translation>（当前 TLO 尚未知道）</translation>
+    </message>
+    <message>
+        <source>%1 → set by the machine from the spindle's position</source>
+        <translation>%1 → 由机床根据主轴位置设置</translation>
+    </message>
+    <message>
+        <source>Change the tool length offset?</source>
+        <translation>更改刀具长度补偿？</translation>
+    </message>
+    <message>
+        <source>Send %1?
+TLO %2
+
+The next cut uses the new offset.</source>
+        <translation>发送 %1？
+TLO %2
+
+下一次切削将使用新的补偿。</translation>
+    </message>
+    <message>
+        <source>Setting the TLO…</source>
+        <translation>正在设置 TLO…</translation>
+    </message>
+    <message>
+        <source>The offset was not set</source>
+        <translation>补偿未被设置</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ProbePanel</name>
+    <message>
+        <source>Probe Current Tool</source>
+        <translation>对当前刀具对刀</translation>
+    </message>
+    <message>
+        <source>Restore Known TLO</source>
+        <translation>恢复已知 TLO</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Probe the current tool on the tool setter</source>
+        <translation>在对刀仪上测量当前刀具</translation>
+    </message>
+    <message>
+        <source>Measure the tool in the spindle on the tool setter (M491) — F5</source>
+        <translation>在对刀仪上测量主轴中的刀具（M491）— F5</translation>
+    </message>
+    <message>
+        <source>Restore the selected tool's known TLO</source>
+        <translation>恢复所选刀具的已知 TLO</translation>
+    </message>
+    <message>
+        <source>Make the selected tool active with the TLO measured before, without probing — Ctrl+R</source>
+        <translation>以之前测得的 TLO 激活所选刀具，无需对刀 — Ctrl+R</translation>
+    </message>
+    <message>
+        <source>Machine busy</source>
+        <translation>机床忙碌</translation>
+    </message>
+    <message>
+        <source>Stop the machine</source>
+        <translation>停止机床</translation>
+    </message>
+    <message>
+        <source>Stop the machine now (Ctrl-X to the controller) — Esc</source>
+        <translation>立即停止机床（向控制器发送 Ctrl-X）— Esc</translation>
+    </message>
+    <message>
+        <source>Restore T%1 TLO</source>
+        <translation>恢复 T%1 的 TLO</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the tool table.</source>
+        <translation>刀具表中未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>the current tool</source>
+        <translation>当前刀具</translation>
+    </message>
+    <message>
+        <source>Probe %1?</source>
+        <translation>对 %1 对刀？</translation>
+    </message>
+    <message>
+        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
+
+Probe now?</source>
+        <translation>机床将移动：先升到安全高度，移到对刀仪上方，然后下降直到 %1 接触对刀仪。请让双手远离机床。
+
+现在对刀吗？</translation>
+    </message>
+    <message>
+        <source>Probing %1…</source>
+        <translation>正在对 %1 对刀…</translation>
+    </message>
+    <message>
+        <source>there is no tool in the spindle.</source>
+        <translation>主轴上没有刀具。</translation>
+    </message>
+    <message>
+        <source>T%1 measured: TLO %2 mm, recorded in the table.</source>
+        <translation>T%1 已测量：TLO %2 mm，已记录到表中。</translation>
+    </message>
+    <message>
+        <source>Measured TLO %1 mm, but it could not be recorded: %2</source>
+        <translation>测得 TLO %1 mm，但无法记录：%2</translation>
+    </message>
+    <message>
+        <source>Probing failed</source>
+        <translation>对刀失败</translation>
+    </message>
+    <message>
+        <source>Restore T%1?</source>
+        <translation>恢复 T%1？</translation>
+    </message>
+    <message>
+        <source>Make T%1 the active tool with TLO %2 mm, as measured %3, without probing?
+
+Sends: M493.2 T%1, then M493.3 Z%2</source>
+        <translation>将 T%1 设为当前刀具，TLO 为 %2 mm（测量于 %3），无需对刀？
+
+发送：M493.2 T%1，然后 M493.3 Z%2</translation>
+    </message>
+    <message>
+        <source>Restoring T%1…</source>
+        <translation>正在恢复 T%1…</translation>
+    </message>
+    <message>
+        <source>T%1 is active with TLO %2 mm.</source>
+        <translation>T%1 已激活，TLO 为 %2 mm。</translation>
+    </message>
+    <message>
+        <source>Restoring failed</source>
+        <translation>恢复失败</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::PtyServer</name>
+    <message>
+        <source>cannot open a pseudo-terminal: %1</source>
+        <translation>无法打开伪终端：%1</translation>
+    </message>
+    <message>
+        <source>cannot make the link %1</source>
+        <translation>无法创建链接 %1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::RemoveToolsCommand</name>
+    <message>
+        <source>Remove tool T%1</source>
+        <translation>删除刀具 T%1</translation>
+    </message>
+    <message>
+        <source>Remove %1 tools</source>
+        <translation>删除 %1 把刀具</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::SelfTest</name>
+    <message>
+        <source>no progress within 20 s</source>
+        <translation>20 秒内没有进展</translation>
+    </message>
+    <message>
+        <source>self-test failed while %1: %2</source>
+        <translation>自检在“%1”时失败：%2</translation>
+    </message>
+    <message>
+        <source>showing the window</source>
+        <translation>显示窗口</translation>
+    </message>
+    <message>
+        <source>the window did not render</source>
+        <translation>窗口没有绘制</translation>
+    </message>
+    <message>
+        <source>loading the example table</source>
+        <translation>加载示例表</translation>
+    </message>
+    <message>
+        <source>the example table did not load</source>
+        <translation>示例表未能加载</translation>
+    </message>
+    <message>
+        <source>connecting to the built-in emulator</source>
+        <translation>连接到内置模拟器</translation>
+    </message>
+    <message>
+        <source>probing the current tool</source>
+        <translation>对当前刀具对刀</translation>
+    </message>
+    <message>
+        <source>the measurement did not reach the table</source>
+        <translation>测量结果没有写入表中</translation>
+    </message>
+    <message>
+        <source>rendering</source>
+        <translation>绘制</translation>
+    </message>
+    <message>
+        <source>self-test passed: first frame after %1 ms; T%2 probed, TLO %3 mm recorded</source>
+        <translation>自检通过：%1 毫秒后显示第一帧；T%2 已对刀，TLO %3 mm 已记录</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::SerialPortTransport</name>
+    <message>
+        <source>Cannot open %1: %2. Check the cable, that no other program has the port open, and that you may use serial ports (the dialout group).</source>
+        <translation>无法打开 %1：%2。请检查线缆、是否有其他程序占用该端口，以及您是否有使用串口的权限（dialout 组）。</translation>
+    </message>
+    <message>
+        <source>%1 is not open.</source>
+        <translation>%1 未打开。</translation>
+    </message>
+    <message>
+        <source>%1 at %2 baud</source>
+        <translation>%1，%2 波特</translation>
+    </message>
+    <message>
+        <source>%1 sent a line longer than %2 bytes; it was dropped.</source>
+        <translation>%1 发送了超过 %2 字节的行；已丢弃。</translation>
+    </message>
+    <message>
+        <source>The port %1 went away (unplugged, or the machine was switched off).</source>
+        <translation>端口 %1 已消失（被拔出，或机床已关机）。</translation>
+    </message>
+    <message>
+        <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
+        <translation>端口 %1 出错（%2）；连接已关闭。请检查线缆后重新连接。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::TableReading</name>
+    <message>
+        <source>tool %1 is already on line %2; tool numbers must be unique.</source>
+        <translation>刀具 %1 已在第 %2 行；刀具号必须唯一。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::TloPanel</name>
+    <message>
+        <source>Machine state</source>
+        <translation>机床状态</translation>
+    </message>
+    <message>
+        <source>Active tool</source>
+        <translation>当前刀具</translation>
+    </message>
+    <message>
+        <source>Reference tool MCS Z</source>
+        <translation>基准刀具机床坐标 Z</translation>
+    </message>
+    <message>
+        <source>Current tool MCS Z</source>
+        <translation>当前刀具机床坐标 Z</translation>
+    </message>
+    <message>
+        <source>Tool length offset</source>
+        <translation>刀具长度补偿</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>解锁</translation>
+    </message>
+    <message>
+        <source>Unlock the machine</source>
+        <translation>解锁机床</translation>
+    </message>
+    <message>
+        <source>Clear the halt ($X) — Ctrl+Shift+U</source>
+        <translation>解除停机（$X）— Ctrl+Shift+U</translation>
+    </message>
+    <message>
+        <source>State:</source>
+        <translation>状态：</translation>
+    </message>
+    <message>
+        <source>Active tool:</source>
+        <translation>当前刀具：</translation>
+    </message>
+    <message>
+        <source>Reference MCS Z:</source>
+        <translation>基准机床 Z：</translation>
+    </message>
+    <message>
+        <source>Current MCS Z:</source>
+        <translation>当前机床 Z：</translation>
+    </message>
+    <message>
+        <source>TLO:</source>
+        <translation>TLO：</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>正在连接…</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>%1 — halted: %2</source>
+        <translation>%1 — 已停机：%2</translation>
+    </message>
+    <message>
+        <source>%1 (stale: no status report)</source>
+        <translation>%1（已过时：没有状态报告）</translation>
+    </message>
+    <message>
+        <source>Unlock failed</source>
+        <translation>解锁失败</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolDocument</name>
+    <message>
+        <source>This table has no file yet; use Save As.</source>
+        <translation>此表还没有文件；请使用“另存为”。</translation>
+    </message>
+    <message>
+        <source>%1 is in %2 but this table is in %3; Toffee does not convert units on import.</source>
+        <translation>%1 的单位为 %2，但此表为 %3；Toffee 导入时不换算单位。</translation>
+    </message>
+    <message>
+        <source>Import %1 tools</source>
+        <translation>导入 %1 把刀具</translation>
+    </message>
+    <message>
+        <source>Measure T%1</source>
+        <translation>测量 T%1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolTable</name>
+    <message>
+        <source>there is no tool %1 in the table.</source>
+        <translation>表中没有刀具 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolTableModel</name>
+    <message>
+        <source>Tool</source>
+        <translation>刀具</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>刀位</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>描述</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>长度</translation>
+    </message>
+    <message>
+        <source>Length wear</source>
+        <translation>长度磨损</translation>
+    </message>
+    <message>
+        <source>Total length</source>
+        <translation>总长度</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>半径</translation>
+    </message>
+    <message>
+        <source>Radius wear</source>
+        <translation>半径磨损</translation>
+    </message>
+    <message>
+        <source>Measured TLO</source>
+        <translation>测得 TLO</translation>
+    </message>
+    <message>
+        <source>Measured at</source>
+        <translation>测量时间</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>%1: "%2" is not a number; enter a value such as -12.345.</source>
+        <translation>%1：“%2”不是数字；请输入例如 -12.345 的值。</translation>
+    </message>
+    <message>
+        <source>%1: "%2" is not a whole number.</source>
+        <translation>%1：“%2”不是整数。</translation>
+    </message>
+    <message>
+        <source>this column cannot be edited.</source>
+        <translation>此列不能编辑。</translation>
+    </message>
+    <message>
+        <source>tool number %1 is already in the table; tool numbers must be unique.</source>
+        <translation>刀具号 %1 已在表中；刀具号必须唯一。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolTablePanel</name>
+    <message>
+        <source>Filter tools</source>
+        <translation>筛选刀具</translation>
+    </message>
+    <message>
+        <source>Filter tools (number, description, notes…)</source>
+        <translation>筛选刀具（编号、描述、备注…）</translation>
+    </message>
+    <message>
+        <source>Tool table</source>
+        <translation>刀具表</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Toffee, the tool offset manager.</source>
+        <translation>Toffee，刀具偏置管理器。</translation>
+    </message>
+    <message>
+        <source>Connect to the built-in emulator.</source>
+        <translation>连接到内置模拟器。</translation>
+    </message>
+    <message>
+        <source>Connect to the machine on PORT.</source>
+        <translation>连接到 PORT 上的机床。</translation>
+    </message>
+    <message>
+        <source>Baud rate (default 115200).</source>
+        <translation>波特率（默认 115200）。</translation>
+    </message>
+    <message>
+        <source>Open the window, connect to the emulator, load the example table, probe, render once, and exit (0 when all went well).</source>
+        <translation>打开窗口，连接模拟器，加载示例表，对刀，绘制一次后退出（一切正常时返回 0）。</translation>
+    </message>
+    <message>
+        <source>Use the dark palette.</source>
+        <translation>使用深色配色。</translation>
+    </message>
+    <message>
+        <source>Language: de, zh_CN or en (default: the system's).</source>
+        <translation>语言：de、zh_CN 或 en（默认跟随系统）。</translation>
+    </message>
+    <message>
+        <source>A tool table to open.</source>
+        <translation>要打开的刀具表。</translation>
+    </message>
+</context>
+</TS>
