@@ -1,5 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <QAbstractSpinBox>
 #include <QAction>
+#include <QComboBox>
+#include <QHeaderView>
+#include <QToolButton>
 #include <QApplication>
 #include <QDialogButtonBox>
 #include <QFile>
@@ -167,6 +171,32 @@ private Q_SLOTS:
         QVERIFY(!window.findChild<QAction *>(u"actionBreakTest"_s)->isEnabled());
         window.findChild<QAction *>(u"actionProbe"_s)->trigger(); // even forced: no question, nothing sent
         QVERIFY(!QApplication::activeModalWidget());
+    }
+
+    void everyControlHasAnAccessibleName()
+    {
+        MainWindow window;
+        window.show();
+        QStringList nameless;
+        const auto widgets = window.findChildren<QWidget *>();
+        for (QWidget *w : widgets) {
+            const bool control = qobject_cast<QAbstractButton *>(w) || qobject_cast<QLineEdit *>(w)
+                || qobject_cast<QComboBox *>(w) || qobject_cast<QAbstractSpinBox *>(w)
+                || qobject_cast<QAbstractItemView *>(w);
+            if (!control || w->objectName().startsWith(u"qt_"_s) || !w->isVisibleTo(&window)
+                || qobject_cast<QHeaderView *>(w)) // a header belongs to its table
+                continue;
+            if (qobject_cast<QLineEdit *>(w) && qobject_cast<QAbstractSpinBox *>(w->parentWidget()))
+                continue; // a spin box's own editor: the spin box carries the name
+            if (qobject_cast<QLineEdit *>(w) && qobject_cast<QComboBox *>(w->parentWidget()))
+                continue;
+            auto *button = qobject_cast<QAbstractButton *>(w);
+            const QString name = w->accessibleName().isEmpty() && button ? button->text() : w->accessibleName();
+            const auto *toolButton = qobject_cast<QToolButton *>(w);
+            if (name.isEmpty() && !(toolButton && toolButton->defaultAction()))
+                nameless << QString::fromLatin1(w->metaObject()->className()) + u' ' + w->objectName();
+        }
+        QVERIFY2(nameless.isEmpty(), qPrintable(nameless.join(u", "_s)));
     }
 
     void toolbarActionsHaveIconsThatRender()
