@@ -5,6 +5,7 @@
 #include <QPalette>
 #include <QStyle>
 #include <QStyleFactory>
+#include <QWidget>
 
 using namespace Qt::StringLiterals;
 
@@ -45,6 +46,20 @@ void applyPalette(bool dark)
     for (auto role : { QPalette::WindowText, QPalette::Text, QPalette::ButtonText })
         p.setColor(QPalette::Disabled, role, QColor(0x77, 0x76, 0x7b));
     QApplication::setPalette(p);
+}
+
+QString millimetres(double value, bool withUnit)
+{
+    const QString number = QString::number(value, 'f', 3);
+    return withUnit ? number + u" mm"_s : number;
+}
+
+void useMonospace(QWidget *widget)
+{
+    QFont font = widget->font();
+    font.setFamily(u"monospace"_s);
+    font.setStyleHint(QFont::Monospace);
+    widget->setFont(font);
 }
 
 QColor alarmColor(const QPalette &palette)

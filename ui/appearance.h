@@ -5,6 +5,7 @@
 #include <QIcon>
 
 class QPalette;
+class QWidget;
 
 namespace Toffee {
 
@@ -12,6 +13,10 @@ namespace Toffee {
 [[nodiscard]] QIcon themeIcon(const QString &name);
 // Light is the platform's own palette; dark is Fusion with a dark palette.
 void applyPalette(bool dark);
+// A length for people: "-33.388 mm" (`withUnit` false: "-33.388").
+[[nodiscard]] QString millimetres(double value, bool withUnit = true);
+// The widget's font, monospaced: for G-code and the console.
+void useMonospace(QWidget *widget);
 // The red that reads as an alarm on this palette, light or dark.
 [[nodiscard]] QColor alarmColor(const QPalette &palette);
 

@@ -17,15 +17,6 @@ using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-namespace {
-
-QString mm(double v)
-{
-    return QString::number(v, 'f', 3) + u" mm"_s;
-}
-
-} // namespace
-
 BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
     : QWidget(parent)
     , m_connection(connection)
@@ -116,9 +107,9 @@ void BreakTestPanel::run(bool confirm)
 void BreakTestPanel::showResult(const SessionResult &r)
 {
     if (r.breakTest) {
-        m_old->setText(mm(r.breakTest->oldTlo));
-        m_new->setText(mm(r.breakTest->newTlo));
-        m_difference->setText(mm(std::fabs(r.breakTest->newTlo - r.breakTest->oldTlo)));
+        m_old->setText(millimetres(r.breakTest->oldTlo));
+        m_new->setText(millimetres(r.breakTest->newTlo));
+        m_difference->setText(millimetres(std::fabs(r.breakTest->newTlo - r.breakTest->oldTlo)));
     }
     if (r.outcome == SessionResult::Outcome::ToolBroken) {
         m_verdict->setText(tr("BROKEN TOOL"));

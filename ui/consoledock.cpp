@@ -25,10 +25,7 @@ ConsoleDock::ConsoleDock(MachineConnection *connection, QWidget *parent)
     m_log->setObjectName(u"consoleLog"_s);
     m_log->setAccessibleName(tr("Lines sent to and received from the machine"));
     m_log->setUniformItemSizes(true);
-    QFont mono = m_log->font();
-    mono.setFamily(u"monospace"_s);
-    mono.setStyleHint(QFont::Monospace);
-    m_log->setFont(mono);
+    useMonospace(m_log);
     m_filter->setObjectName(u"consoleFilter"_s);
     m_filter->setAccessibleName(tr("Filter the console"));
     m_filter->setPlaceholderText(tr("Filter…"));
@@ -36,7 +33,7 @@ ConsoleDock::ConsoleDock(MachineConnection *connection, QWidget *parent)
     m_command->setObjectName(u"consoleCommand"_s);
     m_command->setAccessibleName(tr("Command to send to the machine"));
     m_command->setPlaceholderText(tr("Type a command (e.g. M493.4) and press Enter; ↑ ↓ for history"));
-    m_command->setFont(mono);
+    useMonospace(m_command);
     m_command->installEventFilter(this);
 
     auto *body = new QWidget;

@@ -39,8 +39,8 @@ protected:
 
 private:
     template<typename Slot>
-    QAction *addMenuAction(QMenu *menu, const QString &name, const QString &text, const QKeySequence &shortcut,
-                           Slot slot);
+    QAction *addMenuAction(
+        QMenu *menu, const QString &name, const QString &text, const QKeySequence &shortcut, Slot slot);
     void createActions();
     void createMachineActions();
     void updateMachineStatus();

@@ -8,20 +8,12 @@
 #include <QMessageBox>
 #include <QPushButton>
 
+#include "appearance.h"
 #include "machineconnection.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
-
-namespace {
-
-QString mm(double v)
-{
-    return QString::number(v, 'f', 3);
-}
-
-} // namespace
 
 OffsetEditor::OffsetEditor(MachineConnection *connection, QWidget *parent)
     : QWidget(parent)
@@ -47,10 +39,7 @@ OffsetEditor::OffsetEditor(MachineConnection *connection, QWidget *parent)
     m_command->setObjectName(u"offsetCommandPreview"_s);
     m_command->setAccessibleName(tr("Command that will be sent"));
     m_command->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    QFont mono = m_command->font();
-    mono.setFamily(u"monospace"_s);
-    mono.setStyleHint(QFont::Monospace);
-    m_command->setFont(mono);
+    useMonospace(m_command);
     m_result->setObjectName(u"offsetResultPreview"_s);
     m_result->setAccessibleName(tr("Resulting tool length offset"));
     m_send->setObjectName(u"sendOffsetButton"_s);
@@ -110,18 +99,18 @@ std::optional<double> OffsetEditor::targetTlo() const
 QString OffsetEditor::commandPreview() const
 {
     if (Mode(m_mode->currentData().toInt()) == AboveZ0)
-        return u"M493.3 H"_s + mm(m_value->value());
+        return u"M493.3 H"_s + millimetres(m_value->value(), false);
     const auto target = targetTlo();
-    return target ? u"M493.3 Z"_s + mm(*target) : tr("(the current TLO is not known yet)");
+    return target ? u"M493.3 Z"_s + millimetres(*target, false) : tr("(the current TLO is not known yet)");
 }
 
 QString OffsetEditor::resultPreview() const
 {
-    const QString now = m_currentTlo ? mm(*m_currentTlo) : u"?"_s;
+    const QString now = m_currentTlo ? millimetres(*m_currentTlo, false) : u"?"_s;
     const auto target = targetTlo();
     if (!target)
         return tr("%1 → set by the machine from the spindle's position").arg(now);
-    return now + u" → "_s + mm(*target) + u" mm"_s;
+    return now + u" → "_s + millimetres(*target, false) + u" mm"_s;
 }
 
 void OffsetEditor::updatePreview()

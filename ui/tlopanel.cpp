@@ -24,11 +24,6 @@ QLabel *valueLabel(QWidget *parent, const QString &name, const QString &accessib
     return label;
 }
 
-QString mm(double v)
-{
-    return QString::number(v, 'f', 3) + u" mm"_s;
-}
-
 } // namespace
 
 TloPanel::TloPanel(MachineConnection *connection, QWidget *parent)
@@ -97,14 +92,14 @@ void TloPanel::showStatus(const MachineStatus &status)
     if (status.tool)
         m_tool->setText(u"T"_s + QString::number(*status.tool));
     if (status.tlo)
-        m_tlo->setText(mm(*status.tlo));
+        m_tlo->setText(millimetres(*status.tlo));
 }
 
 void TloPanel::showOffsets(const TloReading &offsets, int tool)
 {
-    m_reference->setText(mm(offsets.referenceMz));
-    m_current->setText(mm(offsets.currentMz));
-    m_tlo->setText(mm(offsets.tlo()));
+    m_reference->setText(millimetres(offsets.referenceMz));
+    m_current->setText(millimetres(offsets.currentMz));
+    m_tlo->setText(millimetres(offsets.tlo()));
     if (tool >= 0)
         m_tool->setText(u"T"_s + QString::number(tool));
 }
