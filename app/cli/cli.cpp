@@ -16,6 +16,10 @@ const QString kUsage = uR"(usage: toffee-cli [--json] COMMAND [ARGS]
 Tool tables:
   show TABLE                 print a tool table (.json, .tbl or .csv)
   convert IN OUT             convert between formats, by extension or --to json|tbl|csv
+  export --dialect D TABLE   the program that loads TABLE into a controller (--tool N for one tool)
+  simulate --dialect D PROGRAM [--table FILE] [--samples N]
+                             run PROGRAM as controller D would: where each move ends, and the offsets after
+  dialects: carvera, fanuc, fagor, ab9, aerotech, linuxcnc
 
 The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMMAND
   status                     state, active tool, TLO, positions
@@ -37,12 +41,13 @@ Options:
   --timeout S                give up on any command after S seconds (default: 5, 120 for motion)
   --help                     this text
 
-Exit codes: 0 success, 2 bad input or usage, 3 broken tool detected, 4 machine error or alarm,
+Exit codes: 0 success, 2 bad input or usage, 3 broken tool detected, 4 machine error, alarm or program error,
 5 link failure or timeout.
 )"_s;
 
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
-    u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s };
+    u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s,
+                                      u"dialect"_s, u"samples"_s, u"tool"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s };
 
 int usageError(Invocation &call, const QString &message)
@@ -109,6 +114,10 @@ int run(const QStringList &arguments, QTextStream &out, QTextStream &err)
         return showTable(call);
     if (call.command == u"convert")
         return convertTable(call);
+    if (call.command == u"export")
+        return exportOffsets(call);
+    if (call.command == u"simulate")
+        return simulateProgram(call);
     if (isMachineCommand(call.command))
         return runMachineCommand(call);
     return usageError(call, u"unknown command \"%1\"."_s.arg(call.command));

@@ -32,6 +32,8 @@ void printJson(Invocation &call, const QJsonObject &object);
 
 int showTable(Invocation &call);
 int convertTable(Invocation &call);
+int exportOffsets(Invocation &call);
+int simulateProgram(Invocation &call);
 [[nodiscard]] bool isMachineCommand(const QString &command);
 int runMachineCommand(Invocation &call);
 

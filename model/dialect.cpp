@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "dialect.h"
+
+#include <cmath>
+
+#include <QCoreApplication>
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+// Free functions translate in the context lupdate gives them: the namespace.
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("Toffee", text);
+}
+
+constexpr int kMaxOffsetNumber = 999; // FANUC offset counts go from 32 to 999 (DIALECTS.md)
+
+QString value(double v, Units units)
+{
+    const int decimals = units == Units::Inch ? 4 : 3;
+    QString text = QString::number(v, 'f', decimals);
+    if (text.startsWith(u"-0.") && text.toDouble() == 0.0)
+        text.remove(0, 1); // never "-0.000"
+    return text;
+}
+
+QString header(const ToolTable &table, const QString &controller)
+{
+    return u"(Tool offsets for %1, written by Toffee: %2 tools, %3)\n"_s.arg(controller)
+        .arg(table.size())
+        .arg(unitsSymbol(table.units()));
+}
+
+Result<QString> g10Table(const ToolTable &table, const QString &controller)
+{
+    QString out = u"%\n"_s + header(table, controller) + (table.units() == Units::Inch ? u"G20\n"_s : u"G21\n"_s)
+        + u"G90\n"_s;
+    for (const Tool &tool : table.tools()) {
+        if (tool.number < 1 || tool.number > kMaxOffsetNumber)
+            return Error { tr("T%1 cannot be written: %2 offset numbers go from 1 to %3.")
+                               .arg(tool.number)
+                               .arg(controller)
+                               .arg(kMaxOffsetNumber) };
+        const QString p = QString::number(tool.number);
+        out += u"G10 L10 P"_s + p + u" R"_s + value(tool.lengthGeometry, table.units()) + u'\n';
+        out += u"G10 L11 P"_s + p + u" R"_s + value(tool.lengthWear, table.units()) + u'\n';
+        out += u"G10 L12 P"_s + p + u" R"_s + value(tool.radiusGeometry, table.units()) + u'\n';
+        out += u"G10 L13 P"_s + p + u" R"_s + value(tool.radiusWear, table.units()) + u'\n';
+    }
+    return QString(out + u"M30\n%\n"_s);
+}
+
+} // namespace
+
+const QList<DialectInfo> &dialects()
+{
+    static const QList<DialectInfo> all = {
+        { Dialect::Carvera, u"carvera"_s, u"Carvera"_s, u"M493.2 T, M493.3 Z per tool"_s, false },
+        { Dialect::Fanuc, u"fanuc"_s, u"FANUC"_s, u"G10 L10-L13, G90"_s, true },
+        { Dialect::Fagor8055M, u"fagor"_s, u"FAGOR 8055M"_s, {}, false },
+        { Dialect::AllenBradley9, u"ab9"_s, u"Allen-Bradley 9/Series"_s, u"G10 L10-L13, G90"_s, true },
+        { Dialect::Aerotech, u"aerotech"_s, u"Aerotech Automation1"_s,
+          u"G44 axes, CutterCompensationSetOffsets for one tool"_s, false },
+        { Dialect::LinuxCnc, u"linuxcnc"_s, u"LinuxCNC"_s, u"G10 L1"_s, true },
+    };
+    return all;
+}
+
+const DialectInfo &dialectInfo(Dialect dialect)
+{
+    for (const DialectInfo &info : dialects()) {
+        if (info.dialect == dialect)
+            return info;
+    }
+    return dialects().front();
+}
+
+std::optional<Dialect> dialectFromKey(QStringView key)
+{
+    for (const DialectInfo &info : dialects()) {
+        if (key.compare(info.key, Qt::CaseInsensitive) == 0)
+            return info.dialect;
+    }
+    return std::nullopt;
+}
+
+Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::optional<int> tool)
+{
+    const Units u = table.units();
+    switch (dialect) {
+    case Dialect::Fanuc:
+        return g10Table(table, u"FANUC"_s);
+    case Dialect::AllenBradley9:
+        return g10Table(table, u"Allen-Bradley 9/Series"_s);
+    case Dialect::LinuxCnc: {
+        // G10 L1 writes the tool table; LinuxCNC keeps no wear, so the totals go in.
+        QString out = header(table, u"LinuxCNC"_s) + (u == Units::Inch ? u"G20\n"_s : u"G21\n"_s);
+        for (const Tool &t : table.tools()) {
+            if (t.number < 1)
+                return Error { tr("T%1 cannot be written: LinuxCNC's G10 L1 needs a tool number from 1 up.")
+                                   .arg(t.number) };
+            out += u"G10 L1 P"_s + QString::number(t.number) + u" Z"_s + value(t.totalLength(), u) + u" R"_s
+                + value(t.totalRadius(), u) + u'\n';
+        }
+        return QString(out + u"M2\n"_s);
+    }
+    case Dialect::Carvera: {
+        QString out = header(table, u"the Carvera"_s);
+        int written = 0;
+        for (const Tool &t : table.tools()) {
+            if (!t.measuredTlo || (tool && t.number != *tool))
+                continue;
+            out += u"M493.2 T"_s + QString::number(t.number) + u"\nM493.3 Z"_s + value(*t.measuredTlo, u) + u'\n';
+            ++written;
+        }
+        if (written == 0)
+            return Error { tr("No tool has a measured TLO to write; probe the tools first.") };
+        return out;
+    }
+    case Dialect::Aerotech: {
+        const Tool *t = tool ? table.find(*tool) : (table.isEmpty() ? nullptr : &table.at(0));
+        if (!t)
+            return Error { tool ? tr("There is no tool %1 in the table.").arg(*tool)
+                                : tr("The table is empty.") };
+        return QString(header(table, u"Aerotech Automation1"_s)
+                       + u"// T%1 %2\nG44 X Y Z\nCutterCompensationSetOffsets([0, 0, %3])\n"_s.arg(t->number).arg(
+                           t->description, value(t->totalLength(), u)));
+    }
+    case Dialect::Fagor8055M:
+        return Error { tr("Toffee does not know how the FAGOR 8055M programs its offset table; enter the offsets at the "
+                          "control, or export for another dialect.") };
+    }
+    return Error { tr("Unknown controller.") };
+}
+
+} // namespace Toffee

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <optional>
+
+#include <QList>
+#include <QString>
+
+#include "result.h"
+#include "tooltable.h"
+
+namespace Toffee {
+
+// The controllers Toffee speaks. One tool table; what differs is the G-code that writes offsets into the
+// controller and how a program's positions are compensated (see DIALECTS.md).
+enum class Dialect { Carvera, Fanuc, Fagor8055M, AllenBradley9, Aerotech, LinuxCnc };
+
+struct DialectInfo
+{
+    Dialect dialect;
+    QString key; // as on the command line: carvera, fanuc, fagor, ab9, aerotech, linuxcnc
+    QString name;
+    // How a table is written, or empty when the controller has no way to program its offset table.
+    QString howOffsetsAreWritten;
+    // Whether a whole table survives export -> simulate (the controller keeps a table of offsets).
+    bool holdsATable = false;
+};
+
+[[nodiscard]] const QList<DialectInfo> &dialects();
+[[nodiscard]] const DialectInfo &dialectInfo(Dialect dialect);
+[[nodiscard]] std::optional<Dialect> dialectFromKey(QStringView key);
+
+// The program that loads `table` into the controller. Offset numbers are tool numbers (H = D = T). Values are
+// written at the controller's resolution (0.001 mm, 0.0001 in); `tool` picks the one tool for controllers that
+// hold a single set of offsets (Aerotech; the Carvera takes a TLO per tool as it is selected).
+[[nodiscard]] Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::optional<int> tool = {});
+
+} // namespace Toffee

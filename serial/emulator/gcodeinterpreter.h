@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+
+#include <QByteArrayView>
+#include <QList>
+
+#include "dialect.h"
+#include "result.h"
+
+namespace Toffee {
+
+// One offset register (FANUC H/D, AB, FAGOR L+K; LinuxCNC keeps only the geometry, a total).
+struct OffsetEntry
+{
+    double lengthGeometry = 0.0;
+    double lengthWear = 0.0;
+    double radiusGeometry = 0.0;
+    double radiusWear = 0.0;
+    [[nodiscard]] double length() const { return lengthGeometry + lengthWear; }
+    friend bool operator==(const OffsetEntry &, const OffsetEntry &) = default;
+};
+using OffsetTable = std::map<int, OffsetEntry>;
+using Position = std::array<double, 3>;
+
+struct SimulatedMove
+{
+    int line = 0;
+    Position end {};
+    QList<Position> points; // start to end, both included, when sampling
+};
+
+// Runs G-code as a controller of the given dialect would, with the offsets of DIALECTS.md applied, and reports
+// where each motion block leaves the machine. Shared by `toffee-cli simulate`, the conformance suite and the
+// emulator's idea of a machine. The rules, each from DIALECTS.md:
+// - a length offset takes effect when the length axis next moves (G17: Z, G18: Y, G19: X);
+// - FANUC G43 Hn adds, G44 Hn subtracts, G49 or H0 cancel, a new H replaces; AB the same, but H0 keeps the mode;
+// - FAGOR G43 switches compensation on with the value's own sign, G44 (and G74) off; D, else the tool's offset;
+// - LinuxCNC G43 [Hn], G43.1 Z, G43.2 Hn (adds), G49; M6/M61 do not change the offset; G10 L1 writes the table;
+// - G10 L10-L13 write geometry and wear, G90 replacing and G91 adding, refused (AB) in cutter compensation;
+//   an offset in use changes only when its H or D is called again;
+// - Aerotech: G44 X Y Z / CutterCompensationSetAxes, CutterCompensationSetOffsets, G143 / G144 / G149 applied
+//   and removed gradually over the next coordinated move, Home() dropping them at once;
+// - Carvera: no G43; the TLO set by M493.3 Z (or M6 T H) always applies.
+class GCodeInterpreter
+{
+public:
+    GCodeInterpreter(Dialect dialect, OffsetTable offsets = {}, int samples = 0);
+
+    // Runs a whole program; stops at the first error (which names its line) or at M2/M30.
+    [[nodiscard]] Result<void> run(QByteArrayView program);
+    // One block. Line numbers are 1-based.
+    [[nodiscard]] Result<void> runLine(QByteArrayView line, int lineNumber);
+
+    void setRecordMoves(bool record) { m_recordMoves = record; }
+    [[nodiscard]] const QList<SimulatedMove> &moves() const { return m_moves; }
+    [[nodiscard]] const OffsetTable &offsets() const { return m_offsets; }
+    [[nodiscard]] const Position &position() const { return m_machine; }
+    [[nodiscard]] qint64 blocks() const { return m_blocks; }
+    [[nodiscard]] bool ended() const { return m_ended; }
+
+private:
+    struct Words;
+    [[nodiscard]] Result<void> execute(const Words &w, int line);
+    [[nodiscard]] Result<void> callFunction(QByteArrayView call, int line);
+    [[nodiscard]] Result<void> g10(const Words &w, int line);
+    [[nodiscard]] Result<void> lengthWords(const Words &w, int line);
+    [[nodiscard]] Result<void> linuxCncLength(const Words &w, int line);
+    [[nodiscard]] Result<void> aerotechAxes(const QList<int> &axes, int line);
+    void move(const Words &w, int line);
+    [[nodiscard]] double lengthContribution() const;
+    [[nodiscard]] Error error(int line, const QString &message) const;
+    [[nodiscard]] double offsetValue(int number) const;
+
+    Dialect m_dialect;
+    OffsetTable m_offsets;
+    int m_samples;
+    bool m_recordMoves = true;
+    QList<SimulatedMove> m_moves;
+    qint64 m_blocks = 0;
+    bool m_ended = false;
+
+    Position m_program {}; // programmed (work) position
+    Position m_machine {}; // where the machine is
+    Position m_g54 {};
+    bool m_absolute = true;
+    int m_lengthAxis = 2;
+    bool m_radiusComp = false;
+
+    enum class LengthMode { Off, Plus, Minus };
+    LengthMode m_lengthMode = LengthMode::Off;
+    int m_hNumber = 0;
+    double m_lengthValue = 0.0; // latched when H/D/T calls it
+    double m_appliedLength = 0.0; // what the machine's length axis carries now
+    int m_preparedTool = 0;
+    int m_loadedTool = 0;
+
+    // Aerotech cutter offset compensation
+    QList<int> m_compAxes { 0, 1 };
+    QList<double> m_compOffsets { 0.0, 0.0 };
+    int m_compSign = 0; // +1 G143, -1 G144, 0 off
+    double m_compFraction = 0.0; // how much of the offsets the position carries now
+    int m_pending = 0; // +1/-1 a lead-on, 2 a lead-off, on the next coordinated move
+};
+
+} // namespace Toffee
