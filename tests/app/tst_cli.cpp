@@ -106,6 +106,64 @@ private Q_SLOTS:
         QVERIFY2(run.err.contains(message), run.err.constData());
     }
 
+    void simulatesAProgramAsJson()
+    {
+        QTemporaryDir dir;
+        const QString program = dir.filePath(u"aerotech.pgm"_s);
+        write(program, "G44 X Y Z\nCutterCompensationSetOffsets([1, -2, 3])\nG143 G1 X10 Y10\nG1 X20\n"
+                       "G149 G1 X30 Y10\n");
+        const Run run = cli({ u"--json"_s, u"simulate"_s, u"--dialect"_s, u"aerotech"_s, u"--samples"_s, u"3"_s, program });
+        QCOMPARE(run.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(run.out).object();
+        QCOMPARE(o.value(u"dialect"_s).toString(), u"aerotech"_s);
+        QVERIFY(o.value(u"error"_s).isNull());
+        const QJsonArray moves = o.value(u"moves"_s).toArray();
+        QCOMPARE(moves.size(), 3);
+        const QJsonObject leadOn = moves.at(0).toObject();
+        QCOMPARE(leadOn.value(u"line"_s).toInt(), 3);
+        QCOMPARE(leadOn.value(u"x"_s).toDouble(), 11.0);
+        QCOMPARE(leadOn.value(u"y"_s).toDouble(), 8.0);
+        QCOMPARE(leadOn.value(u"z"_s).toDouble(), 3.0);
+        const QJsonArray half = leadOn.value(u"points"_s).toArray().at(1).toArray();
+        QCOMPARE(half.at(0).toDouble(), 5.5);
+        QCOMPARE(half.at(2).toDouble(), 1.5);
+    }
+
+    void aProgramErrorNamesTheLineAndExits4()
+    {
+        QTemporaryDir dir;
+        const QString program = dir.filePath(u"bad.nc"_s);
+        write(program, "G90 G10 L10 P1 R100\nG43 G0 Z10 H1\nG43 G0 Z10 H1000\n");
+        const Run run = cli({ u"--json"_s, u"simulate"_s, u"--dialect"_s, u"fanuc"_s, program });
+        QCOMPARE(run.exitCode, 4);
+        const QJsonObject o = QJsonDocument::fromJson(run.out).object();
+        QCOMPARE(o.value(u"error"_s).toObject().value(u"line"_s).toInt(), 3);
+        QVERIFY(o.value(u"error"_s).toObject().value(u"message"_s).toString().startsWith(u"PS0030"_s));
+        QCOMPARE(o.value(u"moves"_s).toArray().size(), 1); // what ran before the error
+        QCOMPARE(o.value(u"offsets"_s).toArray().at(0).toObject().value(u"length_geometry"_s).toDouble(), 100.0);
+        QVERIFY(run.err.contains("line 3: PS0030"));
+    }
+
+    void exportsAndTheExportSimulatesBack()
+    {
+        QTemporaryDir dir;
+        Run run = cli({ u"export"_s, u"--dialect"_s, u"fanuc"_s, kExample });
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(run.out.contains("G10 L10 P2 R71.488\n"));
+        const QString program = dir.filePath(u"offsets.nc"_s);
+        write(program, run.out);
+        run = cli({ u"--json"_s, u"simulate"_s, u"--dialect"_s, u"fanuc"_s, program });
+        QCOMPARE(run.exitCode, 0);
+        const QJsonArray offsets = QJsonDocument::fromJson(run.out).object().value(u"offsets"_s).toArray();
+        QCOMPARE(offsets.size(), 6);
+        QCOMPARE(offsets.at(2).toObject().value(u"length_wear"_s).toDouble(), -0.02);
+        run = cli({ u"export"_s, u"--dialect"_s, u"fagor"_s, kExample });
+        QCOMPARE(run.exitCode, 2);
+        run = cli({ u"export"_s, u"--dialect"_s, u"heidenhain"_s, kExample });
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.err.contains("--dialect must be one of carvera, fanuc"));
+    }
+
     void namesTheLineOfAMalformedFile()
     {
         QTemporaryDir dir;
