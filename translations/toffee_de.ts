@@ -315,6 +315,34 @@
         <source>Check the machine, then Unlock ($X).</source>
         <translation>Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
     </message>
+    <message>
+        <source>T%1 cannot be written: %2 offset numbers go from 1 to %3.</source>
+        <translation>T%1 lässt sich nicht schreiben: %2-Korrekturnummern gehen von 1 bis %3.</translation>
+    </message>
+    <message>
+        <source>T%1 cannot be written: LinuxCNC's G10 L1 needs a tool number from 1 up.</source>
+        <translation>T%1 lässt sich nicht schreiben: G10 L1 von LinuxCNC braucht eine Werkzeugnummer ab 1.</translation>
+    </message>
+    <message>
+        <source>No tool has a measured TLO to write; probe the tools first.</source>
+        <translation>Kein Werkzeug hat eine gemessene Längenkorrektur; vermessen Sie die Werkzeuge zuerst.</translation>
+    </message>
+    <message>
+        <source>There is no tool %1 in the table.</source>
+        <translation>Es gibt kein Werkzeug %1 in der Tabelle.</translation>
+    </message>
+    <message>
+        <source>The table is empty.</source>
+        <translation>Die Tabelle ist leer.</translation>
+    </message>
+    <message>
+        <source>Toffee does not know how the FAGOR 8055M programs its offset table; enter the offsets at the control, or export for another dialect.</source>
+        <translation>Toffee weiß nicht, wie die FAGOR 8055M ihre Korrekturtabelle programmiert; geben Sie die Korrekturen an der Steuerung ein oder exportieren Sie für eine andere Steuerung.</translation>
+    </message>
+    <message>
+        <source>Unknown controller.</source>
+        <translation>Unbekannte Steuerung.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -503,6 +531,177 @@
     <message>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::GCodeInterpreter</name>
+    <message>
+        <source>a comment "(" is never closed on this line.</source>
+        <translation>Ein Kommentar „(“ wird in dieser Zeile nicht geschlossen.</translation>
+    </message>
+    <message>
+        <source>"%1" is not G-code this controller reads.</source>
+        <translation>„%1“ ist kein G-Code, den diese Steuerung liest.</translation>
+    </message>
+    <message>
+        <source>the word %1 needs a value.</source>
+        <translation>Das Wort %1 braucht einen Wert.</translation>
+    </message>
+    <message>
+        <source>"%1" is not a number.</source>
+        <translation>„%1“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>too many G codes in one block.</source>
+        <translation>Zu viele G-Codes in einem Satz.</translation>
+    </message>
+    <message>
+        <source>too many M codes in one block.</source>
+        <translation>Zu viele M-Codes in einem Satz.</translation>
+    </message>
+    <message>
+        <source>the word %1 appears twice in one block.</source>
+        <translation>Das Wort %1 kommt in einem Satz zweimal vor.</translation>
+    </message>
+    <message>
+        <source>unexpected "%1".</source>
+        <translation>Unerwartetes „%1“.</translation>
+    </message>
+    <message>
+        <source>G%1 is not simulated.</source>
+        <translation>G%1 wird nicht simuliert.</translation>
+    </message>
+    <message>
+        <source>on Automation1, G43 is not tool length compensation; use G44 axes, offsets and G143 / G144.</source>
+        <translation>Bei Automation1 ist G43 keine Werkzeuglängenkorrektur; verwenden Sie G44-Achsen, Korrekturen und G143 / G144.</translation>
+    </message>
+    <message>
+        <source>G143, G144 and G149 exclude one another.</source>
+        <translation>G143, G144 und G149 schließen einander aus.</translation>
+    </message>
+    <message>
+        <source>the Carvera has no G43/G44/G49: its TLO always applies.</source>
+        <translation>Die Carvera hat kein G43/G44/G49: ihre Längenkorrektur gilt immer.</translation>
+    </message>
+    <message>
+        <source>PS0030 ILLEGAL OFFSET NUMBER: H%1; offsets go from 0 to %2.</source>
+        <translation>PS0030 ILLEGAL OFFSET NUMBER: H%1; Korrekturen gehen von 0 bis %2.</translation>
+    </message>
+    <message>
+        <source>H%1 is not an offset number (0 to %2).</source>
+        <translation>H%1 ist keine Korrekturnummer (0 bis %2).</translation>
+    </message>
+    <message>
+        <source>Cannot change tool offset with cutter radius compensation on</source>
+        <translation>Cannot change tool offset with cutter radius compensation on (Werkzeugkorrektur bei aktiver Radiuskorrektur nicht änderbar)</translation>
+    </message>
+    <message>
+        <source>M61 needs Q, the tool number.</source>
+        <translation>M61 braucht Q, die Werkzeugnummer.</translation>
+    </message>
+    <message>
+        <source>tool %1 is not in the tool table.</source>
+        <translation>Werkzeug %1 steht nicht in der Werkzeugtabelle.</translation>
+    </message>
+    <message>
+        <source>G43.1 needs Z, the offset.</source>
+        <translation>G43.1 braucht Z, die Korrektur.</translation>
+    </message>
+    <message>
+        <source>G43.2 needs H, the tool whose offset it adds.</source>
+        <translation>G43.2 braucht H, das Werkzeug, dessen Korrektur addiert wird.</translation>
+    </message>
+    <message>
+        <source>PS0031 ILLEGAL P COMMAND IN G10: G10 needs an L word.</source>
+        <translation>PS0031 ILLEGAL P COMMAND IN G10: G10 braucht ein L-Wort.</translation>
+    </message>
+    <message>
+        <source>G10 needs an L word.</source>
+        <translation>G10 braucht ein L-Wort.</translation>
+    </message>
+    <message>
+        <source>only G54 (P1) is simulated.</source>
+        <translation>Nur G54 (P1) wird simuliert.</translation>
+    </message>
+    <message>
+        <source>G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.</source>
+        <translation>G10 L%1 wird für LinuxCNC nicht simuliert; G10 L1 schreibt die Werkzeugtabelle.</translation>
+    </message>
+    <message>
+        <source>G10 L1 needs P, a tool number in the tool table.</source>
+        <translation>G10 L1 braucht P, eine Werkzeugnummer aus der Werkzeugtabelle.</translation>
+    </message>
+    <message>
+        <source>G10 L1: tool %1 is not in the tool table.</source>
+        <translation>G10 L1: Werkzeug %1 steht nicht in der Werkzeugtabelle.</translation>
+    </message>
+    <message>
+        <source>this controller's offset table is not programmed with G10.</source>
+        <translation>Die Korrekturtabelle dieser Steuerung wird nicht mit G10 programmiert.</translation>
+    </message>
+    <message>
+        <source>G10 may not be programmed while cutter compensation (G41/G42) is active; nothing was written.</source>
+        <translation>G10 darf bei aktiver Fräserradiuskorrektur (G41/G42) nicht programmiert werden; nichts wurde geschrieben.</translation>
+    </message>
+    <message>
+        <source>PS0031 ILLEGAL P COMMAND IN G10: L%1 is not L10 to L13.</source>
+        <translation>PS0031 ILLEGAL P COMMAND IN G10: L%1 ist nicht L10 bis L13.</translation>
+    </message>
+    <message>
+        <source>G10 L%1 is not L10 to L13.</source>
+        <translation>G10 L%1 ist nicht L10 bis L13.</translation>
+    </message>
+    <message>
+        <source>PS0031 ILLEGAL P COMMAND IN G10: P must be an offset number from 1 to %1.</source>
+        <translation>PS0031 ILLEGAL P COMMAND IN G10: P muss eine Korrekturnummer von 1 bis %1 sein.</translation>
+    </message>
+    <message>
+        <source>G10 needs P, an offset number from 1 to %1.</source>
+        <translation>G10 braucht P, eine Korrekturnummer von 1 bis %1.</translation>
+    </message>
+    <message>
+        <source>PS0031 ILLEGAL P COMMAND IN G10: the value (R) is missing.</source>
+        <translation>PS0031 ILLEGAL P COMMAND IN G10: der Wert (R) fehlt.</translation>
+    </message>
+    <message>
+        <source>G10 needs R, the value.</source>
+        <translation>G10 braucht R, den Wert.</translation>
+    </message>
+    <message>
+        <source>PS0032 ILLEGAL OFFSET VALUE IN G10: %1 is beyond ±%2.</source>
+        <translation>PS0032 ILLEGAL OFFSET VALUE IN G10: %1 liegt jenseits von ±%2.</translation>
+    </message>
+    <message>
+        <source>G10: %1 is beyond ±%2.</source>
+        <translation>G10: %1 liegt jenseits von ±%2.</translation>
+    </message>
+    <message>
+        <source>cutter compensation takes 2 or 3 axes.</source>
+        <translation>Die Fräserkorrektur nimmt 2 oder 3 Achsen.</translation>
+    </message>
+    <message>
+        <source>the compensation axes can only change while cutter offset compensation is off.</source>
+        <translation>Die Korrekturachsen lassen sich nur bei ausgeschalteter Fräserversatzkorrektur ändern.</translation>
+    </message>
+    <message>
+        <source>"%1" is not a call this simulator knows.</source>
+        <translation>„%1“ ist kein Aufruf, den dieser Simulator kennt.</translation>
+    </message>
+    <message>
+        <source>CutterCompensationSetAxes takes axes such as [X, Y, Z].</source>
+        <translation>CutterCompensationSetAxes nimmt Achsen wie [X, Y, Z].</translation>
+    </message>
+    <message>
+        <source>CutterCompensationSetOffsets works only while cutter offset compensation is off.</source>
+        <translation>CutterCompensationSetOffsets wirkt nur bei ausgeschalteter Fräserversatzkorrektur.</translation>
+    </message>
+    <message>
+        <source>CutterCompensationSetOffsets needs %1 offsets, one for each compensation axis.</source>
+        <translation>CutterCompensationSetOffsets braucht %1 Korrekturen, eine je Korrekturachse.</translation>
+    </message>
+    <message>
+        <source>Home takes axes such as X or [X, Y].</source>
+        <translation>Home nimmt Achsen wie X oder [X, Y].</translation>
     </message>
 </context>
 <context>

@@ -315,6 +315,34 @@
         <source>Check the machine, then Unlock ($X).</source>
         <translation>请检查机床，然后解锁（$X）。</translation>
     </message>
+    <message>
+        <source>T%1 cannot be written: %2 offset numbers go from 1 to %3.</source>
+        <translation>无法写入 T%1：%2 的补偿号为 1 到 %3。</translation>
+    </message>
+    <message>
+        <source>T%1 cannot be written: LinuxCNC's G10 L1 needs a tool number from 1 up.</source>
+        <translation>无法写入 T%1：LinuxCNC 的 G10 L1 需要从 1 开始的刀具号。</translation>
+    </message>
+    <message>
+        <source>No tool has a measured TLO to write; probe the tools first.</source>
+        <translation>没有刀具有测得的 TLO 可写入；请先对刀。</translation>
+    </message>
+    <message>
+        <source>There is no tool %1 in the table.</source>
+        <translation>表中没有刀具 %1。</translation>
+    </message>
+    <message>
+        <source>The table is empty.</source>
+        <translation>表格为空。</translation>
+    </message>
+    <message>
+        <source>Toffee does not know how the FAGOR 8055M programs its offset table; enter the offsets at the control, or export for another dialect.</source>
+        <translation>Toffee 不知道 FAGOR 8055M 如何编程其补偿表；请在控制器上输入补偿，或导出为其他控制器。</translation>
+    </message>
+    <message>
+        <source>Unknown controller.</source>
+        <translation>未知的控制器。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -503,6 +531,177 @@
     <message>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::GCodeInterpreter</name>
+    <message>
+        <source>a comment "(" is never closed on this line.</source>
+        <translation>本行的注释“(”没有结束。</translation>
+    </message>
+    <message>
+        <source>"%1" is not G-code this controller reads.</source>
+        <translation>“%1”不是此控制器能读取的 G 代码。</translation>
+    </message>
+    <message>
+        <source>the word %1 needs a value.</source>
+        <translation>字 %1 需要一个值。</translation>
+    </message>
+    <message>
+        <source>"%1" is not a number.</source>
+        <translation>“%1”不是数字。</translation>
+    </message>
+    <message>
+        <source>too many G codes in one block.</source>
+        <translation>一个程序段中的 G 代码太多。</translation>
+    </message>
+    <message>
+        <source>too many M codes in one block.</source>
+        <translation>一个程序段中的 M 代码太多。</translation>
+    </message>
+    <message>
+        <source>the word %1 appears twice in one block.</source>
+        <translation>字 %1 在一个程序段中出现了两次。</translation>
+    </message>
+    <message>
+        <source>unexpected "%1".</source>
+        <translation>意外的“%1”。</translation>
+    </message>
+    <message>
+        <source>G%1 is not simulated.</source>
+        <translation>不模拟 G%1。</translation>
+    </message>
+    <message>
+        <source>on Automation1, G43 is not tool length compensation; use G44 axes, offsets and G143 / G144.</source>
+        <translation>在 Automation1 上，G43 不是刀具长度补偿；请使用 G44 轴、补偿值和 G143 / G144。</translation>
+    </message>
+    <message>
+        <source>G143, G144 and G149 exclude one another.</source>
+        <translation>G143、G144 和 G149 互相排斥。</translation>
+    </message>
+    <message>
+        <source>the Carvera has no G43/G44/G49: its TLO always applies.</source>
+        <translation>Carvera 没有 G43/G44/G49：其 TLO 始终生效。</translation>
+    </message>
+    <message>
+        <source>PS0030 ILLEGAL OFFSET NUMBER: H%1; offsets go from 0 to %2.</source>
+        <translation>PS0030 ILLEGAL OFFSET NUMBER：H%1；补偿号为 0 到 %2。</translation>
+    </message>
+    <message>
+        <source>H%1 is not an offset number (0 to %2).</source>
+        <translation>H%1 不是补偿号（0 到 %2）。</translation>
+    </message>
+    <message>
+        <source>Cannot change tool offset with cutter radius compensation on</source>
+        <translation>Cannot change tool offset with cutter radius compensation on（刀具半径补偿开启时不能更改刀具补偿）</translation>
+    </message>
+    <message>
+        <source>M61 needs Q, the tool number.</source>
+        <translation>M61 需要 Q，即刀具号。</translation>
+    </message>
+    <message>
+        <source>tool %1 is not in the tool table.</source>
+        <translation>刀具 %1 不在刀具表中。</translation>
+    </message>
+    <message>
+        <source>G43.1 needs Z, the offset.</source>
+        <translation>G43.1 需要 Z，即补偿值。</translation>
+    </message>
+    <message>
+        <source>G43.2 needs H, the tool whose offset it adds.</source>
+        <translation>G43.2 需要 H，即要加上其补偿的刀具。</translation>
+    </message>
+    <message>
+        <source>PS0031 ILLEGAL P COMMAND IN G10: G10 needs an L word.</source>
+        <translation>PS0031 ILLEGAL P COMMAND IN G10：G10 需要 L 字。</translation>
+    </message>
+    <message>
+        <source>G10 needs an L word.</source>
+        <translation>G10 需要 L 字。</translation>
+    </message>
+    <message>
+        <source>only G54 (P1) is simulated.</source>
+        <translation>只模拟 G54（P1）。</translation>
+    </message>
+    <message>
+        <source>G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.</source>
+        <translation>LinuxCNC 不模拟 G10 L%1；G10 L1 写入刀具表。</translation>
+    </message>
+    <message>
+        <source>G10 L1 needs P, a tool number in the tool table.</source>
+        <translation>G10 L1 需要 P，即刀具表中的刀具号。</translation>
+    </message>
+    <message>
+        <source>G10 L1: tool %1 is not in the tool table.</source>
+        <translation>G10 L1：刀具 %1 不在刀具表中。</translation>
+    </message>
+    <message>
+        <source>this controller's offset table is not programmed with G10.</source>
+        <translation>此控制器的补偿表不是用 G10 编程的。</translation>
+    </message>
+    <message>
+        <source>G10 may not be programmed while cutter compensation (G41/G42) is active; nothing was written.</source>
+        <translation>刀具半径补偿（G41/G42）生效时不能编写 G10；未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>PS0031 ILLEGAL P COMMAND IN G10: L%1 is not L10 to L13.</source>
+        <translation>PS0031 ILLEGAL P COMMAND IN G10：L%1 不是 L10 到 L13。</translation>
+    </message>
+    <message>
+        <source>G10 L%1 is not L10 to L13.</source>
+        <translation>G10 L%1 不是 L10 到 L13。</translation>
+    </message>
+    <message>
+        <source>PS0031 ILLEGAL P COMMAND IN G10: P must be an offset number from 1 to %1.</source>
+        <translation>PS0031 ILLEGAL P COMMAND IN G10：P 必须是 1 到 %1 的补偿号。</translation>
+    </message>
+    <message>
+        <source>G10 needs P, an offset number from 1 to %1.</source>
+        <translation>G10 需要 P，即 1 到 %1 的补偿号。</translation>
+    </message>
+    <message>
+        <source>PS0031 ILLEGAL P COMMAND IN G10: the value (R) is missing.</source>
+        <translation>PS0031 ILLEGAL P COMMAND IN G10：缺少值（R）。</translation>
+    </message>
+    <message>
+        <source>G10 needs R, the value.</source>
+        <translation>G10 需要 R，即数值。</translation>
+    </message>
+    <message>
+        <source>PS0032 ILLEGAL OFFSET VALUE IN G10: %1 is beyond ±%2.</source>
+        <translation>PS0032 ILLEGAL OFFSET VALUE IN G10：%1 超出 ±%2。</translation>
+    </message>
+    <message>
+        <source>G10: %1 is beyond ±%2.</source>
+        <translation>G10：%1 超出 ±%2。</translation>
+    </message>
+    <message>
+        <source>cutter compensation takes 2 or 3 axes.</source>
+        <translation>刀具补偿需要 2 或 3 个轴。</translation>
+    </message>
+    <message>
+        <source>the compensation axes can only change while cutter offset compensation is off.</source>
+        <translation>只有在刀具偏置补偿关闭时才能更改补偿轴。</translation>
+    </message>
+    <message>
+        <source>"%1" is not a call this simulator knows.</source>
+        <translation>“%1”不是此模拟器认识的调用。</translation>
+    </message>
+    <message>
+        <source>CutterCompensationSetAxes takes axes such as [X, Y, Z].</source>
+        <translation>CutterCompensationSetAxes 需要轴，例如 [X, Y, Z]。</translation>
+    </message>
+    <message>
+        <source>CutterCompensationSetOffsets works only while cutter offset compensation is off.</source>
+        <translation>CutterCompensationSetOffsets 只能在刀具偏置补偿关闭时使用。</translation>
+    </message>
+    <message>
+        <source>CutterCompensationSetOffsets needs %1 offsets, one for each compensation axis.</source>
+        <translation>CutterCompensationSetOffsets 需要 %1 个补偿值，每个补偿轴一个。</translation>
+    </message>
+    <message>
+        <source>Home takes axes such as X or [X, Y].</source>
+        <translation>Home 需要轴，例如 X 或 [X, Y]。</translation>
     </message>
 </context>
 <context>
