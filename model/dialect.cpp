@@ -37,8 +37,8 @@ QString header(const ToolTable &table, const QString &controller)
 
 Result<QString> g10Table(const ToolTable &table, const QString &controller)
 {
-    QString out = u"%\n"_s + header(table, controller) + (table.units() == Units::Inch ? u"G20\n"_s : u"G21\n"_s)
-        + u"G90\n"_s;
+    QString out = u"%\n"_s + header(table, controller)
+        + (table.units() == Units::Inch ? u"G20\n"_s : u"G21\n"_s) + u"G90\n"_s;
     for (const Tool &tool : table.tools()) {
         if (tool.number < 1 || tool.number > kMaxOffsetNumber)
             return Error { tr("T%1 cannot be written: %2 offset numbers go from 1 to %3.")
@@ -64,7 +64,7 @@ const QList<DialectInfo> &dialects()
         { Dialect::Fagor8055M, u"fagor"_s, u"FAGOR 8055M"_s, {}, false },
         { Dialect::AllenBradley9, u"ab9"_s, u"Allen-Bradley 9/Series"_s, u"G10 L10-L13, G90"_s, true },
         { Dialect::Aerotech, u"aerotech"_s, u"Aerotech Automation1"_s,
-          u"G44 axes, CutterCompensationSetOffsets for one tool"_s, false },
+            u"G44 axes, CutterCompensationSetOffsets for one tool"_s, false },
         { Dialect::LinuxCnc, u"linuxcnc"_s, u"LinuxCNC"_s, u"G10 L1"_s, true },
     };
     return all;
@@ -114,7 +114,8 @@ Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::opti
         for (const Tool &t : table.tools()) {
             if (!t.measuredTlo || (tool && t.number != *tool))
                 continue;
-            out += u"M493.2 T"_s + QString::number(t.number) + u"\nM493.3 Z"_s + value(*t.measuredTlo, u) + u'\n';
+            out += u"M493.2 T"_s + QString::number(t.number) + u"\nM493.3 Z"_s + value(*t.measuredTlo, u)
+                + u'\n';
             ++written;
         }
         if (written == 0)
@@ -127,12 +128,13 @@ Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::opti
             return Error { tool ? tr("There is no tool %1 in the table.").arg(*tool)
                                 : tr("The table is empty.") };
         return QString(header(table, u"Aerotech Automation1"_s)
-                       + u"// T%1 %2\nG44 X Y Z\nCutterCompensationSetOffsets([0, 0, %3])\n"_s.arg(t->number).arg(
-                           t->description, value(t->totalLength(), u)));
+            + u"// T%1 %2\nG44 X Y Z\nCutterCompensationSetOffsets([0, 0, %3])\n"_s.arg(t->number).arg(
+                t->description, value(t->totalLength(), u)));
     }
     case Dialect::Fagor8055M:
-        return Error { tr("Toffee does not know how the FAGOR 8055M programs its offset table; enter the offsets at the "
-                          "control, or export for another dialect.") };
+        return Error { tr(
+            "Toffee does not know how the FAGOR 8055M programs its offset table; enter the offsets at the "
+            "control, or export for another dialect.") };
     }
     return Error { tr("Unknown controller.") };
 }

@@ -31,8 +31,9 @@ struct DialectInfo
 [[nodiscard]] std::optional<Dialect> dialectFromKey(QStringView key);
 
 // The program that loads `table` into the controller. Offset numbers are tool numbers (H = D = T). Values are
-// written at the controller's resolution (0.001 mm, 0.0001 in); `tool` picks the one tool for controllers that
-// hold a single set of offsets (Aerotech; the Carvera takes a TLO per tool as it is selected).
-[[nodiscard]] Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::optional<int> tool = {});
+// written at the controller's resolution (0.001 mm, 0.0001 in); `tool` picks the one tool for controllers
+// that hold a single set of offsets (Aerotech; the Carvera takes a TLO per tool as it is selected).
+[[nodiscard]] Result<QString> exportProgram(
+    const ToolTable &table, Dialect dialect, std::optional<int> tool = {});
 
 } // namespace Toffee

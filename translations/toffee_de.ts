@@ -534,6 +534,61 @@
     </message>
 </context>
 <context>
+    <name>Toffee::ExportDialog</name>
+    <message>
+        <source>Save…</source>
+        <translation>Speichern …</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Kopieren</translation>
+    </message>
+    <message>
+        <source>Export for Controller</source>
+        <translation>Für Steuerung exportieren</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Steuerung</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>All tools</source>
+        <translation>Alle Werkzeuge</translation>
+    </message>
+    <message>
+        <source>The program that will be written</source>
+        <translation>Das Programm, das geschrieben wird</translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation>Steuerung:</translation>
+    </message>
+    <message>
+        <source>Tool:</source>
+        <translation>Werkzeug:</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Save the Offset Program</source>
+        <translation>Korrekturprogramm speichern</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.nc *.ngc *.gcode *.pgm);;All files (*)</source>
+        <translation>G-Code-Programme (*.nc *.ngc *.gcode *.pgm);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::GCodeInterpreter</name>
     <message>
         <source>a comment "(" is never closed on this line.</source>
@@ -1154,6 +1209,10 @@ Zuerst speichern?</translation>
     <message>
         <source>The machine is running "%1". Stop it and quit?</source>
         <translation>Die Maschine führt „%1“ aus. Anhalten und beenden?</translation>
+    </message>
+    <message>
+        <source>Export for &amp;Controller…</source>
+        <translation>Für &amp;Steuerung exportieren …</translation>
     </message>
 </context>
 <context>

@@ -534,6 +534,61 @@
     </message>
 </context>
 <context>
+    <name>Toffee::ExportDialog</name>
+    <message>
+        <source>Save…</source>
+        <translation>保存…</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Export for Controller</source>
+        <translation>为控制器导出</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>刀具</translation>
+    </message>
+    <message>
+        <source>All tools</source>
+        <translation>所有刀具</translation>
+    </message>
+    <message>
+        <source>The program that will be written</source>
+        <translation>将要写入的程序</translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation>控制器：</translation>
+    </message>
+    <message>
+        <source>Tool:</source>
+        <translation>刀具：</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>无法导出</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Save the Offset Program</source>
+        <translation>保存补偿程序</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.nc *.ngc *.gcode *.pgm);;All files (*)</source>
+        <translation>G 代码程序 (*.nc *.ngc *.gcode *.pgm);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::GCodeInterpreter</name>
     <message>
         <source>a comment "(" is never closed on this line.</source>
@@ -1154,6 +1209,10 @@ Save them first?</source>
     <message>
         <source>The machine is running "%1". Stop it and quit?</source>
         <translation>机床正在执行“%1”。停止并退出吗？</translation>
+    </message>
+    <message>
+        <source>Export for &amp;Controller…</source>
+        <translation>为控制器导出(&amp;C)…</translation>
     </message>
 </context>
 <context>

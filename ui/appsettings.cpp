@@ -17,6 +17,7 @@ const auto ConnectionPort = u"machine/port"_s;
 const auto ConnectionBaud = u"machine/baud"_s;
 const auto Tolerance = u"machine/breakTestTolerance"_s;
 const auto DarkPalette = u"view/darkPalette"_s;
+const auto ExportDialect = u"files/exportDialect"_s;
 } // namespace Key
 } // namespace
 
@@ -93,6 +94,16 @@ double AppSettings::breakTestTolerance() const
 void AppSettings::setBreakTestTolerance(double millimetres)
 {
     m_settings.setValue(Key::Tolerance, millimetres);
+}
+
+QString AppSettings::exportDialect() const
+{
+    return m_settings.value(Key::ExportDialect, u"fanuc"_s).toString();
+}
+
+void AppSettings::setExportDialect(const QString &key)
+{
+    m_settings.setValue(Key::ExportDialect, key);
 }
 
 bool AppSettings::darkPalette() const

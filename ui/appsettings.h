@@ -30,6 +30,8 @@ public:
     [[nodiscard]] double breakTestTolerance() const;
     void setBreakTestTolerance(double millimetres);
 
+    [[nodiscard]] QString exportDialect() const;
+    void setExportDialect(const QString &key);
     [[nodiscard]] bool darkPalette() const;
     void setDarkPalette(bool dark);
 

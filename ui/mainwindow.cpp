@@ -21,6 +21,7 @@
 #include "breaktestpanel.h"
 #include "connectionpanel.h"
 #include "consoledock.h"
+#include "exportdialog.h"
 #include "filewatcher.h"
 #include "machineconnection.h"
 #include "machinedock.h"
@@ -153,6 +154,11 @@ void MainWindow::createActions()
         &MainWindow::importTable);
     add(file, u"actionExport"_s, tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E),
         &MainWindow::exportTable);
+    add(file, u"actionExportProgram"_s, tr("Export for &Controller…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), [this] {
+            ExportDialog dialog(m_document->table(), this);
+            dialog.exec();
+        });
     file->addSeparator();
     add(file, u"actionQuit"_s, tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), &QWidget::close);
 

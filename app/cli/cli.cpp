@@ -46,8 +46,7 @@ Exit codes: 0 success, 2 bad input or usage, 3 broken tool detected, 4 machine e
 )"_s;
 
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
-    u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s,
-                                      u"dialect"_s, u"samples"_s, u"tool"_s };
+    u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s };
 
 int usageError(Invocation &call, const QString &message)

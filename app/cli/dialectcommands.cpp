@@ -62,7 +62,8 @@ int exportOffsets(Invocation &call)
     if (!program)
         return fail(call, program.error().text(), BadInput);
     if (call.json)
-        printJson(call, QJsonObject { { u"dialect"_s, dialectInfo(*dialect).key }, { u"program"_s, program.value() } });
+        printJson(call,
+            QJsonObject { { u"dialect"_s, dialectInfo(*dialect).key }, { u"program"_s, program.value() } });
     else
         call.out << program.value();
     call.out.flush();
@@ -72,7 +73,8 @@ int exportOffsets(Invocation &call)
 int simulateProgram(Invocation &call)
 {
     if (call.arguments.size() != 1)
-        return fail(call, u"usage: toffee-cli simulate --dialect D [--table FILE] [--samples N] PROGRAM"_s, BadInput);
+        return fail(
+            call, u"usage: toffee-cli simulate --dialect D [--table FILE] [--samples N] PROGRAM"_s, BadInput);
     const auto dialect = dialectOption(call);
     if (!dialect)
         return fail(call, u"--dialect must be one of %1."_s.arg(dialectKeys()), BadInput);
@@ -105,26 +107,20 @@ int simulateProgram(Invocation &call)
             QJsonArray points;
             for (const Position &p : m.points)
                 points.append(point(p));
-            moves.append(QJsonObject { { u"line"_s, m.line },
-                                       { u"x"_s, m.end[0] },
-                                       { u"y"_s, m.end[1] },
-                                       { u"z"_s, m.end[2] },
-                                       { u"points"_s, points } });
+            moves.append(QJsonObject { { u"line"_s, m.line }, { u"x"_s, m.end[0] }, { u"y"_s, m.end[1] },
+                { u"z"_s, m.end[2] }, { u"points"_s, points } });
         }
         QJsonArray table;
         for (const auto &[number, e] : interpreter.offsets())
-            table.append(QJsonObject { { u"number"_s, number },
-                                       { u"length_geometry"_s, e.lengthGeometry },
-                                       { u"length_wear"_s, e.lengthWear },
-                                       { u"radius_geometry"_s, e.radiusGeometry },
-                                       { u"radius_wear"_s, e.radiusWear } });
+            table.append(QJsonObject { { u"number"_s, number }, { u"length_geometry"_s, e.lengthGeometry },
+                { u"length_wear"_s, e.lengthWear }, { u"radius_geometry"_s, e.radiusGeometry },
+                { u"radius_wear"_s, e.radiusWear } });
         const QJsonValue error = result.ok() ? QJsonValue()
                                              : QJsonValue(QJsonObject { { u"line"_s, result.error().line },
-                                                                        { u"message"_s, result.error().message } });
-        printJson(call, QJsonObject { { u"dialect"_s, dialectInfo(*dialect).key },
-                                      { u"moves"_s, moves },
-                                      { u"offsets"_s, table },
-                                      { u"error"_s, error } });
+                                                 { u"message"_s, result.error().message } });
+        printJson(call,
+            QJsonObject { { u"dialect"_s, dialectInfo(*dialect).key }, { u"moves"_s, moves },
+                { u"offsets"_s, table }, { u"error"_s, error } });
     } else {
         for (const SimulatedMove &m : interpreter.moves()) {
             call.out << "line " << m.line << ": X" << fixed(m.end[0]) << " Y" << fixed(m.end[1]) << " Z"

@@ -142,8 +142,8 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
             if (const qsizetype comment = call.indexOf("//"); comment >= 0)
                 call = call.first(comment);
             if (m_dialect != Dialect::Aerotech)
-                return error(line, tr("\"%1\" is not G-code this controller reads.")
-                                       .arg(QString::fromUtf8(call.trimmed())));
+                return error(line,
+                    tr("\"%1\" is not G-code this controller reads.").arg(QString::fromUtf8(call.trimmed())));
             ++m_blocks;
             return callFunction(call.trimmed(), line);
         } else if (isLetter(c)) {
@@ -152,8 +152,9 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
             while (j < n && (text.at(j) == ' '))
                 ++j;
             qsizetype k = j;
-            while (k < n && ((text.at(k) >= '0' && text.at(k) <= '9') || text.at(k) == '.' || text.at(k) == '-'
-                             || text.at(k) == '+'))
+            while (k < n
+                && ((text.at(k) >= '0' && text.at(k) <= '9') || text.at(k) == '.' || text.at(k) == '-'
+                    || text.at(k) == '+'))
                 ++k;
             const size_t slot = size_t(letter - 'A');
             if (k == j) {
@@ -166,7 +167,8 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
             }
             const auto v = parseDecimal(text.sliced(j, k - j));
             if (!v)
-                return error(line, tr("\"%1\" is not a number.").arg(QString::fromUtf8(text.sliced(j, k - j))));
+                return error(
+                    line, tr("\"%1\" is not a number.").arg(QString::fromUtf8(text.sliced(j, k - j))));
             if (letter == 'G') {
                 if (w.gCount == int(w.g.size()))
                     return error(line, tr("too many G codes in one block."));
@@ -177,7 +179,8 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
                 w.m[size_t(w.mCount++)] = *v;
             } else {
                 if (w.has[slot])
-                    return error(line, tr("the word %1 appears twice in one block.").arg(QChar::fromLatin1(letter)));
+                    return error(
+                        line, tr("the word %1 appears twice in one block.").arg(QChar::fromLatin1(letter)));
                 w.has[slot] = true;
                 w.value[slot] = *v;
             }
@@ -186,7 +189,8 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
             return error(line, tr("unexpected \"%1\".").arg(QChar::fromLatin1(c)));
         }
     }
-    if (w.gCount == 0 && w.mCount == 0 && std::none_of(w.has.cbegin(), w.has.cend(), [](bool b) { return b; }))
+    if (w.gCount == 0 && w.mCount == 0
+        && std::none_of(w.has.cbegin(), w.has.cend(), [](bool b) { return b; }))
         return {};
     ++m_blocks;
     return execute(w, line);
@@ -214,8 +218,8 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
         else if (same(g, 41) || same(g, 42))
             m_radiusComp = true;
         else if (same(g, 20) || same(g, 21) || same(g, 54) || same(g, 10) || same(g, 43) || same(g, 44)
-                 || same(g, 49) || same(g, 43.1) || same(g, 43.2) || same(g, 74) || same(g, 143) || same(g, 144)
-                 || same(g, 149) || same(g, 53))
+            || same(g, 49) || same(g, 43.1) || same(g, 43.2) || same(g, 74) || same(g, 143) || same(g, 144)
+            || same(g, 149) || same(g, 53))
             continue; // handled below
         else
             return error(line, tr("G%1 is not simulated.").arg(number(g)));
@@ -228,8 +232,9 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
             return r;
     } else if (m_dialect == Dialect::Aerotech) {
         if (w.hasG(43))
-            return error(line, tr("on Automation1, G43 is not tool length compensation; use G44 axes, offsets and "
-                                  "G143 / G144."));
+            return error(line,
+                tr("on Automation1, G43 is not tool length compensation; use G44 axes, offsets and "
+                   "G143 / G144."));
         if (w.hasG(44)) {
             QList<int> axes;
             for (char a : { 'X', 'Y', 'Z' }) {
@@ -296,10 +301,11 @@ Result<void> GCodeInterpreter::lengthWords(const Words &w, int line)
     if (w.word('H')) {
         const double h = w.get('H');
         if (h != std::floor(h) || h < 0 || h > kMaxOffsetNumber)
-            return error(line, fanuc ? tr("PS0030 ILLEGAL OFFSET NUMBER: H%1; offsets go from 0 to %2.")
-                                           .arg(number(h))
-                                           .arg(kMaxOffsetNumber)
-                                     : tr("H%1 is not an offset number (0 to %2).").arg(number(h)).arg(kMaxOffsetNumber));
+            return error(line,
+                fanuc ? tr("PS0030 ILLEGAL OFFSET NUMBER: H%1; offsets go from 0 to %2.")
+                            .arg(number(h))
+                            .arg(kMaxOffsetNumber)
+                      : tr("H%1 is not an offset number (0 to %2).").arg(number(h)).arg(kMaxOffsetNumber));
         m_hNumber = int(h);
         m_lengthValue = m_hNumber == 0 ? 0.0 : offsetValue(m_hNumber);
         if (fanuc && m_hNumber == 0)
@@ -367,7 +373,8 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
 {
     const bool fanuc = m_dialect == Dialect::Fanuc;
     if (!w.word('L'))
-        return error(line, fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: G10 needs an L word.") : tr("G10 needs an L word."));
+        return error(line,
+            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: G10 needs an L word.") : tr("G10 needs an L word."));
     const double l = w.get('L');
     if (same(l, 2) || same(l, 20)) { // a work offset: G10 L2 P1 X Y Z
         if (w.word('P') && !same(w.get('P'), 1))
@@ -381,14 +388,16 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
     }
     if (m_dialect == Dialect::LinuxCnc) {
         if (!same(l, 1))
-            return error(line, tr("G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.").arg(number(l)));
+            return error(line,
+                tr("G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.").arg(number(l)));
         if (!w.word('P') || w.get('P') < 1 || w.get('P') != std::floor(w.get('P')))
             return error(line, tr("G10 L1 needs P, a tool number in the tool table."));
         const auto it = m_offsets.find(int(w.get('P')));
         if (it == m_offsets.end())
             return error(line, tr("G10 L1: tool %1 is not in the tool table.").arg(number(w.get('P'))));
         if (w.word('Z'))
-            it->second.lengthGeometry = w.get('Z'); // the table only: the active offset changes at the next G43
+            it->second.lengthGeometry
+                = w.get('Z'); // the table only: the active offset changes at the next G43
         if (w.word('R'))
             it->second.radiusGeometry = w.get('R');
         return {};
@@ -396,26 +405,31 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
     if (m_dialect != Dialect::Fanuc && m_dialect != Dialect::AllenBradley9)
         return error(line, tr("this controller's offset table is not programmed with G10."));
     if (m_dialect == Dialect::AllenBradley9 && m_radiusComp)
-        return error(line, tr("G10 may not be programmed while cutter compensation (G41/G42) is active; nothing was "
-                              "written."));
+        return error(line,
+            tr("G10 may not be programmed while cutter compensation (G41/G42) is active; nothing was "
+               "written."));
     if (!same(l, 10) && !same(l, 11) && !same(l, 12) && !same(l, 13))
-        return error(line, fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: L%1 is not L10 to L13.").arg(number(l))
-                                 : tr("G10 L%1 is not L10 to L13.").arg(number(l)));
+        return error(line,
+            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: L%1 is not L10 to L13.").arg(number(l))
+                  : tr("G10 L%1 is not L10 to L13.").arg(number(l)));
     const double p = w.word('P') ? w.get('P') : -1;
     if (p < 1 || p > kMaxOffsetNumber || p != std::floor(p))
-        return error(line, fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: P must be an offset number from 1 to %1.")
-                                       .arg(kMaxOffsetNumber)
-                                 : tr("G10 needs P, an offset number from 1 to %1.").arg(kMaxOffsetNumber));
+        return error(line,
+            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: P must be an offset number from 1 to %1.")
+                        .arg(kMaxOffsetNumber)
+                  : tr("G10 needs P, an offset number from 1 to %1.").arg(kMaxOffsetNumber));
     // AB: R may be replaced by the tool length axis' name.
     const char lengthAxis = "XYZ"[m_lengthAxis];
     double value = 0.0;
     if (w.word('R'))
         value = w.get('R');
-    else if (m_dialect == Dialect::AllenBradley9 && (same(l, 10) || same(l, 11)) && w.word(lengthAxis) && !w.isBare(lengthAxis))
+    else if (m_dialect == Dialect::AllenBradley9 && (same(l, 10) || same(l, 11)) && w.word(lengthAxis)
+        && !w.isBare(lengthAxis))
         value = w.get(lengthAxis);
     else
-        return error(line, fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: the value (R) is missing.")
-                                 : tr("G10 needs R, the value."));
+        return error(line,
+            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: the value (R) is missing.")
+                  : tr("G10 needs R, the value."));
     const bool wear = same(l, 11) || same(l, 13);
     OffsetEntry &entry = m_offsets[int(p)];
     double &field = same(l, 10) ? entry.lengthGeometry
@@ -425,8 +439,9 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
     const double result = m_absolute ? value : field + value; // G90 replaces, G91 adds
     const double limit = wear ? kMaxWear : kMaxGeometry;
     if (!std::isfinite(result) || std::fabs(result) > limit + 1e-9)
-        return error(line, fanuc ? tr("PS0032 ILLEGAL OFFSET VALUE IN G10: %1 is beyond ±%2.").arg(number(result)).arg(limit)
-                                 : tr("G10: %1 is beyond ±%2.").arg(number(result)).arg(limit));
+        return error(line,
+            fanuc ? tr("PS0032 ILLEGAL OFFSET VALUE IN G10: %1 is beyond ±%2.").arg(number(result)).arg(limit)
+                  : tr("G10: %1 is beyond ±%2.").arg(number(result)).arg(limit));
     field = result;
     return {};
 }
@@ -436,7 +451,8 @@ Result<void> GCodeInterpreter::aerotechAxes(const QList<int> &axes, int line)
     if (axes.size() != 2 && axes.size() != 3)
         return error(line, tr("cutter compensation takes 2 or 3 axes."));
     if (m_compSign != 0 || m_pending != 0)
-        return error(line, tr("the compensation axes can only change while cutter offset compensation is off."));
+        return error(
+            line, tr("the compensation axes can only change while cutter offset compensation is off."));
     m_compAxes = axes;
     m_compOffsets = QList<double>(axes.size(), 0.0);
     return {};
@@ -473,10 +489,12 @@ Result<void> GCodeInterpreter::callFunction(QByteArrayView call, int line)
     }
     if (name == "CutterCompensationSetOffsets") {
         if (m_compSign != 0 || m_pending != 0)
-            return error(line, tr("CutterCompensationSetOffsets works only while cutter offset compensation is off."));
+            return error(
+                line, tr("CutterCompensationSetOffsets works only while cutter offset compensation is off."));
         if (items.size() != m_compAxes.size())
-            return error(line, tr("CutterCompensationSetOffsets needs %1 offsets, one for each compensation axis.")
-                                   .arg(m_compAxes.size()));
+            return error(line,
+                tr("CutterCompensationSetOffsets needs %1 offsets, one for each compensation axis.")
+                    .arg(m_compAxes.size()));
         QList<double> offsets;
         for (QByteArrayView item : items) {
             const auto v = parseDecimal(item);
@@ -596,7 +614,8 @@ void GCodeInterpreter::move(const Words &w, int line)
                 const int sign = m_compSign != 0 ? m_compSign : (fromFraction > 0 ? 1 : 0);
                 const qsizetype k = m_compAxes.indexOf(int(i));
                 const double offset = k < 0 ? 0.0 : m_compOffsets.at(k);
-                p[i] = programmed + (sign == 0 ? 0.0 : sign * offset * (fromFraction + t * (toFraction - fromFraction)));
+                p[i] = programmed
+                    + (sign == 0 ? 0.0 : sign * offset * (fromFraction + t * (toFraction - fromFraction)));
             } else {
                 p[i] = start[i] + t * (end[i] - start[i]);
             }

@@ -33,13 +33,16 @@ struct SimulatedMove
     QList<Position> points; // start to end, both included, when sampling
 };
 
-// Runs G-code as a controller of the given dialect would, with the offsets of DIALECTS.md applied, and reports
-// where each motion block leaves the machine. Shared by `toffee-cli simulate`, the conformance suite and the
-// emulator's idea of a machine. The rules, each from DIALECTS.md:
+// Runs G-code as a controller of the given dialect would, with the offsets of DIALECTS.md applied, and
+// reports where each motion block leaves the machine. Shared by `toffee-cli simulate`, the conformance suite
+// and the emulator's idea of a machine. The rules, each from DIALECTS.md:
 // - a length offset takes effect when the length axis next moves (G17: Z, G18: Y, G19: X);
-// - FANUC G43 Hn adds, G44 Hn subtracts, G49 or H0 cancel, a new H replaces; AB the same, but H0 keeps the mode;
-// - FAGOR G43 switches compensation on with the value's own sign, G44 (and G74) off; D, else the tool's offset;
-// - LinuxCNC G43 [Hn], G43.1 Z, G43.2 Hn (adds), G49; M6/M61 do not change the offset; G10 L1 writes the table;
+// - FANUC G43 Hn adds, G44 Hn subtracts, G49 or H0 cancel, a new H replaces; AB the same, but H0 keeps the
+// mode;
+// - FAGOR G43 switches compensation on with the value's own sign, G44 (and G74) off; D, else the tool's
+// offset;
+// - LinuxCNC G43 [Hn], G43.1 Z, G43.2 Hn (adds), G49; M6/M61 do not change the offset; G10 L1 writes the
+// table;
 // - G10 L10-L13 write geometry and wear, G90 replacing and G91 adding, refused (AB) in cutter compensation;
 //   an offset in use changes only when its H or D is called again;
 // - Aerotech: G44 X Y Z / CutterCompensationSetAxes, CutterCompensationSetOffsets, G143 / G144 / G149 applied

@@ -11,7 +11,8 @@ using namespace Toffee;
 
 namespace {
 
-// Realistic blocks: N numbers, comments, motion with offsets switched on and off, offsets written now and then.
+// Realistic blocks: N numbers, comments, motion with offsets switched on and off, offsets written now and
+// then.
 QByteArray program(Dialect dialect, int lines)
 {
     QByteArray out;
@@ -40,7 +41,8 @@ QByteArray program(Dialect dialect, int lines)
                 block = "G43 H" + h + " G0 Z50";
             break;
         case 1:
-            block = "N" + QByteArray::number(i) + " G1 X" + QByteArray::number((i % 1000) * 0.5, 'f', 3) + " Y-12.5 F800";
+            block = "N" + QByteArray::number(i) + " G1 X" + QByteArray::number((i % 1000) * 0.5, 'f', 3)
+                + " Y-12.5 F800";
             break;
         case 2:
             block = "(finishing pass " + n + ")";
@@ -82,7 +84,7 @@ int main(int argc, char *argv[])
     QTextStream out(stdout);
     out << "| dialect | lines | best of 3 (ms) | lines per second |\n|---|---:|---:|---:|\n";
     for (Dialect dialect : { Dialect::Fanuc, Dialect::AllenBradley9, Dialect::Fagor8055M, Dialect::LinuxCnc,
-                             Dialect::Aerotech, Dialect::Carvera }) {
+             Dialect::Aerotech, Dialect::Carvera }) {
         const QByteArray text = program(dialect, lines);
         const qint64 count = text.count('\n');
         OffsetTable offsets;
@@ -102,8 +104,8 @@ int main(int argc, char *argv[])
             }
             best = std::min(best, ms);
         }
-        out << "| " << dialectInfo(dialect).key << " | " << count << " | " << QString::number(best, 'f', 1) << " | "
-            << QString::number(double(count) / best * 1000.0, 'f', 0) << " |\n";
+        out << "| " << dialectInfo(dialect).key << " | " << count << " | " << QString::number(best, 'f', 1)
+            << " | " << QString::number(double(count) / best * 1000.0, 'f', 0) << " |\n";
         out.flush();
     }
     return 0;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Export a table as a controller's program, run it through the interpreter on an empty table, get the table back.
+// Export a table as a controller's program, run it through the interpreter on an empty table, get the table
+// back.
 #include <QTest>
 
 #include "dialect.h"
@@ -14,8 +15,8 @@ namespace {
 ToolTable table()
 {
     QList<Tool> tools;
-    const double values[][4] = { { 100.0, -0.1, 3.0, -0.01 }, { 71.488, 0.0, 1.588, 0.002 }, { -12.345, 0.05, 0, 0 },
-                                 { 999.999, -99.999, 0.5, 0 } };
+    const double values[][4] = { { 100.0, -0.1, 3.0, -0.01 }, { 71.488, 0.0, 1.588, 0.002 },
+        { -12.345, 0.05, 0, 0 }, { 999.999, -99.999, 0.5, 0 } };
     int number = 1;
     for (const auto &v : values) {
         Tool t;
@@ -59,7 +60,8 @@ private Q_SLOTS:
         QVERIFY2(program.ok(), qPrintable(program.error().text()));
         OffsetTable empty;
         if (Dialect(dialect) == Dialect::LinuxCnc) {
-            // LinuxCNC refuses G10 L1 for a tool its table does not list: the tools are there, with no offsets.
+            // LinuxCNC refuses G10 L1 for a tool its table does not list: the tools are there, with no
+            // offsets.
             for (const Tool &t : original.tools())
                 empty[t.number] = {};
         }

@@ -1,23 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QAbstractSpinBox>
 #include <QAction>
-#include <QComboBox>
-#include <QHeaderView>
-#include <QToolButton>
 #include <QApplication>
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFile>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolButton>
 #include <QUndoStack>
 
+#include "exportdialog.h"
 #include "mainwindow.h"
 #include "messageboxes.h"
 #include "tooldocument.h"
@@ -163,6 +165,32 @@ private Q_SLOTS:
         QVERIFY(window.document()->table().contains(42));
     }
 
+    void exportsForAControllerWithAPreview()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openFile(kExample));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"offsets.nc"_s);
+        QTimer::singleShot(0, [&] {
+            auto *dialog = qobject_cast<ExportDialog *>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            dialog->selectDialect(u"fanuc"_s);
+            auto *preview = dialog->findChild<QPlainTextEdit *>(u"exportPreview"_s);
+            QVERIFY(preview->toPlainText().contains(u"G10 L10 P2 R71.488"_s));
+            dialog->selectDialect(u"fagor"_s);
+            QVERIFY(!dialog->findChild<QPushButton *>(u"exportSaveButton"_s)->isEnabled());
+            QVERIFY(dialog->findChild<QLabel *>(u"exportProblem"_s)->text().contains(u"FAGOR"_s));
+            dialog->selectDialect(u"linuxcnc"_s);
+            QVERIFY(dialog->saveTo(path));
+            dialog->accept();
+        });
+        window.findChild<QAction *>(u"actionExportProgram"_s)->trigger();
+        QFile saved(path);
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        QVERIFY(saved.readAll().contains("G10 L1 P3 Z41.230 R1.000\n"));
+    }
+
     void machineActionsWaitForAConnection()
     {
         MainWindow window;
@@ -191,7 +219,8 @@ private Q_SLOTS:
             if (qobject_cast<QLineEdit *>(w) && qobject_cast<QComboBox *>(w->parentWidget()))
                 continue;
             auto *button = qobject_cast<QAbstractButton *>(w);
-            const QString name = w->accessibleName().isEmpty() && button ? button->text() : w->accessibleName();
+            const QString name
+                = w->accessibleName().isEmpty() && button ? button->text() : w->accessibleName();
             const auto *toolButton = qobject_cast<QToolButton *>(w);
             if (name.isEmpty() && !(toolButton && toolButton->defaultAction()))
                 nameless << QString::fromLatin1(w->metaObject()->className()) + u' ' + w->objectName();
