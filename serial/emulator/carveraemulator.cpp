@@ -347,31 +347,17 @@ void CarveraEmulator::execute(const QByteArray &line)
         say("Start manually picking new tool: T" + QByteArray::number(n));
         calibrate(false, 0.0);
     } else if (w.words.front().first == 'G') {
-        // Enough of G-code to move and set a work offset: G0/G1, G53, G90/G91, G10 L20 P1, modal no-ops.
-        const bool machine = w.has('G', "53");
-        if (w.has('G', "90"))
-            m_absolute = true;
-        if (w.has('G', "91"))
-            m_absolute = false;
-        std::array<std::optional<double>, 3> axis { w.number('X', bad), w.number('Y', bad),
-            w.number('Z', bad) };
-        if (bad)
-            return refuse({});
-        if (w.has('G', "10")) {
-            if (!w.has('L', "20"))
-                return refuse({});
-            for (size_t i = 0; i < 3; ++i) {
-                if (axis[i])
-                    m_wcs[i] = m_mpos[i] - *axis[i] - (i == 2 ? tlo() : 0.0);
-            }
-        } else {
-            for (size_t i = 0; i < 3; ++i) {
-                if (!axis[i])
-                    continue;
-                const double offset = machine ? 0.0 : m_wcs[i] + (i == 2 ? tlo() : 0.0);
-                m_mpos[i] = m_absolute || machine ? *axis[i] + offset : m_mpos[i] + *axis[i];
-            }
-        }
+        // G-code moves and work offsets: the shared interpreter, in step with the machine's own moves and
+        // TLO.
+        m_motion.setWorkOffset({ m_wcs[0], m_wcs[1], m_wcs[2] });
+        m_motion.setLengthOffset(tlo());
+        m_motion.setMachinePosition({ m_mpos[0], m_mpos[1], m_mpos[2] });
+        if (auto r = m_motion.runLine(line, 1); !r)
+            return refuse({}); // the firmware's own answer to what it does not take
+        const Position &p = m_motion.position();
+        const Position &g54 = m_motion.workOffset();
+        m_mpos = { p[0], p[1], p[2] };
+        m_wcs = { g54[0], g54[1], g54[2] };
         finish();
     } else if (allowedWhileHalted(upper)) {
         finish(); // M2, M5, M9, M30...: nothing to do on a table-top emulator

@@ -9,6 +9,8 @@
 #include <QObject>
 #include <QTimer>
 
+#include "gcodeinterpreter.h"
+
 namespace Toffee {
 
 // A Carvera controller as the firmware behaves (see CARVERA.md): it keeps positions, the reference and
@@ -112,13 +114,14 @@ private:
     std::array<double, 3> m_mpos { 0.0, 0.0, kClearanceZ };
     std::array<double, 3> m_wcs { 0.0, 0.0, -59.0 };
     std::array<double, 3> m_setter { -88.0, -9.0, -2.0 };
-    bool m_absolute = true;
     int m_tool = 1;
     bool m_calibrated = false;
     bool m_hasReference = false;
     double m_refMz = 0.0;
     double m_curMz = 0.0;
     std::optional<double> m_lastProbeZ;
+    // Motion and work offsets go through the same interpreter as `toffee-cli simulate`.
+    GCodeInterpreter m_motion { Dialect::Carvera };
 };
 
 } // namespace Toffee

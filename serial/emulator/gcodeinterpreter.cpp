@@ -104,6 +104,21 @@ double GCodeInterpreter::offsetValue(int number) const
     return it == m_offsets.end() ? 0.0 : it->second.length();
 }
 
+void GCodeInterpreter::setMachinePosition(const Position &position)
+{
+    m_machine = position;
+    for (size_t i = 0; i < 3; ++i)
+        m_program[i] = position[i] - m_g54[i] - (i == size_t(m_lengthAxis) ? m_appliedLength : 0.0);
+}
+
+void GCodeInterpreter::setLengthOffset(double offset)
+{
+    m_lengthMode = LengthMode::Plus;
+    m_lengthValue = offset;
+    m_appliedLength = offset;
+    setMachinePosition(m_machine);
+}
+
 Result<void> GCodeInterpreter::run(QByteArrayView program)
 {
     qsizetype start = 0;
@@ -382,7 +397,10 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
         for (size_t i = 0; i < 3; ++i) {
             const char a = "XYZ"[i];
             if (w.word(a))
-                m_g54[i] = same(l, 2) ? w.get(a) : m_machine[i] - w.get(a);
+                // L20: the current position becomes `value`, tool length offset included.
+                m_g54[i] = same(l, 2)
+                    ? w.get(a)
+                    : m_machine[i] - w.get(a) - (i == size_t(m_lengthAxis) ? m_appliedLength : 0.0);
         }
         return {};
     }

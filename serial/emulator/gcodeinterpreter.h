@@ -63,6 +63,13 @@ public:
     [[nodiscard]] const OffsetTable &offsets() const { return m_offsets; }
     [[nodiscard]] const Position &position() const { return m_machine; }
     [[nodiscard]] qint64 blocks() const { return m_blocks; }
+    [[nodiscard]] const Position &workOffset() const { return m_g54; }
+
+    // For a machine that also moves by itself (the emulator's probing cycle) and sets its TLO by M-codes:
+    // where the machine is now, its G54, and the length offset it carries (the Carvera's TLO always applies).
+    void setMachinePosition(const Position &position);
+    void setWorkOffset(const Position &offset) { m_g54 = offset; }
+    void setLengthOffset(double offset);
     [[nodiscard]] bool ended() const { return m_ended; }
 
 private:

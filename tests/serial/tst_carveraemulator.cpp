@@ -3,6 +3,7 @@
 #include <QTest>
 
 #include "emulator/carveraemulator.h"
+#include "emulator/gcodeinterpreter.h"
 #include "machinereplies.h"
 
 using namespace Toffee;
@@ -166,6 +167,27 @@ private Q_SLOTS:
         const auto r = parseTloReport(out.front());
         QVERIFY(r);
         QVERIFY2(std::fabs(r->tlo()) < 1e-9, out.front().constData());
+    }
+
+    void movesExactlyAsTheSharedInterpreterSays()
+    {
+        // The emulator's G-code runs through the interpreter `toffee-cli simulate` uses: same program, same
+        // place.
+        const QByteArray program
+            = "M493.3 Z-33.388\nG10 L2 P1 X-100 Y-50 Z-60\nG90 G0 X10 Y5 Z2\nG91 G0 Z-1.5\nG90 G1 X0";
+        CarveraEmulator emulator;
+        for (const QByteArray &line : program.split('\n'))
+            QCOMPARE(command(emulator, line).last(), QByteArray("ok"));
+        GCodeInterpreter simulated(Dialect::Carvera);
+        QVERIFY(simulated.run(program).ok());
+        const auto report = parseStatusReport(status(emulator));
+        QVERIFY(report);
+        for (size_t i = 0; i < 3; ++i)
+            QVERIFY2(std::fabs(report->mpos[i] - simulated.position()[i]) < 1e-4,
+                qPrintable(u"axis %1: %2 vs %3"_s.arg(i).arg(report->mpos[i]).arg(simulated.position()[i])));
+        QCOMPARE(simulated.position()[2], -60 + 2 - 1.5 - 33.388);
+        QCOMPARE(
+            command(emulator, "G43 H1").front(), QByteArray("error:Unsupported command - G43 H1")); // no G43
     }
 
     void theFixedReferenceProfileKeepsItsReference()
