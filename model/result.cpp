@@ -7,9 +7,10 @@ namespace Toffee {
 
 QString Error::text() const
 {
-    if (line <= 0)
-        return message;
-    return QCoreApplication::translate("Toffee::Error", "line %1: %2").arg(line).arg(message);
+    const QString located = line <= 0
+        ? message
+        : QCoreApplication::translate("Toffee::Error", "line %1: %2").arg(line).arg(message);
+    return file.isEmpty() ? located : file + QStringLiteral(": ") + located;
 }
 
 } // namespace Toffee

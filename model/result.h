@@ -11,9 +11,18 @@ namespace Toffee {
 // An operator-facing failure: what went wrong and, for files, the line it went wrong on.
 struct Error
 {
+    Error() = default;
+    Error(QString message, int line = 0, QString file = {})
+        : message(std::move(message))
+        , line(line)
+        , file(std::move(file))
+    { }
+
     QString message;
     int line = 0; // 1-based; 0 when the error belongs to no line
+    QString file; // the file it is in, when there is one
 
+    // "file: line 3: message", leaving out what is not known.
     [[nodiscard]] QString text() const;
 };
 

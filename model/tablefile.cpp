@@ -146,7 +146,7 @@ Result<ToolTable> loadTableFile(const QString &path, std::optional<TableFormat> 
         return Error { tr("%1: cannot read: %2").arg(path, file.errorString()) };
     auto result = readTable(data, *format, tblUnits);
     if (!result)
-        return Error { path + u": "_s + result.error().text(), result.error().line };
+        return Error { result.error().message, result.error().line, path };
     return result;
 }
 

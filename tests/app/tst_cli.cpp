@@ -110,9 +110,11 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         const QString program = dir.filePath(u"aerotech.pgm"_s);
-        write(program, "G44 X Y Z\nCutterCompensationSetOffsets([1, -2, 3])\nG143 G1 X10 Y10\nG1 X20\n"
-                       "G149 G1 X30 Y10\n");
-        const Run run = cli({ u"--json"_s, u"simulate"_s, u"--dialect"_s, u"aerotech"_s, u"--samples"_s, u"3"_s, program });
+        write(program,
+            "G44 X Y Z\nCutterCompensationSetOffsets([1, -2, 3])\nG143 G1 X10 Y10\nG1 X20\n"
+            "G149 G1 X30 Y10\n");
+        const Run run = cli(
+            { u"--json"_s, u"simulate"_s, u"--dialect"_s, u"aerotech"_s, u"--samples"_s, u"3"_s, program });
         QCOMPARE(run.exitCode, 0);
         const QJsonObject o = QJsonDocument::fromJson(run.out).object();
         QCOMPARE(o.value(u"dialect"_s).toString(), u"aerotech"_s);
@@ -140,7 +142,8 @@ private Q_SLOTS:
         QCOMPARE(o.value(u"error"_s).toObject().value(u"line"_s).toInt(), 3);
         QVERIFY(o.value(u"error"_s).toObject().value(u"message"_s).toString().startsWith(u"PS0030"_s));
         QCOMPARE(o.value(u"moves"_s).toArray().size(), 1); // what ran before the error
-        QCOMPARE(o.value(u"offsets"_s).toArray().at(0).toObject().value(u"length_geometry"_s).toDouble(), 100.0);
+        QCOMPARE(
+            o.value(u"offsets"_s).toArray().at(0).toObject().value(u"length_geometry"_s).toDouble(), 100.0);
         QVERIFY(run.err.contains("line 3: PS0030"));
     }
 
