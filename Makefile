@@ -50,6 +50,10 @@ test: build
 	ctest --preset $(PRESET) --output-on-failure
 
 bench: build
+	@for i in 1 2 3 4 5; do \
+		QT_QPA_PLATFORM=offscreen $(BUILD_DIR)/bin/toffee --lang en --self-test 2>/dev/null \
+			| sed -n 's/.*first frame after \([0-9]*\) ms.*/\1/p'; \
+	done | sort -n | awk '{ t[NR] = $$1 } END { print "window to first frame (toffee --self-test, offscreen), median of 5: " t[3] " ms" }'
 	$(BUILD_DIR)/bin/toffee-bench-table
 	$(BUILD_DIR)/bin/toffee-bench-interpreter 1000000
 	$(BUILD_DIR)/bin/toffee-cli --emulator link-test --count 10000
