@@ -16,6 +16,12 @@ ToolDocument::ToolDocument(QObject *parent)
         [this](bool clean) { Q_EMIT modifiedChanged(!clean); });
 }
 
+ToolDocument::~ToolDocument()
+{
+    // QUndoStack says "clean changed" as it is destroyed; nobody may hear that from a dying document.
+    m_undoStack.disconnect(this);
+}
+
 void ToolDocument::setFile(const QString &path, TableFormat format)
 {
     m_fileFormat = format;

@@ -18,6 +18,7 @@ class ToolDocument final : public QObject
 
 public:
     explicit ToolDocument(QObject *parent = nullptr);
+    ~ToolDocument() override;
 
     [[nodiscard]] ToolTableModel *model() { return &m_model; }
     [[nodiscard]] QUndoStack *undoStack() { return &m_undoStack; }

@@ -117,7 +117,14 @@ MainWindow::MainWindow(QWidget *parent)
     readSettings();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // Children outlive this class's part of the object: whatever they say while they are destroyed must not
+    // reach MainWindow's slots (UBSan's "downcast of address ... not an object of type MainWindow").
+    for (QObject *sender :
+        std::initializer_list<QObject *> { m_document, m_document->model(), m_connection, m_fileWatcher })
+        sender->disconnect(this);
+}
 
 template<typename Slot>
 QAction *MainWindow::addMenuAction(
