@@ -5,9 +5,20 @@
 #include <QRandomGenerator>
 #include <QTest>
 
+#include "tablefile.h"
 #include "tooltable.h"
 
 namespace Toffee::Test {
+
+// A table through a format and back: the same table, and a second save writes the same bytes.
+inline void verifyRoundTrip(const ToolTable &table, TableFormat format)
+{
+    const QByteArray written = writeTable(table, format);
+    const auto read = readTable(written, format, table.units());
+    QVERIFY2(read.ok(), qPrintable(read.error().text()));
+    QCOMPARE(read.value(), table);
+    QCOMPARE(writeTable(read.value(), format), written);
+}
 
 // A plain tool for tests that care about the number and the length.
 inline Tool tool(int number, double length = 10.0, const QString &description = {})

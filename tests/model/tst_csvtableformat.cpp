@@ -23,11 +23,7 @@ private Q_SLOTS:
     void roundTrips()
     {
         QFETCH(ToolTable, table);
-        const QByteArray written = writeCsvTable(table);
-        const auto read = readCsvTable(written);
-        QVERIFY2(read.ok(), qPrintable(read.error().text()));
-        QCOMPARE(read.value(), table);
-        QCOMPARE(writeCsvTable(read.value()), written);
+        Test::verifyRoundTrip(table, TableFormat::Csv);
     }
 
     void readsWhatSpreadsheetsWrite_data()

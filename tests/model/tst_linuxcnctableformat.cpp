@@ -21,11 +21,7 @@ private Q_SLOTS:
     void roundTrips()
     {
         QFETCH(ToolTable, table);
-        const QByteArray written = writeLinuxCncTable(table);
-        const auto read = readLinuxCncTable(written, Units::Millimetre);
-        QVERIFY2(read.ok(), qPrintable(read.error().text()));
-        QCOMPARE(read.value(), table);
-        QCOMPARE(writeLinuxCncTable(read.value()), written);
+        Test::verifyRoundTrip(table, TableFormat::LinuxCnc);
     }
 
     void writesTheGrammarLinuxCncReads()
