@@ -26,7 +26,7 @@ enum Operation {
     RestoreTlo,
     OperationCount
 };
-enum Injected { DropOk, NoAnswer, Garble, CloseLink, Alarm, LateAnswer, InjectedCount };
+enum Injected { DropOk, NoAnswer, Garble, CloseLink, Alarm, LateAnswer, ToolBroken, InjectedCount };
 
 const char *const kOperationNames[] = { "report", "probe", "break-test", "set-tlo", "set-above-z0",
     "select-tool", "change-tool", "unlock", "restore-tlo" };
@@ -119,6 +119,9 @@ private Q_SLOTS:
         case LateAnswer:
             h.emulator.injectFault(Fault::Delay, target, 800); // beyond any limit the test set
             break;
+        case ToolBroken:
+            h.emulator.injectFault(Fault::BreakTool, target, 0.5); // the tool in the spindle loses 0.5 mm
+            break;
         }
 
         const SessionResult r = h.run([&](auto done) { start(h.session, operation, done); });
@@ -128,6 +131,19 @@ private Q_SLOTS:
 
         if (operation == Unlock && fault == Alarm) {
             QVERIFY2(r.ok(), qPrintable(r.message)); // unlocking a halted machine is what unlock is for
+        } else if (fault == ToolBroken) {
+            // Only the break test can tell a broken tool: it must say so and write nothing. A probe measures
+            // the tool as it now is (T1, the reference, 0.5 mm short); the other operations do not look at
+            // the tool.
+            if (operation == BreakTest) {
+                QCOMPARE(r.outcome, Outcome::ToolBroken);
+                QVERIFY2(r.message.contains(u"may be broken"_s), qPrintable(r.message));
+                QCOMPARE(table, before);
+            } else {
+                QVERIFY2(r.ok(), qPrintable(r.message));
+                if (operation == Probe)
+                    QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-0.500"_s);
+            }
         } else {
             QVERIFY2(!r.ok(), "the fault went unnoticed");
             QVERIFY(r.outcome == Outcome::MachineError || r.outcome == Outcome::LinkFailure);
