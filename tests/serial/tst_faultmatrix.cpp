@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Every machine-session operation under every injected fault: a clear error, no change to the tool table, and
 // a link that works again after an unlock or a reconnect.
+#include <array>
+
 #include <QTest>
 
 #include "sessionharness.h"
@@ -28,13 +30,15 @@ enum Operation {
 };
 enum Injected { DropOk, NoAnswer, Garble, CloseLink, Alarm, LateAnswer, ToolBroken, InjectedCount };
 
-const char *const kOperationNames[] = { "report", "probe", "break-test", "set-tlo", "set-above-z0",
-    "select-tool", "change-tool", "unlock", "restore-tlo" };
-const char *const kFaultNames[]
-    = { "dropped ok", "no answer", "garbled reply", "link closed", "alarm", "late answer" };
+// Sized by the enums, with a check that every entry is filled: a name left out fails to compile.
+constexpr std::array<const char *, OperationCount> kOperationNames = { "report", "probe", "break-test",
+    "set-tlo", "set-above-z0", "select-tool", "change-tool", "unlock", "restore-tlo" };
+constexpr std::array<const char *, InjectedCount> kFaultNames
+    = { "dropped ok", "no answer", "garbled reply", "link closed", "alarm", "late answer", "tool broken" };
 // The first command each operation sends, which the fault is aimed at.
-const char *const kFirstCommand[]
+constexpr std::array<const char *, OperationCount> kFirstCommand
     = { "M493.4", "M491", "M491.1", "M493.3", "M493.3", "M493.2", "M6", "$X", "M493.2" };
+static_assert(kOperationNames.back() && kFaultNames.back() && kFirstCommand.back(), "every entry named");
 
 void start(MachineSession &session, int operation, MachineSession::Done done)
 {
@@ -78,7 +82,7 @@ private Q_SLOTS:
         QTest::addColumn<int>("fault");
         for (int o = 0; o < OperationCount; ++o) {
             for (int f = 0; f < InjectedCount; ++f)
-                QTest::addRow("%s, %s", kOperationNames[o], kFaultNames[f]) << o << f;
+                QTest::addRow("%s, %s", kOperationNames[size_t(o)], kFaultNames[size_t(f)]) << o << f;
         }
     }
     void everyOperationUnderEveryFault()
@@ -96,7 +100,7 @@ private Q_SLOTS:
                               .takeValue();
         const ToolTable before = table;
 
-        const QByteArray target = kFirstCommand[operation];
+        const QByteArray target = kFirstCommand[size_t(operation)];
         switch (fault) {
         case DropOk:
             h.emulator.injectFault(Fault::DropOk, target);
