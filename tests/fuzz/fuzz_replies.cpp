@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The reply parsers on whatever a port may deliver: each line is classified and offered to every parser.
+// Promised: no crash; a parser takes only a line of its own kind; every number it returns is finite; a
+// tool number is one a Carvera can report (-1, an empty spindle, to 999999); a halt reason can be named.
+#include <cmath>
+
+#include "fuzzcheck.h"
+#include "machinereplies.h"
+#include "textparsing.h"
+
+using namespace Toffee;
+
+namespace {
+
+bool finite(double v)
+{
+    return std::isfinite(v);
+}
+
+void checkLine(QByteArrayView line)
+{
+    const QString shown = QString::fromUtf8(line);
+    const ReplyKind kind = classifyReply(line);
+    if (kind == ReplyKind::Ok)
+        TOFFEE_FUZZ_CHECK(line.trimmed() == "ok", shown);
+    if (kind == ReplyKind::Error || kind == ReplyKind::Alarm || kind == ReplyKind::HaltError)
+        (void)replyMessage(line);
+
+    if (const auto status = parseStatusReport(line)) {
+        TOFFEE_FUZZ_CHECK(kind == ReplyKind::Status, shown);
+        TOFFEE_FUZZ_CHECK(!status->state.isEmpty(), shown);
+        for (double v : status->mpos)
+            TOFFEE_FUZZ_CHECK(finite(v), shown);
+        for (double v : status->wpos)
+            TOFFEE_FUZZ_CHECK(finite(v), shown);
+        TOFFEE_FUZZ_CHECK(status->tool.has_value() == status->tlo.has_value(), shown);
+        if (status->tool)
+            TOFFEE_FUZZ_CHECK(*status->tool >= -1 && *status->tool <= 999999 && finite(*status->tlo), shown);
+        if (status->haltReason) {
+            TOFFEE_FUZZ_CHECK(status->isAlarm(), shown);
+            TOFFEE_FUZZ_CHECK(!haltReasonName(*status->haltReason).isEmpty(), shown);
+            TOFFEE_FUZZ_CHECK(!haltRecovery(*status->haltReason).isEmpty(), shown);
+        }
+    }
+    if (const auto tlo = parseTloReport(line)) {
+        TOFFEE_FUZZ_CHECK(kind == ReplyKind::Other, shown);
+        TOFFEE_FUZZ_CHECK(finite(tlo->currentMz) && finite(tlo->referenceMz), shown);
+    }
+    if (const auto probe = parseProbeResult(line)) {
+        TOFFEE_FUZZ_CHECK(kind == ReplyKind::Other, shown);
+        TOFFEE_FUZZ_CHECK(finite(probe->x) && finite(probe->y) && finite(probe->z), shown);
+    }
+    if (const auto test = parseBreakTest(line)) {
+        TOFFEE_FUZZ_CHECK(kind == ReplyKind::Other, shown);
+        TOFFEE_FUZZ_CHECK(finite(test->oldTlo) && finite(test->newTlo), shown);
+    }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    // As the link sees them: lines cut at LF, a CR before it dropped by the transport.
+    for (QByteArrayView line : splitView(Fuzz::bytes(data, size), '\n'))
+        checkLine(line.endsWith('\r') ? line.chopped(1) : line);
+    return 0;
+}
