@@ -1,16 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "machinereplies.h"
 
+#include <limits>
+
 #include <QCoreApplication>
 #include <QList>
 
 #include "textparsing.h"
+#include "toolvalidation.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
 namespace {
+
+constexpr qint64 kEmptySpindle = -1; // "T-1 empty spindle" (CARVERA.md)
 
 // Free functions translate in the context lupdate gives them: the namespace.
 QString tr(const char *text)
@@ -104,13 +109,15 @@ std::optional<MachineStatus> parseStatusReport(QByteArrayView line)
             const QList<QByteArrayView> parts = splitView(value, ',');
             const auto tool = parseInteger(parts.front());
             const auto tlo = parts.size() > 1 ? parseDecimal(parts.at(1)) : std::nullopt;
-            if (!tool || parts.size() < 2 || !tlo)
+            // T-1 is the empty spindle. A number no tool can have is a garbled report, not a tool: taken
+            // as an int it would wrap round to some other tool.
+            if (!tool || *tool < kEmptySpindle || *tool > Limits::kMaxToolNumber || parts.size() < 2 || !tlo)
                 return std::nullopt;
             status.tool = int(*tool);
             status.tlo = *tlo;
         } else if (name == "H") {
             const auto reason = parseInteger(value);
-            if (!reason)
+            if (!reason || *reason < 0 || *reason > std::numeric_limits<int>::max())
                 return std::nullopt;
             status.haltReason = int(*reason);
         }
