@@ -320,7 +320,7 @@
         <translation>T%1 lässt sich nicht schreiben: %2-Korrekturnummern gehen von 1 bis %3.</translation>
     </message>
     <message>
-        <source>T%1 cannot be written: LinuxCNC's G10 L1 needs a tool number from 1 up.</source>
+        <source>T%1 cannot be written: LinuxCNC&apos;s G10 L1 needs a tool number from 1 up.</source>
         <translation>T%1 lässt sich nicht schreiben: G10 L1 von LinuxCNC braucht eine Werkzeugnummer ab 1.</translation>
     </message>
     <message>
@@ -342,6 +342,10 @@
     <message>
         <source>Unknown controller.</source>
         <translation>Unbekannte Steuerung.</translation>
+    </message>
+    <message>
+        <source>%1 is too large: a controller takes at most eight digits before the decimal point.</source>
+        <translation>%1 ist zu groß: Eine Steuerung nimmt höchstens acht Stellen vor dem Dezimalpunkt.</translation>
     </message>
 </context>
 <context>
@@ -691,7 +695,7 @@
         <translation>G10 L1: Werkzeug %1 steht nicht in der Werkzeugtabelle.</translation>
     </message>
     <message>
-        <source>this controller's offset table is not programmed with G10.</source>
+        <source>this controller&apos;s offset table is not programmed with G10.</source>
         <translation>Die Korrekturtabelle dieser Steuerung wird nicht mit G10 programmiert.</translation>
     </message>
     <message>
@@ -757,6 +761,10 @@
     <message>
         <source>Home takes axes such as X or [X, Y].</source>
         <translation>Home nimmt Achsen wie X oder [X, Y].</translation>
+    </message>
+    <message>
+        <source>%1%2 must be a whole number from %3 to %4.</source>
+        <translation>%1%2 muss eine ganze Zahl von %3 bis %4 sein.</translation>
     </message>
 </context>
 <context>
@@ -835,7 +843,7 @@
 <context>
     <name>Toffee::MachineLink</name>
     <message>
-        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command's. Reconnect, and check the machine before you go on.</source>
+        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.</source>
         <translation>Die Maschine hat auf „%1“ nicht innerhalb von %2 s geantwortet. Die Verbindung wurde geschlossen, weil eine späte Antwort für die des nächsten Befehls gehalten werden könnte. Verbinden Sie neu und prüfen Sie die Maschine, bevor Sie weitermachen.</translation>
     </message>
     <message>
@@ -898,7 +906,7 @@
         <translation>Der Anschluss hat sich nicht innerhalb von 5 s geöffnet.</translation>
     </message>
     <message>
-        <source>The machine's offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
+        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
         <translation>Der Korrekturbericht der Maschine (M493.4) war nicht lesbar%1. Nichts wurde gespeichert; versuchen Sie es erneut und prüfen Sie das Kabel, wenn es wieder passiert.</translation>
     </message>
     <message>
@@ -926,7 +934,7 @@
         <translation>Werkzeug T%1 hat %2 mm gemessen, vorher %3 mm, mehr als die Toleranz von %4 mm.</translation>
     </message>
     <message>
-        <source>The machine's reply to %1 could not be read. Check the offsets (Report) before you cut.</source>
+        <source>The machine&apos;s reply to %1 could not be read. Check the offsets (Report) before you cut.</source>
         <translation>Die Antwort der Maschine auf %1 war nicht lesbar. Prüfen Sie die Korrekturen (Bericht), bevor Sie schneiden.</translation>
     </message>
     <message>
@@ -1270,7 +1278,7 @@ Zuerst speichern?</translation>
         <translation>(die aktuelle Längenkorrektur ist noch nicht bekannt)</translation>
     </message>
     <message>
-        <source>%1 → set by the machine from the spindle's position</source>
+        <source>%1 → set by the machine from the spindle&apos;s position</source>
         <translation>%1 → von der Maschine aus der Spindelposition gesetzt</translation>
     </message>
     <message>
@@ -1319,7 +1327,7 @@ Der nächste Schnitt verwendet die neue Korrektur.</translation>
         <translation>Das Werkzeug in der Spindel am Werkzeugtaster messen (M491) — F5</translation>
     </message>
     <message>
-        <source>Restore the selected tool's known TLO</source>
+        <source>Restore the selected tool&apos;s known TLO</source>
         <translation>Bekannte Längenkorrektur des gewählten Werkzeugs wiederherstellen</translation>
     </message>
     <message>
@@ -1716,7 +1724,7 @@ Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
         <translation>Dunkle Farben verwenden.</translation>
     </message>
     <message>
-        <source>Language: de, zh_CN or en (default: the system's).</source>
+        <source>Language: de, zh_CN or en (default: the system&apos;s).</source>
         <translation>Sprache: de, zh_CN oder en (Standard: die des Systems).</translation>
     </message>
     <message>

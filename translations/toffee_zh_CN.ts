@@ -320,7 +320,7 @@
         <translation>无法写入 T%1：%2 的补偿号为 1 到 %3。</translation>
     </message>
     <message>
-        <source>T%1 cannot be written: LinuxCNC's G10 L1 needs a tool number from 1 up.</source>
+        <source>T%1 cannot be written: LinuxCNC&apos;s G10 L1 needs a tool number from 1 up.</source>
         <translation>无法写入 T%1：LinuxCNC 的 G10 L1 需要从 1 开始的刀具号。</translation>
     </message>
     <message>
@@ -342,6 +342,10 @@
     <message>
         <source>Unknown controller.</source>
         <translation>未知的控制器。</translation>
+    </message>
+    <message>
+        <source>%1 is too large: a controller takes at most eight digits before the decimal point.</source>
+        <translation>%1 太大：控制器在小数点前最多接受八位数字。</translation>
     </message>
 </context>
 <context>
@@ -691,7 +695,7 @@
         <translation>G10 L1：刀具 %1 不在刀具表中。</translation>
     </message>
     <message>
-        <source>this controller's offset table is not programmed with G10.</source>
+        <source>this controller&apos;s offset table is not programmed with G10.</source>
         <translation>此控制器的补偿表不是用 G10 编程的。</translation>
     </message>
     <message>
@@ -757,6 +761,10 @@
     <message>
         <source>Home takes axes such as X or [X, Y].</source>
         <translation>Home 需要轴，例如 X 或 [X, Y]。</translation>
+    </message>
+    <message>
+        <source>%1%2 must be a whole number from %3 to %4.</source>
+        <translation>%1%2 必须是 %3 到 %4 之间的整数。</translation>
     </message>
 </context>
 <context>
@@ -835,7 +843,7 @@
 <context>
     <name>Toffee::MachineLink</name>
     <message>
-        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command's. Reconnect, and check the machine before you go on.</source>
+        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.</source>
         <translation>机床在 %2 秒内没有回应“%1”。连接已关闭，因为迟到的回应可能被当成下一条命令的回应。请重新连接，并在继续之前检查机床。</translation>
     </message>
     <message>
@@ -898,7 +906,7 @@
         <translation>端口在 5 秒内未能打开。</translation>
     </message>
     <message>
-        <source>The machine's offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
+        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
         <translation>无法读取机床的补偿报告（M493.4）%1。未记录任何内容；请重试，如果再次发生请检查线缆。</translation>
     </message>
     <message>
@@ -926,7 +934,7 @@
         <translation>刀具 T%1 测得 %2 mm，之前为 %3 mm，超出了 %4 mm 的公差。</translation>
     </message>
     <message>
-        <source>The machine's reply to %1 could not be read. Check the offsets (Report) before you cut.</source>
+        <source>The machine&apos;s reply to %1 could not be read. Check the offsets (Report) before you cut.</source>
         <translation>无法读取机床对 %1 的回应。切削前请检查补偿（报告）。</translation>
     </message>
     <message>
@@ -1270,7 +1278,7 @@ Save them first?</source>
         <translation>（当前 TLO 尚未知道）</translation>
     </message>
     <message>
-        <source>%1 → set by the machine from the spindle's position</source>
+        <source>%1 → set by the machine from the spindle&apos;s position</source>
         <translation>%1 → 由机床根据主轴位置设置</translation>
     </message>
     <message>
@@ -1319,7 +1327,7 @@ TLO %2
         <translation>在对刀仪上测量主轴中的刀具（M491）— F5</translation>
     </message>
     <message>
-        <source>Restore the selected tool's known TLO</source>
+        <source>Restore the selected tool&apos;s known TLO</source>
         <translation>恢复所选刀具的已知 TLO</translation>
     </message>
     <message>
@@ -1716,7 +1724,7 @@ Sends: M493.2 T%1, then M493.3 Z%2</source>
         <translation>使用深色配色。</translation>
     </message>
     <message>
-        <source>Language: de, zh_CN or en (default: the system's).</source>
+        <source>Language: de, zh_CN or en (default: the system&apos;s).</source>
         <translation>语言：de、zh_CN 或 en（默认跟随系统）。</translation>
     </message>
     <message>

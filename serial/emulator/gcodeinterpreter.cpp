@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 
 #include "textparsing.h"
+#include "toolvalidation.h"
 
 using namespace Qt::StringLiterals;
 
@@ -22,6 +23,9 @@ QString tr(const char *text)
 constexpr int kMaxOffsetNumber = 999;
 constexpr double kMaxGeometry = 999.999;
 constexpr double kMaxWear = 99.999;
+// Controllers take at most eight digits before the point (FANUC's +-99999999). The bound also keeps every
+// position a program can reach finite: without it, two G91 moves of 1e308 end at infinity.
+constexpr double kMaxWordValue = 99999999.0;
 
 bool isLetter(char c)
 {
@@ -41,6 +45,12 @@ bool same(double a, double b)
 QString number(double v)
 {
     return QString::number(v, 'g', 10);
+}
+
+QString tooLarge(QByteArrayView word)
+{
+    return tr("%1 is too large: a controller takes at most eight digits before the decimal point.")
+        .arg(QString::fromUtf8(word));
 }
 
 int axisIndex(char letter)
@@ -96,6 +106,19 @@ GCodeInterpreter::GCodeInterpreter(Dialect dialect, OffsetTable offsets, int sam
 Error GCodeInterpreter::error(int line, const QString &message) const
 {
     return Error { message, line };
+}
+
+Result<int> GCodeInterpreter::wholeWord(const Words &w, char letter, int low, int high, int line) const
+{
+    const double v = w.get(letter);
+    if (v != std::floor(v) || v < low || v > high)
+        return error(line,
+            tr("%1%2 must be a whole number from %3 to %4.")
+                .arg(QChar::fromLatin1(letter))
+                .arg(number(v))
+                .arg(low)
+                .arg(high));
+    return int(v);
 }
 
 double GCodeInterpreter::offsetValue(int number) const
@@ -184,6 +207,8 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
             if (!v)
                 return error(
                     line, tr("\"%1\" is not a number.").arg(QString::fromUtf8(text.sliced(j, k - j))));
+            if (std::fabs(*v) > kMaxWordValue)
+                return error(line, tooLarge(text.sliced(i, k - i)));
             if (letter == 'G') {
                 if (w.gCount == int(w.g.size()))
                     return error(line, tr("too many G codes in one block."));
@@ -302,10 +327,18 @@ Result<void> GCodeInterpreter::lengthWords(const Words &w, int line)
         return {};
     }
     if (fagor) {
-        if (w.word('T') && !w.word('D'))
-            m_lengthValue = offsetValue(int(w.get('T'))); // the offset linked to the tool
-        if (w.word('D'))
-            m_lengthValue = offsetValue(int(w.get('D')));
+        if (w.word('T') && !w.word('D')) {
+            const auto tool = wholeWord(w, 'T', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
+            if (!tool)
+                return tool.error();
+            m_lengthValue = offsetValue(tool.value()); // the offset linked to the tool
+        }
+        if (w.word('D')) {
+            const auto d = wholeWord(w, 'D', 0, kMaxOffsetNumber, line);
+            if (!d)
+                return d.error();
+            m_lengthValue = offsetValue(d.value());
+        }
         if (w.hasG(43))
             m_lengthMode = LengthMode::Plus; // the value carries its own sign
         if (w.hasG(44) || w.hasG(74))
@@ -341,16 +374,31 @@ Result<void> GCodeInterpreter::linuxCncLength(const Words &w, int line)
     const bool change = w.hasG(43) || w.hasG(43.1) || w.hasG(43.2) || w.hasG(49);
     if (change && m_radiusComp)
         return error(line, tr("Cannot change tool offset with cutter radius compensation on"));
-    if (w.word('T'))
-        m_preparedTool = int(w.get('T'));
+    if (w.word('T')) {
+        const auto tool = wholeWord(w, 'T', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
+        if (!tool)
+            return tool.error();
+        m_preparedTool = tool.value();
+    }
     if (w.hasM(6))
         m_loadedTool = m_preparedTool; // the offset does not change: issue G43 after
     if (w.hasM(61)) {
         if (!w.word('Q'))
             return error(line, tr("M61 needs Q, the tool number."));
-        m_loadedTool = int(w.get('Q'));
+        const auto tool = wholeWord(w, 'Q', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
+        if (!tool)
+            return tool.error();
+        m_loadedTool = tool.value();
     }
-    auto toolLength = [this, line](int tool) -> Result<double> {
+    // The length of the tool the H word names, or else of the loaded tool.
+    auto toolLength = [this, &w, line]() -> Result<double> {
+        int tool = m_loadedTool;
+        if (w.word('H')) {
+            const auto h = wholeWord(w, 'H', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
+            if (!h)
+                return h.error();
+            tool = h.value();
+        }
         if (tool == 0)
             return 0.0;
         const auto it = m_offsets.find(tool);
@@ -359,7 +407,7 @@ Result<void> GCodeInterpreter::linuxCncLength(const Words &w, int line)
         return it->second.length();
     };
     if (w.hasG(43)) {
-        auto v = toolLength(w.word('H') ? int(w.get('H')) : m_loadedTool);
+        auto v = toolLength();
         if (!v)
             return v.error();
         m_lengthValue = v.value();
@@ -372,7 +420,7 @@ Result<void> GCodeInterpreter::linuxCncLength(const Words &w, int line)
     } else if (w.hasG(43.2)) {
         if (!w.word('H'))
             return error(line, tr("G43.2 needs H, the tool whose offset it adds."));
-        auto v = toolLength(int(w.get('H')));
+        auto v = toolLength();
         if (!v)
             return v.error();
         m_lengthValue += v.value();
@@ -408,7 +456,8 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
         if (!same(l, 1))
             return error(line,
                 tr("G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.").arg(number(l)));
-        if (!w.word('P') || w.get('P') < 1 || w.get('P') != std::floor(w.get('P')))
+        if (!w.word('P') || w.get('P') < 1 || w.get('P') > Limits::kMaxToolNumber
+            || w.get('P') != std::floor(w.get('P')))
             return error(line, tr("G10 L1 needs P, a tool number in the tool table."));
         const auto it = m_offsets.find(int(w.get('P')));
         if (it == m_offsets.end())
@@ -449,7 +498,9 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
             fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: the value (R) is missing.")
                   : tr("G10 needs R, the value."));
     const bool wear = same(l, 11) || same(l, 13);
-    OffsetEntry &entry = m_offsets[int(p)];
+    // Worked on a copy: a refused value must not leave behind a register it created.
+    const auto stored = m_offsets.find(int(p));
+    OffsetEntry entry = stored == m_offsets.end() ? OffsetEntry {} : stored->second;
     double &field = same(l, 10) ? entry.lengthGeometry
         : same(l, 11)           ? entry.lengthWear
         : same(l, 12)           ? entry.radiusGeometry
@@ -461,6 +512,7 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
             fanuc ? tr("PS0032 ILLEGAL OFFSET VALUE IN G10: %1 is beyond ±%2.").arg(number(result)).arg(limit)
                   : tr("G10: %1 is beyond ±%2.").arg(number(result)).arg(limit));
     field = result;
+    m_offsets[int(p)] = entry;
     return {};
 }
 
@@ -518,6 +570,8 @@ Result<void> GCodeInterpreter::callFunction(QByteArrayView call, int line)
             const auto v = parseDecimal(item);
             if (!v)
                 return error(line, tr("\"%1\" is not a number.").arg(QString::fromUtf8(item)));
+            if (std::fabs(*v) > kMaxWordValue)
+                return error(line, tooLarge(item));
             offsets.append(*v);
         }
         m_compOffsets = offsets;

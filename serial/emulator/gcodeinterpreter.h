@@ -84,6 +84,8 @@ private:
     [[nodiscard]] double lengthContribution() const;
     [[nodiscard]] Error error(int line, const QString &message) const;
     [[nodiscard]] double offsetValue(int number) const;
+    // A word naming a tool or a register (T, D, H, P, Q): a whole number from low to high, or an error.
+    [[nodiscard]] Result<int> wholeWord(const Words &w, char letter, int low, int high, int line) const;
 
     Dialect m_dialect;
     OffsetTable m_offsets;

@@ -286,6 +286,54 @@ private Q_SLOTS:
         }
     }
 
+    // Programs no controller would run, each found or suggested by fuzz-gcode: refused with a message on
+    // their line, the offset table left exactly as it was, and the machine somewhere real.
+    void refusesWhatNoControllerTakes_data()
+    {
+        QTest::addColumn<int>("dialect");
+        QTest::addColumn<QByteArray>("program");
+        QTest::addColumn<QString>("error");
+        const QByteArray huge(308, '9'); // about 1e308: a finite double, twice of it is not
+        const auto F = Dialect::Fanuc, G = Dialect::Fagor8055M, L = Dialect::LinuxCnc, R = Dialect::Aerotech;
+        QTest::newRow("T beyond an int (found by fuzzing)") << int(L) << QByteArray("G0 X0\nT77777777772")
+                                                           << u"T77777777772 is too large"_s;
+        QTest::newRow("T beyond any tool") << int(L) << QByteArray("T1000000 M6") << u"from 0 to 999999"_s;
+        QTest::newRow("T beyond any tool, in eight digits")
+            << int(L) << QByteArray("T99999999") << u"T99999999 must be a whole number from 0 to 999999"_s;
+        QTest::newRow("T not whole") << int(L) << QByteArray("T1.5 M6") << u"T1.5 must be a whole number"_s;
+        QTest::newRow("M61 Q beyond any tool") << int(L) << QByteArray("M61 Q-2") << u"Q-2 must be"_s;
+        QTest::newRow("G43 H beyond any tool") << int(L) << QByteArray("G43 H99999999") << u"H99999999"_s;
+        QTest::newRow("G43.2 H not whole") << int(L) << QByteArray("G43.2 H1.25") << u"H1.25"_s;
+        QTest::newRow("G10 L1 P beyond any tool")
+            << int(L) << QByteArray("G10 L1 P9999999 Z1") << u"needs P, a tool number"_s;
+        QTest::newRow("FAGOR D beyond the offsets") << int(G) << QByteArray("G43 D1000") << u"from 0 to 999"_s;
+        QTest::newRow("FAGOR T beyond an int") << int(G) << QByteArray("T12345678.5") << u"T12345678.5"_s;
+        QTest::newRow("a word beyond eight digits") << int(F) << QByteArray("G0 X123456789") << u"too large"_s;
+        QTest::newRow("G91 towards infinity, at its first step")
+            << int(F) << QByteArray("G91 G0 X" + huge) << u"too large"_s;
+        QTest::newRow("Aerotech offset beyond eight digits")
+            << int(R) << QByteArray("G44 X Y\nCutterCompensationSetOffsets([1, 1000000000])") << u"too large"_s;
+        QTest::newRow("a refused G10 creates no register")
+            << int(F) << QByteArray("G10 L11 P5 R150") << u"PS0032"_s;
+        QTest::newRow("a refused G91 G10 changes no register")
+            << int(F) << QByteArray("G91 G10 L10 P1 R999") << u"PS0032"_s;
+    }
+    void refusesWhatNoControllerTakes()
+    {
+        QFETCH(int, dialect);
+        QFETCH(QByteArray, program);
+        QFETCH(QString, error);
+        const OffsetTable before = offsets(u"1:10/-0.5;2:-190.1"_s);
+        GCodeInterpreter interpreter(Dialect(dialect), before);
+        const auto result = interpreter.run(program);
+        QVERIFY2(!result.ok(), "the program should have been refused");
+        QVERIFY2(result.error().message.contains(error), qPrintable(result.error().message));
+        QCOMPARE(result.error().line, int(program.count('\n')) + 1);
+        QCOMPARE(interpreter.offsets(), before);
+        for (double v : interpreter.position())
+            QVERIFY(std::isfinite(v));
+    }
+
     void leadsOnGraduallyOverTheMove()
     {
         // DIALECTS Aerotech worked: 'halfway through the lead-on at (5.5, 4, 1.5)'; 001: 'gradually applies
