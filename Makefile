@@ -12,15 +12,20 @@ DEB_PACKAGES := cmake ninja-build g++ make \
 	qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools \
 	libqt6svg6 libgl-dev fonts-dejavu-core xvfb xauth
 
+# `make fuzz` also needs clang and its libFuzzer and sanitizer runtimes.
+FUZZ_PACKAGES := clang libclang-rt-14-dev
+FUZZ_SECONDS ?= 600
+
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build run test bench format clean
+.PHONY: all deps configure build run test bench fuzz format clean
 
 all: build
 
-deps:
+# Installs whichever of the Debian packages named in $(1) are missing.
+define install_missing
 	@missing=""; \
-	for p in $(DEB_PACKAGES); do \
+	for p in $(1); do \
 		dpkg-query -W -f='$${Status}\n' "$$p" 2>/dev/null | grep -q '^install ok installed' || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
@@ -28,6 +33,10 @@ deps:
 		$(SUDO) apt-get update -qq && \
 		$(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
+endef
+
+deps:
+	$(call install_missing,$(DEB_PACKAGES))
 
 $(BUILD_DIR)/build.ninja: | deps
 	cmake --preset $(PRESET)
@@ -62,6 +71,13 @@ bench: build
 	for i in 1 2 3 4 5 6 7 8 9 10; do [ -e $$link ] && break; sleep 0.2; done; \
 	$(BUILD_DIR)/bin/toffee-cli --port $$link link-test --count 10000; status=$$?; \
 	kill $$pid; exit $$status
+
+# Each fuzz target for FUZZ_SECONDS (600 by default), two at a time: `make fuzz FUZZ_SECONDS=60` for a quick look.
+fuzz:
+	$(call install_missing,$(DEB_PACKAGES) $(FUZZ_PACKAGES))
+	@[ -f build-fuzz/build.ninja ] || cmake --preset fuzz
+	cmake --build --preset fuzz
+	tests/fuzz/run-fuzzers.sh $(FUZZ_SECONDS)
 
 format:
 	git ls-files '*.cpp' '*.h' | xargs clang-format -i
