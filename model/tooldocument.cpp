@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tooldocument.h"
 
+#include <QFileInfo>
+
 #include "toolcommands.h"
 #include "toolvalidation.h"
 
@@ -89,6 +91,25 @@ Result<int> ToolDocument::importFrom(const QString &path, std::optional<TableFor
     const int count = int(imported.value().size());
     m_undoStack.push(new ReplaceTableCommand(&m_model, table(), merged, tr("Import %1 tools").arg(count)));
     return count;
+}
+
+QString ToolDocument::recoverEdits(const ToolTable &edits, const QString &originalPath, TableFormat originalFormat)
+{
+    QString notice;
+    if (originalPath.isEmpty()) {
+        newTable(edits.units());
+    } else if (!QFileInfo::exists(originalPath)) {
+        newTable(edits.units());
+        setFile(originalPath, originalFormat); // Save writes it again
+        notice = tr("%1 no longer exists; saving writes it again.").arg(originalPath);
+    } else if (auto opened = open(originalPath, originalFormat, edits.units()); !opened) {
+        // Never save over a file Toffee cannot read: the edits become a new table, saved with Save As.
+        newTable(edits.units());
+        notice = tr("%1 does not load (%2), so the recovered edits are a new table: save them with Save As.")
+                     .arg(originalPath, opened.error().text());
+    }
+    m_undoStack.push(new ReplaceTableCommand(&m_model, table(), edits, tr("Recover unsaved edits")));
+    return notice;
 }
 
 Result<void> ToolDocument::addTool(const Tool &tool)

@@ -356,6 +356,17 @@
     </message>
 </context>
 <context>
+    <name>Toffee::AutoSave</name>
+    <message>
+        <source>Cannot create the folder for unsaved edits, %1.</source>
+        <translation>Der Ordner für ungesicherte Änderungen, %1, kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <source>Cannot write in the folder for unsaved edits, %1.</source>
+        <translation>In den Ordner für ungesicherte Änderungen, %1, kann nicht geschrieben werden.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::BreakTestPanel</name>
     <message>
         <source>Run Break Test</source>
@@ -1610,6 +1621,18 @@ Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
     <message>
         <source>Measure T%1</source>
         <translation>T%1 vermessen</translation>
+    </message>
+    <message>
+        <source>%1 no longer exists; saving writes it again.</source>
+        <translation>%1 existiert nicht mehr; Speichern schreibt die Datei neu.</translation>
+    </message>
+    <message>
+        <source>%1 does not load (%2), so the recovered edits are a new table: save them with Save As.</source>
+        <translation>%1 lässt sich nicht laden (%2), daher sind die wiederhergestellten Änderungen eine neue Tabelle: Speichern Sie sie mit „Speichern unter“.</translation>
+    </message>
+    <message>
+        <source>Recover unsaved edits</source>
+        <translation>Ungesicherte Änderungen wiederherstellen</translation>
     </message>
 </context>
 <context>

@@ -356,6 +356,17 @@
     </message>
 </context>
 <context>
+    <name>Toffee::AutoSave</name>
+    <message>
+        <source>Cannot create the folder for unsaved edits, %1.</source>
+        <translation>无法创建保存未保存修改的文件夹 %1。</translation>
+    </message>
+    <message>
+        <source>Cannot write in the folder for unsaved edits, %1.</source>
+        <translation>无法写入保存未保存修改的文件夹 %1。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::BreakTestPanel</name>
     <message>
         <source>Run Break Test</source>
@@ -1610,6 +1621,18 @@ Sends: M493.2 T%1, then M493.3 Z%2</source>
     <message>
         <source>Measure T%1</source>
         <translation>测量 T%1</translation>
+    </message>
+    <message>
+        <source>%1 no longer exists; saving writes it again.</source>
+        <translation>%1 已不存在；保存时将重新写入。</translation>
+    </message>
+    <message>
+        <source>%1 does not load (%2), so the recovered edits are a new table: save them with Save As.</source>
+        <translation>%1 无法加载（%2），因此恢复的修改成为一个新表：请用“另存为”保存。</translation>
+    </message>
+    <message>
+        <source>Recover unsaved edits</source>
+        <translation>恢复未保存的修改</translation>
     </message>
 </context>
 <context>

@@ -121,6 +121,46 @@ private Q_SLOTS:
         QVERIFY(doc.undoStack()->canUndo());
     }
 
+    void recoveredEditsAreOneUnsavedStepOnTopOfTheFile_data()
+    {
+        QTest::addColumn<QString>("original"); // "saved", "missing", "garbled" or "none"
+        QTest::addColumn<QString>("notice"); // a fragment of what the operator is told; empty: nothing
+        QTest::newRow("the file loads") << u"saved"_s << QString();
+        QTest::newRow("the file is gone") << u"missing"_s << u"no longer exists"_s;
+        QTest::newRow("the file does not load") << u"garbled"_s << u"does not load"_s;
+        QTest::newRow("a table never saved") << u"none"_s << QString();
+    }
+    void recoveredEditsAreOneUnsavedStepOnTopOfTheFile()
+    {
+        QFETCH(QString, original);
+        QFETCH(QString, notice);
+        QTemporaryDir dir;
+        const QString path = original == u"none" ? QString() : dir.filePath(u"tools.csv"_s);
+        const ToolTable onDisk = Test::awkwardTable();
+        if (original == u"saved")
+            QVERIFY(saveTableFile(path, onDisk, TableFormat::Csv).ok());
+        if (original == u"garbled") {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("number,pocket\n1,1\n1,2\n");
+        }
+        ToolTable edits = onDisk;
+        QVERIFY(edits.insert(tool(77, 5.5)).ok());
+        QVERIFY(edits.remove(2));
+
+        ToolDocument doc;
+        const QString told = doc.recoverEdits(edits, path, TableFormat::Csv);
+        QCOMPARE(told.isEmpty(), notice.isEmpty());
+        QVERIFY2(told.contains(notice), qPrintable(told));
+        QCOMPARE(doc.table(), edits);
+        QVERIFY(doc.isModified()); // the operator reviews, then saves
+        QCOMPARE(doc.undoStack()->count(), 1);
+        // Saving goes back to the file, except one Toffee cannot read, which is never saved over.
+        QCOMPARE(doc.filePath(), original == u"garbled" ? QString() : path);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.table(), original == u"saved" ? onDisk : ToolTable(edits.units()));
+    }
+
     void importMergesAsOneUndoStep()
     {
         QTemporaryDir dir;

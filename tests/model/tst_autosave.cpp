@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// AutoSave: a copy of the unsaved edits exists exactly while there are unsaved edits, a living session's copy
+// is never offered, and what a dead session left is found, loaded, claimed once and discarded.
+#include <QDir>
+#include <QLockFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "autosave.h"
+#include "testtables.h"
+#include "tooldocument.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+class TestAutoSave : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    QString recovery() const { return m_dir.filePath(u"recovery"_s); }
+    // A saved table to start from (a failure to write it fails the test that opens it).
+    QString saved(const QString &name = u"tools.json"_s) const
+    {
+        const QString path = m_dir.filePath(name);
+        (void)saveTableFile(path, Test::awkwardTable(), TableFormat::Json);
+        return path;
+    }
+
+private Q_SLOTS:
+    void cleanup() { QDir(recovery()).removeRecursively(); }
+
+    void writesACopyAMomentAfterAnEdit()
+    {
+        ToolDocument document;
+        QVERIFY(document.open(saved()).ok());
+        AutoSave autoSave(&document, recovery());
+        autoSave.setDelay(20);
+        QVERIFY(!QFileInfo::exists(autoSave.tablePath()));
+        QVERIFY(document.addTool(Test::tool(40, 12.5)).ok());
+        QTRY_VERIFY(QFileInfo::exists(autoSave.tablePath()));
+        const auto copy = loadTableFile(autoSave.tablePath());
+        QVERIFY2(copy.ok(), qPrintable(copy.error().text()));
+        QCOMPARE(copy.value(), document.table());
+    }
+
+    void aLivingSessionIsNeverOffered()
+    {
+        ToolDocument document;
+        AutoSave autoSave(&document, recovery());
+        QVERIFY(document.addTool(Test::tool(1)).ok());
+        QVERIFY(autoSave.saveNow().ok());
+        QVERIFY(QFileInfo::exists(autoSave.tablePath()));
+        QVERIFY(AutoSave::findRecoverable(recovery()).isEmpty());
+    }
+
+    void theCopyGoesWhenNothingIsUnsaved()
+    {
+        ToolDocument document;
+        QVERIFY(document.open(saved()).ok());
+        AutoSave autoSave(&document, recovery());
+        QVERIFY(document.addTool(Test::tool(41)).ok());
+        QVERIFY(autoSave.saveNow().ok());
+        QVERIFY(QFileInfo::exists(autoSave.tablePath()));
+        document.undoStack()->undo(); // back to the saved state
+        QVERIFY(!QFileInfo::exists(autoSave.tablePath()));
+
+        QVERIFY(document.addTool(Test::tool(42)).ok());
+        QVERIFY(autoSave.saveNow().ok());
+        QVERIFY(document.save().ok());
+        QVERIFY(!QFileInfo::exists(autoSave.tablePath()));
+        QVERIFY(document.addTool(Test::tool(43)).ok()); // edits after a save are protected again
+        QVERIFY(autoSave.saveNow().ok());
+        QVERIFY(QFileInfo::exists(autoSave.tablePath()));
+    }
+
+    void aNormalExitLeavesNothing()
+    {
+        ToolDocument document;
+        {
+            AutoSave autoSave(&document, recovery());
+            QVERIFY(document.addTool(Test::tool(1)).ok());
+            QVERIFY(autoSave.saveNow().ok());
+            QVERIFY(!QDir(recovery()).isEmpty());
+        } // the window closed, the operator having chosen to discard
+        QVERIFY(document.isModified());
+        QVERIFY(QDir(recovery()).isEmpty());
+    }
+
+    void findsClaimsAndDiscardsWhatADeadSessionLeft()
+    {
+        // What a killed Toffee leaves: the copy and where it belongs, and a lock no living process holds.
+        QDir().mkpath(recovery());
+        const ToolTable edits = Test::awkwardTable();
+        QVERIFY(saveTableFile(recovery() + u"/99999-dead.json"_s, edits, TableFormat::Json).ok());
+        QFile info(recovery() + u"/99999-dead.info"_s);
+        QVERIFY(info.open(QIODevice::WriteOnly));
+        info.write(R"({"original_path": "/somewhere/tools.tbl", "original_format": "tbl"})");
+        info.close();
+
+        const auto sessions = AutoSave::findRecoverable(recovery());
+        QCOMPARE(sessions.size(), 1);
+        const AutoSave::Session &session = sessions.first();
+        QCOMPARE(session.originalPath, u"/somewhere/tools.tbl"_s);
+        QCOMPARE(session.originalFormat, TableFormat::LinuxCnc);
+        QVERIFY(session.savedAt.isValid());
+        const auto loaded = AutoSave::load(session);
+        QVERIFY(loaded.ok());
+        QCOMPARE(loaded.value(), edits);
+
+        // Claimed: a second Toffee starting now is not offered the same copy.
+        QVERIFY(AutoSave::findRecoverable(recovery()).isEmpty());
+        AutoSave::discard(session);
+        QVERIFY(QDir(recovery()).isEmpty());
+    }
+
+    void aCopyDeclinedNowIsOfferedAgainLater()
+    {
+        QDir().mkpath(recovery());
+        QVERIFY(saveTableFile(recovery() + u"/1-later.json"_s, Test::awkwardTable(), TableFormat::Json).ok());
+        QCOMPARE(AutoSave::findRecoverable(recovery()).size(), 1); // released as the list goes
+        const auto again = AutoSave::findRecoverable(recovery());
+        QCOMPARE(again.size(), 1);
+        QVERIFY(again.first().originalPath.isEmpty()); // no .info: a table never saved
+    }
+
+    void reportsACopyItCannotWrite()
+    {
+        // The recovery folder's place is taken by a file: no copy can be written, and the window must hear.
+        const QString blocked = saved(u"blocked"_s);
+        ToolDocument document;
+        AutoSave autoSave(&document, blocked + u"/recovery"_s);
+        autoSave.setDelay(0);
+        QSignalSpy failed(&autoSave, &AutoSave::failed);
+        QVERIFY(document.addTool(Test::tool(1)).ok());
+        QTRY_COMPARE(failed.size(), 1);
+        QVERIFY2(failed.first().first().toString().contains(u"folder for unsaved edits"_s),
+            qPrintable(failed.first().first().toString()));
+        QVERIFY(!autoSave.saveNow().ok());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAutoSave)
+#include "tst_autosave.moc"
