@@ -20,8 +20,9 @@ ToolDocument::ToolDocument(QObject *parent)
 
 ToolDocument::~ToolDocument()
 {
-    // QUndoStack says "clean changed" as it is destroyed; nobody may hear that from a dying document.
-    m_undoStack.disconnect(this);
+    // QUndoStack says "clean changed" as it is destroyed; nobody (the document, its AutoSave, the window) may
+    // hear that from a dying document.
+    m_undoStack.disconnect();
 }
 
 void ToolDocument::setFile(const QString &path, TableFormat format)

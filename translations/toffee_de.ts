@@ -1233,6 +1233,44 @@ Zuerst speichern?</translation>
         <source>Export for &amp;Controller…</source>
         <translation>Für &amp;Steuerung exportieren …</translation>
     </message>
+    <message>
+        <source>Recover Unsaved Edits</source>
+        <translation>Ungesicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Toffee stopped before a new table was saved. Its last copy is from %1.</source>
+        <translation>Toffee wurde beendet, bevor eine neue Tabelle gespeichert war. Ihre letzte Kopie ist von %1.</translation>
+    </message>
+    <message>
+        <source>Toffee stopped before the edits to %1 were saved. Their last copy is from %2.</source>
+        <translation>Toffee wurde beendet, bevor die Änderungen an %1 gespeichert waren. Ihre letzte Kopie ist von %2.</translation>
+    </message>
+    <message>
+        <source>The copy holds %1 tools. Recover puts it on top of the file as it is on disk, unsaved: review it, then save; Undo shows the file as it was. Discard deletes the copy; Later keeps it for the next start.</source>
+        <translation>Die Kopie enthält %1 Werkzeuge. „Wiederherstellen“ legt sie ungespeichert über die Datei, wie sie auf der Festplatte liegt: prüfen, dann speichern; „Rückgängig“ zeigt die Datei, wie sie war. „Verwerfen“ löscht die Kopie; „Später“ hebt sie für den nächsten Start auf.</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Later</source>
+        <translation>&amp;Später</translation>
+    </message>
+    <message>
+        <source>A copy of unsaved edits cannot be read: %1
+Discard it?</source>
+        <translation>Eine Kopie ungesicherter Änderungen lässt sich nicht lesen: %1
+Verwerfen?</translation>
+    </message>
+    <message>
+        <source>Unsaved edits are not protected against a crash until they are saved: %1</source>
+        <translation>Ungesicherte Änderungen sind bis zum Speichern nicht gegen einen Absturz geschützt: %1</translation>
+    </message>
+    <message>
+        <source>Recovered unsaved edits: review them, then save.</source>
+        <translation>Ungesicherte Änderungen wiederhergestellt: prüfen, dann speichern.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>

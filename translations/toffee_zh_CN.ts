@@ -1233,6 +1233,44 @@ Save them first?</source>
         <source>Export for &amp;Controller…</source>
         <translation>为控制器导出(&amp;C)…</translation>
     </message>
+    <message>
+        <source>Recover Unsaved Edits</source>
+        <translation>恢复未保存的修改</translation>
+    </message>
+    <message>
+        <source>Toffee stopped before a new table was saved. Its last copy is from %1.</source>
+        <translation>Toffee 在新表保存之前停止了。其最后一份副本来自 %1。</translation>
+    </message>
+    <message>
+        <source>Toffee stopped before the edits to %1 were saved. Their last copy is from %2.</source>
+        <translation>Toffee 在对 %1 的修改保存之前停止了。其最后一份副本来自 %2。</translation>
+    </message>
+    <message>
+        <source>The copy holds %1 tools. Recover puts it on top of the file as it is on disk, unsaved: review it, then save; Undo shows the file as it was. Discard deletes the copy; Later keeps it for the next start.</source>
+        <translation>副本包含 %1 把刀具。“恢复”会把它叠加在磁盘上的文件之上，且不保存：请检查后再保存；“撤销”可显示文件原来的样子。“放弃”会删除副本；“稍后”会保留到下次启动。</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>恢复(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Later</source>
+        <translation>稍后(&amp;L)</translation>
+    </message>
+    <message>
+        <source>A copy of unsaved edits cannot be read: %1
+Discard it?</source>
+        <translation>无法读取未保存修改的副本：%1
+要放弃它吗？</translation>
+    </message>
+    <message>
+        <source>Unsaved edits are not protected against a crash until they are saved: %1</source>
+        <translation>在保存之前，未保存的修改不受崩溃保护：%1</translation>
+    </message>
+    <message>
+        <source>Recovered unsaved edits: review them, then save.</source>
+        <translation>已恢复未保存的修改：请检查后保存。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>

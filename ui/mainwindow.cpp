@@ -17,6 +17,7 @@
 #include <QUndoStack>
 
 #include "appearance.h"
+#include "autosave.h"
 #include "appsettings.h"
 #include "breaktestpanel.h"
 #include "connectionpanel.h"
@@ -70,6 +71,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_machineDock(new MachineDock(m_connection, m_document, this))
     , m_consoleDock(new ConsoleDock(m_connection, this))
     , m_fileWatcher(new FileWatcher(this))
+    , m_autoSave(new AutoSave(m_document, AutoSave::defaultDirectory(), this))
 {
     setObjectName(u"mainWindow"_s);
     setWindowIcon(themeIcon(u"toffee"_s));
@@ -111,6 +113,10 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_document, &ToolDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ToolDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_fileWatcher, &FileWatcher::changedOnDisk, this, &MainWindow::fileChangedOnDisk);
+    connect(m_autoSave, &AutoSave::failed, this, [this](const QString &message) {
+        statusBar()->showMessage(
+            tr("Unsaved edits are not protected against a crash until they are saved: %1").arg(message));
+    });
     connect(m_document->model(), &ToolTableModel::editRejected, this,
         [this](const QString &message) { showError(tr("Value not accepted"), message); });
     updateTitle();
@@ -122,7 +128,7 @@ MainWindow::~MainWindow()
     // Children outlive this class's part of the object: whatever they say while they are destroyed must not
     // reach MainWindow's slots (UBSan's "downcast of address ... not an object of type MainWindow").
     for (QObject *sender :
-        std::initializer_list<QObject *> { m_document, m_document->model(), m_connection, m_fileWatcher })
+        std::initializer_list<QObject *> { m_document, m_document->model(), m_connection, m_fileWatcher, m_autoSave })
         sender->disconnect(this);
 }
 

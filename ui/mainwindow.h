@@ -9,6 +9,7 @@ class QMenu;
 
 namespace Toffee {
 
+class AutoSave;
 class ConsoleDock;
 class FileWatcher;
 class MachineConnection;
@@ -31,6 +32,7 @@ public:
     [[nodiscard]] MachineConnection *connection() const { return m_connection; }
     [[nodiscard]] MachineDock *machineDock() const { return m_machineDock; }
     [[nodiscard]] ConsoleDock *consoleDock() const { return m_consoleDock; }
+    [[nodiscard]] AutoSave *autoSave() const { return m_autoSave; }
     // Opens a table, reporting a failure in a message box; the current table stays if it fails.
     bool openFile(const QString &path);
 
@@ -68,6 +70,7 @@ private:
     ConsoleDock *m_consoleDock;
     QLabel *m_machineLabel = nullptr;
     FileWatcher *m_fileWatcher;
+    AutoSave *m_autoSave;
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;

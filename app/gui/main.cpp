@@ -12,6 +12,7 @@
 #include "machineconnection.h"
 #include "machinedock.h"
 #include "mainwindow.h"
+#include "recoveryprompt.h"
 #include "selftest.h"
 #include "translations.h"
 
@@ -64,9 +65,10 @@ int main(int argc, char *argv[])
         test.start(sinceLaunch);
         return QApplication::exec();
     }
-    if (!parser.positionalArguments().isEmpty())
-        window.openFile(parser.positionalArguments().constFirst());
     window.show();
+    // Edits a crash would have lost come first; the table asked for opens when none are recovered.
+    if (!Toffee::offerRecovery(&window) && !parser.positionalArguments().isEmpty())
+        window.openFile(parser.positionalArguments().constFirst());
     if (parser.isSet(emulator) || parser.isSet(port)) {
         const Toffee::ConnectionTarget target { parser.isSet(emulator), parser.value(port),
             parser.value(baud).toInt() };

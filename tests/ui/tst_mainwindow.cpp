@@ -3,15 +3,19 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QDialogButtonBox>
 #include <QFile>
 #include <QHeaderView>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
@@ -19,9 +23,11 @@
 #include <QToolButton>
 #include <QUndoStack>
 
+#include "autosave.h"
 #include "exportdialog.h"
 #include "mainwindow.h"
 #include "messageboxes.h"
+#include "recoveryprompt.h"
 #include "tooldocument.h"
 #include "tooltablemodel.h"
 #include "tooltablepanel.h"
@@ -136,6 +142,71 @@ private Q_SLOTS:
         QVERIFY(window.isVisible());
         answerNextBox(QMessageBox::Discard);
         QVERIFY(window.close());
+    }
+
+    void offersTheEditsADeadToffeeLeft_data()
+    {
+        QTest::addColumn<QString>("answer");
+        QTest::newRow("recover") << u"recover"_s;
+        QTest::newRow("discard") << u"discard"_s;
+        QTest::newRow("later") << u"later"_s;
+    }
+    void offersTheEditsADeadToffeeLeft()
+    {
+        QFETCH(QString, answer);
+        QTemporaryDir dir;
+        const QString table = dir.filePath(u"tools.json"_s);
+        QVERIFY(QFile::copy(kExample, table));
+        const QByteArray onDisk = [&] {
+            QFile f(table);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        }();
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+
+        // What a Toffee killed while editing tools.json leaves: its copy, and where the edits belong.
+        const QString recovery = window.autoSave()->directory();
+        QDir(recovery).removeRecursively();
+        QVERIFY(QDir().mkpath(recovery));
+        const ToolTable original = loadTableFile(table).value();
+        ToolTable edits = original;
+        Tool added;
+        added.number = 77;
+        added.lengthGeometry = 12.5;
+        QVERIFY(edits.insert(added).ok());
+        const QString copy = recovery + u"/4242-dead.json"_s;
+        QVERIFY(saveTableFile(copy, edits, TableFormat::Json).ok());
+        QFile info(recovery + u"/4242-dead.info"_s);
+        QVERIFY(info.open(QIODevice::WriteOnly));
+        info.write(QJsonDocument(QJsonObject { { u"original_path"_s, table }, { u"original_format"_s, u"json"_s } })
+                       .toJson());
+        info.close();
+
+        QString text;
+        answerNextBox(QMessageBox::NoButton, &text, answer + u"Button"_s);
+        const bool recovered = offerRecovery(&window);
+        QVERIFY2(text.contains(table) && text.contains(u"holds 7 tools"_s), qPrintable(text));
+        QCOMPARE(recovered, answer == u"recover");
+        QCOMPARE(QFileInfo::exists(copy), answer == u"later"); // Later keeps it for the next start
+        if (answer == u"later")
+            QCOMPARE(AutoSave::findRecoverable(recovery).size(), 1);
+        if (answer != u"recover") {
+            QVERIFY(window.document()->table().isEmpty());
+            QVERIFY(!window.isWindowModified());
+            return;
+        }
+        QCOMPARE(window.document()->table(), edits);
+        QCOMPARE(window.document()->filePath(), table);
+        QVERIFY(window.isWindowModified()); // recovered, not saved: the operator reviews, then saves
+        QVERIFY(window.statusBar()->currentMessage().contains(u"Recovered unsaved edits"_s));
+        QVERIFY(QFileInfo::exists(window.autoSave()->tablePath())); // and they are protected again at once
+        window.findChild<QAction *>(u"actionUndo"_s)->trigger();
+        QCOMPARE(window.document()->table(), original);
+        QFile file(table);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll(), onDisk);
+        window.document()->undoStack()->setClean(); // nothing to ask about on closing
     }
 
     void noticesAChangeOnDiskAndReloads()

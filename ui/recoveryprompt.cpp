@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "recoveryprompt.h"
+
+#include <QLocale>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QStatusBar>
+
+#include "autosave.h"
+#include "mainwindow.h"
+#include "tooldocument.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+enum class Choice { Recover, Discard, Later };
+
+Choice ask(MainWindow *window, const AutoSave::Session &session, const ToolTable &edits)
+{
+    const QString when = QLocale().toString(session.savedAt, QLocale::ShortFormat);
+    QMessageBox box(QMessageBox::Question, MainWindow::tr("Recover Unsaved Edits"),
+        session.originalPath.isEmpty()
+            ? MainWindow::tr("Toffee stopped before a new table was saved. Its last copy is from %1.").arg(when)
+            : MainWindow::tr("Toffee stopped before the edits to %1 were saved. Their last copy is from %2.")
+                  .arg(session.originalPath, when),
+        QMessageBox::NoButton, window);
+    box.setInformativeText(MainWindow::tr("The copy holds %1 tools. Recover puts it on top of the file as it is "
+                                          "on disk, unsaved: review it, then save; Undo shows the file as it "
+                                          "was. Discard deletes the copy; Later keeps it for the next start.")
+                               .arg(edits.size()));
+    QPushButton *recover = box.addButton(MainWindow::tr("&Recover"), QMessageBox::AcceptRole);
+    recover->setObjectName(u"recoverButton"_s);
+    QPushButton *discard = box.addButton(QMessageBox::Discard);
+    discard->setObjectName(u"discardButton"_s);
+    QPushButton *later = box.addButton(MainWindow::tr("&Later"), QMessageBox::RejectRole);
+    later->setObjectName(u"laterButton"_s);
+    box.setDefaultButton(recover);
+    box.setEscapeButton(later);
+    box.exec();
+    return box.clickedButton() == recover ? Choice::Recover
+        : box.clickedButton() == discard  ? Choice::Discard
+                                          : Choice::Later;
+}
+
+} // namespace
+
+bool offerRecovery(MainWindow *window)
+{
+    AutoSave *autoSave = window->autoSave();
+    for (const AutoSave::Session &session : AutoSave::findRecoverable(autoSave->directory())) {
+        const auto edits = AutoSave::load(session);
+        if (!edits) {
+            const auto answer = QMessageBox::warning(window, MainWindow::tr("Recover Unsaved Edits"),
+                MainWindow::tr("A copy of unsaved edits cannot be read: %1\nDiscard it?").arg(edits.error().text()),
+                QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Ignore);
+            if (answer == QMessageBox::Discard)
+                AutoSave::discard(session);
+            continue;
+        }
+        switch (ask(window, session, edits.value())) {
+        case Choice::Later:
+            return false;
+        case Choice::Discard:
+            AutoSave::discard(session);
+            continue;
+        case Choice::Recover:
+            break;
+        }
+        const QString notice = window->document()->recoverEdits(
+            edits.value(), session.originalPath, session.originalFormat);
+        // The old copy goes only once this session's own copy holds the edits.
+        if (autoSave->saveNow())
+            AutoSave::discard(session);
+        window->statusBar()->showMessage(MainWindow::tr("Recovered unsaved edits: review them, then save."));
+        if (!notice.isEmpty())
+            QMessageBox::information(window, MainWindow::tr("Recover Unsaved Edits"), notice);
+        return true;
+    }
+    return false;
+}
+
+} // namespace Toffee
