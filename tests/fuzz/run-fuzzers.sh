@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every fuzz target (or those named) for SECONDS each, two at a time on two cores; `make fuzz` calls it.
 #   tests/fuzz/run-fuzzers.sh SECONDS [replies json tbl csv gcode]
+# SECONDS 0 runs each target over its folder once and stops: a check, the same every time, that CI runs.
 # Each target starts from its seeds in tests/fuzz/<name>/ and grows a working corpus in build-fuzz/corpus/.
 # Whatever breaks a target is left in build-fuzz/artifacts/<name>/: copy it into tests/fuzz/<name>/ (it then
 # replays in `make test`), fix the code, run again.
@@ -18,14 +19,20 @@ run_one() {
     mkdir -p "$build/corpus/$name" "$build/artifacts/$name" "$build/logs"
     # Leak checks off: Qt keeps caches for the life of the process, which LeakSanitizer would report on
     # every input. A hang of more than 10 s on one input counts as a failure.
+    local how=(-max_total_time="$seconds")
+    [ "$seconds" != 0 ] || how=(-runs=0) # libFuzzer's -max_total_time=0 would mean "for ever"
     ASAN_OPTIONS=detect_leaks=0 "$build/fuzz/fuzz-$name" "$build/corpus/$name" "tests/fuzz/$name" \
-        -dict="tests/fuzz/$name.dict" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+        -dict="tests/fuzz/$name.dict" "${how[@]}" -timeout=10 -rss_limit_mb=2048 \
         -print_final_stats=1 -artifact_prefix="$build/artifacts/$name/" > "$build/logs/$name.log" 2>&1
     echo "$name $?"
 }
 export -f run_one
 
-echo "fuzzing ${targets[*]} for $seconds s each, $jobs at a time; logs in $build/logs/"
+if [ "$seconds" = 0 ]; then
+    echo "running ${targets[*]} once over their corpora; logs in $build/logs/"
+else
+    echo "fuzzing ${targets[*]} for $seconds s each, $jobs at a time; logs in $build/logs/"
+fi
 results=$(printf '%s\n' "${targets[@]}" | xargs -P "$jobs" -I{} bash -c "run_one {} $seconds $build")
 
 status=0
@@ -36,7 +43,7 @@ for name in "${targets[@]}"; do
     runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
     rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log")
     edges=$(grep -o 'cov: [0-9]*' "$log" | tail -n 1 | cut -d' ' -f2)
-    corpus=$(find "$build/corpus/$name" -type f | wc -l)
+    corpus=$(grep -o 'corp: [0-9]*' "$log" | tail -n 1 | cut -d' ' -f2) # inputs that each add coverage
     found=$(find "$build/artifacts/$name" -type f | sort)
     if [ "$code" = 0 ] && [ -z "$found" ]; then
         result=clean
