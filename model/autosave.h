@@ -17,9 +17,10 @@ namespace Toffee {
 class ToolDocument;
 
 // Keeps a copy of a document's unsaved edits where they outlive the application: a moment after an edit the
-// table is written (through QSaveFile, in Toffee JSON, which holds everything) into `directory`, beside a lock
-// that says a living process owns it. Saving, or undoing back to the saved state, removes the copy, and so
-// does a normal exit, even one that discards the edits. A copy that is left belonged to a process that died.
+// table is written (through QSaveFile, in Toffee JSON, which holds everything) into `directory`, beside a
+// lock that says a living process owns it. Saving, or undoing back to the saved state, removes the copy, and
+// so does a normal exit, even one that discards the edits. A copy that is left belonged to a process that
+// died.
 class AutoSave final : public QObject
 {
     Q_OBJECT

@@ -94,7 +94,8 @@ Result<int> ToolDocument::importFrom(const QString &path, std::optional<TableFor
     return count;
 }
 
-QString ToolDocument::recoverEdits(const ToolTable &edits, const QString &originalPath, TableFormat originalFormat)
+QString ToolDocument::recoverEdits(
+    const ToolTable &edits, const QString &originalPath, TableFormat originalFormat)
 {
     QString notice;
     if (originalPath.isEmpty()) {

@@ -39,9 +39,9 @@ public:
     Result<int> importFrom(
         const QString &path, std::optional<TableFormat> format = {}, Units tblUnits = Units::Millimetre);
 
-    // Unsaved edits brought back after a crash (AutoSave), on top of the file they were made to as one undoable
-    // step: the document is left modified, and Undo shows the file as it is on disk. With no file to start
-    // from, the edits become a new table. Returns what the operator should know about that, or nothing.
+    // Unsaved edits brought back after a crash (AutoSave), on top of the file they were made to as one
+    // undoable step: the document is left modified, and Undo shows the file as it is on disk. With no file to
+    // start from, the edits become a new table. Returns what the operator should know about that, or nothing.
     QString recoverEdits(const ToolTable &edits, const QString &originalPath, TableFormat originalFormat);
 
     Result<void> addTool(const Tool &tool);

@@ -17,8 +17,8 @@
 #include <QUndoStack>
 
 #include "appearance.h"
-#include "autosave.h"
 #include "appsettings.h"
+#include "autosave.h"
 #include "breaktestpanel.h"
 #include "connectionpanel.h"
 #include "consoledock.h"
@@ -127,8 +127,8 @@ MainWindow::~MainWindow()
 {
     // Children outlive this class's part of the object: whatever they say while they are destroyed must not
     // reach MainWindow's slots (UBSan's "downcast of address ... not an object of type MainWindow").
-    for (QObject *sender :
-        std::initializer_list<QObject *> { m_document, m_document->model(), m_connection, m_fileWatcher, m_autoSave })
+    for (QObject *sender : std::initializer_list<QObject *> {
+             m_document, m_document->model(), m_connection, m_fileWatcher, m_autoSave })
         sender->disconnect(this);
 }
 

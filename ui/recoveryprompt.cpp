@@ -23,14 +23,16 @@ Choice ask(MainWindow *window, const AutoSave::Session &session, const ToolTable
     const QString when = QLocale().toString(session.savedAt, QLocale::ShortFormat);
     QMessageBox box(QMessageBox::Question, MainWindow::tr("Recover Unsaved Edits"),
         session.originalPath.isEmpty()
-            ? MainWindow::tr("Toffee stopped before a new table was saved. Its last copy is from %1.").arg(when)
+            ? MainWindow::tr("Toffee stopped before a new table was saved. Its last copy is from %1.")
+                  .arg(when)
             : MainWindow::tr("Toffee stopped before the edits to %1 were saved. Their last copy is from %2.")
                   .arg(session.originalPath, when),
         QMessageBox::NoButton, window);
-    box.setInformativeText(MainWindow::tr("The copy holds %1 tools. Recover puts it on top of the file as it is "
-                                          "on disk, unsaved: review it, then save; Undo shows the file as it "
-                                          "was. Discard deletes the copy; Later keeps it for the next start.")
-                               .arg(edits.size()));
+    box.setInformativeText(
+        MainWindow::tr("The copy holds %1 tools. Recover puts it on top of the file as it is "
+                       "on disk, unsaved: review it, then save; Undo shows the file as it "
+                       "was. Discard deletes the copy; Later keeps it for the next start.")
+            .arg(edits.size()));
     QPushButton *recover = box.addButton(MainWindow::tr("&Recover"), QMessageBox::AcceptRole);
     recover->setObjectName(u"recoverButton"_s);
     QPushButton *discard = box.addButton(QMessageBox::Discard);
@@ -54,7 +56,8 @@ bool offerRecovery(MainWindow *window)
         const auto edits = AutoSave::load(session);
         if (!edits) {
             const auto answer = QMessageBox::warning(window, MainWindow::tr("Recover Unsaved Edits"),
-                MainWindow::tr("A copy of unsaved edits cannot be read: %1\nDiscard it?").arg(edits.error().text()),
+                MainWindow::tr("A copy of unsaved edits cannot be read: %1\nDiscard it?")
+                    .arg(edits.error().text()),
                 QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Ignore);
             if (answer == QMessageBox::Discard)
                 AutoSave::discard(session);
@@ -69,8 +72,8 @@ bool offerRecovery(MainWindow *window)
         case Choice::Recover:
             break;
         }
-        const QString notice = window->document()->recoverEdits(
-            edits.value(), session.originalPath, session.originalFormat);
+        const QString notice
+            = window->document()->recoverEdits(edits.value(), session.originalPath, session.originalFormat);
         // The old copy goes only once this session's own copy holds the edits.
         if (autoSave->saveNow())
             AutoSave::discard(session);

@@ -5,8 +5,8 @@
 // somewhere real (finite), and the offset table holds only values a controller accepts.
 #include <cmath>
 
-#include "fuzzcheck.h"
 #include "emulator/gcodeinterpreter.h"
+#include "fuzzcheck.h"
 
 using namespace Toffee;
 
@@ -51,7 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (const auto &[number, entry] : interpreter.offsets()) {
         TOFFEE_FUZZ_CHECK(number >= 1 && number <= 999, QString::number(number));
         TOFFEE_FUZZ_CHECK(std::fabs(entry.lengthGeometry) <= 999.999 + 1e-9
-                && std::fabs(entry.radiusGeometry) <= 999.999 + 1e-9 && std::fabs(entry.lengthWear) <= 99.999 + 1e-9
+                && std::fabs(entry.radiusGeometry) <= 999.999 + 1e-9
+                && std::fabs(entry.lengthWear) <= 99.999 + 1e-9
                 && std::fabs(entry.radiusWear) <= 99.999 + 1e-9,
             QString::fromUtf8(program));
     }

@@ -24,5 +24,5 @@ inline QByteArrayView bytes(const uint8_t *data, size_t size)
 
 } // namespace Toffee::Fuzz
 
-#define TOFFEE_FUZZ_CHECK(condition, detail)                                                               \
+#define TOFFEE_FUZZ_CHECK(condition, detail)                                                                 \
     ((condition) ? void() : ::Toffee::Fuzz::fail(#condition, (detail), __FILE__, __LINE__))

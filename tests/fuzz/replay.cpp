@@ -35,7 +35,8 @@ int main(int argc, char **argv)
     std::sort(files.begin(), files.end());
     for (const fs::path &path : files) {
         std::ifstream in(path, std::ios::binary);
-        const std::vector<char> bytes { std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
+        const std::vector<char> bytes { std::istreambuf_iterator<char>(in),
+            std::istreambuf_iterator<char>() };
         std::fprintf(stderr, "%s\n", path.c_str()); // the input a failure below belongs to
         LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t *>(bytes.data()), bytes.size());
     }

@@ -295,8 +295,8 @@ private Q_SLOTS:
         QTest::addColumn<QString>("error");
         const QByteArray huge(308, '9'); // about 1e308: a finite double, twice of it is not
         const auto F = Dialect::Fanuc, G = Dialect::Fagor8055M, L = Dialect::LinuxCnc, R = Dialect::Aerotech;
-        QTest::newRow("T beyond an int (found by fuzzing)") << int(L) << QByteArray("G0 X0\nT77777777772")
-                                                           << u"T77777777772 is too large"_s;
+        QTest::newRow("T beyond an int (found by fuzzing)")
+            << int(L) << QByteArray("G0 X0\nT77777777772") << u"T77777777772 is too large"_s;
         QTest::newRow("T beyond any tool") << int(L) << QByteArray("T1000000 M6") << u"from 0 to 999999"_s;
         QTest::newRow("T beyond any tool, in eight digits")
             << int(L) << QByteArray("T99999999") << u"T99999999 must be a whole number from 0 to 999999"_s;
@@ -306,13 +306,16 @@ private Q_SLOTS:
         QTest::newRow("G43.2 H not whole") << int(L) << QByteArray("G43.2 H1.25") << u"H1.25"_s;
         QTest::newRow("G10 L1 P beyond any tool")
             << int(L) << QByteArray("G10 L1 P9999999 Z1") << u"needs P, a tool number"_s;
-        QTest::newRow("FAGOR D beyond the offsets") << int(G) << QByteArray("G43 D1000") << u"from 0 to 999"_s;
+        QTest::newRow("FAGOR D beyond the offsets")
+            << int(G) << QByteArray("G43 D1000") << u"from 0 to 999"_s;
         QTest::newRow("FAGOR T beyond an int") << int(G) << QByteArray("T12345678.5") << u"T12345678.5"_s;
-        QTest::newRow("a word beyond eight digits") << int(F) << QByteArray("G0 X123456789") << u"too large"_s;
+        QTest::newRow("a word beyond eight digits")
+            << int(F) << QByteArray("G0 X123456789") << u"too large"_s;
         QTest::newRow("G91 towards infinity, at its first step")
             << int(F) << QByteArray("G91 G0 X" + huge) << u"too large"_s;
         QTest::newRow("Aerotech offset beyond eight digits")
-            << int(R) << QByteArray("G44 X Y\nCutterCompensationSetOffsets([1, 1000000000])") << u"too large"_s;
+            << int(R) << QByteArray("G44 X Y\nCutterCompensationSetOffsets([1, 1000000000])")
+            << u"too large"_s;
         QTest::newRow("a refused G10 creates no register")
             << int(F) << QByteArray("G10 L11 P5 R150") << u"PS0032"_s;
         QTest::newRow("a refused G91 G10 changes no register")

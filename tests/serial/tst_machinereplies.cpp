@@ -75,12 +75,13 @@ private Q_SLOTS:
             << QByteArray("<Idle|MPos:1,\xbf,3>") << false << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
         QTest::newRow("garbled T") << QByteArray("<Idle|MPos:1,2,3|T:x,1>") << false << QString() << 0.0
                                    << 0.0 << -1 << 0.0 << 0;
-        QTest::newRow("T999999, the last probe number") << QByteArray("<Idle|MPos:1,2,3|T:999999,0.5>") << true
-                                                        << u"Idle"_s << 3.0 << 0.0 << 999999 << 0.5 << 0;
-        QTest::newRow("T-1, the empty spindle") << QByteArray("<Idle|MPos:1,2,3|T:-1,0>") << true << u"Idle"_s
-                                                << 3.0 << 0.0 << -1 << 0.0 << 0;
-        QTest::newRow("T beyond any tool") << QByteArray("<Idle|MPos:1,2,3|T:1000000,0>") << false << QString()
-                                           << 0.0 << 0.0 << -1 << 0.0 << 0;
+        QTest::newRow("T999999, the last probe number")
+            << QByteArray("<Idle|MPos:1,2,3|T:999999,0.5>") << true << u"Idle"_s << 3.0 << 0.0 << 999999
+            << 0.5 << 0;
+        QTest::newRow("T-1, the empty spindle")
+            << QByteArray("<Idle|MPos:1,2,3|T:-1,0>") << true << u"Idle"_s << 3.0 << 0.0 << -1 << 0.0 << 0;
+        QTest::newRow("T beyond any tool") << QByteArray("<Idle|MPos:1,2,3|T:1000000,0>") << false
+                                           << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
         // Found by fuzz-replies: taken as an int, 19999999999 wrapped round to another tool's number.
         QTest::newRow("T wrapping an int") << QByteArray("<Idle|MPos:1,2,3|T:19999999999,0>") << false
                                            << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;

@@ -3,8 +3,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
-#include <QDir>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QFile>
 #include <QHeaderView>
 #include <QJsonDocument>
@@ -179,8 +179,9 @@ private Q_SLOTS:
         QVERIFY(saveTableFile(copy, edits, TableFormat::Json).ok());
         QFile info(recovery + u"/4242-dead.info"_s);
         QVERIFY(info.open(QIODevice::WriteOnly));
-        info.write(QJsonDocument(QJsonObject { { u"original_path"_s, table }, { u"original_format"_s, u"json"_s } })
-                       .toJson());
+        info.write(
+            QJsonDocument(QJsonObject { { u"original_path"_s, table }, { u"original_format"_s, u"json"_s } })
+                .toJson());
         info.close();
 
         QString text;
