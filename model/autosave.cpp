@@ -34,6 +34,16 @@ QString withSuffix(QString path, const QString &suffix)
     return path + suffix;
 }
 
+// Every file of session `id` but its lock: the copy, its .info, and any half-written temporary file QSaveFile
+// left as the process died.
+void removeSessionFiles(const QDir &dir, const QString &id)
+{
+    for (const QFileInfo &file : dir.entryInfoList({ id + u".*"_s }, QDir::Files)) {
+        if (file.suffix() != u"lock")
+            QFile::remove(file.filePath());
+    }
+}
+
 } // namespace
 
 AutoSave::AutoSave(ToolDocument *document, const QString &directory, QObject *parent)
@@ -121,6 +131,16 @@ QList<AutoSave::Session> AutoSave::findRecoverable(const QString &directory)
 {
     QList<Session> sessions;
     const QDir dir(directory);
+    // A session that died after taking its lock but before its first copy left a lock and perhaps an .info:
+    // nothing to offer, so they go.
+    for (const QFileInfo &lockInfo : dir.entryInfoList({ u"*.lock"_s }, QDir::Files)) {
+        const QString id = lockInfo.completeBaseName();
+        if (QFileInfo::exists(dir.filePath(id + u".json"_s)))
+            continue;
+        const auto lock = lockFile(lockInfo.filePath());
+        if (lock->tryLock(0))
+            removeSessionFiles(dir, id); // and the lock, as `lock` goes
+    }
     const QFileInfoList copies = dir.entryInfoList({ u"*.json"_s }, QDir::Files, QDir::Time);
     for (const QFileInfo &copy : copies) {
         std::shared_ptr<QLockFile> lock = lockFile(withSuffix(copy.filePath(), u".lock"_s));
@@ -149,13 +169,8 @@ Result<ToolTable> AutoSave::load(const Session &session)
 
 void AutoSave::discard(const Session &session)
 {
-    // The copy, its .info, and any half-written temporary file QSaveFile left as the process died.
     const QFileInfo copy(session.tablePath);
-    const QString prefix = copy.completeBaseName() + u'.';
-    for (const QFileInfo &file : copy.dir().entryInfoList({ prefix + u'*' }, QDir::Files)) {
-        if (file.suffix() != u"lock")
-            QFile::remove(file.filePath());
-    }
+    removeSessionFiles(copy.dir(), copy.completeBaseName());
     if (session.lock)
         session.lock->unlock(); // removes the lock file
 }

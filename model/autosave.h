@@ -53,7 +53,8 @@ public:
     // Writes the copy now (or removes it when there is nothing unsaved).
     Result<void> saveNow();
 
-    // The copies that processes which died left in `directory`, newest first, each claimed.
+    // The copies that processes which died left in `directory`, newest first, each claimed. What a process
+    // that died before its first copy left (a lock, an .info) is removed.
     [[nodiscard]] static QList<Session> findRecoverable(const QString &directory);
     [[nodiscard]] static Result<ToolTable> load(const Session &session);
     // Deletes a recovered or unwanted copy.

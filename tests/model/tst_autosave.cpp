@@ -126,6 +126,34 @@ private Q_SLOTS:
         QVERIFY(again.first().originalPath.isEmpty()); // no .info: a table never saved
     }
 
+    void sweepsWhatASessionLeftBeforeItsFirstCopy()
+    {
+        // Killed between taking its lock and writing its first copy: a lock (of a process now gone) and an
+        // .info. A living session in the same state keeps its files.
+        QDir().mkpath(recovery());
+        {
+            QLockFile dead(recovery() + u"/1-dead.lock"_s);
+            QVERIFY(dead.tryLock(0));
+            QFile lockFile(recovery() + u"/1-dead.lock"_s);
+            QVERIFY(lockFile.open(QIODevice::ReadOnly));
+            const QByteArray owner = lockFile.readAll().replace(
+                QByteArray::number(QCoreApplication::applicationPid()), "999999999"); // no such process
+            lockFile.close();
+            dead.unlock();
+            QVERIFY(lockFile.open(QIODevice::WriteOnly));
+            lockFile.write(owner);
+        }
+        QFile info(recovery() + u"/1-dead.info"_s);
+        QVERIFY(info.open(QIODevice::WriteOnly));
+        info.close();
+        QLockFile alive(recovery() + u"/2-alive.lock"_s);
+        alive.setStaleLockTime(0);
+        QVERIFY(alive.tryLock(0));
+
+        QVERIFY(AutoSave::findRecoverable(recovery()).isEmpty());
+        QCOMPARE(QDir(recovery()).entryList(QDir::Files), QStringList { u"2-alive.lock"_s });
+    }
+
     void reportsACopyItCannotWrite()
     {
         // The recovery folder's place is taken by a file: no copy can be written, and the window must hear.
