@@ -15,8 +15,7 @@ SerialPortTransport::SerialPortTransport(const QString &portName, int baud, QObj
 
 void SerialPortTransport::open()
 {
-    m_buffer.clear();
-    m_discarding = false;
+    m_lines.reset();
     m_port.setBaudRate(m_baud);
     m_port.setDataBits(QSerialPort::Data8);
     m_port.setParity(QSerialPort::NoParity);
@@ -65,25 +64,17 @@ QString SerialPortTransport::description() const
 
 void SerialPortTransport::readAvailable()
 {
-    m_buffer += m_port.readAll();
-    qsizetype start = 0;
-    for (qsizetype i = 0; i < m_buffer.size(); ++i) {
-        const char c = m_buffer.at(i);
-        if (c != '\n' && c != '\r')
-            continue;
-        if (!m_discarding && i > start)
-            Q_EMIT lineReceived(m_buffer.sliced(start, i - start));
-        m_discarding = false;
-        start = i + 1;
-    }
-    m_buffer.remove(0, start);
-    if (m_buffer.size() > kMaxLineBytes) {
-        // Not a controller's line: drop it rather than grow without bound, and say so once.
-        m_buffer.clear();
-        if (!m_discarding)
-            Q_EMIT errorOccurred(
-                tr("%1 sent a line longer than %2 bytes; it was dropped.").arg(m_name).arg(kMaxLineBytes));
-        m_discarding = true;
+    for (const LineAssembler::Line &line : m_lines.feed(m_port.readAll())) {
+        if (line.truncated) {
+            // Not a controller's line, but its start may still say what it is ("error:..."): keep that, drop
+            // the rest rather than grow without bound, and say so once for each such line.
+            Q_EMIT errorOccurred(tr("%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.")
+                                     .arg(m_name)
+                                     .arg(kMaxLineBytes));
+        }
+        Q_EMIT lineReceived(line.bytes);
+        if (!m_port.isOpen())
+            return; // a receiver closed the port
     }
 }
 

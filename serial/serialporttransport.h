@@ -3,6 +3,7 @@
 
 #include <QSerialPort>
 
+#include "lineassembler.h"
 #include "linetransport.h"
 
 namespace Toffee {
@@ -15,7 +16,7 @@ class SerialPortTransport final : public LineTransport
 
 public:
     static constexpr int kDefaultBaud = 115200;
-    static constexpr qsizetype kMaxLineBytes = 4096;
+    static constexpr qsizetype kMaxLineBytes = LineAssembler::kDefaultMaxLineBytes;
 
     explicit SerialPortTransport(const QString &portName, int baud = kDefaultBaud, QObject *parent = nullptr);
 
@@ -33,8 +34,7 @@ private:
     QSerialPort m_port;
     QString m_name; // as the user gave it: QSerialPort drops "/dev/"
     int m_baud;
-    QByteArray m_buffer;
-    bool m_discarding = false; // inside an over-long line, until its end
+    LineAssembler m_lines { kMaxLineBytes };
 };
 
 } // namespace Toffee
