@@ -5,12 +5,26 @@
 
 namespace Toffee {
 
+namespace {
+
+// A machine's words in a message for people: enough to recognise, never pages of it.
+QString excerpt(const QString &text)
+{
+    constexpr qsizetype kMaxChars = 200;
+    return text.size() <= kMaxChars ? text : text.first(kMaxChars) + u'\u2026';
+}
+
+} // namespace
+
 MachineLink::MachineLink(LineTransport *transport, QObject *parent)
     : QObject(parent)
     , m_transport(transport)
 {
+    // Precise: a coarse timer may fire up to 5 % early, and a limit is a promise to wait that long.
     m_timeout.setSingleShot(true);
+    m_timeout.setTimerType(Qt::PreciseTimer);
     m_grace.setSingleShot(true);
+    m_grace.setTimerType(Qt::PreciseTimer);
     m_poll.setInterval(kPollIntervalMs);
     connect(&m_timeout, &QTimer::timeout, this, [this] {
         if (!m_current)
@@ -19,16 +33,16 @@ MachineLink::MachineLink(LineTransport *transport, QObject *parent)
         const QString message
             = tr("The machine did not answer \"%1\" within %2 s. The link was closed, because a "
                  "late answer could be taken for the next command's. Reconnect, and check the "
-                 "machine before you go on.")
-                  .arg(command)
-                  .arg(m_timeout.interval() / 1000.0, 0, 'f', 1);
+                 "machine before you go on.%3")
+                  .arg(command, QString::number(m_timeout.interval() / 1000.0, 'f', 1), floodNote());
         complete(CommandReply::Status::Timeout, message);
         failAll(CommandReply::Status::Timeout, message);
         m_lastError = message;
         m_transport->close();
     });
-    connect(&m_grace, &QTimer::timeout, this,
-        [this] { complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm)); });
+    connect(&m_grace, &QTimer::timeout, this, [this] {
+        complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm) + floodNote());
+    });
     connect(&m_poll, &QTimer::timeout, this, &MachineLink::requestStatus);
     connect(m_transport, &LineTransport::lineReceived, this, &MachineLink::handleLine);
     connect(m_transport, &LineTransport::errorOccurred, this,
@@ -99,6 +113,7 @@ void MachineLink::startNext()
         return;
     m_current = m_queue.takeFirst();
     m_lines.clear();
+    m_droppedLines = 0;
     m_alarm.clear();
     m_timeout.start(m_timeoutOverride > 0 ? m_timeoutOverride : int(m_current->timeoutMs * m_timeoutScale));
     Q_EMIT lineSent(m_current->line);
@@ -127,21 +142,22 @@ void MachineLink::handleLine(const QByteArray &line)
         if (m_alarm.isEmpty())
             complete(CommandReply::Status::Ok, {});
         else
-            complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm));
+            complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm) + floodNote());
         break;
     case ReplyKind::Error:
         complete(CommandReply::Status::Refused,
-            tr("The machine refused \"%1\": %2").arg(QString::fromUtf8(m_current->line), replyMessage(line)));
+            tr("The machine refused \"%1\": %2")
+                .arg(QString::fromUtf8(m_current->line), excerpt(replyMessage(line))));
         break;
     case ReplyKind::Alarm:
     case ReplyKind::HaltError:
-        m_lines.append(line);
+        keep(line);
         if (m_alarm.isEmpty())
-            m_alarm = replyMessage(line);
+            m_alarm = excerpt(replyMessage(line));
         m_grace.start(int(kAlarmGraceMs * m_timeoutScale));
         break;
     default:
-        m_lines.append(line);
+        keep(line);
     }
 }
 
@@ -153,8 +169,9 @@ void MachineLink::complete(CommandReply::Status status, const QString &message)
     m_grace.stop();
     Pending done = std::move(*m_current);
     m_current.reset();
-    CommandReply reply { status, done.line, std::move(m_lines), message };
+    CommandReply reply { status, done.line, std::move(m_lines), message, m_droppedLines };
     m_lines.clear();
+    m_droppedLines = 0;
     m_alarm.clear();
     if (status != CommandReply::Status::Timeout && status != CommandReply::Status::LinkLost)
         QMetaObject::invokeMethod(this, &MachineLink::startNext, Qt::QueuedConnection);
@@ -178,10 +195,31 @@ void MachineLink::handleClosed()
     if (m_current) {
         complete(CommandReply::Status::LinkLost,
             tr("The connection to the machine was lost while it ran \"%1\": %2")
-                .arg(QString::fromUtf8(m_current->line), reason));
+                    .arg(QString::fromUtf8(m_current->line), reason)
+                + floodNote());
     }
     failAll(CommandReply::Status::LinkLost, tr("The connection to the machine was lost: %1").arg(reason));
     Q_EMIT closed(reason);
+}
+
+void MachineLink::keep(const QByteArray &line)
+{
+    if (m_lines.size() >= kMaxReplyLines) {
+        m_lines.removeFirst();
+        ++m_droppedLines;
+    }
+    m_lines.append(line);
+}
+
+QString MachineLink::floodNote() const
+{
+    if (m_droppedLines == 0)
+        return {};
+    return u' '
+        + tr("Meanwhile it printed %1 lines that were no answer; only the last %2 were kept. A machine that "
+             "prints that much is not well: check its firmware and the cable.")
+              .arg(m_droppedLines + m_lines.size())
+              .arg(m_lines.size());
 }
 
 } // namespace Toffee

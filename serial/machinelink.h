@@ -27,8 +27,9 @@ struct CommandReply
     };
     Status status = Status::Ok;
     QByteArray command;
-    QList<QByteArray> lines;
+    QList<QByteArray> lines; // the last MachineLink::kMaxReplyLines it printed
     QString message; // for an operator, on failure
+    qint64 droppedLines = 0; // printed before `lines`, and not kept
     [[nodiscard]] bool ok() const { return status == Status::Ok; }
 };
 
@@ -49,6 +50,9 @@ public:
     static constexpr int kPollIntervalMs = 200;
     static constexpr int kAlarmGraceMs
         = 1000; // after an ALARM, how long to wait for the command's terminator
+    // What a command's reply keeps: the results (probe, offsets, break test) come just before "ok", so a
+    // tail is enough, and a machine that floods the link cannot grow memory without bound.
+    static constexpr qsizetype kMaxReplyLines = 256;
 
     explicit MachineLink(LineTransport *transport, QObject *parent = nullptr);
 
@@ -65,6 +69,7 @@ public:
     void setTimeoutScale(double scale) { m_timeoutScale = scale; }
     // Gives up on any command after `ms` whatever its own limit (0: each command's own limit).
     void setTimeoutOverride(int ms) { m_timeoutOverride = ms; }
+    [[nodiscard]] int timeoutOverride() const { return m_timeoutOverride; }
 
     [[nodiscard]] const std::optional<MachineStatus> &lastStatus() const { return m_status; }
     // Milliseconds since the last good status report, or -1 when there has been none.
@@ -96,11 +101,14 @@ private:
     void complete(CommandReply::Status status, const QString &message);
     void failAll(CommandReply::Status status, const QString &message);
     void handleClosed();
+    void keep(const QByteArray &line);
+    [[nodiscard]] QString floodNote() const;
 
     LineTransport *m_transport;
     QList<Pending> m_queue;
     std::optional<Pending> m_current;
     QList<QByteArray> m_lines;
+    qint64 m_droppedLines = 0;
     QString m_alarm;
     QString m_lastError;
     QTimer m_timeout;

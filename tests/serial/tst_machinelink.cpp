@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -165,6 +166,81 @@ private Q_SLOTS:
         QTRY_VERIFY(reply.has_value());
         QCOMPARE(reply->status, CommandReply::Status::LinkLost);
         QVERIFY(transport.written.isEmpty());
+    }
+
+    // A limit is a promise to wait that long: a coarse timer fires up to 5 % early.
+    void aTimedOutCommandNeverEndsBeforeItsLimit()
+    {
+        constexpr int kLinks = 16;
+        std::vector<std::unique_ptr<Fixture>> fixtures;
+        QList<int> limits;
+        QList<qint64> endedAfter(kLinks, -1);
+        for (int i = 0; i < kLinks; ++i) {
+            fixtures.push_back(std::make_unique<Fixture>());
+            limits.append(900 + 61 * i); // limits a coarse timer would round to its own boundaries
+            auto clock = std::make_shared<QElapsedTimer>();
+            clock->start();
+            fixtures.back()->link.send("G4 P100", limits.last(),
+                [&endedAfter, clock, i](const CommandReply &) { endedAfter[i] = clock->elapsed(); });
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(!endedAfter.contains(-1), 10000);
+        for (int i = 0; i < kLinks; ++i) {
+            QCOMPARE(fixtures.at(i)->replies.size(), 0);
+            QVERIFY2(endedAfter.at(i) >= limits.at(i),
+                qPrintable(u"a %1 ms limit ended after %2 ms"_s.arg(limits.at(i)).arg(endedAfter.at(i))));
+        }
+    }
+
+    // A machine that prints without end while a command runs: the reply keeps the last lines, and counts
+    // the rest.
+    void aReplyKeepsABoundedTail()
+    {
+        Fixture f;
+        f.send("M491", 60000);
+        constexpr int kFlood = 100000;
+        for (int i = 0; i < kFlood; ++i)
+            f.transport.reply("noise " + QByteArray::number(i));
+        f.transport.reply("[PRB:-88.000,-9.000,-105.688:1]");
+        f.transport.reply("ok");
+        QCOMPARE(f.replies.size(), 1);
+        const CommandReply &reply = f.replies.front();
+        QVERIFY(reply.ok());
+        QCOMPARE(reply.lines.size(), MachineLink::kMaxReplyLines);
+        QCOMPARE(reply.droppedLines, kFlood + 1 - MachineLink::kMaxReplyLines);
+        QCOMPARE(reply.lines.last(), QByteArray("[PRB:-88.000,-9.000,-105.688:1]"));
+        QCOMPARE(
+            reply.lines.first(), "noise " + QByteArray::number(kFlood + 1 - MachineLink::kMaxReplyLines));
+
+        f.send("M493.4"); // the next command starts from nothing
+        f.transport.reply("current tool offset [1] , reference tool offset [0]");
+        f.transport.reply("ok");
+        QTRY_COMPARE(f.replies.size(), 2);
+        QCOMPARE(f.replies.at(1).lines.size(), 1);
+        QCOMPARE(f.replies.at(1).droppedLines, 0);
+    }
+
+    void aFloodIsCountedInTheTimeoutMessage()
+    {
+        Fixture f;
+        f.send("M491", 200);
+        for (int i = 0; i < 1000; ++i)
+            f.transport.reply("noise");
+        QTRY_COMPARE_WITH_TIMEOUT(f.replies.size(), 1, 3000);
+        QCOMPARE(f.replies.front().status, CommandReply::Status::Timeout);
+        QVERIFY2(f.replies.front().message.contains(u"printed 1000 lines"_s),
+            qPrintable(f.replies.front().message));
+        QVERIFY(f.replies.front().message.contains(u"last 256"_s));
+    }
+
+    // 100 KB of "error:" text is a refusal; the message quotes the start of it, not all of it.
+    void aLongRefusalIsQuotedShort()
+    {
+        Fixture f;
+        f.send("M493.4");
+        f.transport.reply("error:" + QByteArray(4090, 'e'));
+        QCOMPARE(f.replies.size(), 1);
+        QCOMPARE(f.replies.front().status, CommandReply::Status::Refused);
+        QVERIFY(f.replies.front().message.size() < 300);
     }
 
     void pollsTheStatusAsRealtimeTraffic()
