@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "machinereplies.h"
 
+#include <cmath>
 #include <limits>
 
 #include <QCoreApplication>
@@ -49,6 +50,11 @@ std::optional<double> bracketed(QByteArrayView line, qsizetype &from)
         return std::nullopt;
     from = close + 1;
     return parseDecimal(line.sliced(open + 1, close - open - 1).trimmed());
+}
+
+bool plausible(double millimetres)
+{
+    return std::isfinite(millimetres) && std::fabs(millimetres) <= kMaxMachineMillimetres;
 }
 
 } // namespace
@@ -127,6 +133,11 @@ std::optional<MachineStatus> parseStatusReport(QByteArrayView line)
     return status;
 }
 
+bool looksLikeTloReport(QByteArrayView line)
+{
+    return line.trimmed().startsWith("current tool offset [");
+}
+
 std::optional<TloReading> parseTloReport(QByteArrayView line)
 {
     line = line.trimmed();
@@ -137,7 +148,10 @@ std::optional<TloReading> parseTloReport(QByteArrayView line)
     const auto reference = bracketed(line, from);
     if (!current || !reference || from != line.size())
         return std::nullopt;
-    return TloReading { *current, *reference };
+    const TloReading reading { *current, *reference };
+    if (!plausible(reading.currentMz) || !plausible(reading.referenceMz) || !std::isfinite(reading.tlo()))
+        return std::nullopt;
+    return reading;
 }
 
 std::optional<ProbeResult> parseProbeResult(QByteArrayView line)
@@ -172,7 +186,7 @@ std::optional<BreakTestReading> parseBreakTest(QByteArrayView line)
         return std::nullopt;
     const auto oldTlo = parseDecimal(line.sliced(4, comma - 4).trimmed());
     const auto newTlo = parseDecimal(rest.sliced(4).trimmed());
-    if (!oldTlo || !newTlo)
+    if (!oldTlo || !newTlo || !plausible(*oldTlo) || !plausible(*newTlo))
         return std::nullopt;
     return BreakTestReading { *oldTlo, *newTlo };
 }

@@ -45,6 +45,9 @@ struct BreakTestReading
     double newTlo = 0.0;
 };
 
+// No machine coordinate, offset or length is this large (in mm); a reply that says otherwise is garbled.
+constexpr double kMaxMachineMillimetres = 100000.0;
+
 // What kind of line the controller sent.
 enum class ReplyKind {
     Ok, // exactly "ok"
@@ -60,8 +63,12 @@ enum class ReplyKind {
 [[nodiscard]] QString replyMessage(QByteArrayView line);
 
 [[nodiscard]] std::optional<MachineStatus> parseStatusReport(QByteArrayView line);
+// Refuses values beyond kMaxMachineMillimetres, as no machine has them.
 [[nodiscard]] std::optional<TloReading> parseTloReport(QByteArrayView line);
+// Whether `line` is an offset report at all, readable or not.
+[[nodiscard]] bool looksLikeTloReport(QByteArrayView line);
 [[nodiscard]] std::optional<ProbeResult> parseProbeResult(QByteArrayView line);
+// Refuses values beyond kMaxMachineMillimetres, like parseTloReport.
 [[nodiscard]] std::optional<BreakTestReading> parseBreakTest(QByteArrayView line);
 
 // "PROBE_FAIL (3)" for an operator; the firmware's halt reasons 1-16, 21-26 and 41.

@@ -140,6 +140,15 @@ private Q_SLOTS:
             << QByteArray("current tool offset [1] , reference tool offset [2] extra") << false << 0.0;
         QTest::newRow("missing bracket")
             << QByteArray("current tool offset [1 , reference tool offset [2]") << false << 0.0;
+        // Values no machine can have: a difference of infinity would print as "TLO inf mm".
+        QTest::newRow("1e308 apart") << QByteArray(
+            "current tool offset [1e308] , reference tool offset [-1e308]")
+                                     << false << 0.0;
+        QTest::newRow("beyond 100 m")
+            << QByteArray("current tool offset [100000.001] , reference tool offset [0]") << false << 0.0;
+        QTest::newRow("at 100 m") << QByteArray(
+            "current tool offset [100000] , reference tool offset [-100000]")
+                                  << true << 200000.0;
     }
     void parsesTheTloReport()
     {
@@ -193,6 +202,7 @@ private Q_SLOTS:
         QTest::newRow("garbled") << QByteArray("Old: -\xbf.388 , new: -33.390") << false << 0.0 << 0.0;
         QTest::newRow("other line") << QByteArray("No previous TLO included, aborting") << false << 0.0
                                     << 0.0;
+        QTest::newRow("1e308") << QByteArray("Old: 1e308 , new: -1e308") << false << 0.0 << 0.0;
     }
     void parsesTheBreakTest()
     {
