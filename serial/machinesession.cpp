@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <QDateTime>
+#include <QPointer>
 #include <QTimer>
 
 #include "linetransport.h"
@@ -18,6 +19,37 @@ namespace {
 QString text(const QByteArray &line)
 {
     return QString::fromUtf8(line);
+}
+
+// A machine's line in a message for people: enough to recognise, never pages of it.
+QString excerpt(const QByteArray &line)
+{
+    constexpr qsizetype kMaxBytes = 200;
+    return line.size() <= kMaxBytes ? text(line) : text(line.first(kMaxBytes)) + u'\u2026';
+}
+
+// Why a result may be missing from a reply: the machine printed more than a reply keeps.
+QString floodNote(const CommandReply &reply)
+{
+    if (reply.droppedLines == 0)
+        return {};
+    return u' '
+        + MachineSession::tr(
+            "The machine printed %1 lines before its answer; only the last %2 were kept, and "
+            "the result may have been among the others.")
+              .arg(reply.droppedLines + reply.lines.size())
+              .arg(reply.lines.size());
+}
+
+// Running a command of its own: a late answer to it could be taken for one of ours.
+bool isBusyState(const QString &state)
+{
+    return state == u"Run" || state == u"Home" || state == u"Tool";
+}
+
+QString seconds(qint64 ms)
+{
+    return QString::number(double(ms) / 1000.0, 'f', ms % 1000 == 0 ? 0 : 1);
 }
 
 } // namespace
@@ -110,6 +142,7 @@ void MachineSession::awaitStatus(int timeoutMs, std::function<void(std::optional
 {
     auto *timer = new QTimer(this);
     timer->setSingleShot(true);
+    timer->setTimerType(Qt::PreciseTimer);
     auto connection = std::make_shared<QMetaObject::Connection>();
     auto finish = [timer, connection, next](std::optional<MachineStatus> status) {
         QObject::disconnect(*connection);
@@ -128,8 +161,7 @@ void MachineSession::awaitIdle(qint64 deadlineMs, std::function<void(bool, const
 {
     awaitStatus(2000, [this, deadlineMs, next](std::optional<MachineStatus> status) {
         const QString state = status ? status->state : QString();
-        const bool busy = state == u"Run" || state == u"Home" || state == u"Tool";
-        if (!busy) {
+        if (!isBusyState(state)) {
             QTimer::singleShot(150, this, [next, state] { next(true, state); });
             return;
         }
@@ -144,46 +176,46 @@ void MachineSession::awaitIdle(qint64 deadlineMs, std::function<void(bool, const
 
 void MachineSession::connectToMachine(Done done)
 {
-    auto afterOpen = [this, done] {
-        awaitIdle(QDateTime::currentMSecsSinceEpoch() + MachineLink::kMotionTimeoutMs + 10000,
-            [this, done](bool idle, const QString &state) {
-                if (!idle) {
-                    SessionResult result;
-                    result.outcome = SessionResult::Outcome::LinkFailure;
-                    result.message = tr("The machine stayed busy (%1) too long to connect. Wait for it to "
-                                        "finish, or stop it, "
-                                        "then connect again.")
-                                         .arg(state);
-                    done(result);
-                    return;
-                }
-                // The controller app sends "\n;\n" on opening to flush whatever the machine had
-                // half-received.
-                run("", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
-                    run(";", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
-                        awaitStatus(2000, [this, done](std::optional<MachineStatus> status) {
-                            if (!status) {
-                                SessionResult result;
-                                result.outcome = SessionResult::Outcome::LinkFailure;
-                                result.message = tr(
-                                    "The machine answered but sent no status report; is this a Carvera?");
-                                done(result);
-                                return;
-                            }
+    // With a time limit set (toffee-cli --timeout), the whole connect obeys it, waiting for a busy machine
+    // included; without one, a running probe is given the time a probe may take.
+    const int limitMs = m_link->timeoutOverride();
+    if (limitMs > 0)
+        done = withDeadline(limitMs, std::move(done));
+    const qint64 idleWaitMs = limitMs > 0 ? limitMs : MachineLink::kMotionTimeoutMs + 10000;
+    const qint64 idleDeadline = QDateTime::currentMSecsSinceEpoch() + idleWaitMs;
+    auto afterOpen = [this, done, idleDeadline, idleWaitMs] {
+        awaitIdle(idleDeadline, [this, done, idleWaitMs](bool idle, const QString &state) {
+            if (!idle) {
+                done(stayedBusy(state, idleWaitMs));
+                return;
+            }
+            // The controller app sends "\n;\n" on opening to flush whatever the machine had
+            // half-received.
+            run("", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
+                run(";", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
+                    awaitStatus(2000, [this, done](std::optional<MachineStatus> status) {
+                        if (!status) {
                             SessionResult result;
-                            result.status = status;
-                            result.tool = status->tool;
-                            if (status->isAlarm()) {
-                                // Reachable while halted, so that it can be unlocked; M493.4 would get "Alarm
-                                // lock".
-                                done(result);
-                                return;
-                            }
-                            readOffsets(done, result);
-                        });
+                            result.outcome = SessionResult::Outcome::LinkFailure;
+                            result.message
+                                = tr("The machine answered but sent no status report; is this a Carvera?");
+                            done(result);
+                            return;
+                        }
+                        SessionResult result;
+                        result.status = status;
+                        result.tool = status->tool;
+                        if (status->isAlarm()) {
+                            // Reachable while halted, so that it can be unlocked; M493.4 would get "Alarm
+                            // lock".
+                            done(result);
+                            return;
+                        }
+                        readOffsets(done, result);
                     });
                 });
             });
+        });
     };
     if (m_link->isOpen()) {
         afterOpen();
@@ -212,8 +244,53 @@ void MachineSession::connectToMachine(Done done)
     };
     *failed = connect(m_link->transport(), &LineTransport::errorOccurred, guard, fail);
     connect(guard, &QTimer::timeout, guard, [fail] { fail(tr("The port did not open within 5 s.")); });
+    guard->setTimerType(Qt::PreciseTimer);
     guard->start(5000);
     m_link->open();
+}
+
+MachineSession::Done MachineSession::withDeadline(int limitMs, Done done)
+{
+    auto finished = std::make_shared<bool>(false);
+    QPointer<QTimer> timer = new QTimer(this);
+    timer->setSingleShot(true);
+    timer->setTimerType(Qt::PreciseTimer);
+    Done once = [finished, timer, done](const SessionResult &result) {
+        if (std::exchange(*finished, true))
+            return;
+        if (timer) {
+            timer->stop();
+            timer->deleteLater();
+        }
+        done(result);
+    };
+    connect(timer, &QTimer::timeout, this, [this, once, limitMs] {
+        const std::optional<MachineStatus> &status = m_link->lastStatus();
+        SessionResult late;
+        if (status && isBusyState(status->state)) {
+            late = stayedBusy(status->state, limitMs);
+        } else {
+            late.outcome = SessionResult::Outcome::LinkFailure;
+            late.message = tr("The machine did not finish connecting within the %1 s allowed: it answered "
+                              "too slowly, or not at all. Check that it is on and the cable, then connect "
+                              "again (or allow longer).")
+                               .arg(seconds(limitMs));
+        }
+        once(late);
+        m_link->close(); // whatever is still in flight could be answered late, and mismatched
+    });
+    timer->start(limitMs);
+    return once;
+}
+
+SessionResult MachineSession::stayedBusy(const QString &state, qint64 waitedMs)
+{
+    SessionResult result;
+    result.outcome = SessionResult::Outcome::LinkFailure;
+    result.message = tr("The machine stayed busy (%1) for the %2 s allowed for connecting. Wait for it to "
+                        "finish, or stop it, then connect again.")
+                         .arg(state, seconds(waitedMs));
+    return result;
 }
 
 void MachineSession::readOffsets(Done done, SessionResult result)
@@ -230,10 +307,20 @@ void MachineSession::readOffsets(Done done, SessionResult result)
             }
             SessionResult bad;
             bad.outcome = SessionResult::Outcome::MachineError;
-            bad.message
-                = tr("The machine's offset report (M493.4) could not be read%1. Nothing was recorded; try "
-                     "again, and check the cable if it happens twice.")
-                      .arg(reply.lines.isEmpty() ? QString() : u": \""_s + text(reply.lines.front()) + u'"');
+            const auto report = std::find_if(reply.lines.cbegin(), reply.lines.cend(), looksLikeTloReport);
+            if (report != reply.lines.cend()) {
+                bad.message = tr("The machine's offset report (M493.4) holds values no machine can have: "
+                                 "\"%1\". Nothing was recorded; check the offsets on the machine before "
+                                 "you cut.")
+                                  .arg(excerpt(*report));
+            } else {
+                bad.message
+                    = tr("The machine's offset report (M493.4) could not be read%1. Nothing was "
+                         "recorded; try again, and check the cable if it happens twice.")
+                          .arg(reply.lines.isEmpty() ? QString()
+                                                     : u": \""_s + excerpt(reply.lines.front()) + u'"')
+                    + floodNote(reply);
+            }
             done(bad);
         });
 }
@@ -267,7 +354,8 @@ void MachineSession::probe(Done done)
             SessionResult bad;
             bad.outcome = SessionResult::Outcome::MachineError;
             bad.message = tr("The machine finished probing but its probe result ([PRB:…]) could not be read. "
-                             "Nothing was recorded; check the offsets (Report) before you cut.");
+                             "Nothing was recorded; check the offsets (Report) before you cut.")
+                + floodNote(reply);
             done(bad);
             return;
         }
@@ -321,7 +409,8 @@ void MachineSession::breakTest(double tolerance, Done done)
             result.outcome = SessionResult::Outcome::MachineError;
             result.message
                 = tr("The break test ran but its result (\"Old: … , new: …\") could not be read. Run it "
-                     "again before you trust the tool.");
+                     "again before you trust the tool.")
+                + floodNote(reply);
         } else if (std::fabs(reading->newTlo - reading->oldTlo) > tolerance) {
             // The firmware should have halted; do not call this tool good on our side either.
             result.outcome = SessionResult::Outcome::ToolBroken;
@@ -418,7 +507,8 @@ void MachineSession::changeTool(int tool, Done done)
                 bad.message
                     = tr("T%1 is in the spindle, but its probe result ([PRB:…]) could not be read. Nothing "
                          "was recorded; probe the tool again.")
-                          .arg(tool);
+                          .arg(tool)
+                    + floodNote(reply);
                 done(bad);
                 return;
             }

@@ -83,6 +83,10 @@ private:
     // otherwise be taken for the next command's), then lets stray output settle. `next` gets false on
     // give-up.
     void awaitIdle(qint64 deadlineMs, std::function<void(bool idle, const QString &state)> next);
+    // `done`, called once: by the operation, or with a failure when `limitMs` have passed (the link is then
+    // closed).
+    [[nodiscard]] Done withDeadline(int limitMs, Done done);
+    [[nodiscard]] static SessionResult stayedBusy(const QString &state, qint64 waitedMs);
     static void refuse(Done done, const QString &message);
     static SessionResult failure(const CommandReply &reply);
     static QByteArray number(double value);

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <limits>
 
+#include <QElapsedTimer>
 #include <QTest>
 
 #include "sessionharness.h"
@@ -183,6 +184,38 @@ private Q_SLOTS:
         QCOMPARE(result->outcome, Outcome::MachineError);
         QVERIFY2(result->message.contains(u"Abort during cycle"_s), qPrintable(result->message));
         QVERIFY(h.emulator.isHalted());
+    }
+
+    // With a time limit (toffee-cli --timeout), connecting to a machine that stays busy ends at the limit,
+    // not after the 130 s a probe may take.
+    void connectingToABusyMachineObeysTheTimeLimit()
+    {
+        SessionHarness h;
+        h.emulator.setTiming({ 0, 600000 });
+        h.emulator.receiveLine("G0 X1"); // running for ten minutes
+        h.link.setTimeoutOverride(500);
+        QElapsedTimer clock;
+        clock.start();
+        const SessionResult r = h.connect();
+        QCOMPARE(r.outcome, Outcome::LinkFailure);
+        QVERIFY2(r.message.contains(u"stayed busy (Run) for the 0.5 s allowed"_s), qPrintable(r.message));
+        QVERIFY2(
+            clock.elapsed() >= 500 && clock.elapsed() < 3000, qPrintable(QString::number(clock.elapsed())));
+    }
+
+    void connectingToASilentMachineObeysTheTimeLimit()
+    {
+        SessionHarness h;
+        h.emulator.injectFault(CarveraEmulator::Fault::NoAnswer);
+        h.link.setTimeoutOverride(400);
+        QElapsedTimer clock;
+        clock.start();
+        const SessionResult r = h.connect();
+        QCOMPARE(r.outcome, Outcome::LinkFailure);
+        QVERIFY2(r.message.contains(u"within the 0.4 s allowed"_s), qPrintable(r.message));
+        QVERIFY2(
+            clock.elapsed() >= 400 && clock.elapsed() < 3000, qPrintable(QString::number(clock.elapsed())));
+        QVERIFY(!h.link.isOpen()); // a late answer can no longer be taken for another command's
     }
 };
 
