@@ -78,6 +78,11 @@ public:
         return m_statusClock.isValid() ? m_statusClock.elapsed() : -1;
     }
     [[nodiscard]] bool isBusy() const { return m_current.has_value() || !m_queue.isEmpty(); }
+    // The command waiting for its answer, if any.
+    [[nodiscard]] std::optional<QByteArray> currentCommand() const
+    {
+        return m_current ? std::optional(m_current->line) : std::nullopt;
+    }
 
 Q_SIGNALS:
     void opened();

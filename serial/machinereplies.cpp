@@ -133,12 +133,10 @@ std::optional<MachineStatus> parseStatusReport(QByteArrayView line)
     return status;
 }
 
-bool looksLikeTloReport(QByteArrayView line)
-{
-    return line.trimmed().startsWith("current tool offset [");
-}
+namespace {
 
-std::optional<TloReading> parseTloReport(QByteArrayView line)
+// The report's two numbers, whatever their size.
+std::optional<TloReading> readTloReport(QByteArrayView line)
 {
     line = line.trimmed();
     if (!line.startsWith("current tool offset [") || !line.contains("] , reference tool offset ["))
@@ -148,10 +146,28 @@ std::optional<TloReading> parseTloReport(QByteArrayView line)
     const auto reference = bracketed(line, from);
     if (!current || !reference || from != line.size())
         return std::nullopt;
-    const TloReading reading { *current, *reference };
-    if (!plausible(reading.currentMz) || !plausible(reading.referenceMz) || !std::isfinite(reading.tlo()))
+    return TloReading { *current, *reference };
+}
+
+bool plausible(const TloReading &reading)
+{
+    return plausible(reading.currentMz) && plausible(reading.referenceMz) && std::isfinite(reading.tlo());
+}
+
+} // namespace
+
+std::optional<TloReading> parseTloReport(QByteArrayView line)
+{
+    const auto reading = readTloReport(line);
+    if (!reading || !plausible(*reading))
         return std::nullopt;
     return reading;
+}
+
+bool isImplausibleTloReport(QByteArrayView line)
+{
+    const auto reading = readTloReport(line);
+    return reading && !plausible(*reading);
 }
 
 std::optional<ProbeResult> parseProbeResult(QByteArrayView line)

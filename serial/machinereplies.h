@@ -65,8 +65,8 @@ enum class ReplyKind {
 [[nodiscard]] std::optional<MachineStatus> parseStatusReport(QByteArrayView line);
 // Refuses values beyond kMaxMachineMillimetres, as no machine has them.
 [[nodiscard]] std::optional<TloReading> parseTloReport(QByteArrayView line);
-// Whether `line` is an offset report at all, readable or not.
-[[nodiscard]] bool looksLikeTloReport(QByteArrayView line);
+// Whether `line` is a well-formed offset report whose values no machine can have.
+[[nodiscard]] bool isImplausibleTloReport(QByteArrayView line);
 [[nodiscard]] std::optional<ProbeResult> parseProbeResult(QByteArrayView line);
 // Refuses values beyond kMaxMachineMillimetres, like parseTloReport.
 [[nodiscard]] std::optional<BreakTestReading> parseBreakTest(QByteArrayView line);

@@ -269,6 +269,12 @@ MachineSession::Done MachineSession::withDeadline(int limitMs, Done done)
         SessionResult late;
         if (status && isBusyState(status->state)) {
             late = stayedBusy(status->state, limitMs);
+        } else if (const auto command = m_link->currentCommand(); command && command->size() > 1) {
+            // (not the opening flush, "" or ";", which would say nothing to an operator)
+            late.outcome = SessionResult::Outcome::LinkFailure;
+            late.message = tr("The machine did not answer \"%1\" within the %2 s allowed for connecting. "
+                              "Check that it is on and the cable, then connect again (or allow longer).")
+                               .arg(text(*command), seconds(limitMs));
         } else {
             late.outcome = SessionResult::Outcome::LinkFailure;
             late.message = tr("The machine did not finish connecting within the %1 s allowed: it answered "
@@ -307,7 +313,8 @@ void MachineSession::readOffsets(Done done, SessionResult result)
             }
             SessionResult bad;
             bad.outcome = SessionResult::Outcome::MachineError;
-            const auto report = std::find_if(reply.lines.cbegin(), reply.lines.cend(), looksLikeTloReport);
+            const auto report
+                = std::find_if(reply.lines.cbegin(), reply.lines.cend(), isImplausibleTloReport);
             if (report != reply.lines.cend()) {
                 bad.message = tr("The machine's offset report (M493.4) holds values no machine can have: "
                                  "\"%1\". Nothing was recorded; check the offsets on the machine before "
