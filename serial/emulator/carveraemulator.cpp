@@ -54,6 +54,18 @@ struct Words
     }
 };
 
+// A command quoted back in a reply: printable ASCII only, and short enough that the reply is one line a
+// link takes whole.
+QByteArray quoted(const QByteArray &line)
+{
+    QByteArray out = line.left(CarveraEmulator::kMaxLineBytes / 2);
+    for (char &c : out) {
+        if (c < 0x20 || c > 0x7e)
+            c = '?';
+    }
+    return out;
+}
+
 } // namespace
 
 CarveraEmulator::CarveraEmulator(QObject *parent)
@@ -138,6 +150,21 @@ void CarveraEmulator::receiveRealtime(char c)
         break;
     default:
         break;
+    }
+}
+
+void CarveraEmulator::receiveBytes(QByteArrayView bytes)
+{
+    for (char c : bytes) {
+        if (c == '?' || c == 0x18) {
+            receiveRealtime(c);
+        } else if ((c == '!' || c == '~') && m_input.isEmpty()) {
+            receiveRealtime(c);
+        } else if (c == '\n' || c == '\r') {
+            receiveLine(std::exchange(m_input, {}));
+        } else if (m_input.size() < kMaxLineBytes) {
+            m_input += c;
+        }
     }
 }
 
@@ -253,7 +280,7 @@ void CarveraEmulator::execute(const QByteArray &line)
         return;
     }
     auto refuse = [this, &line](const QByteArray &why) {
-        say(why.isEmpty() ? "error:Unsupported command - " + line : why);
+        say(why.isEmpty() ? "error:Unsupported command - " + quoted(line) : why);
         m_dropOk = m_garble = false;
         m_busy = false;
         QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);

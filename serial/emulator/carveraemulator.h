@@ -46,6 +46,7 @@ public:
     static constexpr double kNoseTriggerZ = -150.0;
     static constexpr double kZTravelLimit = -145.0; // the probe gives up here
     static constexpr double kClearanceZ = -10.0;
+    static constexpr qsizetype kMaxLineBytes = 4096;
 
     explicit CarveraEmulator(QObject *parent = nullptr);
 
@@ -67,7 +68,15 @@ public:
     [[nodiscard]] double tlo() const { return m_curMz - m_refMz; }
     [[nodiscard]] QByteArray statusReport() const;
 
+    // Whether a command is running or waiting.
+    [[nodiscard]] bool isBusy() const { return m_busy || !m_queue.isEmpty(); }
+
 public Q_SLOTS:
+    // Bytes as they come down the wire, split as the firmware splits them: '?' and Ctrl-X act at once, '!'
+    // and '~' at a line's start, '\r' ends a line like '\n', and a line stops growing at kMaxLineBytes.
+    void receiveBytes(QByteArrayView bytes);
+    // Forgets a half-received line (a new client).
+    void resetInput() { m_input.clear(); }
     // One command line, without its line end.
     void receiveLine(const QByteArray &line);
     // A real-time character: '?' status, 0x18 abort, '!' hold, '~' resume.
@@ -101,6 +110,7 @@ private:
     QHash<int, double> m_lengths;
     QList<PendingFault> m_faults;
     QList<QByteArray> m_queue;
+    QByteArray m_input; // the line being received
     QTimer m_step; // the running command's next step, if it takes time
     std::function<void()> m_stepAction;
     bool m_busy = false;

@@ -55,49 +55,47 @@ bool PtyServer::start()
     ::fcntl(m_master, F_SETFL, ::fcntl(m_master, F_GETFL) | O_NONBLOCK);
     m_notifier = new QSocketNotifier(qintptr(m_master), QSocketNotifier::Read, this);
     connect(m_notifier, &QSocketNotifier::activated, this, &PtyServer::readMaster);
+    m_writable = new QSocketNotifier(qintptr(m_master), QSocketNotifier::Write, this);
+    m_writable->setEnabled(false);
+    connect(m_writable, &QSocketNotifier::activated, this, &PtyServer::flush);
     if (!m_linkPath.isEmpty()) {
         QFile::remove(m_linkPath);
         if (!QFile::link(m_devicePath, m_linkPath))
             m_error = tr("cannot make the link %1").arg(m_linkPath);
     }
-    m_line.clear();
+    m_out.clear();
+    m_emulator->resetInput();
     Q_EMIT deviceChanged(m_devicePath);
     return true;
 }
 
 void PtyServer::stop()
 {
-    delete m_notifier;
-    m_notifier = nullptr;
+    // Later: stop() may run inside one of their own signals (a "close link" fault while reading).
+    for (QSocketNotifier *notifier : { m_notifier, m_writable }) {
+        if (notifier) {
+            notifier->setEnabled(false);
+            notifier->deleteLater();
+        }
+    }
+    m_notifier = m_writable = nullptr;
     if (m_slave >= 0)
         ::close(m_slave);
     if (m_master >= 0)
         ::close(m_master);
     m_slave = m_master = -1;
+    m_out.clear();
 }
 
 void PtyServer::readMaster()
 {
+    const int master = m_master;
     char buffer[4096];
-    while (true) {
-        const ssize_t n = ::read(m_master, buffer, sizeof buffer);
+    while (m_master == master) {
+        const ssize_t n = ::read(master, buffer, sizeof buffer);
         if (n <= 0)
             return;
-        for (ssize_t i = 0; i < n; ++i)
-            feed(buffer[i]);
-    }
-}
-
-void PtyServer::feed(char c)
-{
-    if (c == '?' || c == 0x18) {
-        m_emulator->receiveRealtime(c);
-    } else if ((c == '!' || c == '~') && m_line.isEmpty()) {
-        m_emulator->receiveRealtime(c);
-    } else if (c == '\n' || c == '\r') {
-        m_emulator->receiveLine(std::exchange(m_line, {}));
-    } else if (m_line.size() < 4096) {
-        m_line += c;
+        m_emulator->receiveBytes(QByteArrayView(buffer, n));
     }
 }
 
@@ -105,17 +103,30 @@ void PtyServer::send(const QByteArray &line)
 {
     if (m_master < 0)
         return;
-    const QByteArray bytes = line + "\r\n";
-    qsizetype written = 0;
-    while (written < bytes.size()) {
-        const ssize_t n = ::write(m_master, bytes.constData() + written, size_t(bytes.size() - written));
-        if (n <= 0) {
-            if (errno == EAGAIN || errno == EINTR)
-                continue;
-            return;
-        }
-        written += n;
+    if (m_out.size() + line.size() + 2 > kMaxPendingBytes) {
+        ++m_droppedLines; // the client has not read for a while: lose the line rather than wait or grow
+        return;
     }
+    m_out += line + "\r\n";
+    flush();
+}
+
+void PtyServer::flush()
+{
+    while (!m_out.isEmpty() && m_master >= 0) {
+        const ssize_t n = ::write(m_master, m_out.constData(), size_t(m_out.size()));
+        if (n > 0) {
+            m_out.remove(0, n);
+        } else if (n < 0 && errno == EINTR) {
+            continue;
+        } else if (n < 0 && errno == EAGAIN) {
+            break; // the terminal is full: the write notifier says when it has room again
+        } else {
+            m_out.clear(); // the terminal failed: nothing more gets through
+        }
+    }
+    if (m_writable)
+        m_writable->setEnabled(!m_out.isEmpty());
 }
 
 } // namespace Toffee

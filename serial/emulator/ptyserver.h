@@ -18,6 +18,9 @@ class PtyServer final : public QObject
     Q_DISABLE_COPY_MOVE(PtyServer)
 
 public:
+    // What waits for a client that does not read; beyond it, output is lost, as from a UART's overrun.
+    static constexpr qsizetype kMaxPendingBytes = 64 * 1024;
+
     PtyServer(CarveraEmulator *emulator, const QString &linkPath = {}, QObject *parent = nullptr);
     ~PtyServer() override;
 
@@ -25,6 +28,9 @@ public:
     bool start();
     [[nodiscard]] QString devicePath() const { return m_devicePath; }
     [[nodiscard]] QString errorString() const { return m_error; }
+    // Output waiting for the client to read, and the lines lost because it did not.
+    [[nodiscard]] qsizetype pendingBytes() const { return m_out.size(); }
+    [[nodiscard]] qint64 droppedLines() const { return m_droppedLines; }
 
 Q_SIGNALS:
     // A new terminal, after start() or after a hang-up.
@@ -32,8 +38,8 @@ Q_SIGNALS:
 
 private:
     void readMaster();
-    void feed(char c);
     void send(const QByteArray &line);
+    void flush();
     void stop();
 
     CarveraEmulator *m_emulator;
@@ -43,7 +49,9 @@ private:
     int m_master = -1;
     int m_slave = -1; // held open so the master never reads EIO between clients
     QSocketNotifier *m_notifier = nullptr;
-    QByteArray m_line;
+    QSocketNotifier *m_writable = nullptr; // on while output waits
+    QByteArray m_out;
+    qint64 m_droppedLines = 0;
 };
 
 } // namespace Toffee
