@@ -286,6 +286,15 @@ void CarveraEmulator::execute(const QByteArray &line)
         QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
     };
     bool bad = false;
+    // Checked before it becomes an int: T1e308 would not fit one.
+    auto isToolNumber = [](double t) {
+        return t >= -1 && t < 1000000;
+    };
+    auto invalidTool = [this](double t) {
+        say("ALARM: Invalid tool: T" + QByteArray::number(t, 'g', 10));
+        halt(6);
+        finish();
+    };
 
     if (upper == "$X") {
         m_haltReason = 0;
@@ -330,6 +339,8 @@ void CarveraEmulator::execute(const QByteArray &line)
             finish();
             return;
         }
+        if (!isToolNumber(*t))
+            return invalidTool(*t);
         m_tool = int(*t);
         m_calibrated = false;
         finish();
@@ -356,13 +367,9 @@ void CarveraEmulator::execute(const QByteArray &line)
         const auto h = w.number('H', bad);
         if (!t || bad)
             return refuse({});
+        if (!isToolNumber(*t))
+            return invalidTool(*t);
         const int n = int(*t);
-        if (n < -1 || n > 999999) {
-            say("ALARM: Invalid tool: T" + QByteArray::number(n));
-            halt(6);
-            finish();
-            return;
-        }
         m_tool = n;
         m_calibrated = false;
         if (h) {
