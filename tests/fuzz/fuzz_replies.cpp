@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The reply parsers on whatever a port may deliver: each line is classified and offered to every parser.
 // Promised: no crash; a parser takes only a line of its own kind; every number it returns is finite; a
-// tool number is one a Carvera can report (-1, an empty spindle, to 999999); a halt reason can be named.
+// TLO report's values are ones a machine can have; a tool number is one a Carvera can report (-1, an empty
+// spindle, to 999999); a halt reason can be named.
 #include <cmath>
 
 #include "fuzzcheck.h"
@@ -44,7 +45,10 @@ void checkLine(QByteArrayView line)
     }
     if (const auto tlo = parseTloReport(line)) {
         TOFFEE_FUZZ_CHECK(kind == ReplyKind::Other, shown);
-        TOFFEE_FUZZ_CHECK(finite(tlo->currentMz) && finite(tlo->referenceMz), shown);
+        TOFFEE_FUZZ_CHECK(finite(tlo->currentMz) && finite(tlo->referenceMz) && finite(tlo->tlo()), shown);
+        TOFFEE_FUZZ_CHECK(std::fabs(tlo->currentMz) <= kMaxMachineMillimetres
+                && std::fabs(tlo->referenceMz) <= kMaxMachineMillimetres,
+            shown);
     }
     if (const auto probe = parseProbeResult(line)) {
         TOFFEE_FUZZ_CHECK(kind == ReplyKind::Other, shown);
