@@ -55,8 +55,12 @@ ConsoleDock::ConsoleDock(MachineConnection *connection, QWidget *parent)
 
 void ConsoleDock::append(const QByteArray &line, bool outgoing)
 {
-    const QString text = QTime::currentTime().toString(u"HH:mm:ss.zzz"_s) + (outgoing ? u"  > "_s : u"  < "_s)
-        + QString::fromUtf8(line);
+    // A line is at most 4 KB, but a few thousand of those would still make a heavy list: show their start.
+    const QString shown = line.size() <= kMaxLineChars
+        ? QString::fromUtf8(line)
+        : QString::fromUtf8(line.first(kMaxLineChars)) + tr("… (%1 bytes in all)").arg(line.size());
+    const QString text
+        = QTime::currentTime().toString(u"HH:mm:ss.zzz"_s) + (outgoing ? u"  > "_s : u"  < "_s) + shown;
     auto *item = new QListWidgetItem(text, m_log);
     if (!outgoing && (line.startsWith("ALARM") || line.startsWith("ERROR") || line.startsWith("error:")))
         item->setForeground(alarmColor(palette()));

@@ -32,6 +32,7 @@ private:
     void applyFilter();
 
     static constexpr int kMaxLines = 5000;
+    static constexpr qsizetype kMaxLineChars = 500;
     MachineConnection *m_connection;
     QListWidget *m_log;
     QLineEdit *m_filter;
