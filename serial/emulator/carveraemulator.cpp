@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "machinereplies.h"
 #include "textparsing.h"
 
 namespace Toffee {
@@ -53,6 +54,12 @@ struct Words
         return v;
     }
 };
+
+// An offset or height no machine has (1e308 would make the next sum infinite) is refused, not taken.
+bool plausible(std::optional<double> millimetres)
+{
+    return !millimetres || std::fabs(*millimetres) <= kMaxMachineMillimetres;
+}
 
 // A command quoted back in a reply: printable ASCII only, and short enough that the reply is one line a
 // link takes whole.
@@ -347,7 +354,7 @@ void CarveraEmulator::execute(const QByteArray &line)
     } else if (w.has('M', "493.3")) {
         const auto z = w.number('Z', bad);
         const auto h = w.number('H', bad);
-        if (bad)
+        if (bad || !plausible(z) || !plausible(h))
             return refuse({});
         if (z) {
             m_curMz = m_refMz + *z;
@@ -365,7 +372,7 @@ void CarveraEmulator::execute(const QByteArray &line)
     } else if (w.has('M', "6")) {
         const auto t = w.number('T', bad);
         const auto h = w.number('H', bad);
-        if (!t || bad)
+        if (!t || bad || !plausible(h))
             return refuse({});
         if (!isToolNumber(*t))
             return invalidTool(*t);
