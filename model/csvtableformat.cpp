@@ -186,10 +186,12 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
     QByteArrayView all(data);
     if (all.startsWith("\xEF\xBB\xBF"))
         all = all.sliced(3); // the byte-order mark spreadsheets write
-    if (all.contains('\0'))
-        return Error { tr("the file holds binary data; it is not a CSV table."), 1 };
-    if (!decodeUtf8(all))
-        return Error { tr("the file is not UTF-8 text; save it from the spreadsheet as \"CSV UTF-8\"."), 1 };
+    if (const qsizetype bad = firstInvalidUtf8(all); bad >= 0) {
+        if (all.at(bad) == '\0')
+            return Error { tr("the file holds binary data; it is not a CSV table."), lineAt(all, bad) };
+        return Error { tr("the file is not UTF-8 text; save it from the spreadsheet as \"CSV UTF-8\"."),
+            lineAt(all, bad) };
+    }
 
     qsizetype pos = 0;
     int line = 1;
@@ -218,7 +220,7 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
                 tr("unknown column \"%1\" in the header; the columns are number, pocket, description, "
                    "length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, "
                    "measured_at, notes, units and linuxcnc.")
-                    .arg(fromUtf8(header.fields.at(i))),
+                    .arg(excerpt(header.fields.at(i))),
                 header.line
             };
         const auto column = found - std::begin(kColumnNames);
@@ -233,10 +235,7 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
         return Error { tr("the header has no \"number\" column."), header.line };
 
     std::optional<Units> units;
-    QList<Tool> tools;
-    QList<int> lines;
-    tools.reserve(countLines(all));
-    lines.reserve(tools.capacity());
+    ToolCollector tools(all);
     Record record;
     QByteArray commaDecimal;
     while (pos < all.size()) {
@@ -267,7 +266,8 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
             }
             const auto v = parseDecimal(s);
             if (!v && problem.isEmpty())
-                problem = tr("%1 \"%2\" is not a number.").arg(QLatin1StringView(kColumnNames[c]), text(c));
+                problem = tr("%1 \"%2\" is not a number.")
+                              .arg(QLatin1StringView(kColumnNames[c]), excerpt(cell(c)));
             return v.value_or(fallback);
         };
         auto integer = [&](Column c, int fallback) -> int {
@@ -276,9 +276,20 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
                 return fallback;
             const auto v = parseInteger(s);
             const bool fits = v && *v >= INT_MIN && *v <= INT_MAX;
-            if (!fits && problem.isEmpty())
-                problem
-                    = tr("%1 \"%2\" is not a whole number.").arg(QLatin1StringView(kColumnNames[c]), text(c));
+            if (!fits && problem.isEmpty()) {
+                // A whole number too large for any tool or pocket says so, not "not a whole number".
+                problem = isIntegerText(s)
+                    ? (c == Number ? tr("tool number %1 is out of range; use %2 to %3.")
+                                         .arg(excerpt(s))
+                                         .arg(Limits::kMinToolNumber)
+                                         .arg(Limits::kMaxToolNumber)
+                                   : tr("pocket %1 is out of range; use %2 to %3.")
+                                         .arg(excerpt(s))
+                                         .arg(Limits::kMinPocket)
+                                         .arg(Limits::kMaxPocket))
+                    : tr("%1 \"%2\" is not a whole number.")
+                          .arg(QLatin1StringView(kColumnNames[c]), excerpt(s));
+            }
             return fits ? int(*v) : fallback;
         };
 
@@ -299,7 +310,7 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
             if (!tool.measuredAt.isValid() && problem.isEmpty())
                 problem = tr(
                     "measured_at \"%1\" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).")
-                              .arg(text(MeasuredAt));
+                              .arg(excerpt(cell(MeasuredAt)));
         }
         tool.notes = text(Notes);
         tool.linuxCncExtra = text(LinuxCnc);
@@ -308,7 +319,8 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
                 : u == "in"                 ? Units::Inch
                                             : unitsFromSymbol(text(UnitsColumn));
             if (!rowUnits)
-                return Error { tr("units \"%1\" must be mm or in.").arg(text(UnitsColumn)), record.line };
+                return Error { tr("units \"%1\" must be mm or in.").arg(excerpt(cell(UnitsColumn))),
+                    record.line };
             if (units && *units != *rowUnits)
                 return Error { tr("this row is in %1 but the rows above are in %2; a table has one unit.")
                                    .arg(unitsSymbol(*rowUnits), unitsSymbol(*units)),
@@ -317,10 +329,10 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
         }
         if (!problem.isEmpty())
             return Error { problem, record.line };
-        tools.append(std::move(tool));
-        lines.append(record.line);
+        if (auto added = tools.add(std::move(tool), record.line, units.value_or(Units::Millimetre)); !added)
+            return added.error();
     }
-    return buildTable(std::move(tools), lines, units.value_or(Units::Millimetre));
+    return tools.build(units.value_or(Units::Millimetre));
 }
 
 bool writeCsvTable(const ToolTable &table, const ByteSink &sink)

@@ -241,7 +241,7 @@ public:
         }
         const auto value = parseDecimal(QByteArrayView(start, m_p - start));
         if (!value)
-            return fail(tr("the number %1 is too large.").arg(QString::fromLatin1(start, m_p - start)));
+            return fail(tr("the number %1 is too large.").arg(excerpt(QByteArrayView(start, m_p - start))));
         out = *value;
         return true;
     }
@@ -331,8 +331,17 @@ private:
 
 bool wholeNumber(JsonScanner &json, const Scalar &v, QLatin1StringView key, int &out)
 {
-    if (v.kind != Scalar::Number || v.number != std::floor(v.number) || std::fabs(v.number) > 2e9)
+    if (v.kind != Scalar::Number || v.number != std::floor(v.number))
         return json.fail(tr("\"%1\" must be a whole number.").arg(key));
+    if (std::fabs(v.number) > 2e9) {
+        // Whole, but beyond any tool or pocket: say so rather than "not a whole number".
+        const bool tool = key == Key::Number;
+        return json.fail(tr("\"%1\": %2 is out of range; use %3 to %4.")
+                             .arg(key)
+                             .arg(v.number, 0, 'g', 15)
+                             .arg(tool ? Limits::kMinToolNumber : Limits::kMinPocket)
+                             .arg(tool ? Limits::kMaxToolNumber : Limits::kMaxPocket));
+    }
     out = int(v.number);
     return true;
 }
@@ -377,10 +386,10 @@ bool readTool(JsonScanner &json, Tool &tool)
             const auto found = std::find_if(std::begin(keys), std::end(keys),
                 [&key](QLatin1StringView k) { return QByteArrayView(k.data(), k.size()) == key; });
             if (found == std::end(keys))
-                return json.fail(tr("unknown field \"%1\" in a tool.").arg(QString::fromUtf8(key)));
+                return json.fail(tr("unknown field \"%1\" in a tool.").arg(excerpt(key)));
             const auto bit = quint32(1) << (found - std::begin(keys));
             if (seen & bit)
-                return json.fail(tr("the field \"%1\" appears twice in a tool.").arg(QString::fromUtf8(key)));
+                return json.fail(tr("the field \"%1\" appears twice in a tool.").arg(excerpt(key)));
             seen |= bit;
             const QLatin1StringView k = *found;
             bool ok = true;
@@ -499,10 +508,7 @@ Result<ToolTable> readJsonTable(const QByteArray &data)
     bool hasFormat = false;
     bool hasVersion = false;
     bool hasTools = false;
-    QList<Tool> tools;
-    QList<int> lines;
-    tools.reserve(countLines(data)); // Toffee writes one tool a line
-    lines.reserve(tools.capacity());
+    ToolCollector tools(data); // Toffee writes one tool a line
     if (!json.consume('}')) {
         do {
             QString key;
@@ -524,10 +530,12 @@ Result<ToolTable> readJsonTable(const QByteArray &data)
                 if (!json.consume(']')) {
                     do {
                         Tool tool;
-                        lines.append((json.peek(), json.line()));
+                        const int line = (json.peek(), json.line());
                         if (!readTool(json, tool))
                             return json.error();
-                        tools.append(std::move(tool));
+                        if (auto added = tools.add(std::move(tool), line, units.value_or(Units::Millimetre));
+                            !added)
+                            return added.error();
                     } while (json.consume(','));
                     if (!json.expect(']', "',' or ']' after a tool"))
                         return json.error();
@@ -565,7 +573,7 @@ Result<ToolTable> readJsonTable(const QByteArray &data)
                     tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1
                 };
             } else {
-                return Error { tr("unknown field \"%1\" in the table.").arg(key), line };
+                return Error { tr("unknown field \"%1\" in the table.").arg(excerpt(key)), line };
             }
         } while (json.consume(','));
         if (!json.expect('}', "',' or '}' at the end of the table"))
@@ -581,7 +589,7 @@ Result<ToolTable> readJsonTable(const QByteArray &data)
         return Error { tr("\"units\" must be \"mm\" or \"in\"."), 1 };
     if (!hasTools)
         return Error { tr("\"tools\" must be a list of tools."), 1 };
-    return buildTable(std::move(tools), lines, *units);
+    return tools.build(*units);
 }
 
 bool writeJsonTable(const ToolTable &table, const ByteSink &sink)

@@ -67,7 +67,7 @@ Result<Tool> parseLine(QByteArrayView line)
         const char letter = char(QChar::toUpper(uchar(token.front())));
         const QByteArrayView value = token.sliced(1);
         const auto tokenText = [token] {
-            return QString::fromUtf8(token);
+            return excerpt(token);
         }; // for messages only
         if (seen.contains(letter))
             return Error {
@@ -76,6 +76,16 @@ Result<Tool> parseLine(QByteArrayView line)
         seen += letter;
         if (letter == 'T' || letter == 'P' || letter == 'Q') {
             const auto n = parseInteger(value);
+            if (!n && isIntegerText(value) && letter == 'T')
+                return Error { tr("tool number %1 is out of range; use %2 to %3.")
+                                   .arg(excerpt(value))
+                                   .arg(Limits::kMinToolNumber)
+                                   .arg(Limits::kMaxToolNumber) };
+            if (!n && isIntegerText(value) && letter == 'P')
+                return Error { tr("pocket %1 is out of range; use %2 to %3.")
+                                   .arg(excerpt(value))
+                                   .arg(Limits::kMinPocket)
+                                   .arg(Limits::kMaxPocket) };
             if (!n)
                 return Error {
                     tr("\"%1\": %2 needs a whole number.").arg(tokenText(), QChar::fromLatin1(letter))
@@ -151,10 +161,7 @@ void appendFolded(QByteArray &out, double geometry, double wear)
 
 Result<ToolTable> readLinuxCncTable(const QByteArray &data, Units units)
 {
-    QList<Tool> tools;
-    QList<int> lines;
-    tools.reserve(countLines(data));
-    lines.reserve(tools.capacity());
+    ToolCollector tools(data);
     const QByteArrayView all(data);
     qsizetype start = 0;
     int lineNumber = 0;
@@ -172,10 +179,10 @@ Result<ToolTable> readLinuxCncTable(const QByteArray &data, Units units)
         auto tool = parseLine(line);
         if (!tool)
             return Error { tool.error().message, lineNumber };
-        tools.append(tool.takeValue());
-        lines.append(lineNumber);
+        if (auto added = tools.add(tool.takeValue(), lineNumber, units); !added)
+            return added.error();
     }
-    return buildTable(std::move(tools), lines, units);
+    return tools.build(units);
 }
 
 bool writeLinuxCncTable(const ToolTable &table, const ByteSink &sink)

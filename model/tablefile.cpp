@@ -2,17 +2,16 @@
 #include "tablefile.h"
 
 #include <QCoreApplication>
-#include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
+
+#include "fileio.h"
+#include "textparsing.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
 namespace {
-
-constexpr qint64 kMaxFileBytes = 256LL * 1024 * 1024;
 
 // Free functions translate in the context lupdate gives them: the namespace.
 QString tr(const char *text)
@@ -133,18 +132,11 @@ Result<ToolTable> loadTableFile(const QString &path, std::optional<TableFormat> 
     if (!format)
         format = formatForPath(path);
     if (!format)
-        return Error { tr("%1: unknown file type; use a .json, .tbl or .csv file.").arg(path) };
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return Error { tr("%1: cannot open: %2").arg(path, file.errorString()) };
-    if (file.size() > kMaxFileBytes)
-        return Error {
-            tr("%1: the file is %2 MB, too large to be a tool table.").arg(path).arg(file.size() >> 20)
-        };
-    const QByteArray data = file.readAll();
-    if (file.error() != QFileDevice::NoError)
-        return Error { tr("%1: cannot read: %2").arg(path, file.errorString()) };
-    auto result = readTable(data, *format, tblUnits);
+        return Error { tr("%1: unknown file type; use a .json, .tbl or .csv file.").arg(excerpt(path, 200)) };
+    const auto data = readRegularFile(path, kMaxTableFileBytes);
+    if (!data)
+        return data.error();
+    auto result = readTable(data.value(), *format, tblUnits);
     if (!result)
         return Error { result.error().message, result.error().line, path };
     return result;
@@ -152,14 +144,22 @@ Result<ToolTable> loadTableFile(const QString &path, std::optional<TableFormat> 
 
 Result<void> saveTableFile(const QString &path, const ToolTable &table, TableFormat format)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return Error { tr("%1: cannot write: %2").arg(path, file.errorString()) };
-    const bool written = writeTable(table, format,
-        [&file](QByteArrayView piece) { return file.write(piece.data(), piece.size()) == piece.size(); });
-    if (!written || !file.commit())
-        return Error { tr("%1: saving failed, the old file is unchanged: %2").arg(path, file.errorString()) };
-    return {};
+    // What Toffee would refuse to read back, it refuses to write: the limit holds for both.
+    qint64 total = 0;
+    const QString tooLarge = tr("the table would take more than %1 MB, more than Toffee reads back; shorten "
+                                "the notes or split the table.")
+                                 .arg(kMaxTableFileBytes >> 20);
+    return writeFileAtomically(
+        path,
+        [&](const FileSink &sink) {
+            return writeTable(table, format, [&](QByteArrayView piece) {
+                total += piece.size();
+                if (total > kMaxTableFileBytes)
+                    return false;
+                return sink(piece);
+            });
+        },
+        &tooLarge);
 }
 
 } // namespace Toffee

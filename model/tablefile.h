@@ -28,9 +28,14 @@ enum class TableFormat { Json, LinuxCnc, Csv };
 // What `format` cannot hold of `table`, one sentence each, for a warning before a lossy save.
 [[nodiscard]] QStringList formatLosses(const ToolTable &table, TableFormat format);
 
+// The largest table file Toffee reads, and so the largest it writes.
+inline constexpr qint64 kMaxTableFileBytes = 256LL * 1024 * 1024;
+
 [[nodiscard]] Result<ToolTable> loadTableFile(
     const QString &path, std::optional<TableFormat> format = {}, Units tblUnits = Units::Millimetre);
-// Written through QSaveFile: a crash or a full disk leaves the old file whole.
+// Only regular files are read (see readRegularFile). Saving writes the file whole or not at all (see
+// writeFileAtomically): a crash or a full disk leaves the old file whole, and a table whose file would be
+// too large to read back is refused.
 [[nodiscard]] Result<void> saveTableFile(const QString &path, const ToolTable &table, TableFormat format);
 
 // Writers hand the file over in pieces of about a megabyte, in order; a sink returning false stops them.

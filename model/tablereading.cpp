@@ -5,23 +5,60 @@
 
 #include <QCoreApplication>
 
+#include "toolvalidation.h"
+
 namespace Toffee {
 
-Result<ToolTable> buildTable(QList<Tool> tools, const QList<int> &lines, Units units)
+namespace {
+
+// Reserving for every line of a file would size memory by the file, not the table: up to this many, then
+// grow.
+constexpr qsizetype kMaxReserved = 65536;
+
+QString duplicateMessage(int number, int line)
+{
+    return QCoreApplication::translate(
+        "Toffee::TableReading", "tool %1 is already on line %2; tool numbers must be unique.")
+        .arg(number)
+        .arg(line);
+}
+
+} // namespace
+
+ToolCollector::ToolCollector(QByteArrayView data)
+    : m_seen(size_t(Limits::kMaxToolNumber) + 1, false)
+{
+    const qsizetype lines = qsizetype(std::count(data.begin(), data.end(), '\n')) + 1;
+    m_tools.reserve(std::min(lines, kMaxReserved));
+    m_lines.reserve(m_tools.capacity());
+}
+
+Result<void> ToolCollector::add(Tool tool, int line, Units units)
+{
+    if (auto valid = validateTool(tool, units); !valid)
+        return Error { valid.error().message, line };
+    if (m_seen[size_t(tool.number)]) {
+        const auto earlier = std::find_if(
+            m_tools.cbegin(), m_tools.cend(), [&tool](const Tool &t) { return t.number == tool.number; });
+        return Error { duplicateMessage(tool.number, m_lines.at(earlier - m_tools.cbegin())), line };
+    }
+    m_seen[size_t(tool.number)] = true;
+    m_tools.append(std::move(tool));
+    m_lines.append(line);
+    return {};
+}
+
+Result<ToolTable> ToolCollector::build(Units units)
 {
     ToolTable::Problem problem;
-    auto table = ToolTable::fromTools(std::move(tools), units, &problem);
+    auto table = ToolTable::fromTools(std::move(m_tools), units, &problem);
     if (table)
         return table;
-    const auto lineOf = [&lines](qsizetype i) {
-        return i >= 0 && i < lines.size() ? lines.at(i) : 0;
+    const auto lineOf = [this](qsizetype i) {
+        return i >= 0 && i < m_lines.size() ? m_lines.at(i) : 0;
     };
     if (problem.duplicateOf >= 0)
-        return Error { QCoreApplication::translate("Toffee::TableReading",
-                           "tool %1 is already on line %2; tool numbers must be unique.")
-                           .arg(problem.number)
-                           .arg(lineOf(problem.duplicateOf)),
-            lineOf(problem.index) };
+        return Error { duplicateMessage(problem.number, lineOf(problem.duplicateOf)), lineOf(problem.index) };
     return Error { table.error().message, lineOf(problem.index) };
 }
 
@@ -37,11 +74,6 @@ bool ChunkedWriter::flush()
         m_ok = m_sink(out);
     out.resize(0); // keeps the capacity
     return m_ok;
-}
-
-qsizetype countLines(QByteArrayView data)
-{
-    return qsizetype(std::count(data.begin(), data.end(), '\n')) + 1;
 }
 
 } // namespace Toffee

@@ -2,17 +2,32 @@
 // Shared by the three table readers; not part of the model's interface.
 #pragma once
 
+#include <vector>
+
 #include "tablefile.h"
 #include "tooltable.h"
 
 namespace Toffee {
 
-// The table from a reader's tools, or the first problem with the line of the tool it is on:
-// lines[i] is the line tools[i] was read from.
-[[nodiscard]] Result<ToolTable> buildTable(QList<Tool> tools, const QList<int> &lines, Units units);
+// Gathers a reader's tools as it reads them and checks each at once: the first tool that is not valid, or
+// whose number came before, stops the reader at its line. Memory grows with the table, never with the file:
+// a giant file of one repeated row fails at its second row.
+class ToolCollector
+{
+public:
+    // `data`: the file, to reserve room for about as many tools as it has lines, within reason.
+    explicit ToolCollector(QByteArrayView data);
 
-// How many lines `data` has: a reader reserves that many tools up front rather than growing its list.
-[[nodiscard]] qsizetype countLines(QByteArrayView data);
+    // `units`: the table's, when the reader knows them yet; a CSV table learns its units from its rows, so
+    // until then the larger (millimetre) limits apply, and build() checks again with the table's own.
+    [[nodiscard]] Result<void> add(Tool tool, int line, Units units = Units::Millimetre);
+    [[nodiscard]] Result<ToolTable> build(Units units);
+
+private:
+    QList<Tool> m_tools;
+    QList<int> m_lines; // m_lines[i] is the line m_tools[i] was read from
+    std::vector<bool> m_seen; // by tool number
+};
 
 // Collects a writer's output and hands it to the sink a megabyte at a time.
 class ChunkedWriter

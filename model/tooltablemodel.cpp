@@ -133,14 +133,16 @@ Result<Tool> ToolTableModel::editedTool(const Tool &tool, int column, const QVar
         const auto v = value.typeId() == QMetaType::Double ? std::optional<double>(value.toDouble())
                                                            : parseDecimal(bytes);
         if (!v)
-            return Error { tr("%1: \"%2\" is not a number; enter a value such as -12.345.").arg(what, text) };
+            return Error {
+                tr("%1: \"%2\" is not a number; enter a value such as -12.345.").arg(what, excerpt(text))
+            };
         field = *v;
         return {};
     };
     auto integer = [&](const QString &what, int &field) -> Result<void> {
         const auto v = parseInteger(text.toUtf8());
         if (!v || *v < INT_MIN || *v > INT_MAX)
-            return Error { tr("%1: \"%2\" is not a whole number.").arg(what, text) };
+            return Error { tr("%1: \"%2\" is not a whole number.").arg(what, excerpt(text)) };
         field = int(*v);
         return {};
     };

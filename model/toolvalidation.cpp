@@ -107,7 +107,7 @@ Result<void> validateLinuxCncExtra(const QString &extra)
         }
         if (!isNumber)
             return Error { tr("\"%1\" is not a LinuxCNC tool field (X, Y, A, B, C, U, V, W, I, J or Q0-Q9).")
-                               .arg(token.toString()) };
+                               .arg(excerpt(token)) };
     }
     return {};
 }

@@ -11,12 +11,12 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QVBoxLayout>
 
 #include "appearance.h"
 #include "appsettings.h"
 #include "dialect.h"
+#include "fileio.h"
 
 using namespace Qt::StringLiterals;
 
@@ -104,10 +104,10 @@ void ExportDialog::updatePreview()
 
 bool ExportDialog::saveTo(const QString &path)
 {
-    QSaveFile file(path);
     const QByteArray data = program().toUtf8();
-    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.commit()) {
-        QMessageBox::warning(this, tr("Cannot export"), tr("%1: %2").arg(path, file.errorString()));
+    if (auto written = writeFileAtomically(path, [&data](const FileSink &sink) { return sink(data); });
+        !written) {
+        QMessageBox::warning(this, tr("Cannot export"), written.error().text());
         return false;
     }
     return true;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "filewatcher.h"
 
+#include <sys/stat.h>
+
 #include <QCryptographicHash>
 #include <QFile>
 #include <QTimer>
@@ -17,6 +19,14 @@ FileWatcher::FileWatcher(QObject *parent)
 
 QByteArray FileWatcher::digestOf(const QString &path) const
 {
+    // Only a regular file is read: opening a FIFO put in the file's place would block the window.
+    struct stat info
+    {
+    };
+    if (::stat(QFile::encodeName(path).constData(), &info) != 0)
+        return {};
+    if (!S_ISREG(info.st_mode))
+        return QByteArrayLiteral("not a regular file");
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return {};

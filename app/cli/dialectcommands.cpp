@@ -7,6 +7,7 @@
 #include "cli.h"
 #include "dialect.h"
 #include "emulator/gcodeinterpreter.h"
+#include "fileio.h"
 #include "tablefile.h"
 #include "textparsing.h"
 
@@ -93,10 +94,12 @@ int simulateProgram(Invocation &call)
         for (const Tool &t : table.value().tools())
             offsets[t.number] = { t.lengthGeometry, t.lengthWear, t.radiusGeometry, t.radiusWear };
     }
-    QFile file(call.arguments.front());
-    if (!file.open(QIODevice::ReadOnly))
-        return fail(call, u"%1: cannot open: %2"_s.arg(file.fileName(), file.errorString()), BadInput);
-    const QByteArray program = file.readAll();
+    // A program is read whole for now; a FIFO or a device is refused by name, and a program is bounded.
+    constexpr qint64 kMaxProgramBytes = 512LL * 1024 * 1024;
+    const auto read = readRegularFile(call.arguments.front(), kMaxProgramBytes);
+    if (!read)
+        return fail(call, read.error().text(), BadInput);
+    const QByteArray &program = read.value();
 
     GCodeInterpreter interpreter(*dialect, offsets, samples);
     const auto result = interpreter.run(program);

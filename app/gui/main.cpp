@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <csignal>
 #include <cstdio>
 
 #include <QApplication>
@@ -22,6 +23,9 @@ int main(int argc, char *argv[])
 {
     QElapsedTimer sinceLaunch;
     sinceLaunch.start();
+    // Over a file-size limit (ulimit -f) a write then fails with "File too large", which a save reports like
+    // a full disk with the old file whole, instead of the process being killed in the middle of it.
+    std::signal(SIGXFSZ, SIG_IGN);
     QApplication app(argc, argv);
     QApplication::setOrganizationName(u"Toffee"_s);
     QApplication::setApplicationName(u"Toffee"_s);

@@ -99,8 +99,8 @@ private Q_SLOTS:
                                             << 3 << u"after a closing quote"_s;
         QTest::newRow("bad date") << head + "2,2,x,1,0,-3,last week,mm,\n" << 3 << u"not a date"_s;
         QTest::newRow("TLO not a number") << head + "2,2,x,1,0,abc,,mm,\n" << 3 << u"measured_tlo \"abc\""_s;
-        QTest::newRow("binary data") << head + QByteArray("2,2,\0,1", 7) << 1 << u"binary data"_s;
-        QTest::newRow("not UTF-8") << head + "2,2,caf\xe9,1,0,,,mm,\n" << 1 << u"not UTF-8"_s;
+        QTest::newRow("binary data") << head + QByteArray("2,2,\0,1", 7) << 3 << u"binary data"_s;
+        QTest::newRow("not UTF-8") << head + "2,2,caf\xe9,1,0,,,mm,\n" << 3 << u"not UTF-8"_s;
         QTest::newRow("description over two lines") << head + "2,2,\"two\nlines\",1,0,,,mm,\n"
                                                     << 3 << u"one line"_s;
         QTest::newRow("line counted after a multi-line field")

@@ -114,13 +114,13 @@ private Q_SLOTS:
         QTest::newRow("a tool without a number")
             << table({ kGood, R"({"pocket": 2})" }) << 7 << u"no \"number\""_s;
         QTest::newRow("fractional tool number") << table({ R"({"number": 1.5})" }) << 6 << u"whole number"_s;
-        QTest::newRow("huge tool number") << table({ R"({"number": 1e12})" }) << 6 << u"whole number"_s;
+        QTest::newRow("huge tool number") << table({ R"({"number": 1e12})" }) << 6 << u"out of range"_s;
         QTest::newRow("tool number out of range")
             << table({ R"({"number": 1000000})" }) << 6 << u"out of range"_s;
         QTest::newRow("pocket as text")
             << table({ R"({"number": 1, "pocket": "one"})" }) << 6 << u"\"pocket\" must be"_s;
         QTest::newRow("length as text")
-            << table({ kGood, kGood, R"({"number": 3, "length_geometry": "10"})" }) << 8
+            << table({ kGood, R"({"number": 2})", R"({"number": 3, "length_geometry": "10"})" }) << 8
             << u"must be a number"_s;
         QTest::newRow("wear out of range")
             << table({ kGood, R"({"number": 2, "length_wear": 120})" }) << 7 << u"length wear 120 mm"_s;

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "fileio.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QSaveFile>
+
+namespace Toffee {
+
+namespace {
+
+// Free functions translate in the context lupdate gives them: the namespace.
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("Toffee", text);
+}
+
+QString systemError(int error)
+{
+    return QString::fromLocal8Bit(std::strerror(error));
+}
+
+// Why `mode` is not a file Toffee reads or writes, or nothing when it is a regular file.
+QString notAFile(mode_t mode)
+{
+    if (S_ISREG(mode))
+        return {};
+    if (S_ISFIFO(mode))
+        return tr("it is a named pipe (FIFO), not a file; Toffee opens only regular files.");
+    if (S_ISCHR(mode) || S_ISBLK(mode))
+        return tr("it is a device, not a file; Toffee opens only regular files.");
+    if (S_ISDIR(mode))
+        return tr("it is a folder, not a file.");
+    if (S_ISSOCK(mode))
+        return tr("it is a socket, not a file; Toffee opens only regular files.");
+    return tr("it is not a regular file; Toffee opens only regular files.");
+}
+
+Error readError(const QString &path, const QString &reason)
+{
+    return Error { tr("%1: cannot open: %2").arg(path, reason) };
+}
+
+QString megabytes(qint64 bytes)
+{
+    return QString::number(double(bytes) / (1024.0 * 1024.0), 'f', bytes < 10 * 1024 * 1024 ? 1 : 0);
+}
+
+} // namespace
+
+Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes)
+{
+    if (path.isEmpty())
+        return Error { tr("no file name was given.") };
+    if (path.startsWith(u':')) {
+        // A file built into the application (Qt's resource system): Toffee's own, never special.
+        QFile resource(path);
+        if (!resource.open(QIODevice::ReadOnly))
+            return readError(path, resource.errorString());
+        if (resource.size() > maxBytes)
+            return Error { tr("%1: the file is %2 MB; Toffee reads files of at most %3 MB.")
+                               .arg(path, megabytes(resource.size()), megabytes(maxBytes)) };
+        return resource.readAll();
+    }
+    const QByteArray native = QFile::encodeName(path);
+    // stat() first: opening a FIFO for reading would block until a writer came, and a device would never end.
+    struct stat before
+    {
+    };
+    if (::stat(native.constData(), &before) != 0)
+        return readError(path, systemError(errno));
+    if (const QString why = notAFile(before.st_mode); !why.isEmpty())
+        return readError(path, why);
+    // O_NONBLOCK: should the name be swapped for a FIFO between stat() and open(), open() still returns at
+    // once, and fstat() below refuses it.
+    const int fd = ::open(native.constData(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0)
+        return readError(path, systemError(errno));
+    struct Closer
+    {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer { fd };
+    struct stat info
+    {
+    };
+    if (::fstat(fd, &info) != 0)
+        return readError(path, systemError(errno));
+    if (const QString why = notAFile(info.st_mode); !why.isEmpty())
+        return readError(path, why);
+    const auto tooLarge = [&](qint64 size) {
+        return Error { tr("%1: the file is %2 MB; Toffee reads files of at most %3 MB.")
+                           .arg(path, megabytes(size), megabytes(maxBytes)) };
+    };
+    if (info.st_size > maxBytes)
+        return tooLarge(info.st_size);
+
+    // Read to the end, never past maxBytes: the file may grow while it is read.
+    QByteArray data;
+    data.resize(qsizetype(info.st_size));
+    qsizetype used = 0;
+    while (true) {
+        if (used == data.size()) {
+            if (data.size() > maxBytes)
+                return tooLarge(data.size());
+            data.resize(std::min<qsizetype>(std::max<qsizetype>(data.size() * 2, 4096), maxBytes + 1));
+        }
+        const ssize_t n = ::read(fd, data.data() + used, size_t(data.size() - used));
+        if (n < 0) {
+            if (errno == EINTR)
+                continue;
+            return Error { tr("%1: cannot read: %2").arg(path, systemError(errno)) };
+        }
+        if (n == 0)
+            break;
+        used += n;
+    }
+    if (used > maxBytes)
+        return tooLarge(used);
+    data.resize(used);
+    return data;
+}
+
+Result<void> writeFileAtomically(
+    const QString &path, const FileProducer &produce, const QString *producerError)
+{
+    struct stat existing
+    {
+    };
+    const bool existed = ::stat(QFile::encodeName(path).constData(), &existing) == 0;
+    const auto failure = [&](const QString &reason) {
+        return Error { existed ? tr("%1: cannot save: %2 The old file is unchanged.").arg(path, reason)
+                               : tr("%1: cannot save: %2 Nothing was written.").arg(path, reason) };
+    };
+    const auto sentence = [](QString reason) {
+        if (!reason.isEmpty() && !reason.endsWith(u'.'))
+            reason += u'.';
+        return reason;
+    };
+    if (existed) {
+        if (const QString why = notAFile(existing.st_mode); !why.isEmpty())
+            return failure(why);
+    }
+
+    QSaveFile file(path);
+    file.setDirectWriteFallback(false);
+    // Unbuffered: each write reaches the system at once and its failure is seen here, not lost in a flush.
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
+        return failure(sentence(file.errorString()));
+    QString writeError;
+    const bool produced = produce([&file, &writeError](QByteArrayView piece) {
+        qsizetype done = 0;
+        while (done < piece.size()) {
+            // A short write is retried: the retry reports why (ENOSPC, EDQUOT, EFBIG).
+            const qint64 n = file.write(piece.data() + done, piece.size() - done);
+            if (n <= 0) {
+                writeError = file.errorString();
+                return false;
+            }
+            done += n;
+        }
+        return true;
+    });
+    if (!produced) {
+        file.cancelWriting();
+        if (!writeError.isEmpty())
+            return failure(sentence(writeError));
+        return failure(sentence(producerError ? *producerError : tr("the file could not be written")));
+    }
+    // QSaveFile::commit() syncs but does not say whether the sync worked; a disk that fills as delayed
+    // allocation meets it (or a network file system) reports it only here.
+    if (::fsync(file.handle()) != 0) {
+        const int error = errno;
+        file.cancelWriting();
+        return failure(sentence(systemError(error)));
+    }
+    if (!file.commit())
+        return failure(sentence(file.errorString()));
+    return {};
+}
+
+} // namespace Toffee

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every file Toffee reads or writes goes through these two: a file is input like any other, and a save that
+// cannot complete must never look as if it had.
+#pragma once
+
+#include <functional>
+
+#include <QByteArray>
+#include <QString>
+
+#include "result.h"
+
+namespace Toffee {
+
+// The whole of `path`, which must be a regular file (or a link to one) of at most `maxBytes`. Anything else
+// (a FIFO, a device such as /dev/zero, a folder, a socket, a link that loops) is refused by name before a
+// byte is read, so that it can neither block nor fill memory. Error messages begin with the path. A path
+// beginning with ':' is one of the application's own resources.
+[[nodiscard]] Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes);
+
+// Hands the file's contents to a sink in pieces; the producer stops (returning false) when the sink does.
+using FileSink = std::function<bool(QByteArrayView piece)>;
+using FileProducer = std::function<bool(const FileSink &sink)>;
+
+// Writes `path` whole or not at all: through a temporary file that replaces it only once every byte is
+// written and flushed to the disk. A save that cannot complete (a full disk, a quota, a file-size limit, a
+// read-only folder) fails with the system's own reason and leaves the old file byte for byte as it was.
+// A producer that gives up of its own accord passes its reason in `*producerError`.
+[[nodiscard]] Result<void> writeFileAtomically(
+    const QString &path, const FileProducer &produce, const QString *producerError = nullptr);
+
+} // namespace Toffee
