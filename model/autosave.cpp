@@ -1,16 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "autosave.h"
 
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <sys/stat.h>
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QJsonParseError>
 #include <QLockFile>
-#include <QSaveFile>
 #include <QStandardPaths>
 #include <QUuid>
 
+#include "fileio.h"
 #include "tooldocument.h"
 
 using namespace Qt::StringLiterals;
@@ -34,13 +40,83 @@ QString withSuffix(QString path, const QString &suffix)
     return path + suffix;
 }
 
+// Entries of `dir` matching `pattern` whatever they are (files, links, FIFOs, devices): each is checked
+// before anything reads it.
+QFileInfoList entries(const QDir &dir, const QString &pattern)
+{
+    return dir.entryInfoList(
+        { pattern }, QDir::Files | QDir::System | QDir::Hidden | QDir::NoDotAndDotDot, QDir::Name);
+}
+
 // Every file of session `id` but its lock: the copy, its .info, and any half-written temporary file QSaveFile
 // left as the process died.
 void removeSessionFiles(const QDir &dir, const QString &id)
 {
-    for (const QFileInfo &file : dir.entryInfoList({ id + u".*"_s }, QDir::Files)) {
+    for (const QFileInfo &file : entries(dir, id + u".*"_s)) {
         if (file.suffix() != u"lock")
             QFile::remove(file.filePath());
+    }
+}
+
+// A regular file itself, not a link to one: a recovery folder is Toffee's own, and a link in it was put
+// there by something else.
+bool isPlainFile(const QString &path)
+{
+    struct stat info
+    {
+    };
+    return ::lstat(QFile::encodeName(path).constData(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+// Where the edits belong, from the session's .info, checked like any input: a missing .info means a table
+// never saved; one that is not a small regular file holding a JSON object with a sane path is broken.
+bool readInfo(const QString &path, AutoSave::Session &session)
+{
+    struct stat info
+    {
+    };
+    if (::lstat(QFile::encodeName(path).constData(), &info) != 0)
+        return errno == ENOENT;
+    if (!S_ISREG(info.st_mode))
+        return false;
+    const auto data = readRegularFile(path, AutoSave::kMaxInfoBytes);
+    if (!data)
+        return false;
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(data.value(), &error);
+    if (error.error != QJsonParseError::NoError || !document.isObject())
+        return false;
+    const QJsonObject object = document.object();
+    const QJsonValue original = object.value(u"original_path"_s);
+    if (!original.isString() && !original.isUndefined())
+        return false;
+    const QString originalPath = original.toString();
+    if (originalPath.size() > AutoSave::kMaxPathChars
+        || (!originalPath.isEmpty() && !QDir::isAbsolutePath(originalPath))
+        || std::any_of(
+            originalPath.cbegin(), originalPath.cend(), [](QChar c) { return c.unicode() < 0x20; }))
+        return false;
+    const auto format = formatFromName(object.value(u"original_format"_s).toString());
+    if (!format && !originalPath.isEmpty())
+        return false;
+    session.originalPath = originalPath;
+    session.originalFormat = format.value_or(TableFormat::Json);
+    return true;
+}
+
+// Moves session `id`'s copy and .info (whatever they are; a link is moved, not followed) into the
+// quarantine folder, under a name no later session reuses.
+void quarantineFiles(const QDir &dir, const QString &id)
+{
+    const QString target = AutoSave::quarantineDirectory(dir.path());
+    QDir().mkpath(target);
+    const QString stamp = QDateTime::currentDateTimeUtc().toString(u"yyyyMMdd-HHmmss"_s);
+    for (const QFileInfo &file : entries(dir, id + u".*"_s)) {
+        if (file.suffix() == u"lock")
+            continue;
+        const QString to = target + u'/' + stamp + u'-' + file.fileName();
+        if (::rename(QFile::encodeName(file.filePath()).constData(), QFile::encodeName(to).constData()) != 0)
+            QFile::remove(file.filePath()); // never offered again, whatever happens
     }
 }
 
@@ -112,10 +188,11 @@ Result<void> AutoSave::saveNow()
     // Where the edits belong is written first: a copy is never on disk without it.
     const QJsonObject info { { u"original_path"_s, m_document->filePath() },
         { u"original_format"_s, formatSuffix(m_document->fileFormat()) } };
-    QSaveFile infoFile(path(".info"));
-    if (!infoFile.open(QIODevice::WriteOnly) || infoFile.write(QJsonDocument(info).toJson()) < 0
-        || !infoFile.commit())
-        return Error { infoFile.errorString(), 0, infoFile.fileName() };
+    const QByteArray infoText = QJsonDocument(info).toJson();
+    if (auto written
+        = writeFileAtomically(path(".info"), [&infoText](const FileSink &sink) { return sink(infoText); });
+        !written)
+        return written;
     return saveTableFile(tablePath(), m_document->table(), TableFormat::Json);
 }
 
@@ -127,35 +204,54 @@ void AutoSave::removeCopy()
     QFile::remove(path(".info"));
 }
 
-QList<AutoSave::Session> AutoSave::findRecoverable(const QString &directory)
+QString AutoSave::quarantineDirectory(const QString &directory)
+{
+    return directory + u"/quarantine"_s;
+}
+
+QList<AutoSave::Session> AutoSave::findRecoverable(const QString &directory, QStringList *quarantined)
 {
     QList<Session> sessions;
     const QDir dir(directory);
+    const auto moveAway = [&](const QString &id) {
+        quarantineFiles(dir, id);
+        if (quarantined)
+            quarantined->append(id);
+    };
+    // A lock that is not a plain file (a FIFO would block QLockFile's read) belongs to no Toffee.
+    for (const QFileInfo &lockInfo : entries(dir, u"*.lock"_s)) {
+        if (!isPlainFile(lockInfo.filePath())) {
+            moveAway(lockInfo.completeBaseName());
+            QFile::remove(lockInfo.filePath());
+        }
+    }
     // A session that died after taking its lock but before its first copy left a lock and perhaps an .info:
     // nothing to offer, so they go.
-    for (const QFileInfo &lockInfo : dir.entryInfoList({ u"*.lock"_s }, QDir::Files)) {
+    for (const QFileInfo &lockInfo : entries(dir, u"*.lock"_s)) {
         const QString id = lockInfo.completeBaseName();
-        if (QFileInfo::exists(dir.filePath(id + u".json"_s)))
+        if (QFileInfo(dir.filePath(id + u".json"_s)).isSymLink()
+            || QFileInfo::exists(dir.filePath(id + u".json"_s)))
             continue;
         const auto lock = lockFile(lockInfo.filePath());
         if (lock->tryLock(0))
             removeSessionFiles(dir, id); // and the lock, as `lock` goes
     }
-    const QFileInfoList copies = dir.entryInfoList({ u"*.json"_s }, QDir::Files, QDir::Time);
+    QFileInfoList copies = entries(dir, u"*.json"_s);
+    std::sort(copies.begin(), copies.end(), [](const QFileInfo &a, const QFileInfo &b) {
+        return a.fileTime(QFileDevice::FileModificationTime) > b.fileTime(QFileDevice::FileModificationTime);
+    });
     for (const QFileInfo &copy : copies) {
+        const QString id = copy.completeBaseName();
         std::shared_ptr<QLockFile> lock = lockFile(withSuffix(copy.filePath(), u".lock"_s));
         if (!lock->tryLock(0))
             continue; // its Toffee is alive (this one, or another), or another has claimed it
         Session session;
         session.tablePath = copy.filePath();
-        session.savedAt = copy.lastModified();
+        session.savedAt = copy.fileTime(QFileDevice::FileModificationTime);
         session.lock = std::move(lock);
-        QFile infoFile(withSuffix(copy.filePath(), u".info"_s));
-        if (infoFile.open(QIODevice::ReadOnly)) {
-            const QJsonObject info = QJsonDocument::fromJson(infoFile.readAll()).object();
-            session.originalPath = info.value(u"original_path"_s).toString();
-            session.originalFormat
-                = formatFromName(info.value(u"original_format"_s).toString()).value_or(TableFormat::Json);
+        if (!isPlainFile(copy.filePath()) || !readInfo(withSuffix(copy.filePath(), u".info"_s), session)) {
+            moveAway(id);
+            continue; // `lock` goes with the session, and removes the lock file
         }
         sessions.append(session);
     }
@@ -173,6 +269,14 @@ void AutoSave::discard(const Session &session)
     removeSessionFiles(copy.dir(), copy.completeBaseName());
     if (session.lock)
         session.lock->unlock(); // removes the lock file
+}
+
+void AutoSave::quarantine(const Session &session)
+{
+    const QFileInfo copy(session.tablePath);
+    quarantineFiles(copy.dir(), copy.completeBaseName());
+    if (session.lock)
+        session.lock->unlock();
 }
 
 } // namespace Toffee

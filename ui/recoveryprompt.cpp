@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "recoveryprompt.h"
 
+#include <QFileInfo>
+#include <QFontMetrics>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
@@ -21,12 +23,15 @@ enum class Choice { Recover, Discard, Later };
 Choice ask(MainWindow *window, const AutoSave::Session &session, const ToolTable &edits)
 {
     const QString when = QLocale().toString(session.savedAt, QLocale::ShortFormat);
+    // However long a path the copy names, the prompt stays a prompt.
+    const QString original
+        = QFontMetrics(window->font()).elidedText(session.originalPath, Qt::ElideMiddle, 560);
     QMessageBox box(QMessageBox::Question, MainWindow::tr("Recover Unsaved Edits"),
         session.originalPath.isEmpty()
             ? MainWindow::tr("Toffee stopped before a new table was saved. Its last copy is from %1.")
                   .arg(when)
             : MainWindow::tr("Toffee stopped before the edits to %1 were saved. Their last copy is from %2.")
-                  .arg(session.originalPath, when),
+                  .arg(original, when),
         QMessageBox::NoButton, window);
     box.setInformativeText(
         MainWindow::tr("The copy holds %1 tools. Recover puts it on top of the file as it is "
@@ -52,18 +57,32 @@ Choice ask(MainWindow *window, const AutoSave::Session &session, const ToolTable
 bool offerRecovery(MainWindow *window)
 {
     AutoSave *autoSave = window->autoSave();
-    for (const AutoSave::Session &session : AutoSave::findRecoverable(autoSave->directory())) {
-        const auto edits = AutoSave::load(session);
+    const QString directory = autoSave->directory();
+    // A recovery copy is input like any other: what cannot be read is moved aside (never offered again,
+    // never deleted), and the operator is told once, however many there were.
+    QStringList quarantined;
+    QList<std::pair<AutoSave::Session, ToolTable>> recoverable;
+    for (const AutoSave::Session &session : AutoSave::findRecoverable(directory, &quarantined)) {
+        auto edits = AutoSave::load(session);
         if (!edits) {
-            const auto answer = QMessageBox::warning(window, MainWindow::tr("Recover Unsaved Edits"),
-                MainWindow::tr("A copy of unsaved edits cannot be read: %1\nDiscard it?")
-                    .arg(edits.error().text()),
-                QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Ignore);
-            if (answer == QMessageBox::Discard)
-                AutoSave::discard(session);
+            AutoSave::quarantine(session);
+            quarantined.append(QFileInfo(session.tablePath).completeBaseName());
             continue;
         }
-        switch (ask(window, session, edits.value())) {
+        recoverable.append({ session, edits.takeValue() });
+    }
+    if (!quarantined.isEmpty()) {
+        QMessageBox box(QMessageBox::Warning, MainWindow::tr("Recover Unsaved Edits"),
+            MainWindow::tr("%n copies of unsaved edits could not be read, so they cannot be recovered.",
+                nullptr, int(quarantined.size())),
+            QMessageBox::Ok, window);
+        box.setInformativeText(
+            MainWindow::tr("They were moved to %1 and will not be offered again. Nothing else was changed.")
+                .arg(AutoSave::quarantineDirectory(directory)));
+        box.exec();
+    }
+    for (auto &[session, edits] : recoverable) {
+        switch (ask(window, session, edits)) {
         case Choice::Later:
             return false;
         case Choice::Discard:
@@ -73,7 +92,7 @@ bool offerRecovery(MainWindow *window)
             break;
         }
         const QString notice
-            = window->document()->recoverEdits(edits.value(), session.originalPath, session.originalFormat);
+            = window->document()->recoverEdits(edits, session.originalPath, session.originalFormat);
         // The old copy goes only once this session's own copy holds the edits.
         if (autoSave->saveNow())
             AutoSave::discard(session);

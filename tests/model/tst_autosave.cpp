@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // AutoSave: a copy of the unsaved edits exists exactly while there are unsaved edits, a living session's copy
 // is never offered, and what a dead session left is found, loaded, claimed once and discarded.
+#include <sys/stat.h>
+
 #include <QDir>
+#include <QElapsedTimer>
 #include <QLockFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include "autosave.h"
+#include "fulldisk.h"
 #include "testtables.h"
 #include "tooldocument.h"
 
@@ -167,6 +171,93 @@ private Q_SLOTS:
         QVERIFY2(failed.first().first().toString().contains(u"folder for unsaved edits"_s),
             qPrintable(failed.first().first().toString()));
         QVERIFY(!autoSave.saveNow().ok());
+    }
+
+    void quarantinesWhatItCannotTrust_data()
+    {
+        QTest::addColumn<QString>("garbage");
+        QTest::newRow(".info a link to /dev/zero") << u"info-zero"_s;
+        QTest::newRow(".info a FIFO") << u"info-fifo"_s;
+        QTest::newRow(".info not JSON") << u"info-garbled"_s;
+        QTest::newRow(".info with a 1 MB path") << u"info-long-path"_s;
+        QTest::newRow(".info with a relative path") << u"info-relative"_s;
+        QTest::newRow("copy a link to /dev/zero") << u"copy-zero"_s;
+        QTest::newRow("copy a FIFO") << u"copy-fifo"_s;
+        QTest::newRow("lock a FIFO") << u"lock-fifo"_s;
+    }
+    void quarantinesWhatItCannotTrust()
+    {
+        // Beside a good copy, one that is garbage: the good one is offered, the garbage is moved aside (never
+        // offered again, never deleted), and nothing blocks or reads without end.
+        QFETCH(QString, garbage);
+        QDir().mkpath(recovery());
+        const QString good = recovery() + u"/1-good.json"_s;
+        QVERIFY(saveTableFile(good, Test::awkwardTable(), TableFormat::Json).ok());
+        const QString bad = recovery() + u"/2-bad"_s;
+        const auto fifo = [](const QString &path) {
+            return ::mkfifo(QFile::encodeName(path).constData(), 0600) == 0;
+        };
+        const auto write = [](const QString &path, const QByteArray &data) {
+            QFile file(path);
+            return file.open(QIODevice::WriteOnly) && file.write(data) == data.size();
+        };
+        if (garbage.startsWith(u"copy"))
+            QVERIFY(garbage == u"copy-zero" ? QFile::link(u"/dev/zero"_s, bad + u".json"_s)
+                                            : fifo(bad + u".json"_s));
+        else
+            QVERIFY(saveTableFile(bad + u".json"_s, Test::awkwardTable(), TableFormat::Json).ok());
+        if (garbage == u"info-zero")
+            QVERIFY(QFile::link(u"/dev/zero"_s, bad + u".info"_s));
+        else if (garbage == u"info-fifo")
+            QVERIFY(fifo(bad + u".info"_s));
+        else if (garbage == u"info-garbled")
+            QVERIFY(write(bad + u".info"_s, "\x01\x02{{{"));
+        else if (garbage == u"info-long-path")
+            QVERIFY(write(bad + u".info"_s,
+                "{\"original_path\": \"/" + QByteArray(1 << 20, 'a') + "\", \"original_format\": \"json\"}"));
+        else if (garbage == u"info-relative")
+            QVERIFY(write(bad + u".info"_s, R"({"original_path": "tools.json", "original_format": "json"})"));
+        else if (garbage == u"lock-fifo")
+            QVERIFY(fifo(bad + u".lock"_s));
+
+        QElapsedTimer clock;
+        clock.start();
+        QStringList quarantined;
+        const auto sessions = AutoSave::findRecoverable(recovery(), &quarantined);
+        QVERIFY(clock.elapsed() < 5000);
+        QCOMPARE(sessions.size(), 1);
+        QCOMPARE(sessions.first().tablePath, good);
+        QCOMPARE(quarantined, QStringList { u"2-bad"_s });
+        const QStringList aside
+            = QDir(AutoSave::quarantineDirectory(recovery())).entryList(QDir::Files | QDir::System);
+        QVERIFY2(std::any_of(aside.cbegin(), aside.cend(),
+                     [](const QString &f) { return f.endsWith(u"-2-bad.json"_s); }),
+            qPrintable(aside.join(u' ')));
+        QVERIFY(!QFileInfo::exists(bad + u".json"_s) && !QFileInfo(bad + u".json"_s).isSymLink());
+        AutoSave::discard(sessions.first());
+        // Next start: nothing more to offer, nothing more to say.
+        quarantined.clear();
+        QVERIFY(AutoSave::findRecoverable(recovery(), &quarantined).isEmpty());
+        QVERIFY(quarantined.isEmpty());
+    }
+
+    void aFullDiskKeepsTheLastGoodCopy()
+    {
+        Test::FullDisk disk(512 * 1024);
+        ToolDocument document;
+        AutoSave autoSave(&document, disk.path(u"recovery"_s));
+        QVERIFY(document.addTool(Test::tool(1)).ok());
+        QVERIFY(autoSave.saveNow().ok());
+        const ToolTable first = document.table();
+        disk.fill();
+        for (int i = 2; i < 3000; ++i)
+            QVERIFY(document.addTool(Test::tool(i, 10.0, u"a description long enough to need room"_s)).ok());
+        const auto saved = autoSave.saveNow();
+        QVERIFY(!saved.ok());
+        QVERIFY2(saved.error().text().contains(disk.reason()), qPrintable(saved.error().text()));
+        const auto copy = loadTableFile(autoSave.tablePath());
+        QVERIFY2(copy.ok(), qPrintable(copy.error().text()));
+        QCOMPARE(copy.value(), first);
     }
 };
 

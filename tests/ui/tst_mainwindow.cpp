@@ -25,9 +25,11 @@
 
 #include "autosave.h"
 #include "exportdialog.h"
+#include "fulldisk.h"
 #include "mainwindow.h"
 #include "messageboxes.h"
 #include "recoveryprompt.h"
+#include "testtables.h"
 #include "tooldocument.h"
 #include "tooltablemodel.h"
 #include "tooltablepanel.h"
@@ -207,6 +209,90 @@ private Q_SLOTS:
         QCOMPARE(window.document()->table(), original);
         QCOMPARE(contents(), onDisk);
         window.document()->undoStack()->setClean(); // nothing to ask about on closing
+    }
+
+    void aSaveOnAFullDiskSaysSoAndKeepsTheFile()
+    {
+        // The operator edits a table on a disk that has filled up, and presses Save: the window says why it
+        // could not, the file is as it was, and the edits are still there, unsaved.
+        Test::FullDisk disk;
+        const QString path = disk.path(u"tools.json"_s);
+        QVERIFY(QFile::copy(kExample, path));
+        QFile::setPermissions(path, QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+        const QByteArray before = [&path] {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        }();
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openFile(path));
+        disk.fill();
+        for (int i = 0; i < 40; ++i) // more than the bytes a full disk could hold of it
+            window.findChild<QAction *>(u"actionAddTool"_s)->trigger();
+        QString text;
+        answerNextBox(QMessageBox::Ok, &text);
+        window.findChild<QAction *>(u"actionSave"_s)->trigger();
+        QVERIFY2(text.contains(disk.reason()) && text.contains(u"old file is unchanged"_s), qPrintable(text));
+        QVERIFY(!window.statusBar()->currentMessage().startsWith(u"Saved"_s));
+        QVERIFY(window.isWindowModified());
+        QCOMPARE(window.document()->table().size(), 46);
+        QFile after(path);
+        QVERIFY(after.open(QIODevice::ReadOnly));
+        QCOMPARE(after.readAll(), before);
+        window.document()->undoStack()->setClean();
+    }
+
+    void aRecoveryFolderFullOfGarbageIsToldOnce()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const QString recovery = window.autoSave()->directory();
+        QDir(recovery).removeRecursively();
+        QVERIFY(QDir().mkpath(recovery));
+        // 50 copies a crash or another program garbled, and one good copy whose edits belong to /dev/zero.
+        for (int i = 0; i < 50; ++i) {
+            QFile garbled(recovery + u"/%1-garbled.json"_s.arg(1000 + i));
+            QVERIFY(garbled.open(QIODevice::WriteOnly));
+            garbled.write("{\"format\": \"toffee-tool-table\", \"version\": 1, \"tools\": [{\"num");
+        }
+        ToolTable edits;
+        QVERIFY(edits.insert(Test::tool(5)).ok());
+        QVERIFY(saveTableFile(recovery + u"/7-device.json"_s, edits, TableFormat::Json).ok());
+        QFile info(recovery + u"/7-device.info"_s);
+        QVERIFY(info.open(QIODevice::WriteOnly));
+        info.write(R"({"original_path": "/dev/zero", "original_format": "json"})");
+        info.close();
+
+        // One warning for all fifty, then the good copy's question: Recover.
+        QString warning;
+        QString question;
+        QString notice;
+        answerNextBox(QMessageBox::Ok, &warning);
+        QTimer::singleShot(300, [&] {
+            answerNextBox(QMessageBox::NoButton, &question, u"recoverButton"_s);
+            QTimer::singleShot(300, [&] { answerNextBox(QMessageBox::Ok, &notice); });
+        });
+        QVERIFY(offerRecovery(&window));
+        QVERIFY2(warning.contains(u"50 copies"_s) && warning.contains(u"quarantine"_s), qPrintable(warning));
+        QVERIFY2(question.contains(u"/dev/zero"_s), qPrintable(question));
+        // /dev/zero is no table: the edits become a new table, never saved over a device.
+        QVERIFY2(notice.contains(u"does not load"_s), qPrintable(notice));
+        QCOMPARE(window.document()->table(), edits);
+        QVERIFY(window.document()->filePath().isEmpty());
+        QCOMPARE(QDir(AutoSave::quarantineDirectory(recovery)).entryList(QDir::Files).size(), 50);
+
+        // The next start has nothing to say.
+        bool asked = false;
+        QTimer::singleShot(0, [&asked] {
+            if (auto *box = QApplication::activeModalWidget()) {
+                asked = true;
+                box->close();
+            }
+        });
+        QVERIFY(!offerRecovery(&window));
+        QVERIFY(!asked);
+        window.document()->undoStack()->setClean();
     }
 
     void noticesAChangeOnDiskAndReloads()
