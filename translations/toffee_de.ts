@@ -100,20 +100,8 @@
         <translation>%1: lässt sich nicht öffnen: %2</translation>
     </message>
     <message>
-        <source>%1: the file is %2 MB, too large to be a tool table.</source>
-        <translation>%1: Die Datei ist %2 MB groß, zu groß für eine Werkzeugtabelle.</translation>
-    </message>
-    <message>
         <source>%1: cannot read: %2</source>
         <translation>%1: lässt sich nicht lesen: %2</translation>
-    </message>
-    <message>
-        <source>%1: cannot write: %2</source>
-        <translation>%1: lässt sich nicht schreiben: %2</translation>
-    </message>
-    <message>
-        <source>%1: saving failed, the old file is unchanged: %2</source>
-        <translation>%1: Speichern fehlgeschlagen, die alte Datei ist unverändert: %2</translation>
     </message>
     <message>
         <source>"%1" must be a whole number.</source>
@@ -347,6 +335,62 @@
         <source>%1 is too large: a controller takes at most eight digits before the decimal point.</source>
         <translation>%1 ist zu groß: Eine Steuerung nimmt höchstens acht Stellen vor dem Dezimalpunkt.</translation>
     </message>
+    <message>
+        <source>%1… (%2 characters)</source>
+        <translation>%1… (%2 Zeichen)</translation>
+    </message>
+    <message>
+        <source>%1… (%2 bytes)</source>
+        <translation>%1… (%2 Byte)</translation>
+    </message>
+    <message>
+        <source>it is a named pipe (FIFO), not a file; Toffee opens only regular files.</source>
+        <translation>Das ist eine benannte Pipe (FIFO), keine Datei; Toffee öffnet nur gewöhnliche Dateien.</translation>
+    </message>
+    <message>
+        <source>it is a device, not a file; Toffee opens only regular files.</source>
+        <translation>Das ist ein Gerät, keine Datei; Toffee öffnet nur gewöhnliche Dateien.</translation>
+    </message>
+    <message>
+        <source>it is a folder, not a file.</source>
+        <translation>Das ist ein Ordner, keine Datei.</translation>
+    </message>
+    <message>
+        <source>it is a socket, not a file; Toffee opens only regular files.</source>
+        <translation>Das ist ein Socket, keine Datei; Toffee öffnet nur gewöhnliche Dateien.</translation>
+    </message>
+    <message>
+        <source>it is not a regular file; Toffee opens only regular files.</source>
+        <translation>Das ist keine gewöhnliche Datei; Toffee öffnet nur gewöhnliche Dateien.</translation>
+    </message>
+    <message>
+        <source>no file name was given.</source>
+        <translation>Es wurde kein Dateiname angegeben.</translation>
+    </message>
+    <message>
+        <source>%1: the file is %2 MB; Toffee reads files of at most %3 MB.</source>
+        <translation>%1: Die Datei ist %2 MB groß; Toffee liest Dateien bis %3 MB.</translation>
+    </message>
+    <message>
+        <source>%1: cannot save: %2 The old file is unchanged.</source>
+        <translation>%1: Speichern nicht möglich: %2 Die alte Datei ist unverändert.</translation>
+    </message>
+    <message>
+        <source>%1: cannot save: %2 Nothing was written.</source>
+        <translation>%1: Speichern nicht möglich: %2 Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>the file could not be written</source>
+        <translation>die Datei ließ sich nicht schreiben</translation>
+    </message>
+    <message>
+        <source>the table would take more than %1 MB, more than Toffee reads back; shorten the notes or split the table.</source>
+        <translation>Die Tabelle bräuchte mehr als %1 MB, mehr als Toffee wieder einliest; kürzen Sie die Notizen oder teilen Sie die Tabelle.</translation>
+    </message>
+    <message>
+        <source>"%1": %2 is out of range; use %3 to %4.</source>
+        <translation>„%1“: %2 liegt außerhalb des Bereichs; verwenden Sie %3 bis %4.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -518,6 +562,10 @@
         <source>the machine is busy with %1; wait for it</source>
         <translation>die Maschine ist mit %1 beschäftigt; bitte warten</translation>
     </message>
+    <message>
+        <source>… (%1 bytes in all)</source>
+        <translation>… (insgesamt %1 Byte)</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::EditToolCommand</name>
@@ -589,10 +637,6 @@
     <message>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
     </message>
     <message>
         <source>Save the Offset Program</source>
@@ -854,10 +898,6 @@
 <context>
     <name>Toffee::MachineLink</name>
     <message>
-        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.</source>
-        <translation>Die Maschine hat auf „%1“ nicht innerhalb von %2 s geantwortet. Die Verbindung wurde geschlossen, weil eine späte Antwort für die des nächsten Befehls gehalten werden könnte. Verbinden Sie neu und prüfen Sie die Maschine, bevor Sie weitermachen.</translation>
-    </message>
-    <message>
         <source>The machine halted: %1</source>
         <translation>Die Maschine hat angehalten: %1</translation>
     </message>
@@ -881,6 +921,14 @@
         <source>The connection to the machine was lost: %1</source>
         <translation>Die Verbindung zur Maschine ging verloren: %1</translation>
     </message>
+    <message>
+        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
+        <translation>Die Maschine hat auf „%1“ nicht innerhalb von %2 s geantwortet. Die Verbindung wurde geschlossen, weil eine späte Antwort für die des nächsten Befehls gehalten werden könnte. Verbinden Sie erneut und prüfen Sie die Maschine, bevor Sie weitermachen.%3</translation>
+    </message>
+    <message>
+        <source>Meanwhile it printed %1 lines that were no answer; only the last %2 were kept. A machine that prints that much is not well: check its firmware and the cable.</source>
+        <translation>Inzwischen hat sie %1 Zeilen ausgegeben, die keine Antwort waren; nur die letzten %2 wurden behalten. Eine Maschine, die so viel ausgibt, ist nicht in Ordnung: Prüfen Sie ihre Firmware und das Kabel.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineSession</name>
@@ -903,10 +951,6 @@
     <message>
         <source>Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
         <translation>Werkzeug %1 ist keine Werkzeugnummer; verwenden Sie 0 bis 999999 (-1 für eine leere Spindel).</translation>
-    </message>
-    <message>
-        <source>The machine stayed busy (%1) too long to connect. Wait for it to finish, or stop it, then connect again.</source>
-        <translation>Die Maschine war zu lange beschäftigt (%1), um zu verbinden. Warten Sie, bis sie fertig ist, oder halten Sie sie an, und verbinden Sie dann erneut.</translation>
     </message>
     <message>
         <source>The machine answered but sent no status report; is this a Carvera?</source>
@@ -967,6 +1011,26 @@
     <message>
         <source>The machine did not confirm the unlock; check its state before you go on.</source>
         <translation>Die Maschine hat das Entsperren nicht bestätigt; prüfen Sie ihren Zustand, bevor Sie weitermachen.</translation>
+    </message>
+    <message>
+        <source>The machine printed %1 lines before its answer; only the last %2 were kept, and the result may have been among the others.</source>
+        <translation>Die Maschine hat vor ihrer Antwort %1 Zeilen ausgegeben; nur die letzten %2 wurden behalten, und das Ergebnis war vielleicht unter den anderen.</translation>
+    </message>
+    <message>
+        <source>The machine did not answer "%1" within the %2 s allowed for connecting. Check that it is on and the cable, then connect again (or allow longer).</source>
+        <translation>Die Maschine hat auf „%1“ nicht innerhalb der %2 s geantwortet, die zum Verbinden erlaubt sind. Prüfen Sie, ob sie eingeschaltet ist, und das Kabel; verbinden Sie dann erneut (oder erlauben Sie mehr Zeit).</translation>
+    </message>
+    <message>
+        <source>The machine did not finish connecting within the %1 s allowed: it answered too slowly, or not at all. Check that it is on and the cable, then connect again (or allow longer).</source>
+        <translation>Die Maschine hat die Verbindung nicht innerhalb der erlaubten %1 s hergestellt: Sie antwortete zu langsam oder gar nicht. Prüfen Sie, ob sie eingeschaltet ist, und das Kabel; verbinden Sie dann erneut (oder erlauben Sie mehr Zeit).</translation>
+    </message>
+    <message>
+        <source>The machine stayed busy (%1) for the %2 s allowed for connecting. Wait for it to finish, or stop it, then connect again.</source>
+        <translation>Die Maschine blieb während der %2 s, die zum Verbinden erlaubt sind, beschäftigt (%1). Warten Sie, bis sie fertig ist, oder halten Sie sie an, und verbinden Sie dann erneut.</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: "%1". Nothing was recorded; check the offsets on the machine before you cut.</source>
+        <translation>Der Korrekturbericht der Maschine (M493.4) enthält Werte, die keine Maschine haben kann: „%1“. Nichts wurde gespeichert; prüfen Sie die Korrekturen an der Maschine, bevor Sie schneiden.</translation>
     </message>
 </context>
 <context>
@@ -1258,18 +1322,20 @@ Zuerst speichern?</translation>
         <translation>&amp;Später</translation>
     </message>
     <message>
-        <source>A copy of unsaved edits cannot be read: %1
-Discard it?</source>
-        <translation>Eine Kopie ungesicherter Änderungen lässt sich nicht lesen: %1
-Verwerfen?</translation>
-    </message>
-    <message>
         <source>Unsaved edits are not protected against a crash until they are saved: %1</source>
         <translation>Ungesicherte Änderungen sind bis zum Speichern nicht gegen einen Absturz geschützt: %1</translation>
     </message>
     <message>
         <source>Recovered unsaved edits: review them, then save.</source>
         <translation>Ungesicherte Änderungen wiederhergestellt: prüfen, dann speichern.</translation>
+    </message>
+    <message>
+        <source>They were moved to %1 and will not be offered again. Nothing else was changed.</source>
+        <translation>Sie wurden nach %1 verschoben und werden nicht wieder angeboten. Sonst wurde nichts verändert.</translation>
+    </message>
+    <message>
+        <source>Some copies of unsaved edits could not be read (%1 in all), so they cannot be recovered.</source>
+        <translation>Einige Kopien ungesicherter Änderungen waren nicht lesbar (insgesamt %1); sie lassen sich nicht wiederherstellen.</translation>
     </message>
 </context>
 <context>
@@ -1548,16 +1614,16 @@ Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
         <translation>%1 mit %2 Baud</translation>
     </message>
     <message>
-        <source>%1 sent a line longer than %2 bytes; it was dropped.</source>
-        <translation>%1 hat eine Zeile mit mehr als %2 Bytes gesendet; sie wurde verworfen.</translation>
-    </message>
-    <message>
         <source>The port %1 went away (unplugged, or the machine was switched off).</source>
         <translation>Der Anschluss %1 ist verschwunden (ausgesteckt oder die Maschine ausgeschaltet).</translation>
     </message>
     <message>
         <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
         <translation>Der Anschluss %1 ist ausgefallen (%2); die Verbindung wurde geschlossen. Prüfen Sie das Kabel und verbinden Sie erneut.</translation>
+    </message>
+    <message>
+        <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
+        <translation>%1 hat eine Zeile mit mehr als %2 Byte gesendet; nur ihre ersten %2 Byte wurden behalten.</translation>
     </message>
 </context>
 <context>

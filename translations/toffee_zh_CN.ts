@@ -100,20 +100,8 @@
         <translation>%1：无法打开：%2</translation>
     </message>
     <message>
-        <source>%1: the file is %2 MB, too large to be a tool table.</source>
-        <translation>%1：文件大小为 %2 MB，不可能是刀具表。</translation>
-    </message>
-    <message>
         <source>%1: cannot read: %2</source>
         <translation>%1：无法读取：%2</translation>
-    </message>
-    <message>
-        <source>%1: cannot write: %2</source>
-        <translation>%1：无法写入：%2</translation>
-    </message>
-    <message>
-        <source>%1: saving failed, the old file is unchanged: %2</source>
-        <translation>%1：保存失败，原文件未改变：%2</translation>
     </message>
     <message>
         <source>"%1" must be a whole number.</source>
@@ -347,6 +335,62 @@
         <source>%1 is too large: a controller takes at most eight digits before the decimal point.</source>
         <translation>%1 太大：控制器在小数点前最多接受八位数字。</translation>
     </message>
+    <message>
+        <source>%1… (%2 characters)</source>
+        <translation>%1…（共 %2 个字符）</translation>
+    </message>
+    <message>
+        <source>%1… (%2 bytes)</source>
+        <translation>%1…（共 %2 字节）</translation>
+    </message>
+    <message>
+        <source>it is a named pipe (FIFO), not a file; Toffee opens only regular files.</source>
+        <translation>这是命名管道（FIFO），不是文件；Toffee 只打开普通文件。</translation>
+    </message>
+    <message>
+        <source>it is a device, not a file; Toffee opens only regular files.</source>
+        <translation>这是设备，不是文件；Toffee 只打开普通文件。</translation>
+    </message>
+    <message>
+        <source>it is a folder, not a file.</source>
+        <translation>这是文件夹，不是文件。</translation>
+    </message>
+    <message>
+        <source>it is a socket, not a file; Toffee opens only regular files.</source>
+        <translation>这是套接字，不是文件；Toffee 只打开普通文件。</translation>
+    </message>
+    <message>
+        <source>it is not a regular file; Toffee opens only regular files.</source>
+        <translation>这不是普通文件；Toffee 只打开普通文件。</translation>
+    </message>
+    <message>
+        <source>no file name was given.</source>
+        <translation>没有给出文件名。</translation>
+    </message>
+    <message>
+        <source>%1: the file is %2 MB; Toffee reads files of at most %3 MB.</source>
+        <translation>%1：文件大小为 %2 MB；Toffee 最多读取 %3 MB 的文件。</translation>
+    </message>
+    <message>
+        <source>%1: cannot save: %2 The old file is unchanged.</source>
+        <translation>%1：无法保存：%2 旧文件保持不变。</translation>
+    </message>
+    <message>
+        <source>%1: cannot save: %2 Nothing was written.</source>
+        <translation>%1：无法保存：%2 未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>the file could not be written</source>
+        <translation>无法写入文件</translation>
+    </message>
+    <message>
+        <source>the table would take more than %1 MB, more than Toffee reads back; shorten the notes or split the table.</source>
+        <translation>该表将超过 %1 MB，超出 Toffee 能读回的大小；请缩短备注或拆分表格。</translation>
+    </message>
+    <message>
+        <source>"%1": %2 is out of range; use %3 to %4.</source>
+        <translation>“%1”：%2 超出范围；请使用 %3 到 %4。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -518,6 +562,10 @@
         <source>the machine is busy with %1; wait for it</source>
         <translation>机床正忙于 %1；请等待</translation>
     </message>
+    <message>
+        <source>… (%1 bytes in all)</source>
+        <translation>…（共 %1 字节）</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::EditToolCommand</name>
@@ -589,10 +637,6 @@
     <message>
         <source>Cannot export</source>
         <translation>无法导出</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
     </message>
     <message>
         <source>Save the Offset Program</source>
@@ -854,10 +898,6 @@
 <context>
     <name>Toffee::MachineLink</name>
     <message>
-        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.</source>
-        <translation>机床在 %2 秒内没有回应“%1”。连接已关闭，因为迟到的回应可能被当成下一条命令的回应。请重新连接，并在继续之前检查机床。</translation>
-    </message>
-    <message>
         <source>The machine halted: %1</source>
         <translation>机床已停机：%1</translation>
     </message>
@@ -881,6 +921,14 @@
         <source>The connection to the machine was lost: %1</source>
         <translation>与机床的连接丢失：%1</translation>
     </message>
+    <message>
+        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
+        <translation>机器未在 %2 秒内回应“%1”。连接已关闭，因为迟到的回应可能被当作下一条命令的回应。请重新连接，并在继续之前检查机器。%3</translation>
+    </message>
+    <message>
+        <source>Meanwhile it printed %1 lines that were no answer; only the last %2 were kept. A machine that prints that much is not well: check its firmware and the cable.</source>
+        <translation>其间它输出了 %1 行非回应内容；只保留了最后 %2 行。输出如此之多的机器不正常：请检查其固件和电缆。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineSession</name>
@@ -903,10 +951,6 @@
     <message>
         <source>Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
         <translation>刀具 %1 不是有效刀具号；请使用 0 到 999999（空主轴为 -1）。</translation>
-    </message>
-    <message>
-        <source>The machine stayed busy (%1) too long to connect. Wait for it to finish, or stop it, then connect again.</source>
-        <translation>机床忙碌（%1）时间过长，无法连接。请等待其完成或将其停止，然后重新连接。</translation>
     </message>
     <message>
         <source>The machine answered but sent no status report; is this a Carvera?</source>
@@ -967,6 +1011,26 @@
     <message>
         <source>The machine did not confirm the unlock; check its state before you go on.</source>
         <translation>机床未确认解锁；继续之前请检查其状态。</translation>
+    </message>
+    <message>
+        <source>The machine printed %1 lines before its answer; only the last %2 were kept, and the result may have been among the others.</source>
+        <translation>机器在回应之前输出了 %1 行；只保留了最后 %2 行，结果可能在其余行中。</translation>
+    </message>
+    <message>
+        <source>The machine did not answer "%1" within the %2 s allowed for connecting. Check that it is on and the cable, then connect again (or allow longer).</source>
+        <translation>机器未在连接允许的 %2 秒内回应“%1”。请检查机器是否开启以及电缆，然后重新连接（或允许更长时间）。</translation>
+    </message>
+    <message>
+        <source>The machine did not finish connecting within the %1 s allowed: it answered too slowly, or not at all. Check that it is on and the cable, then connect again (or allow longer).</source>
+        <translation>机器未在允许的 %1 秒内完成连接：回应太慢或没有回应。请检查机器是否开启以及电缆，然后重新连接（或允许更长时间）。</translation>
+    </message>
+    <message>
+        <source>The machine stayed busy (%1) for the %2 s allowed for connecting. Wait for it to finish, or stop it, then connect again.</source>
+        <translation>在连接允许的 %2 秒内机器一直忙碌（%1）。请等待其完成或将其停止，然后重新连接。</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: "%1". Nothing was recorded; check the offsets on the machine before you cut.</source>
+        <translation>机器的偏置报告（M493.4）含有任何机器都不可能有的数值：“%1”。未记录任何内容；切削前请在机器上检查偏置。</translation>
     </message>
 </context>
 <context>
@@ -1258,18 +1322,20 @@ Save them first?</source>
         <translation>稍后(&amp;L)</translation>
     </message>
     <message>
-        <source>A copy of unsaved edits cannot be read: %1
-Discard it?</source>
-        <translation>无法读取未保存修改的副本：%1
-要放弃它吗？</translation>
-    </message>
-    <message>
         <source>Unsaved edits are not protected against a crash until they are saved: %1</source>
         <translation>在保存之前，未保存的修改不受崩溃保护：%1</translation>
     </message>
     <message>
         <source>Recovered unsaved edits: review them, then save.</source>
         <translation>已恢复未保存的修改：请检查后保存。</translation>
+    </message>
+    <message>
+        <source>They were moved to %1 and will not be offered again. Nothing else was changed.</source>
+        <translation>它们已被移至 %1，不会再次提供。其他内容均未更改。</translation>
+    </message>
+    <message>
+        <source>Some copies of unsaved edits could not be read (%1 in all), so they cannot be recovered.</source>
+        <translation>有些未保存修改的副本无法读取（共 %1 个），因此无法恢复。</translation>
     </message>
 </context>
 <context>
@@ -1548,16 +1614,16 @@ Sends: M493.2 T%1, then M493.3 Z%2</source>
         <translation>%1，%2 波特</translation>
     </message>
     <message>
-        <source>%1 sent a line longer than %2 bytes; it was dropped.</source>
-        <translation>%1 发送了超过 %2 字节的行；已丢弃。</translation>
-    </message>
-    <message>
         <source>The port %1 went away (unplugged, or the machine was switched off).</source>
         <translation>端口 %1 已消失（被拔出，或机床已关机）。</translation>
     </message>
     <message>
         <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
         <translation>端口 %1 出错（%2）；连接已关闭。请检查线缆后重新连接。</translation>
+    </message>
+    <message>
+        <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
+        <translation>%1 发送了超过 %2 字节的一行；只保留了其前 %2 字节。</translation>
     </message>
 </context>
 <context>

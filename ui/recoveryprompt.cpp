@@ -73,8 +73,9 @@ bool offerRecovery(MainWindow *window)
     }
     if (!quarantined.isEmpty()) {
         QMessageBox box(QMessageBox::Warning, MainWindow::tr("Recover Unsaved Edits"),
-            MainWindow::tr("%n copies of unsaved edits could not be read, so they cannot be recovered.",
-                nullptr, int(quarantined.size())),
+            MainWindow::tr("Some copies of unsaved edits could not be read (%1 in all), so they cannot be "
+                           "recovered.")
+                .arg(quarantined.size()),
             QMessageBox::Ok, window);
         box.setInformativeText(
             MainWindow::tr("They were moved to %1 and will not be offered again. Nothing else was changed.")

@@ -38,7 +38,7 @@ Options:
   --to FORMAT                convert: the output format (json, tbl, csv)
   --units mm|in              the units of a LinuxCNC .tbl file, which does not record them (default mm)
   --table FILE               probe, change-tool: record the measured TLO and its time in FILE
-  --timeout S                give up on any command after S seconds (default: 5, 120 for motion)
+  --timeout S                give up on connecting, or on any command, after S seconds (default: 5, 120 for motion)
   --help                     this text
 
 Exit codes: 0 success, 2 bad input or usage, 3 broken tool detected, 4 machine error, alarm or program error,
