@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <sys/stat.h>
+
 #include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QHeaderView>
 #include <QJsonDocument>
@@ -240,6 +243,24 @@ private Q_SLOTS:
         QVERIFY(after.open(QIODevice::ReadOnly));
         QCOMPARE(after.readAll(), before);
         window.document()->undoStack()->setClean();
+    }
+
+    void aFifoInTheTablesPlaceIsRefusedAtOnce()
+    {
+        // `toffee f.json` with a FIFO once blocked before any window appeared.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"f.json"_s);
+        QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+        MainWindow window;
+        window.show();
+        QString text;
+        answerNextBox(QMessageBox::Ok, &text);
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(!window.openFile(path));
+        QVERIFY(clock.elapsed() < 5000);
+        QVERIFY2(text.contains(u"named pipe (FIFO)"_s) && text.contains(path), qPrintable(text));
+        QVERIFY(window.document()->table().isEmpty());
     }
 
     void aRecoveryFolderFullOfGarbageIsToldOnce()
