@@ -2,8 +2,6 @@
 // toffee-cli against files a hostile environment hands it, each run under a memory limit (ulimit -v): a
 // reader that sized its memory by the file instead of the table fails the suite here, not the machine. And
 // a full disk: the old file stays byte for byte, and the exit code and the message say why.
-#include <sys/stat.h>
-
 #include <QElapsedTimer>
 #include <QFile>
 #include <QProcess>
@@ -11,6 +9,7 @@
 #include <QTest>
 
 #include "fulldisk.h"
+#include "specialfiles.h"
 
 using namespace Qt::StringLiterals;
 
@@ -89,29 +88,13 @@ private:
     QTemporaryDir m_dir;
 
 private Q_SLOTS:
-    void specialFilesAreRefusedByName_data()
-    {
-        QTest::addColumn<QString>("kind");
-        QTest::addColumn<QString>("expected");
-        QTest::newRow("FIFO") << u"fifo"_s << u"named pipe (FIFO)"_s;
-        QTest::newRow("link to /dev/zero") << u"zero"_s << u"device"_s;
-        QTest::newRow("link to /dev/urandom") << u"urandom"_s << u"device"_s;
-        QTest::newRow("symbolic link loop") << u"loop"_s << u"symbolic links"_s;
-        QTest::newRow("folder") << u"folder"_s << u"folder"_s;
-    }
+    void specialFilesAreRefusedByName_data() { Toffee::Test::addSpecialFileRows(); }
     void specialFilesAreRefusedByName()
     {
         QFETCH(QString, kind);
         QFETCH(QString, expected);
         const QString path = m_dir.filePath(kind + u".json"_s);
-        if (kind == u"fifo")
-            QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
-        else if (kind == u"zero" || kind == u"urandom")
-            QVERIFY(QFile::link(u"/dev/"_s + kind, path));
-        else if (kind == u"loop")
-            QVERIFY(QFile::link(path, path));
-        else
-            QVERIFY(QDir().mkpath(path));
+        QVERIFY(Toffee::Test::makeSpecialFile(kind, path));
         for (const QString &command : { u"show"_s, u"simulate"_s }) {
             const Run run = command == u"show"_s ? cli({ command, path }, 10000)
                                                  : cli({ command, u"--dialect"_s, u"fanuc"_s, path }, 10000);

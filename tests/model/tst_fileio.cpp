@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Files as a hostile environment makes them: special files in a table's place, a disk that fills, a table too
 // large to read back, tokens of megabytes. Nothing blocks, nothing is lost, no message quotes megabytes.
-#include <sys/stat.h>
-
 #include <QElapsedTimer>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include "fileio.h"
 #include "fulldisk.h"
+#include "specialfiles.h"
 #include "tablefile.h"
 #include "testtables.h"
 #include "textparsing.h"
@@ -42,31 +41,13 @@ private:
     QTemporaryDir m_dir;
 
 private Q_SLOTS:
-    void refusesWhatIsNotARegularFile_data()
-    {
-        QTest::addColumn<QString>("kind");
-        QTest::addColumn<QString>("expected");
-        QTest::newRow("FIFO") << u"fifo"_s << u"named pipe (FIFO)"_s;
-        QTest::newRow("link to /dev/zero") << u"zero"_s << u"device"_s;
-        QTest::newRow("folder") << u"folder"_s << u"folder"_s;
-        QTest::newRow("link loop") << u"loop"_s << u"symbolic links"_s;
-        QTest::newRow("dangling link") << u"dangling"_s << u"No such file"_s;
-    }
+    void refusesWhatIsNotARegularFile_data() { Toffee::Test::addSpecialFileRows(); }
     void refusesWhatIsNotARegularFile()
     {
         QFETCH(QString, kind);
         QFETCH(QString, expected);
         const QString path = m_dir.filePath(kind + u".json"_s);
-        if (kind == u"fifo")
-            QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
-        else if (kind == u"zero")
-            QVERIFY(QFile::link(u"/dev/zero"_s, path));
-        else if (kind == u"folder")
-            QVERIFY(QDir().mkpath(path));
-        else if (kind == u"loop")
-            QVERIFY(QFile::link(path, path));
-        else
-            QVERIFY(QFile::link(m_dir.filePath(u"nothing-here"_s), path));
+        QVERIFY(Toffee::Test::makeSpecialFile(kind, path));
         QElapsedTimer clock;
         clock.start();
         const auto read = loadTableFile(path);
