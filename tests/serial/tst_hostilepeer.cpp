@@ -1,24 +1,38 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // toffee-cli against a machine that misbehaves. The test opens a real pseudo-terminal and plays the machine
 // on its master side; the real toffee-cli runs as a child process on the slave. Every run has a hard time
-// limit (killed and failed beyond it), and its peak memory is read from the kernel (wait4's ru_maxrss).
+// limit (killed and failed beyond it), and its peak memory is read from the kernel (/proc/PID/status VmHWM,
+// polled while it runs).
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <fcntl.h>
 #include <poll.h>
+#include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <termios.h>
 #include <unistd.h>
 
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QTemporaryFile>
 #include <QTest>
 
 using namespace Qt::StringLiterals;
 
 namespace {
+
+// The bound on toffee-cli's peak memory. Under AddressSanitizer the program also carries shadow memory and
+// the sanitizer's allocator; its quarantine of freed memory (256 MB by default) is made small for the child,
+// and the bound allows for the rest. The plain build is held to 100 MB.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr long kPeakBoundKb = 200 * 1024;
+constexpr bool kUnderAsan = true;
+#else
+constexpr long kPeakBoundKb = 100 * 1024;
+constexpr bool kUnderAsan = false;
+#endif
 
 // The machine, played by the test: the Carvera's strings (CARVERA.md), with a misbehaviour or two.
 class PtyMachine
@@ -226,6 +240,11 @@ CliRun runCli(const QStringList &arguments, PtyMachine &machine, int limitMs)
     clock.start();
     const pid_t pid = ::fork();
     if (pid == 0) {
+        if (kUnderAsan) {
+            const char *given = std::getenv("ASAN_OPTIONS");
+            const std::string options = std::string(given ? given : "") + ":quarantine_size_mb=1";
+            ::setenv("ASAN_OPTIONS", options.c_str(), 1);
+        }
         ::dup2(out.handle(), STDOUT_FILENO);
         ::dup2(err.handle(), STDERR_FILENO);
         ::execv(program.constData(), argv.data());
@@ -237,8 +256,29 @@ CliRun runCli(const QStringList &arguments, PtyMachine &machine, int limitMs)
     }
     int status = 0;
     rusage usage {};
+    // The peak is read from /proc/PID/status (VmHWM) while the program runs, once it is the program: wait4's
+    // ru_maxrss would also count the copy of this test process that fork() made before exec().
+    const QByteArray proc = "/proc/" + QByteArray::number(pid);
+    const QByteArray exe = QFileInfo(QString::fromLocal8Bit(program)).canonicalFilePath().toLocal8Bit();
+    QElapsedTimer sincePoll;
+    sincePoll.start();
+    long peakKb = 0;
     while (true) {
         machine.step(2);
+        if (sincePoll.elapsed() >= 5) {
+            sincePoll.restart();
+            char target[4096];
+            const ssize_t n = ::readlink(QByteArray(proc + "/exe").constData(), target, sizeof target - 1);
+            if (n > 0 && QByteArray(target, n) == exe) {
+                QFile statusFile(QString::fromLatin1(QByteArray(proc + "/status")));
+                if (statusFile.open(QIODevice::ReadOnly)) {
+                    for (const QByteArray &line : statusFile.readAll().split('\n')) {
+                        if (line.startsWith("VmHWM:"))
+                            peakKb = std::max(peakKb, line.mid(6).trimmed().split(' ').value(0).toLong());
+                    }
+                }
+            }
+        }
         const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
         if (done == pid)
             break;
@@ -250,7 +290,7 @@ CliRun runCli(const QStringList &arguments, PtyMachine &machine, int limitMs)
         }
     }
     run.elapsedMs = clock.elapsed();
-    run.peakRssKb = usage.ru_maxrss;
+    run.peakRssKb = peakKb;
     run.exitCode = !run.overran && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     out.seek(0);
     err.seek(0);
@@ -298,7 +338,7 @@ private Q_SLOTS:
         qInfo("flood of %lld lines: %s", machine.flooded(), qPrintable(describe(run)));
         QVERIFY2(!run.overran, qPrintable(describe(run)));
         QCOMPARE(machine.flooded(), machine.floodLines); // the CLI read all of it
-        QVERIFY2(run.peakRssKb < 100 * 1024, qPrintable(describe(run)));
+        QVERIFY2(run.peakRssKb > 0 && run.peakRssKb < kPeakBoundKb, qPrintable(describe(run)));
         QVERIFY2(run.exitCode == 5, qPrintable(describe(run)));
         QVERIFY2(run.elapsedMs < 20000, qPrintable(describe(run))); // its 15 s, and a little
         QVERIFY2(run.err.contains("did not answer \"M491\" within 15.0 s"), qPrintable(describe(run)));
@@ -314,7 +354,7 @@ private Q_SLOTS:
         qInfo("%s", qPrintable(describe(run)));
         QVERIFY2(run.exitCode == 0, qPrintable(describe(run)));
         QVERIFY2(run.out.contains("T2: TLO -33.388 mm"), qPrintable(describe(run)));
-        QVERIFY2(run.peakRssKb < 100 * 1024, qPrintable(describe(run)));
+        QVERIFY2(run.peakRssKb > 0 && run.peakRssKb < kPeakBoundKb, qPrintable(describe(run)));
     }
 
     void repliesSplitAnywhereReadTheSame_data()
