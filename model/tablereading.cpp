@@ -13,7 +13,7 @@ namespace {
 
 // Reserving for every line of a file would size memory by the file, not the table: up to this many, then
 // grow.
-constexpr qsizetype kMaxReserved = 65536;
+constexpr qsizetype kMaxReserved = 131072; // 18 MB of tools at most, reserved for a file of as many lines
 
 QString duplicateMessage(int number, int line)
 {
