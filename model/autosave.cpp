@@ -13,6 +13,7 @@
 #include <QJsonObject>
 #include <QJsonParseError>
 #include <QLockFile>
+#include <QSet>
 #include <QStandardPaths>
 #include <QUuid>
 
@@ -44,8 +45,8 @@ QString withSuffix(QString path, const QString &suffix)
 // before anything reads it.
 QFileInfoList entries(const QDir &dir, const QString &pattern)
 {
-    return dir.entryInfoList(
-        { pattern }, QDir::Files | QDir::System | QDir::Hidden | QDir::NoDotAndDotDot, QDir::Name);
+    return dir.entryInfoList({ pattern },
+        QDir::Files | QDir::Dirs | QDir::System | QDir::Hidden | QDir::NoDotAndDotDot, QDir::Name);
 }
 
 // Every file of session `id` but its lock: the copy, its .info, and any half-written temporary file QSaveFile
@@ -92,7 +93,8 @@ bool readInfo(const QString &path, AutoSave::Session &session)
         return false;
     const QString originalPath = original.toString();
     if (originalPath.size() > AutoSave::kMaxPathChars
-        || (!originalPath.isEmpty() && !QDir::isAbsolutePath(originalPath))
+        || (!originalPath.isEmpty()
+            && (!QDir::isAbsolutePath(originalPath) || QDir::cleanPath(originalPath) != originalPath))
         || std::any_of(
             originalPath.cbegin(), originalPath.cend(), [](QChar c) { return c.unicode() < 0x20; }))
         return false;
@@ -104,20 +106,30 @@ bool readInfo(const QString &path, AutoSave::Session &session)
     return true;
 }
 
-// Moves session `id`'s copy and .info (whatever they are; a link is moved, not followed) into the
-// quarantine folder, under a name no later session reuses.
-void quarantineFiles(const QDir &dir, const QString &id)
+// Moves session `id`'s copy and .info (whatever they are, folders too; a link is moved, not followed), and
+// its lock when `withLock`, into the quarantine folder under a name no later session reuses. Nothing is ever
+// deleted here: when the quarantine folder cannot be made or a move fails, what is left stays where it is,
+// and the answer is false.
+bool quarantineFiles(const QDir &dir, const QString &id, bool withLock = false)
 {
     const QString target = AutoSave::quarantineDirectory(dir.path());
-    QDir().mkpath(target);
+    struct stat info
+    {
+    };
+    if (!QDir().mkpath(target) || ::lstat(QFile::encodeName(target).constData(), &info) != 0
+        || !S_ISDIR(info.st_mode))
+        return false;
     const QString stamp = QDateTime::currentDateTimeUtc().toString(u"yyyyMMdd-HHmmss"_s);
+    bool moved = true;
     for (const QFileInfo &file : entries(dir, id + u".*"_s)) {
-        if (file.suffix() == u"lock")
+        if (file.suffix() == u"lock" && !withLock)
             continue;
         const QString to = target + u'/' + stamp + u'-' + file.fileName();
-        if (::rename(QFile::encodeName(file.filePath()).constData(), QFile::encodeName(to).constData()) != 0)
-            QFile::remove(file.filePath()); // never offered again, whatever happens
+        moved = moved
+            && ::rename(QFile::encodeName(file.filePath()).constData(), QFile::encodeName(to).constData())
+                == 0;
     }
+    return moved;
 }
 
 } // namespace
@@ -209,27 +221,32 @@ QString AutoSave::quarantineDirectory(const QString &directory)
     return directory + u"/quarantine"_s;
 }
 
-QList<AutoSave::Session> AutoSave::findRecoverable(const QString &directory, QStringList *quarantined)
+QList<AutoSave::Session> AutoSave::findRecoverable(
+    const QString &directory, QStringList *quarantined, QStringList *unmovable)
 {
     QList<Session> sessions;
     const QDir dir(directory);
-    const auto moveAway = [&](const QString &id) {
-        quarantineFiles(dir, id);
-        if (quarantined)
-            quarantined->append(id);
+    QSet<QString> leftAlone; // sessions whose files could not be moved: nothing more is done to them
+    const auto moveAway = [&](const QString &id, bool withLock) {
+        if (quarantineFiles(dir, id, withLock)) {
+            if (quarantined)
+                quarantined->append(id);
+            return;
+        }
+        leftAlone.insert(id);
+        if (unmovable)
+            unmovable->append(id);
     };
     // A lock that is not a plain file (a FIFO would block QLockFile's read) belongs to no Toffee.
     for (const QFileInfo &lockInfo : entries(dir, u"*.lock"_s)) {
-        if (!isPlainFile(lockInfo.filePath())) {
-            moveAway(lockInfo.completeBaseName());
-            QFile::remove(lockInfo.filePath());
-        }
+        if (!isPlainFile(lockInfo.filePath()))
+            moveAway(lockInfo.completeBaseName(), true);
     }
     // A session that died after taking its lock but before its first copy left a lock and perhaps an .info:
     // nothing to offer, so they go.
     for (const QFileInfo &lockInfo : entries(dir, u"*.lock"_s)) {
         const QString id = lockInfo.completeBaseName();
-        if (QFileInfo(dir.filePath(id + u".json"_s)).isSymLink()
+        if (leftAlone.contains(id) || QFileInfo(dir.filePath(id + u".json"_s)).isSymLink()
             || QFileInfo::exists(dir.filePath(id + u".json"_s)))
             continue;
         const auto lock = lockFile(lockInfo.filePath());
@@ -242,6 +259,8 @@ QList<AutoSave::Session> AutoSave::findRecoverable(const QString &directory, QSt
     });
     for (const QFileInfo &copy : copies) {
         const QString id = copy.completeBaseName();
+        if (leftAlone.contains(id))
+            continue;
         std::shared_ptr<QLockFile> lock = lockFile(withSuffix(copy.filePath(), u".lock"_s));
         if (!lock->tryLock(0))
             continue; // its Toffee is alive (this one, or another), or another has claimed it
@@ -250,7 +269,7 @@ QList<AutoSave::Session> AutoSave::findRecoverable(const QString &directory, QSt
         session.savedAt = copy.fileTime(QFileDevice::FileModificationTime);
         session.lock = std::move(lock);
         if (!isPlainFile(copy.filePath()) || !readInfo(withSuffix(copy.filePath(), u".info"_s), session)) {
-            moveAway(id);
+            moveAway(id, false);
             continue; // `lock` goes with the session, and removes the lock file
         }
         sessions.append(session);
@@ -271,12 +290,13 @@ void AutoSave::discard(const Session &session)
         session.lock->unlock(); // removes the lock file
 }
 
-void AutoSave::quarantine(const Session &session)
+bool AutoSave::quarantine(const Session &session)
 {
     const QFileInfo copy(session.tablePath);
-    quarantineFiles(copy.dir(), copy.completeBaseName());
+    const bool moved = quarantineFiles(copy.dir(), copy.completeBaseName());
     if (session.lock)
         session.lock->unlock();
+    return moved;
 }
 
 } // namespace Toffee

@@ -55,17 +55,19 @@ public:
 
     // The copies that processes which died left in `directory`, newest first, each claimed. What a process
     // that died before its first copy left (a lock, an .info) is removed. The folder is input like any other:
-    // a copy or .info that is not a plain regular file, an .info that is too large or does not say where the
-    // edits belong, is moved into quarantineDirectory() (never offered again, never deleted) and its name
-    // added to `*quarantined`.
+    // a copy, .info or lock that is not a plain regular file, an .info that is too large or does not say
+    // where the edits belong, is moved into quarantineDirectory() (never offered again) and its name added to
+    // `*quarantined`. Nothing is ever deleted: a session whose files cannot be moved (the quarantine folder
+    // cannot be made, a move fails) is left as it is, named in `*unmovable`.
     [[nodiscard]] static QList<Session> findRecoverable(
-        const QString &directory, QStringList *quarantined = nullptr);
+        const QString &directory, QStringList *quarantined = nullptr, QStringList *unmovable = nullptr);
     [[nodiscard]] static Result<ToolTable> load(const Session &session);
     // Deletes a recovered or unwanted copy.
     static void discard(const Session &session);
     // Moves a copy that cannot be recovered, with its .info, out of the way: into quarantineDirectory(),
     // where it is never offered again but stays for someone to look at.
-    static void quarantine(const Session &session);
+    // False when they could not be moved: they are then left where they were.
+    static bool quarantine(const Session &session);
     [[nodiscard]] static QString quarantineDirectory(const QString &directory);
 
     static constexpr qint64 kMaxInfoBytes = 64 * 1024;

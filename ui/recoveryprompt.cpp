@@ -61,25 +61,35 @@ bool offerRecovery(MainWindow *window)
     // A recovery copy is input like any other: what cannot be read is moved aside (never offered again,
     // never deleted), and the operator is told once, however many there were.
     QStringList quarantined;
+    QStringList unmovable;
     QList<std::pair<AutoSave::Session, ToolTable>> recoverable;
-    for (const AutoSave::Session &session : AutoSave::findRecoverable(directory, &quarantined)) {
+    for (const AutoSave::Session &session : AutoSave::findRecoverable(directory, &quarantined, &unmovable)) {
         auto edits = AutoSave::load(session);
         if (!edits) {
-            AutoSave::quarantine(session);
-            quarantined.append(QFileInfo(session.tablePath).completeBaseName());
+            (AutoSave::quarantine(session) ? quarantined : unmovable)
+                .append(QFileInfo(session.tablePath).completeBaseName());
             continue;
         }
         recoverable.append({ session, edits.takeValue() });
     }
-    if (!quarantined.isEmpty()) {
+    if (!quarantined.isEmpty() || !unmovable.isEmpty()) {
+        QStringList where;
+        if (!quarantined.isEmpty())
+            where << MainWindow::tr("Copies moved to %2, never to be offered again: %1.")
+                         .arg(quarantined.size())
+                         .arg(AutoSave::quarantineDirectory(directory));
+        if (!unmovable.isEmpty())
+            where << MainWindow::tr(
+                "Copies that could not be moved to %2 and were left, untouched, in %3 (look at "
+                "them there, or remove them by hand): %1.")
+                         .arg(unmovable.size())
+                         .arg(AutoSave::quarantineDirectory(directory), directory);
         QMessageBox box(QMessageBox::Warning, MainWindow::tr("Recover Unsaved Edits"),
             MainWindow::tr("Some copies of unsaved edits could not be read (%1 in all), so they cannot be "
                            "recovered.")
-                .arg(quarantined.size()),
+                .arg(quarantined.size() + unmovable.size()),
             QMessageBox::Ok, window);
-        box.setInformativeText(
-            MainWindow::tr("They were moved to %1 and will not be offered again. Nothing else was changed.")
-                .arg(AutoSave::quarantineDirectory(directory)));
+        box.setInformativeText(where.join(u' ') + u' ' + MainWindow::tr("Nothing else was changed."));
         box.exec();
     }
     for (auto &[session, edits] : recoverable) {

@@ -181,9 +181,13 @@ private Q_SLOTS:
         QTest::newRow(".info not JSON") << u"info-garbled"_s;
         QTest::newRow(".info with a 1 MB path") << u"info-long-path"_s;
         QTest::newRow(".info with a relative path") << u"info-relative"_s;
+        QTest::newRow(".info with a path through ..") << u"info-dotdot"_s;
         QTest::newRow("copy a link to /dev/zero") << u"copy-zero"_s;
         QTest::newRow("copy a FIFO") << u"copy-fifo"_s;
         QTest::newRow("lock a FIFO") << u"lock-fifo"_s;
+        QTest::newRow("lock a folder") << u"lock-folder"_s;
+        QTest::newRow("copy a folder") << u"copy-folder"_s;
+        QTest::newRow(".info a folder") << u"info-folder"_s;
     }
     void quarantinesWhatItCannotTrust()
     {
@@ -217,8 +221,15 @@ private Q_SLOTS:
                 "{\"original_path\": \"/" + QByteArray(1 << 20, 'a') + "\", \"original_format\": \"json\"}"));
         else if (garbage == u"info-relative")
             QVERIFY(write(bad + u".info"_s, R"({"original_path": "tools.json", "original_format": "json"})"));
+        else if (garbage == u"info-dotdot")
+            QVERIFY(write(
+                bad + u".info"_s, R"({"original_path": "/tmp/../etc/passwd", "original_format": "json"})"));
         else if (garbage == u"lock-fifo")
             QVERIFY(fifo(bad + u".lock"_s));
+        else if (garbage == u"lock-folder")
+            QVERIFY(QDir().mkpath(bad + u".lock"_s));
+        else if (garbage == u"info-folder")
+            QVERIFY(QDir().mkpath(bad + u".info"_s));
 
         QElapsedTimer clock;
         clock.start();
@@ -234,6 +245,7 @@ private Q_SLOTS:
                      [](const QString &f) { return f.endsWith(u"-2-bad.json"_s); }),
             qPrintable(aside.join(u' ')));
         QVERIFY(!QFileInfo::exists(bad + u".json"_s) && !QFileInfo(bad + u".json"_s).isSymLink());
+        QVERIFY(!QFileInfo::exists(bad + u".info"_s) && !QFileInfo::exists(bad + u".lock"_s));
         AutoSave::discard(sessions.first());
         // Next start: nothing more to offer, nothing more to say.
         quarantined.clear();
@@ -258,6 +270,34 @@ private Q_SLOTS:
         const auto copy = loadTableFile(autoSave.tablePath());
         QVERIFY2(copy.ok(), qPrintable(copy.error().text()));
         QCOMPARE(copy.value(), first);
+    }
+
+    void neverDeletesWhatItCannotMoveAside()
+    {
+        // The quarantine folder cannot be made (a file has its name, or an earlier `sudo toffee` left it
+        // unwritable): a broken copy stays exactly where it is, and is named as left alone.
+        QDir().mkpath(recovery());
+        QFile blocker(AutoSave::quarantineDirectory(recovery()));
+        QVERIFY(blocker.open(QIODevice::WriteOnly));
+        blocker.close();
+        const QString good = recovery() + u"/1-good.json"_s;
+        QVERIFY(saveTableFile(good, Test::awkwardTable(), TableFormat::Json).ok());
+        const QString bad = recovery() + u"/2-bad.json"_s;
+        QVERIFY(saveTableFile(bad, Test::awkwardTable(), TableFormat::Json).ok());
+        QFile info(recovery() + u"/2-bad.info"_s);
+        QVERIFY(info.open(QIODevice::WriteOnly));
+        info.write(R"({"original_path": "relative/tools.json", "original_format": "json"})");
+        info.close();
+        QStringList quarantined;
+        QStringList unmovable;
+        const auto sessions = AutoSave::findRecoverable(recovery(), &quarantined, &unmovable);
+        QCOMPARE(sessions.size(), 1);
+        QVERIFY(quarantined.isEmpty());
+        QCOMPARE(unmovable, QStringList { u"2-bad"_s });
+        QVERIFY(loadTableFile(bad).ok()); // whole, where it was
+        QVERIFY(QFileInfo::exists(recovery() + u"/2-bad.info"_s));
+        QVERIFY(!AutoSave::quarantine(sessions.first()));
+        QVERIFY(QFileInfo::exists(good));
     }
 };
 
