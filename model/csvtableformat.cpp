@@ -77,8 +77,21 @@ QByteArrayView trimmed(QByteArrayView v)
     return v;
 }
 
+// No field of a tool table holds more (notes: 10,000 characters); a longer one is refused as it is read.
+constexpr qsizetype kMaxFieldBytes = 64 * 1024;
+
+Error fieldTooLong(QByteArrayView field, int line)
+{
+    return Error { tr("the field \"%1\" is longer than %2 KB; no column of a tool table holds that much.")
+                       .arg(excerpt(field))
+                       .arg(kMaxFieldBytes / 1024),
+        line };
+}
+
 // Splits the next record off `data` at `pos`; quoted fields may hold separators, quotes ("") and line breaks.
-Result<void> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char separator, Record &record)
+// A record of more than `maxFields` fields is refused at the first field too many, before it is all split.
+Result<void> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char separator, Record &record,
+    qsizetype maxFields, bool header = false)
 {
     record.clear();
     record.line = line;
@@ -110,6 +123,8 @@ Result<void> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char sep
                 ++pos;
             }
             const QByteArrayView content = data.sliced(inner, pos - inner);
+            if (content.size() > kMaxFieldBytes)
+                return fieldTooLong(content, record.line);
             ++pos; // the closing quote
             if (doubled) {
                 record.unescaped.push_back(content.toByteArray().replace("\"\"", "\""));
@@ -133,6 +148,8 @@ Result<void> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char sep
                 ++pos;
             }
             QByteArrayView field = data.sliced(start, pos - start);
+            if (field.size() > kMaxFieldBytes)
+                return fieldTooLong(field, line);
             if (field.endsWith('\r'))
                 field.chop(1);
             record.fields.append(trimmed(field));
@@ -143,6 +160,11 @@ Result<void> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char sep
             ++line;
             return {};
         }
+        if (record.fields.size() >= maxFields)
+            return Error { header
+                    ? tr("the header has more than %1 columns, more than a tool table has.").arg(maxFields)
+                    : tr("this row has more fields than the header's %1.").arg(maxFields),
+                record.line };
     }
 }
 
@@ -201,7 +223,7 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
 
     Record header;
     do {
-        if (auto r = nextRecord(all, pos, line, separator, header); !r)
+        if (auto r = nextRecord(all, pos, line, separator, header, ColumnCount, true); !r)
             return r.error();
     } while (isBlank(header) && pos < all.size());
     if (isBlank(header))
@@ -239,7 +261,7 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
     Record record;
     QByteArray commaDecimal;
     while (pos < all.size()) {
-        if (auto r = nextRecord(all, pos, line, separator, record); !r)
+        if (auto r = nextRecord(all, pos, line, separator, record, header.fields.size()); !r)
             return r.error();
         if (isBlank(record))
             continue;

@@ -132,6 +132,16 @@ public:
         return true;
     }
 
+    // No field of a tool table holds more (notes: 10,000 characters): a longer text is refused as it is
+    // scanned, before a copy of it is made.
+    static constexpr qsizetype kMaxTextBytes = 64 * 1024;
+    bool tooLong(const char *start)
+    {
+        return fail(tr("the text \"%1\" is longer than %2 KB; no field of a tool table holds that much.")
+                        .arg(excerpt(QByteArrayView(start, std::min<qsizetype>(m_end - start, 256))))
+                        .arg(kMaxTextBytes / 1024));
+    }
+
     bool string(QString &out)
     {
         if (!consume('"'))
@@ -140,6 +150,8 @@ public:
         uchar high = 0;
         while (m_p < m_end && *m_p != '"' && *m_p != '\\' && uchar(*m_p) >= 0x20)
             high |= uchar(*m_p++);
+        if (m_p - start > kMaxTextBytes)
+            return tooLong(start);
         if (m_p < m_end && *m_p == '"') {
             const QByteArrayView raw(start, m_p - start);
             ++m_p;
@@ -147,6 +159,8 @@ public:
         }
         QByteArray buffer(start, m_p - start);
         while (m_p < m_end) {
+            if (buffer.size() > kMaxTextBytes)
+                return tooLong(start);
             const char c = *m_p++;
             if (c == '"')
                 return decode(buffer, 0x80, out);

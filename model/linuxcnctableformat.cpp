@@ -39,6 +39,11 @@ Result<Tool> parseLine(QByteArrayView line)
     QString comment;
     if (const qsizetype semicolon = line.indexOf(';'); semicolon >= 0) {
         fields = line.first(semicolon);
+        // The comment is the description: at most 255 characters, so at most four times as many bytes.
+        if (line.size() - semicolon - 1 > 4 * Limits::kMaxDescriptionLength)
+            return Error { tr("the comment \"%1\" is longer than a description may be (%2 characters).")
+                               .arg(excerpt(line.sliced(semicolon + 1)))
+                               .arg(Limits::kMaxDescriptionLength) };
         const auto text = decodeUtf8(line.sliced(semicolon + 1));
         if (!text)
             return Error { tr("the comment is not valid UTF-8 text.") };

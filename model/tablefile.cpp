@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tablefile.h"
 
+#include <new>
+#include <optional>
+
 #include <QCoreApplication>
 #include <QFileInfo>
 
@@ -136,10 +139,20 @@ Result<ToolTable> loadTableFile(const QString &path, std::optional<TableFormat> 
     const auto data = readRegularFile(path, kMaxTableFileBytes);
     if (!data)
         return data.error();
-    auto result = readTable(data.value(), *format, tblUnits);
+    // A table within every limit may still not fit in the memory this process is allowed (ulimit -v):
+    // that is a refusal like any other, not a crash.
+    std::optional<Result<ToolTable>> read;
+    try {
+        read.emplace(readTable(data.value(), *format, tblUnits));
+    } catch (const std::bad_alloc &) {
+        return Error { tr("%1: there is not enough memory to read this table (the file is %2 MB).")
+                           .arg(path)
+                           .arg(data.value().size() >> 20) };
+    }
+    auto &result = *read;
     if (!result)
         return Error { result.error().message, result.error().line, path };
-    return result;
+    return std::move(result);
 }
 
 Result<void> saveTableFile(const QString &path, const ToolTable &table, TableFormat format)

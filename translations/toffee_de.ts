@@ -391,6 +391,26 @@
         <source>"%1": %2 is out of range; use %3 to %4.</source>
         <translation>„%1“: %2 liegt außerhalb des Bereichs; verwenden Sie %3 bis %4.</translation>
     </message>
+    <message>
+        <source>%1: there is not enough memory to read this table (the file is %2 MB).</source>
+        <translation>%1: Es ist nicht genug Speicher da, um diese Tabelle zu lesen (die Datei ist %2 MB groß).</translation>
+    </message>
+    <message>
+        <source>the comment "%1" is longer than a description may be (%2 characters).</source>
+        <translation>Der Kommentar „%1“ ist länger, als eine Beschreibung sein darf (%2 Zeichen).</translation>
+    </message>
+    <message>
+        <source>the field "%1" is longer than %2 KB; no column of a tool table holds that much.</source>
+        <translation>Das Feld „%1“ ist länger als %2 KB; keine Spalte einer Werkzeugtabelle fasst so viel.</translation>
+    </message>
+    <message>
+        <source>the header has more than %1 columns, more than a tool table has.</source>
+        <translation>Die Kopfzeile hat mehr als %1 Spalten, mehr als eine Werkzeugtabelle hat.</translation>
+    </message>
+    <message>
+        <source>this row has more fields than the header&apos;s %1.</source>
+        <translation>Diese Zeile hat mehr Felder als die %1 der Kopfzeile.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -859,6 +879,10 @@
     <message>
         <source>a string is not valid UTF-8 text.</source>
         <translation>Eine Zeichenkette ist kein gültiger UTF-8-Text.</translation>
+    </message>
+    <message>
+        <source>the text "%1" is longer than %2 KB; no field of a tool table holds that much.</source>
+        <translation>Der Text „%1“ ist länger als %2 KB; kein Feld einer Werkzeugtabelle fasst so viel.</translation>
     </message>
 </context>
 <context>
@@ -1330,12 +1354,20 @@ Zuerst speichern?</translation>
         <translation>Ungesicherte Änderungen wiederhergestellt: prüfen, dann speichern.</translation>
     </message>
     <message>
-        <source>They were moved to %1 and will not be offered again. Nothing else was changed.</source>
-        <translation>Sie wurden nach %1 verschoben und werden nicht wieder angeboten. Sonst wurde nichts verändert.</translation>
-    </message>
-    <message>
         <source>Some copies of unsaved edits could not be read (%1 in all), so they cannot be recovered.</source>
         <translation>Einige Kopien ungesicherter Änderungen waren nicht lesbar (insgesamt %1); sie lassen sich nicht wiederherstellen.</translation>
+    </message>
+    <message>
+        <source>Copies moved to %2, never to be offered again: %1.</source>
+        <translation>Nach %2 verschoben und nie wieder angeboten: %1.</translation>
+    </message>
+    <message>
+        <source>Copies that could not be moved to %2 and were left, untouched, in %3 (look at them there, or remove them by hand): %1.</source>
+        <translation>Nicht nach %2 verschiebbar und daher unverändert in %3 belassen (dort ansehen oder von Hand entfernen): %1.</translation>
+    </message>
+    <message>
+        <source>Nothing else was changed.</source>
+        <translation>Sonst wurde nichts verändert.</translation>
     </message>
 </context>
 <context>

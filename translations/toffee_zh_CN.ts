@@ -391,6 +391,26 @@
         <source>"%1": %2 is out of range; use %3 to %4.</source>
         <translation>“%1”：%2 超出范围；请使用 %3 到 %4。</translation>
     </message>
+    <message>
+        <source>%1: there is not enough memory to read this table (the file is %2 MB).</source>
+        <translation>%1：内存不足，无法读取此表（文件大小为 %2 MB）。</translation>
+    </message>
+    <message>
+        <source>the comment "%1" is longer than a description may be (%2 characters).</source>
+        <translation>注释“%1”超过描述允许的长度（%2 个字符）。</translation>
+    </message>
+    <message>
+        <source>the field "%1" is longer than %2 KB; no column of a tool table holds that much.</source>
+        <translation>字段“%1”超过 %2 KB；刀具表的任何列都容纳不了这么多。</translation>
+    </message>
+    <message>
+        <source>the header has more than %1 columns, more than a tool table has.</source>
+        <translation>表头超过 %1 列，多于刀具表的列数。</translation>
+    </message>
+    <message>
+        <source>this row has more fields than the header&apos;s %1.</source>
+        <translation>此行的字段多于表头的 %1 个。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -859,6 +879,10 @@
     <message>
         <source>a string is not valid UTF-8 text.</source>
         <translation>字符串不是有效的 UTF-8 文本。</translation>
+    </message>
+    <message>
+        <source>the text "%1" is longer than %2 KB; no field of a tool table holds that much.</source>
+        <translation>文本“%1”超过 %2 KB；刀具表的任何字段都容纳不了这么多。</translation>
     </message>
 </context>
 <context>
@@ -1330,12 +1354,20 @@ Save them first?</source>
         <translation>已恢复未保存的修改：请检查后保存。</translation>
     </message>
     <message>
-        <source>They were moved to %1 and will not be offered again. Nothing else was changed.</source>
-        <translation>它们已被移至 %1，不会再次提供。其他内容均未更改。</translation>
-    </message>
-    <message>
         <source>Some copies of unsaved edits could not be read (%1 in all), so they cannot be recovered.</source>
         <translation>有些未保存修改的副本无法读取（共 %1 个），因此无法恢复。</translation>
+    </message>
+    <message>
+        <source>Copies moved to %2, never to be offered again: %1.</source>
+        <translation>已移至 %2、不会再次提供的副本：%1 个。</translation>
+    </message>
+    <message>
+        <source>Copies that could not be moved to %2 and were left, untouched, in %3 (look at them there, or remove them by hand): %1.</source>
+        <translation>无法移至 %2、因此原样留在 %3 的副本（请在那里查看，或手动删除）：%1 个。</translation>
+    </message>
+    <message>
+        <source>Nothing else was changed.</source>
+        <translation>其他内容均未更改。</translation>
     </message>
 </context>
 <context>

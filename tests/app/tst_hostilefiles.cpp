@@ -140,6 +140,69 @@ private Q_SLOTS:
         QVERIFY2(run.err.contains(expected), qPrintable(run.err));
     }
 
+    void giantTokensStopAsTheyAreRead_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QByteArray>("head");
+        QTest::addColumn<QByteArray>("unit");
+        QTest::addColumn<QByteArray>("tail");
+        QTest::addColumn<QString>("expected");
+        // Each a single 250 MB token or row that was once copied whole (bad_alloc under this limit).
+        QTest::newRow("JSON description")
+            << u"text.json"_s
+            << QByteArray("{\"format\": \"toffee-tool-table\", \"version\": 1, \"units\": \"mm\", \"tools\": "
+                          "[{\"number\": 1, \"description\": \"")
+            << QByteArray("d") << QByteArray("\"}]}") << u"longer than 64 KB"_s;
+        QTest::newRow("CSV quoted field") << u"quoted.csv"_s << QByteArray("number,notes\n1,\"")
+                                          << QByteArray("n") << QByteArray("\"\n") << u"longer than 64 KB"_s;
+        QTest::newRow("CSV header of many columns")
+            << u"columns.csv"_s << QByteArray("number") << QByteArray(",x") << QByteArray("\n1\n")
+            << u"more than 12 columns"_s;
+        QTest::newRow("CSV row of many fields")
+            << u"fields.csv"_s << QByteArray("number\n1") << QByteArray(",") << QByteArray("\n")
+            << u"more fields than the header's 1"_s;
+        QTest::newRow("tbl comment") << u"comment.tbl"_s << QByteArray("T1 P1 ;") << QByteArray("c")
+                                     << QByteArray("\n") << u"longer than a description may be"_s;
+    }
+    void giantTokensStopAsTheyAreRead()
+    {
+        QFETCH(QString, name);
+        QFETCH(QByteArray, head);
+        QFETCH(QByteArray, unit);
+        QFETCH(QByteArray, tail);
+        QFETCH(QString, expected);
+        const QString path = m_dir.filePath(name);
+        QVERIFY(giant(path, head, unit, qint64(250) * 1024 * 1024));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::Append));
+        file.write(tail);
+        file.close();
+        const Run run = cli({ u"show"_s, path });
+        QFile::remove(path);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(expected) && run.err.size() < 1000, qPrintable(run.err.left(1000)));
+    }
+
+    void aTableAtEveryLimitIsReadOrRefusedNeverACrash()
+    {
+        // 25,000 tools with notes of 10,000 characters: within every limit, 245 MB of file and twice that
+        // in memory. Under the limit it either loads or is refused for want of memory; it never aborts.
+        const QString path = m_dir.filePath(u"full.json"_s);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("{\"format\": \"toffee-tool-table\", \"version\": 1, \"units\": \"mm\", \"tools\": [");
+        const QByteArray notes(10000, 'n');
+        for (int i = 1; i <= 25000; ++i)
+            file.write((i > 1 ? ",\n" : "\n") + QByteArray("{\"number\": ") + QByteArray::number(i)
+                + ", \"notes\": \"" + notes + "\"}");
+        file.write("]}\n");
+        file.close();
+        const Run run = cli({ u"show"_s, path });
+        QFile::remove(path);
+        QVERIFY2(run.exitCode == 0 || (run.exitCode == 2 && run.err.contains(u"not enough memory"_s)),
+            qPrintable(u"exit %1: %2"_s.arg(run.exitCode).arg(run.err.left(500))));
+    }
+
     void hugeTokensAreQuotedShort_data()
     {
         QTest::addColumn<QString>("name");
