@@ -9,6 +9,7 @@
 
 #include <QCoreApplication>
 #include <QFile>
+#include <QFileInfo>
 #include <QSaveFile>
 
 namespace Toffee {
@@ -144,15 +145,25 @@ Result<void> writeFileAtomically(
         return reason;
     };
     if (existed) {
+        // Nothing is written over what is not a file, and there is no "old file" to speak of.
         if (const QString why = notAFile(existing.st_mode); !why.isEmpty())
-            return failure(why);
+            return Error { tr("%1: cannot save: %2").arg(path, why) };
     }
+    const QString folder = QFileInfo(path).absolutePath();
+    if (!QFileInfo(folder).isDir())
+        return failure(tr("the folder %1 does not exist.").arg(folder));
 
     QSaveFile file(path);
     file.setDirectWriteFallback(false);
     // Unbuffered: each write reaches the system at once and its failure is seen here, not lost in a flush.
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
+        // The system's reason (a read-only file system, no permission) says more than QSaveFile's.
+        if (existed && ::access(QFile::encodeName(path).constData(), W_OK) != 0)
+            return failure(sentence(systemError(errno)));
+        if (::access(QFile::encodeName(folder).constData(), W_OK) != 0)
+            return failure(sentence(tr("%1: %2").arg(folder, systemError(errno))));
         return failure(sentence(file.errorString()));
+    }
     QString writeError;
     const bool produced = produce([&file, &writeError](QByteArrayView piece) {
         qsizetype done = 0;

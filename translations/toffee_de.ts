@@ -411,6 +411,18 @@
         <source>this row has more fields than the header&apos;s %1.</source>
         <translation>Diese Zeile hat mehr Felder als die %1 der Kopfzeile.</translation>
     </message>
+    <message>
+        <source>%1: cannot save: %2</source>
+        <translation>%1: Speichern nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>the folder %1 does not exist.</source>
+        <translation>Der Ordner %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>

@@ -411,6 +411,18 @@
         <source>this row has more fields than the header&apos;s %1.</source>
         <translation>此行的字段多于表头的 %1 个。</translation>
     </message>
+    <message>
+        <source>%1: cannot save: %2</source>
+        <translation>%1：无法保存：%2</translation>
+    </message>
+    <message>
+        <source>the folder %1 does not exist.</source>
+        <translation>文件夹 %1 不存在。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>

@@ -114,6 +114,32 @@ private Q_SLOTS:
         QVERIFY(!QFileInfo::exists(path));
     }
 
+    void aSaveSaysWhyItCannotStart_data()
+    {
+        QTest::addColumn<QString>("target");
+        QTest::addColumn<QString>("expected");
+        QTest::addColumn<bool>("mentionsOldFile");
+        QTest::newRow("missing folder") << u"no-such-folder/tools.json"_s << u"does not exist"_s << false;
+        QTest::newRow("FIFO") << u"fifo.json"_s << u"named pipe (FIFO)"_s << false;
+        QTest::newRow("folder") << u"folder.json"_s << u"it is a folder"_s << false;
+    }
+    void aSaveSaysWhyItCannotStart()
+    {
+        QFETCH(QString, target);
+        QFETCH(QString, expected);
+        QFETCH(bool, mentionsOldFile);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(target);
+        if (target == u"fifo.json")
+            QVERIFY(Test::makeSpecialFile(u"fifo"_s, path));
+        else if (target == u"folder.json")
+            QVERIFY(Test::makeSpecialFile(u"folder"_s, path));
+        const auto saved = saveTableFile(path, tableOf(2), TableFormat::Json);
+        QVERIFY(!saved.ok());
+        QVERIFY2(saved.error().message.contains(expected), qPrintable(saved.error().message));
+        QCOMPARE(saved.error().message.contains(u"old file"_s), mentionsOldFile);
+    }
+
     void refusesToWriteWhatItCouldNotReadBack()
     {
         // 4,500 tools, each with notes at the limit that JSON writes six bytes a character: within every
