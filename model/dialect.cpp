@@ -28,28 +28,29 @@ QString value(double v, Units units)
     return text;
 }
 
-QString header(const ToolTable &table, const QString &controller)
+// The header says how many tools the program writes, which is not always how many the table holds.
+QString header(qsizetype count, Units units, const QString &controller)
 {
     return u"(Tool offsets for %1, written by Toffee: %2 tools, %3)\n"_s.arg(controller)
-        .arg(table.size())
-        .arg(unitsSymbol(table.units()));
+        .arg(count)
+        .arg(unitsSymbol(units));
 }
 
-Result<QString> g10Table(const ToolTable &table, const QString &controller)
+Result<QString> g10Table(const QList<Tool> &tools, Units units, const QString &controller)
 {
-    QString out = u"%\n"_s + header(table, controller)
-        + (table.units() == Units::Inch ? u"G20\n"_s : u"G21\n"_s) + u"G90\n"_s;
-    for (const Tool &tool : table.tools()) {
+    QString out = u"%\n"_s + header(tools.size(), units, controller)
+        + (units == Units::Inch ? u"G20\n"_s : u"G21\n"_s) + u"G90\n"_s;
+    for (const Tool &tool : tools) {
         if (tool.number < 1 || tool.number > kMaxOffsetNumber)
             return Error { tr("T%1 cannot be written: %2 offset numbers go from 1 to %3.")
                                .arg(tool.number)
                                .arg(controller)
                                .arg(kMaxOffsetNumber) };
         const QString p = QString::number(tool.number);
-        out += u"G10 L10 P"_s + p + u" R"_s + value(tool.lengthGeometry, table.units()) + u'\n';
-        out += u"G10 L11 P"_s + p + u" R"_s + value(tool.lengthWear, table.units()) + u'\n';
-        out += u"G10 L12 P"_s + p + u" R"_s + value(tool.radiusGeometry, table.units()) + u'\n';
-        out += u"G10 L13 P"_s + p + u" R"_s + value(tool.radiusWear, table.units()) + u'\n';
+        out += u"G10 L10 P"_s + p + u" R"_s + value(tool.lengthGeometry, units) + u'\n';
+        out += u"G10 L11 P"_s + p + u" R"_s + value(tool.lengthWear, units) + u'\n';
+        out += u"G10 L12 P"_s + p + u" R"_s + value(tool.radiusGeometry, units) + u'\n';
+        out += u"G10 L13 P"_s + p + u" R"_s + value(tool.radiusWear, units) + u'\n';
     }
     return QString(out + u"M30\n%\n"_s);
 }
@@ -91,15 +92,26 @@ std::optional<Dialect> dialectFromKey(QStringView key)
 Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::optional<int> tool)
 {
     const Units u = table.units();
+    // One tool asked for is one tool written: a program for one tool must never overwrite a controller's
+    // whole offset table.
+    QList<Tool> tools;
+    if (tool) {
+        const Tool *found = table.find(*tool);
+        if (!found)
+            return Error { tr("There is no tool %1 in the table.").arg(*tool) };
+        tools << *found;
+    } else {
+        tools = table.tools();
+    }
     switch (dialect) {
     case Dialect::Fanuc:
-        return g10Table(table, u"FANUC"_s);
+        return g10Table(tools, u, u"FANUC"_s);
     case Dialect::AllenBradley9:
-        return g10Table(table, u"Allen-Bradley 9/Series"_s);
+        return g10Table(tools, u, u"Allen-Bradley 9/Series"_s);
     case Dialect::LinuxCnc: {
         // G10 L1 writes the tool table; LinuxCNC keeps no wear, so the totals go in.
-        QString out = header(table, u"LinuxCNC"_s) + (u == Units::Inch ? u"G20\n"_s : u"G21\n"_s);
-        for (const Tool &t : table.tools()) {
+        QString out = header(tools.size(), u, u"LinuxCNC"_s) + (u == Units::Inch ? u"G20\n"_s : u"G21\n"_s);
+        for (const Tool &t : tools) {
             if (t.number < 1)
                 return Error { tr("T%1 cannot be written: LinuxCNC's G10 L1 needs a tool number from 1 up.")
                                    .arg(t.number) };
@@ -109,27 +121,31 @@ Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::opti
         return QString(out + u"M2\n"_s);
     }
     case Dialect::Carvera: {
-        QString out = header(table, u"the Carvera"_s);
+        QString body;
         int written = 0;
-        for (const Tool &t : table.tools()) {
-            if (!t.measuredTlo || (tool && t.number != *tool))
+        for (const Tool &t : tools) {
+            if (!t.measuredTlo)
                 continue;
-            out += u"M493.2 T"_s + QString::number(t.number) + u"\nM493.3 Z"_s + value(*t.measuredTlo, u)
+            body += u"M493.2 T"_s + QString::number(t.number) + u"\nM493.3 Z"_s + value(*t.measuredTlo, u)
                 + u'\n';
             ++written;
         }
         if (written == 0)
-            return Error { tr("No tool has a measured TLO to write; probe the tools first.") };
-        return out;
+            return Error { tool ? tr("T%1 has no measured TLO to write; probe it first.").arg(*tool)
+                                : tr("No tool has a measured TLO to write; probe the tools first.") };
+        return QString(header(written, u, u"the Carvera"_s) + body);
     }
     case Dialect::Aerotech: {
-        const Tool *t = tool ? table.find(*tool) : (table.isEmpty() ? nullptr : &table.at(0));
-        if (!t)
-            return Error { tool ? tr("There is no tool %1 in the table.").arg(*tool)
-                                : tr("The table is empty.") };
-        return QString(header(table, u"Aerotech Automation1"_s)
-            + u"// T%1 %2\nG44 X Y Z\nCutterCompensationSetOffsets([0, 0, %3])\n"_s.arg(t->number).arg(
-                t->description, value(t->totalLength(), u)));
+        // CutterCompensationSetOffsets sets the offsets of the tool in use: one tool, chosen, never "all".
+        if (tools.isEmpty())
+            return Error { tr("The table is empty.") };
+        if (tools.size() > 1)
+            return Error { tr(
+                "An Aerotech program sets the offsets of one tool at a time: choose the tool.") };
+        const Tool &t = tools.front();
+        return QString(header(1, u, u"Aerotech Automation1"_s)
+            + u"// T%1 %2\nG44 X Y Z\nCutterCompensationSetOffsets([0, 0, %3])\n"_s.arg(t.number).arg(
+                t.description, value(t.totalLength(), u)));
     }
     case Dialect::Fagor8055M:
         return Error { tr(

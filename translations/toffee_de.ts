@@ -423,6 +423,14 @@
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>T%1 has no measured TLO to write; probe it first.</source>
+        <translation>T%1 hat keine gemessene Längenkorrektur zum Schreiben; vermessen Sie es zuerst.</translation>
+    </message>
+    <message>
+        <source>An Aerotech program sets the offsets of one tool at a time: choose the tool.</source>
+        <translation>Ein Aerotech-Programm setzt die Korrekturen eines Werkzeugs nach dem anderen: Wählen Sie das Werkzeug.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>

@@ -423,6 +423,14 @@
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
+    <message>
+        <source>T%1 has no measured TLO to write; probe it first.</source>
+        <translation>T%1 没有可写入的已测 TLO；请先对其对刀。</translation>
+    </message>
+    <message>
+        <source>An Aerotech program sets the offsets of one tool at a time: choose the tool.</source>
+        <translation>Aerotech 程序一次只设置一把刀具的补偿：请选择刀具。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>

@@ -102,6 +102,45 @@ private Q_SLOTS:
         QCOMPARE(aero.position()[2], 71.488);
     }
 
+    void oneToolAskedForIsOneToolWritten_data()
+    {
+        QTest::addColumn<int>("dialect");
+        QTest::addColumn<QString>("perTool"); // what the program writes once for each tool
+        QTest::newRow("FANUC") << int(Dialect::Fanuc) << u"G10 L10 P"_s;
+        QTest::newRow("Allen-Bradley") << int(Dialect::AllenBradley9) << u"G10 L10 P"_s;
+        QTest::newRow("LinuxCNC") << int(Dialect::LinuxCnc) << u"G10 L1 P"_s;
+        QTest::newRow("Carvera") << int(Dialect::Carvera) << u"M493.2 T"_s;
+        QTest::newRow("Aerotech") << int(Dialect::Aerotech) << u"// T"_s;
+    }
+    void oneToolAskedForIsOneToolWritten()
+    {
+        // Once, every tool was written whatever was chosen: a program meant for one tool would have
+        // overwritten the controller's whole offset table.
+        QFETCH(int, dialect);
+        QFETCH(QString, perTool);
+        ToolTable t = table();
+        QVERIFY(t.size() > 2);
+        for (const Tool &tool : t.tools())
+            QVERIFY(
+                t.recordMeasurement(tool.number, -30.0 - tool.number, QDateTime::currentDateTimeUtc()).ok());
+        const int chosen = t.at(1).number;
+        const auto program = exportProgram(t, Dialect(dialect), chosen);
+        QVERIFY2(program.ok(), qPrintable(program.error().message));
+        QCOMPARE(program.value().count(perTool), 1);
+        QVERIFY2(program.value().contains(perTool + QString::number(chosen)), qPrintable(program.value()));
+        QVERIFY2(program.value().contains(u"1 tools"_s), qPrintable(program.value()));
+        // All tools: each once, and the header counts what is written. Aerotech sets one tool at a time.
+        const auto all = exportProgram(t, Dialect(dialect));
+        if (Dialect(dialect) == Dialect::Aerotech) {
+            QVERIFY(!all.ok());
+            QVERIFY2(all.error().message.contains(u"one tool at a time"_s), qPrintable(all.error().message));
+            return;
+        }
+        QVERIFY2(all.ok(), qPrintable(all.error().message));
+        QCOMPARE(all.value().count(perTool), t.size());
+        QVERIFY(all.value().contains(u"%1 tools"_s.arg(t.size())));
+    }
+
     void refusesWhatAControllerCannotHold()
     {
         ToolTable t = table();

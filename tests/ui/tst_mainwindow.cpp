@@ -357,6 +357,12 @@ private Q_SLOTS:
             dialog->selectDialect(u"fanuc"_s);
             auto *preview = dialog->findChild<QPlainTextEdit *>(u"exportPreview"_s);
             QVERIFY(preview->toPlainText().contains(u"G10 L10 P2 R71.488"_s));
+            // The operator picks T3 only: the program writes T3 and nothing else.
+            auto *tool = dialog->findChild<QComboBox *>(u"exportToolCombo"_s);
+            tool->setCurrentIndex(tool->findData(3));
+            QCOMPARE(preview->toPlainText().count(u"G10 L10 P"_s), 1);
+            QVERIFY(preview->toPlainText().contains(u"G10 L10 P3 "_s));
+            tool->setCurrentIndex(0);
             dialog->selectDialect(u"fagor"_s);
             QVERIFY(!dialog->findChild<QPushButton *>(u"exportSaveButton"_s)->isEnabled());
             QVERIFY(dialog->findChild<QLabel *>(u"exportProblem"_s)->text().contains(u"FAGOR"_s));
