@@ -2,6 +2,7 @@
 #include "tooltable.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <vector>
 
@@ -134,6 +135,11 @@ Result<void> ToolTable::replace(int number, const Tool &tool)
 
 Result<void> ToolTable::recordMeasurement(int number, double tlo, const QDateTime &at)
 {
+    // A measured value is stored at the machine's resolution (0.001 mm, 0.0001 in), never with the noise of
+    // the arithmetic that produced it.
+    const double steps = m_units == Units::Inch ? 10000.0 : 1000.0;
+    if (std::isfinite(tlo))
+        tlo = std::round(tlo * steps) / steps;
     if (const Tool *existing = find(number)) {
         Tool tool = *existing;
         tool.measuredTlo = tlo;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
 
 #include <QByteArrayView>
@@ -28,7 +29,9 @@ struct TloReading
 {
     double currentMz = 0.0;
     double referenceMz = 0.0;
-    [[nodiscard]] double tlo() const { return currentMz - referenceMz; }
+    // At the machine's resolution (it reports 0.001 mm): -105.688 - -72.3 is -33.388, not
+    // -33.388000000000005.
+    [[nodiscard]] double tlo() const { return std::round((currentMz - referenceMz) * 1000.0) / 1000.0; }
 };
 
 // "[PRB:x,y,z:ok]" (or ":1" / ":0" as grbl writes it).

@@ -14,6 +14,21 @@ class TestToolTable : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void storesAMeasurementAtTheMachinesResolution()
+    {
+        // The machine reports MCS Z to 0.001 mm; their difference in doubles is -33.388000000000005, which
+        // the table, its file and toffee-cli show once printed.
+        const double noisy = -105.688 - -72.3;
+        QVERIFY(noisy != -33.388);
+        ToolTable mm(Units::Millimetre);
+        QVERIFY(mm.recordMeasurement(2, noisy, QDateTime::currentDateTimeUtc()).ok());
+        QCOMPARE(*mm.find(2)->measuredTlo, -33.388);
+        QVERIFY(writeTable(mm, TableFormat::Json).contains("\"measured_tlo\": -33.388,"));
+        ToolTable inch(Units::Inch);
+        QVERIFY(inch.recordMeasurement(2, 1.31446000000001, QDateTime::currentDateTimeUtc()).ok());
+        QCOMPARE(*inch.find(2)->measuredTlo, 1.3145);
+    }
+
     void keepsToolsSortedByNumber()
     {
         ToolTable table;

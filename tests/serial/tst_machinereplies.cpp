@@ -11,6 +11,14 @@ class TestMachineReplies : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void aTloIsAtTheMachinesResolution()
+    {
+        const auto report
+            = parseTloReport("current tool offset [-105.688] , reference tool offset [-72.300]");
+        QVERIFY(report);
+        QCOMPARE(report->tlo(), -33.388); // not -33.388000000000005
+    }
+
     void classifiesByExactToken_data()
     {
         QTest::addColumn<QByteArray>("line");
