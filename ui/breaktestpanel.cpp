@@ -30,7 +30,9 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
     // The firmware halts under 0.02 mm: the field cannot hold less, so such a value is never sent.
     m_tolerance->setObjectName(u"toleranceSpin"_s);
     m_tolerance->setAccessibleName(tr("Break-test tolerance in millimetres"));
-    m_tolerance->setRange(MachineSession::kMinTolerance, 5.0);
+    // Below the machine's minimum the field still takes what is typed, so that Run can refuse it with the
+    // reason; a field that quietly turned 0.01 into 0.02 tested against a tolerance nobody chose.
+    m_tolerance->setRange(0.001, 5.0);
     m_tolerance->setDecimals(3);
     m_tolerance->setSingleStep(0.01);
     m_tolerance->setSuffix(u" mm"_s);
@@ -39,7 +41,9 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
                                "%2 mm by default.")
                                 .arg(MachineSession::kMinTolerance)
                                 .arg(MachineSession::kDefaultTolerance));
-    m_tolerance->setValue(AppSettings().breakTestTolerance());
+    const double remembered = AppSettings().breakTestTolerance();
+    m_tolerance->setValue(
+        MachineSession::validateTolerance(remembered) ? remembered : MachineSession::kDefaultTolerance);
     m_run->setObjectName(u"runBreakTestButton"_s);
     m_run->setIcon(themeIcon(u"breaktest"_s));
     m_run->setAccessibleName(tr("Run the tool break test"));
@@ -62,8 +66,10 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
     form->addRow(m_verdict);
 
     connect(m_run, &QPushButton::clicked, this, [this] { run(); });
-    connect(m_tolerance, &QDoubleSpinBox::valueChanged, this,
-        [](double v) { AppSettings().setBreakTestTolerance(v); });
+    connect(m_tolerance, &QDoubleSpinBox::valueChanged, this, [](double v) {
+        if (MachineSession::validateTolerance(v)) // only a tolerance the machine takes is remembered
+            AppSettings().setBreakTestTolerance(v);
+    });
     connect(m_connection, &MachineConnection::stateChanged, this, &BreakTestPanel::updateState);
     connect(m_connection, &MachineConnection::busyChanged, this, &BreakTestPanel::updateState);
     updateState();
@@ -84,8 +90,14 @@ void BreakTestPanel::run(bool confirm)
 {
     if (m_connection->state() != MachineConnection::State::Connected || m_connection->isBusy())
         return;
-    m_tolerance->interpretText(); // what is typed counts, after the field's own correction
+    m_tolerance->interpretText(); // what is typed counts
     const double tolerance = m_tolerance->value();
+    if (auto valid = MachineSession::validateTolerance(tolerance); !valid) {
+        QMessageBox::warning(this, tr("The break test did not run"), valid.error().message);
+        m_tolerance->setFocus();
+        m_tolerance->selectAll();
+        return;
+    }
     if (confirm
         && QMessageBox::question(this, tr("Run the break test?"),
                tr("The machine will move to the tool setter and measure the tool again, then "

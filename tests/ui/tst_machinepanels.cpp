@@ -14,6 +14,7 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include "appsettings.h"
 #include "consoledock.h"
 #include "emulator/carveraemulator.h"
 #include "machineconnection.h"
@@ -101,8 +102,9 @@ private Q_SLOTS:
             QDateTime::fromString(u"2026-11-20T08:12:40.000Z"_s, Qt::ISODateWithMs));
     }
 
-    void aToleranceUnderTheMinimumCannotBeSent()
+    void aToleranceUnderTheMinimumIsRefusedWithItsReason()
     {
+        // 0.01 once became 0.02 without a word, was sent, and was remembered.
         Fixture f;
         f.probe();
         auto *spin = f.find<QDoubleSpinBox>(u"toleranceSpin"_s);
@@ -110,16 +112,26 @@ private Q_SLOTS:
         spin->selectAll();
         QTest::keyClicks(spin, u"0.01"_s);
         QTest::keyClick(spin, Qt::Key_Tab);
-        QVERIFY(spin->value() >= 0.02);
+        QCOMPARE(spin->value(), 0.01); // what the operator typed, not a value of the field's choosing
+        QString refusal;
+        answerNextBox(QMessageBox::Ok, &refusal);
+        QTest::mouseClick(f.find<QPushButton>(u"runBreakTestButton"_s), Qt::LeftButton);
+        QVERIFY2(refusal.contains(u"too small"_s) && refusal.contains(u"0.02"_s), qPrintable(refusal));
+        QVERIFY(std::none_of(
+            f.sent.cbegin(), f.sent.cend(), [](const QByteArray &l) { return l.startsWith("M491.1"); }));
+        QVERIFY(!f.window.connection()->emulator()->isHalted());
+        QCOMPARE(AppSettings().breakTestTolerance(), 0.1); // not remembered
+
+        // 0.02 is taken, sent as typed, and remembered.
+        spin->selectAll();
+        QTest::keyClicks(spin, u"0.02"_s);
+        QTest::keyClick(spin, Qt::Key_Tab);
         answerNextBox(QMessageBox::Yes);
         QTest::mouseClick(f.find<QPushButton>(u"runBreakTestButton"_s), Qt::LeftButton);
         QVERIFY(QTest::qWaitFor([&f] { return f.idle(); }, 10000));
-        const auto breakTests = std::count_if(
-            f.sent.cbegin(), f.sent.cend(), [](const QByteArray &l) { return l.startsWith("M491.1"); });
-        QCOMPARE(breakTests, 1);
-        QVERIFY(!f.sent.contains("M491.1 H0.01"));
         QVERIFY(f.sent.contains("M491.1 H0.02"));
-        QVERIFY(!f.window.connection()->emulator()->isHalted());
+        QCOMPARE(AppSettings().breakTestTolerance(), 0.02);
+        AppSettings().setBreakTestTolerance(0.1);
     }
 
     void aBrokenToolRaisesTheAlarmAndUnlockClearsIt()
