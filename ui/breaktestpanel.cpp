@@ -146,7 +146,11 @@ void BreakTestPanel::raiseBrokenAlarm(const SessionResult &r)
     box.setInformativeText(r.message);
     QPushButton *unlock = box.addButton(tr("Unlock"), QMessageBox::AcceptRole);
     unlock->setObjectName(u"alarmUnlockButton"_s);
-    box.addButton(tr("Leave Halted"), QMessageBox::RejectRole);
+    QPushButton *leave = box.addButton(tr("Leave Halted"), QMessageBox::RejectRole);
+    leave->setObjectName(u"alarmLeaveHaltedButton"_s);
+    // Releasing a halted machine with a suspect tool in the spindle is never what a reflex Enter or Esc does.
+    box.setDefaultButton(leave);
+    box.setEscapeButton(leave);
     box.exec();
     if (box.clickedButton() != unlock || !m_connection->beginOperation(tr("Unlock")))
         return;

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The machine panels driven as an operator drives them, against the built-in emulator.
+#include <functional>
+
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
@@ -132,6 +134,35 @@ private Q_SLOTS:
         QVERIFY(f.sent.contains("M491.1 H0.02"));
         QCOMPARE(AppSettings().breakTestTolerance(), 0.02);
         AppSettings().setBreakTestTolerance(0.1);
+    }
+
+    void enterAfterABrokenToolLeavesTheMachineHalted()
+    {
+        // The alarm once had no default button, so Unlock was the default: a reflex Enter released the
+        // machine with the suspect tool still in the spindle.
+        Fixture f;
+        f.probe();
+        f.window.connection()->emulator()->breakTool(1, 0.4);
+        bool sawAlarm = false;
+        answerNextBox(QMessageBox::Yes); // the confirmation
+        std::function<void()> pressEnter = [&] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            if (!box || box->objectName() != u"brokenToolAlarm"_s) {
+                QTimer::singleShot(20, pressEnter);
+                return;
+            }
+            sawAlarm = true;
+            QVERIFY(box->defaultButton());
+            QCOMPARE(box->defaultButton()->objectName(), u"alarmLeaveHaltedButton"_s);
+            QTest::keyClick(box, Qt::Key_Return);
+        };
+        QTimer::singleShot(50, pressEnter);
+        QTest::mouseClick(f.find<QPushButton>(u"runBreakTestButton"_s), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(sawAlarm, 10000);
+        QVERIFY(QTest::qWaitFor([&f] { return f.idle(); }, 10000));
+        QTest::qWait(200);
+        QVERIFY(f.window.connection()->emulator()->isHalted());
+        QVERIFY(!f.sent.contains("$X"));
     }
 
     void aBrokenToolRaisesTheAlarmAndUnlockClearsIt()
