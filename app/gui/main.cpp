@@ -20,6 +20,59 @@
 
 using namespace Qt::StringLiterals;
 
+namespace {
+
+// The command line, described once for the window and for --help, which is answered without a display.
+struct Options
+{
+    QCommandLineOption emulator { u"emulator"_s,
+        QApplication::translate("main", "Connect to the built-in emulator.") };
+    QCommandLineOption port { u"port"_s, QApplication::translate("main", "Connect to the machine on PORT."),
+        u"PORT"_s };
+    QCommandLineOption baud { u"baud"_s, QApplication::translate("main", "Baud rate (default 115200)."),
+        u"N"_s, u"115200"_s };
+    QCommandLineOption selfTest { u"self-test"_s,
+        QApplication::translate("main",
+            "Open the window, connect to the emulator, load the example table, probe, "
+            "render once, and exit (0 when all went well).") };
+    QCommandLineOption dark { u"dark"_s, QApplication::translate("main", "Use the dark palette.") };
+    QCommandLineOption lang { u"lang"_s,
+        QApplication::translate("main", "Language: de, zh_CN or en (default: the system's)."),
+        u"LANGUAGE"_s };
+
+    void describe(QCommandLineParser &parser) const
+    {
+        parser.setApplicationDescription(QApplication::translate("main", "Toffee, the tool offset manager."));
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addOptions({ emulator, port, baud, selfTest, dark, lang });
+        parser.addPositionalArgument(
+            u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
+    }
+};
+
+void nameTheApplication()
+{
+    QCoreApplication::setOrganizationName(u"Toffee"_s);
+    QCoreApplication::setApplicationName(u"Toffee"_s);
+    QCoreApplication::setApplicationVersion(QStringLiteral(TOFFEE_VERSION));
+}
+
+// --help and --version are answered before the window system is touched: they need no display.
+bool asksForHelpOrVersion(int argc, char *argv[])
+{
+    for (int i = 1; i < argc; ++i) {
+        const QByteArrayView a(argv[i]);
+        if (a == "--")
+            return false;
+        if (a == "-h" || a == "--help" || a == "--help-all" || a == "-v" || a == "--version")
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
 int main(int argc, char *argv[])
 {
     QElapsedTimer sinceLaunch;
@@ -27,42 +80,31 @@ int main(int argc, char *argv[])
     // Over a file-size limit (ulimit -f) a write then fails with "File too large", which a save reports like
     // a full disk with the old file whole, instead of the process being killed in the middle of it.
     std::signal(SIGXFSZ, SIG_IGN);
+    if (asksForHelpOrVersion(argc, argv)) {
+        QCoreApplication core(argc, argv);
+        nameTheApplication();
+        QCommandLineParser parser;
+        Options().describe(parser);
+        parser.process(core); // prints and exits
+        return 0;
+    }
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(u"Toffee"_s);
-    QApplication::setApplicationName(u"Toffee"_s);
+    nameTheApplication();
     QApplication::setApplicationDisplayName(u"Toffee"_s);
-    QApplication::setApplicationVersion(QStringLiteral(TOFFEE_VERSION));
     QApplication::setDesktopFileName(u"org.toffee.Toffee"_s);
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QApplication::translate("main", "Toffee, the tool offset manager."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    const QCommandLineOption emulator(
-        u"emulator"_s, QApplication::translate("main", "Connect to the built-in emulator."));
-    const QCommandLineOption port(
-        u"port"_s, QApplication::translate("main", "Connect to the machine on PORT."), u"PORT"_s);
-    const QCommandLineOption baud(
-        u"baud"_s, QApplication::translate("main", "Baud rate (default 115200)."), u"N"_s, u"115200"_s);
-    const QCommandLineOption selfTest(u"self-test"_s,
-        QApplication::translate("main",
-            "Open the window, connect to the emulator, load the example table, probe, "
-            "render once, and exit (0 when all went well)."));
-    const QCommandLineOption dark(u"dark"_s, QApplication::translate("main", "Use the dark palette."));
-    const QCommandLineOption lang(u"lang"_s,
-        QApplication::translate("main", "Language: de, zh_CN or en (default: the system's)."), u"LANGUAGE"_s);
-    parser.addOptions({ emulator, port, baud, selfTest, dark, lang });
-    parser.addPositionalArgument(
-        u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
+    const Options options;
+    options.describe(parser);
     parser.process(app);
-    if (parser.value(lang) != u"en")
-        Toffee::installTranslations(&app, parser.value(lang));
+    if (parser.value(options.lang) != u"en")
+        Toffee::installTranslations(&app, parser.value(options.lang));
 
-    if (parser.isSet(selfTest))
+    if (parser.isSet(options.selfTest))
         QStandardPaths::setTestModeEnabled(true); // a smoke test leaves the user's settings alone
-    Toffee::applyPalette(parser.isSet(dark) || Toffee::AppSettings().darkPalette());
+    Toffee::applyPalette(parser.isSet(options.dark) || Toffee::AppSettings().darkPalette());
     Toffee::MainWindow window;
-    if (parser.isSet(selfTest)) {
+    if (parser.isSet(options.selfTest)) {
         Toffee::SelfTest test(&window, [](int code, const QString &message) {
             std::fprintf(code == 0 ? stdout : stderr, "toffee: %s\n", qPrintable(message));
             // A step that failed may have left a message box up: a smoke test never waits for a person.
@@ -78,9 +120,9 @@ int main(int argc, char *argv[])
     // Edits a crash would have lost come first; the table asked for opens when none are recovered.
     if (!Toffee::offerRecovery(&window) && !parser.positionalArguments().isEmpty())
         window.openFile(parser.positionalArguments().constFirst());
-    if (parser.isSet(emulator) || parser.isSet(port)) {
-        const Toffee::ConnectionTarget target { parser.isSet(emulator), parser.value(port),
-            parser.value(baud).toInt() };
+    if (parser.isSet(options.emulator) || parser.isSet(options.port)) {
+        const Toffee::ConnectionTarget target { parser.isSet(options.emulator), parser.value(options.port),
+            parser.value(options.baud).toInt() };
         window.machineDock()->connectionPanel()->setTarget(target);
         window.connection()->connectTo(target);
     }

@@ -31,6 +31,26 @@ class TestCli : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void theWindowAnswersHelpWithoutADisplay()
+    {
+        // `toffee --help` once aborted where there was no display (a server, ssh, a script).
+        for (const QString &flag : { u"--help"_s, u"--version"_s }) {
+            QProcess process;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.remove(u"DISPLAY"_s);
+            env.remove(u"WAYLAND_DISPLAY"_s);
+            env.remove(u"QT_QPA_PLATFORM"_s);
+            process.setProcessEnvironment(env);
+            process.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee"), { flag });
+            QVERIFY(process.waitForFinished(20000));
+            QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+            QCOMPARE(process.exitCode(), 0);
+            const QByteArray out = process.readAllStandardOutput();
+            QVERIFY2(out.contains(flag == u"--help" ? QByteArray("--self-test") : QByteArray("Toffee ")),
+                out.constData());
+        }
+    }
+
     void showsATable()
     {
         const Run run = cli({ u"show"_s, kExample });
