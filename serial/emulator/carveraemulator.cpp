@@ -190,6 +190,7 @@ void CarveraEmulator::processNext()
     m_busy = true;
     m_printed = 0;
     const QByteArray upper = line.toUpper();
+    m_failThisProbe = false;
     for (qsizetype i = 0; i < m_faults.size(); ++i) {
         const PendingFault f = m_faults.at(i);
         if (!f.prefix.isEmpty() && !upper.startsWith(f.prefix))
@@ -211,7 +212,12 @@ void CarveraEmulator::processNext()
             m_garble = true;
             break;
         case Fault::FailProbe:
-            m_faults.insert(i, f); // consumed by the probing cycle itself
+            // With a prefix, it is this command's probe that fails (fail-probe@M491.1 leaves M491 alone);
+            // without one, the next probing cycle's, whichever command runs it.
+            if (f.prefix.isEmpty())
+                m_faults.insert(i, f);
+            else
+                m_failThisProbe = true;
             break;
         case Fault::Delay:
             later(int(f.amount), [this, line] { execute(line); });
@@ -442,9 +448,9 @@ void CarveraEmulator::calibrate(bool breakTest, double tolerance)
     say("G38.6 Z" + fixed(kZTravelLimit) + " F500");
     m_mpos = { m_setter[0], m_setter[1], kClearanceZ };
 
-    bool fail = false;
-    for (qsizetype i = 0; i < m_faults.size(); ++i) {
-        if (m_faults.at(i).fault == Fault::FailProbe) {
+    bool fail = std::exchange(m_failThisProbe, false);
+    for (qsizetype i = 0; !fail && i < m_faults.size(); ++i) {
+        if (m_faults.at(i).fault == Fault::FailProbe && m_faults.at(i).prefix.isEmpty()) {
             m_faults.removeAt(i);
             fail = true;
             break;

@@ -116,6 +116,7 @@ private:
     bool m_busy = false;
     bool m_dropOk = false;
     bool m_garble = false;
+    bool m_failThisProbe = false; // a fail-probe fault aimed at the running command
     int m_printed = 0; // lines the running command printed
     bool m_held = false;
 

@@ -237,6 +237,15 @@ private Q_SLOTS:
         emulator.injectFault(CarveraEmulator::Fault::FailProbe);
         out = command(emulator, "M491");
         QVERIFY(out.contains("ALARM: Probe failed to trigger within safety margin (135.00mm)"));
+        // Aimed at the break test, the fault leaves a plain probe alone (it once hit the first probe).
+        QVERIFY(command(emulator, "$X").contains("[Caution: Unlocked]"));
+        emulator.injectFault(CarveraEmulator::Fault::FailProbe, "M491.1");
+        out = command(emulator, "M491");
+        QVERIFY(!out.join('\n').contains("ALARM"));
+        QCOMPARE(out.last(), QByteArray("ok"));
+        out = command(emulator, "M491.1 H0.1");
+        QVERIFY(out.join('\n').contains("ALARM: Probe failed to trigger"));
+        QVERIFY(command(emulator, "$X").contains("[Caution: Unlocked]"));
         QSignalSpy closed(&emulator, &CarveraEmulator::linkClosed);
         emulator.injectFault(CarveraEmulator::Fault::CloseLink);
         emulator.receiveLine("$X");
