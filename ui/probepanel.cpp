@@ -79,6 +79,8 @@ void ProbePanel::updateState()
     m_restore->setEnabled(ready && tool && tool->measuredTlo);
     m_restore->setText(
         tool && tool->measuredTlo ? tr("Restore T%1 TLO").arg(m_selectedTool) : tr("Restore Known TLO"));
+    // A button's setText() replaces its shortcut with the text's mnemonic (none here): Ctrl+R goes back on.
+    m_restore->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     const bool busy = m_connection->isBusy();
     m_progress->setVisible(busy);
     m_cancel->setVisible(busy);

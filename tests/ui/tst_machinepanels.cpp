@@ -222,6 +222,22 @@ private Q_SLOTS:
         QVERIFY(!f.sent.contains("M491") || f.sent.count("M491") == 1); // no probe for the restore
     }
 
+    void ctrlRRestoresAfterTheButtonsLabelChanged()
+    {
+        // Selecting a tool relabels the button ("Restore T2 TLO"), which once took its Ctrl+R away.
+        Fixture f;
+        f.probe();
+        f.window.toolTablePanel()->selectTool(2);
+        QCOMPARE(f.find<QPushButton>(u"restoreButton"_s)->text(), u"Restore T2 TLO"_s);
+        f.window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&f.window));
+        QString question;
+        answerNextBox(QMessageBox::Cancel, &question);
+        QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : &f.window, Qt::Key_R,
+            Qt::ControlModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(question.contains(u"T2"_s), 5000);
+    }
+
     void theConsoleSendsTypedCommandsWithHistory()
     {
         Fixture f;
