@@ -47,7 +47,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
     m_run->setObjectName(u"runBreakTestButton"_s);
     m_run->setIcon(themeIcon(u"breaktest"_s));
     m_run->setAccessibleName(tr("Run the tool break test"));
-    m_run->setShortcut(QKeySequence(Qt::Key_F6));
+    // F6 belongs to the Machine menu's Break Test, which runs this same test.
     m_run->setToolTip(tr("Re-measure the tool and compare it with its stored TLO (M491.1) — F6"));
     for (auto [label, name] : { std::pair { m_old, u"breakOldLabel"_s },
              std::pair { m_new, u"breakNewLabel"_s }, std::pair { m_difference, u"breakDifferenceLabel"_s },

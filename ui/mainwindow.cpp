@@ -237,11 +237,11 @@ void MainWindow::createMachineActions()
         add(u"actionConnect"_s, tr("&Connect / Disconnect"), QKeySequence(Qt::CTRL | Qt::Key_K),
             [this] { m_machineDock->connectionPanel()->toggleConnection(); }));
     machine->addSeparator();
-    toolBar->addAction(add(u"actionProbe"_s, tr("&Probe Current Tool…"), QKeySequence(Qt::CTRL | Qt::Key_P),
+    toolBar->addAction(add(u"actionProbe"_s, tr("&Probe Current Tool…"), QKeySequence(Qt::Key_F5),
         [this] { m_machineDock->probePanel()->probe(); }));
-    toolBar->addAction(add(u"actionBreakTest"_s, tr("&Break Test…"), QKeySequence(Qt::CTRL | Qt::Key_B),
+    toolBar->addAction(add(u"actionBreakTest"_s, tr("&Break Test…"), QKeySequence(Qt::Key_F6),
         [this] { m_machineDock->breakTestPanel()->run(); }));
-    toolBar->addAction(add(u"actionUnlock"_s, tr("&Unlock"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+    toolBar->addAction(add(u"actionUnlock"_s, tr("&Unlock"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_U),
         [this] { m_machineDock->tloPanel()->unlock(); }));
     toolBar->addAction(add(u"actionStop"_s, tr("&Stop the Machine"), QKeySequence(Qt::CTRL | Qt::Key_Period),
         [this] { m_machineDock->probePanel()->cancel(); }));

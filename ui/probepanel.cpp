@@ -28,7 +28,7 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     m_probe->setObjectName(u"probeButton"_s);
     m_probe->setIcon(themeIcon(u"probe"_s));
     m_probe->setAccessibleName(tr("Probe the current tool on the tool setter"));
-    m_probe->setShortcut(QKeySequence(Qt::Key_F5));
+    // F5 belongs to the Machine menu's action, which runs this same probe: one key, one command.
     m_probe->setToolTip(tr("Measure the tool in the spindle on the tool setter (M491) — F5"));
     m_restore->setObjectName(u"restoreButton"_s);
     m_restore->setAccessibleName(tr("Restore the selected tool's known TLO"));

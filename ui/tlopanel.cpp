@@ -43,7 +43,7 @@ TloPanel::TloPanel(MachineConnection *connection, QWidget *parent)
     m_unlock->setObjectName(u"unlockButton"_s);
     m_unlock->setIcon(themeIcon(u"unlock"_s));
     m_unlock->setAccessibleName(tr("Unlock the machine"));
-    m_unlock->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_U));
+    // Ctrl+Shift+U belongs to the Machine menu's Unlock, which runs this same unlock.
     m_unlock->setToolTip(tr("Clear the halt ($X) — Ctrl+Shift+U"));
     m_unlock->hide();
 

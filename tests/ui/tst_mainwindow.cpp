@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <sys/stat.h>
 
+#include <QAbstractButton>
 #include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
@@ -9,6 +10,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QHash>
 #include <QHeaderView>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -424,6 +426,34 @@ private Q_SLOTS:
             QVERIFY2(!action->icon().pixmap(24, 24).isNull(), name); // the SVG icon engine is there
         }
         QVERIFY(!window.windowIcon().pixmap(64, 64).isNull());
+    }
+
+    void everyKeyDoesOneThingAndEveryCommandHasOneKey()
+    {
+        // Probe once answered to F5 and Ctrl+P, Unlock to Ctrl+Shift+U and Ctrl+Shift+L.
+        MainWindow window;
+        QHash<QString, QString> owner; // key sequence -> who has it
+        const auto claim = [&owner](const QKeySequence &key, const QString &who) {
+            if (key.isEmpty())
+                return;
+            const QString k = key.toString();
+            QVERIFY2(!owner.contains(k), qPrintable(k + u" for "_s + who + u" and "_s + owner.value(k)));
+            owner.insert(k, who);
+        };
+        for (const QAction *action : window.findChildren<QAction *>())
+            claim(action->shortcut(), action->objectName());
+        for (const QAbstractButton *button : window.findChildren<QAbstractButton *>()) {
+            if (!button->objectName().startsWith(u"qt_"_s))
+                claim(button->shortcut(), button->objectName());
+        }
+        QCOMPARE(owner.value(QKeySequence(Qt::Key_F5).toString()), u"actionProbe"_s);
+        QCOMPARE(owner.value(QKeySequence(Qt::Key_F6).toString()), u"actionBreakTest"_s);
+        QCOMPARE(owner.value(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_U).toString()), u"actionUnlock"_s);
+        for (const QString &button : { u"probeButton"_s, u"unlockButton"_s, u"runBreakTestButton"_s }) {
+            auto *b = window.findChild<QAbstractButton *>(button);
+            QVERIFY2(b, qPrintable(button));
+            QVERIFY2(b->shortcut().isEmpty(), qPrintable(button));
+        }
     }
 
     void everyActionHasAShortcutAndAName()
