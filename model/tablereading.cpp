@@ -37,6 +37,8 @@ Result<void> ToolCollector::add(Tool tool, int line, Units units)
 {
     if (auto valid = validateTool(tool, units); !valid)
         return Error { valid.error().message, line };
+    m_unitsAgree = m_unitsAgree && (!m_checkedIn || *m_checkedIn == units);
+    m_checkedIn = units;
     if (m_seen[size_t(tool.number)]) {
         const auto earlier = std::find_if(
             m_tools.cbegin(), m_tools.cend(), [&tool](const Tool &t) { return t.number == tool.number; });
@@ -51,7 +53,11 @@ Result<void> ToolCollector::add(Tool tool, int line, Units units)
 Result<ToolTable> ToolCollector::build(Units units)
 {
     ToolTable::Problem problem;
-    auto table = ToolTable::fromTools(std::move(m_tools), units, &problem);
+    // Each tool was checked as it was read; only a table whose units turned out other than those it was
+    // checked in (CSV learns them from its rows) is checked again.
+    const bool checked = m_unitsAgree && (!m_checkedIn || *m_checkedIn == units);
+    auto table = ToolTable::fromTools(std::move(m_tools), units, &problem,
+        checked ? ToolTable::Validated::Already : ToolTable::Validated::No);
     if (table)
         return table;
     const auto lineOf = [this](qsizetype i) {

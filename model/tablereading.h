@@ -2,6 +2,7 @@
 // Shared by the three table readers; not part of the model's interface.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "tablefile.h"
@@ -26,6 +27,8 @@ public:
 private:
     QList<Tool> m_tools;
     QList<int> m_lines; // m_lines[i] is the line m_tools[i] was read from
+    std::optional<Units> m_checkedIn; // the units every tool so far was validated in, while they agree
+    bool m_unitsAgree = true;
     std::vector<bool> m_seen; // by tool number
 };
 

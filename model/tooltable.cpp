@@ -27,9 +27,9 @@ Error duplicateError(int number)
 
 } // namespace
 
-Result<ToolTable> ToolTable::fromTools(QList<Tool> tools, Units units, Problem *problem)
+Result<ToolTable> ToolTable::fromTools(QList<Tool> tools, Units units, Problem *problem, Validated validated)
 {
-    for (qsizetype i = 0; i < tools.size(); ++i) {
+    for (qsizetype i = 0; validated == Validated::No && i < tools.size(); ++i) {
         if (auto r = validateTool(tools.at(i), units); !r) {
             if (problem)
                 *problem = { i, -1, tools.at(i).number };

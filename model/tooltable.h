@@ -31,9 +31,12 @@ public:
         int number = 0; // the refused tool's number
     };
 
+    // Whether each tool was already validated in these units (a reader checks each as it reads it).
+    enum class Validated { No, Already };
+
     // Builds a table from tools in any order; the first invalid or duplicate tool refuses the lot.
     [[nodiscard]] static Result<ToolTable> fromTools(
-        QList<Tool> tools, Units units, Problem *problem = nullptr);
+        QList<Tool> tools, Units units, Problem *problem = nullptr, Validated validated = Validated::No);
 
     [[nodiscard]] Units units() const { return m_units; }
     [[nodiscard]] const QList<Tool> &tools() const { return m_tools; }
