@@ -31,8 +31,8 @@ QString value(double v, Units units)
 // The header says how many tools the program writes, which is not always how many the table holds.
 QString header(qsizetype count, Units units, const QString &controller)
 {
-    return u"(Tool offsets for %1, written by Toffee: %2 tools, %3)\n"_s.arg(controller)
-        .arg(count)
+    return u"(Tool offsets for %1, written by Toffee: %2, %3)\n"_s.arg(controller)
+        .arg(count == 1 ? u"1 tool"_s : u"%1 tools"_s.arg(count))
         .arg(unitsSymbol(units));
 }
 

@@ -128,7 +128,7 @@ private Q_SLOTS:
         QVERIFY2(program.ok(), qPrintable(program.error().message));
         QCOMPARE(program.value().count(perTool), 1);
         QVERIFY2(program.value().contains(perTool + QString::number(chosen)), qPrintable(program.value()));
-        QVERIFY2(program.value().contains(u"1 tools"_s), qPrintable(program.value()));
+        QVERIFY2(program.value().contains(u"Toffee: 1 tool,"_s), qPrintable(program.value()));
         // All tools: each once, and the header counts what is written. Aerotech sets one tool at a time.
         const auto all = exportProgram(t, Dialect(dialect));
         if (Dialect(dialect) == Dialect::Aerotech) {
