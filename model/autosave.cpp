@@ -63,10 +63,7 @@ void removeSessionFiles(const QDir &dir, const QString &id)
 // there by something else.
 bool isPlainFile(const QString &path)
 {
-    struct stat info
-    {
-    };
-    return ::lstat(QFile::encodeName(path).constData(), &info) == 0 && S_ISREG(info.st_mode);
+    return isRegularFile(path, Links::NotFollowed);
 }
 
 // Where the edits belong, from the session's .info, checked like any input: a missing .info means a table

@@ -55,6 +55,17 @@ QString megabytes(qint64 bytes)
 
 } // namespace
 
+bool isRegularFile(const QString &path, Links links)
+{
+    struct stat info
+    {
+    };
+    const QByteArray native = QFile::encodeName(path);
+    const int found
+        = links == Links::Followed ? ::stat(native.constData(), &info) : ::lstat(native.constData(), &info);
+    return found == 0 && S_ISREG(info.st_mode);
+}
+
 Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes)
 {
     if (path.isEmpty())

@@ -18,6 +18,10 @@ namespace Toffee {
 // beginning with ':' is one of the application's own resources.
 [[nodiscard]] Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes);
 
+// Whether `path` is a regular file: through a link to one, or (`Links::NotFollowed`) only the name itself.
+enum class Links { Followed, NotFollowed };
+[[nodiscard]] bool isRegularFile(const QString &path, Links links = Links::Followed);
+
 // Hands the file's contents to a sink in pieces; the producer stops (returning false) when the sink does.
 using FileSink = std::function<bool(QByteArrayView piece)>;
 using FileProducer = std::function<bool(const FileSink &sink)>;

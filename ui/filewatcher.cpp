@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "filewatcher.h"
 
-#include <sys/stat.h>
-
 #include <QCryptographicHash>
 #include <QFile>
+#include <QFileInfo>
 #include <QTimer>
+
+#include "fileio.h"
 
 namespace Toffee {
 
@@ -20,13 +21,8 @@ FileWatcher::FileWatcher(QObject *parent)
 QByteArray FileWatcher::digestOf(const QString &path) const
 {
     // Only a regular file is read: opening a FIFO put in the file's place would block the window.
-    struct stat info
-    {
-    };
-    if (::stat(QFile::encodeName(path).constData(), &info) != 0)
-        return {};
-    if (!S_ISREG(info.st_mode))
-        return QByteArrayLiteral("not a regular file");
+    if (!isRegularFile(path))
+        return QFileInfo::exists(path) ? QByteArrayLiteral("not a regular file") : QByteArray();
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return {};
