@@ -28,6 +28,8 @@ enum Column {
     MeasuredTlo,
     MeasuredAt,
     Notes,
+    TloSourceColumn,
+    BreakTestColumn,
     UnitsColumn,
     LinuxCnc,
     ColumnCount
@@ -44,6 +46,8 @@ constexpr const char *kColumnNames[ColumnCount] = {
     "measured_tlo",
     "measured_at",
     "notes",
+    "tlo_source",
+    "break_test",
     "units",
     "linuxcnc",
 };
@@ -241,7 +245,7 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
             return Error {
                 tr("unknown column \"%1\" in the header; the columns are number, pocket, description, "
                    "length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, "
-                   "measured_at, notes, units and linuxcnc.")
+                   "measured_at, notes, tlo_source, break_test, units and linuxcnc.")
                     .arg(excerpt(header.fields.at(i))),
                 header.line
             };
@@ -335,6 +339,14 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
                               .arg(excerpt(cell(MeasuredAt)));
         }
         tool.notes = text(Notes);
+        if (const QByteArrayView source = cell(TloSourceColumn); source == "manual")
+            tool.tloSource = TloSource::Manual;
+        else if (!source.isEmpty() && source != "probe" && problem.isEmpty())
+            problem = tr("tlo_source \"%1\" must be probe, manual or empty.").arg(excerpt(source));
+        if (const QByteArrayView test = cell(BreakTestColumn); test == "failed")
+            tool.breakTestFailed = true;
+        else if (!test.isEmpty() && test != "passed" && problem.isEmpty())
+            problem = tr("break_test \"%1\" must be failed, passed or empty.").arg(excerpt(test));
         tool.linuxCncExtra = text(LinuxCnc);
         if (const QByteArrayView u = cell(UnitsColumn); !u.isEmpty()) {
             const auto rowUnits = u == "mm" ? Units::Millimetre
@@ -384,6 +396,12 @@ bool writeCsvTable(const ToolTable &table, const ByteSink &sink)
             appendIsoUtc(out, tool.measuredAt);
         out += ',';
         appendField(out, tool.notes);
+        out += ',';
+        if (tool.measuredTlo)
+            out += tool.tloSource == TloSource::Manual ? "manual" : "probe";
+        out += ',';
+        if (tool.breakTestFailed)
+            out += "failed";
         out += ',';
         out += units;
         out += ',';

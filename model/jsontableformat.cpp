@@ -2,6 +2,7 @@
 // The native format: a JSON object with a format name and version, the units, and one object per tool.
 #include "tablefile.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -17,7 +18,10 @@ namespace Toffee {
 
 namespace {
 
-constexpr int kJsonVersion = 1;
+// Version 2 added "tlo_source" and "break_test_failed". A table without either is still written as version 1,
+// so that an older Toffee keeps reading it; one with them is version 2, which an older Toffee refuses rather
+// than silently dropping a broken tool's mark.
+constexpr int kJsonVersion = 2;
 const auto kFormatId = "toffee-tool-table"_L1;
 
 namespace Key {
@@ -35,6 +39,8 @@ const auto RadiusWear = "radius_wear"_L1;
 const auto MeasuredTlo = "measured_tlo"_L1;
 const auto MeasuredAt = "measured_at"_L1;
 const auto Notes = "notes"_L1;
+const auto TloSource = "tlo_source"_L1;
+const auto BreakTestFailed = "break_test_failed"_L1;
 const auto LinuxCnc = "linuxcnc"_L1;
 } // namespace Key
 
@@ -298,6 +304,7 @@ public:
             if (m_end - m_p >= n && QByteArrayView(m_p, n) == word) {
                 m_p += n;
                 out.kind = kind;
+                out.number = word[0] == 't' ? 1.0 : 0.0;
                 return true;
             }
         }
@@ -389,7 +396,7 @@ bool readTool(JsonScanner &json, Tool &tool)
     quint32 seen = 0;
     static const QLatin1StringView keys[] = { Key::Number, Key::Pocket, Key::Description, Key::LengthGeometry,
         Key::LengthWear, Key::RadiusGeometry, Key::RadiusWear, Key::MeasuredTlo, Key::MeasuredAt, Key::Notes,
-        Key::LinuxCnc };
+        Key::TloSource, Key::BreakTestFailed, Key::LinuxCnc };
     if (!json.consume('}')) {
         do {
             QByteArrayView key;
@@ -440,6 +447,18 @@ bool readTool(JsonScanner &json, Tool &tool)
                 }
             } else if (k == Key::Notes) {
                 ok = text(json, v, k, tool.notes);
+            } else if (k == Key::TloSource) {
+                QString source;
+                ok = text(json, v, k, source);
+                if (ok && source == "manual"_L1)
+                    tool.tloSource = TloSource::Manual;
+                else if (ok && source != "probe"_L1)
+                    ok = json.fail(tr("\"tlo_source\" must be \"probe\" or \"manual\"."));
+            } else if (k == Key::BreakTestFailed) {
+                if (v.kind != Scalar::Bool)
+                    ok = json.fail(tr("\"break_test_failed\" must be true or false."));
+                else
+                    tool.breakTestFailed = v.number != 0.0;
             } else {
                 ok = text(json, v, k, tool.linuxCncExtra);
             }
@@ -610,8 +629,10 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
 {
     ChunkedWriter w(sink);
     QByteArray &out = w.out;
+    const bool marks = std::any_of(table.tools().cbegin(), table.tools().cend(),
+        [](const Tool &t) { return t.tloSource != TloSource::Probe || t.breakTestFailed; });
     out += "{\n  \"format\": \"toffee-tool-table\",\n  \"version\": ";
-    out += QByteArray::number(kJsonVersion);
+    out += QByteArray::number(marks ? kJsonVersion : 1);
     out += ",\n  \"units\": \"";
     out += unitsSymbol(table.units()).toLatin1();
     out += "\",\n  \"tools\": [";
@@ -636,6 +657,10 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
             appendIsoUtc(out, tool.measuredAt);
             out += '"';
         }
+        if (tool.tloSource == TloSource::Manual)
+            out += ", \"tlo_source\": \"manual\"";
+        if (tool.breakTestFailed)
+            out += ", \"break_test_failed\": true";
         if (!tool.notes.isEmpty()) {
             out += ", \"notes\": ";
             appendString(out, tool.notes);

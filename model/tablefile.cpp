@@ -113,12 +113,19 @@ QStringList formatLosses(const ToolTable &table, TableFormat format)
     bool wear = false;
     bool tlo = false;
     bool notes = false;
+    QStringList broken;
     for (const Tool &tool : table.tools()) {
+        if (tool.breakTestFailed)
+            broken << u"T"_s + QString::number(tool.number);
         wear = wear || tool.lengthWear != 0.0 || tool.radiusWear != 0.0;
         tlo = tlo || tool.measuredTlo.has_value();
         notes = notes || !tool.notes.isEmpty();
     }
     QStringList losses;
+    if (!broken.isEmpty())
+        losses << tr("A LinuxCNC table cannot mark a tool that failed its break test: %1 would no longer be "
+                     "marked.")
+                      .arg(broken.join(u", "_s));
     if (wear)
         losses << tr("A LinuxCNC table has no wear columns: wear is added into the length and diameter.");
     if (tlo)

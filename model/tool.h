@@ -8,6 +8,10 @@
 
 namespace Toffee {
 
+// Where a tool's stored TLO came from: the tool setter, or an offset the operator set on the machine by hand
+// (M493.3 Z, M493.3 H). A break test compares against the TLO the machine holds, so it matters which.
+enum class TloSource : quint8 { Probe, Manual };
+
 // One row of the tool table. Lengths and radii are in the table's units.
 struct Tool
 {
@@ -25,6 +29,10 @@ struct Tool
     // LinuxCNC fields Toffee does not edit (X, Y, A-C, U-W offsets, I, J, Q), kept verbatim as
     // "X0.5 Q2" so that a LinuxCNC table survives a round trip through Toffee.
     QString linuxCncExtra;
+    TloSource tloSource = TloSource::Probe; // Manual only with a measuredTlo
+    // The last break test found this tool longer or shorter than its TLO: it stays marked (in the file too)
+    // until it is probed again.
+    bool breakTestFailed = false;
 
     [[nodiscard]] double totalLength() const { return lengthGeometry + lengthWear; }
     [[nodiscard]] double totalRadius() const { return radiusGeometry + radiusWear; }

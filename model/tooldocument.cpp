@@ -65,6 +65,15 @@ Result<void> ToolDocument::saveAs(const QString &path, TableFormat format)
 {
     if (auto r = saveTableFile(path, table(), format); !r)
         return r;
+    // A format that cannot hold everything (a LinuxCNC .tbl has no TLOs, wear or marks): the window then
+    // shows what the file holds, as one undoable step, so that it never shows more than the file and Undo
+    // still brings the rest back.
+    if (!formatLosses(table(), format).isEmpty()) {
+        auto held = readTable(writeTable(table(), format), format, table().units());
+        if (held && !(held.value() == table()))
+            m_undoStack.push(new ReplaceTableCommand(&m_model, table(), held.value(),
+                tr("Keep only what %1 holds").arg(QFileInfo(path).fileName())));
+    }
     setFile(path, format);
     m_undoStack.setClean();
     return {};
@@ -143,20 +152,40 @@ void ToolDocument::removeTools(const QList<int> &numbers)
         m_undoStack.push(new RemoveToolsCommand(&m_model, tools));
 }
 
-Result<void> ToolDocument::recordMeasurement(int number, double tlo, const QDateTime &at)
+Result<void> ToolDocument::recordMeasurement(int number, double tlo, const QDateTime &at, TloSource source)
 {
     ToolTable next = table();
-    if (auto r = next.recordMeasurement(number, tlo, at); !r)
+    if (auto r = next.recordMeasurement(number, tlo, at, source); !r)
         return r;
-    const Tool &measured = *next.find(number);
-    if (const Tool *existing = table().find(number)) {
-        auto *command = new EditToolCommand(&m_model, *existing, measured);
-        command->setText(tr("Measure T%1").arg(number));
+    pushChange(*next.find(number),
+        source == TloSource::Manual ? tr("Set T%1 TLO by hand").arg(number) : tr("Measure T%1").arg(number));
+    return {};
+}
+
+Result<void> ToolDocument::recordBreakTest(int number, bool failed)
+{
+    ToolTable next = table();
+    if (auto r = next.recordBreakTest(number, failed); !r)
+        return r;
+    if (const Tool *existing = table().find(number); existing && *existing == *next.find(number))
+        return {}; // a passed test on an unmarked tool changes nothing
+    pushChange(*next.find(number),
+        failed ? tr("Mark T%1 failed its break test").arg(number)
+               : tr("T%1 passed its break test").arg(number));
+    return {};
+}
+
+void ToolDocument::pushChange(const Tool &changed, const QString &text)
+{
+    if (const Tool *existing = table().find(changed.number)) {
+        auto *command = new EditToolCommand(&m_model, *existing, changed);
+        command->setText(text);
         m_undoStack.push(command);
     } else {
-        m_undoStack.push(new AddToolCommand(&m_model, measured));
+        auto *command = new AddToolCommand(&m_model, changed);
+        command->setText(text);
+        m_undoStack.push(command);
     }
-    return {};
 }
 
 Tool ToolDocument::newTool() const

@@ -47,8 +47,12 @@ public:
     Result<void> addTool(const Tool &tool);
     Result<void> editTool(int number, const Tool &after);
     void removeTools(const QList<int> &numbers);
-    // A TLO measured on the machine, as one undoable step; the tool is added when the table has none.
-    Result<void> recordMeasurement(int number, double tlo, const QDateTime &at);
+    // A TLO from the machine (probed, or set there by hand), as one undoable step; the tool is added when the
+    // table has none.
+    Result<void> recordMeasurement(
+        int number, double tlo, const QDateTime &at, TloSource source = TloSource::Probe);
+    // A break test's verdict on tool `number`, as one undoable step (a failed tool stays marked).
+    Result<void> recordBreakTest(int number, bool failed);
     // A new tool with the next free number and its default pocket.
     [[nodiscard]] Tool newTool() const;
 
@@ -57,6 +61,8 @@ Q_SIGNALS:
     void filePathChanged(const QString &path);
 
 private:
+    // `changed` replaces the tool with its number, or is added, as one undoable step named `text`.
+    void pushChange(const Tool &changed, const QString &text);
     void setFile(const QString &path, TableFormat format);
 
     ToolTableModel m_model;

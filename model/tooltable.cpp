@@ -133,25 +133,39 @@ Result<void> ToolTable::replace(int number, const Tool &tool)
     return {};
 }
 
-Result<void> ToolTable::recordMeasurement(int number, double tlo, const QDateTime &at)
+Result<void> ToolTable::recordMeasurement(int number, double tlo, const QDateTime &at, TloSource source)
 {
     // A measured value is stored at the machine's resolution (0.001 mm, 0.0001 in), never with the noise of
     // the arithmetic that produced it.
     const double steps = m_units == Units::Inch ? 10000.0 : 1000.0;
     if (std::isfinite(tlo))
         tlo = std::round(tlo * steps) / steps;
-    if (const Tool *existing = find(number)) {
-        Tool tool = *existing;
-        tool.measuredTlo = tlo;
-        tool.measuredAt = at.toUTC();
-        return replace(number, tool);
-    }
     Tool tool;
-    tool.number = number;
-    tool.pocket = defaultPocket(number);
+    if (const Tool *existing = find(number)) {
+        tool = *existing;
+    } else {
+        tool.number = number;
+        tool.pocket = defaultPocket(number);
+    }
     tool.measuredTlo = tlo;
     tool.measuredAt = at.toUTC();
-    return insert(tool);
+    tool.tloSource = source;
+    if (source == TloSource::Probe)
+        tool.breakTestFailed = false;
+    return contains(number) ? replace(number, tool) : insert(tool);
+}
+
+Result<void> ToolTable::recordBreakTest(int number, bool failed)
+{
+    Tool tool;
+    if (const Tool *existing = find(number)) {
+        tool = *existing;
+    } else {
+        tool.number = number;
+        tool.pocket = defaultPocket(number);
+    }
+    tool.breakTestFailed = failed;
+    return contains(number) ? replace(number, tool) : insert(tool);
 }
 
 bool ToolTable::remove(int number)

@@ -61,8 +61,12 @@ public:
     // Replaces the tool numbered `number` by `tool` (which may carry a new, unused number).
     Result<void> replace(int number, const Tool &tool);
     bool remove(int number);
-    // Stores a TLO measured on the machine into tool `number`, adding the tool when the table has none.
-    Result<void> recordMeasurement(int number, double tlo, const QDateTime &at);
+    // Stores a TLO from the machine into tool `number`, adding the tool when the table has none. A probe
+    // clears a failed break test's mark; an offset set by hand does not (the tool was not measured).
+    Result<void> recordMeasurement(
+        int number, double tlo, const QDateTime &at, TloSource source = TloSource::Probe);
+    // Marks tool `number` as failed (or passed) by a break test, adding the tool when the table has none.
+    Result<void> recordBreakTest(int number, bool failed);
 
     friend bool operator==(const ToolTable &, const ToolTable &) = default;
 

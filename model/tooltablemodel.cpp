@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tooltablemodel.h"
 
+#include <QColor>
+#include <QLocale>
+
 #include "textparsing.h"
 #include "toolvalidation.h"
 
@@ -24,7 +27,11 @@ int ToolTableModel::columnCount(const QModelIndex &parent) const
 
 QString ToolTableModel::formatLength(double value) const
 {
-    return displayNumber(value, m_table.units());
+    // The locale's decimal separator, as the spin boxes and the rest of the window use ("-33,388" in German).
+    QString text = displayNumber(value, m_table.units());
+    if (const QString point = QLocale().decimalPoint(); point != u".")
+        text.replace(u'.', point);
+    return text;
 }
 
 QVariant ToolTableModel::data(const QModelIndex &index, int role) const
@@ -38,6 +45,30 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
         const bool text = index.column() == DescriptionColumn || index.column() == NotesColumn;
         return QVariant::fromValue(Qt::AlignVCenter | (text ? Qt::AlignLeft : Qt::AlignRight));
     }
+    // A tool that failed its break test stands out on every column until it is probed again; a TLO never
+    // measured reads as such, greyed, and not as an empty cell that could pass for zero.
+    if (role == Qt::BackgroundRole && tool.breakTestFailed)
+        return QColor(0xf6, 0xc8, 0xcc);
+    if (role == Qt::ForegroundRole && tool.breakTestFailed)
+        return QColor(0x80, 0x10, 0x18);
+    if (role == Qt::ForegroundRole && index.column() == MeasuredTloColumn && !tool.measuredTlo)
+        return QColor(0x80, 0x80, 0x80);
+    if (role == Qt::ToolTipRole && index.column() == MeasuredTloColumn)
+        return tloToolTip(tool);
+    if (index.column() == PocketColumn && (role == Qt::ForegroundRole || role == Qt::ToolTipRole)
+        && pocketCount(tool.pocket) > 1) {
+        if (role == Qt::ForegroundRole)
+            return QColor(0xb0, 0x50, 0x00);
+        QStringList others;
+        for (int n : toolsSharingPocket(tool.pocket, tool.number))
+            others << u"T"_s + QString::number(n);
+        return tr(
+            "Pocket %1 also holds %2. LinuxCNC's random tool changer needs each tool in its own pocket.")
+            .arg(tool.pocket)
+            .arg(others.join(u", "_s));
+    }
+    if (role == Qt::ToolTipRole && index.column() == NumberColumn && tool.breakTestFailed)
+        return tloToolTip(tool);
     if (role != Qt::DisplayRole && role != Qt::EditRole && role != SortRole && role != Qt::ToolTipRole)
         return {};
 
@@ -62,10 +93,18 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
         return length(tool.radiusGeometry);
     case RadiusWearColumn:
         return length(tool.radiusWear);
-    case MeasuredTloColumn:
-        if (!tool.measuredTlo)
-            return role == SortRole ? QVariant(-1e300) : QVariant();
-        return length(*tool.measuredTlo);
+    case MeasuredTloColumn: {
+        if (role == SortRole)
+            return tool.measuredTlo ? *tool.measuredTlo : -1e300;
+        if (role == Qt::EditRole)
+            return tool.measuredTlo ? QVariant(*tool.measuredTlo) : QVariant();
+        QString text = tool.measuredTlo ? formatLength(*tool.measuredTlo) : tr("not measured");
+        if (tool.measuredTlo && tool.tloSource == TloSource::Manual)
+            text = tr("%1 (by hand)").arg(text);
+        if (tool.breakTestFailed)
+            text = tr("%1 — BROKEN?").arg(text);
+        return text;
+    }
     case MeasuredAtColumn:
         if (!tool.measuredAt.isValid())
             return {};
@@ -77,6 +116,27 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
     default:
         return {};
     }
+}
+
+QString ToolTableModel::tloToolTip(const Tool &tool) const
+{
+    QStringList lines;
+    if (!tool.measuredTlo)
+        lines << tr("T%1 has not been measured on the tool setter.").arg(tool.number);
+    else if (tool.tloSource == TloSource::Manual)
+        lines << tr("T%1's TLO %2 was set on the machine by hand, not measured. A break test compares "
+                    "against it.")
+                     .arg(tool.number)
+                     .arg(formatLength(*tool.measuredTlo));
+    else
+        lines << tr("T%1's TLO %2 was measured on the tool setter.")
+                     .arg(tool.number)
+                     .arg(formatLength(*tool.measuredTlo));
+    if (tool.breakTestFailed)
+        lines << tr("T%1 failed its last break test: check it, replace it if it is damaged, then probe it "
+                    "again. It stays marked until it is probed.")
+                     .arg(tool.number);
+    return lines.join(u'\n');
 }
 
 QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, int role) const
@@ -207,10 +267,46 @@ bool ToolTableModel::setData(const QModelIndex &index, const QVariant &value, in
     return replaceTool(before.number, after.value()).ok();
 }
 
+int ToolTableModel::pocketCount(int pocket) const
+{
+    if (pocket == 0)
+        return 1;
+    if (m_pocketsDirty) {
+        m_pocketCounts.clear();
+        for (const Tool &t : m_table.tools())
+            ++m_pocketCounts[t.pocket];
+        m_pocketsDirty = false;
+    }
+    return m_pocketCounts.value(pocket);
+}
+
+QList<int> ToolTableModel::toolsSharingPocket(int pocket, int except) const
+{
+    QList<int> numbers;
+    if (pocket == 0 || pocketCount(pocket) < 2)
+        return numbers;
+    for (const Tool &t : m_table.tools()) {
+        if (t.pocket == pocket && t.number != except)
+            numbers << t.number;
+    }
+    return numbers;
+}
+
+void ToolTableModel::pocketsChanged(const Tool &tool)
+{
+    // Another row's pocket may have become (or stopped being) shared: the column is repainted.
+    if (!m_table.isEmpty())
+        Q_EMIT dataChanged(index(0, PocketColumn), index(int(m_table.size()) - 1, PocketColumn),
+            { Qt::ForegroundRole, Qt::ToolTipRole });
+    if (const QList<int> others = toolsSharingPocket(tool.pocket, tool.number); !others.isEmpty())
+        Q_EMIT pocketShared(tool.number, tool.pocket, others);
+}
+
 void ToolTableModel::resetTable(const ToolTable &table)
 {
     beginResetModel();
     m_table = table;
+    m_pocketsDirty = true;
     endResetModel();
 }
 
@@ -221,7 +317,10 @@ Result<void> ToolTableModel::insertTool(const Tool &tool)
     const int row = int(m_table.insertionIndex(tool.number));
     beginInsertRows({}, row, row);
     (void)m_table.insert(tool);
+    if (!m_pocketsDirty)
+        ++m_pocketCounts[tool.pocket];
     endInsertRows();
+    pocketsChanged(tool);
     return {};
 }
 
@@ -230,17 +329,23 @@ Result<void> ToolTableModel::replaceTool(int number, const Tool &tool)
     if (auto r = m_table.checkReplace(number, tool); !r)
         return r;
     const int oldRow = rowOfTool(number);
+    const int oldPocket = m_table.at(oldRow).pocket;
     // A new number can move the row; a move (not remove + insert) keeps views' selection on the tool.
     const int destination = int(m_table.insertionIndex(tool.number));
     const bool moves = tool.number != number && destination != oldRow && destination != oldRow + 1;
     if (moves)
         beginMoveRows({}, oldRow, oldRow, {}, destination);
     (void)m_table.replace(number, tool);
+    if (!m_pocketsDirty && tool.pocket != oldPocket) {
+        --m_pocketCounts[oldPocket];
+        ++m_pocketCounts[tool.pocket];
+    }
     if (moves)
         endMoveRows();
     const int row = rowOfTool(tool.number);
-    Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1),
-        { Qt::DisplayRole, Qt::EditRole, SortRole, ToolNumberRole, Qt::ToolTipRole });
+    Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1)); // every role: text, marks, colours
+    if (tool.pocket != oldPocket)
+        pocketsChanged(tool);
     return {};
 }
 
@@ -249,8 +354,11 @@ bool ToolTableModel::removeTool(int number)
     const int row = rowOfTool(number);
     if (row < 0)
         return false;
+    const int pocket = m_table.at(row).pocket;
     beginRemoveRows({}, row, row);
     m_table.remove(number);
+    if (!m_pocketsDirty)
+        --m_pocketCounts[pocket];
     endRemoveRows();
     return true;
 }

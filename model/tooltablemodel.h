@@ -4,6 +4,7 @@
 #include <functional>
 
 #include <QAbstractTableModel>
+#include <QHash>
 
 #include "tooltable.h"
 
@@ -59,15 +60,27 @@ public:
 
     void setEditHandler(EditHandler handler) { m_editHandler = std::move(handler); }
 
+    // The other tools in `pocket` (pocket 0, the spindle of a random changer, is never shared).
+    [[nodiscard]] QList<int> toolsSharingPocket(int pocket, int except) const;
+
 Q_SIGNALS:
     // An edit from a view was refused; the message says why and what to enter instead.
     void editRejected(const QString &message);
+    // A tool was added or changed into a pocket another tool already has: allowed, but worth a word
+    // (LinuxCNC's random tool changer needs each tool in its own pocket).
+    void pocketShared(int number, int pocket, const QList<int> &others);
 
 private:
     [[nodiscard]] QString formatLength(double value) const;
+    [[nodiscard]] QString tloToolTip(const Tool &tool) const;
+
+    [[nodiscard]] int pocketCount(int pocket) const;
+    void pocketsChanged(const Tool &tool);
 
     ToolTable m_table;
     EditHandler m_editHandler;
+    mutable QHash<int, int> m_pocketCounts; // built when first needed after a change
+    mutable bool m_pocketsDirty = true;
 };
 
 } // namespace Toffee

@@ -130,7 +130,8 @@ bool isPlainlyValid(const Tool &tool, Units units)
         || tool.notes.size() > Limits::kMaxNotesLength || !tool.linuxCncExtra.isEmpty()
         || !withinLimit(tool.lengthGeometry, geometry) || !withinLimit(tool.lengthWear, wear)
         || !withinLimit(tool.radiusGeometry, geometry) || !withinLimit(tool.radiusWear, wear)
-        || (tool.measuredTlo && !withinLimit(*tool.measuredTlo, geometry)))
+        || (tool.measuredTlo && !withinLimit(*tool.measuredTlo, geometry))
+        || (!tool.measuredTlo && tool.tloSource != TloSource::Probe))
         return false;
     for (QChar c : tool.description) {
         if (c.unicode() < 0x20 || (c.unicode() >= 0x7f && c.category() == QChar::Other_Control))
@@ -185,6 +186,8 @@ Result<void> validateTool(const Tool &tool, Units units)
     if (tool.measuredTlo) {
         if (auto r = validateLength(tr("measured TLO"), *tool.measuredTlo, geometry, units); !r)
             return withPrefix(r);
+    } else if (tool.tloSource != TloSource::Probe) {
+        return Error { prefix + tr("a TLO set by hand needs its value; the measured TLO is empty.") };
     }
     if (auto r = validateLinuxCncExtra(tool.linuxCncExtra); !r)
         return withPrefix(r);

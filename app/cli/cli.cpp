@@ -37,7 +37,9 @@ Options:
   --json                     print one JSON object on stdout (errors too: {"error": message})
   --to FORMAT                convert: the output format (json, tbl, csv)
   --units mm|in              the units of a LinuxCNC .tbl file, which does not record them (default mm)
-  --table FILE               probe, change-tool: record the measured TLO and its time in FILE
+  --table FILE               probe, change-tool, set-tlo, break-test: record in FILE the measured TLO,
+                             the TLO set by hand (marked so), or a failed break test (the tool stays marked
+                             until it is probed again); FILE must be writable before the machine moves
   --timeout S                give up on connecting, or on any command, after S seconds (default: 5, 120 for motion)
   --help                     this text
 

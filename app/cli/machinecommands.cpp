@@ -6,6 +6,7 @@
 
 #include <QElapsedTimer>
 #include <QEventLoop>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QTimer>
@@ -186,6 +187,13 @@ int runMachineCommand(Invocation &call)
         if (!loaded)
             return fail(call, loaded.error().text(), BadInput);
         table = loaded.takeValue();
+        // Found out before the machine moves, not after: a measurement that cannot be saved is lost.
+        const QFileInfo info(tablePath);
+        if (!info.isWritable() || !QFileInfo(info.absolutePath()).isWritable())
+            return fail(call,
+                u"%1 cannot be written (check its permissions and its folder's); nothing was sent to the "
+                "machine."_s.arg(tablePath),
+                BadInput);
     }
 
     std::unique_ptr<LineTransport> transport;
@@ -199,12 +207,15 @@ int runMachineCommand(Invocation &call)
     QEventLoop loop;
     int exitCode = Success;
 
+    bool recordFailed = false; // then the exit code says so (unless the tool is broken, which says more)
     auto finishWith = [&](const SessionResult &r) {
-        exitCode = exitCodeFor(r.outcome);
+        if (!recordFailed || r.outcome == SessionResult::Outcome::ToolBroken)
+            exitCode = exitCodeFor(r.outcome);
         if (!r.ok() && !(r.outcome == SessionResult::Outcome::ToolBroken && r.breakTest))
             fail(call, r.message, ExitCode(exitCode));
         loop.quit();
     };
+    // What a successful probe, a manual offset or a break test means for the table, saved at once.
     auto record = [&](const SessionResult &r) {
         if (!table)
             return true;
@@ -212,18 +223,29 @@ int runMachineCommand(Invocation &call)
         if (measured < 0) {
             fail(call, u"the machine reports no tool in the spindle; nothing was recorded."_s, MachineError);
             exitCode = MachineError;
+            recordFailed = true;
             return false;
         }
-        Result<void> saved
-            = table->recordMeasurement(measured, r.tlo->tlo(), QDateTime::currentDateTimeUtc());
+        Result<void> saved;
+        if (r.breakTest)
+            saved = table->recordBreakTest(measured, r.outcome == SessionResult::Outcome::ToolBroken);
+        else
+            saved = table->recordMeasurement(measured, r.tlo->tlo(), QDateTime::currentDateTimeUtc(),
+                command == u"set-tlo" ? TloSource::Manual : TloSource::Probe);
         if (saved)
             saved = saveTableFile(tablePath, *table, formatForPath(tablePath).value_or(TableFormat::Json));
         if (!saved) {
             fail(call,
-                u"measured T%1 (TLO %2 mm) but could not record it: %3"_s.arg(measured).arg(
-                    mm(r.tlo->tlo()), saved.error().text()),
+                r.breakTest ? u"the break test ran on T%1 but could not be recorded: %2"_s.arg(measured).arg(
+                    saved.error().text())
+                    : command == u"set-tlo"
+                    ? u"set T%1's TLO to %2 mm on the machine but could not record it: %3"_s.arg(measured)
+                          .arg(mm(r.tlo->tlo()), saved.error().text())
+                    : u"measured T%1 (TLO %2 mm) but could not record it: %3"_s.arg(measured).arg(
+                        mm(r.tlo->tlo()), saved.error().text()),
                 BadInput);
             exitCode = BadInput;
+            recordFailed = true;
             return false;
         }
         return true;
@@ -255,9 +277,16 @@ int runMachineCommand(Invocation &call)
             else
                 session.changeTool(tool, done);
         } else if (command == u"break-test")
-            session.breakTest(tolerance, printed([&](const SessionResult &r) { printBreakTest(call, r); }));
+            session.breakTest(tolerance, printed([&](const SessionResult &r) {
+                printBreakTest(call, r);
+                if (r.breakTest)
+                    record(r);
+            }));
         else if (command == u"set-tlo") {
-            auto print = printed([&](const SessionResult &r) { printTlo(call, r); });
+            auto print = printed([&](const SessionResult &r) {
+                if (record(r))
+                    printTlo(call, r);
+            });
             if (z)
                 session.setTlo(*z, print);
             else

@@ -40,6 +40,11 @@ QJsonObject toolJson(const Tool &tool)
         { u"measured_at"_s,
             tool.measuredAt.isValid() ? QJsonValue(tool.measuredAt.toUTC().toString(Qt::ISODateWithMs))
                                       : QJsonValue() },
+        { u"tlo_source"_s,
+            !tool.measuredTlo                         ? QJsonValue()
+                : tool.tloSource == TloSource::Manual ? QJsonValue(u"manual"_s)
+                                                      : QJsonValue(u"probe"_s) },
+        { u"break_test_failed"_s, tool.breakTestFailed },
         { u"notes"_s, tool.notes },
     };
     return o;
@@ -93,6 +98,11 @@ int showTable(Invocation &call)
                         .arg(n(tool.radiusWear), 8)
                         .arg(tool.measuredTlo ? n(*tool.measuredTlo) : u"-"_s, 10)
                         .arg(tool.description);
+        // What an operator must not miss comes after the description, where a long one cannot hide it.
+        if (tool.measuredTlo && tool.tloSource == TloSource::Manual)
+            call.out << "        TLO set by hand, not measured\n";
+        if (tool.breakTestFailed)
+            call.out << "        FAILED ITS LAST BREAK TEST: check it, then probe it again\n";
     }
     call.out.flush();
     return Success;

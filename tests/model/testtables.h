@@ -62,6 +62,8 @@ inline ToolTable awkwardTable(Units units = Units::Millimetre)
     t2.lengthGeometry = 71.488;
     t2.measuredTlo = -33.388;
     t2.measuredAt = QDateTime(QDate(2026, 11, 20), QTime(8, 15, 2), Qt::UTC);
+    t2.tloSource = TloSource::Manual; // set by hand on the machine
+    t2.breakTestFailed = true; // and found broken since
     tools << t2;
     Tool t3;
     t3.number = 99999;
@@ -88,6 +90,8 @@ inline ToolTable linuxCncTable()
     for (Tool &tool : tools) {
         tool.measuredTlo.reset();
         tool.measuredAt = {};
+        tool.tloSource = TloSource::Probe;
+        tool.breakTestFailed = false;
         tool.notes.clear();
     }
     return ToolTable::fromTools(tools, Units::Millimetre).takeValue();

@@ -105,8 +105,62 @@ private Q_SLOTS:
         QVERIFY(formatLosses(Test::awkwardTable(), TableFormat::Csv).isEmpty());
         QVERIFY(formatLosses(Test::linuxCncTable(), TableFormat::LinuxCnc).isEmpty());
         const QStringList losses = formatLosses(Test::awkwardTable(), TableFormat::LinuxCnc);
-        QCOMPARE(losses.size(), 2); // measured TLOs and notes
+        QCOMPARE(losses.size(), 3); // the broken tool's mark, measured TLOs and notes
         QVERIFY(losses.join(u' ').contains(u"TLO"_s));
+        QVERIFY(losses.first().contains(u"break test: T2 would no longer be marked"_s));
+    }
+
+    void marksSurviveJsonAndCsvAndOnlyMarkedTablesAreVersion2()
+    {
+        // A TLO set by hand and a failed break test are written, read back, and kept by both rich formats.
+        const ToolTable marked = Test::awkwardTable();
+        for (TableFormat format : { TableFormat::Json, TableFormat::Csv }) {
+            const auto back = readTable(writeTable(marked, format), format);
+            QVERIFY2(back.ok(), qPrintable(back.ok() ? QString() : back.error().text()));
+            QCOMPARE(back.value().find(2)->tloSource, TloSource::Manual);
+            QVERIFY(back.value().find(2)->breakTestFailed);
+            QCOMPARE(back.value().find(1)->tloSource, TloSource::Probe);
+            QVERIFY(!back.value().find(1)->breakTestFailed);
+        }
+        const QByteArray json = writeTable(marked, TableFormat::Json);
+        QVERIFY(json.contains("\"version\": 2"));
+        QVERIFY(json.contains("\"tlo_source\": \"manual\", \"break_test_failed\": true"));
+        // Without marks the file stays version 1, which an older Toffee still reads.
+        const QByteArray plain = writeTable(Test::linuxCncTable(), TableFormat::Json);
+        QVERIFY(plain.contains("\"version\": 1"));
+        QVERIFY(!plain.contains("tlo_source"));
+        const QByteArray csv = writeTable(marked, TableFormat::Csv);
+        QVERIFY(csv.startsWith("number,pocket,description,length_geometry,length_wear,radius_geometry,"
+                               "radius_wear,measured_tlo,measured_at,notes,tlo_source,break_test,units,"));
+        QVERIFY(csv.contains(",manual,failed,mm,"));
+    }
+
+    void badMarksAreRefusedWithTheirLine()
+    {
+        const auto json = readTable(
+            "{\"format\": \"toffee-tool-table\", \"version\": 2, \"units\": \"mm\", \"tools\": [\n"
+            "{\"number\": 1, \"measured_tlo\": 1, \"tlo_source\": \"guess\"}]}",
+            TableFormat::Json);
+        QVERIFY(!json.ok());
+        QCOMPARE(json.error().line, 2);
+        QVERIFY(json.error().message.contains(u"\"tlo_source\" must be"_s));
+        const auto flag = readTable(
+            "{\"format\": \"toffee-tool-table\", \"version\": 2, \"units\": \"mm\", \"tools\": [\n"
+            "{\"number\": 1, \"break_test_failed\": \"yes\"}]}",
+            TableFormat::Json);
+        QVERIFY(!flag.ok());
+        QVERIFY(flag.error().message.contains(u"true or false"_s));
+        // "Set by hand" with no TLO to have been set is not a tool.
+        const auto empty = readTable(
+            "{\"format\": \"toffee-tool-table\", \"version\": 2, \"units\": \"mm\", \"tools\": [\n"
+            "{\"number\": 1, \"tlo_source\": \"manual\"}]}",
+            TableFormat::Json);
+        QVERIFY(!empty.ok());
+        QVERIFY(empty.error().message.contains(u"set by hand needs its value"_s));
+        const auto csv = readTable("number,break_test\n1,maybe\n", TableFormat::Csv);
+        QVERIFY(!csv.ok());
+        QCOMPARE(csv.error().line, 2);
+        QVERIFY(csv.error().message.contains(u"break_test \"maybe\""_s));
     }
 };
 

@@ -198,6 +198,68 @@ private Q_SLOTS:
         QCOMPARE(doc.undoStack()->count(), steps);
     }
 
+    void aBrokenToolStaysMarkedUntilItIsProbed()
+    {
+        ToolDocument doc;
+        const QDateTime at(QDate(2026, 11, 23), QTime(9, 0), Qt::UTC);
+        QVERIFY(doc.recordMeasurement(2, -33.388, at).ok());
+        QVERIFY(doc.recordMeasurement(2, -30.488, at.addSecs(60), TloSource::Manual).ok());
+        QCOMPARE(doc.table().find(2)->tloSource, TloSource::Manual);
+        QCOMPARE(*doc.table().find(2)->measuredTlo, -30.488);
+        QCOMPARE(doc.undoStack()->undoText(), u"Set T2 TLO by hand"_s);
+
+        QVERIFY(doc.recordBreakTest(2, true).ok());
+        QVERIFY(doc.table().find(2)->breakTestFailed);
+        // Setting the offset by hand is not measuring: the mark stays.
+        QVERIFY(doc.recordMeasurement(2, -33.0, at.addSecs(120), TloSource::Manual).ok());
+        QVERIFY(doc.table().find(2)->breakTestFailed);
+        // A probe is: the mark goes, and the TLO is measured again.
+        QVERIFY(doc.recordMeasurement(2, -33.388, at.addSecs(180)).ok());
+        QVERIFY(!doc.table().find(2)->breakTestFailed);
+        QCOMPARE(doc.table().find(2)->tloSource, TloSource::Probe);
+        // Each was one undo step; undoing the probe brings the mark back.
+        doc.undoStack()->undo();
+        QVERIFY(doc.table().find(2)->breakTestFailed);
+        // A passed test on an unmarked tool is no step at all.
+        doc.undoStack()->redo();
+        const int steps = doc.undoStack()->count();
+        QVERIFY(doc.recordBreakTest(2, false).ok());
+        QCOMPARE(doc.undoStack()->count(), steps);
+        // A tool the table lacks is added, marked.
+        QVERIFY(doc.recordBreakTest(7, true).ok());
+        QVERIFY(doc.table().find(7)->breakTestFailed);
+        QVERIFY(!doc.table().find(7)->measuredTlo);
+    }
+
+    void afterSavingAsTblTheWindowShowsWhatTheFileHolds()
+    {
+        QTemporaryDir dir;
+        ToolDocument doc;
+        QVERIFY(doc.open(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json")).ok());
+        QVERIFY(doc.recordBreakTest(2, true).ok());
+        const ToolTable full = doc.table();
+        QVERIFY(full.find(2)->measuredTlo);
+        const QString path = dir.filePath(u"tools.tbl"_s);
+        QVERIFY(doc.saveAs(path, TableFormat::LinuxCnc).ok());
+        // Exactly what a reader of the file gets, saved and not modified: no TLO, no mark on screen.
+        const auto onDisk = loadTableFile(path);
+        QVERIFY(onDisk.ok());
+        QCOMPARE(doc.table(), onDisk.value());
+        QVERIFY(!doc.table().find(2)->measuredTlo);
+        QVERIFY(!doc.table().find(2)->breakTestFailed);
+        QVERIFY(!doc.isModified());
+        QCOMPARE(doc.filePath(), path);
+        // Undo brings back everything the file could not hold, as an unsaved change.
+        doc.undoStack()->undo();
+        QCOMPARE(doc.table(), full);
+        QVERIFY(doc.isModified());
+        // A format that loses nothing saves as it is, with no extra step.
+        const int steps = doc.undoStack()->count();
+        QVERIFY(doc.saveAs(dir.filePath(u"tools.json"_s), TableFormat::Json).ok());
+        QCOMPARE(doc.undoStack()->count(), steps);
+        QCOMPARE(doc.table(), full);
+    }
+
     void newToolTakesTheNextFreeNumber()
     {
         ToolDocument doc;

@@ -44,6 +44,81 @@ private Q_SLOTS:
         QCOMPARE(model.rowCount(), 0);
     }
 
+    void saysWhatWasNeverMeasuredSetByHandOrBroken()
+    {
+        ToolTableModel model;
+        model.resetTable(Test::awkwardTable());
+        auto tlo = [&model](int number, int role = Qt::DisplayRole) {
+            return model.index(model.rowOfTool(number), ToolTableModel::MeasuredTloColumn).data(role);
+        };
+        QCOMPARE(tlo(0).toString(), u"not measured"_s); // not an empty cell that could pass for zero
+        QVERIFY(!tlo(0, Qt::EditRole).isValid());
+        QCOMPARE(tlo(1).toString(), u"0.000"_s);
+        QCOMPARE(tlo(2).toString(), u"-33.388 (by hand) — BROKEN?"_s);
+        QVERIFY(tlo(2, Qt::ToolTipRole).toString().contains(u"set on the machine by hand"_s));
+        QVERIFY(tlo(2, Qt::ToolTipRole).toString().contains(u"failed its last break test"_s));
+        // The broken tool's whole row stands out; the others do not.
+        const QModelIndex brokenRow = model.index(model.rowOfTool(2), ToolTableModel::DescriptionColumn);
+        QVERIFY(brokenRow.data(Qt::BackgroundRole).isValid());
+        QVERIFY(!model.index(model.rowOfTool(1), ToolTableModel::DescriptionColumn)
+                     .data(Qt::BackgroundRole)
+                     .isValid());
+        // The filter finds broken tools by what it shows.
+        QSortFilterProxyModel proxy;
+        proxy.setSourceModel(&model);
+        proxy.setFilterKeyColumn(-1);
+        proxy.setFilterCaseSensitivity(Qt::CaseInsensitive);
+        proxy.setFilterFixedString(u"broken?"_s);
+        QCOMPARE(proxy.rowCount(), 1);
+    }
+
+    void warnsOfTwoToolsInOnePocket()
+    {
+        ToolTableModel model;
+        QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QSignalSpy shared(&model, &ToolTableModel::pocketShared);
+        auto inOwnPocket = [](int number) {
+            Tool t = Test::tool(number);
+            t.pocket = number;
+            return t;
+        };
+        QVERIFY(model.insertTool(inOwnPocket(1)).ok());
+        QVERIFY(model.insertTool(inOwnPocket(2)).ok());
+        QCOMPARE(shared.count(), 0);
+        Tool three = Test::tool(3);
+        three.pocket = 2;
+        QVERIFY(model.insertTool(three).ok()); // accepted, with a word
+        QCOMPARE(shared.count(), 1);
+        QCOMPARE(shared.at(0).at(0).toInt(), 3);
+        QCOMPARE(shared.at(0).at(1).toInt(), 2);
+        QCOMPARE(shared.at(0).at(2).value<QList<int>>(), QList<int> { 2 });
+        auto pocket = [&model](int number, int role) {
+            return model.index(model.rowOfTool(number), ToolTableModel::PocketColumn).data(role);
+        };
+        QVERIFY(pocket(2, Qt::ToolTipRole).toString().contains(u"also holds T3"_s));
+        QVERIFY(pocket(2, Qt::ForegroundRole).isValid());
+        QVERIFY(!pocket(1, Qt::ForegroundRole).isValid());
+        // Moving T3 to its own pocket clears both.
+        three.pocket = 3;
+        QVERIFY(model.replaceTool(3, three).ok());
+        QVERIFY(!pocket(2, Qt::ForegroundRole).isValid());
+        QCOMPARE(shared.count(), 1);
+        // Pocket 0 is a random changer's spindle: never "shared".
+        Tool a = Test::tool(10);
+        a.pocket = 0;
+        Tool b = Test::tool(11);
+        b.pocket = 0;
+        QVERIFY(model.insertTool(a).ok());
+        QVERIFY(model.insertTool(b).ok());
+        QCOMPARE(shared.count(), 1);
+        // Removing a tool keeps the count right.
+        three.pocket = 1;
+        QVERIFY(model.replaceTool(3, three).ok());
+        QCOMPARE(shared.count(), 2);
+        QVERIFY(model.removeTool(1));
+        QVERIFY(!pocket(3, Qt::ForegroundRole).isValid());
+    }
+
     void showsTotalLengthAsGeometryPlusWear()
     {
         ToolTableModel model;
