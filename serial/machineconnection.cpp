@@ -25,6 +25,10 @@ void MachineConnection::setState(State state)
     if (m_state == state)
         return;
     m_state = state;
+    if (state != State::Connected) {
+        setHalt(false, std::nullopt); // nothing is known of a machine Toffee is not connected to
+        m_offsets.reset();
+    }
     Q_EMIT stateChanged(state);
 }
 
@@ -71,8 +75,16 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
         m_transport = std::make_unique<SerialPortTransport>(target.port, target.baud);
     m_link = std::make_unique<MachineLink>(m_transport.get());
     m_session = std::make_unique<MachineSession>(m_link.get());
-    connect(m_link.get(), &MachineLink::statusChanged, this, &MachineConnection::statusChanged);
-    connect(m_link.get(), &MachineLink::alarmRaised, this, &MachineConnection::alarmRaised);
+    connect(m_link.get(), &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
+        setHalt(status.isAlarm(), status.haltReason);
+        Q_EMIT statusChanged(status);
+    });
+    connect(m_link.get(), &MachineLink::alarmRaised, this, [this](const QString &message) {
+        // The alarm line comes before the status that says "Alarm": the window stops offering motion now,
+        // not a status report later (when a broken-tool box already says halted).
+        setHalt(true, m_haltReason);
+        Q_EMIT alarmRaised(message);
+    });
     connect(m_link.get(), &MachineLink::lineSent, this,
         [this](const QByteArray &l) { Q_EMIT consoleLine(l, true); });
     connect(m_link.get(), &MachineLink::lineReceived, this, [this](const QByteArray &l) {
@@ -94,11 +106,29 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
             return;
         }
         setState(State::Connected);
-        if (result.status)
+        if (result.status) {
+            setHalt(result.status->isAlarm(), result.status->haltReason);
             Q_EMIT statusChanged(*result.status);
-        if (result.tlo)
+        }
+        if (result.tlo) {
+            m_offsets = result.tlo;
             Q_EMIT offsetsChanged(*result.tlo, result.tool.value_or(-1));
+        }
     });
+}
+
+void MachineConnection::setHalt(bool halted, std::optional<int> reason)
+{
+    m_haltReason = halted ? reason : std::nullopt;
+    if (m_halted == halted)
+        return;
+    m_halted = halted;
+    Q_EMIT haltedChanged(halted);
+}
+
+bool MachineConnection::canOperate() const
+{
+    return m_state == State::Connected && !isBusy() && !m_halted;
 }
 
 bool MachineConnection::beginOperation(const QString &what)
@@ -112,8 +142,10 @@ bool MachineConnection::beginOperation(const QString &what)
 
 void MachineConnection::endOperation(const SessionResult &result)
 {
-    if (result.tlo)
+    if (result.tlo) {
+        m_offsets = result.tlo;
         Q_EMIT offsetsChanged(*result.tlo, result.tool.value_or(-1));
+    }
     m_operation.clear();
     Q_EMIT busyChanged(false, {});
 }

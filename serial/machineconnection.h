@@ -52,6 +52,13 @@ public:
     bool beginOperation(const QString &what);
     void endOperation(const SessionResult &result);
     [[nodiscard]] bool isBusy() const { return !m_operation.isEmpty(); }
+    // Halted (Alarm): the controller refuses every motion and offset command until Unlock.
+    [[nodiscard]] bool isHalted() const { return m_halted; }
+    [[nodiscard]] std::optional<int> haltReason() const { return m_haltReason; }
+    // The reference and current MCS Z the machine last reported (M493.4, M493.3), if any since connecting.
+    [[nodiscard]] const std::optional<TloReading> &lastOffsets() const { return m_offsets; }
+    // Connected, idle and not halted: what every panel's machine operation (but Unlock and Stop) needs.
+    [[nodiscard]] bool canOperate() const;
     [[nodiscard]] QString operation() const { return m_operation; }
 
 Q_SIGNALS:
@@ -63,11 +70,13 @@ Q_SIGNALS:
     void consoleLine(const QByteArray &line, bool outgoing);
     void alarmRaised(const QString &message);
     void busyChanged(bool busy, const QString &operation);
+    void haltedChanged(bool halted);
     // Offsets learned from any operation (M493.4 and M493.3 replies).
     void offsetsChanged(const Toffee::TloReading &offsets, int tool);
 
 private:
     void setState(State state);
+    void setHalt(bool halted, std::optional<int> reason);
     void teardown();
 
     State m_state = State::Disconnected;
@@ -76,6 +85,9 @@ private:
     std::unique_ptr<MachineSession> m_session;
     SessionResult m_connectResult;
     QString m_operation;
+    bool m_halted = false;
+    std::optional<TloReading> m_offsets;
+    std::optional<int> m_haltReason;
 };
 
 } // namespace Toffee

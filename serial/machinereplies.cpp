@@ -218,6 +218,49 @@ QString haltReasonName(int reason)
     return tr("halt reason %1").arg(reason);
 }
 
+QString haltMeaning(int reason)
+{
+    switch (reason) {
+    case 1:
+        return tr("The machine was stopped (Stop, Ctrl-X or the stop button).");
+    case 2:
+        return tr("Homing failed, or the machine has not been homed.");
+    case 3:
+        return tr("The probe did not touch within its safety margin: the tool may be missing, broken or much "
+                  "shorter than expected.");
+    case 4:
+        return tr(
+            "Measuring on the tool setter failed: a break test found the tool broken, the tolerance was "
+            "too small, or the calibration failed.");
+    case 5:
+        return tr("The tool changer could not home.");
+    case 6:
+        return tr("The tool asked for is not a valid tool.");
+    case 7:
+        return tr("No tool was given to the tool change.");
+    case 8:
+        return tr("The spindle already holds a tool.");
+    case 9:
+        return tr("The spindle overheated.");
+    case 10:
+        return tr("A move went beyond the machine's travel (soft limit).");
+    case 11:
+        return tr("The cover is open.");
+    case 12:
+        return tr("The probe is not valid.");
+    case 13:
+        return tr("The emergency stop is pressed.");
+    case 14:
+        return tr("The power supply overheated.");
+    case 15:
+        return tr("The machine has not been homed.");
+    case 16:
+        return tr("A crash was detected.");
+    default:
+        return tr("The machine halted (reason %1).").arg(reason);
+    }
+}
+
 QString haltRecovery(int reason)
 {
     if (reason >= 21 && reason <= 26)

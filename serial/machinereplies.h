@@ -76,6 +76,8 @@ enum class ReplyKind {
 
 // "PROBE_FAIL (3)" for an operator; the firmware's halt reasons 1-16, 21-26 and 41.
 [[nodiscard]] QString haltReasonName(int reason);
+// What the halt means, in words an operator acts on (not the firmware's name).
+[[nodiscard]] QString haltMeaning(int reason);
 // Whether $X clears it (1-16), or it needs a reset (21-26) or a power cycle (41).
 [[nodiscard]] QString haltRecovery(int reason);
 

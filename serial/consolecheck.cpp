@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "consolecheck.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+
+#include <QList>
+
+#include "machinesession.h"
+#include "textparsing.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+struct Word
+{
+    char letter = 0;
+    double value = 0.0;
+    QString text; // as typed, for messages
+};
+
+// The words of one G-code line, comments dropped; nullopt when a word has no number.
+std::optional<QList<Word>> words(const QString &line)
+{
+    QList<Word> out;
+    const QByteArray bytes = line.toUpper().toLatin1();
+    qsizetype i = 0;
+    while (i < bytes.size()) {
+        const char c = bytes.at(i);
+        if (c == ';')
+            break;
+        if (c == '(') {
+            const qsizetype close = bytes.indexOf(')', i);
+            if (close < 0)
+                break;
+            i = close + 1;
+            continue;
+        }
+        if (c == ' ' || c == '\t') {
+            ++i;
+            continue;
+        }
+        if (c < 'A' || c > 'Z')
+            return std::nullopt;
+        qsizetype j = i + 1;
+        while (j < bytes.size()
+            && (std::isdigit(static_cast<unsigned char>(bytes.at(j))) || bytes.at(j) == '.'
+                || bytes.at(j) == '-' || bytes.at(j) == '+' || bytes.at(j) == ' '))
+            ++j;
+        QByteArray number = bytes.mid(i + 1, j - i - 1);
+        number.replace(' ', QByteArray());
+        const auto value = parseDecimal(number);
+        if (!value)
+            return std::nullopt;
+        out.append({ c, *value, QString::fromLatin1(bytes.mid(i, j - i)).trimmed() });
+        i = j;
+    }
+    return out;
+}
+
+bool is(const Word &w, char letter, double value)
+{
+    return w.letter == letter && std::fabs(w.value - value) < 1e-6;
+}
+
+ConsoleCheck refuse(const QString &reason)
+{
+    return { ConsoleCheck::Verdict::Refuse, reason };
+}
+
+ConsoleCheck confirm(const QString &reason)
+{
+    return { ConsoleCheck::Verdict::Confirm, reason };
+}
+
+} // namespace
+
+ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
+{
+    const QString trimmed = line.trimmed();
+    if (trimmed.startsWith(u'$')) {
+        const QString upper = trimmed.toUpper();
+        if (upper == u"$X")
+            return {};
+        if (halted)
+            return refuse(tr("The machine is halted: only Unlock ($X) runs now. Check the machine, then use "
+                             "Machine ▸ Unlock."));
+        if (upper == u"$H")
+            return confirm(tr("$H homes the machine: every axis moves to its limit switch."));
+        if (upper.startsWith(u"$J="))
+            return confirm(tr("%1 jogs the machine.").arg(trimmed));
+        return {};
+    }
+    if (trimmed == u"?")
+        return {};
+    const auto parsed = words(trimmed);
+    if (!parsed)
+        return refuse(
+            tr("\"%1\" is not a G-code line Toffee can read; check it for a letter without a number.")
+                .arg(trimmed));
+    const QList<Word> &ws = *parsed;
+    auto find = [&ws](char letter) -> const Word * {
+        for (const Word &w : ws) {
+            if (w.letter == letter)
+                return &w;
+        }
+        return nullptr;
+    };
+    auto has = [&ws](char letter, double value) {
+        return std::any_of(ws.cbegin(), ws.cend(), [&](const Word &w) { return is(w, letter, value); });
+    };
+
+    if (halted) {
+        // What the firmware still takes while halted (CARVERA.md); everything else would get "Alarm lock".
+        static const double allowed[]
+            = { 2, 5, 9, 30, 80, 81, 105, 106, 107, 114, 115, 119, 503, 911, 493.4 };
+        const bool onlyAllowed = !ws.isEmpty() && std::all_of(ws.cbegin(), ws.cend(), [](const Word &w) {
+            return w.letter == 'M' && std::any_of(std::begin(allowed), std::end(allowed), [&w](double m) {
+                return std::fabs(w.value - m) < 1e-6;
+            });
+        });
+        if (!onlyAllowed)
+            return refuse(
+                tr("The machine is halted: it refuses \"%1\" until it is unlocked. Check the machine, "
+                   "then use Machine ▸ Unlock ($X).")
+                    .arg(trimmed));
+        return {};
+    }
+    if (has('G', 20))
+        return refuse(tr("The Carvera works in millimetres only: G20 (inches) halts it. Use G21."));
+    if (has('M', 491.1)) {
+        const Word *h = find('H');
+        const double tolerance = h ? h->value : MachineSession::kDefaultTolerance;
+        if (auto r = MachineSession::validateTolerance(tolerance); !r)
+            return refuse(r.error().message);
+        return confirm(
+            tr("M491.1 runs a break test: the machine moves to the tool setter and probes the tool. "
+               "Use Machine ▸ Break Test to have the result recorded in the table."));
+    }
+    if (has('M', 493.3)) {
+        const Word *z = find('Z');
+        const Word *h = find('H');
+        if (!z && !h)
+            return refuse(tr("M493.3 needs Z (the TLO) or H (the tool tip's height above Z0)."));
+        if (auto r = MachineSession::validateOffset(
+                z ? tr("The tool length offset") : tr("The height above Z0"), (z ? z : h)->value);
+            !r)
+            return refuse(r.error().message);
+        ConsoleCheck c = confirm(
+            tr("%1 changes the tool length offset the next cut uses. The table records it as set by hand.")
+                .arg(trimmed));
+        c.setsTlo = true;
+        return c;
+    }
+    if (has('M', 493.2)) {
+        const Word *t = find('T');
+        if (!t)
+            return refuse(tr("M493.2 needs a tool (M493.2 T2): without one the machine halts."));
+        if (auto r = MachineSession::validateToolNumber(int(t->value));
+            !r || t->value != std::floor(t->value))
+            return refuse(
+                tr("%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(t->text));
+        return confirm(tr("M493.2 makes T%1 the active tool but keeps the current TLO, which belongs to the "
+                          "tool measured before. Probe T%1 or restore its TLO before cutting.")
+                           .arg(int(t->value)));
+    }
+    if (has('M', 6)) {
+        const Word *t = find('T');
+        if (!t)
+            return refuse(tr("M6 needs a tool (M6 T2)."));
+        if (auto r = MachineSession::validateToolNumber(int(t->value));
+            !r || t->value != std::floor(t->value))
+            return refuse(
+                tr("%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(t->text));
+        return confirm(
+            tr("M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.")
+                .arg(int(t->value)));
+    }
+    if (has('M', 491) || has('M', 491.2))
+        return confirm(
+            tr("%1 probes the tool: the machine moves to the tool setter. Use Machine ▸ Probe to have "
+               "the result recorded in the table.")
+                .arg(trimmed));
+    if (has('M', 3) || has('M', 4))
+        return confirm(tr("%1 starts the spindle.").arg(trimmed));
+    const bool motion = std::any_of(ws.cbegin(), ws.cend(),
+                            [](const Word &w) {
+                                return w.letter == 'X' || w.letter == 'Y' || w.letter == 'Z'
+                                    || w.letter == 'A' || w.letter == 'B' || w.letter == 'C';
+                            })
+        || has('G', 28) || has('G', 30);
+    if (motion)
+        return confirm(tr("%1 moves the machine.").arg(trimmed));
+    return {};
+}
+
+} // namespace Toffee

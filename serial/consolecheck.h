@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QCoreApplication>
+#include <QString>
+
+namespace Toffee {
+
+// What the console does with a line an operator typed, before it reaches the machine: the same checks the
+// panels make (a tolerance under 0.02, an offset out of range, a tool change with no tool, inches on the
+// Carvera, anything but Unlock while halted), and a question before anything that moves the machine.
+struct ConsoleCheck
+{
+    Q_DECLARE_TR_FUNCTIONS(Toffee::ConsoleCheck)
+
+public:
+    enum class Verdict { Send, Confirm, Refuse };
+    Verdict verdict = Verdict::Send;
+    QString reason; // Refuse: why and what to do; Confirm: what the command will do
+
+    // Whether the line is M493.3, which sets the TLO: the console records what the machine then holds.
+    bool setsTlo = false;
+
+    [[nodiscard]] static ConsoleCheck check(const QString &line, bool halted);
+};
+
+} // namespace Toffee
