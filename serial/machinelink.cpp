@@ -132,11 +132,12 @@ void MachineLink::handleLine(const QByteArray &line)
         }
         return;
     }
-    if (!m_current) {
-        if (kind == ReplyKind::Alarm || kind == ReplyKind::HaltError)
-            Q_EMIT alarmRaised(replyMessage(line));
+    // Said at once, whether or not a command is waiting: the machine is halted from this line on, not from
+    // the next status report (a window would otherwise show "Run" beside a box that says halted).
+    if (kind == ReplyKind::Alarm || kind == ReplyKind::HaltError)
+        Q_EMIT alarmRaised(replyMessage(line));
+    if (!m_current)
         return; // stray output, kept for the console only
-    }
     switch (kind) {
     case ReplyKind::Ok:
         if (m_alarm.isEmpty())

@@ -90,7 +90,8 @@ Q_SIGNALS:
     void statusChanged(const Toffee::MachineStatus &status);
     void lineSent(const QByteArray &line);
     void lineReceived(const QByteArray &line);
-    // An ALARM with no command in flight (an abort, a limit switch).
+    // An ALARM or a halting ERROR line, with or without a command in flight (a broken tool, an abort, a
+    // limit switch): the machine is halted from this line on.
     void alarmRaised(const QString &message);
 
 private:

@@ -2,6 +2,8 @@
 #include "appearance.h"
 
 #include <QApplication>
+#include <QEvent>
+#include <QLocale>
 #include <QPalette>
 #include <QStyle>
 #include <QStyleFactory>
@@ -48,9 +50,46 @@ void applyPalette(bool dark)
     QApplication::setPalette(p);
 }
 
+namespace {
+
+class WheelGuard final : public QObject
+{
+public:
+    using QObject::QObject;
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override
+    {
+        if (event->type() == QEvent::Wheel) {
+            auto *widget = qobject_cast<QWidget *>(watched);
+            if (widget && !widget->hasFocus()) {
+                event->ignore(); // the scroll area behind takes it and scrolls
+                return true;
+            }
+        }
+        return false;
+    }
+};
+
+} // namespace
+
+void takeWheelOnlyWhenFocused(QWidget *field)
+{
+    field->setFocusPolicy(Qt::StrongFocus); // a wheel no longer gives it focus
+    static auto *guard = new WheelGuard(qApp);
+    field->installEventFilter(guard);
+}
+
+QString localNumber(double value, int decimals)
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale.toString(value, 'f', decimals);
+}
+
 QString millimetres(double value, bool withUnit)
 {
-    const QString number = QString::number(value, 'f', 3);
+    const QString number = localNumber(value, 3);
     return withUnit ? number + u" mm"_s : number;
 }
 

@@ -6,20 +6,23 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 
 #include "appearance.h"
 #include "appsettings.h"
 #include "machineconnection.h"
+#include "tooldocument.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
+BreakTestPanel::BreakTestPanel(MachineConnection *connection, ToolDocument *document, QWidget *parent)
     : QWidget(parent)
     , m_connection(connection)
+    , m_document(document)
     , m_tolerance(new QDoubleSpinBox(this))
     , m_run(new QPushButton(tr("Run Break Test"), this))
     , m_old(new QLabel(u"—"_s, this))
@@ -37,6 +40,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
     m_tolerance->setSingleStep(0.01);
     m_tolerance->setSuffix(u" mm"_s);
     m_tolerance->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue);
+    takeWheelOnlyWhenFocused(m_tolerance);
     m_tolerance->setToolTip(tr("How far the new measurement may differ from the stored TLO; at least %1 mm, "
                                "%2 mm by default.")
                                 .arg(MachineSession::kMinTolerance)
@@ -72,6 +76,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, QWidget *parent)
     });
     connect(m_connection, &MachineConnection::stateChanged, this, &BreakTestPanel::updateState);
     connect(m_connection, &MachineConnection::busyChanged, this, &BreakTestPanel::updateState);
+    connect(m_connection, &MachineConnection::haltedChanged, this, &BreakTestPanel::updateState);
     updateState();
 }
 
@@ -82,13 +87,39 @@ double BreakTestPanel::tolerance() const
 
 void BreakTestPanel::updateState()
 {
-    m_run->setEnabled(
-        m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy());
+    m_run->setEnabled(m_connection->canOperate());
+}
+
+QString BreakTestPanel::referenceWarning() const
+{
+    const auto tool = m_connection->session() ? m_connection->session()->activeTool() : std::nullopt;
+    if (!tool || *tool < 0)
+        return tr("The machine reports no tool in the spindle.");
+    const Tool *stored = m_document->table().find(*tool);
+    const auto &offsets = m_connection->lastOffsets();
+    const std::optional<double> machine = offsets ? std::optional(offsets->tlo()) : std::nullopt;
+    if (!stored || !stored->measuredTlo)
+        return tr("T%1 has no TLO in the table: the test compares against whatever TLO the machine holds%2, "
+                  "which may not be T%1's.")
+            .arg(*tool)
+            .arg(machine ? u" ("_s + millimetres(*machine) + u')' : QString());
+    if (machine && std::fabs(*machine - *stored->measuredTlo) > 0.0005)
+        return tr("The machine holds TLO %1 but the table holds %2 for T%3: the test compares against the "
+                  "machine's %1.")
+            .arg(millimetres(*machine), millimetres(*stored->measuredTlo))
+            .arg(*tool);
+    if (stored->tloSource == TloSource::Manual)
+        return tr("T%1's TLO %2 was set by hand (%3), not measured: if that value is not the tool's real "
+                  "length, the test reports the tool broken and halts the machine.")
+            .arg(*tool)
+            .arg(millimetres(*stored->measuredTlo),
+                QLocale().toString(stored->measuredAt.toLocalTime(), QLocale::ShortFormat));
+    return {};
 }
 
 void BreakTestPanel::run(bool confirm)
 {
-    if (m_connection->state() != MachineConnection::State::Connected || m_connection->isBusy())
+    if (!m_connection->canOperate())
         return;
     m_tolerance->interpretText(); // what is typed counts
     const double tolerance = m_tolerance->value();
@@ -98,19 +129,33 @@ void BreakTestPanel::run(bool confirm)
         m_tolerance->selectAll();
         return;
     }
-    if (confirm
-        && QMessageBox::question(this, tr("Run the break test?"),
-               tr("The machine will move to the tool setter and measure the tool again, then "
-                  "compare it with its stored TLO (tolerance %1 mm). Keep hands clear.")
-                   .arg(tolerance),
-               QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
-            != QMessageBox::Yes)
-        return;
-    if (!m_connection->beginOperation(tr("Break test…")))
+    const auto tool = m_connection->session()->activeTool();
+    const QString name = tool && *tool >= 0 ? u"T"_s + QString::number(*tool) : tr("the current tool");
+    if (confirm) {
+        QMessageBox box(QMessageBox::Question, tr("Break-test %1?").arg(name),
+            tr("The machine will move to the tool setter and measure %1 again, then compare it with its "
+               "TLO (tolerance %2). Keep hands clear.")
+                .arg(name, millimetres(tolerance)),
+            QMessageBox::Yes | QMessageBox::Cancel, this);
+        box.setObjectName(u"breakTestConfirmation"_s);
+        box.setDefaultButton(QMessageBox::Cancel);
+        // Told before the machine moves, not after it halts.
+        if (const QString warning = referenceWarning(); !warning.isEmpty()) {
+            box.setIcon(QMessageBox::Warning);
+            box.setInformativeText(warning);
+        }
+        if (box.exec() != QMessageBox::Yes)
+            return;
+    }
+    if (!m_connection->beginOperation(tr("Break-testing %1…").arg(name)))
         return;
     m_verdict->clear();
     m_connection->session()->breakTest(tolerance, [this](const SessionResult &r) {
         m_connection->endOperation(r);
+        // A broken tool is marked in the table (and its file, once saved) until it is probed again.
+        if (r.breakTest && r.tool && *r.tool >= 0
+            && (r.ok() || r.outcome == SessionResult::Outcome::ToolBroken))
+            (void)m_document->recordBreakTest(*r.tool, r.outcome == SessionResult::Outcome::ToolBroken);
         showResult(r);
         Q_EMIT finished(r);
     });
@@ -140,8 +185,11 @@ void BreakTestPanel::showResult(const SessionResult &r)
 
 void BreakTestPanel::raiseBrokenAlarm(const SessionResult &r)
 {
+    const QString name = r.tool && *r.tool >= 0 ? u"T"_s + QString::number(*r.tool) : tr("The tool");
     QMessageBox box(QMessageBox::Critical, tr("Broken tool"),
-        tr("The tool may be broken. The machine has halted."), QMessageBox::NoButton, this);
+        tr("%1 may be broken. The machine has halted, and the table marks %1 until it is probed again.")
+            .arg(name),
+        QMessageBox::NoButton, this);
     box.setObjectName(u"brokenToolAlarm"_s);
     box.setInformativeText(r.message);
     QPushButton *unlock = box.addButton(tr("Unlock"), QMessageBox::AcceptRole);

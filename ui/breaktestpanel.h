@@ -10,6 +10,7 @@ class QPushButton;
 namespace Toffee {
 
 class MachineConnection;
+class ToolDocument;
 struct SessionResult;
 
 // The tool-break test (M491.1): a tolerance that cannot go under the firmware's 0.02 mm, the old, new and
@@ -20,7 +21,10 @@ class BreakTestPanel final : public QWidget
     Q_DISABLE_COPY_MOVE(BreakTestPanel)
 
 public:
-    explicit BreakTestPanel(MachineConnection *connection, QWidget *parent = nullptr);
+    BreakTestPanel(MachineConnection *connection, ToolDocument *document, QWidget *parent = nullptr);
+    // What the confirmation warns about the TLO the test compares against (empty when nothing): set by hand,
+    // not in the table, or not the table's value.
+    [[nodiscard]] QString referenceWarning() const;
 
     [[nodiscard]] double tolerance() const;
     void run(bool confirm = true);
@@ -34,6 +38,7 @@ private:
     void raiseBrokenAlarm(const SessionResult &result);
 
     MachineConnection *m_connection;
+    ToolDocument *m_document;
     QDoubleSpinBox *m_tolerance;
     QPushButton *m_run;
     QLabel *m_old;

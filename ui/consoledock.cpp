@@ -4,19 +4,23 @@
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QTime>
 #include <QVBoxLayout>
 
 #include "appearance.h"
+#include "consolecheck.h"
 #include "machineconnection.h"
+#include "tooldocument.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-ConsoleDock::ConsoleDock(MachineConnection *connection, QWidget *parent)
+ConsoleDock::ConsoleDock(MachineConnection *connection, ToolDocument *document, QWidget *parent)
     : QDockWidget(tr("Console"), parent)
     , m_connection(connection)
+    , m_document(document)
     , m_log(new QListWidget)
     , m_filter(new QLineEdit)
     , m_command(new QLineEdit)
@@ -87,7 +91,7 @@ QStringList ConsoleDock::lines() const
     return out;
 }
 
-void ConsoleDock::sendCommand(const QString &command)
+void ConsoleDock::sendCommand(const QString &command, bool confirm)
 {
     if (command.isEmpty())
         return;
@@ -98,15 +102,56 @@ void ConsoleDock::sendCommand(const QString &command)
         append(tr("not connected; connect first").toUtf8(), false);
         return;
     }
+    // The console is no back door: it refuses what the panels refuse, and asks before anything that moves.
+    const ConsoleCheck check = ConsoleCheck::check(command, m_connection->isHalted());
+    if (check.verdict == ConsoleCheck::Verdict::Refuse) {
+        append(tr("not sent: %1").arg(check.reason).toUtf8(), false);
+        return;
+    }
+    if (check.verdict == ConsoleCheck::Verdict::Confirm && confirm) {
+        QMessageBox box(QMessageBox::Question, tr("Send %1?").arg(command),
+            check.reason + u"\n\n"_s + tr("Keep hands clear. Send it?"),
+            QMessageBox::Yes | QMessageBox::Cancel, this);
+        box.setObjectName(u"consoleConfirmation"_s);
+        box.setDefaultButton(QMessageBox::Cancel);
+        if (box.exec() != QMessageBox::Yes) {
+            append(tr("not sent: cancelled").toUtf8(), false);
+            return;
+        }
+    }
     if (!m_connection->beginOperation(command)) {
         append(tr("the machine is busy with %1; wait for it").arg(m_connection->operation()).toUtf8(), false);
         return;
     }
+    const bool setsTlo = check.setsTlo;
     m_connection->link()->send(
-        command.toUtf8(), MachineLink::kMotionTimeoutMs, [this](const CommandReply &reply) {
-            m_connection->endOperation(SessionResult {});
-            if (!reply.ok())
+        command.toUtf8(), MachineLink::kMotionTimeoutMs, [this, setsTlo](const CommandReply &reply) {
+            SessionResult result;
+            const auto tool = m_connection->session() ? m_connection->session()->activeTool() : std::nullopt;
+            if (setsTlo && reply.ok()) {
+                for (const QByteArray &line : reply.lines) {
+                    if (auto tlo = parseTloReport(line))
+                        result.tlo = tlo;
+                }
+                result.tool = tool;
+            }
+            m_connection->endOperation(result);
+            if (!reply.ok()) {
                 append(reply.message.toUtf8(), false);
+                return;
+            }
+            // An offset set here is recorded like one set in the panel: by hand, for the tool in the spindle.
+            if (setsTlo && result.tlo && tool && *tool >= 0) {
+                auto recorded = m_document->recordMeasurement(
+                    *tool, result.tlo->tlo(), QDateTime::currentDateTimeUtc(), TloSource::Manual);
+                append((recorded ? tr("recorded in the table: T%1 TLO %2, set by hand")
+                                       .arg(*tool)
+                                       .arg(QString::number(result.tlo->tlo(), 'f', 3))
+                                 : tr("the TLO is set on the machine but not recorded: %1")
+                                       .arg(recorded.error().message))
+                           .toUtf8(),
+                    false);
+            }
         });
 }
 

@@ -10,6 +10,7 @@ class QListWidget;
 namespace Toffee {
 
 class MachineConnection;
+class ToolDocument;
 
 // Every line sent and received, with its time, filterable; and a line to type a command by hand, with
 // history.
@@ -19,9 +20,11 @@ class ConsoleDock final : public QDockWidget
     Q_DISABLE_COPY_MOVE(ConsoleDock)
 
 public:
-    explicit ConsoleDock(MachineConnection *connection, QWidget *parent = nullptr);
+    ConsoleDock(MachineConnection *connection, ToolDocument *document, QWidget *parent = nullptr);
 
-    void sendCommand(const QString &command);
+    // Checked first (ConsoleCheck): refused with the reason, or sent after a question when it moves the
+    // machine (`confirm` false skips the question, for tests).
+    void sendCommand(const QString &command, bool confirm = true);
     [[nodiscard]] QStringList lines() const;
 
 protected:
@@ -34,6 +37,7 @@ private:
     static constexpr int kMaxLines = 5000;
     static constexpr qsizetype kMaxLineChars = 500;
     MachineConnection *m_connection;
+    ToolDocument *m_document;
     QListWidget *m_log;
     QLineEdit *m_filter;
     QLineEdit *m_command;

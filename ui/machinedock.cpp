@@ -31,16 +31,15 @@ QGroupBox *group(const QString &title, QWidget *content)
 MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, QWidget *parent)
     : QDockWidget(tr("Machine"), parent)
     , m_connection(new ConnectionPanel(connection))
-    , m_tlo(new TloPanel(connection))
+    , m_tlo(new TloPanel(connection, document))
     , m_probe(new ProbePanel(connection, document))
-    , m_offsets(new OffsetEditor(connection))
-    , m_breakTest(new BreakTestPanel(connection))
+    , m_offsets(new OffsetEditor(connection, document))
+    , m_breakTest(new BreakTestPanel(connection, document))
 {
     setObjectName(u"machineDock"_s);
     auto *body = new QWidget;
     auto *layout = new QVBoxLayout(body);
     layout->addWidget(group(tr("Connection"), m_connection));
-    layout->addWidget(group(tr("Tool length offset"), m_tlo));
     layout->addWidget(group(tr("Probe"), m_probe));
     layout->addWidget(group(tr("Set the offset by hand"), m_offsets));
     layout->addWidget(group(tr("Tool break test"), m_breakTest));

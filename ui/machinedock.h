@@ -13,7 +13,8 @@ class ProbePanel;
 class TloPanel;
 class ToolDocument;
 
-// The machine side of the window: connection, live TLO, probing, manual offsets and the break test.
+// The machine side of the window: connection, probing, manual offsets and the break test. The live state
+// (TloPanel) is made here but shown by the window in its always-visible strip.
 class MachineDock final : public QDockWidget
 {
     Q_OBJECT

@@ -11,6 +11,7 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QStatusBar>
 #include <QTableView>
 #include <QToolBar>
@@ -69,7 +70,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_tablePanel(new ToolTablePanel(m_document->model(), this))
     , m_connection(new MachineConnection(this))
     , m_machineDock(new MachineDock(m_connection, m_document, this))
-    , m_consoleDock(new ConsoleDock(m_connection, this))
+    , m_consoleDock(new ConsoleDock(m_connection, m_document, this))
     , m_fileWatcher(new FileWatcher(this))
     , m_autoSave(new AutoSave(m_document, AutoSave::defaultDirectory(), this))
 {
@@ -80,6 +81,17 @@ MainWindow::MainWindow(QWidget *parent)
     addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
     createActions();
     createMachineActions();
+    // The machine's state, tool and TLO in a strip that no scrolling, dock or window size hides (and that
+    // the toolbar menu cannot switch off).
+    auto *strip = new QToolBar(tr("Machine State"), this);
+    strip->setObjectName(u"machineStateBar"_s);
+    strip->setMovable(false);
+    strip->setFloatable(false);
+    strip->toggleViewAction()->setEnabled(false);
+    strip->toggleViewAction()->setVisible(false);
+    strip->addWidget(m_machineDock->tloPanel());
+    addToolBarBreak();
+    addToolBar(Qt::TopToolBarArea, strip);
 
     m_machineLabel = new QLabel(this);
     m_machineLabel->setObjectName(u"machineStatusLabel"_s);
@@ -87,6 +99,12 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_connection, &MachineConnection::stateChanged, this, &MainWindow::updateMachineStatus);
     connect(m_connection, &MachineConnection::statusChanged, this, &MainWindow::updateMachineStatus);
     connect(m_connection, &MachineConnection::busyChanged, this, &MainWindow::updateMachineStatus);
+    connect(m_connection, &MachineConnection::haltedChanged, this, &MainWindow::updateMachineStatus);
+    connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State state) {
+        // "Disconnected: …" is history once connected again.
+        if (state != MachineConnection::State::Disconnected)
+            statusBar()->clearMessage();
+    });
     connect(m_connection, &MachineConnection::connectFailed, this,
         [this](const QString &message) { showError(tr("Cannot connect to the machine"), message); });
     connect(m_connection, &MachineConnection::disconnected, this, [this](const QString &reason) {
@@ -117,6 +135,19 @@ MainWindow::MainWindow(QWidget *parent)
         statusBar()->showMessage(
             tr("Unsaved edits are not protected against a crash until they are saved: %1").arg(message));
     });
+    connect(m_document->model(), &ToolTableModel::pocketShared, this,
+        [this](int number, int pocket, const QList<int> &others) {
+            QStringList names;
+            for (int n : others)
+                names << u"T"_s + QString::number(n);
+            statusBar()->showMessage(
+                tr("T%1 shares pocket %2 with %3. LinuxCNC's random tool changer needs each "
+                   "tool in its own pocket.")
+                    .arg(number)
+                    .arg(pocket)
+                    .arg(names.join(u", "_s)),
+                10000);
+        });
     connect(m_document->model(), &ToolTableModel::editRejected, this,
         [this](const QString &message) { showError(tr("Value not accepted"), message); });
     updateTitle();
@@ -279,7 +310,10 @@ void MainWindow::updateMachineStatus()
         break;
     case MachineConnection::State::Connected: {
         const auto status = m_connection->link() ? m_connection->link()->lastStatus() : std::nullopt;
-        text = m_connection->description() + u" — "_s + (status ? status->state : tr("connected"));
+        text = m_connection->description() + u" — "_s
+            + (m_connection->isHalted() ? tr("halted")
+                    : status            ? status->state
+                                        : tr("connected"));
         if (m_connection->isBusy())
             text += u" — "_s + m_connection->operation();
         break;
@@ -288,10 +322,13 @@ void MainWindow::updateMachineStatus()
     m_machineLabel->setText(text);
     const bool ready
         = m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy();
-    for (const char *name : { "actionProbe", "actionBreakTest", "actionUnlock" }) {
+    // Motion waits for Unlock while halted; Unlock itself is what a halted machine needs.
+    for (const char *name : { "actionProbe", "actionBreakTest" }) {
         if (auto *action = findChild<QAction *>(QString::fromLatin1(name)))
-            action->setEnabled(ready);
+            action->setEnabled(m_connection->canOperate());
     }
+    if (auto *unlock = findChild<QAction *>(u"actionUnlock"_s))
+        unlock->setEnabled(ready);
     if (auto *stop = findChild<QAction *>(u"actionStop"_s))
         stop->setEnabled(m_connection->state() == MachineConnection::State::Connected);
 }
@@ -366,7 +403,10 @@ bool MainWindow::confirmLossySave(const QString &path)
     if (losses.isEmpty())
         return true;
     return QMessageBox::question(this, tr("Save as %1?").arg(formatName(format)),
-               losses.join(u'\n') + u"\n\n"_s + tr("Save anyway?"))
+               losses.join(u'\n') + u"\n\n"_s
+                   + tr("After saving, the table on screen shows what the file holds; Undo brings the rest "
+                        "back. Save anyway?"),
+               QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
         == QMessageBox::Yes;
 }
 
@@ -492,11 +532,14 @@ void MainWindow::closeEvent(QCloseEvent *event)
 void MainWindow::readSettings()
 {
     AppSettings settings;
-    if (!restoreGeometry(settings.windowGeometry()))
-        resize(1360, 800);
+    if (!restoreGeometry(settings.windowGeometry())) {
+        // 1280×720 is the smallest workshop screen Toffee is laid out for; never more than the screen has.
+        const QSize available = screen() ? screen()->availableGeometry().size() : QSize(1280, 720);
+        resize(QSize(1280, 720).boundedTo(available));
+    }
     if (!restoreState(settings.windowState())) {
         resizeDocks({ m_consoleDock }, { 150 }, Qt::Vertical);
-        resizeDocks({ m_machineDock }, { 430 }, Qt::Horizontal);
+        resizeDocks({ m_machineDock }, { 400 }, Qt::Horizontal);
     }
 }
 

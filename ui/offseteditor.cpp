@@ -10,14 +10,16 @@
 
 #include "appearance.h"
 #include "machineconnection.h"
+#include "tooldocument.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-OffsetEditor::OffsetEditor(MachineConnection *connection, QWidget *parent)
+OffsetEditor::OffsetEditor(MachineConnection *connection, ToolDocument *document, QWidget *parent)
     : QWidget(parent)
     , m_connection(connection)
+    , m_document(document)
     , m_mode(new QComboBox(this))
     , m_value(new QDoubleSpinBox(this))
     , m_command(new QLabel(this))
@@ -36,6 +38,8 @@ OffsetEditor::OffsetEditor(MachineConnection *connection, QWidget *parent)
     m_value->setSingleStep(0.01);
     m_value->setSuffix(u" mm"_s);
     m_value->setKeyboardTracking(true);
+    takeWheelOnlyWhenFocused(m_value);
+    takeWheelOnlyWhenFocused(m_mode);
     m_command->setObjectName(u"offsetCommandPreview"_s);
     m_command->setAccessibleName(tr("Command that will be sent"));
     m_command->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -68,6 +72,7 @@ OffsetEditor::OffsetEditor(MachineConnection *connection, QWidget *parent)
     });
     connect(m_connection, &MachineConnection::stateChanged, this, &OffsetEditor::updatePreview);
     connect(m_connection, &MachineConnection::busyChanged, this, &OffsetEditor::updatePreview);
+    connect(m_connection, &MachineConnection::haltedChanged, this, &OffsetEditor::updatePreview);
     updatePreview();
 }
 
@@ -99,9 +104,10 @@ std::optional<double> OffsetEditor::targetTlo() const
 QString OffsetEditor::commandPreview() const
 {
     if (Mode(m_mode->currentData().toInt()) == AboveZ0)
-        return u"M493.3 H"_s + millimetres(m_value->value(), false);
+        return u"M493.3 H"_s + QString::number(m_value->value(), 'f', 3); // G-code: always a point
     const auto target = targetTlo();
-    return target ? u"M493.3 Z"_s + millimetres(*target, false) : tr("(the current TLO is not known yet)");
+    return target ? u"M493.3 Z"_s + QString::number(*target, 'f', 3)
+                  : tr("(the current TLO is not known yet)");
 }
 
 QString OffsetEditor::resultPreview() const
@@ -118,31 +124,48 @@ void OffsetEditor::updatePreview()
     m_command->setText(commandPreview());
     m_result->setText(resultPreview());
     const bool known = Mode(m_mode->currentData().toInt()) != ChangeTlo || m_currentTlo.has_value();
-    m_send->setEnabled(
-        known && m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy());
+    m_send->setEnabled(known && m_connection->canOperate());
 }
 
 void OffsetEditor::send(bool confirm)
 {
-    if (m_connection->state() != MachineConnection::State::Connected || m_connection->isBusy())
+    if (!m_connection->canOperate())
         return;
     const Mode mode = Mode(m_mode->currentData().toInt());
     const auto target = targetTlo();
     if (mode != AboveZ0 && !target)
         return;
+    const auto tool = m_connection->session()->activeTool();
+    const QString name = tool && *tool >= 0 ? u"T"_s + QString::number(*tool) : tr("the current tool");
     if (confirm
-        && QMessageBox::question(this, tr("Change the tool length offset?"),
-               tr("Send %1?\nTLO %2\n\nThe next cut uses the new offset.")
-                   .arg(commandPreview(), resultPreview()),
+        && QMessageBox::question(this, tr("Change %1's tool length offset?").arg(name),
+               tr("Send %1 for %2?\nTLO %3\n\nThe next cut uses the new offset. The table records it as "
+                  "set by hand, not measured.")
+                   .arg(commandPreview(), name, resultPreview()),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
-    if (!m_connection->beginOperation(tr("Setting the TLO…")))
+    if (!m_connection->beginOperation(tr("Setting %1's TLO…").arg(name)))
         return;
-    auto done = [this](const SessionResult &r) {
+    auto done = [this, mode](const SessionResult &r) {
         m_connection->endOperation(r);
-        if (!r.ok())
-            QMessageBox::warning(this, tr("The offset was not set"), r.message);
+        if (!r.ok()) {
+            QMessageBox::warning(this, tr("The offset was not set"),
+                r.message + u"\n\n"_s + tr("Nothing was written to the tool table."));
+            return;
+        }
+        // A change is applied once: a second Send must not add it again.
+        if (mode == ChangeTlo)
+            m_value->setValue(0.0);
+        const int number = r.tool.value_or(-1);
+        auto recorded = number >= 0 && r.tlo
+            ? m_document->recordMeasurement(
+                number, r.tlo->tlo(), QDateTime::currentDateTimeUtc(), TloSource::Manual)
+            : Result<void>(Error { tr("the machine reports no tool in the spindle.") });
+        if (!recorded)
+            QMessageBox::warning(this, tr("The offset is set but not recorded"),
+                tr("The machine now has TLO %1, but the table could not record it: %2")
+                    .arg(r.tlo ? millimetres(r.tlo->tlo()) : u"?"_s, recorded.error().message));
     };
     if (mode == AboveZ0)
         m_connection->session()->setTloAboveZ0(m_value->value(), done);

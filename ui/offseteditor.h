@@ -13,11 +13,12 @@ class QPushButton;
 namespace Toffee {
 
 class MachineConnection;
+class ToolDocument;
 struct TloReading;
 
 // Sets the TLO by hand: directly (M493.3 Z), by a change to the current TLO (the seed's "add 2.9 mm"), or
 // from a gauge of known height under the tip (M493.3 H). It shows the exact command and the resulting TLO
-// first.
+// first. What the machine then holds goes into the table as the tool's TLO, marked set by hand.
 class OffsetEditor final : public QWidget
 {
     Q_OBJECT
@@ -26,7 +27,7 @@ class OffsetEditor final : public QWidget
 public:
     enum Mode { SetTlo, ChangeTlo, AboveZ0 };
 
-    explicit OffsetEditor(MachineConnection *connection, QWidget *parent = nullptr);
+    OffsetEditor(MachineConnection *connection, ToolDocument *document, QWidget *parent = nullptr);
 
     void setMode(Mode mode);
     void setValue(double value);
@@ -39,6 +40,7 @@ private:
     [[nodiscard]] std::optional<double> targetTlo() const;
 
     MachineConnection *m_connection;
+    ToolDocument *m_document;
     std::optional<double> m_currentTlo;
     QComboBox *m_mode;
     QDoubleSpinBox *m_value;

@@ -3,6 +3,7 @@
 
 #include <QGridLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
@@ -60,6 +61,12 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     connect(m_cancel, &QPushButton::clicked, this, &ProbePanel::cancel);
     connect(m_connection, &MachineConnection::stateChanged, this, &ProbePanel::updateState);
     connect(m_connection, &MachineConnection::busyChanged, this, &ProbePanel::updateState);
+    connect(m_connection, &MachineConnection::haltedChanged, this, &ProbePanel::updateState);
+    // The last probe's line is only true until the next operation changes the offsets.
+    connect(m_connection, &MachineConnection::busyChanged, this, [this](bool busy) {
+        if (busy)
+            m_result->clear();
+    });
     connect(m_document->model(), &QAbstractItemModel::dataChanged, this, &ProbePanel::updateState);
     updateState();
 }
@@ -72,8 +79,7 @@ void ProbePanel::setSelectedTool(int number)
 
 void ProbePanel::updateState()
 {
-    const bool ready
-        = m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy();
+    const bool ready = m_connection->canOperate();
     m_probe->setEnabled(ready);
     const Tool *tool = m_document->table().find(m_selectedTool);
     m_restore->setEnabled(ready && tool && tool->measuredTlo);
@@ -99,14 +105,15 @@ void ProbePanel::report(const SessionResult &result, const QString &title)
 
 void ProbePanel::probe(bool confirm)
 {
-    if (m_connection->state() != MachineConnection::State::Connected || m_connection->isBusy())
+    if (!m_connection->canOperate())
         return;
     const auto tool = m_connection->session() ? m_connection->session()->activeTool() : std::nullopt;
-    const QString name = tool ? u"T"_s + QString::number(*tool) : tr("the current tool");
+    const QString name = tool && *tool >= 0 ? u"T"_s + QString::number(*tool) : tr("the current tool");
     if (confirm
         && QMessageBox::question(this, tr("Probe %1?").arg(name),
                tr("The machine will move: up to clearance, over the tool setter, then down until "
-                  "%1 touches it. Keep hands clear.\n\nProbe now?")
+                  "%1 touches it. Keep hands clear.\n\nThe machine says %1 is in the spindle: the "
+                  "measurement is recorded as %1's TLO.\n\nProbe now?")
                    .arg(name),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
@@ -121,12 +128,11 @@ void ProbePanel::probe(bool confirm)
             auto recorded = number >= 0
                 ? m_document->recordMeasurement(number, r.tlo->tlo(), QDateTime::currentDateTimeUtc())
                 : Result<void>(Error { tr("there is no tool in the spindle.") });
-            m_result->setText(recorded ? tr("T%1 measured: TLO %2 mm, recorded in the table.")
+            m_result->setText(recorded ? tr("T%1 measured: TLO %2, recorded in the table.")
                                              .arg(number)
-                                             .arg(r.tlo->tlo(), 0, 'f', 3)
-                                       : tr("Measured TLO %1 mm, but it could not be recorded: %2")
-                                             .arg(r.tlo->tlo(), 0, 'f', 3)
-                                             .arg(recorded.error().message));
+                                             .arg(millimetres(r.tlo->tlo()))
+                                       : tr("Measured TLO %1, but it could not be recorded: %2")
+                                             .arg(millimetres(r.tlo->tlo()), recorded.error().message));
         }
         report(r, tr("Probing failed"));
         Q_EMIT finished(r);
@@ -135,29 +141,51 @@ void ProbePanel::probe(bool confirm)
 
 void ProbePanel::restore(bool confirm)
 {
-    if (m_connection->state() != MachineConnection::State::Connected || m_connection->isBusy())
+    if (!m_connection->canOperate())
         return;
     const Tool *tool = m_document->table().find(m_selectedTool);
     if (!tool || !tool->measuredTlo)
         return;
     const int number = tool->number;
     const double tlo = *tool->measuredTlo;
-    if (confirm
-        && QMessageBox::question(this, tr("Restore T%1?").arg(number),
-               tr("Make T%1 the active tool with TLO %2 mm, as measured %3, without probing?\n\n"
-                  "Sends: M493.2 T%1, then M493.3 Z%2")
-                   .arg(number)
-                   .arg(tlo, 0, 'f', 3)
-                   .arg(QLocale().toString(tool->measuredAt.toLocalTime(), QLocale::ShortFormat)),
-               QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
-            != QMessageBox::Yes)
-        return;
+    if (confirm) {
+        // Restore trusts the operator about which tool is in the spindle: ask, by name, and say what the
+        // machine does not know.
+        QMessageBox box(QMessageBox::Question, tr("Restore T%1?").arg(number),
+            tr("Is T%1 in the spindle now?").arg(number), QMessageBox::NoButton, this);
+        box.setObjectName(u"restoreConfirmation"_s);
+        QStringList details;
+        details << tr("The machine will use T%1's TLO %2 (%3, %4) without probing. If another tool is in the "
+                      "spindle, the next cut is off by the difference.")
+                       .arg(number)
+                       .arg(millimetres(tlo),
+                           tool->tloSource == TloSource::Manual ? tr("set by hand") : tr("measured"),
+                           QLocale().toString(tool->measuredAt.toLocalTime(), QLocale::ShortFormat));
+        const auto &offsets = m_connection->lastOffsets();
+        if (offsets && offsets->referenceMz == 0.0)
+            details << tr(
+                "The machine has no reference tool measured since it started: a stored TLO is only "
+                "right against the reference it was measured from. Probe the reference tool first.");
+        if (tool->breakTestFailed)
+            details << tr("T%1 failed its last break test.").arg(number);
+        details << tr("Sends: M493.2 T%1, then M493.3 Z%2").arg(number).arg(QString::number(tlo, 'f', 3));
+        box.setInformativeText(details.join(u"\n\n"_s));
+        if (details.size() > 2)
+            box.setIcon(QMessageBox::Warning);
+        QPushButton *yes = box.addButton(tr("T%1 Is in the Spindle").arg(number), QMessageBox::AcceptRole);
+        yes->setObjectName(u"restoreYesButton"_s);
+        QPushButton *no = box.addButton(QMessageBox::Cancel);
+        box.setDefaultButton(no);
+        box.exec();
+        if (box.clickedButton() != yes)
+            return;
+    }
     if (!m_connection->beginOperation(tr("Restoring T%1…").arg(number)))
         return;
     m_connection->session()->restoreTlo(number, tlo, [this, number](const SessionResult &r) {
         m_connection->endOperation(r);
         if (r.ok())
-            m_result->setText(tr("T%1 is active with TLO %2 mm.").arg(number).arg(r.tlo->tlo(), 0, 'f', 3));
+            m_result->setText(tr("T%1 is active with TLO %2.").arg(number).arg(millimetres(r.tlo->tlo())));
         report(r, tr("Restoring failed"));
         Q_EMIT finished(r);
     });

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tlopanel.h"
 
-#include <QFormLayout>
+#include <cmath>
+
+#include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QVBoxLayout>
 
 #include "appearance.h"
 #include "machineconnection.h"
+#include "tooldocument.h"
 
 using namespace Qt::StringLiterals;
 
@@ -24,22 +29,46 @@ QLabel *valueLabel(QWidget *parent, const QString &name, const QString &accessib
     return label;
 }
 
+QLabel *caption(const QString &text, QWidget *parent)
+{
+    auto *label = new QLabel(text, parent);
+    label->setForegroundRole(QPalette::PlaceholderText);
+    return label;
+}
+
+QString when(const QDateTime &at)
+{
+    return QLocale().toString(at.toLocalTime(), QLocale::ShortFormat);
+}
+
 } // namespace
 
-TloPanel::TloPanel(MachineConnection *connection, QWidget *parent)
+TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidget *parent)
     : QWidget(parent)
     , m_connection(connection)
+    , m_document(document)
     , m_state(valueLabel(this, u"machineStateLabel"_s, tr("Machine state")))
     , m_tool(valueLabel(this, u"activeToolLabel"_s, tr("Active tool")))
+    , m_tlo(valueLabel(this, u"tloLabel"_s, tr("Tool length offset")))
+    , m_tloNote(valueLabel(this, u"tloNoteLabel"_s, tr("Where the tool length offset came from")))
     , m_reference(valueLabel(this, u"referenceMzLabel"_s, tr("Reference tool MCS Z")))
     , m_current(valueLabel(this, u"currentMzLabel"_s, tr("Current tool MCS Z")))
-    , m_tlo(valueLabel(this, u"tloLabel"_s, tr("Tool length offset")))
+    , m_halt(valueLabel(this, u"haltLabel"_s, tr("Why the machine halted and what to do")))
     , m_unlock(new QPushButton(tr("Unlock"), this))
 {
+    setObjectName(u"machineStrip"_s);
     QFont big = m_tlo->font();
-    big.setPointSizeF(big.pointSizeF() * 1.6);
+    big.setPointSizeF(big.pointSizeF() * 1.5);
     big.setBold(true);
     m_tlo->setFont(big);
+    QFont bold = m_tool->font();
+    bold.setBold(true);
+    m_tool->setFont(bold);
+    m_state->setFont(bold);
+    m_halt->setWordWrap(true);
+    m_halt->setAutoFillBackground(true);
+    m_halt->setMargin(4);
+    m_halt->hide();
     m_unlock->setObjectName(u"unlockButton"_s);
     m_unlock->setIcon(themeIcon(u"unlock"_s));
     m_unlock->setAccessibleName(tr("Unlock the machine"));
@@ -47,20 +76,42 @@ TloPanel::TloPanel(MachineConnection *connection, QWidget *parent)
     m_unlock->setToolTip(tr("Clear the halt ($X) — Ctrl+Shift+U"));
     m_unlock->hide();
 
-    auto *form = new QFormLayout(this);
-    form->addRow(tr("State:"), m_state);
-    form->addRow(tr("Active tool:"), m_tool);
-    form->addRow(tr("Reference MCS Z:"), m_reference);
-    form->addRow(tr("Current MCS Z:"), m_current);
-    form->addRow(tr("TLO:"), m_tlo);
-    form->addRow(m_unlock);
+    auto *row = new QHBoxLayout;
+    row->setContentsMargins(0, 0, 0, 0);
+    row->addWidget(caption(tr("State:"), this));
+    row->addWidget(m_state);
+    row->addSpacing(16);
+    row->addWidget(caption(tr("Tool:"), this));
+    row->addWidget(m_tool);
+    row->addSpacing(16);
+    row->addWidget(caption(tr("TLO:"), this));
+    row->addWidget(m_tlo);
+    row->addWidget(m_tloNote, 1);
+    row->addSpacing(16);
+    row->addWidget(caption(tr("Reference Z:"), this));
+    row->addWidget(m_reference);
+    row->addWidget(caption(tr("Current Z:"), this));
+    row->addWidget(m_current);
+    row->addSpacing(8);
+    row->addWidget(m_unlock);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, 2, 6, 2);
+    layout->setSpacing(2);
+    layout->addLayout(row);
+    layout->addWidget(m_halt);
 
     connect(m_connection, &MachineConnection::statusChanged, this, &TloPanel::showStatus);
     connect(m_connection, &MachineConnection::offsetsChanged, this, &TloPanel::showOffsets);
+    connect(m_connection, &MachineConnection::haltedChanged, this, &TloPanel::showHalt);
     connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State s) {
         if (s != MachineConnection::State::Connected)
             clear();
     });
+    // The note compares the machine's TLO with the table's: it follows every edit, undo and file load.
+    connect(m_document->model(), &QAbstractItemModel::modelReset, this, &TloPanel::updateTlo);
+    connect(m_document->model(), &QAbstractItemModel::dataChanged, this, &TloPanel::updateTlo);
+    connect(m_document->model(), &QAbstractItemModel::rowsInserted, this, &TloPanel::updateTlo);
+    connect(m_document->model(), &QAbstractItemModel::rowsRemoved, this, &TloPanel::updateTlo);
     connect(m_unlock, &QPushButton::clicked, this, &TloPanel::unlock);
     connect(&m_staleTimer, &QTimer::timeout, this, &TloPanel::checkStale);
     m_staleTimer.start(500);
@@ -71,37 +122,116 @@ void TloPanel::clear()
 {
     m_state->setText(m_connection->state() == MachineConnection::State::Connecting ? tr("Connecting…")
                                                                                    : tr("Not connected"));
+    m_state->setPalette(palette());
     for (QLabel *l : { m_tool, m_reference, m_current, m_tlo })
         l->setText(u"—"_s);
+    m_tloNote->clear();
+    m_activeTool.reset();
+    m_machineTlo.reset();
+    m_offsets.reset();
     m_unlock->hide();
+    m_halt->hide();
     m_stale = true;
 }
 
 void TloPanel::showStatus(const MachineStatus &status)
 {
     m_stale = false;
-    QString state = status.state;
-    if (status.haltReason)
-        state = tr("%1 — halted: %2").arg(status.state, haltReasonName(*status.haltReason));
-    m_state->setText(state);
-    QPalette palette = m_state->palette();
-    palette.setColor(QPalette::WindowText,
-        status.isAlarm() ? QColor(0xc0, 0x1c, 0x28) : this->palette().color(QPalette::WindowText));
-    m_state->setPalette(palette);
-    m_unlock->setVisible(status.isAlarm());
     if (status.tool)
-        m_tool->setText(u"T"_s + QString::number(*status.tool));
+        m_activeTool = *status.tool;
     if (status.tlo)
-        m_tlo->setText(millimetres(*status.tlo));
+        m_machineTlo = *status.tlo;
+    showHalt();
+    updateTlo();
+}
+
+void TloPanel::showHalt()
+{
+    const bool halted = m_connection->isHalted();
+    const auto status = m_connection->link() ? m_connection->link()->lastStatus() : std::nullopt;
+    QString state = halted ? tr("HALTED") : status ? status->state : tr("Connected");
+    m_state->setText(state);
+    QPalette statePalette = palette();
+    if (halted)
+        statePalette.setColor(QPalette::WindowText, alarmColor(palette()));
+    m_state->setPalette(statePalette);
+    m_unlock->setVisible(halted);
+    m_halt->setVisible(halted);
+    if (halted) {
+        const auto reason = m_connection->haltReason();
+        m_halt->setText((reason ? haltMeaning(*reason) + u' ' + haltRecovery(*reason)
+                                : tr("The machine reported an alarm. Check the machine, then Unlock ($X)."))
+            + u' ' + tr("Nothing that moves the machine or changes its offsets runs until then."));
+        QPalette haltPalette = palette();
+        haltPalette.setColor(QPalette::Window, alarmColor(palette()));
+        haltPalette.setColor(QPalette::WindowText, Qt::white);
+        m_halt->setPalette(haltPalette);
+    }
 }
 
 void TloPanel::showOffsets(const TloReading &offsets, int tool)
 {
-    m_reference->setText(millimetres(offsets.referenceMz));
-    m_current->setText(millimetres(offsets.currentMz));
-    m_tlo->setText(millimetres(offsets.tlo()));
+    m_offsets = offsets;
+    m_machineTlo = offsets.tlo();
     if (tool >= 0)
-        m_tool->setText(u"T"_s + QString::number(tool));
+        m_activeTool = tool;
+    updateTlo();
+}
+
+QString TloPanel::tloNote() const
+{
+    return m_tloNote->text();
+}
+
+void TloPanel::updateTlo()
+{
+    if (m_connection->state() != MachineConnection::State::Connected)
+        return;
+    m_tool->setText(
+        m_activeTool ? (*m_activeTool < 0 ? tr("none") : u"T"_s + QString::number(*m_activeTool)) : u"—"_s);
+    if (m_offsets) {
+        // The firmware starts with both at zero; no tool setter is at MCS Z 0, so zero means never probed.
+        m_reference->setText(
+            m_offsets->referenceMz == 0.0 ? tr("not measured") : millimetres(m_offsets->referenceMz));
+        m_current->setText(
+            m_offsets->currentMz == 0.0 ? tr("not measured") : millimetres(m_offsets->currentMz));
+    }
+    const bool neverMeasured = m_offsets && m_offsets->referenceMz == 0.0 && m_offsets->currentMz == 0.0;
+    if (!m_machineTlo) {
+        m_tlo->setText(u"—"_s);
+        m_tloNote->clear();
+        return;
+    }
+    m_tlo->setText(neverMeasured ? tr("not measured") : millimetres(*m_machineTlo));
+    QString note;
+    bool warn = false;
+    const Tool *tool = m_activeTool ? m_document->table().find(*m_activeTool) : nullptr;
+    if (neverMeasured) {
+        note = tr("the machine has measured no tool yet: probe the reference tool first");
+        warn = true;
+    } else if (!m_activeTool || *m_activeTool < 0) {
+        note.clear();
+    } else if (!tool || !tool->measuredTlo) {
+        note = tr("T%1 has no TLO in the table").arg(*m_activeTool);
+        warn = true;
+    } else if (std::fabs(*tool->measuredTlo - *m_machineTlo) > 0.0005) {
+        note = tr("not T%1's: the table holds %2").arg(*m_activeTool).arg(millimetres(*tool->measuredTlo));
+        warn = true;
+    } else if (tool->tloSource == TloSource::Manual) {
+        note = tr("set by hand %1, not measured").arg(when(tool->measuredAt));
+        warn = true;
+    } else {
+        note = tr("measured %1").arg(when(tool->measuredAt));
+    }
+    if (tool && tool->breakTestFailed) {
+        note = tr("T%1 FAILED ITS BREAK TEST — %2").arg(*m_activeTool).arg(note);
+        warn = true;
+    }
+    m_tloNote->setText(note);
+    QPalette notePalette = palette();
+    if (warn)
+        notePalette.setColor(QPalette::WindowText, alarmColor(palette()));
+    m_tloNote->setPalette(notePalette);
 }
 
 void TloPanel::checkStale()
@@ -112,7 +242,7 @@ void TloPanel::checkStale()
     if (stale && !m_stale)
         m_state->setText(tr("%1 (stale: no status report)").arg(m_state->text()));
     m_stale = stale;
-    for (QLabel *l : { m_state, m_tool, m_reference, m_current, m_tlo })
+    for (QLabel *l : { m_state, m_tool, m_reference, m_current, m_tlo, m_tloNote })
         l->setEnabled(!stale);
 }
 
@@ -123,7 +253,8 @@ void TloPanel::unlock()
     m_connection->session()->unlock([this](const SessionResult &r) {
         m_connection->endOperation(r);
         if (!r.ok())
-            QMessageBox::warning(this, tr("Unlock failed"), r.message);
+            QMessageBox::warning(this, tr("Unlock failed"),
+                r.message + u"\n\n"_s + tr("The machine is still halted: check it, then try Unlock again."));
     });
 }
 

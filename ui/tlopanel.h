@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <optional>
+
 #include <QTimer>
 #include <QWidget>
+
+#include "machinereplies.h"
 
 class QLabel;
 class QPushButton;
@@ -10,37 +14,48 @@ class QPushButton;
 namespace Toffee {
 
 class MachineConnection;
-struct MachineStatus;
-struct TloReading;
+class ToolDocument;
 
-// The machine as it is now: state, active tool, reference and current MCS Z, TLO. Marked stale when the
-// status reports stop, with an Unlock button while the machine is halted.
+// The machine as it is now, in a strip across the top of the window that no scrolling or dock hides: state
+// (in words, red while halted, with what to do and an Unlock button), the active tool, its TLO and where
+// that TLO came from (measured, set by hand, not measured, or not the value the table holds for the tool),
+// and the reference and current MCS Z. Greyed and marked stale when the status reports stop.
 class TloPanel final : public QWidget
 {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(TloPanel)
 
 public:
-    explicit TloPanel(MachineConnection *connection, QWidget *parent = nullptr);
+    TloPanel(MachineConnection *connection, ToolDocument *document, QWidget *parent = nullptr);
 
     [[nodiscard]] bool isStale() const { return m_stale; }
+    // What the TLO readout's note says: "measured …", "set by hand …", "not measured", …
+    [[nodiscard]] QString tloNote() const;
     void unlock();
 
 private:
     void showStatus(const MachineStatus &status);
     void showOffsets(const TloReading &offsets, int tool);
+    void showHalt();
+    void updateTlo();
     void checkStale();
     void clear();
 
     MachineConnection *m_connection;
+    ToolDocument *m_document;
     QLabel *m_state;
     QLabel *m_tool;
+    QLabel *m_tlo;
+    QLabel *m_tloNote;
     QLabel *m_reference;
     QLabel *m_current;
-    QLabel *m_tlo;
+    QLabel *m_halt;
     QPushButton *m_unlock;
     QTimer m_staleTimer;
     bool m_stale = true;
+    std::optional<int> m_activeTool;
+    std::optional<double> m_machineTlo;
+    std::optional<TloReading> m_offsets;
 };
 
 } // namespace Toffee

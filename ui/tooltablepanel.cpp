@@ -51,6 +51,14 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
     m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 8);
     m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+    // What an operator at the machine looks for first comes first: the TLO and when it was measured sit
+    // beside the description, not past the right edge of a narrow window.
+    QHeaderView *header = m_view->horizontalHeader();
+    header->moveSection(
+        header->visualIndex(ToolTableModel::MeasuredTloColumn), ToolTableModel::DescriptionColumn + 1);
+    header->moveSection(
+        header->visualIndex(ToolTableModel::MeasuredAtColumn), ToolTableModel::DescriptionColumn + 2);
+    header->setSectionsMovable(true);
     connect(model, &QAbstractItemModel::modelReset, this, &ToolTablePanel::fitColumns);
     fitColumns();
 

@@ -10,11 +10,11 @@ using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-QString installTranslations(QCoreApplication *app, const QString &language)
+QString installTranslations(QCoreApplication *app, const QString &language, const QString &directory)
 {
     const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
     auto *own = new QTranslator(app);
-    if (!own->load(locale, u"toffee"_s, u"_"_s, u":/i18n"_s)) {
+    if (!own->load(locale, u"toffee"_s, u"_"_s, directory)) {
         delete own;
         return {};
     }

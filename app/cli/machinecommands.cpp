@@ -293,10 +293,16 @@ int runMachineCommand(Invocation &call)
                 session.setTloAboveZ0(*aboveZ0, print);
         } else if (command == u"select-tool")
             session.selectTool(tool, printed([&](const SessionResult &r) {
+                // M493.2 keeps the TLO of the tool measured before: say so, every time.
+                const QString warning
+                    = u"T%1 is active but the machine still uses the TLO it had before, which "
+                      "is another tool's; probe T%1 (or set its TLO) before you cut."_s.arg(
+                          r.tool.value_or(-1));
                 if (call.json)
-                    printJson(call, QJsonObject { { u"tool"_s, r.tool.value_or(-1) } });
+                    printJson(
+                        call, QJsonObject { { u"tool"_s, r.tool.value_or(-1) }, { u"warning"_s, warning } });
                 else
-                    call.out << "T" << r.tool.value_or(-1) << " is active." << Qt::endl;
+                    call.out << warning << Qt::endl;
             }));
         else if (command == u"unlock")
             session.unlock(printed([&](const SessionResult &r) { printStatus(call, *r.status); }));

@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // toffee-cli, through a real QSerialPort, against toffee-emulator on a pseudo-terminal.
+#include <unistd.h>
+
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
+#include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -57,6 +62,8 @@ private Q_SLOTS:
         run = machine({ u"select-tool"_s, u"2"_s });
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(json(run).value(u"tool"_s).toInt(), 2);
+        // Never silently: the machine still has T1's TLO.
+        QVERIFY(json(run).value(u"warning"_s).toString().contains(u"another tool's"_s));
 
         run = machine({ u"--table"_s, table, u"probe"_s });
         QCOMPARE(run.exitCode, 0);
@@ -77,10 +84,17 @@ private Q_SLOTS:
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(json(run).value(u"broken"_s).toBool(), false);
 
-        // "Adding 2.9mm length to the current tool": -33.388 + 2.9 = -30.488
-        run = machine({ u"set-tlo"_s, u"--z"_s, u"-30.488"_s });
+        // "Adding 2.9mm length to the current tool": -33.388 + 2.9 = -30.488, recorded as set by hand.
+        run = machine({ u"--table"_s, table, u"set-tlo"_s, u"--z"_s, u"-30.488"_s });
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"-30.488"_s);
+        auto shownTool = [&table](int index) {
+            const Run shown = cli({ u"--json"_s, u"show"_s, table });
+            return QJsonDocument::fromJson(shown.out).object()[u"tools"_s].toArray().at(index).toObject();
+        };
+        QCOMPARE(fixed3(shownTool(1).value(u"measured_tlo"_s)), u"-30.488"_s);
+        QCOMPARE(shownTool(1).value(u"tlo_source"_s).toString(), u"manual"_s);
+        QCOMPARE(shownTool(0).value(u"tlo_source"_s).toString(), u"probe"_s);
         run = machine({ u"report"_s });
         QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"-30.488"_s);
         QCOMPARE(fixed3(json(run).value(u"current_mz"_s)), u"-102.788"_s);
@@ -93,6 +107,49 @@ private Q_SLOTS:
         QCOMPARE(fixed3(o.value(u"tlo"_s)), u"-30.488"_s);
         QVERIFY(o.value(u"halt_reason"_s).isNull());
         QCOMPARE(o.value(u"mpos"_s).toArray().size(), 3);
+
+        // The break test against the hand-set TLO finds the real T2 2.9 mm off: the table marks it.
+        run = machine({ u"--table"_s, table, u"break-test"_s });
+        QCOMPARE(run.exitCode, 3);
+        QVERIFY(shownTool(1).value(u"break_test_failed"_s).toBool());
+        const Run text = cli({ u"show"_s, table });
+        QVERIFY(text.out.contains("FAILED ITS LAST BREAK TEST"));
+        QVERIFY(text.out.contains("TLO set by hand"));
+        QCOMPARE(machine({ u"unlock"_s }).exitCode, 0);
+        // Probed again: measured, unmarked.
+        QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0);
+        QVERIFY(!shownTool(1).value(u"break_test_failed"_s).toBool());
+        QCOMPARE(shownTool(1).value(u"tlo_source"_s).toString(), u"probe"_s);
+        QCOMPARE(fixed3(shownTool(1).value(u"measured_tlo"_s)), u"-33.388"_s);
+    }
+
+    void aTableThatCannotBeWrittenIsRefusedBeforeTheMachineMoves()
+    {
+        Emulator emulator(tty(), {});
+        QVERIFY(emulator.started());
+        // A read-only file system: unwritable even for root, as CI runs.
+        QTemporaryDir folder;
+        const bool mounted = ::geteuid() == 0
+            && QProcess::execute(
+                   u"mount"_s, { u"-t"_s, u"tmpfs"_s, u"-o"_s, u"size=1m"_s, u"tmpfs"_s, folder.path() })
+                == 0;
+        const QString table = folder.filePath(u"tools.json"_s);
+        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table));
+        if (mounted)
+            QCOMPARE(QProcess::execute(u"mount"_s, { u"-o"_s, u"remount,ro"_s, folder.path() }), 0);
+        else
+            QVERIFY(QFile::setPermissions(table, QFileDevice::ReadOwner));
+        auto unmount = qScopeGuard([&] {
+            if (mounted)
+                QProcess::execute(u"umount"_s, { folder.path() });
+        });
+        if (QFileInfo(table).isWritable())
+            QSKIP("no way to make a file unwritable here");
+        const Run run = machine({ u"--table"_s, table, u"probe"_s });
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.err.contains("nothing was sent to the machine"));
+        // The machine never probed: it still has no reference tool.
+        QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"reference_mz"_s)), u"0.000"_s);
     }
 
     void findsABrokenToolAndUnlocks()

@@ -187,7 +187,7 @@ private Q_SLOTS:
         Fixture f;
         f.probe(); // T1: the reference
         QVERIFY(QTest::qWaitFor([&f] { return f.idle(); }));
-        f.window.consoleDock()->sendCommand(u"M493.2 T2"_s);
+        f.window.consoleDock()->sendCommand(u"M493.2 T2"_s, false);
         QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.2 T2"); }));
         f.probe(); // T2: -105.688, TLO -33.388
         QCOMPARE(f.find<QLabel>(u"tloLabel"_s)->text(), u"-33.388 mm"_s);
@@ -214,12 +214,26 @@ private Q_SLOTS:
         f.probe();
         f.window.connection()->emulator()->setToolLength(2, 10.0); // would measure very differently
         f.window.toolTablePanel()->selectTool(2); // measured -33.388 in the example
-        answerNextBox(QMessageBox::Yes);
+        answerNextBox(QMessageBox::NoButton, nullptr, u"restoreYesButton"_s);
         QTest::mouseClick(f.find<QPushButton>(u"restoreButton"_s), Qt::LeftButton);
         QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.3 Z-33.388"); }));
         QCOMPARE(f.window.connection()->emulator()->tool(), 2);
         QVERIFY(std::fabs(f.window.connection()->emulator()->tlo() + 33.388) < 1e-9);
         QVERIFY(!f.sent.contains("M491") || f.sent.count("M491") == 1); // no probe for the restore
+    }
+
+    void restoreAsksWhetherTheToolIsInTheSpindleAndWarnsWithoutAReference()
+    {
+        // A fresh machine (no probe yet): restoring a stored TLO has no reference to be right against.
+        Fixture f;
+        f.window.toolTablePanel()->selectTool(2);
+        QString question;
+        answerNextBox(QMessageBox::Cancel, &question);
+        QTest::mouseClick(f.find<QPushButton>(u"restoreButton"_s), Qt::LeftButton);
+        QVERIFY(question.contains(u"Is T2 in the spindle now?"_s));
+        QVERIFY(question.contains(u"no reference tool measured"_s));
+        QVERIFY(!f.sent.contains("M493.2 T2")); // Cancel, the default, sends nothing
+        QCOMPARE(f.window.connection()->emulator()->tool(), 1);
     }
 
     void ctrlRRestoresAfterTheButtonsLabelChanged()

@@ -2,8 +2,10 @@
 // The translations are complete, and what the window shows really comes out translated.
 #include <QApplication>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QHeaderView>
+#include <QLabel>
 #include <QMenuBar>
 #include <QProcess>
 #include <QRegularExpression>
@@ -16,8 +18,10 @@
 #include <QTranslator>
 #include <QXmlStreamReader>
 
+#include "appearance.h"
 #include "mainwindow.h"
 #include "tooldocument.h"
+#include "translations.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
@@ -139,6 +143,33 @@ private Q_SLOTS:
                 qPrintable(message));
         }
         QCoreApplication::removeTranslator(&german);
+    }
+
+    // Last: it leaves German installed, as the window's start does.
+    void theGermanWindowHasQtsOwnButtonsAndOneDecimalSeparator()
+    {
+        QCOMPARE(
+            installTranslations(qApp, u"de"_s, QStringLiteral(TOFFEE_BUILD_DIR "/translations")), u"de_DE"_s);
+        // Qt's own dialogs' buttons (Debian's qt6-translations-l10n), not English beside German.
+        QCOMPARE(QCoreApplication::translate("QPlatformTheme", "&Yes"), u"&Ja"_s);
+        QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"), u"Abbrechen"_s);
+        {
+            MainWindow window;
+            Tool tool { 1, 1, {}, 71.488, 0, 3, 0, -33.388, QDateTime::currentDateTimeUtc(), {}, {} };
+            QVERIFY(window.document()->addTool(tool).ok());
+            auto *model = window.document()->model();
+            // The table, the panels' numbers and the spin boxes all write 0,000.
+            QCOMPARE(model->index(0, ToolTableModel::LengthGeometryColumn).data().toString(), u"71,488"_s);
+            QCOMPARE(model->index(0, ToolTableModel::MeasuredTloColumn).data().toString(), u"-33,388"_s);
+            QCOMPARE(millimetres(-33.388), u"-33,388 mm"_s);
+            QCOMPARE(millimetres(1234.5), u"1234,500 mm"_s); // never grouped
+            auto *spin = window.findChild<QDoubleSpinBox *>(u"toleranceSpin"_s);
+            QVERIFY(spin->text().contains(u','));
+            // What goes to the machine keeps G-code's point whatever the language.
+            auto *preview = window.findChild<QLabel *>(u"offsetCommandPreview"_s);
+            QVERIFY2(!preview->text().contains(u','), qPrintable(preview->text()));
+        }
+        QLocale::setDefault(QLocale::c());
     }
 };
 

@@ -1,0 +1,420 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Whole stories through the real window (offscreen) against the built-in emulator, step after step, as an
+// operator lives them: at each step, what the window shows, what the machine holds and what the file holds.
+#include <cmath>
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+#include "consoledock.h"
+#include "dialect.h"
+#include "emulator/carveraemulator.h"
+#include "exportdialog.h"
+#include "machineconnection.h"
+#include "machinedock.h"
+#include "mainwindow.h"
+#include "messageboxes.h"
+#include "tlopanel.h"
+#include "tooldocument.h"
+#include "tooltablemodel.h"
+#include "tooltablepanel.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+using Toffee::Test::answerNextBox;
+
+namespace {
+
+const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
+
+// The window as an operator has it, with every line it sent to the machine.
+struct Station
+{
+    QList<QByteArray> sent;
+    MainWindow window;
+
+    Station() { window.show(); }
+
+    template<typename T> T *find(const QString &name) const
+    {
+        T *found = window.findChild<T *>(name);
+        if (!found)
+            qFatal("no widget named %s", qPrintable(name));
+        return found;
+    }
+    QString text(const QString &label) const { return find<QLabel>(label)->text(); }
+    CarveraEmulator *machine() const { return window.connection()->emulator(); }
+    const ToolTable &table() const { return window.document()->table(); }
+    bool idle() const { return !window.connection()->isBusy(); }
+    // What the table shows in a cell of tool `number`.
+    QString cell(int number, int column) const
+    {
+        auto *model = window.document()->model();
+        return model->index(model->rowOfTool(number), column).data().toString();
+    }
+
+    void connect()
+    {
+        window.connection()->connectTo({ true, {}, 115200 });
+        QVERIFY(QTest::qWaitFor(
+            [this] { return window.connection()->state() == MachineConnection::State::Connected; }));
+        QObject::connect(window.connection(), &MachineConnection::consoleLine, &window,
+            [this](const QByteArray &line, bool outgoing) {
+                if (outgoing)
+                    sent.append(line);
+            });
+        QTRY_VERIFY(text(u"machineStateLabel"_s) == u"Idle"_s);
+    }
+    void trigger(const QString &action) { find<QAction>(action)->trigger(); }
+    // Presses a key on whatever has focus, as a person at the keyboard does.
+    void key(int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
+    {
+        QWidget *target = QApplication::activeModalWidget() ? QApplication::activeModalWidget()
+            : QApplication::focusWidget()                   ? QApplication::focusWidget()
+                                                            : &window;
+        QTest::keyClick(target, Qt::Key(key), modifiers);
+    }
+    // Probes through the Machine menu (F5), answering its question.
+    QString probe()
+    {
+        QString question;
+        answerNextBox(QMessageBox::Yes, &question);
+        trigger(u"actionProbe"_s);
+        if (!QTest::qWaitFor([this] { return idle(); }, 10000))
+            qWarning("the probe did not finish");
+        return question;
+    }
+    // Saves through File ▸ Save As, typing the name into the file dialog; answers a lossy-format question.
+    void saveAs(const QString &path, QString *lossQuestion = nullptr)
+    {
+        QTimer::singleShot(0, [path] {
+            auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            dialog->selectFile(path);
+            static_cast<QDialog *>(dialog)->accept();
+        });
+        if (lossQuestion)
+            QTimer::singleShot(50, [lossQuestion] { answerNextBox(QMessageBox::Yes, lossQuestion); });
+        trigger(u"actionSaveAs"_s);
+    }
+};
+
+} // namespace
+
+class TestWorkflows : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QApplication::setOrganizationName(u"ToffeeTest"_s);
+        QApplication::setApplicationName(u"tst_workflows"_s);
+    }
+
+    void firstStartThroughAManualOffsetAndABrokenToolToReopen()
+    {
+        QTemporaryDir dir;
+        Station s;
+        // First start: an empty table, no machine; nothing claims to be measured.
+        QCOMPARE(s.table().size(), 0);
+        QCOMPARE(s.text(u"machineStateLabel"_s), u"Not connected"_s);
+        QVERIFY(!s.find<QAction>(u"actionProbe"_s)->isEnabled());
+
+        // Connect: a fresh machine has measured nothing, and the strip says so rather than "0.000 mm".
+        s.connect();
+        QCOMPARE(s.text(u"activeToolLabel"_s), u"T1"_s);
+        QCOMPARE(s.text(u"tloLabel"_s), u"not measured"_s);
+        QVERIFY(s.text(u"tloNoteLabel"_s).contains(u"probe the reference tool first"_s));
+        QCOMPARE(s.text(u"referenceMzLabel"_s), u"not measured"_s);
+
+        // Probe the reference tool: T1 enters the table, measured.
+        QVERIFY(s.probe().contains(u"recorded as T1's TLO"_s));
+        QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
+        QCOMPARE(s.table().find(1)->tloSource, TloSource::Probe);
+        QCOMPARE(s.text(u"tloLabel"_s), u"0.000 mm"_s);
+        QVERIFY(s.text(u"tloNoteLabel"_s).startsWith(u"measured "_s));
+        QCOMPARE(s.text(u"referenceMzLabel"_s), u"-72.300 mm"_s);
+
+        // Change to T2 from the console: it moves the machine, so it asks first; No sends nothing.
+        auto *console = s.find<QLineEdit>(u"consoleCommand"_s);
+        QString question;
+        answerNextBox(QMessageBox::Cancel, &question);
+        QTest::keyClicks(console, u"M6 T2"_s);
+        QTest::keyClick(console, Qt::Key_Return);
+        QVERIFY(question.contains(u"changes the tool"_s));
+        QVERIFY(!s.sent.contains("M6 T2"));
+        QCOMPARE(s.machine()->tool(), 1);
+        answerNextBox(QMessageBox::Yes);
+        QTest::keyClick(console, Qt::Key_Up);
+        QTest::keyClick(console, Qt::Key_Return);
+        QVERIFY(QTest::qWaitFor([&s] { return s.idle() && s.sent.contains("M6 T2"); }, 10000));
+        QCOMPARE(s.machine()->tool(), 2);
+        // The console's tool change measured T2 on the machine, but only a probe from Toffee records it.
+        QTRY_VERIFY(s.text(u"tloNoteLabel"_s).contains(u"T2 has no TLO in the table"_s));
+
+        // Probe T2: -33.388 mm, at the machine's resolution.
+        s.probe();
+        QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
+        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+
+        // Adjust by hand (+2.9, the seed's example): the machine and the table agree, marked set by hand.
+        auto *mode = s.find<QComboBox>(u"offsetModeCombo"_s);
+        mode->setCurrentIndex(mode->findText(u"Change TLO by"_s));
+        auto *value = s.find<QDoubleSpinBox>(u"offsetValueSpin"_s);
+        value->setValue(2.9);
+        answerNextBox(QMessageBox::Yes, &question);
+        QTest::mouseClick(s.find<QPushButton>(u"sendOffsetButton"_s), Qt::LeftButton);
+        QVERIFY(question.contains(u"T2"_s));
+        QVERIFY(question.contains(u"M493.3 Z-30.488"_s));
+        QVERIFY(QTest::qWaitFor([&s] { return s.idle(); }, 5000));
+        QVERIFY(std::fabs(s.machine()->tlo() + 30.488) < 1e-9);
+        QCOMPARE(*s.table().find(2)->measuredTlo, -30.488);
+        QCOMPARE(s.table().find(2)->tloSource, TloSource::Manual);
+        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-30.488 (by hand)"_s);
+        QVERIFY(s.text(u"tloNoteLabel"_s).startsWith(u"set by hand"_s));
+        QCOMPARE(value->value(), 0.0); // a second Send would not add 2.9 again
+        QCOMPARE(s.window.document()->undoStack()->undoText(), u"Set T2 TLO by hand"_s);
+
+        // Break test: told first that the TLO it compares against was set by hand.
+        answerNextBox(QMessageBox::Yes, &question);
+        s.trigger(u"actionBreakTest"_s);
+        QVERIFY(question.contains(u"Break-test T2?"_s) || question.contains(u"measure T2 again"_s));
+        QVERIFY(question.contains(u"was set by hand"_s));
+        // The real T2 is 2.9 mm from the hand-set TLO: broken. A reflex Enter leaves the machine halted.
+        QString alarm;
+        QTimer::singleShot(100, [&] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            alarm = box->text();
+            QTest::keyClick(box, Qt::Key_Return);
+        });
+        QVERIFY(QTest::qWaitFor([&alarm] { return !alarm.isEmpty(); }, 10000));
+        QVERIFY(alarm.contains(u"T2 may be broken"_s));
+        QVERIFY(QTest::qWaitFor([&s] { return s.idle() && !QApplication::activeModalWidget(); }, 5000));
+        QVERIFY(s.machine()->isHalted());
+        QVERIFY(!s.sent.contains("$X"));
+
+        // Halted: the strip says so in words, nothing that moves is offered, and the tool is marked.
+        QCOMPARE(s.text(u"machineStateLabel"_s), u"HALTED"_s);
+        QVERIFY(s.find<QLabel>(u"haltLabel"_s)->isVisible());
+        QVERIFY(s.text(u"haltLabel"_s).contains(u"Unlock"_s));
+        QVERIFY(s.find<QPushButton>(u"unlockButton"_s)->isVisible());
+        QVERIFY(!s.find<QAction>(u"actionProbe"_s)->isEnabled());
+        QVERIFY(!s.find<QAction>(u"actionBreakTest"_s)->isEnabled());
+        QVERIFY(!s.find<QPushButton>(u"probeButton"_s)->isEnabled());
+        QVERIFY(!s.find<QPushButton>(u"sendOffsetButton"_s)->isEnabled());
+        QVERIFY(s.find<QAction>(u"actionUnlock"_s)->isEnabled());
+        QVERIFY(s.table().find(2)->breakTestFailed);
+        QVERIFY(s.cell(2, ToolTableModel::MeasuredTloColumn).contains(u"BROKEN?"_s));
+        QVERIFY(s.text(u"tloNoteLabel"_s).contains(u"T2 FAILED ITS BREAK TEST"_s));
+        // The console is no back door.
+        const int before = int(s.sent.size());
+        QTest::keyClicks(console, u"M491"_s);
+        QTest::keyClick(console, Qt::Key_Return);
+        QCOMPARE(int(s.sent.size()), before);
+        QVERIFY(s.window.consoleDock()->lines().last().contains(u"halted"_s));
+
+        // Saved now, the file keeps the mark.
+        const QString path = dir.filePath(u"shop.json"_s);
+        s.saveAs(path);
+        QVERIFY(!s.window.document()->isModified());
+        auto saved = loadTableFile(path);
+        QVERIFY(saved.ok());
+        QVERIFY(saved.value().find(2)->breakTestFailed);
+        QCOMPARE(saved.value().find(2)->tloSource, TloSource::Manual);
+
+        // Unlock (Ctrl+Shift+U), then probe T2 again: measured, and the mark is gone.
+        s.window.activateWindow();
+        s.trigger(u"actionUnlock"_s);
+        QVERIFY(QTest::qWaitFor([&s] { return s.idle() && !s.machine()->isHalted(); }, 5000));
+        QTRY_VERIFY(s.find<QAction>(u"actionProbe"_s)->isEnabled());
+        QTRY_VERIFY(!s.find<QLabel>(u"haltLabel"_s)->isVisible());
+        s.probe();
+        QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
+        QVERIFY(!s.table().find(2)->breakTestFailed);
+        QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
+        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+
+        // Save (Ctrl+S) and reopen: the window shows what the file holds.
+        s.trigger(u"actionSave"_s);
+        QVERIFY(!s.window.document()->isModified());
+        Station reopened;
+        QVERIFY(reopened.window.openFile(path));
+        QCOMPARE(reopened.table(), s.table());
+        QCOMPARE(reopened.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+        QCOMPARE(reopened.cell(1, ToolTableModel::MeasuredTloColumn), u"0.000"_s);
+    }
+
+    void aBrokenToolStaysMarkedAcrossAReopenUntilItIsProbed()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"tools.json"_s);
+        {
+            Station s;
+            QVERIFY(s.window.openFile(kExample));
+            s.connect();
+            s.probe(); // T1, the reference
+            s.machine()->breakTool(1, 0.4);
+            QString question;
+            answerNextBox(QMessageBox::Yes, &question);
+            QTimer::singleShot(
+                100, [] { answerNextBox(QMessageBox::NoButton, nullptr, u"alarmLeaveHaltedButton"_s); });
+            s.trigger(u"actionBreakTest"_s);
+            QVERIFY(question.isEmpty() || !question.contains(u"set by hand"_s)); // T1 was measured
+            QVERIFY(QTest::qWaitFor([&s] { return s.table().find(1)->breakTestFailed; }, 10000));
+            QVERIFY(QTest::qWaitFor([] { return !QApplication::activeModalWidget(); }, 5000));
+            s.saveAs(path);
+            QVERIFY(!s.window.document()->isModified());
+        }
+        Station s;
+        QVERIFY(s.window.openFile(path));
+        QVERIFY(s.table().find(1)->breakTestFailed);
+        QVERIFY(s.cell(1, ToolTableModel::MeasuredTloColumn).contains(u"BROKEN?"_s));
+        s.connect(); // a new session: the machine is no longer halted
+        // The strip names the failure for the tool in the spindle.
+        QTRY_VERIFY(s.text(u"tloNoteLabel"_s).contains(u"T1 FAILED ITS BREAK TEST"_s)
+            || s.text(u"tloLabel"_s) == u"not measured"_s);
+        s.probe();
+        QVERIFY(!s.table().find(1)->breakTestFailed);
+        QVERIFY(!s.cell(1, ToolTableModel::MeasuredTloColumn).contains(u"BROKEN?"_s));
+        QVERIFY(s.window.document()->isModified());
+    }
+
+    void exportsOneToolForEachDialect()
+    {
+        Station s;
+        QVERIFY(s.window.openFile(kExample));
+        QStringList checked;
+        QTimer::singleShot(0, [&] {
+            auto *dialog = qobject_cast<ExportDialog *>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            auto *tool = dialog->findChild<QComboBox *>(u"exportToolCombo"_s);
+            auto *preview = dialog->findChild<QPlainTextEdit *>(u"exportPreview"_s);
+            for (const DialectInfo &d : dialects()) {
+                dialog->selectDialect(d.key);
+                tool->setCurrentIndex(tool->findData(2));
+                const QString program = preview->toPlainText();
+                checked << d.key;
+                if (!dialog->findChild<QPushButton *>(u"exportSaveButton"_s)->isEnabled()) {
+                    // A dialect Toffee cannot write says why instead (FAGOR).
+                    QVERIFY(!dialog->findChild<QLabel *>(u"exportProblem"_s)->text().isEmpty());
+                    continue;
+                }
+                // T2 and no other tool of the six: never a whole offset table for one tool.
+                QVERIFY2(program.contains(u"1 tool,"_s), qPrintable(program));
+                for (int other : { 1, 3, 4, 5, 6 }) {
+                    const QString n = QString::number(other);
+                    for (const QString &word : QStringList {
+                             u"P"_s + n + u' ', u"T"_s + n + u' ', u"T"_s + n + u'\n', u"H"_s + n + u' ' })
+                        QVERIFY2(!program.contains(word),
+                            qPrintable(d.key + u": "_s + word + u" in\n"_s + program));
+                }
+                QVERIFY2(program.contains(u"2"_s), qPrintable(d.key));
+            }
+            dialog->reject();
+        });
+        s.trigger(u"actionExportProgram"_s);
+        QCOMPARE(checked.size(), dialects().size());
+        QVERIFY(checked.contains(u"fanuc"_s) && checked.contains(u"aerotech"_s));
+    }
+
+    void saveAsTblShowsWhatTheFileHolds()
+    {
+        QTemporaryDir dir;
+        Station s;
+        QVERIFY(s.window.openFile(kExample));
+        QVERIFY(s.table().find(2)->measuredTlo);
+        const ToolTable full = s.table();
+        const QString path = dir.filePath(u"mill.tbl"_s);
+        QString question;
+        s.saveAs(path, &question);
+        QVERIFY(question.contains(u"no place for measured TLOs"_s));
+        QVERIFY(question.contains(u"shows what the file holds"_s));
+        // The window, the file and the title agree: no TLOs, nothing unsaved.
+        QVERIFY(!s.window.document()->isModified());
+        QVERIFY(!s.window.isWindowModified());
+        QCOMPARE(s.window.document()->filePath(), path);
+        const auto onDisk = loadTableFile(path);
+        QVERIFY(onDisk.ok());
+        QCOMPARE(s.table(), onDisk.value());
+        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"not measured"_s);
+        // Undo brings the rest back, as an unsaved change to the .tbl.
+        s.trigger(u"actionUndo"_s);
+        QCOMPARE(s.table(), full);
+        QVERIFY(s.window.isWindowModified());
+        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+        // Cancelling the question saves nothing and changes nothing.
+        QTimer::singleShot(0, [] { answerNextBox(QMessageBox::Cancel); });
+        s.trigger(u"actionSave"_s);
+        QCOMPARE(s.table(), full);
+        QVERIFY(s.window.isWindowModified());
+    }
+
+    void theStripFitsA1280By720ScreenAndScrollingChangesNoValue()
+    {
+        Station s;
+        QVERIFY(s.window.openFile(kExample));
+        s.connect();
+        s.window.resize(1280, 720);
+        QTRY_COMPARE(s.window.width(), 1280);
+        // The strip is always there, above the table, whatever the docks do.
+        auto *strip = s.find<TloPanel>(u"machineStrip"_s);
+        s.window.machineDock()->hide();
+        QVERIFY(strip->isVisible());
+        QVERIFY(strip->mapTo(&s.window, QPoint(strip->width(), 0)).x() <= s.window.width());
+        s.window.machineDock()->show();
+        // The machine panel needs no horizontal scrolling at 1280 wide.
+        auto *send = s.find<QPushButton>(u"sendOffsetButton"_s);
+        const QPoint right = send->mapTo(&s.window, QPoint(send->width(), 0));
+        QVERIFY2(right.x() <= s.window.width(), qPrintable(QString::number(right.x())));
+        // A halt's long explanation wraps; it never widens the window past Disconnect.
+        s.machine()->halt(4);
+        QTRY_VERIFY(s.find<QLabel>(u"haltLabel"_s)->isVisible());
+        QVERIFY(s.text(u"haltLabel"_s).contains(u"break test found the tool broken"_s));
+        QCOMPARE(s.window.width(), 1280);
+        auto *disconnect = s.find<QPushButton>(u"connectButton"_s);
+        QVERIFY(disconnect->mapTo(&s.window, QPoint(disconnect->width(), 0)).x() <= s.window.width());
+        QVERIFY(strip->mapTo(&s.window, QPoint(strip->width(), 0)).x() <= s.window.width());
+        // A wheel over a spin box the operator did not click scrolls the panel, not the value.
+        auto *tolerance = s.find<QDoubleSpinBox>(u"toleranceSpin"_s);
+        const double was = tolerance->value();
+        QWheelEvent wheel(QPointF(5, 5), tolerance->mapToGlobal(QPointF(5, 5)), QPoint(), QPoint(0, 120),
+            Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(tolerance, &wheel);
+        QCOMPARE(tolerance->value(), was);
+        tolerance->setFocus();
+        QApplication::sendEvent(tolerance, &wheel);
+        QVERIFY(tolerance->value() != was); // once focused, the wheel is the operator's choice
+    }
+
+    void theStatusBarNeverSaysDisconnectedWhileConnected()
+    {
+        Station s;
+        s.connect();
+        s.window.connection()->link()->close(); // the cable comes out
+        QTRY_VERIFY(s.window.statusBar()->currentMessage().startsWith(u"Disconnected"_s));
+        s.connect();
+        QVERIFY(!s.window.statusBar()->currentMessage().contains(u"Disconnected"_s));
+    }
+};
+
+QTEST_MAIN(TestWorkflows)
+#include "tst_workflows.moc"
