@@ -248,10 +248,6 @@
         <translation>Die Datei ist leer; eine CSV-Werkzeugtabelle beginnt mit einer Kopfzeile wie „number,pocket,description,...“.</translation>
     </message>
     <message>
-        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, units and linuxcnc.</source>
-        <translation>Unbekannte Spalte „%1“ in der Kopfzeile; die Spalten heißen number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, units und linuxcnc.</translation>
-    </message>
-    <message>
         <source>the column "%1" appears twice in the header.</source>
         <translation>Die Spalte „%1“ kommt in der Kopfzeile zweimal vor.</translation>
     </message>
@@ -431,6 +427,102 @@
         <source>An Aerotech program sets the offsets of one tool at a time: choose the tool.</source>
         <translation>Ein Aerotech-Programm setzt die Korrekturen eines Werkzeugs nach dem anderen: Wählen Sie das Werkzeug.</translation>
     </message>
+    <message>
+        <source>a TLO set by hand needs its value; the measured TLO is empty.</source>
+        <translation>Eine von Hand gesetzte TLO braucht ihren Wert; die gemessene TLO ist leer.</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table cannot mark a tool that failed its break test: %1 would no longer be marked.</source>
+        <translation>Eine LinuxCNC-Tabelle kann kein Werkzeug markieren, das seinen Bruchtest nicht bestanden hat: %1 wäre nicht mehr markiert.</translation>
+    </message>
+    <message>
+        <source>"tlo_source" must be "probe" or "manual".</source>
+        <translation>"tlo_source" muss "probe" oder "manual" sein.</translation>
+    </message>
+    <message>
+        <source>"break_test_failed" must be true or false.</source>
+        <translation>"break_test_failed" muss true oder false sein.</translation>
+    </message>
+    <message>
+        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, units and linuxcnc.</source>
+        <translation>Unbekannte Spalte "%1" in der Kopfzeile; die Spalten sind number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, units und linuxcnc.</translation>
+    </message>
+    <message>
+        <source>tlo_source "%1" must be probe, manual or empty.</source>
+        <translation>tlo_source "%1" muss probe, manual oder leer sein.</translation>
+    </message>
+    <message>
+        <source>break_test "%1" must be failed, passed or empty.</source>
+        <translation>break_test "%1" muss failed, passed oder leer sein.</translation>
+    </message>
+    <message>
+        <source>The machine was stopped (Stop, Ctrl-X or the stop button).</source>
+        <translation>Die Maschine wurde angehalten (Stopp, Strg-X oder die Stopp-Taste).</translation>
+    </message>
+    <message>
+        <source>Homing failed, or the machine has not been homed.</source>
+        <translation>Die Referenzfahrt ist fehlgeschlagen, oder die Maschine wurde nicht referenziert.</translation>
+    </message>
+    <message>
+        <source>The probe did not touch within its safety margin: the tool may be missing, broken or much shorter than expected.</source>
+        <translation>Der Taster hat innerhalb seines Sicherheitsabstands nicht ausgelöst: Das Werkzeug fehlt möglicherweise, ist gebrochen oder viel kürzer als erwartet.</translation>
+    </message>
+    <message>
+        <source>Measuring on the tool setter failed: a break test found the tool broken, the tolerance was too small, or the calibration failed.</source>
+        <translation>Die Messung am Werkzeugtaster ist fehlgeschlagen: Ein Bruchtest hat das Werkzeug als gebrochen erkannt, die Toleranz war zu klein, oder die Kalibrierung ist fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>The tool changer could not home.</source>
+        <translation>Der Werkzeugwechsler konnte keine Referenzfahrt ausführen.</translation>
+    </message>
+    <message>
+        <source>The tool asked for is not a valid tool.</source>
+        <translation>Das angeforderte Werkzeug ist kein gültiges Werkzeug.</translation>
+    </message>
+    <message>
+        <source>No tool was given to the tool change.</source>
+        <translation>Für den Werkzeugwechsel wurde kein Werkzeug angegeben.</translation>
+    </message>
+    <message>
+        <source>The spindle already holds a tool.</source>
+        <translation>In der Spindel ist bereits ein Werkzeug.</translation>
+    </message>
+    <message>
+        <source>The spindle overheated.</source>
+        <translation>Die Spindel ist überhitzt.</translation>
+    </message>
+    <message>
+        <source>A move went beyond the machine&apos;s travel (soft limit).</source>
+        <translation>Eine Bewegung ging über den Verfahrweg der Maschine hinaus (Software-Endschalter).</translation>
+    </message>
+    <message>
+        <source>The cover is open.</source>
+        <translation>Die Abdeckung ist offen.</translation>
+    </message>
+    <message>
+        <source>The probe is not valid.</source>
+        <translation>Der Taster ist nicht gültig.</translation>
+    </message>
+    <message>
+        <source>The emergency stop is pressed.</source>
+        <translation>Der Not-Halt ist gedrückt.</translation>
+    </message>
+    <message>
+        <source>The power supply overheated.</source>
+        <translation>Das Netzteil ist überhitzt.</translation>
+    </message>
+    <message>
+        <source>The machine has not been homed.</source>
+        <translation>Die Maschine wurde nicht referenziert.</translation>
+    </message>
+    <message>
+        <source>A crash was detected.</source>
+        <translation>Eine Kollision wurde erkannt.</translation>
+    </message>
+    <message>
+        <source>The machine halted (reason %1).</source>
+        <translation>Die Maschine hat angehalten (Grund %1).</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -489,18 +581,6 @@
         <translation>Abweichung:</translation>
     </message>
     <message>
-        <source>Run the break test?</source>
-        <translation>Bruchtest starten?</translation>
-    </message>
-    <message>
-        <source>The machine will move to the tool setter and measure the tool again, then compare it with its stored TLO (tolerance %1 mm). Keep hands clear.</source>
-        <translation>Die Maschine fährt zum Werkzeugtaster, misst das Werkzeug erneut und vergleicht es mit der gespeicherten Längenkorrektur (Toleranz %1 mm). Hände weg von der Maschine.</translation>
-    </message>
-    <message>
-        <source>Break test…</source>
-        <translation>Bruchtest …</translation>
-    </message>
-    <message>
         <source>BROKEN TOOL</source>
         <translation>WERKZEUGBRUCH</translation>
     </message>
@@ -517,10 +597,6 @@
         <translation>Werkzeugbruch</translation>
     </message>
     <message>
-        <source>The tool may be broken. The machine has halted.</source>
-        <translation>Das Werkzeug ist möglicherweise gebrochen. Die Maschine hat angehalten.</translation>
-    </message>
-    <message>
         <source>Unlock</source>
         <translation>Entsperren</translation>
     </message>
@@ -531,6 +607,46 @@
     <message>
         <source>Unlock failed</source>
         <translation>Entsperren fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>The machine reports no tool in the spindle.</source>
+        <translation>Die Maschine meldet kein Werkzeug in der Spindel.</translation>
+    </message>
+    <message>
+        <source>T%1 has no TLO in the table: the test compares against whatever TLO the machine holds%2, which may not be T%1&apos;s.</source>
+        <translation>T%1 hat keine TLO in der Tabelle: Der Test vergleicht mit der TLO, die die Maschine gerade hat%2, und die ist vielleicht nicht die von T%1.</translation>
+    </message>
+    <message>
+        <source>The machine holds TLO %1 but the table holds %2 for T%3: the test compares against the machine&apos;s %1.</source>
+        <translation>Die Maschine hat TLO %1, die Tabelle aber %2 für T%3: Der Test vergleicht mit dem Wert der Maschine, %1.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was set by hand (%3), not measured: if that value is not the tool&apos;s real length, the test reports the tool broken and halts the machine.</source>
+        <translation>Die TLO %2 von T%1 wurde von Hand gesetzt (%3), nicht gemessen: Entspricht dieser Wert nicht der tatsächlichen Länge des Werkzeugs, meldet der Test das Werkzeug als gebrochen und hält die Maschine an.</translation>
+    </message>
+    <message>
+        <source>the current tool</source>
+        <translation>das aktuelle Werkzeug</translation>
+    </message>
+    <message>
+        <source>Break-test %1?</source>
+        <translation>Bruchtest für %1?</translation>
+    </message>
+    <message>
+        <source>The machine will move to the tool setter and measure %1 again, then compare it with its TLO (tolerance %2). Keep hands clear.</source>
+        <translation>Die Maschine fährt zum Werkzeugtaster, misst %1 erneut und vergleicht das Ergebnis mit der TLO (Toleranz %2). Halten Sie die Hände fern.</translation>
+    </message>
+    <message>
+        <source>Break-testing %1…</source>
+        <translation>Bruchtest für %1 …</translation>
+    </message>
+    <message>
+        <source>The tool</source>
+        <translation>Das Werkzeug</translation>
+    </message>
+    <message>
+        <source>%1 may be broken. The machine has halted, and the table marks %1 until it is probed again.</source>
+        <translation>%1 ist möglicherweise gebrochen. Die Maschine hat angehalten, und die Tabelle markiert %1, bis es erneut vermessen wird.</translation>
     </message>
 </context>
 <context>
@@ -566,6 +682,85 @@
     <message>
         <source>Connect</source>
         <translation>Verbinden</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ConsoleCheck</name>
+    <message>
+        <source>The machine is halted: only Unlock ($X) runs now. Check the machine, then use Machine ▸ Unlock.</source>
+        <translation>Die Maschine ist angehalten: Jetzt läuft nur Entsperren ($X). Prüfen Sie die Maschine und verwenden Sie dann Maschine ▸ Entsperren.</translation>
+    </message>
+    <message>
+        <source>$H homes the machine: every axis moves to its limit switch.</source>
+        <translation>$H führt die Referenzfahrt aus: Jede Achse fährt an ihren Endschalter.</translation>
+    </message>
+    <message>
+        <source>%1 jogs the machine.</source>
+        <translation>%1 verfährt die Maschine im Tippbetrieb.</translation>
+    </message>
+    <message>
+        <source>"%1" is not a G-code line Toffee can read; check it for a letter without a number.</source>
+        <translation>„%1“ ist keine G-Code-Zeile, die Toffee lesen kann; prüfen Sie, ob darin ein Buchstabe ohne Zahl steht.</translation>
+    </message>
+    <message>
+        <source>The machine is halted: it refuses "%1" until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
+        <translation>Die Maschine ist angehalten: Sie lehnt „%1“ ab, bis sie entsperrt ist. Prüfen Sie die Maschine und verwenden Sie dann Maschine ▸ Entsperren ($X).</translation>
+    </message>
+    <message>
+        <source>The Carvera works in millimetres only: G20 (inches) halts it. Use G21.</source>
+        <translation>Die Carvera arbeitet nur in Millimetern: G20 (Zoll) lässt sie anhalten. Verwenden Sie G21.</translation>
+    </message>
+    <message>
+        <source>M491.1 runs a break test: the machine moves to the tool setter and probes the tool. Use Machine ▸ Break Test to have the result recorded in the table.</source>
+        <translation>M491.1 führt einen Bruchtest aus: Die Maschine fährt zum Werkzeugtaster und vermisst das Werkzeug. Verwenden Sie Maschine ▸ Bruchtest, damit das Ergebnis in der Tabelle gespeichert wird.</translation>
+    </message>
+    <message>
+        <source>M493.3 needs Z (the TLO) or H (the tool tip&apos;s height above Z0).</source>
+        <translation>M493.3 braucht Z (die TLO) oder H (die Höhe der Werkzeugspitze über Z0).</translation>
+    </message>
+    <message>
+        <source>The tool length offset</source>
+        <translation>Die Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>The height above Z0</source>
+        <translation>Die Höhe über Z0</translation>
+    </message>
+    <message>
+        <source>%1 changes the tool length offset the next cut uses. The table records it as set by hand.</source>
+        <translation>%1 ändert die Werkzeuglängenkorrektur, die der nächste Schnitt verwendet. Die Tabelle speichert sie als von Hand gesetzt.</translation>
+    </message>
+    <message>
+        <source>M493.2 needs a tool (M493.2 T2): without one the machine halts.</source>
+        <translation>M493.2 braucht ein Werkzeug (M493.2 T2): Ohne Werkzeug hält die Maschine an.</translation>
+    </message>
+    <message>
+        <source>%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
+        <translation>%1 ist keine Werkzeugnummer; verwenden Sie 0 bis 999999 (-1 für eine leere Spindel).</translation>
+    </message>
+    <message>
+        <source>M493.2 makes T%1 the active tool but keeps the current TLO, which belongs to the tool measured before. Probe T%1 or restore its TLO before cutting.</source>
+        <translation>M493.2 macht T%1 zum aktiven Werkzeug, behält aber die aktuelle TLO, die zum zuvor gemessenen Werkzeug gehört. Vermessen Sie T%1 oder stellen Sie seine TLO wieder her, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>M6 needs a tool (M6 T2).</source>
+        <translation>M6 braucht ein Werkzeug (M6 T2).</translation>
+    </message>
+    <message>
+        <source>M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.</source>
+        <translation>M6 T%1 wechselt das Werkzeug: Die Maschine fährt und vermisst dann T%1 am Werkzeugtaster.</translation>
+    </message>
+    <message>
+        <source>%1 probes the tool: the machine moves to the tool setter. Use Machine ▸ Probe to have the result recorded in the table.</source>
+        <translation>%1 vermisst das Werkzeug: Die Maschine fährt zum Werkzeugtaster. Verwenden Sie Maschine ▸ Aktuelles Werkzeug vermessen, damit das Ergebnis in der Tabelle gespeichert wird.</translation>
+    </message>
+    <message>
+        <source>%1 starts the spindle.</source>
+        <translation>%1 startet die Spindel.</translation>
+    </message>
+    <message>
+        <source>%1 moves the machine.</source>
+        <translation>%1 bewegt die Maschine.</translation>
     </message>
 </context>
 <context>
@@ -605,6 +800,30 @@
     <message>
         <source>… (%1 bytes in all)</source>
         <translation>… (insgesamt %1 Byte)</translation>
+    </message>
+    <message>
+        <source>not sent: %1</source>
+        <translation>nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>Send %1?</source>
+        <translation>%1 senden?</translation>
+    </message>
+    <message>
+        <source>Keep hands clear. Send it?</source>
+        <translation>Halten Sie die Hände fern. Senden?</translation>
+    </message>
+    <message>
+        <source>not sent: cancelled</source>
+        <translation>nicht gesendet: abgebrochen</translation>
+    </message>
+    <message>
+        <source>recorded in the table: T%1 TLO %2, set by hand</source>
+        <translation>in der Tabelle gespeichert: T%1 TLO %2, von Hand gesetzt</translation>
+    </message>
+    <message>
+        <source>the TLO is set on the machine but not recorded: %1</source>
+        <translation>die TLO ist an der Maschine gesetzt, aber nicht gespeichert: %1</translation>
     </message>
 </context>
 <context>
@@ -921,10 +1140,6 @@
     <message>
         <source>Connection</source>
         <translation>Verbindung</translation>
-    </message>
-    <message>
-        <source>Tool length offset</source>
-        <translation>Werkzeuglängenkorrektur</translation>
     </message>
     <message>
         <source>Probe</source>
@@ -1268,10 +1483,6 @@ Neu laden?</translation>
         <translation>Als %1 speichern?</translation>
     </message>
     <message>
-        <source>Save anyway?</source>
-        <translation>Trotzdem speichern?</translation>
-    </message>
-    <message>
         <source>Cannot save the tool table</source>
         <translation>Die Werkzeugtabelle lässt sich nicht speichern</translation>
     </message>
@@ -1389,6 +1600,22 @@ Zuerst speichern?</translation>
         <source>Nothing else was changed.</source>
         <translation>Sonst wurde nichts verändert.</translation>
     </message>
+    <message>
+        <source>Machine State</source>
+        <translation>Maschinenzustand</translation>
+    </message>
+    <message>
+        <source>T%1 shares pocket %2 with %3. LinuxCNC&apos;s random tool changer needs each tool in its own pocket.</source>
+        <translation>T%1 teilt sich Platz %2 mit %3. Der zufällige Werkzeugwechsler (random tool changer) von LinuxCNC braucht für jedes Werkzeug einen eigenen Platz.</translation>
+    </message>
+    <message>
+        <source>halted</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>After saving, the table on screen shows what the file holds; Undo brings the rest back. Save anyway?</source>
+        <translation>Nach dem Speichern zeigt die Tabelle auf dem Bildschirm, was die Datei enthält; Rückgängig holt den Rest zurück. Trotzdem speichern?</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -1449,26 +1676,46 @@ Zuerst speichern?</translation>
         <translation>%1 → von der Maschine aus der Spindelposition gesetzt</translation>
     </message>
     <message>
-        <source>Change the tool length offset?</source>
-        <translation>Werkzeuglängenkorrektur ändern?</translation>
-    </message>
-    <message>
-        <source>Send %1?
-TLO %2
-
-The next cut uses the new offset.</source>
-        <translation>%1 senden?
-TLO %2
-
-Der nächste Schnitt verwendet die neue Korrektur.</translation>
-    </message>
-    <message>
-        <source>Setting the TLO…</source>
-        <translation>Setze die Längenkorrektur …</translation>
-    </message>
-    <message>
         <source>The offset was not set</source>
         <translation>Die Korrektur wurde nicht gesetzt</translation>
+    </message>
+    <message>
+        <source>the current tool</source>
+        <translation>das aktuelle Werkzeug</translation>
+    </message>
+    <message>
+        <source>Change %1&apos;s tool length offset?</source>
+        <translation>Werkzeuglängenkorrektur von %1 ändern?</translation>
+    </message>
+    <message>
+        <source>Send %1 for %2?
+TLO %3
+
+The next cut uses the new offset. The table records it as set by hand, not measured.</source>
+        <translation>%1 für %2 senden?
+TLO %3
+
+Der nächste Schnitt verwendet die neue Korrektur. Die Tabelle speichert sie als von Hand gesetzt, nicht gemessen.</translation>
+    </message>
+    <message>
+        <source>Setting %1&apos;s TLO…</source>
+        <translation>TLO von %1 wird gesetzt …</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the tool table.</source>
+        <translation>In die Werkzeugtabelle wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>the machine reports no tool in the spindle.</source>
+        <translation>Die Maschine meldet kein Werkzeug in der Spindel.</translation>
+    </message>
+    <message>
+        <source>The offset is set but not recorded</source>
+        <translation>Die Korrektur ist gesetzt, aber nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>The machine now has TLO %1, but the table could not record it: %2</source>
+        <translation>Die Maschine hat jetzt TLO %1, aber die Tabelle konnte sie nicht speichern: %2</translation>
     </message>
 </context>
 <context>
@@ -1530,28 +1777,12 @@ Der nächste Schnitt verwendet die neue Korrektur.</translation>
         <translation>%1 vermessen?</translation>
     </message>
     <message>
-        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
-
-Probe now?</source>
-        <translation>Die Maschine fährt: hoch auf Sicherheitshöhe, über den Werkzeugtaster, dann herunter, bis %1 ihn berührt. Hände weg von der Maschine.
-
-Jetzt vermessen?</translation>
-    </message>
-    <message>
         <source>Probing %1…</source>
         <translation>Vermesse %1 …</translation>
     </message>
     <message>
         <source>there is no tool in the spindle.</source>
         <translation>In der Spindel ist kein Werkzeug.</translation>
-    </message>
-    <message>
-        <source>T%1 measured: TLO %2 mm, recorded in the table.</source>
-        <translation>T%1 gemessen: Längenkorrektur %2 mm, in der Tabelle gespeichert.</translation>
-    </message>
-    <message>
-        <source>Measured TLO %1 mm, but it could not be recorded: %2</source>
-        <translation>Längenkorrektur %1 mm gemessen, aber nicht gespeichert: %2</translation>
     </message>
     <message>
         <source>Probing failed</source>
@@ -1562,24 +1793,68 @@ Jetzt vermessen?</translation>
         <translation>T%1 wiederherstellen?</translation>
     </message>
     <message>
-        <source>Make T%1 the active tool with TLO %2 mm, as measured %3, without probing?
-
-Sends: M493.2 T%1, then M493.3 Z%2</source>
-        <translation>T%1 mit der Längenkorrektur %2 mm (gemessen %3) aktivieren, ohne zu vermessen?
-
-Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
-    </message>
-    <message>
         <source>Restoring T%1…</source>
         <translation>Stelle T%1 wieder her …</translation>
     </message>
     <message>
-        <source>T%1 is active with TLO %2 mm.</source>
-        <translation>T%1 ist aktiv mit Längenkorrektur %2 mm.</translation>
-    </message>
-    <message>
         <source>Restoring failed</source>
         <translation>Wiederherstellen fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
+
+The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.
+
+Probe now?</source>
+        <translation>Die Maschine fährt: nach oben auf Sicherheitshöhe, über den Werkzeugtaster, dann nach unten, bis %1 ihn berührt. Halten Sie die Hände fern.
+
+Laut Maschine ist %1 in der Spindel: Die Messung wird als TLO von %1 gespeichert.
+
+Jetzt vermessen?</translation>
+    </message>
+    <message>
+        <source>T%1 measured: TLO %2, recorded in the table.</source>
+        <translation>T%1 gemessen: TLO %2, in der Tabelle gespeichert.</translation>
+    </message>
+    <message>
+        <source>Measured TLO %1, but it could not be recorded: %2</source>
+        <translation>TLO %1 gemessen, aber sie konnte nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>Is T%1 in the spindle now?</source>
+        <translation>Ist T%1 jetzt in der Spindel?</translation>
+    </message>
+    <message>
+        <source>The machine will use T%1&apos;s TLO %2 (%3, %4) without probing. If another tool is in the spindle, the next cut is off by the difference.</source>
+        <translation>Die Maschine verwendet die TLO %2 von T%1 (%3, %4), ohne zu vermessen. Ist ein anderes Werkzeug in der Spindel, weicht der nächste Schnitt um die Differenz ab.</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>von Hand gesetzt</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <source>The machine has no reference tool measured since it started: a stored TLO is only right against the reference it was measured from. Probe the reference tool first.</source>
+        <translation>Die Maschine hat seit dem Start kein Referenzwerkzeug gemessen: Eine gespeicherte TLO stimmt nur in Bezug auf die Referenz, gegen die sie gemessen wurde. Vermessen Sie zuerst das Referenzwerkzeug.</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test.</source>
+        <translation>T%1 hat seinen letzten Bruchtest nicht bestanden.</translation>
+    </message>
+    <message>
+        <source>Sends: M493.2 T%1, then M493.3 Z%2</source>
+        <translation>Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
+    </message>
+    <message>
+        <source>T%1 Is in the Spindle</source>
+        <translation>T%1 ist in der Spindel</translation>
+    </message>
+    <message>
+        <source>T%1 is active with TLO %2.</source>
+        <translation>T%1 ist aktiv mit TLO %2.</translation>
     </message>
 </context>
 <context>
@@ -1724,18 +1999,6 @@ Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
         <translation>Zustand:</translation>
     </message>
     <message>
-        <source>Active tool:</source>
-        <translation>Aktives Werkzeug:</translation>
-    </message>
-    <message>
-        <source>Reference MCS Z:</source>
-        <translation>Referenz-Maschinen-Z:</translation>
-    </message>
-    <message>
-        <source>Current MCS Z:</source>
-        <translation>Aktuelle Maschinen-Z:</translation>
-    </message>
-    <message>
         <source>TLO:</source>
         <translation>TLO:</translation>
     </message>
@@ -1748,16 +2011,84 @@ Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
         <translation>Nicht verbunden</translation>
     </message>
     <message>
-        <source>%1 — halted: %2</source>
-        <translation>%1 — angehalten: %2</translation>
-    </message>
-    <message>
         <source>%1 (stale: no status report)</source>
         <translation>%1 (veraltet: kein Statusbericht)</translation>
     </message>
     <message>
         <source>Unlock failed</source>
         <translation>Entsperren fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Where the tool length offset came from</source>
+        <translation>Woher die Werkzeuglängenkorrektur stammt</translation>
+    </message>
+    <message>
+        <source>Why the machine halted and what to do</source>
+        <translation>Warum die Maschine angehalten hat und was zu tun ist</translation>
+    </message>
+    <message>
+        <source>Tool:</source>
+        <translation>Werkzeug:</translation>
+    </message>
+    <message>
+        <source>Reference Z:</source>
+        <translation>Referenz-Z:</translation>
+    </message>
+    <message>
+        <source>Current Z:</source>
+        <translation>Aktuelles Z:</translation>
+    </message>
+    <message>
+        <source>HALTED</source>
+        <translation>ANGEHALTEN</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>Verbunden</translation>
+    </message>
+    <message>
+        <source>The machine reported an alarm. Check the machine, then Unlock ($X).</source>
+        <translation>Die Maschine hat einen Alarm gemeldet. Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
+    </message>
+    <message>
+        <source>Nothing that moves the machine or changes its offsets runs until then.</source>
+        <translation>Bis dahin läuft nichts, was die Maschine bewegt oder ihre Korrekturen ändert.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keins</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+    <message>
+        <source>the machine has measured no tool yet: probe the reference tool first</source>
+        <translation>die Maschine hat noch kein Werkzeug gemessen: Vermessen Sie zuerst das Referenzwerkzeug</translation>
+    </message>
+    <message>
+        <source>T%1 has no TLO in the table</source>
+        <translation>T%1 hat keine TLO in der Tabelle</translation>
+    </message>
+    <message>
+        <source>not T%1&apos;s: the table holds %2</source>
+        <translation>nicht die von T%1: Die Tabelle hat %2</translation>
+    </message>
+    <message>
+        <source>set by hand %1, not measured</source>
+        <translation>von Hand gesetzt am %1, nicht gemessen</translation>
+    </message>
+    <message>
+        <source>measured %1</source>
+        <translation>gemessen am %1</translation>
+    </message>
+    <message>
+        <source>T%1 FAILED ITS BREAK TEST — %2</source>
+        <translation>T%1 HAT DEN BRUCHTEST NICHT BESTANDEN — %2</translation>
+    </message>
+    <message>
+        <source>The machine is still halted: check it, then try Unlock again.</source>
+        <translation>Die Maschine ist noch angehalten: Prüfen Sie sie und versuchen Sie dann erneut Entsperren.</translation>
     </message>
 </context>
 <context>
@@ -1789,6 +2120,22 @@ Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
     <message>
         <source>Recover unsaved edits</source>
         <translation>Ungesicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Keep only what %1 holds</source>
+        <translation>Nur behalten, was %1 enthält</translation>
+    </message>
+    <message>
+        <source>Set T%1 TLO by hand</source>
+        <translation>TLO von T%1 von Hand setzen</translation>
+    </message>
+    <message>
+        <source>Mark T%1 failed its break test</source>
+        <translation>T%1 als im Bruchtest durchgefallen markieren</translation>
+    </message>
+    <message>
+        <source>T%1 passed its break test</source>
+        <translation>T%1 hat den Bruchtest bestanden</translation>
     </message>
 </context>
 <context>
@@ -1859,6 +2206,38 @@ Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
     <message>
         <source>tool number %1 is already in the table; tool numbers must be unique.</source>
         <translation>Werkzeugnummer %1 ist schon in der Tabelle; Werkzeugnummern müssen eindeutig sein.</translation>
+    </message>
+    <message>
+        <source>Pocket %1 also holds %2. LinuxCNC&apos;s random tool changer needs each tool in its own pocket.</source>
+        <translation>Platz %1 enthält auch %2. Der zufällige Werkzeugwechsler (random tool changer) von LinuxCNC braucht für jedes Werkzeug einen eigenen Platz.</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+    <message>
+        <source>%1 (by hand)</source>
+        <translation>%1 (von Hand)</translation>
+    </message>
+    <message>
+        <source>%1 — BROKEN?</source>
+        <translation>%1 — GEBROCHEN?</translation>
+    </message>
+    <message>
+        <source>T%1 has not been measured on the tool setter.</source>
+        <translation>T%1 wurde nicht am Werkzeugtaster gemessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was set on the machine by hand, not measured. A break test compares against it.</source>
+        <translation>Die TLO %2 von T%1 wurde an der Maschine von Hand gesetzt, nicht gemessen. Ein Bruchtest vergleicht mit diesem Wert.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was measured on the tool setter.</source>
+        <translation>Die TLO %2 von T%1 wurde am Werkzeugtaster gemessen.</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test: check it, replace it if it is damaged, then probe it again. It stays marked until it is probed.</source>
+        <translation>T%1 hat seinen letzten Bruchtest nicht bestanden: Prüfen Sie es, ersetzen Sie es, wenn es beschädigt ist, und vermessen Sie es dann erneut. Es bleibt markiert, bis es vermessen wird.</translation>
     </message>
 </context>
 <context>

@@ -248,10 +248,6 @@
         <translation>文件为空；CSV 刀具表以表头行开始，例如“number,pocket,description,...”。</translation>
     </message>
     <message>
-        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, units and linuxcnc.</source>
-        <translation>表头中有未知列“%1”；列名为 number、pocket、description、length_geometry、length_wear、radius_geometry、radius_wear、measured_tlo、measured_at、notes、units 和 linuxcnc。</translation>
-    </message>
-    <message>
         <source>the column "%1" appears twice in the header.</source>
         <translation>列“%1”在表头中出现了两次。</translation>
     </message>
@@ -431,6 +427,102 @@
         <source>An Aerotech program sets the offsets of one tool at a time: choose the tool.</source>
         <translation>Aerotech 程序一次只设置一把刀具的补偿：请选择刀具。</translation>
     </message>
+    <message>
+        <source>a TLO set by hand needs its value; the measured TLO is empty.</source>
+        <translation>手动设置的 TLO 需要数值；测得的 TLO 为空。</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table cannot mark a tool that failed its break test: %1 would no longer be marked.</source>
+        <translation>LinuxCNC 刀具表无法标记未通过断刀检测的刀具：%1 将不再被标记。</translation>
+    </message>
+    <message>
+        <source>"tlo_source" must be "probe" or "manual".</source>
+        <translation>"tlo_source" 必须是 "probe" 或 "manual"。</translation>
+    </message>
+    <message>
+        <source>"break_test_failed" must be true or false.</source>
+        <translation>"break_test_failed" 必须是 true 或 false。</translation>
+    </message>
+    <message>
+        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, units and linuxcnc.</source>
+        <translation>表头中有未知列 "%1"；可用的列为 number、pocket、description、length_geometry、length_wear、radius_geometry、radius_wear、measured_tlo、measured_at、notes、tlo_source、break_test、units 和 linuxcnc。</translation>
+    </message>
+    <message>
+        <source>tlo_source "%1" must be probe, manual or empty.</source>
+        <translation>tlo_source "%1" 必须是 probe、manual 或留空。</translation>
+    </message>
+    <message>
+        <source>break_test "%1" must be failed, passed or empty.</source>
+        <translation>break_test "%1" 必须是 failed、passed 或留空。</translation>
+    </message>
+    <message>
+        <source>The machine was stopped (Stop, Ctrl-X or the stop button).</source>
+        <translation>机床已被停止（停止命令、Ctrl-X 或停止按钮）。</translation>
+    </message>
+    <message>
+        <source>Homing failed, or the machine has not been homed.</source>
+        <translation>回零失败，或机床尚未回零。</translation>
+    </message>
+    <message>
+        <source>The probe did not touch within its safety margin: the tool may be missing, broken or much shorter than expected.</source>
+        <translation>探针在安全余量内未触发：刀具可能缺失、已断，或比预期短得多。</translation>
+    </message>
+    <message>
+        <source>Measuring on the tool setter failed: a break test found the tool broken, the tolerance was too small, or the calibration failed.</source>
+        <translation>在对刀仪上测量失败：断刀检测发现刀具已断、公差太小，或校准失败。</translation>
+    </message>
+    <message>
+        <source>The tool changer could not home.</source>
+        <translation>换刀装置无法回零。</translation>
+    </message>
+    <message>
+        <source>The tool asked for is not a valid tool.</source>
+        <translation>请求的刀具不是有效刀具。</translation>
+    </message>
+    <message>
+        <source>No tool was given to the tool change.</source>
+        <translation>换刀时未指定刀具。</translation>
+    </message>
+    <message>
+        <source>The spindle already holds a tool.</source>
+        <translation>主轴上已有刀具。</translation>
+    </message>
+    <message>
+        <source>The spindle overheated.</source>
+        <translation>主轴过热。</translation>
+    </message>
+    <message>
+        <source>A move went beyond the machine&apos;s travel (soft limit).</source>
+        <translation>某个移动超出了机床行程（软限位）。</translation>
+    </message>
+    <message>
+        <source>The cover is open.</source>
+        <translation>防护罩已打开。</translation>
+    </message>
+    <message>
+        <source>The probe is not valid.</source>
+        <translation>探针无效。</translation>
+    </message>
+    <message>
+        <source>The emergency stop is pressed.</source>
+        <translation>急停按钮已按下。</translation>
+    </message>
+    <message>
+        <source>The power supply overheated.</source>
+        <translation>电源过热。</translation>
+    </message>
+    <message>
+        <source>The machine has not been homed.</source>
+        <translation>机床尚未回零。</translation>
+    </message>
+    <message>
+        <source>A crash was detected.</source>
+        <translation>检测到碰撞。</translation>
+    </message>
+    <message>
+        <source>The machine halted (reason %1).</source>
+        <translation>机床已停机（原因 %1）。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -489,18 +581,6 @@
         <translation>差值：</translation>
     </message>
     <message>
-        <source>Run the break test?</source>
-        <translation>运行断刀检测？</translation>
-    </message>
-    <message>
-        <source>The machine will move to the tool setter and measure the tool again, then compare it with its stored TLO (tolerance %1 mm). Keep hands clear.</source>
-        <translation>机床将移动到对刀仪，重新测量刀具，并与已存的刀长补偿比较（公差 %1 mm）。请让双手远离机床。</translation>
-    </message>
-    <message>
-        <source>Break test…</source>
-        <translation>断刀检测…</translation>
-    </message>
-    <message>
         <source>BROKEN TOOL</source>
         <translation>刀具已断</translation>
     </message>
@@ -517,10 +597,6 @@
         <translation>断刀</translation>
     </message>
     <message>
-        <source>The tool may be broken. The machine has halted.</source>
-        <translation>刀具可能已断。机床已停机。</translation>
-    </message>
-    <message>
         <source>Unlock</source>
         <translation>解锁</translation>
     </message>
@@ -531,6 +607,46 @@
     <message>
         <source>Unlock failed</source>
         <translation>解锁失败</translation>
+    </message>
+    <message>
+        <source>The machine reports no tool in the spindle.</source>
+        <translation>机床报告主轴上没有刀具。</translation>
+    </message>
+    <message>
+        <source>T%1 has no TLO in the table: the test compares against whatever TLO the machine holds%2, which may not be T%1&apos;s.</source>
+        <translation>T%1 在刀具表中没有 TLO：检测将与机床当前保存的 TLO%2 比较，而它可能不是 T%1 的。</translation>
+    </message>
+    <message>
+        <source>The machine holds TLO %1 but the table holds %2 for T%3: the test compares against the machine&apos;s %1.</source>
+        <translation>机床中的 TLO 为 %1，但刀具表中 T%3 的 TLO 为 %2：检测将与机床的 %1 比较。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was set by hand (%3), not measured: if that value is not the tool&apos;s real length, the test reports the tool broken and halts the machine.</source>
+        <translation>T%1 的 TLO %2 是手动设置的（%3），未测量：如果该值不是刀具的实际长度，检测会报告断刀并使机床停机。</translation>
+    </message>
+    <message>
+        <source>the current tool</source>
+        <translation>当前刀具</translation>
+    </message>
+    <message>
+        <source>Break-test %1?</source>
+        <translation>对 %1 进行断刀检测？</translation>
+    </message>
+    <message>
+        <source>The machine will move to the tool setter and measure %1 again, then compare it with its TLO (tolerance %2). Keep hands clear.</source>
+        <translation>机床将移动到对刀仪，重新测量 %1，然后与其 TLO 比较（公差 %2）。手请远离机床。</translation>
+    </message>
+    <message>
+        <source>Break-testing %1…</source>
+        <translation>正在对 %1 进行断刀检测…</translation>
+    </message>
+    <message>
+        <source>The tool</source>
+        <translation>刀具</translation>
+    </message>
+    <message>
+        <source>%1 may be broken. The machine has halted, and the table marks %1 until it is probed again.</source>
+        <translation>%1 可能已断。机床已停机，刀具表会一直标记 %1，直到重新对刀。</translation>
     </message>
 </context>
 <context>
@@ -566,6 +682,85 @@
     <message>
         <source>Connect</source>
         <translation>连接</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ConsoleCheck</name>
+    <message>
+        <source>The machine is halted: only Unlock ($X) runs now. Check the machine, then use Machine ▸ Unlock.</source>
+        <translation>机床已停机：现在只能执行解锁（$X）。请检查机床，然后使用“机床 ▸ 解锁”。</translation>
+    </message>
+    <message>
+        <source>$H homes the machine: every axis moves to its limit switch.</source>
+        <translation>$H 使机床回零：每个轴都移动到其限位开关。</translation>
+    </message>
+    <message>
+        <source>%1 jogs the machine.</source>
+        <translation>%1 会点动机床。</translation>
+    </message>
+    <message>
+        <source>"%1" is not a G-code line Toffee can read; check it for a letter without a number.</source>
+        <translation>“%1”不是 Toffee 能读取的 G 代码行；请检查其中是否有不带数字的字母。</translation>
+    </message>
+    <message>
+        <source>The machine is halted: it refuses "%1" until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
+        <translation>机床已停机：解锁之前它拒绝执行“%1”。请检查机床，然后使用“机床 ▸ 解锁”（$X）。</translation>
+    </message>
+    <message>
+        <source>The Carvera works in millimetres only: G20 (inches) halts it. Use G21.</source>
+        <translation>Carvera 只使用毫米：G20（英寸）会使其停机。请使用 G21。</translation>
+    </message>
+    <message>
+        <source>M491.1 runs a break test: the machine moves to the tool setter and probes the tool. Use Machine ▸ Break Test to have the result recorded in the table.</source>
+        <translation>M491.1 执行断刀检测：机床移动到对刀仪并测量刀具。请使用“机床 ▸ 断刀检测”，以便将结果记录到刀具表中。</translation>
+    </message>
+    <message>
+        <source>M493.3 needs Z (the TLO) or H (the tool tip&apos;s height above Z0).</source>
+        <translation>M493.3 需要 Z（TLO）或 H（刀尖在 Z0 以上的高度）。</translation>
+    </message>
+    <message>
+        <source>The tool length offset</source>
+        <translation>刀具长度补偿</translation>
+    </message>
+    <message>
+        <source>The height above Z0</source>
+        <translation>Z0 以上的高度</translation>
+    </message>
+    <message>
+        <source>%1 changes the tool length offset the next cut uses. The table records it as set by hand.</source>
+        <translation>%1 会更改下一次切削所用的刀具长度补偿。刀具表会将其记录为手动设置。</translation>
+    </message>
+    <message>
+        <source>M493.2 needs a tool (M493.2 T2): without one the machine halts.</source>
+        <translation>M493.2 需要指定刀具（M493.2 T2）：否则机床会停机。</translation>
+    </message>
+    <message>
+        <source>%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
+        <translation>%1 不是有效刀具号；请使用 0 到 999999（空主轴为 -1）。</translation>
+    </message>
+    <message>
+        <source>M493.2 makes T%1 the active tool but keeps the current TLO, which belongs to the tool measured before. Probe T%1 or restore its TLO before cutting.</source>
+        <translation>M493.2 会将 T%1 设为当前刀具，但保留当前 TLO，而该 TLO 属于之前测量的刀具。切削前请对 T%1 对刀或恢复其 TLO。</translation>
+    </message>
+    <message>
+        <source>M6 needs a tool (M6 T2).</source>
+        <translation>M6 需要指定刀具（M6 T2）。</translation>
+    </message>
+    <message>
+        <source>M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.</source>
+        <translation>M6 T%1 会换刀：机床会移动，然后在对刀仪上对 T%1 对刀。</translation>
+    </message>
+    <message>
+        <source>%1 probes the tool: the machine moves to the tool setter. Use Machine ▸ Probe to have the result recorded in the table.</source>
+        <translation>%1 会对刀：机床移动到对刀仪。请使用“机床 ▸ 对当前刀具对刀”，以便将结果记录到刀具表中。</translation>
+    </message>
+    <message>
+        <source>%1 starts the spindle.</source>
+        <translation>%1 会启动主轴。</translation>
+    </message>
+    <message>
+        <source>%1 moves the machine.</source>
+        <translation>%1 会移动机床。</translation>
     </message>
 </context>
 <context>
@@ -605,6 +800,30 @@
     <message>
         <source>… (%1 bytes in all)</source>
         <translation>…（共 %1 字节）</translation>
+    </message>
+    <message>
+        <source>not sent: %1</source>
+        <translation>未发送：%1</translation>
+    </message>
+    <message>
+        <source>Send %1?</source>
+        <translation>发送 %1？</translation>
+    </message>
+    <message>
+        <source>Keep hands clear. Send it?</source>
+        <translation>手请远离机床。确定发送吗？</translation>
+    </message>
+    <message>
+        <source>not sent: cancelled</source>
+        <translation>未发送：已取消</translation>
+    </message>
+    <message>
+        <source>recorded in the table: T%1 TLO %2, set by hand</source>
+        <translation>已记录到刀具表：T%1 TLO %2，手动设置</translation>
+    </message>
+    <message>
+        <source>the TLO is set on the machine but not recorded: %1</source>
+        <translation>TLO 已在机床上设置，但未记录：%1</translation>
     </message>
 </context>
 <context>
@@ -921,10 +1140,6 @@
     <message>
         <source>Connection</source>
         <translation>连接</translation>
-    </message>
-    <message>
-        <source>Tool length offset</source>
-        <translation>刀具长度补偿</translation>
     </message>
     <message>
         <source>Probe</source>
@@ -1268,10 +1483,6 @@ Reload it?</source>
         <translation>另存为 %1？</translation>
     </message>
     <message>
-        <source>Save anyway?</source>
-        <translation>仍然保存？</translation>
-    </message>
-    <message>
         <source>Cannot save the tool table</source>
         <translation>无法保存刀具表</translation>
     </message>
@@ -1389,6 +1600,22 @@ Save them first?</source>
         <source>Nothing else was changed.</source>
         <translation>其他内容均未更改。</translation>
     </message>
+    <message>
+        <source>Machine State</source>
+        <translation>机床状态</translation>
+    </message>
+    <message>
+        <source>T%1 shares pocket %2 with %3. LinuxCNC&apos;s random tool changer needs each tool in its own pocket.</source>
+        <translation>T%1 与 %3 共用刀位 %2。LinuxCNC 的随机换刀装置要求每把刀具都有自己的刀位。</translation>
+    </message>
+    <message>
+        <source>halted</source>
+        <translation>已停机</translation>
+    </message>
+    <message>
+        <source>After saving, the table on screen shows what the file holds; Undo brings the rest back. Save anyway?</source>
+        <translation>保存后，屏幕上的表格将只显示文件中保存的内容；“撤销”可恢复其余内容。仍要保存吗？</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -1449,26 +1676,46 @@ Save them first?</source>
         <translation>%1 → 由机床根据主轴位置设置</translation>
     </message>
     <message>
-        <source>Change the tool length offset?</source>
-        <translation>更改刀具长度补偿？</translation>
-    </message>
-    <message>
-        <source>Send %1?
-TLO %2
-
-The next cut uses the new offset.</source>
-        <translation>发送 %1？
-TLO %2
-
-下一次切削将使用新的补偿。</translation>
-    </message>
-    <message>
-        <source>Setting the TLO…</source>
-        <translation>正在设置 TLO…</translation>
-    </message>
-    <message>
         <source>The offset was not set</source>
         <translation>补偿未被设置</translation>
+    </message>
+    <message>
+        <source>the current tool</source>
+        <translation>当前刀具</translation>
+    </message>
+    <message>
+        <source>Change %1&apos;s tool length offset?</source>
+        <translation>更改 %1 的刀具长度补偿？</translation>
+    </message>
+    <message>
+        <source>Send %1 for %2?
+TLO %3
+
+The next cut uses the new offset. The table records it as set by hand, not measured.</source>
+        <translation>为 %2 发送 %1？
+TLO %3
+
+下一次切削将使用新的补偿。刀具表会将其记录为手动设置，而非测量值。</translation>
+    </message>
+    <message>
+        <source>Setting %1&apos;s TLO…</source>
+        <translation>正在设置 %1 的 TLO…</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the tool table.</source>
+        <translation>刀具表中未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>the machine reports no tool in the spindle.</source>
+        <translation>机床报告主轴上没有刀具。</translation>
+    </message>
+    <message>
+        <source>The offset is set but not recorded</source>
+        <translation>补偿已设置但未记录</translation>
+    </message>
+    <message>
+        <source>The machine now has TLO %1, but the table could not record it: %2</source>
+        <translation>机床现在的 TLO 为 %1，但刀具表无法记录：%2</translation>
     </message>
 </context>
 <context>
@@ -1530,28 +1777,12 @@ TLO %2
         <translation>对 %1 对刀？</translation>
     </message>
     <message>
-        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
-
-Probe now?</source>
-        <translation>机床将移动：先升到安全高度，移到对刀仪上方，然后下降直到 %1 接触对刀仪。请让双手远离机床。
-
-现在对刀吗？</translation>
-    </message>
-    <message>
         <source>Probing %1…</source>
         <translation>正在对 %1 对刀…</translation>
     </message>
     <message>
         <source>there is no tool in the spindle.</source>
         <translation>主轴上没有刀具。</translation>
-    </message>
-    <message>
-        <source>T%1 measured: TLO %2 mm, recorded in the table.</source>
-        <translation>T%1 已测量：TLO %2 mm，已记录到表中。</translation>
-    </message>
-    <message>
-        <source>Measured TLO %1 mm, but it could not be recorded: %2</source>
-        <translation>测得 TLO %1 mm，但无法记录：%2</translation>
     </message>
     <message>
         <source>Probing failed</source>
@@ -1562,24 +1793,68 @@ Probe now?</source>
         <translation>恢复 T%1？</translation>
     </message>
     <message>
-        <source>Make T%1 the active tool with TLO %2 mm, as measured %3, without probing?
-
-Sends: M493.2 T%1, then M493.3 Z%2</source>
-        <translation>将 T%1 设为当前刀具，TLO 为 %2 mm（测量于 %3），无需对刀？
-
-发送：M493.2 T%1，然后 M493.3 Z%2</translation>
-    </message>
-    <message>
         <source>Restoring T%1…</source>
         <translation>正在恢复 T%1…</translation>
     </message>
     <message>
-        <source>T%1 is active with TLO %2 mm.</source>
-        <translation>T%1 已激活，TLO 为 %2 mm。</translation>
-    </message>
-    <message>
         <source>Restoring failed</source>
         <translation>恢复失败</translation>
+    </message>
+    <message>
+        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
+
+The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.
+
+Probe now?</source>
+        <translation>机床将移动：先升到安全高度，移到对刀仪上方，然后下降直到 %1 接触对刀仪。手请远离机床。
+
+机床报告 %1 在主轴上：测量结果将记录为 %1 的 TLO。
+
+现在对刀吗？</translation>
+    </message>
+    <message>
+        <source>T%1 measured: TLO %2, recorded in the table.</source>
+        <translation>T%1 已测量：TLO %2，已记录到刀具表。</translation>
+    </message>
+    <message>
+        <source>Measured TLO %1, but it could not be recorded: %2</source>
+        <translation>测得 TLO %1，但无法记录：%2</translation>
+    </message>
+    <message>
+        <source>Is T%1 in the spindle now?</source>
+        <translation>T%1 现在在主轴上吗？</translation>
+    </message>
+    <message>
+        <source>The machine will use T%1&apos;s TLO %2 (%3, %4) without probing. If another tool is in the spindle, the next cut is off by the difference.</source>
+        <translation>机床将不经对刀直接使用 T%1 的 TLO %2（%3，%4）。如果主轴上是另一把刀具，下一次切削会偏差两者之差。</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>手动设置</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>已测量</translation>
+    </message>
+    <message>
+        <source>The machine has no reference tool measured since it started: a stored TLO is only right against the reference it was measured from. Probe the reference tool first.</source>
+        <translation>机床自启动以来尚未测量基准刀具：已保存的 TLO 只有相对于测量它时所用的基准才正确。请先对基准刀具对刀。</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test.</source>
+        <translation>T%1 未通过上次断刀检测。</translation>
+    </message>
+    <message>
+        <source>Sends: M493.2 T%1, then M493.3 Z%2</source>
+        <translation>发送：M493.2 T%1，然后 M493.3 Z%2</translation>
+    </message>
+    <message>
+        <source>T%1 Is in the Spindle</source>
+        <translation>T%1 在主轴上</translation>
+    </message>
+    <message>
+        <source>T%1 is active with TLO %2.</source>
+        <translation>T%1 已激活，TLO 为 %2。</translation>
     </message>
 </context>
 <context>
@@ -1724,18 +1999,6 @@ Sends: M493.2 T%1, then M493.3 Z%2</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <source>Active tool:</source>
-        <translation>当前刀具：</translation>
-    </message>
-    <message>
-        <source>Reference MCS Z:</source>
-        <translation>基准机床 Z：</translation>
-    </message>
-    <message>
-        <source>Current MCS Z:</source>
-        <translation>当前机床 Z：</translation>
-    </message>
-    <message>
         <source>TLO:</source>
         <translation>TLO：</translation>
     </message>
@@ -1748,16 +2011,84 @@ Sends: M493.2 T%1, then M493.3 Z%2</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <source>%1 — halted: %2</source>
-        <translation>%1 — 已停机：%2</translation>
-    </message>
-    <message>
         <source>%1 (stale: no status report)</source>
         <translation>%1（已过时：没有状态报告）</translation>
     </message>
     <message>
         <source>Unlock failed</source>
         <translation>解锁失败</translation>
+    </message>
+    <message>
+        <source>Where the tool length offset came from</source>
+        <translation>刀具长度补偿的来源</translation>
+    </message>
+    <message>
+        <source>Why the machine halted and what to do</source>
+        <translation>机床停机的原因及处理方法</translation>
+    </message>
+    <message>
+        <source>Tool:</source>
+        <translation>刀具：</translation>
+    </message>
+    <message>
+        <source>Reference Z:</source>
+        <translation>基准 Z：</translation>
+    </message>
+    <message>
+        <source>Current Z:</source>
+        <translation>当前 Z：</translation>
+    </message>
+    <message>
+        <source>HALTED</source>
+        <translation>已停机</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>已连接</translation>
+    </message>
+    <message>
+        <source>The machine reported an alarm. Check the machine, then Unlock ($X).</source>
+        <translation>机床报告了警报。请检查机床，然后解锁（$X）。</translation>
+    </message>
+    <message>
+        <source>Nothing that moves the machine or changes its offsets runs until then.</source>
+        <translation>在此之前，任何会移动机床或更改其补偿的操作都不会执行。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>未测量</translation>
+    </message>
+    <message>
+        <source>the machine has measured no tool yet: probe the reference tool first</source>
+        <translation>机床尚未测量任何刀具：请先对基准刀具对刀</translation>
+    </message>
+    <message>
+        <source>T%1 has no TLO in the table</source>
+        <translation>T%1 在刀具表中没有 TLO</translation>
+    </message>
+    <message>
+        <source>not T%1&apos;s: the table holds %2</source>
+        <translation>不是 T%1 的：刀具表中为 %2</translation>
+    </message>
+    <message>
+        <source>set by hand %1, not measured</source>
+        <translation>于 %1 手动设置，未测量</translation>
+    </message>
+    <message>
+        <source>measured %1</source>
+        <translation>于 %1 测量</translation>
+    </message>
+    <message>
+        <source>T%1 FAILED ITS BREAK TEST — %2</source>
+        <translation>T%1 未通过断刀检测 — %2</translation>
+    </message>
+    <message>
+        <source>The machine is still halted: check it, then try Unlock again.</source>
+        <translation>机床仍处于停机状态：请检查机床，然后再次尝试解锁。</translation>
     </message>
 </context>
 <context>
@@ -1789,6 +2120,22 @@ Sends: M493.2 T%1, then M493.3 Z%2</source>
     <message>
         <source>Recover unsaved edits</source>
         <translation>恢复未保存的修改</translation>
+    </message>
+    <message>
+        <source>Keep only what %1 holds</source>
+        <translation>只保留 %1 中的内容</translation>
+    </message>
+    <message>
+        <source>Set T%1 TLO by hand</source>
+        <translation>手动设置 T%1 的 TLO</translation>
+    </message>
+    <message>
+        <source>Mark T%1 failed its break test</source>
+        <translation>将 T%1 标记为未通过断刀检测</translation>
+    </message>
+    <message>
+        <source>T%1 passed its break test</source>
+        <translation>T%1 通过了断刀检测</translation>
     </message>
 </context>
 <context>
@@ -1859,6 +2206,38 @@ Sends: M493.2 T%1, then M493.3 Z%2</source>
     <message>
         <source>tool number %1 is already in the table; tool numbers must be unique.</source>
         <translation>刀具号 %1 已在表中；刀具号必须唯一。</translation>
+    </message>
+    <message>
+        <source>Pocket %1 also holds %2. LinuxCNC&apos;s random tool changer needs each tool in its own pocket.</source>
+        <translation>刀位 %1 中还有 %2。LinuxCNC 的随机换刀装置要求每把刀具都有自己的刀位。</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>未测量</translation>
+    </message>
+    <message>
+        <source>%1 (by hand)</source>
+        <translation>%1（手动）</translation>
+    </message>
+    <message>
+        <source>%1 — BROKEN?</source>
+        <translation>%1 — 断刀？</translation>
+    </message>
+    <message>
+        <source>T%1 has not been measured on the tool setter.</source>
+        <translation>T%1 尚未在对刀仪上测量。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was set on the machine by hand, not measured. A break test compares against it.</source>
+        <translation>T%1 的 TLO %2 是在机床上手动设置的，未测量。断刀检测会与该值比较。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was measured on the tool setter.</source>
+        <translation>T%1 的 TLO %2 是在对刀仪上测得的。</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test: check it, replace it if it is damaged, then probe it again. It stays marked until it is probed.</source>
+        <translation>T%1 未通过上次断刀检测：请检查该刀具，如有损坏请更换，然后重新对刀。在重新对刀之前，它会一直保持标记。</translation>
     </message>
 </context>
 <context>

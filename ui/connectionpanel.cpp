@@ -2,7 +2,7 @@
 #include "connectionpanel.h"
 
 #include <QComboBox>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QPushButton>
 #include <QSerialPortInfo>
 
@@ -39,12 +39,14 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
     m_connect->setObjectName(u"connectButton"_s);
     m_connect->setIcon(themeIcon(u"connect"_s));
 
-    auto *layout = new QHBoxLayout(this);
+    // Two rows, so that the panel stays narrow in every language: the port, then the rest.
+    auto *layout = new QGridLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_port, 1);
-    layout->addWidget(m_baud);
-    layout->addWidget(m_refresh);
-    layout->addWidget(m_connect);
+    layout->addWidget(m_port, 0, 0, 1, 3);
+    layout->addWidget(m_baud, 1, 0);
+    layout->addWidget(m_refresh, 1, 1);
+    layout->addWidget(m_connect, 1, 2);
+    layout->setColumnStretch(2, 1);
 
     connect(m_refresh, &QPushButton::clicked, this, &ConnectionPanel::refreshPorts);
     connect(m_connect, &QPushButton::clicked, this, &ConnectionPanel::toggleConnection);

@@ -79,6 +79,9 @@ MainWindow::MainWindow(QWidget *parent)
     setCentralWidget(m_tablePanel);
     addDockWidget(Qt::RightDockWidgetArea, m_machineDock);
     addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
+    // The machine panel runs the full height beside the table and the console: at 1280×720 it then needs no
+    // scrolling to reach the break test.
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     createActions();
     createMachineActions();
     // The machine's state, tool and TLO in a strip that no scrolling, dock or window size hides (and that
@@ -538,7 +541,7 @@ void MainWindow::readSettings()
         resize(QSize(1280, 720).boundedTo(available));
     }
     if (!restoreState(settings.windowState())) {
-        resizeDocks({ m_consoleDock }, { 150 }, Qt::Vertical);
+        resizeDocks({ m_consoleDock }, { 110 }, Qt::Vertical);
         resizeDocks({ m_machineDock }, { 400 }, Qt::Horizontal);
     }
 }

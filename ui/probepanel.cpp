@@ -50,11 +50,11 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     m_result->setWordWrap(true);
 
     auto *grid = new QGridLayout(this);
-    grid->addWidget(m_probe, 0, 0);
-    grid->addWidget(m_restore, 0, 1);
-    grid->addWidget(m_progress, 1, 0);
-    grid->addWidget(m_cancel, 1, 1);
-    grid->addWidget(m_result, 2, 0, 1, 2);
+    grid->addWidget(m_probe, 0, 0, 1, 2);
+    grid->addWidget(m_restore, 1, 0, 1, 2);
+    grid->addWidget(m_progress, 2, 0);
+    grid->addWidget(m_cancel, 2, 1);
+    grid->addWidget(m_result, 3, 0, 1, 2);
 
     connect(m_probe, &QPushButton::clicked, this, [this] { probe(); });
     connect(m_restore, &QPushButton::clicked, this, [this] { restore(); });

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -76,22 +77,29 @@ TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidge
     m_unlock->setToolTip(tr("Clear the halt ($X) — Ctrl+Shift+U"));
     m_unlock->hide();
 
+    // The note wraps and the two Z values stack, so that the strip fits 1280 pixels in every language.
+    m_tloNote->setWordWrap(true);
+    m_tloNote->setMinimumWidth(160);
     auto *row = new QHBoxLayout;
     row->setContentsMargins(0, 0, 0, 0);
     row->addWidget(caption(tr("State:"), this));
     row->addWidget(m_state);
-    row->addSpacing(16);
+    row->addSpacing(12);
     row->addWidget(caption(tr("Tool:"), this));
     row->addWidget(m_tool);
-    row->addSpacing(16);
+    row->addSpacing(12);
     row->addWidget(caption(tr("TLO:"), this));
     row->addWidget(m_tlo);
+    row->addSpacing(6);
     row->addWidget(m_tloNote, 1);
-    row->addSpacing(16);
-    row->addWidget(caption(tr("Reference Z:"), this));
-    row->addWidget(m_reference);
-    row->addWidget(caption(tr("Current Z:"), this));
-    row->addWidget(m_current);
+    row->addSpacing(12);
+    auto *heights = new QGridLayout;
+    heights->setVerticalSpacing(0);
+    heights->addWidget(caption(tr("Reference Z:"), this), 0, 0);
+    heights->addWidget(m_reference, 0, 1, Qt::AlignRight);
+    heights->addWidget(caption(tr("Current Z:"), this), 1, 0);
+    heights->addWidget(m_current, 1, 1, Qt::AlignRight);
+    row->addLayout(heights);
     row->addSpacing(8);
     row->addWidget(m_unlock);
     auto *layout = new QVBoxLayout(this);

@@ -165,6 +165,9 @@ private Q_SLOTS:
             QCOMPARE(millimetres(1234.5), u"1234,500 mm"_s); // never grouped
             auto *spin = window.findChild<QDoubleSpinBox *>(u"toleranceSpin"_s);
             QVERIFY(spin->text().contains(u','));
+            // The longer German words still fit the smallest screen Toffee is laid out for.
+            QVERIFY2(window.minimumSizeHint().width() <= 1280,
+                qPrintable(QString::number(window.minimumSizeHint().width())));
             // What goes to the machine keeps G-code's point whatever the language.
             auto *preview = window.findChild<QLabel *>(u"offsetCommandPreview"_s);
             QVERIFY2(!preview->text().contains(u','), qPrintable(preview->text()));
