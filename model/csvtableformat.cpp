@@ -30,6 +30,7 @@ enum Column {
     Notes,
     TloSourceColumn,
     BreakTestColumn,
+    ReferenceMzColumn,
     UnitsColumn,
     LinuxCnc,
     ColumnCount
@@ -48,6 +49,7 @@ constexpr const char *kColumnNames[ColumnCount] = {
     "notes",
     "tlo_source",
     "break_test",
+    "reference_mz",
     "units",
     "linuxcnc",
 };
@@ -245,7 +247,7 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
             return Error {
                 tr("unknown column \"%1\" in the header; the columns are number, pocket, description, "
                    "length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, "
-                   "measured_at, notes, tlo_source, break_test, units and linuxcnc.")
+                   "measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.")
                     .arg(excerpt(header.fields.at(i))),
                 header.line
             };
@@ -347,6 +349,8 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
             tool.breakTestFailed = true;
         else if (!test.isEmpty() && test != "passed" && problem.isEmpty())
             problem = tr("break_test \"%1\" must be failed, passed or empty.").arg(excerpt(test));
+        if (!cell(ReferenceMzColumn).isEmpty())
+            tool.referenceMz = decimal(ReferenceMzColumn, 0.0);
         tool.linuxCncExtra = text(LinuxCnc);
         if (const QByteArrayView u = cell(UnitsColumn); !u.isEmpty()) {
             const auto rowUnits = u == "mm" ? Units::Millimetre
@@ -402,6 +406,9 @@ bool writeCsvTable(const ToolTable &table, const ByteSink &sink)
         out += ',';
         if (tool.breakTestFailed)
             out += "failed";
+        out += ',';
+        if (tool.referenceMz)
+            appendNumber(out, *tool.referenceMz);
         out += ',';
         out += units;
         out += ',';

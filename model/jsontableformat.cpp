@@ -18,9 +18,9 @@ namespace Toffee {
 
 namespace {
 
-// Version 2 added "tlo_source" and "break_test_failed". A table without either is still written as version 1,
-// so that an older Toffee keeps reading it; one with them is version 2, which an older Toffee refuses rather
-// than silently dropping a broken tool's mark.
+// Version 2 added "tlo_source", "break_test_failed" and "reference_mz". A table without them is still written
+// as version 1, so that an older Toffee keeps reading it; one with them is version 2, which an older Toffee
+// refuses rather than silently dropping a broken tool's mark.
 constexpr int kJsonVersion = 2;
 const auto kFormatId = "toffee-tool-table"_L1;
 
@@ -41,6 +41,7 @@ const auto MeasuredAt = "measured_at"_L1;
 const auto Notes = "notes"_L1;
 const auto TloSource = "tlo_source"_L1;
 const auto BreakTestFailed = "break_test_failed"_L1;
+const auto ReferenceMz = "reference_mz"_L1;
 const auto LinuxCnc = "linuxcnc"_L1;
 } // namespace Key
 
@@ -396,7 +397,7 @@ bool readTool(JsonScanner &json, Tool &tool)
     quint32 seen = 0;
     static const QLatin1StringView keys[] = { Key::Number, Key::Pocket, Key::Description, Key::LengthGeometry,
         Key::LengthWear, Key::RadiusGeometry, Key::RadiusWear, Key::MeasuredTlo, Key::MeasuredAt, Key::Notes,
-        Key::TloSource, Key::BreakTestFailed, Key::LinuxCnc };
+        Key::TloSource, Key::BreakTestFailed, Key::ReferenceMz, Key::LinuxCnc };
     if (!json.consume('}')) {
         do {
             QByteArrayView key;
@@ -454,6 +455,12 @@ bool readTool(JsonScanner &json, Tool &tool)
                     tool.tloSource = TloSource::Manual;
                 else if (ok && source != "probe"_L1)
                     ok = json.fail(tr("\"tlo_source\" must be \"probe\" or \"manual\"."));
+            } else if (k == Key::ReferenceMz) {
+                if (v.kind != Scalar::Null) {
+                    double mz = 0.0;
+                    ok = decimal(json, v, k, mz);
+                    tool.referenceMz = mz;
+                }
             } else if (k == Key::BreakTestFailed) {
                 if (v.kind != Scalar::Bool)
                     ok = json.fail(tr("\"break_test_failed\" must be true or false."));
@@ -630,7 +637,7 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
     ChunkedWriter w(sink);
     QByteArray &out = w.out;
     const bool marks = std::any_of(table.tools().cbegin(), table.tools().cend(),
-        [](const Tool &t) { return t.tloSource != TloSource::Probe || t.breakTestFailed; });
+        [](const Tool &t) { return t.tloSource != TloSource::Probe || t.breakTestFailed || t.referenceMz; });
     out += "{\n  \"format\": \"toffee-tool-table\",\n  \"version\": ";
     out += QByteArray::number(marks ? kJsonVersion : 1);
     out += ",\n  \"units\": \"";
@@ -661,6 +668,8 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
             out += ", \"tlo_source\": \"manual\"";
         if (tool.breakTestFailed)
             out += ", \"break_test_failed\": true";
+        if (tool.referenceMz)
+            appendField(out, Key::ReferenceMz, *tool.referenceMz);
         if (!tool.notes.isEmpty()) {
             out += ", \"notes\": ";
             appendString(out, tool.notes);

@@ -33,6 +33,9 @@ struct Tool
     // The last break test found this tool longer or shorter than its TLO: it stays marked (in the file too)
     // until it is probed again.
     bool breakTestFailed = false;
+    // The reference tool's MCS Z the TLO was measured (or set) against: a stored TLO is only right on a
+    // machine whose reference is still there. Unknown for tables from before Toffee kept it.
+    std::optional<double> referenceMz = std::nullopt;
 
     [[nodiscard]] double totalLength() const { return lengthGeometry + lengthWear; }
     [[nodiscard]] double totalRadius() const { return radiusGeometry + radiusWear; }

@@ -152,10 +152,11 @@ void ToolDocument::removeTools(const QList<int> &numbers)
         m_undoStack.push(new RemoveToolsCommand(&m_model, tools));
 }
 
-Result<void> ToolDocument::recordMeasurement(int number, double tlo, const QDateTime &at, TloSource source)
+Result<void> ToolDocument::recordMeasurement(
+    int number, double tlo, const QDateTime &at, TloSource source, std::optional<double> referenceMz)
 {
     ToolTable next = table();
-    if (auto r = next.recordMeasurement(number, tlo, at, source); !r)
+    if (auto r = next.recordMeasurement(number, tlo, at, source, referenceMz); !r)
         return r;
     pushChange(*next.find(number),
         source == TloSource::Manual ? tr("Set T%1 TLO by hand").arg(number) : tr("Measure T%1").arg(number));

@@ -49,8 +49,8 @@ public:
     void removeTools(const QList<int> &numbers);
     // A TLO from the machine (probed, or set there by hand), as one undoable step; the tool is added when the
     // table has none.
-    Result<void> recordMeasurement(
-        int number, double tlo, const QDateTime &at, TloSource source = TloSource::Probe);
+    Result<void> recordMeasurement(int number, double tlo, const QDateTime &at,
+        TloSource source = TloSource::Probe, std::optional<double> referenceMz = std::nullopt);
     // A break test's verdict on tool `number`, as one undoable step (a failed tool stays marked).
     Result<void> recordBreakTest(int number, bool failed);
     // A new tool with the next free number and its default pocket.

@@ -133,23 +133,31 @@ Result<void> ToolTable::replace(int number, const Tool &tool)
     return {};
 }
 
-Result<void> ToolTable::recordMeasurement(int number, double tlo, const QDateTime &at, TloSource source)
+Tool ToolTable::toolOrNew(int number) const
+{
+    if (const Tool *existing = find(number))
+        return *existing;
+    Tool tool;
+    tool.number = number;
+    tool.pocket = defaultPocket(number);
+    return tool;
+}
+
+Result<void> ToolTable::recordMeasurement(
+    int number, double tlo, const QDateTime &at, TloSource source, std::optional<double> referenceMz)
 {
     // A measured value is stored at the machine's resolution (0.001 mm, 0.0001 in), never with the noise of
     // the arithmetic that produced it.
     const double steps = m_units == Units::Inch ? 10000.0 : 1000.0;
     if (std::isfinite(tlo))
         tlo = std::round(tlo * steps) / steps;
-    Tool tool;
-    if (const Tool *existing = find(number)) {
-        tool = *existing;
-    } else {
-        tool.number = number;
-        tool.pocket = defaultPocket(number);
-    }
+    if (referenceMz && std::isfinite(*referenceMz))
+        referenceMz = std::round(*referenceMz * steps) / steps;
+    Tool tool = toolOrNew(number);
     tool.measuredTlo = tlo;
     tool.measuredAt = at.toUTC();
     tool.tloSource = source;
+    tool.referenceMz = referenceMz;
     if (source == TloSource::Probe)
         tool.breakTestFailed = false;
     return contains(number) ? replace(number, tool) : insert(tool);
@@ -157,13 +165,7 @@ Result<void> ToolTable::recordMeasurement(int number, double tlo, const QDateTim
 
 Result<void> ToolTable::recordBreakTest(int number, bool failed)
 {
-    Tool tool;
-    if (const Tool *existing = find(number)) {
-        tool = *existing;
-    } else {
-        tool.number = number;
-        tool.pocket = defaultPocket(number);
-    }
+    Tool tool = toolOrNew(number);
     tool.breakTestFailed = failed;
     return contains(number) ? replace(number, tool) : insert(tool);
 }

@@ -63,14 +63,17 @@ public:
     bool remove(int number);
     // Stores a TLO from the machine into tool `number`, adding the tool when the table has none. A probe
     // clears a failed break test's mark; an offset set by hand does not (the tool was not measured).
-    Result<void> recordMeasurement(
-        int number, double tlo, const QDateTime &at, TloSource source = TloSource::Probe);
+    Result<void> recordMeasurement(int number, double tlo, const QDateTime &at,
+        TloSource source = TloSource::Probe, std::optional<double> referenceMz = std::nullopt);
     // Marks tool `number` as failed (or passed) by a break test, adding the tool when the table has none.
     Result<void> recordBreakTest(int number, bool failed);
 
     friend bool operator==(const ToolTable &, const ToolTable &) = default;
 
 private:
+    // Tool `number` as the table has it, or a new one with its default pocket.
+    [[nodiscard]] Tool toolOrNew(int number) const;
+
     Units m_units = Units::Millimetre;
     QList<Tool> m_tools;
 };

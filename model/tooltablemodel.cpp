@@ -47,10 +47,9 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
     }
     // A tool that failed its break test stands out on every column until it is probed again; a TLO never
     // measured reads as such, greyed, and not as an empty cell that could pass for zero.
+    // A translucent red reads on the light and the dark palette alike, under the palette's own text colour.
     if (role == Qt::BackgroundRole && tool.breakTestFailed)
-        return QColor(0xf6, 0xc8, 0xcc);
-    if (role == Qt::ForegroundRole && tool.breakTestFailed)
-        return QColor(0x80, 0x10, 0x18);
+        return QColor(0xe0, 0x1b, 0x24, 0x60);
     if (role == Qt::ForegroundRole && index.column() == MeasuredTloColumn && !tool.measuredTlo)
         return QColor(0x80, 0x80, 0x80);
     if (role == Qt::ToolTipRole && index.column() == MeasuredTloColumn)

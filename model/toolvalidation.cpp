@@ -131,7 +131,8 @@ bool isPlainlyValid(const Tool &tool, Units units)
         || !withinLimit(tool.lengthGeometry, geometry) || !withinLimit(tool.lengthWear, wear)
         || !withinLimit(tool.radiusGeometry, geometry) || !withinLimit(tool.radiusWear, wear)
         || (tool.measuredTlo && !withinLimit(*tool.measuredTlo, geometry))
-        || (!tool.measuredTlo && tool.tloSource != TloSource::Probe))
+        || (!tool.measuredTlo && tool.tloSource != TloSource::Probe)
+        || (tool.referenceMz && !withinLimit(*tool.referenceMz, geometry)))
         return false;
     for (QChar c : tool.description) {
         if (c.unicode() < 0x20 || (c.unicode() >= 0x7f && c.category() == QChar::Other_Control))
@@ -188,6 +189,10 @@ Result<void> validateTool(const Tool &tool, Units units)
             return withPrefix(r);
     } else if (tool.tloSource != TloSource::Probe) {
         return Error { prefix + tr("a TLO set by hand needs its value; the measured TLO is empty.") };
+    }
+    if (tool.referenceMz) {
+        if (auto r = validateLength(tr("reference MCS Z"), *tool.referenceMz, geometry, units); !r)
+            return withPrefix(r);
     }
     if (auto r = validateLinuxCncExtra(tool.linuxCncExtra); !r)
         return withPrefix(r);

@@ -70,12 +70,18 @@ bool is(const Word &w, char letter, double value)
 
 ConsoleCheck refuse(const QString &reason)
 {
-    return { ConsoleCheck::Verdict::Refuse, reason };
+    ConsoleCheck c;
+    c.verdict = ConsoleCheck::Verdict::Refuse;
+    c.reason = reason;
+    return c;
 }
 
 ConsoleCheck confirm(const QString &reason)
 {
-    return { ConsoleCheck::Verdict::Confirm, reason };
+    ConsoleCheck c;
+    c.verdict = ConsoleCheck::Verdict::Confirm;
+    c.reason = reason;
+    return c;
 }
 
 } // namespace
@@ -97,7 +103,9 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
         return {};
     }
     if (trimmed == u"?")
-        return {};
+        return refuse(
+            tr("Toffee asks the machine for its status four times a second: the strip at the top shows "
+               "it."));
     const auto parsed = words(trimmed);
     if (!parsed)
         return refuse(
@@ -157,29 +165,37 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
         c.setsTlo = true;
         return c;
     }
+    // M493.2 and M6 need a tool word that is a tool number; either halts the machine without one.
+    auto toolProblem = [](const Word *t, const QString &missing) -> QString {
+        if (!t)
+            return missing;
+        if (t->value != std::floor(t->value) || t->value < -1 || t->value > 999999
+            || !MachineSession::validateToolNumber(int(t->value)))
+            return tr("%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(t->text);
+        return {};
+    };
     if (has('M', 493.2)) {
         const Word *t = find('T');
-        if (!t)
-            return refuse(tr("M493.2 needs a tool (M493.2 T2): without one the machine halts."));
-        if (auto r = MachineSession::validateToolNumber(int(t->value));
-            !r || t->value != std::floor(t->value))
-            return refuse(
-                tr("%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(t->text));
-        return confirm(tr("M493.2 makes T%1 the active tool but keeps the current TLO, which belongs to the "
-                          "tool measured before. Probe T%1 or restore its TLO before cutting.")
-                           .arg(int(t->value)));
+        if (const QString problem
+            = toolProblem(t, tr("M493.2 needs a tool (M493.2 T2): without one the machine halts."));
+            !problem.isEmpty())
+            return refuse(problem);
+        ConsoleCheck c
+            = confirm(tr("M493.2 makes T%1 the active tool but keeps the current TLO, which belongs "
+                         "to the tool measured before. Probe T%1 or restore its TLO before cutting.")
+                          .arg(int(t->value)));
+        c.tool = int(t->value);
+        return c;
     }
     if (has('M', 6)) {
         const Word *t = find('T');
-        if (!t)
-            return refuse(tr("M6 needs a tool (M6 T2)."));
-        if (auto r = MachineSession::validateToolNumber(int(t->value));
-            !r || t->value != std::floor(t->value))
-            return refuse(
-                tr("%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(t->text));
-        return confirm(
+        if (const QString problem = toolProblem(t, tr("M6 needs a tool (M6 T2).")); !problem.isEmpty())
+            return refuse(problem);
+        ConsoleCheck c = confirm(
             tr("M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.")
                 .arg(int(t->value)));
+        c.tool = int(t->value);
+        return c;
     }
     if (has('M', 491) || has('M', 491.2))
         return confirm(

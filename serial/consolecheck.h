@@ -4,6 +4,8 @@
 #include <QCoreApplication>
 #include <QString>
 
+#include <optional>
+
 namespace Toffee {
 
 // What the console does with a line an operator typed, before it reaches the machine: the same checks the
@@ -20,6 +22,8 @@ public:
 
     // Whether the line is M493.3, which sets the TLO: the console records what the machine then holds.
     bool setsTlo = false;
+    // The tool an M6 or M493.2 names.
+    std::optional<int> tool;
 
     [[nodiscard]] static ConsoleCheck check(const QString &line, bool halted);
 };

@@ -131,6 +131,13 @@ bool MachineConnection::canOperate() const
     return m_state == State::Connected && !isBusy() && !m_halted;
 }
 
+void MachineConnection::refreshOffsets()
+{
+    if (m_state != State::Connected || m_halted || !beginOperation(tr("Reading the offsets…")))
+        return;
+    m_session->report([this](const SessionResult &r) { endOperation(r); });
+}
+
 bool MachineConnection::beginOperation(const QString &what)
 {
     if (isBusy() || m_state != State::Connected)

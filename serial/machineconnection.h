@@ -50,6 +50,8 @@ public:
 
     // One operation at a time, whichever panel starts it: begin returns false while another runs.
     bool beginOperation(const QString &what);
+    // Reads the offsets again (M493.4) when nothing else runs, so that every panel shows them as they are.
+    void refreshOffsets();
     void endOperation(const SessionResult &result);
     [[nodiscard]] bool isBusy() const { return !m_operation.isEmpty(); }
     // Halted (Alarm): the controller refuses every motion and offset command until Unlock.

@@ -444,10 +444,6 @@
         <translation>"break_test_failed" muss true oder false sein.</translation>
     </message>
     <message>
-        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, units and linuxcnc.</source>
-        <translation>Unbekannte Spalte "%1" in der Kopfzeile; die Spalten sind number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, units und linuxcnc.</translation>
-    </message>
-    <message>
         <source>tlo_source "%1" must be probe, manual or empty.</source>
         <translation>tlo_source "%1" muss probe, manual oder leer sein.</translation>
     </message>
@@ -523,6 +519,14 @@
         <source>The machine halted (reason %1).</source>
         <translation>Die Maschine hat angehalten (Grund %1).</translation>
     </message>
+    <message>
+        <source>reference MCS Z</source>
+        <translation>Referenz-MCS-Z</translation>
+    </message>
+    <message>
+        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
+        <translation>unbekannte Spalte „%1“ in der Kopfzeile; die Spalten sind number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units und linuxcnc.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -585,10 +589,6 @@
         <translation>WERKZEUGBRUCH</translation>
     </message>
     <message>
-        <source>Tool OK: within %1 mm.</source>
-        <translation>Werkzeug in Ordnung: innerhalb %1 mm.</translation>
-    </message>
-    <message>
         <source>The break test did not run</source>
         <translation>Der Bruchtest ist nicht gelaufen</translation>
     </message>
@@ -647,6 +647,22 @@
     <message>
         <source>%1 may be broken. The machine has halted, and the table marks %1 until it is probed again.</source>
         <translation>%1 ist möglicherweise gebrochen. Die Maschine hat angehalten, und die Tabelle markiert %1, bis es erneut vermessen wird.</translation>
+    </message>
+    <message>
+        <source>T%1: BROKEN TOOL</source>
+        <translation>T%1: WERKZEUG GEBROCHEN</translation>
+    </message>
+    <message>
+        <source>T%1 OK: within %2.</source>
+        <translation>T%1 in Ordnung: innerhalb %2.</translation>
+    </message>
+    <message>
+        <source>Tool OK: within %1.</source>
+        <translation>Werkzeug in Ordnung: innerhalb %1.</translation>
+    </message>
+    <message>
+        <source>The TLO it was compared against was set by hand, not measured: if that value was not the tool&apos;s real length, the tool may be whole. Look at the tool before you replace it, then probe it.</source>
+        <translation>Die TLO, mit der verglichen wurde, war von Hand gesetzt, nicht gemessen: Entsprach dieser Wert nicht der wirklichen Länge des Werkzeugs, ist das Werkzeug womöglich heil. Sehen Sie sich das Werkzeug an, bevor Sie es ersetzen, und vermessen Sie es dann.</translation>
     </message>
 </context>
 <context>
@@ -762,6 +778,10 @@
         <source>%1 moves the machine.</source>
         <translation>%1 bewegt die Maschine.</translation>
     </message>
+    <message>
+        <source>Toffee asks the machine for its status four times a second: the strip at the top shows it.</source>
+        <translation>Toffee fragt den Zustand der Maschine viermal pro Sekunde ab: Die Leiste oben zeigt ihn.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleDock</name>
@@ -824,6 +844,14 @@
     <message>
         <source>the TLO is set on the machine but not recorded: %1</source>
         <translation>die TLO ist an der Maschine gesetzt, aber nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>The TLO is %1 now.</source>
+        <translation>Die TLO ist jetzt %1.</translation>
+    </message>
+    <message>
+        <source>T%1 is not in the tool table.</source>
+        <translation>T%1 steht nicht in der Werkzeugtabelle.</translation>
     </message>
 </context>
 <context>
@@ -1129,6 +1157,10 @@
     <message>
         <source>Disconnected.</source>
         <translation>Getrennt.</translation>
+    </message>
+    <message>
+        <source>Reading the offsets…</source>
+        <translation>Korrekturen werden gelesen …</translation>
     </message>
 </context>
 <context>
@@ -1613,8 +1645,12 @@ Zuerst speichern?</translation>
         <translation>angehalten</translation>
     </message>
     <message>
-        <source>After saving, the table on screen shows what the file holds; Undo brings the rest back. Save anyway?</source>
-        <translation>Nach dem Speichern zeigt die Tabelle auf dem Bildschirm, was die Datei enthält; Rückgängig holt den Rest zurück. Trotzdem speichern?</translation>
+        <source>After saving, the table on screen shows what the file holds; until the window is closed, Undo brings the rest back. To keep everything, Cancel and use Save As with a .json file.
+
+Save anyway?</source>
+        <translation>Nach dem Speichern zeigt die Tabelle auf dem Bildschirm, was die Datei enthält; bis das Fenster geschlossen wird, holt Rückgängig den Rest zurück. Um alles zu behalten, brechen Sie ab und verwenden Sie „Speichern unter“ mit einer .json-Datei.
+
+Trotzdem speichern?</translation>
     </message>
 </context>
 <context>
@@ -1801,18 +1837,6 @@ Der nächste Schnitt verwendet die neue Korrektur. Die Tabelle speichert sie als
         <translation>Wiederherstellen fehlgeschlagen</translation>
     </message>
     <message>
-        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
-
-The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.
-
-Probe now?</source>
-        <translation>Die Maschine fährt: nach oben auf Sicherheitshöhe, über den Werkzeugtaster, dann nach unten, bis %1 ihn berührt. Halten Sie die Hände fern.
-
-Laut Maschine ist %1 in der Spindel: Die Messung wird als TLO von %1 gespeichert.
-
-Jetzt vermessen?</translation>
-    </message>
-    <message>
         <source>T%1 measured: TLO %2, recorded in the table.</source>
         <translation>T%1 gemessen: TLO %2, in der Tabelle gespeichert.</translation>
     </message>
@@ -1855,6 +1879,38 @@ Jetzt vermessen?</translation>
     <message>
         <source>T%1 is active with TLO %2.</source>
         <translation>T%1 ist aktiv mit TLO %2.</translation>
+    </message>
+    <message>
+        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
+
+The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.%2
+
+Probe now?</source>
+        <translation>Die Maschine fährt: nach oben auf Sicherheitshöhe, über den Werkzeugtaster, dann nach unten, bis %1 ihn berührt. Hände weg!
+
+Laut Maschine ist %1 in der Spindel: Die Messung wird als TLO von %1 gespeichert.%2
+
+Jetzt vermessen?</translation>
+    </message>
+    <message>
+        <source>No tool has been measured since the machine started: %1 becomes the reference tool, and every other TLO is measured against it.</source>
+        <translation>Seit dem Start der Maschine wurde kein Werkzeug vermessen: %1 wird das Referenzwerkzeug, und jede andere TLO wird gegen es gemessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO does not fit this machine&apos;s reference</source>
+        <translation>Die TLO von T%1 passt nicht zur Referenz dieser Maschine</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was measured against a reference tool at MCS Z %3, but the machine&apos;s reference is now at MCS Z %4 (another tool was probed first since the machine started, or the tool setter moved). Restored, it would be off by %5.
+
+Probe T%1 instead.</source>
+        <translation>Die TLO %2 von T%1 wurde gegen ein Referenzwerkzeug bei MCS Z %3 gemessen, die Referenz der Maschine liegt jetzt aber bei MCS Z %4 (seit dem Start wurde zuerst ein anderes Werkzeug vermessen, oder der Werkzeugtaster wurde versetzt). Wiederhergestellt läge sie um %5 daneben.
+
+Vermessen Sie T%1 stattdessen.</translation>
+    </message>
+    <message>
+        <source>The table does not say which reference tool T%1&apos;s TLO was measured against: make sure it is the reference the machine has now.</source>
+        <translation>Die Tabelle sagt nicht, gegen welches Referenzwerkzeug die TLO von T%1 gemessen wurde: Stellen Sie sicher, dass es die Referenz ist, die die Maschine jetzt hat.</translation>
     </message>
 </context>
 <context>
@@ -2089,6 +2145,42 @@ Jetzt vermessen?</translation>
     <message>
         <source>The machine is still halted: check it, then try Unlock again.</source>
         <translation>Die Maschine ist noch angehalten: Prüfen Sie sie und versuchen Sie dann erneut Entsperren.</translation>
+    </message>
+    <message>
+        <source>Idle</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <source>Held</source>
+        <translation>Angehalten (Hold)</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Referenzfahrt</translation>
+    </message>
+    <message>
+        <source>Asleep</source>
+        <translation>Ruhezustand</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pausiert</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>Wartet</translation>
+    </message>
+    <message>
+        <source>Changing tool</source>
+        <translation>Werkzeugwechsel</translation>
     </message>
 </context>
 <context>

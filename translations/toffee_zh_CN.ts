@@ -444,10 +444,6 @@
         <translation>"break_test_failed" 必须是 true 或 false。</translation>
     </message>
     <message>
-        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, units and linuxcnc.</source>
-        <translation>表头中有未知列 "%1"；可用的列为 number、pocket、description、length_geometry、length_wear、radius_geometry、radius_wear、measured_tlo、measured_at、notes、tlo_source、break_test、units 和 linuxcnc。</translation>
-    </message>
-    <message>
         <source>tlo_source "%1" must be probe, manual or empty.</source>
         <translation>tlo_source "%1" 必须是 probe、manual 或留空。</translation>
     </message>
@@ -523,6 +519,14 @@
         <source>The machine halted (reason %1).</source>
         <translation>机床已停机（原因 %1）。</translation>
     </message>
+    <message>
+        <source>reference MCS Z</source>
+        <translation>基准 MCS Z</translation>
+    </message>
+    <message>
+        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
+        <translation>表头中有未知列“%1”；可用的列为 number、pocket、description、length_geometry、length_wear、radius_geometry、radius_wear、measured_tlo、measured_at、notes、tlo_source、break_test、reference_mz、units 和 linuxcnc。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -585,10 +589,6 @@
         <translation>刀具已断</translation>
     </message>
     <message>
-        <source>Tool OK: within %1 mm.</source>
-        <translation>刀具正常：在 %1 mm 以内。</translation>
-    </message>
-    <message>
         <source>The break test did not run</source>
         <translation>断刀检测未能运行</translation>
     </message>
@@ -647,6 +647,22 @@
     <message>
         <source>%1 may be broken. The machine has halted, and the table marks %1 until it is probed again.</source>
         <translation>%1 可能已断。机床已停机，刀具表会一直标记 %1，直到重新对刀。</translation>
+    </message>
+    <message>
+        <source>T%1: BROKEN TOOL</source>
+        <translation>T%1：断刀</translation>
+    </message>
+    <message>
+        <source>T%1 OK: within %2.</source>
+        <translation>T%1 正常：在 %2 以内。</translation>
+    </message>
+    <message>
+        <source>Tool OK: within %1.</source>
+        <translation>刀具正常：在 %1 以内。</translation>
+    </message>
+    <message>
+        <source>The TLO it was compared against was set by hand, not measured: if that value was not the tool&apos;s real length, the tool may be whole. Look at the tool before you replace it, then probe it.</source>
+        <translation>用于比较的 TLO 是手动设置的，而非测量所得：如果该值不是刀具的真实长度，刀具可能完好。更换前请先检查刀具，然后对刀。</translation>
     </message>
 </context>
 <context>
@@ -762,6 +778,10 @@
         <source>%1 moves the machine.</source>
         <translation>%1 会移动机床。</translation>
     </message>
+    <message>
+        <source>Toffee asks the machine for its status four times a second: the strip at the top shows it.</source>
+        <translation>Toffee 每秒向机床查询四次状态：顶部的状态栏会显示它。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleDock</name>
@@ -824,6 +844,14 @@
     <message>
         <source>the TLO is set on the machine but not recorded: %1</source>
         <translation>TLO 已在机床上设置，但未记录：%1</translation>
+    </message>
+    <message>
+        <source>The TLO is %1 now.</source>
+        <translation>当前 TLO 为 %1。</translation>
+    </message>
+    <message>
+        <source>T%1 is not in the tool table.</source>
+        <translation>T%1 不在刀具表中。</translation>
     </message>
 </context>
 <context>
@@ -1129,6 +1157,10 @@
     <message>
         <source>Disconnected.</source>
         <translation>已断开。</translation>
+    </message>
+    <message>
+        <source>Reading the offsets…</source>
+        <translation>正在读取补偿…</translation>
     </message>
 </context>
 <context>
@@ -1613,8 +1645,12 @@ Save them first?</source>
         <translation>已停机</translation>
     </message>
     <message>
-        <source>After saving, the table on screen shows what the file holds; Undo brings the rest back. Save anyway?</source>
-        <translation>保存后，屏幕上的表格将只显示文件中保存的内容；“撤销”可恢复其余内容。仍要保存吗？</translation>
+        <source>After saving, the table on screen shows what the file holds; until the window is closed, Undo brings the rest back. To keep everything, Cancel and use Save As with a .json file.
+
+Save anyway?</source>
+        <translation>保存后，屏幕上的表格显示文件中保存的内容；在关闭窗口之前，撤销可以恢复其余内容。若要保留全部内容，请取消并使用“另存为”保存为 .json 文件。
+
+仍然保存？</translation>
     </message>
 </context>
 <context>
@@ -1801,18 +1837,6 @@ TLO %3
         <translation>恢复失败</translation>
     </message>
     <message>
-        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
-
-The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.
-
-Probe now?</source>
-        <translation>机床将移动：先升到安全高度，移到对刀仪上方，然后下降直到 %1 接触对刀仪。手请远离机床。
-
-机床报告 %1 在主轴上：测量结果将记录为 %1 的 TLO。
-
-现在对刀吗？</translation>
-    </message>
-    <message>
         <source>T%1 measured: TLO %2, recorded in the table.</source>
         <translation>T%1 已测量：TLO %2，已记录到刀具表。</translation>
     </message>
@@ -1855,6 +1879,38 @@ Probe now?</source>
     <message>
         <source>T%1 is active with TLO %2.</source>
         <translation>T%1 已激活，TLO 为 %2。</translation>
+    </message>
+    <message>
+        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
+
+The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.%2
+
+Probe now?</source>
+        <translation>机床将移动：先升到安全高度，移到对刀仪上方，然后下降直到 %1 接触对刀仪。请远离机床。
+
+机床报告主轴中是 %1：测量结果将记录为 %1 的 TLO。%2
+
+现在对刀？</translation>
+    </message>
+    <message>
+        <source>No tool has been measured since the machine started: %1 becomes the reference tool, and every other TLO is measured against it.</source>
+        <translation>机床启动后尚未测量任何刀具：%1 将成为基准刀具，其他所有 TLO 都相对于它测量。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO does not fit this machine&apos;s reference</source>
+        <translation>T%1 的 TLO 与本机床的基准不符</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was measured against a reference tool at MCS Z %3, but the machine&apos;s reference is now at MCS Z %4 (another tool was probed first since the machine started, or the tool setter moved). Restored, it would be off by %5.
+
+Probe T%1 instead.</source>
+        <translation>T%1 的 TLO %2 是相对于 MCS Z %3 处的基准刀具测得的，但机床的基准现在位于 MCS Z %4（机床启动后先对了另一把刀，或对刀仪被移动过）。若恢复，将偏差 %5。
+
+请改为对 T%1 对刀。</translation>
+    </message>
+    <message>
+        <source>The table does not say which reference tool T%1&apos;s TLO was measured against: make sure it is the reference the machine has now.</source>
+        <translation>刀具表未记录 T%1 的 TLO 是相对于哪把基准刀具测得的：请确认它就是机床当前的基准。</translation>
     </message>
 </context>
 <context>
@@ -2089,6 +2145,42 @@ Probe now?</source>
     <message>
         <source>The machine is still halted: check it, then try Unlock again.</source>
         <translation>机床仍处于停机状态：请检查机床，然后再次尝试解锁。</translation>
+    </message>
+    <message>
+        <source>Idle</source>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>Held</source>
+        <translation>暂停保持</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>报警</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>回零中</translation>
+    </message>
+    <message>
+        <source>Asleep</source>
+        <translation>休眠</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>已暂停</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>等待中</translation>
+    </message>
+    <message>
+        <source>Changing tool</source>
+        <translation>正在换刀</translation>
     </message>
 </context>
 <context>

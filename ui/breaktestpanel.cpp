@@ -35,7 +35,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, ToolDocument *docu
     m_tolerance->setAccessibleName(tr("Break-test tolerance in millimetres"));
     // Below the machine's minimum the field still takes what is typed, so that Run can refuse it with the
     // reason; a field that quietly turned 0.01 into 0.02 tested against a tolerance nobody chose.
-    m_tolerance->setRange(0.001, 5.0);
+    m_tolerance->setRange(0.001, 99.999); // beyond 5 mm Run refuses it with the reason too
     m_tolerance->setDecimals(3);
     m_tolerance->setSingleStep(0.01);
     m_tolerance->setSuffix(u" mm"_s);
@@ -77,7 +77,20 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, ToolDocument *docu
     connect(m_connection, &MachineConnection::stateChanged, this, &BreakTestPanel::updateState);
     connect(m_connection, &MachineConnection::busyChanged, this, &BreakTestPanel::updateState);
     connect(m_connection, &MachineConnection::haltedChanged, this, &BreakTestPanel::updateState);
-    updateState();
+    // A verdict is about one tool: it goes when another is in the spindle or the tool is measured again.
+    connect(m_connection, &MachineConnection::statusChanged, this, [this](const MachineStatus &status) {
+        if (status.tool && m_testedTool >= 0 && *status.tool != m_testedTool)
+            clearResult();
+    });
+    connect(m_connection, &MachineConnection::stateChanged, this, &BreakTestPanel::clearResult);
+}
+
+void BreakTestPanel::clearResult()
+{
+    for (QLabel *label : { m_old, m_new, m_difference })
+        label->setText(u"—"_s);
+    m_verdict->clear();
+    m_verdict->setStyleSheet({});
 }
 
 double BreakTestPanel::tolerance() const
@@ -150,6 +163,10 @@ void BreakTestPanel::run(bool confirm)
     if (!m_connection->beginOperation(tr("Break-testing %1…").arg(name)))
         return;
     m_verdict->clear();
+    // Whether the TLO compared against was set by hand, as it was before the verdict is recorded.
+    const Tool *stored = tool ? m_document->table().find(*tool) : nullptr;
+    m_comparedWithHandSet = stored && stored->measuredTlo && stored->tloSource == TloSource::Manual;
+    m_testedTool = tool.value_or(-1);
     m_connection->session()->breakTest(tolerance, [this](const SessionResult &r) {
         m_connection->endOperation(r);
         // A broken tool is marked in the table (and its file, once saved) until it is probed again.
@@ -169,14 +186,16 @@ void BreakTestPanel::showResult(const SessionResult &r)
         m_difference->setText(millimetres(std::fabs(r.breakTest->newTlo - r.breakTest->oldTlo)));
     }
     if (r.outcome == SessionResult::Outcome::ToolBroken) {
-        m_verdict->setText(tr("BROKEN TOOL"));
+        m_verdict->setText(r.tool && *r.tool >= 0 ? tr("T%1: BROKEN TOOL").arg(*r.tool) : tr("BROKEN TOOL"));
         m_verdict->setStyleSheet(u"color: white; background: #c01c28; font-weight: bold; padding: 4px;"_s);
         raiseBrokenAlarm(r);
         return;
     }
     m_verdict->setStyleSheet({});
     if (r.ok()) {
-        m_verdict->setText(tr("Tool OK: within %1 mm.").arg(r.tolerance));
+        m_verdict->setText(r.tool && *r.tool >= 0
+                ? tr("T%1 OK: within %2.").arg(*r.tool).arg(millimetres(r.tolerance))
+                : tr("Tool OK: within %1.").arg(millimetres(r.tolerance)));
         return;
     }
     m_verdict->setText(r.message);
@@ -191,7 +210,14 @@ void BreakTestPanel::raiseBrokenAlarm(const SessionResult &r)
             .arg(name),
         QMessageBox::NoButton, this);
     box.setObjectName(u"brokenToolAlarm"_s);
-    box.setInformativeText(r.message);
+    // A TLO set by hand that was not the tool's length looks exactly like a broken tool: say which it may be.
+    box.setInformativeText(m_comparedWithHandSet ? r.message + u"\n\n"_s
+                + tr(
+                    "The TLO it was compared against was set by hand, not measured: if that value was not "
+                    "the "
+                    "tool's real length, the tool may be whole. Look at the tool before you replace it, then "
+                    "probe it.")
+                                                 : r.message);
     QPushButton *unlock = box.addButton(tr("Unlock"), QMessageBox::AcceptRole);
     unlock->setObjectName(u"alarmUnlockButton"_s);
     QPushButton *leave = box.addButton(tr("Leave Halted"), QMessageBox::RejectRole);

@@ -28,6 +28,8 @@ public:
 
     [[nodiscard]] double tolerance() const;
     void run(bool confirm = true);
+    // Forgets the last verdict (another tool, or the tool measured again).
+    void clearResult();
 
 Q_SIGNALS:
     void finished(const Toffee::SessionResult &result);
@@ -45,6 +47,8 @@ private:
     QLabel *m_new;
     QLabel *m_difference;
     QLabel *m_verdict;
+    int m_testedTool = -1;
+    bool m_comparedWithHandSet = false;
 };
 
 } // namespace Toffee

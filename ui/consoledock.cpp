@@ -57,6 +57,22 @@ ConsoleDock::ConsoleDock(MachineConnection *connection, ToolDocument *document, 
     });
 }
 
+void ConsoleDock::note(const QString &text)
+{
+    // Toffee's own words, set apart from what the machine said ("<") and what was sent (">").
+    auto *item
+        = new QListWidgetItem(QTime::currentTime().toString(u"HH:mm:ss.zzz"_s) + u"  · "_s + text, m_log);
+    QFont italic = item->font();
+    italic.setItalic(true);
+    item->setFont(italic);
+    item->setForeground(palette().color(QPalette::PlaceholderText));
+    item->setHidden(
+        !m_filter->text().isEmpty() && !item->text().contains(m_filter->text(), Qt::CaseInsensitive));
+    while (m_log->count() > kMaxLines)
+        delete m_log->takeItem(0);
+    m_log->scrollToBottom();
+}
+
 void ConsoleDock::append(const QByteArray &line, bool outgoing)
 {
     // A line is at most 4 KB, but a few thousand of those would still make a heavy list: show their start.
@@ -99,28 +115,33 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
     m_history.append(command);
     m_historyIndex = m_history.size();
     if (!m_connection->link() || m_connection->state() != MachineConnection::State::Connected) {
-        append(tr("not connected; connect first").toUtf8(), false);
+        note(tr("not connected; connect first"));
         return;
     }
     // The console is no back door: it refuses what the panels refuse, and asks before anything that moves.
     const ConsoleCheck check = ConsoleCheck::check(command, m_connection->isHalted());
     if (check.verdict == ConsoleCheck::Verdict::Refuse) {
-        append(tr("not sent: %1").arg(check.reason).toUtf8(), false);
+        note(tr("not sent: %1").arg(check.reason));
         return;
     }
     if (check.verdict == ConsoleCheck::Verdict::Confirm && confirm) {
+        QString details = check.reason;
+        if (check.setsTlo && m_connection->lastOffsets())
+            details += u' ' + tr("The TLO is %1 now.").arg(millimetres(m_connection->lastOffsets()->tlo()));
+        if (check.tool && !m_document->table().contains(*check.tool))
+            details += u' ' + tr("T%1 is not in the tool table.").arg(*check.tool);
         QMessageBox box(QMessageBox::Question, tr("Send %1?").arg(command),
-            check.reason + u"\n\n"_s + tr("Keep hands clear. Send it?"),
-            QMessageBox::Yes | QMessageBox::Cancel, this);
+            details + u"\n\n"_s + tr("Keep hands clear. Send it?"), QMessageBox::Yes | QMessageBox::Cancel,
+            this);
         box.setObjectName(u"consoleConfirmation"_s);
         box.setDefaultButton(QMessageBox::Cancel);
         if (box.exec() != QMessageBox::Yes) {
-            append(tr("not sent: cancelled").toUtf8(), false);
+            note(tr("not sent: cancelled"));
             return;
         }
     }
     if (!m_connection->beginOperation(command)) {
-        append(tr("the machine is busy with %1; wait for it").arg(m_connection->operation()).toUtf8(), false);
+        note(tr("the machine is busy with %1; wait for it").arg(m_connection->operation()));
         return;
     }
     const bool setsTlo = check.setsTlo;
@@ -137,21 +158,24 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
             }
             m_connection->endOperation(result);
             if (!reply.ok()) {
-                append(reply.message.toUtf8(), false);
+                note(reply.message);
+                m_connection->refreshOffsets();
                 return;
             }
             // An offset set here is recorded like one set in the panel: by hand, for the tool in the spindle.
             if (setsTlo && result.tlo && tool && *tool >= 0) {
-                auto recorded = m_document->recordMeasurement(
-                    *tool, result.tlo->tlo(), QDateTime::currentDateTimeUtc(), TloSource::Manual);
-                append((recorded ? tr("recorded in the table: T%1 TLO %2, set by hand")
-                                       .arg(*tool)
-                                       .arg(QString::number(result.tlo->tlo(), 'f', 3))
-                                 : tr("the TLO is set on the machine but not recorded: %1")
-                                       .arg(recorded.error().message))
-                           .toUtf8(),
-                    false);
+                auto recorded = m_document->recordMeasurement(*tool, result.tlo->tlo(),
+                    QDateTime::currentDateTimeUtc(), TloSource::Manual, result.tlo->referenceMz);
+                note(recorded ? tr("recorded in the table: T%1 TLO %2, set by hand")
+                                    .arg(*tool)
+                                    .arg(millimetres(result.tlo->tlo()))
+                              : tr("the TLO is set on the machine but not recorded: %1")
+                                    .arg(recorded.error().message));
             }
+            // A typed command may have changed the tool or its offsets: the strip shows the machine as it is
+            // now.
+            if (!setsTlo)
+                m_connection->refreshOffsets();
         });
 }
 

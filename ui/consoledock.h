@@ -32,6 +32,7 @@ protected:
 
 private:
     void append(const QByteArray &line, bool outgoing);
+    void note(const QString &text);
     void applyFilter();
 
     static constexpr int kMaxLines = 5000;

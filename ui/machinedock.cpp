@@ -8,6 +8,7 @@
 
 #include "breaktestpanel.h"
 #include "connectionpanel.h"
+#include "machinesession.h"
 #include "offseteditor.h"
 #include "probepanel.h"
 #include "tlopanel.h"
@@ -44,6 +45,11 @@ MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, 
     layout->addWidget(group(tr("Set the offset by hand"), m_offsets));
     layout->addWidget(group(tr("Tool break test"), m_breakTest));
     layout->addStretch(1);
+    // A probe measures the tool again: the last break test's verdict no longer holds.
+    connect(m_probe, &ProbePanel::finished, m_breakTest, [this](const SessionResult &r) {
+        if (r.ok())
+            m_breakTest->clearResult();
+    });
     auto *scroll = new QScrollArea;
     scroll->setWidget(body);
     // Wide enough for every panel's controls; only the height scrolls.

@@ -315,7 +315,7 @@ void MainWindow::updateMachineStatus()
         const auto status = m_connection->link() ? m_connection->link()->lastStatus() : std::nullopt;
         text = m_connection->description() + u" — "_s
             + (m_connection->isHalted() ? tr("halted")
-                    : status            ? status->state
+                    : status            ? machineStateName(status->state)
                                         : tr("connected"));
         if (m_connection->isBusy())
             text += u" — "_s + m_connection->operation();
@@ -407,8 +407,9 @@ bool MainWindow::confirmLossySave(const QString &path)
         return true;
     return QMessageBox::question(this, tr("Save as %1?").arg(formatName(format)),
                losses.join(u'\n') + u"\n\n"_s
-                   + tr("After saving, the table on screen shows what the file holds; Undo brings the rest "
-                        "back. Save anyway?"),
+                   + tr("After saving, the table on screen shows what the file holds; until the window is closed, "
+                        "Undo brings the rest back. To keep everything, Cancel and use Save As with a .json "
+                        "file.\n\nSave anyway?"),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
         == QMessageBox::Yes;
 }

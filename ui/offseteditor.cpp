@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "offseteditor.h"
 
+#include <cmath>
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -45,6 +47,9 @@ OffsetEditor::OffsetEditor(MachineConnection *connection, ToolDocument *document
     m_command->setTextInteractionFlags(Qt::TextSelectableByMouse);
     useMonospace(m_command);
     m_result->setObjectName(u"offsetResultPreview"_s);
+    m_result->setWordWrap(true); // "set by the machine from the spindle's position" must not widen the panel
+    m_mode->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_mode->setMinimumContentsLength(12);
     m_result->setAccessibleName(tr("Resulting tool length offset"));
     m_send->setObjectName(u"sendOffsetButton"_s);
     m_send->setAccessibleName(tr("Send the offset to the machine"));
@@ -57,7 +62,14 @@ OffsetEditor::OffsetEditor(MachineConnection *connection, ToolDocument *document
     form->addRow(tr("TLO:"), m_result);
     form->addRow(m_send);
 
-    connect(m_mode, &QComboBox::currentIndexChanged, this, &OffsetEditor::updatePreview);
+    // The same number means something else in each mode: switching starts from a value that changes nothing
+    // (the current TLO to set, 0 to add), and a gauge height is never below Z0.
+    connect(m_mode, &QComboBox::currentIndexChanged, this, [this] {
+        const Mode mode = Mode(m_mode->currentData().toInt());
+        m_value->setMinimum(mode == AboveZ0 ? 0.0 : -MachineSession::kMaxOffset);
+        m_value->setValue(mode == SetTlo && m_currentTlo ? *m_currentTlo : 0.0);
+        updatePreview();
+    });
     connect(m_value, &QDoubleSpinBox::valueChanged, this, &OffsetEditor::updatePreview);
     connect(m_send, &QPushButton::clicked, this, [this] { send(); });
     connect(m_connection, &MachineConnection::offsetsChanged, this, [this](const TloReading &offsets) {
@@ -123,8 +135,13 @@ void OffsetEditor::updatePreview()
 {
     m_command->setText(commandPreview());
     m_result->setText(resultPreview());
-    const bool known = Mode(m_mode->currentData().toInt()) != ChangeTlo || m_currentTlo.has_value();
-    m_send->setEnabled(known && m_connection->canOperate());
+    const Mode mode = Mode(m_mode->currentData().toInt());
+    const bool known = mode != ChangeTlo || m_currentTlo.has_value();
+    // Nothing to send when nothing would change (and a measured TLO must not become "set by hand" for it).
+    const auto target = targetTlo();
+    const bool changes
+        = mode == AboveZ0 || !target || !m_currentTlo || std::fabs(*target - *m_currentTlo) > 0.0005;
+    m_send->setEnabled(known && changes && m_connection->canOperate());
 }
 
 void OffsetEditor::send(bool confirm)
@@ -160,7 +177,7 @@ void OffsetEditor::send(bool confirm)
         const int number = r.tool.value_or(-1);
         auto recorded = number >= 0 && r.tlo
             ? m_document->recordMeasurement(
-                number, r.tlo->tlo(), QDateTime::currentDateTimeUtc(), TloSource::Manual)
+                number, r.tlo->tlo(), QDateTime::currentDateTimeUtc(), TloSource::Manual, r.tlo->referenceMz)
             : Result<void>(Error { tr("the machine reports no tool in the spindle.") });
         if (!recorded)
             QMessageBox::warning(this, tr("The offset is set but not recorded"),

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "probepanel.h"
 
+#include <cmath>
+
 #include <QGridLayout>
 #include <QLabel>
 #include <QLocale>
@@ -113,8 +115,14 @@ void ProbePanel::probe(bool confirm)
         && QMessageBox::question(this, tr("Probe %1?").arg(name),
                tr("The machine will move: up to clearance, over the tool setter, then down until "
                   "%1 touches it. Keep hands clear.\n\nThe machine says %1 is in the spindle: the "
-                  "measurement is recorded as %1's TLO.\n\nProbe now?")
-                   .arg(name),
+                  "measurement is recorded as %1's TLO.%2\n\nProbe now?")
+                   .arg(name,
+                       m_connection->lastOffsets() && m_connection->lastOffsets()->referenceMz == 0.0
+                           ? u"\n\n"_s
+                               + tr("No tool has been measured since the machine started: %1 becomes the "
+                                    "reference tool, and every other TLO is measured against it.")
+                                     .arg(name)
+                           : QString()),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
@@ -125,9 +133,9 @@ void ProbePanel::probe(bool confirm)
         m_connection->endOperation(r);
         if (r.ok()) {
             const int number = r.tool.value_or(-1);
-            auto recorded = number >= 0
-                ? m_document->recordMeasurement(number, r.tlo->tlo(), QDateTime::currentDateTimeUtc())
-                : Result<void>(Error { tr("there is no tool in the spindle.") });
+            auto recorded = number >= 0 ? m_document->recordMeasurement(number, r.tlo->tlo(),
+                                QDateTime::currentDateTimeUtc(), TloSource::Probe, r.tlo->referenceMz)
+                                        : Result<void>(Error { tr("there is no tool in the spindle.") });
             m_result->setText(recorded ? tr("T%1 measured: TLO %2, recorded in the table.")
                                              .arg(number)
                                              .arg(millimetres(r.tlo->tlo()))
@@ -148,6 +156,21 @@ void ProbePanel::restore(bool confirm)
         return;
     const int number = tool->number;
     const double tlo = *tool->measuredTlo;
+    const auto &offsets = m_connection->lastOffsets();
+    // A TLO is the difference to the reference tool it was measured against: on a machine whose reference is
+    // another (another tool probed first since power-on, or the setter moved) it is simply wrong.
+    if (tool->referenceMz && offsets && offsets->referenceMz != 0.0
+        && std::fabs(*tool->referenceMz - offsets->referenceMz) > 0.0005) {
+        QMessageBox::warning(this, tr("T%1's TLO does not fit this machine's reference").arg(number),
+            tr("T%1's TLO %2 was measured against a reference tool at MCS Z %3, but the machine's reference "
+               "is "
+               "now at MCS Z %4 (another tool was probed first since the machine started, or the tool setter "
+               "moved). Restored, it would be off by %5.\n\nProbe T%1 instead.")
+                .arg(number)
+                .arg(millimetres(tlo), millimetres(*tool->referenceMz), millimetres(offsets->referenceMz),
+                    millimetres(std::fabs(*tool->referenceMz - offsets->referenceMz))));
+        return;
+    }
     if (confirm) {
         // Restore trusts the operator about which tool is in the spindle: ask, by name, and say what the
         // machine does not know.
@@ -161,7 +184,10 @@ void ProbePanel::restore(bool confirm)
                        .arg(millimetres(tlo),
                            tool->tloSource == TloSource::Manual ? tr("set by hand") : tr("measured"),
                            QLocale().toString(tool->measuredAt.toLocalTime(), QLocale::ShortFormat));
-        const auto &offsets = m_connection->lastOffsets();
+        if (!tool->referenceMz)
+            details << tr("The table does not say which reference tool T%1's TLO was measured against: make "
+                          "sure it is the reference the machine has now.")
+                           .arg(number);
         if (offsets && offsets->referenceMz == 0.0)
             details << tr(
                 "The machine has no reference tool measured since it started: a stored TLO is only "

@@ -44,6 +44,25 @@ QString when(const QDateTime &at)
 
 } // namespace
 
+// The firmware's state words, in the window's language.
+QString machineStateName(const QString &state)
+{
+    static const char *const names[][2] = { { "Idle", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Idle") },
+        { "Run", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Running") },
+        { "Hold", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Held") },
+        { "Alarm", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Alarm") },
+        { "Home", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Homing") },
+        { "Sleep", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Asleep") },
+        { "Pause", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Paused") },
+        { "Wait", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Waiting") },
+        { "Tool", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Changing tool") } };
+    for (const auto &[word, name] : names) {
+        if (state == QLatin1StringView(word))
+            return QCoreApplication::translate("Toffee::TloPanel", name);
+    }
+    return state;
+}
+
 TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidget *parent)
     : QWidget(parent)
     , m_connection(connection)
@@ -130,7 +149,7 @@ void TloPanel::clear()
 {
     m_state->setText(m_connection->state() == MachineConnection::State::Connecting ? tr("Connecting…")
                                                                                    : tr("Not connected"));
-    m_state->setPalette(palette());
+    m_state->setStyleSheet({});
     for (QLabel *l : { m_tool, m_reference, m_current, m_tlo })
         l->setText(u"—"_s);
     m_tloNote->clear();
@@ -157,12 +176,12 @@ void TloPanel::showHalt()
 {
     const bool halted = m_connection->isHalted();
     const auto status = m_connection->link() ? m_connection->link()->lastStatus() : std::nullopt;
-    QString state = halted ? tr("HALTED") : status ? status->state : tr("Connected");
+    QString state = halted ? tr("HALTED") : status ? machineStateName(status->state) : tr("Connected");
     m_state->setText(state);
-    QPalette statePalette = palette();
-    if (halted)
-        statePalette.setColor(QPalette::WindowText, alarmColor(palette()));
-    m_state->setPalette(statePalette);
+    // Style sheets, not palettes: a toolbar's style repaints its widgets with its own palette.
+    const QString red = alarmColor(palette()).name();
+    m_state->setStyleSheet(
+        halted ? u"color: white; background: %1; padding: 1px 6px;"_s.arg(red) : QString());
     m_unlock->setVisible(halted);
     m_halt->setVisible(halted);
     if (halted) {
@@ -170,10 +189,8 @@ void TloPanel::showHalt()
         m_halt->setText((reason ? haltMeaning(*reason) + u' ' + haltRecovery(*reason)
                                 : tr("The machine reported an alarm. Check the machine, then Unlock ($X)."))
             + u' ' + tr("Nothing that moves the machine or changes its offsets runs until then."));
-        QPalette haltPalette = palette();
-        haltPalette.setColor(QPalette::Window, alarmColor(palette()));
-        haltPalette.setColor(QPalette::WindowText, Qt::white);
-        m_halt->setPalette(haltPalette);
+        m_halt->setStyleSheet(
+            u"color: white; background: %1; padding: 3px 6px; font-weight: bold;"_s.arg(red));
     }
 }
 
@@ -236,10 +253,7 @@ void TloPanel::updateTlo()
         warn = true;
     }
     m_tloNote->setText(note);
-    QPalette notePalette = palette();
-    if (warn)
-        notePalette.setColor(QPalette::WindowText, alarmColor(palette()));
-    m_tloNote->setPalette(notePalette);
+    m_tloNote->setStyleSheet(warn ? u"color: %1;"_s.arg(alarmColor(palette()).name()) : QString());
 }
 
 void TloPanel::checkStale()

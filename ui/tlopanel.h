@@ -16,6 +16,9 @@ namespace Toffee {
 class MachineConnection;
 class ToolDocument;
 
+// The firmware's state word ("Idle", "Run", …) in the window's language.
+[[nodiscard]] QString machineStateName(const QString &state);
+
 // The machine as it is now, in a strip across the top of the window that no scrolling or dock hides: state
 // (in words, red while halted, with what to do and an Unlock button), the active tool, its TLO and where
 // that TLO came from (measured, set by hand, not measured, or not the value the table holds for the tool),

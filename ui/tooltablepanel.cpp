@@ -45,6 +45,7 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
     m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
         | QAbstractItemView::AnyKeyPressed);
     m_view->setWordWrap(false);
+    m_view->setTabKeyNavigation(false); // Tab moves on to the next control, not through every cell
     m_view->setTextElideMode(Qt::ElideRight);
     m_view->verticalHeader()->hide();
     m_view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
@@ -75,6 +76,12 @@ void ToolTablePanel::fitColumns()
     const int text = m_view->fontMetrics().averageCharWidth();
     m_view->setColumnWidth(ToolTableModel::DescriptionColumn,
         std::clamp(m_view->columnWidth(ToolTableModel::DescriptionColumn), 24 * text, 40 * text));
+    // Room for what a recording adds later ("-999.999 (by hand)"), so that it is never cut off.
+    const int tlo
+        = m_view->fontMetrics().horizontalAdvance(ToolTableModel::tr("%1 (by hand)").arg(u"-999.999"_s))
+        + 2 * text;
+    m_view->setColumnWidth(ToolTableModel::MeasuredTloColumn,
+        std::max(m_view->columnWidth(ToolTableModel::MeasuredTloColumn), tlo));
 }
 
 QList<int> ToolTablePanel::selectedToolNumbers() const

@@ -231,7 +231,7 @@ int runMachineCommand(Invocation &call)
             saved = table->recordBreakTest(measured, r.outcome == SessionResult::Outcome::ToolBroken);
         else
             saved = table->recordMeasurement(measured, r.tlo->tlo(), QDateTime::currentDateTimeUtc(),
-                command == u"set-tlo" ? TloSource::Manual : TloSource::Probe);
+                command == u"set-tlo" ? TloSource::Manual : TloSource::Probe, r.tlo->referenceMz);
         if (saved)
             saved = saveTableFile(tablePath, *table, formatForPath(tablePath).value_or(TableFormat::Json));
         if (!saved) {

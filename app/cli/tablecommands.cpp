@@ -45,6 +45,7 @@ QJsonObject toolJson(const Tool &tool)
                 : tool.tloSource == TloSource::Manual ? QJsonValue(u"manual"_s)
                                                       : QJsonValue(u"probe"_s) },
         { u"break_test_failed"_s, tool.breakTestFailed },
+        { u"reference_mz"_s, tool.referenceMz ? QJsonValue(*tool.referenceMz) : QJsonValue() },
         { u"notes"_s, tool.notes },
     };
     return o;

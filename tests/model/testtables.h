@@ -64,6 +64,7 @@ inline ToolTable awkwardTable(Units units = Units::Millimetre)
     t2.measuredAt = QDateTime(QDate(2026, 11, 20), QTime(8, 15, 2), Qt::UTC);
     t2.tloSource = TloSource::Manual; // set by hand on the machine
     t2.breakTestFailed = true; // and found broken since
+    t2.referenceMz = -72.3; // against the reference tool T1
     tools << t2;
     Tool t3;
     t3.number = 99999;
@@ -92,6 +93,7 @@ inline ToolTable linuxCncTable()
         tool.measuredAt = {};
         tool.tloSource = TloSource::Probe;
         tool.breakTestFailed = false;
+        tool.referenceMz.reset();
         tool.notes.clear();
     }
     return ToolTable::fromTools(tools, Units::Millimetre).takeValue();

@@ -119,6 +119,7 @@ private Q_SLOTS:
             QVERIFY2(back.ok(), qPrintable(back.ok() ? QString() : back.error().text()));
             QCOMPARE(back.value().find(2)->tloSource, TloSource::Manual);
             QVERIFY(back.value().find(2)->breakTestFailed);
+            QCOMPARE(*back.value().find(2)->referenceMz, -72.3);
             QCOMPARE(back.value().find(1)->tloSource, TloSource::Probe);
             QVERIFY(!back.value().find(1)->breakTestFailed);
         }
@@ -130,9 +131,11 @@ private Q_SLOTS:
         QVERIFY(plain.contains("\"version\": 1"));
         QVERIFY(!plain.contains("tlo_source"));
         const QByteArray csv = writeTable(marked, TableFormat::Csv);
-        QVERIFY(csv.startsWith("number,pocket,description,length_geometry,length_wear,radius_geometry,"
-                               "radius_wear,measured_tlo,measured_at,notes,tlo_source,break_test,units,"));
-        QVERIFY(csv.contains(",manual,failed,mm,"));
+        QVERIFY(
+            csv.startsWith("number,pocket,description,length_geometry,length_wear,radius_geometry,"
+                           "radius_wear,measured_tlo,measured_at,notes,tlo_source,break_test,reference_mz,"
+                           "units,"));
+        QVERIFY(csv.contains(",manual,failed,-72.3,mm,"));
     }
 
     void badMarksAreRefusedWithTheirLine()

@@ -27,6 +27,10 @@ private Q_SLOTS:
         QTest::newRow("M493.3 alone") << u"m493.3"_s << false << Verdict::Refuse << u"needs Z"_s;
         QTest::newRow("M493.2 with no tool") << u"M493.2"_s << false << Verdict::Refuse << u"halts"_s;
         QTest::newRow("M6 with no tool") << u"M6"_s << false << Verdict::Refuse << u"M6 T2"_s;
+        QTest::newRow("a huge tool") << u"M6 T99999999999999"_s << false << Verdict::Refuse
+                                     << u"not a tool number"_s;
+        QTest::newRow("a fractional tool")
+            << u"M6 T2.5"_s << false << Verdict::Refuse << u"not a tool number"_s;
         QTest::newRow("a tool that is none")
             << u"M6 T1000000"_s << false << Verdict::Refuse << u"not a tool number"_s;
         QTest::newRow("inches") << u"G20"_s << false << Verdict::Refuse << u"millimetres only"_s;
@@ -37,7 +41,7 @@ private Q_SLOTS:
         QTest::newRow("unlock while halted") << u"$X"_s << true << Verdict::Send << QString();
         QTest::newRow("report while halted") << u"M493.4"_s << true << Verdict::Send << QString();
         QTest::newRow("spindle off while halted") << u"M5"_s << true << Verdict::Send << QString();
-        QTest::newRow("status while halted") << u"?"_s << true << Verdict::Send << QString();
+        QTest::newRow("status while halted") << u"?"_s << true << Verdict::Refuse << u"strip"_s;
         // Asked first: everything that moves the machine or changes the offset it cuts with.
         QTest::newRow("tool change") << u"M6 T2"_s << false << Verdict::Confirm << u"the machine moves"_s;
         QTest::newRow("probe") << u"M491"_s << false << Verdict::Confirm << u"tool setter"_s;

@@ -176,7 +176,7 @@ private Q_SLOTS:
             50, [&alarm] { answerNextBox(QMessageBox::NoButton, &alarm, u"alarmUnlockButton"_s); });
         QTest::mouseClick(f.find<QPushButton>(u"runBreakTestButton"_s), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(alarm.contains(u"may be broken"_s), 10000);
-        QCOMPARE(f.find<QLabel>(u"breakVerdictLabel"_s)->text(), u"BROKEN TOOL"_s);
+        QCOMPARE(f.find<QLabel>(u"breakVerdictLabel"_s)->text(), u"T1: BROKEN TOOL"_s);
         QCOMPARE(f.find<QLabel>(u"breakDifferenceLabel"_s)->text(), u"0.400 mm"_s);
         QTRY_VERIFY_WITH_TIMEOUT(!f.window.connection()->emulator()->isHalted(), 5000);
         QVERIFY(f.sent.contains("$X"));

@@ -145,7 +145,9 @@ private Q_SLOTS:
         QCOMPARE(s.text(u"referenceMzLabel"_s), u"not measured"_s);
 
         // Probe the reference tool: T1 enters the table, measured.
-        QVERIFY(s.probe().contains(u"recorded as T1's TLO"_s));
+        const QString first = s.probe();
+        QVERIFY(first.contains(u"recorded as T1's TLO"_s));
+        QVERIFY(first.contains(u"T1 becomes the reference tool"_s));
         QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
         QCOMPARE(s.table().find(1)->tloSource, TloSource::Probe);
         QCOMPARE(s.text(u"tloLabel"_s), u"0.000 mm"_s);
@@ -166,8 +168,11 @@ private Q_SLOTS:
         QTest::keyClick(console, Qt::Key_Return);
         QVERIFY(QTest::qWaitFor([&s] { return s.idle() && s.sent.contains("M6 T2"); }, 10000));
         QCOMPARE(s.machine()->tool(), 2);
-        // The console's tool change measured T2 on the machine, but only a probe from Toffee records it.
+        // The console's tool change measured T2 on the machine, but only a probe from Toffee records it; the
+        // strip shows the machine as it is after the command, not as it was before.
         QTRY_VERIFY(s.text(u"tloNoteLabel"_s).contains(u"T2 has no TLO in the table"_s));
+        QCOMPARE(s.text(u"currentMzLabel"_s), u"-105.688 mm"_s);
+        QCOMPARE(s.text(u"tloLabel"_s), u"-33.388 mm"_s);
 
         // Probe T2: -33.388 mm, at the machine's resolution.
         s.probe();
@@ -190,6 +195,9 @@ private Q_SLOTS:
         QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-30.488 (by hand)"_s);
         QVERIFY(s.text(u"tloNoteLabel"_s).startsWith(u"set by hand"_s));
         QCOMPARE(value->value(), 0.0); // a second Send would not add 2.9 again
+        QVERIFY(!s.find<QPushButton>(u"sendOffsetButton"_s)->isEnabled()); // and adding 0 is no change
+        // The probe panel no longer claims the probe's TLO is the one in use.
+        QVERIFY(!s.text(u"probeResultLabel"_s).contains(u"-33.388"_s));
         QCOMPARE(s.window.document()->undoStack()->undoText(), u"Set T2 TLO by hand"_s);
 
         // Break test: told first that the TLO it compares against was set by hand.
@@ -203,11 +211,13 @@ private Q_SLOTS:
             auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
             if (!box)
                 return;
-            alarm = box->text();
+            alarm = box->text() + u'\n' + box->informativeText();
             QTest::keyClick(box, Qt::Key_Return);
         });
         QVERIFY(QTest::qWaitFor([&alarm] { return !alarm.isEmpty(); }, 10000));
         QVERIFY(alarm.contains(u"T2 may be broken"_s));
+        // It says that the value it compared with was set by hand: the tool may be whole.
+        QVERIFY(alarm.contains(u"the tool may be whole"_s));
         QVERIFY(QTest::qWaitFor([&s] { return s.idle() && !QApplication::activeModalWidget(); }, 5000));
         QVERIFY(s.machine()->isHalted());
         QVERIFY(!s.sent.contains("$X"));
@@ -230,7 +240,7 @@ private Q_SLOTS:
         QTest::keyClicks(console, u"M491"_s);
         QTest::keyClick(console, Qt::Key_Return);
         QCOMPARE(int(s.sent.size()), before);
-        QVERIFY(s.window.consoleDock()->lines().last().contains(u"halted"_s));
+        QVERIFY(s.window.consoleDock()->lines().last().contains(u"  · not sent: The machine is halted"_s));
 
         // Saved now, the file keeps the mark.
         const QString path = dir.filePath(u"shop.json"_s);
@@ -252,6 +262,8 @@ private Q_SLOTS:
         QVERIFY(!s.table().find(2)->breakTestFailed);
         QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
         QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+        // The break test's "BROKEN TOOL" was about the tool before it was measured again.
+        QVERIFY(s.text(u"breakVerdictLabel"_s).isEmpty());
 
         // Save (Ctrl+S) and reopen: the window shows what the file holds.
         s.trigger(u"actionSave"_s);
@@ -403,6 +415,27 @@ private Q_SLOTS:
         tolerance->setFocus();
         QApplication::sendEvent(tolerance, &wheel);
         QVERIFY(tolerance->value() != was); // once focused, the wheel is the operator's choice
+    }
+
+    void restoreRefusesATloMeasuredAgainstAnotherReference()
+    {
+        Station s;
+        QVERIFY(s.window.openFile(kExample));
+        s.connect();
+        s.probe(); // T1 is the reference now, at MCS Z -72.300
+        QCOMPARE(*s.table().find(1)->referenceMz, -72.3);
+        // T2's TLO was measured against a reference elsewhere (another day, another reference tool).
+        Tool t2 = *s.table().find(2);
+        t2.referenceMz = -80.0;
+        QVERIFY(s.window.document()->editTool(2, t2).ok());
+        s.window.toolTablePanel()->selectTool(2);
+        QString refusal;
+        answerNextBox(QMessageBox::Ok, &refusal);
+        QTest::mouseClick(s.find<QPushButton>(u"restoreButton"_s), Qt::LeftButton);
+        QVERIFY(refusal.contains(u"Probe T2 instead"_s));
+        QVERIFY(refusal.contains(u"7.700 mm"_s)); // how far off it would be
+        QVERIFY(!s.sent.contains("M493.2 T2"));
+        QCOMPARE(s.machine()->tool(), 1);
     }
 
     void theStatusBarNeverSaysDisconnectedWhileConnected()
