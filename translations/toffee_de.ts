@@ -2103,10 +2103,6 @@ Vermessen Sie T%1 stattdessen.</translation>
         <translation>Verbunden</translation>
     </message>
     <message>
-        <source>The machine reported an alarm. Check the machine, then Unlock ($X).</source>
-        <translation>Die Maschine hat einen Alarm gemeldet. Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
-    </message>
-    <message>
         <source>Nothing that moves the machine or changes its offsets runs until then.</source>
         <translation>Bis dahin läuft nichts, was die Maschine bewegt oder ihre Korrekturen ändert.</translation>
     </message>
@@ -2181,6 +2177,14 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>Changing tool</source>
         <translation>Werkzeugwechsel</translation>
+    </message>
+    <message>
+        <source>The machine reported an alarm.</source>
+        <translation>Die Maschine hat einen Alarm gemeldet.</translation>
+    </message>
+    <message>
+        <source>Check the machine, then Unlock ($X).</source>
+        <translation>Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
     </message>
 </context>
 <context>

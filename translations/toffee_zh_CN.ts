@@ -2103,10 +2103,6 @@ Probe T%1 instead.</source>
         <translation>已连接</translation>
     </message>
     <message>
-        <source>The machine reported an alarm. Check the machine, then Unlock ($X).</source>
-        <translation>机床报告了警报。请检查机床，然后解锁（$X）。</translation>
-    </message>
-    <message>
         <source>Nothing that moves the machine or changes its offsets runs until then.</source>
         <translation>在此之前，任何会移动机床或更改其补偿的操作都不会执行。</translation>
     </message>
@@ -2181,6 +2177,14 @@ Probe T%1 instead.</source>
     <message>
         <source>Changing tool</source>
         <translation>正在换刀</translation>
+    </message>
+    <message>
+        <source>The machine reported an alarm.</source>
+        <translation>机床报告了报警。</translation>
+    </message>
+    <message>
+        <source>Check the machine, then Unlock ($X).</source>
+        <translation>检查机床，然后解锁（$X）。</translation>
     </message>
 </context>
 <context>

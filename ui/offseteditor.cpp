@@ -49,7 +49,7 @@ OffsetEditor::OffsetEditor(MachineConnection *connection, ToolDocument *document
     m_result->setObjectName(u"offsetResultPreview"_s);
     m_result->setWordWrap(true); // "set by the machine from the spindle's position" must not widen the panel
     m_mode->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_mode->setMinimumContentsLength(12);
+    m_mode->setMinimumContentsLength(17);
     m_result->setAccessibleName(tr("Resulting tool length offset"));
     m_send->setObjectName(u"sendOffsetButton"_s);
     m_send->setAccessibleName(tr("Send the offset to the machine"));

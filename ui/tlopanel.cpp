@@ -85,7 +85,9 @@ TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidge
     bold.setBold(true);
     m_tool->setFont(bold);
     m_state->setFont(bold);
-    m_halt->setWordWrap(true);
+    // Two lines (what happened; what to do), never wrapped: a wrapped label in a toolbar asks for the height
+    // of its narrowest layout. Clipped rather than widening the window; the tooltip has it all.
+    m_halt->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_halt->setAutoFillBackground(true);
     m_halt->setMargin(4);
     m_halt->hide();
@@ -186,9 +188,11 @@ void TloPanel::showHalt()
     m_halt->setVisible(halted);
     if (halted) {
         const auto reason = m_connection->haltReason();
-        m_halt->setText((reason ? haltMeaning(*reason) + u' ' + haltRecovery(*reason)
-                                : tr("The machine reported an alarm. Check the machine, then Unlock ($X)."))
+        m_halt->setText((reason ? haltMeaning(*reason) + u'\n' + haltRecovery(*reason)
+                                : tr("The machine reported an alarm.") + u'\n'
+                                    + tr("Check the machine, then Unlock ($X)."))
             + u' ' + tr("Nothing that moves the machine or changes its offsets runs until then."));
+        m_halt->setToolTip(m_halt->text());
         m_halt->setStyleSheet(
             u"color: white; background: %1; padding: 3px 6px; font-weight: bold;"_s.arg(red));
     }

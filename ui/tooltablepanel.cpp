@@ -76,9 +76,10 @@ void ToolTablePanel::fitColumns()
     const int text = m_view->fontMetrics().averageCharWidth();
     m_view->setColumnWidth(ToolTableModel::DescriptionColumn,
         std::clamp(m_view->columnWidth(ToolTableModel::DescriptionColumn), 24 * text, 40 * text));
-    // Room for what a recording adds later ("-999.999 (by hand)"), so that it is never cut off.
+    // Room for what a recording adds later ("-999.999 (by hand) — BROKEN?"), so that it is never cut off.
     const int tlo
-        = m_view->fontMetrics().horizontalAdvance(ToolTableModel::tr("%1 (by hand)").arg(u"-999.999"_s))
+        = m_view->fontMetrics().horizontalAdvance(
+              ToolTableModel::tr("%1 — BROKEN?").arg(ToolTableModel::tr("%1 (by hand)").arg(u"-999.999"_s)))
         + 2 * text;
     m_view->setColumnWidth(ToolTableModel::MeasuredTloColumn,
         std::max(m_view->columnWidth(ToolTableModel::MeasuredTloColumn), tlo));
