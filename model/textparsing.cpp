@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "textparsing.h"
+#include "model/textparsing.h"
 
 #include <algorithm>
 #include <charconv>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tooltable.h"
+#include "model/tooltable.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include <QCoreApplication>
 
-#include "toolvalidation.h"
+#include "model/toolvalidation.h"
 
 namespace Toffee {
 

@@ -5,9 +5,9 @@
 
 #include <QList>
 
-#include "result.h"
-#include "tool.h"
-#include "units.h"
+#include "model/result.h"
+#include "model/tool.h"
+#include "model/units.h"
 
 namespace Toffee {
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "toolvalidation.h"
+#include "model/toolvalidation.h"
 
 #include <cmath>
 
 #include <QCoreApplication>
 #include <QLocale>
 
-#include "textparsing.h"
+#include "model/textparsing.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "units.h"
+#include "model/units.h"
 
 using namespace Qt::StringLiterals;
 

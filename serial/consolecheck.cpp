@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "consolecheck.h"
+#include "serial/consolecheck.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,8 +8,8 @@
 
 #include <QList>
 
-#include "machinesession.h"
-#include "textparsing.h"
+#include "model/textparsing.h"
+#include "serial/machinesession.h"
 
 using namespace Qt::StringLiterals;
 

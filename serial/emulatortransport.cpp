@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "emulatortransport.h"
+#include "serial/emulatortransport.h"
 
-#include "emulator/carveraemulator.h"
+#include "serial/emulator/carveraemulator.h"
 
 namespace Toffee {
 

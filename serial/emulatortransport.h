@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "linetransport.h"
+#include "serial/linetransport.h"
 
 namespace Toffee {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "lineassembler.h"
+#include "serial/lineassembler.h"
 
 #include <algorithm>
 

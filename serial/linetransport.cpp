@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "linetransport.h"
+#include "serial/linetransport.h"
 
 namespace Toffee {
 

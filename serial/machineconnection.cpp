@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "machineconnection.h"
+#include "serial/machineconnection.h"
 
-#include "emulatortransport.h"
-#include "serialporttransport.h"
+#include "serial/emulatortransport.h"
+#include "serial/serialporttransport.h"
 
 namespace Toffee {
 

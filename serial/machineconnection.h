@@ -5,7 +5,7 @@
 
 #include <QObject>
 
-#include "machinesession.h"
+#include "serial/machinesession.h"
 
 namespace Toffee {
 

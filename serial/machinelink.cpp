@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "machinelink.h"
+#include "serial/machinelink.h"
 
-#include "linetransport.h"
+#include "serial/linetransport.h"
 
 namespace Toffee {
 

@@ -9,7 +9,7 @@
 #include <QObject>
 #include <QTimer>
 
-#include "machinereplies.h"
+#include "serial/machinereplies.h"
 
 namespace Toffee {
 

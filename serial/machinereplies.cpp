@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "machinereplies.h"
+#include "serial/machinereplies.h"
 
 #include <cmath>
 #include <limits>
@@ -7,8 +7,8 @@
 #include <QCoreApplication>
 #include <QList>
 
-#include "textparsing.h"
-#include "toolvalidation.h"
+#include "model/textparsing.h"
+#include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
 

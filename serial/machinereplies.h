@@ -8,6 +8,8 @@
 #include <QByteArrayView>
 #include <QString>
 
+#include "model/limits.h"
+
 namespace Toffee {
 
 // What the controller's replies say, as plain values. Parsed by the pure functions below.
@@ -47,9 +49,6 @@ struct BreakTestReading
     double oldTlo = 0.0;
     double newTlo = 0.0;
 };
-
-// No machine coordinate, offset or length is this large (in mm); a reply that says otherwise is garbled.
-constexpr double kMaxMachineMillimetres = 100000.0;
 
 // What kind of line the controller sent.
 enum class ReplyKind {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "machinesession.h"
+#include "serial/machinesession.h"
 
 #include <cmath>
 
@@ -7,8 +7,8 @@
 #include <QPointer>
 #include <QTimer>
 
-#include "linetransport.h"
-#include "textparsing.h"
+#include "model/textparsing.h"
+#include "serial/linetransport.h"
 
 using namespace Qt::StringLiterals;
 

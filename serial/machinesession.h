@@ -6,9 +6,9 @@
 
 #include <QObject>
 
-#include "machinelink.h"
-#include "machinereplies.h"
-#include "result.h"
+#include "model/result.h"
+#include "serial/machinelink.h"
+#include "serial/machinereplies.h"
 
 namespace Toffee {
 

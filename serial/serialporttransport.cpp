@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serialporttransport.h"
+#include "serial/serialporttransport.h"
 
 namespace Toffee {
 

@@ -3,8 +3,8 @@
 
 #include <QSerialPort>
 
-#include "lineassembler.h"
-#include "linetransport.h"
+#include "serial/lineassembler.h"
+#include "serial/linetransport.h"
 
 namespace Toffee {
 

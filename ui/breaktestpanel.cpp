@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "breaktestpanel.h"
+#include "ui/breaktestpanel.h"
 
 #include <cmath>
 
@@ -10,10 +10,10 @@
 #include <QMessageBox>
 #include <QPushButton>
 
-#include "appearance.h"
-#include "appsettings.h"
-#include "machineconnection.h"
-#include "tooldocument.h"
+#include "model/document/tooldocument.h"
+#include "serial/machineconnection.h"
+#include "ui/appearance.h"
+#include "ui/appsettings.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "connectionpanel.h"
+#include "ui/connectionpanel.h"
 
 #include <QComboBox>
 #include <QGridLayout>
 #include <QPushButton>
 #include <QSerialPortInfo>
 
-#include "appearance.h"
-#include "appsettings.h"
-#include "machineconnection.h"
+#include "serial/machineconnection.h"
+#include "ui/appearance.h"
+#include "ui/appsettings.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "consoledock.h"
+#include "ui/consoledock.h"
 
 #include <QKeyEvent>
 #include <QLineEdit>
@@ -8,10 +8,10 @@
 #include <QTime>
 #include <QVBoxLayout>
 
-#include "appearance.h"
-#include "consolecheck.h"
-#include "machineconnection.h"
-#include "tooldocument.h"
+#include "model/document/tooldocument.h"
+#include "serial/consolecheck.h"
+#include "serial/machineconnection.h"
+#include "ui/appearance.h"
 
 using namespace Qt::StringLiterals;
 

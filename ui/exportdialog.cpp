@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "exportdialog.h"
+#include "ui/exportdialog.h"
 
 #include <QClipboard>
 #include <QComboBox>
@@ -13,10 +13,10 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "appearance.h"
-#include "appsettings.h"
-#include "dialect.h"
-#include "fileio.h"
+#include "model/formats/fileio.h"
+#include "model/gcode/dialect.h"
+#include "ui/appearance.h"
+#include "ui/appsettings.h"
 
 using namespace Qt::StringLiterals;
 

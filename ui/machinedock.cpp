@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "machinedock.h"
+#include "ui/machinedock.h"
 
 #include <QGroupBox>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QVBoxLayout>
 
-#include "breaktestpanel.h"
-#include "connectionpanel.h"
-#include "machinesession.h"
-#include "offseteditor.h"
-#include "probepanel.h"
-#include "tlopanel.h"
+#include "serial/machinesession.h"
+#include "ui/breaktestpanel.h"
+#include "ui/connectionpanel.h"
+#include "ui/offseteditor.h"
+#include "ui/probepanel.h"
+#include "ui/tlopanel.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "mainwindow.h"
+#include "ui/mainwindow.h"
 
 #include <QAction>
 #include <QApplication>
@@ -17,20 +17,20 @@
 #include <QToolBar>
 #include <QUndoStack>
 
-#include "appearance.h"
-#include "appsettings.h"
-#include "autosave.h"
-#include "breaktestpanel.h"
-#include "connectionpanel.h"
-#include "consoledock.h"
-#include "exportdialog.h"
-#include "filewatcher.h"
-#include "machineconnection.h"
-#include "machinedock.h"
-#include "probepanel.h"
-#include "tlopanel.h"
-#include "tooldocument.h"
-#include "tooltablepanel.h"
+#include "model/document/autosave.h"
+#include "model/document/filewatcher.h"
+#include "model/document/tooldocument.h"
+#include "serial/machineconnection.h"
+#include "ui/appearance.h"
+#include "ui/appsettings.h"
+#include "ui/breaktestpanel.h"
+#include "ui/connectionpanel.h"
+#include "ui/consoledock.h"
+#include "ui/exportdialog.h"
+#include "ui/machinedock.h"
+#include "ui/probepanel.h"
+#include "ui/tlopanel.h"
+#include "ui/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
 
@@ -407,7 +407,8 @@ bool MainWindow::confirmLossySave(const QString &path)
         return true;
     return QMessageBox::question(this, tr("Save as %1?").arg(formatName(format)),
                losses.join(u'\n') + u"\n\n"_s
-                   + tr("After saving, the table on screen shows what the file holds; until the window is closed, "
+                   + tr("After saving, the table on screen shows what the file holds; until the window is "
+                        "closed, "
                         "Undo brings the rest back. To keep everything, Cancel and use Save As with a .json "
                         "file.\n\nSave anyway?"),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "offseteditor.h"
+#include "ui/offseteditor.h"
 
 #include <cmath>
 
@@ -10,9 +10,9 @@
 #include <QMessageBox>
 #include <QPushButton>
 
-#include "appearance.h"
-#include "machineconnection.h"
-#include "tooldocument.h"
+#include "model/document/tooldocument.h"
+#include "serial/machineconnection.h"
+#include "ui/appearance.h"
 
 using namespace Qt::StringLiterals;
 

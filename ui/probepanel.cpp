@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "probepanel.h"
+#include "ui/probepanel.h"
 
 #include <cmath>
 
@@ -10,9 +10,9 @@
 #include <QProgressBar>
 #include <QPushButton>
 
-#include "appearance.h"
-#include "machineconnection.h"
-#include "tooldocument.h"
+#include "model/document/tooldocument.h"
+#include "serial/machineconnection.h"
+#include "ui/appearance.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "recoveryprompt.h"
+#include "ui/recoveryprompt.h"
 
 #include <QFileInfo>
 #include <QFontMetrics>
@@ -8,9 +8,9 @@
 #include <QPushButton>
 #include <QStatusBar>
 
-#include "autosave.h"
-#include "mainwindow.h"
-#include "tooldocument.h"
+#include "model/document/autosave.h"
+#include "model/document/tooldocument.h"
+#include "ui/mainwindow.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "selftest.h"
+#include "ui/selftest.h"
 
 #include <QImage>
 #include <QPixmap>
 
-#include "machineconnection.h"
-#include "machinedock.h"
-#include "mainwindow.h"
-#include "probepanel.h"
-#include "tooldocument.h"
+#include "model/document/tooldocument.h"
+#include "serial/machineconnection.h"
+#include "ui/machinedock.h"
+#include "ui/mainwindow.h"
+#include "ui/probepanel.h"
 
 using namespace Qt::StringLiterals;
 

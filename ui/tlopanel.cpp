@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tlopanel.h"
+#include "ui/tlopanel.h"
 
 #include <cmath>
 
@@ -11,9 +11,9 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "appearance.h"
-#include "machineconnection.h"
-#include "tooldocument.h"
+#include "model/document/tooldocument.h"
+#include "serial/machineconnection.h"
+#include "ui/appearance.h"
 
 using namespace Qt::StringLiterals;
 

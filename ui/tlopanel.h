@@ -6,7 +6,7 @@
 #include <QTimer>
 #include <QWidget>
 
-#include "machinereplies.h"
+#include "serial/machinereplies.h"
 
 class QLabel;
 class QPushButton;

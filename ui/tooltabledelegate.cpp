@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tooltabledelegate.h"
+#include "ui/tooltabledelegate.h"
 
 #include <QLineEdit>
 
-#include "toolvalidation.h"
+#include "model/toolvalidation.h"
 
 namespace Toffee {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tooltablepanel.h"
+#include "ui/tooltablepanel.h"
 
 #include <algorithm>
 
@@ -9,8 +9,8 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
-#include "tooltabledelegate.h"
-#include "tooltablemodel.h"
+#include "model/document/tooltablemodel.h"
+#include "ui/tooltabledelegate.h"
 
 using namespace Qt::StringLiterals;
 

@@ -4,12 +4,12 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
-#include "cli.h"
-#include "dialect.h"
-#include "emulator/gcodeinterpreter.h"
-#include "fileio.h"
-#include "tablefile.h"
-#include "textparsing.h"
+#include "app/cli/cli.h"
+#include "model/formats/fileio.h"
+#include "model/formats/tablefile.h"
+#include "model/gcode/dialect.h"
+#include "model/gcode/gcodeinterpreter.h"
+#include "model/textparsing.h"
 
 using namespace Qt::StringLiterals;
 

@@ -11,12 +11,12 @@
 #include <QJsonObject>
 #include <QTimer>
 
-#include "cli.h"
-#include "emulatortransport.h"
-#include "machinesession.h"
-#include "serialporttransport.h"
-#include "tablefile.h"
-#include "textparsing.h"
+#include "app/cli/cli.h"
+#include "model/formats/tablefile.h"
+#include "model/textparsing.h"
+#include "serial/emulatortransport.h"
+#include "serial/machinesession.h"
+#include "serial/serialporttransport.h"
 
 using namespace Qt::StringLiterals;
 

@@ -5,7 +5,7 @@
 #include <QCoreApplication>
 #include <QTextStream>
 
-#include "cli.h"
+#include "app/cli/cli.h"
 
 using namespace Qt::StringLiterals;
 

@@ -3,9 +3,9 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
-#include "cli.h"
-#include "tablefile.h"
-#include "toolvalidation.h"
+#include "app/cli/cli.h"
+#include "model/formats/tablefile.h"
+#include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
 

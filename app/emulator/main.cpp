@@ -6,9 +6,9 @@
 #include <QCoreApplication>
 #include <QTextStream>
 
-#include "emulator/carveraemulator.h"
-#include "emulator/ptyserver.h"
-#include "textparsing.h"
+#include "model/textparsing.h"
+#include "serial/emulator/carveraemulator.h"
+#include "serial/emulator/ptyserver.h"
 
 using namespace Qt::StringLiterals;
 using Toffee::CarveraEmulator;

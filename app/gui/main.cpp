@@ -8,15 +8,15 @@
 #include <QStandardPaths>
 #include <QTimer>
 
-#include "appearance.h"
-#include "appsettings.h"
-#include "connectionpanel.h"
-#include "machineconnection.h"
-#include "machinedock.h"
-#include "mainwindow.h"
-#include "recoveryprompt.h"
-#include "selftest.h"
-#include "translations.h"
+#include "serial/machineconnection.h"
+#include "ui/appearance.h"
+#include "ui/appsettings.h"
+#include "ui/connectionpanel.h"
+#include "ui/machinedock.h"
+#include "ui/mainwindow.h"
+#include "ui/recoveryprompt.h"
+#include "ui/selftest.h"
+#include "ui/translations.h"
 
 using namespace Qt::StringLiterals;
 

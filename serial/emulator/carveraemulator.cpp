@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "carveraemulator.h"
+#include "serial/emulator/carveraemulator.h"
 
 #include <cmath>
 
-#include "machinereplies.h"
-#include "textparsing.h"
+#include "model/limits.h"
+#include "model/textparsing.h"
 
 namespace Toffee {
 

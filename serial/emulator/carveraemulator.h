@@ -9,7 +9,7 @@
 #include <QObject>
 #include <QTimer>
 
-#include "gcodeinterpreter.h"
+#include "model/gcode/gcodeinterpreter.h"
 
 namespace Toffee {
 

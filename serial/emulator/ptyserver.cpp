@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ptyserver.h"
+#include "serial/emulator/ptyserver.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -11,7 +11,7 @@
 #include <QFile>
 #include <QSocketNotifier>
 
-#include "carveraemulator.h"
+#include "serial/emulator/carveraemulator.h"
 
 namespace Toffee {
 

@@ -6,9 +6,9 @@
 
 #include <QCoreApplication>
 
-#include "autosave.h"
-#include "testtables.h"
-#include "tooldocument.h"
+#include "model/document/autosave.h"
+#include "model/document/tooldocument.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 

@@ -5,8 +5,8 @@
 
 #include <QCoreApplication>
 
-#include "tablefile.h"
-#include "testtables.h"
+#include "model/formats/tablefile.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 

@@ -8,9 +8,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "autosave.h"
-#include "processes.h"
-#include "testtables.h"
+#include "model/document/autosave.h"
+#include "tests/support/processes.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -8,7 +8,7 @@
 
 using namespace Qt::StringLiterals;
 
-#include "processes.h"
+#include "tests/support/processes.h"
 
 using Toffee::Test::cli;
 using Toffee::Test::Run;

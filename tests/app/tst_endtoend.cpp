@@ -11,7 +11,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "processes.h"
+#include "tests/support/processes.h"
 
 using namespace Qt::StringLiterals;
 using Toffee::Test::cli;

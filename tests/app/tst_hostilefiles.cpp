@@ -8,8 +8,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "fulldisk.h"
-#include "specialfiles.h"
+#include "tests/support/fulldisk.h"
+#include "tests/support/specialfiles.h"
 
 using namespace Qt::StringLiterals;
 

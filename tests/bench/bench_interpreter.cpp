@@ -5,7 +5,7 @@
 #include <QElapsedTimer>
 #include <QTextStream>
 
-#include "emulator/gcodeinterpreter.h"
+#include "model/gcode/gcodeinterpreter.h"
 
 using namespace Toffee;
 

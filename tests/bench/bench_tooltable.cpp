@@ -14,9 +14,9 @@
 #include <QTemporaryDir>
 #include <QTextStream>
 
-#include "tablefile.h"
-#include "testtables.h"
-#include "tooltablemodel.h"
+#include "model/document/tooltablemodel.h"
+#include "model/formats/tablefile.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

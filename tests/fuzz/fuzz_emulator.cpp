@@ -8,9 +8,9 @@
 
 #include <QCoreApplication>
 
-#include "emulator/carveraemulator.h"
-#include "fuzzcheck.h"
-#include "machinereplies.h"
+#include "serial/emulator/carveraemulator.h"
+#include "serial/machinereplies.h"
+#include "tests/fuzz/fuzzcheck.h"
 
 using namespace Toffee;
 

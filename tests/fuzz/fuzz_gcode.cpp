@@ -5,8 +5,8 @@
 // somewhere real (finite), and the offset table holds only values a controller accepts.
 #include <cmath>
 
-#include "emulator/gcodeinterpreter.h"
-#include "fuzzcheck.h"
+#include "model/gcode/gcodeinterpreter.h"
+#include "tests/fuzz/fuzzcheck.h"
 
 using namespace Toffee;
 

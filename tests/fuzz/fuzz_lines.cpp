@@ -7,8 +7,8 @@
 // buffer never exceeds the cap.
 #include <algorithm>
 
-#include "fuzzcheck.h"
-#include "lineassembler.h"
+#include "serial/lineassembler.h"
+#include "tests/fuzz/fuzzcheck.h"
 
 using namespace Toffee;
 using Line = LineAssembler::Line;

@@ -5,9 +5,9 @@
 // spindle, to 999999); a halt reason can be named.
 #include <cmath>
 
-#include "fuzzcheck.h"
-#include "machinereplies.h"
-#include "textparsing.h"
+#include "model/textparsing.h"
+#include "serial/machinereplies.h"
+#include "tests/fuzz/fuzzcheck.h"
 
 using namespace Toffee;
 

@@ -2,8 +2,8 @@
 // One table reader (TOFFEE_FUZZ_FORMAT: Json, LinuxCnc or Csv) on any bytes. Promised: no crash; either the
 // whole table, valid, which its own writer writes and reads back unchanged, or an error with a message and a
 // line inside the file, never part of a file.
-#include "fuzzcheck.h"
-#include "tablefile.h"
+#include "model/formats/tablefile.h"
+#include "tests/fuzz/fuzzcheck.h"
 
 using namespace Toffee;
 

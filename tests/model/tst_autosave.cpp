@@ -10,10 +10,10 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "autosave.h"
-#include "fulldisk.h"
-#include "testtables.h"
-#include "tooldocument.h"
+#include "model/document/autosave.h"
+#include "model/document/tooldocument.h"
+#include "tests/support/fulldisk.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

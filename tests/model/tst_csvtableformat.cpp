@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
-#include "tablefile.h"
-#include "testtables.h"
+#include "model/formats/tablefile.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
@@ -77,7 +77,8 @@ private Q_SLOTS:
         QTest::newRow("no number column")
             << QByteArray("pocket,description\n1,x\n") << 1 << u"no \"number\" column"_s;
         QTest::newRow("too few fields") << head + "2,2,second\n" << 3 << u"3 fields but the header has 9"_s;
-        QTest::newRow("too many fields") << head + "2,2,x,1,0,,,mm,,extra\n" << 3 << u"more fields than the header's 9"_s;
+        QTest::newRow("too many fields") << head + "2,2,x,1,0,,,mm,,extra\n"
+                                         << 3 << u"more fields than the header's 9"_s;
         QTest::newRow("no tool number") << head + ",2,x,1,0,,,mm,\n" << 3 << u"no tool number"_s;
         QTest::newRow("tool number not whole") << head + "2.5,2,x,1,0,,,mm,\n"
                                                << 3 << u"not a whole number"_s;

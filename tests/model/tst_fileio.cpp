@@ -5,12 +5,12 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "fileio.h"
-#include "fulldisk.h"
-#include "specialfiles.h"
-#include "tablefile.h"
-#include "testtables.h"
-#include "textparsing.h"
+#include "model/formats/fileio.h"
+#include "model/formats/tablefile.h"
+#include "model/textparsing.h"
+#include "tests/support/fulldisk.h"
+#include "tests/support/specialfiles.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

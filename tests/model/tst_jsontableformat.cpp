@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
-#include "tablefile.h"
-#include "testtables.h"
+#include "model/formats/tablefile.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

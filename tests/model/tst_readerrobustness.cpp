@@ -4,8 +4,8 @@
 #include <QRandomGenerator>
 #include <QTest>
 
-#include "tablefile.h"
-#include "testtables.h"
+#include "model/formats/tablefile.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 

@@ -3,8 +3,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "tablefile.h"
-#include "testtables.h"
+#include "model/formats/tablefile.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

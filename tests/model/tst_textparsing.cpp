@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
-#include "textparsing.h"
+#include "model/textparsing.h"
 
 using namespace Toffee;
 

@@ -4,8 +4,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "testtables.h"
-#include "tooldocument.h"
+#include "model/document/tooldocument.h"
+#include "tests/support/testtables.h"
 
 using namespace Toffee;
 using Toffee::Test::tool;

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
-#include "testtables.h"
+#include "tests/support/testtables.h"
 
-#include "tooltable.h"
+#include "model/tooltable.h"
 
 using namespace Toffee;
 using Toffee::Test::tool;

@@ -4,9 +4,9 @@
 #include <QSortFilterProxyModel>
 #include <QTest>
 
-#include "testtables.h"
+#include "tests/support/testtables.h"
 
-#include "tooltablemodel.h"
+#include "model/document/tooltablemodel.h"
 
 using namespace Toffee;
 using Toffee::Test::tool;

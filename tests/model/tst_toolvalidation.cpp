@@ -4,7 +4,7 @@
 
 #include <QTest>
 
-#include "toolvalidation.h"
+#include "model/toolvalidation.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -2,9 +2,9 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "emulator/carveraemulator.h"
-#include "emulator/gcodeinterpreter.h"
-#include "machinereplies.h"
+#include "model/gcode/gcodeinterpreter.h"
+#include "serial/emulator/carveraemulator.h"
+#include "serial/machinereplies.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -7,7 +7,7 @@
 
 #include <QTest>
 
-#include "emulator/gcodeinterpreter.h"
+#include "model/gcode/gcodeinterpreter.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

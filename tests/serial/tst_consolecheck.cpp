@@ -2,7 +2,7 @@
 // The console's checks: what the panels refuse, it refuses; what moves the machine, it asks about first.
 #include <QTest>
 
-#include "consolecheck.h"
+#include "serial/consolecheck.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -3,8 +3,8 @@
 // back.
 #include <QTest>
 
-#include "dialect.h"
-#include "emulator/gcodeinterpreter.h"
+#include "model/gcode/dialect.h"
+#include "model/gcode/gcodeinterpreter.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

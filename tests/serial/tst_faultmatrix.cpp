@@ -5,8 +5,8 @@
 
 #include <QTest>
 
-#include "sessionharness.h"
-#include "tooltable.h"
+#include "model/tooltable.h"
+#include "tests/support/sessionharness.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

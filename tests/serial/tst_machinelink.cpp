@@ -3,8 +3,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "linetransport.h"
-#include "machinelink.h"
+#include "serial/linetransport.h"
+#include "serial/machinelink.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
-#include "machinereplies.h"
+#include "serial/machinereplies.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

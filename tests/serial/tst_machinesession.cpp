@@ -5,7 +5,7 @@
 #include <QElapsedTimer>
 #include <QTest>
 
-#include "sessionharness.h"
+#include "tests/support/sessionharness.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -8,7 +8,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "serialporttransport.h"
+#include "serial/serialporttransport.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

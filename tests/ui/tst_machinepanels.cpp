@@ -16,14 +16,14 @@
 #include <QTimer>
 #include <QUndoStack>
 
-#include "appsettings.h"
-#include "consoledock.h"
-#include "emulator/carveraemulator.h"
-#include "machineconnection.h"
-#include "mainwindow.h"
-#include "messageboxes.h"
-#include "tooldocument.h"
-#include "tooltablepanel.h"
+#include "model/document/tooldocument.h"
+#include "serial/emulator/carveraemulator.h"
+#include "serial/machineconnection.h"
+#include "tests/support/messageboxes.h"
+#include "ui/appsettings.h"
+#include "ui/consoledock.h"
+#include "ui/mainwindow.h"
+#include "ui/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -28,16 +28,16 @@
 #include <QToolButton>
 #include <QUndoStack>
 
-#include "autosave.h"
-#include "exportdialog.h"
-#include "fulldisk.h"
-#include "mainwindow.h"
-#include "messageboxes.h"
-#include "recoveryprompt.h"
-#include "testtables.h"
-#include "tooldocument.h"
-#include "tooltablemodel.h"
-#include "tooltablepanel.h"
+#include "model/document/autosave.h"
+#include "model/document/tooldocument.h"
+#include "model/document/tooltablemodel.h"
+#include "tests/support/fulldisk.h"
+#include "tests/support/messageboxes.h"
+#include "tests/support/testtables.h"
+#include "ui/exportdialog.h"
+#include "ui/mainwindow.h"
+#include "ui/recoveryprompt.h"
+#include "ui/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

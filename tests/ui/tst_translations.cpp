@@ -18,10 +18,10 @@
 #include <QTranslator>
 #include <QXmlStreamReader>
 
-#include "appearance.h"
-#include "mainwindow.h"
-#include "tooldocument.h"
-#include "translations.h"
+#include "model/document/tooldocument.h"
+#include "ui/appearance.h"
+#include "ui/mainwindow.h"
+#include "ui/translations.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
@@ -106,8 +106,8 @@ private Q_SLOTS:
         QProcess lupdate;
         lupdate.setWorkingDirectory(QStringLiteral(TOFFEE_SOURCE_DIR));
         lupdate.start(QStringLiteral(TOFFEE_LUPDATE),
-            { u"-no-obsolete"_s, u"-locations"_s, u"none"_s, u"model"_s, u"serial"_s, u"ui"_s, u"app/gui"_s,
-                u"-ts"_s, copy });
+            { u"-no-obsolete"_s, u"-locations"_s, u"none"_s, u"-I"_s, u"."_s, u"model"_s, u"serial"_s,
+                u"ui"_s, u"app/gui"_s, u"-ts"_s, copy });
         QVERIFY(lupdate.waitForFinished(60000));
         QCOMPARE(lupdate.exitCode(), 0);
         for (const Message &m : readTs(copy))

@@ -21,18 +21,18 @@
 #include <QTimer>
 #include <QUndoStack>
 
-#include "consoledock.h"
-#include "dialect.h"
-#include "emulator/carveraemulator.h"
-#include "exportdialog.h"
-#include "machineconnection.h"
-#include "machinedock.h"
-#include "mainwindow.h"
-#include "messageboxes.h"
-#include "tlopanel.h"
-#include "tooldocument.h"
-#include "tooltablemodel.h"
-#include "tooltablepanel.h"
+#include "model/document/tooldocument.h"
+#include "model/document/tooltablemodel.h"
+#include "model/gcode/dialect.h"
+#include "serial/emulator/carveraemulator.h"
+#include "serial/machineconnection.h"
+#include "tests/support/messageboxes.h"
+#include "ui/consoledock.h"
+#include "ui/exportdialog.h"
+#include "ui/machinedock.h"
+#include "ui/mainwindow.h"
+#include "ui/tlopanel.h"
+#include "ui/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

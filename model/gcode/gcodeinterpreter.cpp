@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "gcodeinterpreter.h"
+#include "model/gcode/gcodeinterpreter.h"
 
 #include <cmath>
 
 #include <QCoreApplication>
 
-#include "textparsing.h"
-#include "toolvalidation.h"
+#include "model/textparsing.h"
+#include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
 

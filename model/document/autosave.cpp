@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "autosave.h"
+#include "model/document/autosave.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -17,8 +17,8 @@
 #include <QStandardPaths>
 #include <QUuid>
 
-#include "fileio.h"
-#include "tooldocument.h"
+#include "model/document/tooldocument.h"
+#include "model/formats/fileio.h"
 
 using namespace Qt::StringLiterals;
 

@@ -7,8 +7,8 @@
 #include <QByteArray>
 #include <QStringList>
 
-#include "result.h"
-#include "tooltable.h"
+#include "model/result.h"
+#include "model/tooltable.h"
 
 namespace Toffee {
 

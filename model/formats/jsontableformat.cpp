@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The native format: a JSON object with a format name and version, the units, and one object per tool.
-#include "tablefile.h"
+#include "model/formats/tablefile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,9 @@
 
 #include <QCoreApplication>
 
-#include "tablereading.h"
-#include "textparsing.h"
-#include "toolvalidation.h"
+#include "model/formats/tablereading.h"
+#include "model/textparsing.h"
+#include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "toolcommands.h"
+#include "model/document/toolcommands.h"
 
-#include "tooltablemodel.h"
+#include "model/document/tooltablemodel.h"
 
 namespace Toffee {
 

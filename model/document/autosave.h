@@ -7,8 +7,8 @@
 #include <QObject>
 #include <QTimer>
 
-#include "result.h"
-#include "tablefile.h"
+#include "model/formats/tablefile.h"
+#include "model/result.h"
 
 class QLockFile;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tablefile.h"
+#include "model/formats/tablefile.h"
 
 #include <new>
 #include <optional>
@@ -7,8 +7,8 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 
-#include "fileio.h"
-#include "textparsing.h"
+#include "model/formats/fileio.h"
+#include "model/textparsing.h"
 
 using namespace Qt::StringLiterals;
 

@@ -5,7 +5,7 @@
 
 #include <QUndoCommand>
 
-#include "tooltable.h"
+#include "model/tooltable.h"
 
 namespace Toffee {
 

@@ -6,8 +6,8 @@
 #include <QList>
 #include <QString>
 
-#include "result.h"
-#include "tooltable.h"
+#include "model/result.h"
+#include "model/tooltable.h"
 
 namespace Toffee {
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tooltablemodel.h"
+#include "model/document/tooltablemodel.h"
 
 #include <QColor>
 #include <QLocale>
 
-#include "textparsing.h"
-#include "toolvalidation.h"
+#include "model/textparsing.h"
+#include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
 

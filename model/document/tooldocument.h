@@ -4,8 +4,8 @@
 #include <QObject>
 #include <QUndoStack>
 
-#include "tablefile.h"
-#include "tooltablemodel.h"
+#include "model/document/tooltablemodel.h"
+#include "model/formats/tablefile.h"
 
 namespace Toffee {
 

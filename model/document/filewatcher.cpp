@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "filewatcher.h"
+#include "model/document/filewatcher.h"
 
 #include <QCryptographicHash>
 #include <QFile>
 #include <QFileInfo>
 #include <QTimer>
 
-#include "fileio.h"
+#include "model/formats/fileio.h"
 
 namespace Toffee {
 

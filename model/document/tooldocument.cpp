@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tooldocument.h"
+#include "model/document/tooldocument.h"
 
 #include <QFileInfo>
 
-#include "toolcommands.h"
-#include "toolvalidation.h"
+#include "model/document/toolcommands.h"
+#include "model/toolvalidation.h"
 
 namespace Toffee {
 

@@ -8,8 +8,8 @@
 #include <QByteArrayView>
 #include <QList>
 
-#include "dialect.h"
-#include "result.h"
+#include "model/gcode/dialect.h"
+#include "model/result.h"
 
 namespace Toffee {
 

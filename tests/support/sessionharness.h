@@ -4,10 +4,10 @@
 
 #include <QTest>
 
-#include "emulator/carveraemulator.h"
-#include "emulatortransport.h"
-#include "machinelink.h"
-#include "machinesession.h"
+#include "serial/emulator/carveraemulator.h"
+#include "serial/emulatortransport.h"
+#include "serial/machinelink.h"
+#include "serial/machinesession.h"
 
 namespace Toffee::Test {
 

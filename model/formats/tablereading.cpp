@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tablereading.h"
+#include "model/formats/tablereading.h"
 
 #include <algorithm>
 
 #include <QCoreApplication>
 
-#include "toolvalidation.h"
+#include "model/toolvalidation.h"
 
 namespace Toffee {
 

@@ -6,7 +6,7 @@
 #include <QAbstractTableModel>
 #include <QHash>
 
-#include "tooltable.h"
+#include "model/tooltable.h"
 
 namespace Toffee {
 

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // CSV with a header row naming the columns (any order; only "number" is required), RFC 4180 quoting.
 // A spreadsheet saved with ';' between fields and decimal commas (as German Excel does) reads too.
-#include "tablefile.h"
+#include "model/formats/tablefile.h"
 
 #include <list>
 
 #include <QCoreApplication>
 
-#include "tablereading.h"
-#include "textparsing.h"
-#include "toolvalidation.h"
+#include "model/formats/tablereading.h"
+#include "model/textparsing.h"
+#include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
 

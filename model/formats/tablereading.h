@@ -5,8 +5,8 @@
 #include <optional>
 #include <vector>
 
-#include "tablefile.h"
-#include "tooltable.h"
+#include "model/formats/tablefile.h"
+#include "model/tooltable.h"
 
 namespace Toffee {
 

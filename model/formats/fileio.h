@@ -8,7 +8,7 @@
 #include <QByteArray>
 #include <QString>
 
-#include "result.h"
+#include "model/result.h"
 
 namespace Toffee {
 

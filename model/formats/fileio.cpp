@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "fileio.h"
+#include "model/formats/fileio.h"
 
 #include <cerrno>
 #include <cstring>

@@ -2,16 +2,16 @@
 // LinuxCNC tool.tbl: `T<n> P<pocket> [X..W <float>] [D<dia>] [I<front>] [J<back>] [Q<0-9>] [;comment]`.
 // T and P are required, lines starting with ';' are ignored, any other token makes the line invalid.
 // Z is the tool length and D the diameter; the table has no wear, TLO or notes columns.
-#include "tablefile.h"
+#include "model/formats/tablefile.h"
 
 #include <cmath>
 #include <cstring>
 
 #include <QCoreApplication>
 
-#include "tablereading.h"
-#include "textparsing.h"
-#include "toolvalidation.h"
+#include "model/formats/tablereading.h"
+#include "model/textparsing.h"
+#include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "dialect.h"
+#include "model/gcode/dialect.h"
 
 #include <cmath>
 

@@ -1,0 +1,69 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Fails when a source file includes from a layer above its own. Run as
+#   cmake -DROOT=<source root> -P tests/layers.cmake
+# The layers, lowest first: model ← formats, gcode ← document; model, gcode ← emulator ← serial; ui; app.
+# Includes are written from the source root ("serial/machinesession.h"), so the first folders name the layer.
+
+cmake_minimum_required(VERSION 3.25)
+
+if(NOT ROOT)
+    message(FATAL_ERROR "usage: cmake -DROOT=<source root> -P layers.cmake")
+endif()
+
+# The layer of a path relative to ROOT, most specific first.
+function(layer_of path out)
+    foreach(pair "model/document:document" "model/formats:formats" "model/gcode:gcode" "model:model"
+            "serial/emulator:emulator" "serial:serial" "ui:ui" "app:app")
+        string(REPLACE ":" ";" pair "${pair}")
+        list(GET pair 0 prefix)
+        list(GET pair 1 name)
+        if(path MATCHES "^${prefix}/")
+            set(${out} ${name} PARENT_SCOPE)
+            return()
+        endif()
+    endforeach()
+    set(${out} "" PARENT_SCOPE)
+endfunction()
+
+# What each layer may include.
+set(allowed_model model)
+set(allowed_formats model formats)
+set(allowed_gcode model gcode)
+set(allowed_document model formats document)
+set(allowed_emulator model gcode emulator)
+set(allowed_serial model gcode emulator serial)
+set(allowed_ui model formats gcode document emulator serial ui)
+set(allowed_app model formats gcode document emulator serial ui app)
+
+file(GLOB_RECURSE sources RELATIVE ${ROOT}
+    ${ROOT}/model/*.h ${ROOT}/model/*.cpp ${ROOT}/serial/*.h ${ROOT}/serial/*.cpp
+    ${ROOT}/ui/*.h ${ROOT}/ui/*.cpp ${ROOT}/app/*.h ${ROOT}/app/*.cpp)
+set(problems "")
+set(checked 0)
+foreach(source IN LISTS sources)
+    layer_of(${source} own)
+    file(STRINGS ${ROOT}/${source} includes REGEX "^[ \t]*#[ \t]*include[ \t]+\"")
+    foreach(line IN LISTS includes)
+        string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]+\"([^\"]+)\".*" "\\1" included "${line}")
+        math(EXPR checked "${checked} + 1")
+        if(NOT included MATCHES "/")
+            if(NOT included MATCHES "\\.moc$")
+                list(APPEND problems "${source}: \"${included}\" names no folder; write it from the source root")
+            endif()
+            continue()
+        endif()
+        layer_of(${included} theirs)
+        if(NOT theirs)
+            list(APPEND problems "${source}: \"${included}\" is in no layer")
+        elseif(NOT theirs IN_LIST allowed_${own})
+            list(APPEND problems "${source} (${own}) includes \"${included}\" (${theirs}), a layer above its own")
+        endif()
+    endforeach()
+endforeach()
+
+list(LENGTH sources files)
+if(problems)
+    list(JOIN problems "\n  " text)
+    message(FATAL_ERROR "layers: ${files} files, ${checked} includes:\n  ${text}")
+endif()
+message(STATUS "layers: ${files} files, ${checked} includes, none reaches up")
