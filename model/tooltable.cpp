@@ -9,16 +9,11 @@
 #include <QCoreApplication>
 
 #include "model/toolvalidation.h"
+#include "model/translate.h"
 
 namespace Toffee {
 
 namespace {
-
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
 
 Error duplicateError(int number)
 {

@@ -7,18 +7,13 @@
 #include <QLocale>
 
 #include "model/textparsing.h"
+#include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
 namespace {
-
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
 
 QString shown(double value, Units units)
 {

@@ -104,7 +104,7 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
     }
     if (trimmed == u"?")
         return refuse(
-            tr("Toffee asks the machine for its status four times a second: the strip at the top shows "
+            tr("Toffee asks the machine for its status several times a second: the strip at the top shows "
                "it."));
     const auto parsed = words(trimmed);
     if (!parsed)
@@ -124,9 +124,8 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
     };
 
     if (halted) {
-        // What the firmware still takes while halted (CARVERA.md); everything else would get "Alarm lock".
-        static const double allowed[]
-            = { 2, 5, 9, 30, 80, 81, 105, 106, 107, 114, 115, 119, 503, 911, 493.4 };
+        // What the firmware still takes while halted (docs/CARVERA.md); everything else would get "Alarm lock".
+        static const double allowed[] = { 2, 5, 9, 30, 80, 81, 105, 106, 107, 114, 115, 119, 503, 911, 999 };
         const bool onlyAllowed = !ws.isEmpty() && std::all_of(ws.cbegin(), ws.cend(), [](const Word &w) {
             return w.letter == 'M' && std::any_of(std::begin(allowed), std::end(allowed), [&w](double m) {
                 return std::fabs(w.value - m) < 1e-6;
@@ -169,9 +168,13 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
     auto toolProblem = [](const Word *t, const QString &missing) -> QString {
         if (!t)
             return missing;
-        if (t->value != std::floor(t->value) || t->value < -1 || t->value > 999999
-            || !MachineSession::validateToolNumber(int(t->value)))
-            return tr("%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(t->text);
+        if (t->value != std::floor(t->value) || t->value < Limits::kEmptySpindle
+            || t->value > Limits::kMaxToolNumber || !MachineSession::validateToolNumber(int(t->value)))
+            return tr("%1 is not a tool number; use %2 to %3 (%4 for an empty spindle).")
+                .arg(t->text)
+                .arg(Limits::kMinToolNumber)
+                .arg(Limits::kMaxToolNumber)
+                .arg(Limits::kEmptySpindle);
         return {};
     };
     if (has('M', 493.2)) {

@@ -9,6 +9,7 @@
 
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
+#include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
@@ -16,13 +17,7 @@ namespace Toffee {
 
 namespace {
 
-constexpr qint64 kEmptySpindle = -1; // "T-1 empty spindle" (CARVERA.md)
-
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
+constexpr qint64 kEmptySpindle = Limits::kEmptySpindle; // "T-1 empty spindle" (docs/CARVERA.md)
 
 // "a,b,c" into up to three numbers; the status report has five axes, the first three are X Y Z.
 bool parseAxes(QByteArrayView text, std::array<double, 3> &out)

@@ -89,10 +89,12 @@ Result<void> MachineSession::validateOffset(const QString &what, double value)
 
 Result<void> MachineSession::validateToolNumber(int tool)
 {
-    if (tool < -1 || tool > 999999)
-        return Error {
-            tr("Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).").arg(tool)
-        };
+    if (tool < Limits::kEmptySpindle || tool > Limits::kMaxToolNumber)
+        return Error { tr("Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).")
+                           .arg(tool)
+                           .arg(Limits::kMinToolNumber)
+                           .arg(Limits::kMaxToolNumber)
+                           .arg(Limits::kEmptySpindle) };
     return {};
 }
 

@@ -6,6 +6,7 @@
 
 #include <QObject>
 
+#include "model/limits.h"
 #include "model/result.h"
 #include "serial/machinelink.h"
 #include "serial/machinereplies.h"
@@ -44,9 +45,9 @@ class MachineSession final : public QObject
 
 public:
     using Done = std::function<void(const SessionResult &result)>;
-    static constexpr double kMinTolerance = 0.02; // the firmware halts below this
-    static constexpr double kDefaultTolerance = 0.1;
-    static constexpr double kMaxOffset = 999.999;
+    static constexpr double kMinTolerance = Limits::kMinBreakTolerance; // the firmware halts below this
+    static constexpr double kDefaultTolerance = Limits::kDefaultBreakTolerance;
+    static constexpr double kMaxOffset = Limits::kMaxMachineOffsetMm;
 
     explicit MachineSession(MachineLink *link, QObject *parent = nullptr);
 

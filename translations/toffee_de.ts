@@ -751,10 +751,6 @@
         <translation>M493.2 braucht ein Werkzeug (M493.2 T2): Ohne Werkzeug hält die Maschine an.</translation>
     </message>
     <message>
-        <source>%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
-        <translation>%1 ist keine Werkzeugnummer; verwenden Sie 0 bis 999999 (-1 für eine leere Spindel).</translation>
-    </message>
-    <message>
         <source>M493.2 makes T%1 the active tool but keeps the current TLO, which belongs to the tool measured before. Probe T%1 or restore its TLO before cutting.</source>
         <translation>M493.2 macht T%1 zum aktiven Werkzeug, behält aber die aktuelle TLO, die zum zuvor gemessenen Werkzeug gehört. Vermessen Sie T%1 oder stellen Sie seine TLO wieder her, bevor Sie schneiden.</translation>
     </message>
@@ -779,8 +775,12 @@
         <translation>%1 bewegt die Maschine.</translation>
     </message>
     <message>
-        <source>Toffee asks the machine for its status four times a second: the strip at the top shows it.</source>
-        <translation>Toffee fragt den Zustand der Maschine viermal pro Sekunde ab: Die Leiste oben zeigt ihn.</translation>
+        <source>Toffee asks the machine for its status several times a second: the strip at the top shows it.</source>
+        <translation>Toffee fragt den Zustand der Maschine mehrmals pro Sekunde ab: Die Leiste oben zeigt ihn.</translation>
+    </message>
+    <message>
+        <source>%1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
+        <translation>%1 ist keine Werkzeugnummer; verwenden Sie %2 bis %3 (%4 für eine leere Spindel).</translation>
     </message>
 </context>
 <context>
@@ -1240,10 +1240,6 @@
         <translation>%1 muss eine Zahl von -%2 bis %2 mm sein.</translation>
     </message>
     <message>
-        <source>Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
-        <translation>Werkzeug %1 ist keine Werkzeugnummer; verwenden Sie 0 bis 999999 (-1 für eine leere Spindel).</translation>
-    </message>
-    <message>
         <source>The machine answered but sent no status report; is this a Carvera?</source>
         <translation>Die Maschine hat geantwortet, aber keinen Statusbericht gesendet; ist das eine Carvera?</translation>
     </message>
@@ -1322,6 +1318,10 @@
     <message>
         <source>The machine&apos;s offset report (M493.4) holds values no machine can have: "%1". Nothing was recorded; check the offsets on the machine before you cut.</source>
         <translation>Der Korrekturbericht der Maschine (M493.4) enthält Werte, die keine Maschine haben kann: „%1“. Nichts wurde gespeichert; prüfen Sie die Korrekturen an der Maschine, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
+        <translation>Werkzeug %1 ist keine Werkzeugnummer; verwenden Sie %2 bis %3 (%4 für eine leere Spindel).</translation>
     </message>
 </context>
 <context>

@@ -751,10 +751,6 @@
         <translation>M493.2 需要指定刀具（M493.2 T2）：否则机床会停机。</translation>
     </message>
     <message>
-        <source>%1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
-        <translation>%1 不是有效刀具号；请使用 0 到 999999（空主轴为 -1）。</translation>
-    </message>
-    <message>
         <source>M493.2 makes T%1 the active tool but keeps the current TLO, which belongs to the tool measured before. Probe T%1 or restore its TLO before cutting.</source>
         <translation>M493.2 会将 T%1 设为当前刀具，但保留当前 TLO，而该 TLO 属于之前测量的刀具。切削前请对 T%1 对刀或恢复其 TLO。</translation>
     </message>
@@ -779,8 +775,12 @@
         <translation>%1 会移动机床。</translation>
     </message>
     <message>
-        <source>Toffee asks the machine for its status four times a second: the strip at the top shows it.</source>
-        <translation>Toffee 每秒向机床查询四次状态：顶部的状态栏会显示它。</translation>
+        <source>Toffee asks the machine for its status several times a second: the strip at the top shows it.</source>
+        <translation>Toffee 每秒多次向机床查询状态：顶部的状态栏会显示它。</translation>
+    </message>
+    <message>
+        <source>%1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
+        <translation>%1 不是刀具号；请使用 %2 到 %3（%4 表示主轴为空）。</translation>
     </message>
 </context>
 <context>
@@ -1240,10 +1240,6 @@
         <translation>%1 必须是 -%2 到 %2 mm 之间的数字。</translation>
     </message>
     <message>
-        <source>Tool %1 is not a tool number; use 0 to 999999 (-1 for an empty spindle).</source>
-        <translation>刀具 %1 不是有效刀具号；请使用 0 到 999999（空主轴为 -1）。</translation>
-    </message>
-    <message>
         <source>The machine answered but sent no status report; is this a Carvera?</source>
         <translation>机床有回应，但没有发送状态报告；这是 Carvera 吗？</translation>
     </message>
@@ -1322,6 +1318,10 @@
     <message>
         <source>The machine&apos;s offset report (M493.4) holds values no machine can have: "%1". Nothing was recorded; check the offsets on the machine before you cut.</source>
         <translation>机器的偏置报告（M493.4）含有任何机器都不可能有的数值：“%1”。未记录任何内容；切削前请在机器上检查偏置。</translation>
+    </message>
+    <message>
+        <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
+        <translation>刀具 %1 不是刀具号；请使用 %2 到 %3（%4 表示主轴为空）。</translation>
     </message>
 </context>
 <context>

@@ -35,7 +35,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, ToolDocument *docu
     m_tolerance->setAccessibleName(tr("Break-test tolerance in millimetres"));
     // Below the machine's minimum the field still takes what is typed, so that Run can refuse it with the
     // reason; a field that quietly turned 0.01 into 0.02 tested against a tolerance nobody chose.
-    m_tolerance->setRange(0.001, 99.999); // beyond 5 mm Run refuses it with the reason too
+    m_tolerance->setRange(0.001, MachineSession::kMaxOffset);
     m_tolerance->setDecimals(3);
     m_tolerance->setSingleStep(0.01);
     m_tolerance->setSuffix(u" mm"_s);

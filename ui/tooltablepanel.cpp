@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 
 #include "model/document/tooltablemodel.h"
+#include "model/limits.h"
 #include "ui/tooltabledelegate.h"
 
 using namespace Qt::StringLiterals;
@@ -77,9 +78,10 @@ void ToolTablePanel::fitColumns()
     m_view->setColumnWidth(ToolTableModel::DescriptionColumn,
         std::clamp(m_view->columnWidth(ToolTableModel::DescriptionColumn), 24 * text, 40 * text));
     // Room for what a recording adds later ("-999.999 (by hand) — BROKEN?"), so that it is never cut off.
-    const int tlo
-        = m_view->fontMetrics().horizontalAdvance(
-              ToolTableModel::tr("%1 — BROKEN?").arg(ToolTableModel::tr("%1 (by hand)").arg(u"-999.999"_s)))
+    const int tlo = m_view->fontMetrics().horizontalAdvance(
+                        ToolTableModel::tr("%1 — BROKEN?")
+                            .arg(ToolTableModel::tr("%1 (by hand)")
+                                     .arg(QString::number(-Limits::kMaxGeometryMm, 'f', 3))))
         + 2 * text;
     m_view->setColumnWidth(ToolTableModel::MeasuredTloColumn,
         std::max(m_view->columnWidth(ToolTableModel::MeasuredTloColumn), tlo));

@@ -10,6 +10,7 @@
 #include "model/formats/tablereading.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
+#include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
@@ -53,12 +54,6 @@ constexpr const char *kColumnNames[ColumnCount] = {
     "units",
     "linuxcnc",
 };
-
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
 
 // One row: each field a view into the file, or into `unescaped` for a quoted field with doubled quotes.
 struct Record

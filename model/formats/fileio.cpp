@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/formats/fileio.h"
+#include "model/translate.h"
 
 #include <cerrno>
 #include <cstring>
@@ -15,12 +16,6 @@
 namespace Toffee {
 
 namespace {
-
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
 
 QString systemError(int error)
 {

@@ -11,6 +11,7 @@
 #include "model/formats/tablereading.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
+#include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
@@ -44,12 +45,6 @@ const auto BreakTestFailed = "break_test_failed"_L1;
 const auto ReferenceMz = "reference_mz"_L1;
 const auto LinuxCnc = "linuxcnc"_L1;
 } // namespace Key
-
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
 
 // A JSON value that is not an object or array (those are parsed and kept as "Composite").
 struct Scalar

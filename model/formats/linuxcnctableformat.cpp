@@ -12,18 +12,13 @@
 #include "model/formats/tablereading.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
+#include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
 namespace {
-
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
 
 bool isSpace(char c)
 {

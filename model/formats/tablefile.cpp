@@ -9,20 +9,13 @@
 
 #include "model/formats/fileio.h"
 #include "model/textparsing.h"
+#include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-namespace {
-
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
-
-} // namespace
+namespace { } // namespace
 
 std::optional<TableFormat> formatForPath(const QString &path)
 {

@@ -5,19 +5,16 @@
 
 #include <QCoreApplication>
 
+#include "model/limits.h"
+#include "model/translate.h"
+
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
 namespace {
 
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
-
-constexpr int kMaxOffsetNumber = 999; // FANUC offset counts go from 32 to 999 (DIALECTS.md)
+constexpr int kMaxOffsetNumber = Limits::kMaxOffsetNumber; // FANUC offset counts go from 32 to 999
 
 QString value(double v, Units units)
 {

@@ -12,7 +12,7 @@
 namespace Toffee {
 
 // The controllers Toffee speaks. One tool table; what differs is the G-code that writes offsets into the
-// controller and how a program's positions are compensated (see DIALECTS.md).
+// controller and how a program's positions are compensated (see docs/DIALECTS.md).
 enum class Dialect { Carvera, Fanuc, Fagor8055M, AllenBradley9, Aerotech, LinuxCnc };
 
 struct DialectInfo

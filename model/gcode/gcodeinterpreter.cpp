@@ -7,6 +7,7 @@
 
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
+#include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
@@ -14,18 +15,12 @@ namespace Toffee {
 
 namespace {
 
-// Free functions translate in the context lupdate gives them: the namespace.
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Toffee", text);
-}
-
-constexpr int kMaxOffsetNumber = 999;
-constexpr double kMaxGeometry = 999.999;
-constexpr double kMaxWear = 99.999;
+constexpr int kMaxOffsetNumber = Limits::kMaxOffsetNumber;
+constexpr double kMaxGeometry = Limits::kMaxGeometryMm;
+constexpr double kMaxWear = Limits::kMaxWearMm;
 // Controllers take at most eight digits before the point (FANUC's +-99999999). The bound also keeps every
 // position a program can reach finite: without it, two G91 moves of 1e308 end at infinity.
-constexpr double kMaxWordValue = 99999999.0;
+constexpr double kMaxWordValue = Limits::kMaxWordValue;
 
 bool isLetter(char c)
 {

@@ -33,9 +33,9 @@ struct SimulatedMove
     QList<Position> points; // start to end, both included, when sampling
 };
 
-// Runs G-code as a controller of the given dialect would, with the offsets of DIALECTS.md applied, and
+// Runs G-code as a controller of the given dialect would, with the offsets of docs/DIALECTS.md applied, and
 // reports where each motion block leaves the machine. Shared by `toffee-cli simulate`, the conformance suite
-// and the emulator's idea of a machine. The rules, each from DIALECTS.md:
+// and the emulator's idea of a machine. The rules, each from docs/DIALECTS.md:
 // - a length offset takes effect when the length axis next moves (G17: Z, G18: Y, G19: X);
 // - FANUC G43 Hn adds, G44 Hn subtracts, G49 or H0 cancel, a new H replaces; AB the same, but H0 keeps the
 // mode;

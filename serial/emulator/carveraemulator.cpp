@@ -327,7 +327,7 @@ void CarveraEmulator::execute(const QByteArray &line)
         const double tolerance = w.number('H', bad).value_or(0.1);
         if (bad)
             return refuse({});
-        if (tolerance < 0.02) {
+        if (tolerance < Limits::kMinBreakTolerance) {
             say("ERROR: Tool Break Check - tolerance set too small");
             halt(4);
             finish();

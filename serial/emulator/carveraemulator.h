@@ -13,7 +13,7 @@
 
 namespace Toffee {
 
-// A Carvera controller as the firmware behaves (see CARVERA.md): it keeps positions, the reference and
+// A Carvera controller as the firmware behaves (see docs/CARVERA.md): it keeps positions, the reference and
 // current tool MCS Z, a tool setter, the physical length of each tool (so a broken tool really measures
 // shorter) and the halt state, and answers with the firmware's own strings. Not a mock: tests and
 // toffee-emulator drive it.

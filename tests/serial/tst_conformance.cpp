@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The conformance suite: one row for every statement of the seeds and every worked example of DIALECTS.md,
+// The conformance suite: one row for every statement of the seeds and every worked example of docs/DIALECTS.md,
 // each naming the document and the sentence it checks, run through the interpreter the emulator and the CLI
 // share.
 #include <cmath>
@@ -82,7 +82,7 @@ private Q_SLOTS:
         row("003: FAGOR 'G44 cancels tool length compensation'", G, u"1:10"_s, "D1 G43\nG0 Z50\nG44\nG0 Z50",
             4, kAny, kAny, 50);
 
-        // DIALECTS.md: FANUC
+        // docs/DIALECTS.md: FANUC
         row("DIALECTS FANUC: 'The stored value's sign flips the direction'", F, u"3:-5"_s,
             "G90 G43 G0 Z100 H3", 0, kAny, kAny, 95);
         row("DIALECTS FANUC: 'OFS[n] = length geometry + length wear'", F, u"1:100/-0.1"_s,
@@ -124,7 +124,7 @@ private Q_SLOTS:
         row("DIALECTS FANUC: 'geometry +-999.999' beyond it: PS0032", F, {}, "G10 L10 P1 R1000", 0, kAny,
             kAny, kAny, u"PS0032"_s);
 
-        // DIALECTS.md: FAGOR 8055M
+        // docs/DIALECTS.md: FAGOR 8055M
         row("DIALECTS FAGOR: 'Applied value = L + K (length + length wear)'", G, u"1:10/-0.5"_s,
             "D1 G43\nG0 Z0", 0, kAny, kAny, 9.5);
         row("DIALECTS FAGOR: 'from D, else from the offset linked to the tool'", G, u"1:10;2:-4"_s,
@@ -139,7 +139,7 @@ private Q_SLOTS:
         row("DIALECTS FAGOR: 'cancelled by G44 and by G74 (home search)'", G, u"1:10"_s,
             "D1 G43\nG0 Z50\nG74\nG0 Z50", 4, kAny, kAny, 50);
 
-        // seeds/004 and DIALECTS.md: Allen-Bradley 9/Series
+        // seeds/004 and docs/DIALECTS.md: Allen-Bradley 9/Series
         const QString ab = u"1:5;2:7"_s;
         const QByteArray sequence = "G43 H01 G0 Z0\nH02 G0 Z0\nG44 G0 Z0\nG49 G0 Z0\nG43 G0 Z0\nH0 G0 Z0";
         row("DIALECTS AB sequence: 'G43 H01'", A, ab, sequence, 1, kAny, kAny, 5);
@@ -167,7 +167,7 @@ private Q_SLOTS:
         row("004: 'L10 Geometry table, L11 Wear table'", A, {}, "G90 G10 L10 P1 R4\nG10 L11 P1 R-0.2", 0,
             kAny, kAny, kAny, {}, u"1:4/-0.2"_s);
 
-        // DIALECTS.md: LinuxCNC worked example (T100 Z+1, T200 Z+0.1, T300 Z+0.01)
+        // docs/DIALECTS.md: LinuxCNC worked example (T100 Z+1, T200 Z+0.1, T300 Z+0.01)
         const QString lc = u"100:1;200:0.1;300:0.01"_s;
         row("DIALECTS LinuxCNC worked: 'T100 M6 -> 0'", L, lc, "T100 M6\nG0 Z0", 0, kAny, kAny, 0);
         row("DIALECTS LinuxCNC worked: 'G43 -> 1'", L, lc, "T100 M6\nG43\nG0 Z0", 0, kAny, kAny, 1);
@@ -197,7 +197,7 @@ private Q_SLOTS:
         row("DIALECTS LinuxCNC: 'P ... not in the table -> error'", L, lc, "G10 L1 P7 Z5", 0, kAny, kAny,
             kAny, u"not in the tool table"_s);
 
-        // seeds/001 and DIALECTS.md: Aerotech Automation1 cutter offset compensation
+        // seeds/001 and docs/DIALECTS.md: Aerotech Automation1 cutter offset compensation
         const QByteArray setup = "G44 X Y Z\nCutterCompensationSetOffsets([1, -2, 3])\nG90 G1 X0 Y0 Z0\n";
         row("DIALECTS Aerotech worked: 'G143 G1 X10 Y10 ends at (11, 8, 3)'", R, {},
             setup + "G143 G1 X10 Y10", 4, 11, 8, 3);
@@ -229,7 +229,7 @@ private Q_SLOTS:
         row("DIALECTS Aerotech: 'In Automation1, G43/G44 are not tool length'", R, {}, "G43 H1", 0, kAny,
             kAny, kAny, u"not tool length"_s);
 
-        // seeds/000 and DIALECTS.md: Carvera
+        // seeds/000 and docs/DIALECTS.md: Carvera
         row("DIALECTS Carvera: 'No G43/G49: the TLO is always applied'", C, {}, "M493.3 Z-33.388\nG0 Z0", 0,
             kAny, kAny, -33.388);
         row("000: 'M493.3 Z-30.488' (adding 2.9 mm)", C, {}, "M493.3 Z-33.388\nM493.3 Z-30.488\nG0 Z10", 0,

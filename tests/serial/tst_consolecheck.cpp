@@ -39,7 +39,8 @@ private Q_SLOTS:
         QTest::newRow("probe while halted") << u"M491"_s << true << Verdict::Refuse << u"Unlock"_s;
         QTest::newRow("home while halted") << u"$H"_s << true << Verdict::Refuse << u"Unlock"_s;
         QTest::newRow("unlock while halted") << u"$X"_s << true << Verdict::Send << QString();
-        QTest::newRow("report while halted") << u"M493.4"_s << true << Verdict::Send << QString();
+        QTest::newRow("report while halted") << u"M493.4"_s << true << Verdict::Refuse << u"Unlock"_s;
+        QTest::newRow("reset while halted") << u"M999"_s << true << Verdict::Send << QString();
         QTest::newRow("spindle off while halted") << u"M5"_s << true << Verdict::Send << QString();
         QTest::newRow("status while halted") << u"?"_s << true << Verdict::Refuse << u"strip"_s;
         // Asked first: everything that moves the machine or changes the offset it cuts with.

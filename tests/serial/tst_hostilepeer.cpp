@@ -32,7 +32,7 @@ constexpr bool kUnderAsan = true;
 constexpr bool kUnderAsan = false;
 #endif
 
-// The machine, played by the test: the Carvera's strings (CARVERA.md), with a misbehaviour or two.
+// The machine, played by the test: the Carvera's strings (docs/CARVERA.md), with a misbehaviour or two.
 class PtyMachine
 {
 public:
