@@ -4,6 +4,8 @@
 #include "serial/emulatortransport.h"
 #include "serial/serialporttransport.h"
 
+using namespace Qt::StringLiterals;
+
 namespace Toffee {
 
 MachineConnection::MachineConnection(QObject *parent)
@@ -131,11 +133,100 @@ bool MachineConnection::canOperate() const
     return m_state == State::Connected && !isBusy() && !m_halted;
 }
 
+bool MachineConnection::perform(const QString &what, bool evenIfHalted,
+    const std::function<void(MachineSession *, Done)> &operation, Done done)
+{
+    if ((m_halted && !evenIfHalted) || !beginOperation(what))
+        return false;
+    operation(m_session.get(), [this, done](const SessionResult &r) {
+        endOperation(r);
+        if (done)
+            done(r);
+    });
+    return true;
+}
+
+std::optional<int> MachineConnection::activeTool() const
+{
+    return m_session ? m_session->activeTool() : std::nullopt;
+}
+
+QString MachineConnection::activeToolName() const
+{
+    const auto tool = activeTool();
+    return tool && *tool >= 0 ? u"T"_s + QString::number(*tool) : tr("the current tool");
+}
+
+bool MachineConnection::probe(Done done)
+{
+    return perform(
+        tr("Probing %1…").arg(activeToolName()), false,
+        [](MachineSession *s, Done d) { s->probe(std::move(d)); }, std::move(done));
+}
+
+bool MachineConnection::breakTest(double tolerance, Done done)
+{
+    return perform(
+        tr("Break-testing %1…").arg(activeToolName()), false,
+        [tolerance](MachineSession *s, Done d) { s->breakTest(tolerance, std::move(d)); }, std::move(done));
+}
+
+bool MachineConnection::setTlo(double tlo, Done done)
+{
+    return perform(
+        tr("Setting %1's TLO…").arg(activeToolName()), false,
+        [tlo](MachineSession *s, Done d) { s->setTlo(tlo, std::move(d)); }, std::move(done));
+}
+
+bool MachineConnection::setTloAboveZ0(double height, Done done)
+{
+    return perform(
+        tr("Setting %1's TLO…").arg(activeToolName()), false,
+        [height](MachineSession *s, Done d) { s->setTloAboveZ0(height, std::move(d)); }, std::move(done));
+}
+
+bool MachineConnection::restoreTlo(int tool, double tlo, Done done)
+{
+    return perform(
+        tr("Restoring T%1…").arg(tool), false,
+        [tool, tlo](MachineSession *s, Done d) { s->restoreTlo(tool, tlo, std::move(d)); }, std::move(done));
+}
+
+bool MachineConnection::unlock(Done done)
+{
+    return perform(
+        tr("Unlock"), true, [](MachineSession *s, Done d) { s->unlock(std::move(d)); }, std::move(done));
+}
+
+bool MachineConnection::sendLine(const QByteArray &line, std::function<void(const CommandReply &)> done)
+{
+    if (!beginOperation(QString::fromUtf8(line)))
+        return false;
+    m_link->send(line, MachineLink::kMotionTimeoutMs, [this, done](const CommandReply &reply) {
+        // Offsets the reply reports (an M493.3 or M493.4 typed by hand) are the machine's now.
+        SessionResult result;
+        for (const QByteArray &l : reply.lines) {
+            if (auto tlo = parseTloReport(l))
+                result.tlo = tlo;
+        }
+        result.tool = activeTool();
+        endOperation(result);
+        if (done)
+            done(reply);
+    });
+    return true;
+}
+
+void MachineConnection::stop()
+{
+    if (m_session)
+        m_session->abort();
+}
+
 void MachineConnection::refreshOffsets()
 {
-    if (m_state != State::Connected || m_halted || !beginOperation(tr("Reading the offsets…")))
-        return;
-    m_session->report([this](const SessionResult &r) { endOperation(r); });
+    perform(
+        tr("Reading the offsets…"), false, [](MachineSession *s, Done d) { s->report(std::move(d)); }, {});
 }
 
 bool MachineConnection::beginOperation(const QString &what)

@@ -48,6 +48,26 @@ public:
     static constexpr int kStaleAfterMs = 1500;
     [[nodiscard]] bool isStatusStale() const;
 
+    // The machine's operations, by name. Each runs only when the machine can take it (canOperate; unlock
+    // needs only a connection), shows as the one operation running, and reports one result; false when it
+    // did not start. Panels reach the machine through these, never through the session.
+    using Done = MachineSession::Done;
+    bool probe(Done done);
+    bool breakTest(double tolerance, Done done);
+    bool setTlo(double tlo, Done done);
+    bool setTloAboveZ0(double height, Done done);
+    bool restoreTlo(int tool, double tlo, Done done);
+    bool unlock(Done done);
+    // A line typed in the console, sent as it is (ConsoleCheck has judged it first); offsets in its reply are
+    // announced like any operation's.
+    bool sendLine(const QByteArray &line, std::function<void(const CommandReply &)> done);
+    // Stops whatever the machine does now (Ctrl-X); it halts, and Unlock follows.
+    void stop();
+    // The tool the machine reports in the spindle, if known.
+    [[nodiscard]] std::optional<int> activeTool() const;
+    // "T2", or "the current tool" when the machine has not said.
+    [[nodiscard]] QString activeToolName() const;
+
     // One operation at a time, whichever panel starts it: begin returns false while another runs.
     bool beginOperation(const QString &what);
     // Reads the offsets again (M493.4) when nothing else runs, so that every panel shows them as they are.
@@ -79,6 +99,9 @@ Q_SIGNALS:
 private:
     void setState(State state);
     void setHalt(bool halted, std::optional<int> reason);
+    // Runs `operation` on the session as the one operation `what`, ending it with the result before `done`.
+    bool perform(const QString &what, bool evenIfHalted,
+        const std::function<void(MachineSession *, Done)> &operation, Done done);
     void teardown();
 
     State m_state = State::Disconnected;

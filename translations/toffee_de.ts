@@ -605,10 +605,6 @@
         <translation>Angehalten lassen</translation>
     </message>
     <message>
-        <source>Unlock failed</source>
-        <translation>Entsperren fehlgeschlagen</translation>
-    </message>
-    <message>
         <source>The machine reports no tool in the spindle.</source>
         <translation>Die Maschine meldet kein Werkzeug in der Spindel.</translation>
     </message>
@@ -625,20 +621,12 @@
         <translation>Die TLO %2 von T%1 wurde von Hand gesetzt (%3), nicht gemessen: Entspricht dieser Wert nicht der tatsächlichen Länge des Werkzeugs, meldet der Test das Werkzeug als gebrochen und hält die Maschine an.</translation>
     </message>
     <message>
-        <source>the current tool</source>
-        <translation>das aktuelle Werkzeug</translation>
-    </message>
-    <message>
         <source>Break-test %1?</source>
         <translation>Bruchtest für %1?</translation>
     </message>
     <message>
         <source>The machine will move to the tool setter and measure %1 again, then compare it with its TLO (tolerance %2). Keep hands clear.</source>
         <translation>Die Maschine fährt zum Werkzeugtaster, misst %1 erneut und vergleicht das Ergebnis mit der TLO (Toleranz %2). Halten Sie die Hände fern.</translation>
-    </message>
-    <message>
-        <source>Break-testing %1…</source>
-        <translation>Bruchtest für %1 …</translation>
     </message>
     <message>
         <source>The tool</source>
@@ -1161,6 +1149,30 @@
     <message>
         <source>Reading the offsets…</source>
         <translation>Korrekturen werden gelesen …</translation>
+    </message>
+    <message>
+        <source>the current tool</source>
+        <translation>das aktuelle Werkzeug</translation>
+    </message>
+    <message>
+        <source>Probing %1…</source>
+        <translation>Vermesse %1 …</translation>
+    </message>
+    <message>
+        <source>Break-testing %1…</source>
+        <translation>Bruchtest für %1 …</translation>
+    </message>
+    <message>
+        <source>Setting %1&apos;s TLO…</source>
+        <translation>TLO von %1 wird gesetzt …</translation>
+    </message>
+    <message>
+        <source>Restoring T%1…</source>
+        <translation>Stelle T%1 wieder her …</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>Entsperren</translation>
     </message>
 </context>
 <context>
@@ -1716,10 +1728,6 @@ Trotzdem speichern?</translation>
         <translation>Die Korrektur wurde nicht gesetzt</translation>
     </message>
     <message>
-        <source>the current tool</source>
-        <translation>das aktuelle Werkzeug</translation>
-    </message>
-    <message>
         <source>Change %1&apos;s tool length offset?</source>
         <translation>Werkzeuglängenkorrektur von %1 ändern?</translation>
     </message>
@@ -1732,10 +1740,6 @@ The next cut uses the new offset. The table records it as set by hand, not measu
 TLO %3
 
 Der nächste Schnitt verwendet die neue Korrektur. Die Tabelle speichert sie als von Hand gesetzt, nicht gemessen.</translation>
-    </message>
-    <message>
-        <source>Setting %1&apos;s TLO…</source>
-        <translation>TLO von %1 wird gesetzt …</translation>
     </message>
     <message>
         <source>Nothing was written to the tool table.</source>
@@ -1805,16 +1809,8 @@ Der nächste Schnitt verwendet die neue Korrektur. Die Tabelle speichert sie als
         <translation>In die Werkzeugtabelle wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <source>the current tool</source>
-        <translation>das aktuelle Werkzeug</translation>
-    </message>
-    <message>
         <source>Probe %1?</source>
         <translation>%1 vermessen?</translation>
-    </message>
-    <message>
-        <source>Probing %1…</source>
-        <translation>Vermesse %1 …</translation>
     </message>
     <message>
         <source>there is no tool in the spindle.</source>
@@ -1827,10 +1823,6 @@ Der nächste Schnitt verwendet die neue Korrektur. Die Tabelle speichert sie als
     <message>
         <source>Restore T%1?</source>
         <translation>T%1 wiederherstellen?</translation>
-    </message>
-    <message>
-        <source>Restoring T%1…</source>
-        <translation>Stelle T%1 wieder her …</translation>
     </message>
     <message>
         <source>Restoring failed</source>

@@ -605,10 +605,6 @@
         <translation>保持停机</translation>
     </message>
     <message>
-        <source>Unlock failed</source>
-        <translation>解锁失败</translation>
-    </message>
-    <message>
         <source>The machine reports no tool in the spindle.</source>
         <translation>机床报告主轴上没有刀具。</translation>
     </message>
@@ -625,20 +621,12 @@
         <translation>T%1 的 TLO %2 是手动设置的（%3），未测量：如果该值不是刀具的实际长度，检测会报告断刀并使机床停机。</translation>
     </message>
     <message>
-        <source>the current tool</source>
-        <translation>当前刀具</translation>
-    </message>
-    <message>
         <source>Break-test %1?</source>
         <translation>对 %1 进行断刀检测？</translation>
     </message>
     <message>
         <source>The machine will move to the tool setter and measure %1 again, then compare it with its TLO (tolerance %2). Keep hands clear.</source>
         <translation>机床将移动到对刀仪，重新测量 %1，然后与其 TLO 比较（公差 %2）。手请远离机床。</translation>
-    </message>
-    <message>
-        <source>Break-testing %1…</source>
-        <translation>正在对 %1 进行断刀检测…</translation>
     </message>
     <message>
         <source>The tool</source>
@@ -1161,6 +1149,30 @@
     <message>
         <source>Reading the offsets…</source>
         <translation>正在读取补偿…</translation>
+    </message>
+    <message>
+        <source>the current tool</source>
+        <translation>当前刀具</translation>
+    </message>
+    <message>
+        <source>Probing %1…</source>
+        <translation>正在对 %1 对刀…</translation>
+    </message>
+    <message>
+        <source>Break-testing %1…</source>
+        <translation>正在对 %1 进行断刀检测…</translation>
+    </message>
+    <message>
+        <source>Setting %1&apos;s TLO…</source>
+        <translation>正在设置 %1 的 TLO…</translation>
+    </message>
+    <message>
+        <source>Restoring T%1…</source>
+        <translation>正在恢复 T%1…</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>解锁</translation>
     </message>
 </context>
 <context>
@@ -1716,10 +1728,6 @@ Save anyway?</source>
         <translation>补偿未被设置</translation>
     </message>
     <message>
-        <source>the current tool</source>
-        <translation>当前刀具</translation>
-    </message>
-    <message>
         <source>Change %1&apos;s tool length offset?</source>
         <translation>更改 %1 的刀具长度补偿？</translation>
     </message>
@@ -1732,10 +1740,6 @@ The next cut uses the new offset. The table records it as set by hand, not measu
 TLO %3
 
 下一次切削将使用新的补偿。刀具表会将其记录为手动设置，而非测量值。</translation>
-    </message>
-    <message>
-        <source>Setting %1&apos;s TLO…</source>
-        <translation>正在设置 %1 的 TLO…</translation>
     </message>
     <message>
         <source>Nothing was written to the tool table.</source>
@@ -1805,16 +1809,8 @@ TLO %3
         <translation>刀具表中未写入任何内容。</translation>
     </message>
     <message>
-        <source>the current tool</source>
-        <translation>当前刀具</translation>
-    </message>
-    <message>
         <source>Probe %1?</source>
         <translation>对 %1 对刀？</translation>
-    </message>
-    <message>
-        <source>Probing %1…</source>
-        <translation>正在对 %1 对刀…</translation>
     </message>
     <message>
         <source>there is no tool in the spindle.</source>
@@ -1827,10 +1823,6 @@ TLO %3
     <message>
         <source>Restore T%1?</source>
         <translation>恢复 T%1？</translation>
-    </message>
-    <message>
-        <source>Restoring T%1…</source>
-        <translation>正在恢复 T%1…</translation>
     </message>
     <message>
         <source>Restoring failed</source>

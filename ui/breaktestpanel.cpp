@@ -105,7 +105,7 @@ void BreakTestPanel::updateState()
 
 QString BreakTestPanel::referenceWarning() const
 {
-    const auto tool = m_connection->session() ? m_connection->session()->activeTool() : std::nullopt;
+    const auto tool = m_connection->activeTool();
     if (!tool || *tool < 0)
         return tr("The machine reports no tool in the spindle.");
     const Tool *stored = m_document->table().find(*tool);
@@ -142,8 +142,8 @@ void BreakTestPanel::run(bool confirm)
         m_tolerance->selectAll();
         return;
     }
-    const auto tool = m_connection->session()->activeTool();
-    const QString name = tool && *tool >= 0 ? u"T"_s + QString::number(*tool) : tr("the current tool");
+    const auto tool = m_connection->activeTool();
+    const QString name = m_connection->activeToolName();
     if (confirm) {
         QMessageBox box(QMessageBox::Question, tr("Break-test %1?").arg(name),
             tr("The machine will move to the tool setter and measure %1 again, then compare it with its "
@@ -160,15 +160,10 @@ void BreakTestPanel::run(bool confirm)
         if (box.exec() != QMessageBox::Yes)
             return;
     }
-    if (!m_connection->beginOperation(tr("Break-testing %1…").arg(name)))
-        return;
-    m_verdict->clear();
     // Whether the TLO compared against was set by hand, as it was before the verdict is recorded.
     const Tool *stored = tool ? m_document->table().find(*tool) : nullptr;
-    m_comparedWithHandSet = stored && stored->measuredTlo && stored->tloSource == TloSource::Manual;
-    m_testedTool = tool.value_or(-1);
-    m_connection->session()->breakTest(tolerance, [this](const SessionResult &r) {
-        m_connection->endOperation(r);
+    const bool handSet = stored && stored->measuredTlo && stored->tloSource == TloSource::Manual;
+    const bool started = m_connection->breakTest(tolerance, [this](const SessionResult &r) {
         // A broken tool is marked in the table (and its file, once saved) until it is probed again.
         if (r.breakTest && r.tool && *r.tool >= 0
             && (r.ok() || r.outcome == SessionResult::Outcome::ToolBroken))
@@ -176,6 +171,11 @@ void BreakTestPanel::run(bool confirm)
         showResult(r);
         Q_EMIT finished(r);
     });
+    if (started) {
+        m_verdict->clear();
+        m_comparedWithHandSet = handSet;
+        m_testedTool = tool.value_or(-1);
+    }
 }
 
 void BreakTestPanel::showResult(const SessionResult &r)
@@ -226,13 +226,8 @@ void BreakTestPanel::raiseBrokenAlarm(const SessionResult &r)
     box.setDefaultButton(leave);
     box.setEscapeButton(leave);
     box.exec();
-    if (box.clickedButton() != unlock || !m_connection->beginOperation(tr("Unlock")))
-        return;
-    m_connection->session()->unlock([this](const SessionResult &u) {
-        m_connection->endOperation(u);
-        if (!u.ok())
-            QMessageBox::warning(this, tr("Unlock failed"), u.message);
-    });
+    if (box.clickedButton() == unlock)
+        Q_EMIT unlockRequested(); // the one unlock flow, the strip's
 }
 
 } // namespace Toffee

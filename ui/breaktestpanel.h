@@ -33,6 +33,8 @@ public:
 
 Q_SIGNALS:
     void finished(const Toffee::SessionResult &result);
+    // The operator chose Unlock in the broken-tool alarm.
+    void unlockRequested();
 
 private:
     void updateState();

@@ -140,43 +140,35 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
             return;
         }
     }
-    if (!m_connection->beginOperation(command)) {
-        note(tr("the machine is busy with %1; wait for it").arg(m_connection->operation()));
-        return;
-    }
     const bool setsTlo = check.setsTlo;
-    m_connection->link()->send(
-        command.toUtf8(), MachineLink::kMotionTimeoutMs, [this, setsTlo](const CommandReply &reply) {
-            SessionResult result;
-            const auto tool = m_connection->session() ? m_connection->session()->activeTool() : std::nullopt;
-            if (setsTlo && reply.ok()) {
-                for (const QByteArray &line : reply.lines) {
-                    if (auto tlo = parseTloReport(line))
-                        result.tlo = tlo;
-                }
-                result.tool = tool;
-            }
-            m_connection->endOperation(result);
-            if (!reply.ok()) {
-                note(reply.message);
-                m_connection->refreshOffsets();
-                return;
-            }
-            // An offset set here is recorded like one set in the panel: by hand, for the tool in the spindle.
-            if (setsTlo && result.tlo && tool && *tool >= 0) {
-                auto recorded = m_document->recordMeasurement(*tool, result.tlo->tlo(),
-                    QDateTime::currentDateTimeUtc(), TloSource::Manual, result.tlo->referenceMz);
-                note(recorded ? tr("recorded in the table: T%1 TLO %2, set by hand")
-                                    .arg(*tool)
-                                    .arg(millimetres(result.tlo->tlo()))
-                              : tr("the TLO is set on the machine but not recorded: %1")
-                                    .arg(recorded.error().message));
-            }
-            // A typed command may have changed the tool or its offsets: the strip shows the machine as it is
-            // now.
-            if (!setsTlo)
-                m_connection->refreshOffsets();
-        });
+    const bool sent = m_connection->sendLine(command.toUtf8(), [this, setsTlo](const CommandReply &reply) {
+        if (!reply.ok()) {
+            note(reply.message);
+            m_connection->refreshOffsets();
+            return;
+        }
+        // An offset set here is recorded like one set in the panel: by hand, for the tool in the spindle.
+        const auto tool = m_connection->activeTool();
+        std::optional<TloReading> tlo;
+        for (const QByteArray &line : reply.lines) {
+            if (auto t = parseTloReport(line))
+                tlo = t;
+        }
+        if (setsTlo && tlo && tool && *tool >= 0) {
+            auto recorded = m_document->recordMeasurement(
+                *tool, tlo->tlo(), QDateTime::currentDateTimeUtc(), TloSource::Manual, tlo->referenceMz);
+            note(recorded
+                    ? tr("recorded in the table: T%1 TLO %2, set by hand")
+                          .arg(*tool)
+                          .arg(millimetres(tlo->tlo()))
+                    : tr("the TLO is set on the machine but not recorded: %1").arg(recorded.error().message));
+        }
+        // A typed command may have changed the tool or its offsets: the strip shows the machine as it is now.
+        if (!setsTlo)
+            m_connection->refreshOffsets();
+    });
+    if (!sent)
+        note(tr("the machine is busy with %1; wait for it").arg(m_connection->operation()));
 }
 
 bool ConsoleDock::eventFilter(QObject *watched, QEvent *event)

@@ -45,6 +45,7 @@ MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, 
     layout->addWidget(group(tr("Set the offset by hand"), m_offsets));
     layout->addWidget(group(tr("Tool break test"), m_breakTest));
     layout->addStretch(1);
+    connect(m_breakTest, &BreakTestPanel::unlockRequested, m_tlo, &TloPanel::unlock);
     // A probe measures the tool again: the last break test's verdict no longer holds.
     connect(m_probe, &ProbePanel::finished, m_breakTest, [this](const SessionResult &r) {
         if (r.ok())

@@ -524,7 +524,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
             event->ignore();
             return;
         }
-        m_connection->session()->abort();
+        m_connection->stop();
     }
     if (maybeSave()) {
         writeSettings();

@@ -152,8 +152,7 @@ void OffsetEditor::send(bool confirm)
     const auto target = targetTlo();
     if (mode != AboveZ0 && !target)
         return;
-    const auto tool = m_connection->session()->activeTool();
-    const QString name = tool && *tool >= 0 ? u"T"_s + QString::number(*tool) : tr("the current tool");
+    const QString name = m_connection->activeToolName();
     if (confirm
         && QMessageBox::question(this, tr("Change %1's tool length offset?").arg(name),
                tr("Send %1 for %2?\nTLO %3\n\nThe next cut uses the new offset. The table records it as "
@@ -162,10 +161,7 @@ void OffsetEditor::send(bool confirm)
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
-    if (!m_connection->beginOperation(tr("Setting %1's TLO…").arg(name)))
-        return;
     auto done = [this, mode](const SessionResult &r) {
-        m_connection->endOperation(r);
         if (!r.ok()) {
             QMessageBox::warning(this, tr("The offset was not set"),
                 r.message + u"\n\n"_s + tr("Nothing was written to the tool table."));
@@ -185,9 +181,9 @@ void OffsetEditor::send(bool confirm)
                     .arg(r.tlo ? millimetres(r.tlo->tlo()) : u"?"_s, recorded.error().message));
     };
     if (mode == AboveZ0)
-        m_connection->session()->setTloAboveZ0(m_value->value(), done);
+        m_connection->setTloAboveZ0(m_value->value(), done);
     else
-        m_connection->session()->setTlo(*target, done);
+        m_connection->setTlo(*target, done);
 }
 
 } // namespace Toffee

@@ -109,8 +109,7 @@ void ProbePanel::probe(bool confirm)
 {
     if (!m_connection->canOperate())
         return;
-    const auto tool = m_connection->session() ? m_connection->session()->activeTool() : std::nullopt;
-    const QString name = tool && *tool >= 0 ? u"T"_s + QString::number(*tool) : tr("the current tool");
+    const QString name = m_connection->activeToolName();
     if (confirm
         && QMessageBox::question(this, tr("Probe %1?").arg(name),
                tr("The machine will move: up to clearance, over the tool setter, then down until "
@@ -126,11 +125,8 @@ void ProbePanel::probe(bool confirm)
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
-    if (!m_connection->beginOperation(tr("Probing %1…").arg(name)))
-        return;
     m_result->clear();
-    m_connection->session()->probe([this](const SessionResult &r) {
-        m_connection->endOperation(r);
+    m_connection->probe([this](const SessionResult &r) {
         if (r.ok()) {
             const int number = r.tool.value_or(-1);
             auto recorded = number >= 0 ? m_document->recordMeasurement(number, r.tlo->tlo(),
@@ -206,10 +202,7 @@ void ProbePanel::restore(bool confirm)
         if (box.clickedButton() != yes)
             return;
     }
-    if (!m_connection->beginOperation(tr("Restoring T%1…").arg(number)))
-        return;
-    m_connection->session()->restoreTlo(number, tlo, [this, number](const SessionResult &r) {
-        m_connection->endOperation(r);
+    m_connection->restoreTlo(number, tlo, [this, number](const SessionResult &r) {
         if (r.ok())
             m_result->setText(tr("T%1 is active with TLO %2.").arg(number).arg(millimetres(r.tlo->tlo())));
         report(r, tr("Restoring failed"));
@@ -219,8 +212,7 @@ void ProbePanel::restore(bool confirm)
 
 void ProbePanel::cancel()
 {
-    if (m_connection->session())
-        m_connection->session()->abort();
+    m_connection->stop();
 }
 
 } // namespace Toffee

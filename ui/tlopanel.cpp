@@ -274,10 +274,7 @@ void TloPanel::checkStale()
 
 void TloPanel::unlock()
 {
-    if (!m_connection->beginOperation(tr("Unlock")))
-        return;
-    m_connection->session()->unlock([this](const SessionResult &r) {
-        m_connection->endOperation(r);
+    m_connection->unlock([this](const SessionResult &r) {
         if (!r.ok())
             QMessageBox::warning(this, tr("Unlock failed"),
                 r.message + u"\n\n"_s + tr("The machine is still halted: check it, then try Unlock again."));
