@@ -165,6 +165,15 @@ Result<void> ToolTable::recordBreakTest(int number, bool failed)
     return contains(number) ? replace(number, tool) : insert(tool);
 }
 
+Result<void> ToolTable::record(const Recording &r)
+{
+    if (r.tlo)
+        return recordMeasurement(r.tool, *r.tlo, r.at, r.source, r.referenceMz);
+    if (r.breakTestFailed)
+        return recordBreakTest(r.tool, *r.breakTestFailed);
+    return {};
+}
+
 bool ToolTable::remove(int number)
 {
     const qsizetype i = indexOf(number);

@@ -5,6 +5,7 @@
 
 #include <QList>
 
+#include "model/recording.h"
 #include "model/result.h"
 #include "model/tool.h"
 #include "model/units.h"
@@ -67,6 +68,9 @@ public:
         TloSource source = TloSource::Probe, std::optional<double> referenceMz = std::nullopt);
     // Marks tool `number` as failed (or passed) by a break test, adding the tool when the table has none.
     Result<void> recordBreakTest(int number, bool failed);
+    // What an operation on the machine carries (a TLO, or a break test's verdict), recorded as the two above
+    // do.
+    Result<void> record(const Recording &recording);
 
     friend bool operator==(const ToolTable &, const ToolTable &) = default;
 

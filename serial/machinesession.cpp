@@ -354,8 +354,34 @@ void MachineSession::report(Done done)
     readOffsets(done, SessionResult {});
 }
 
+MachineSession::Done MachineSession::recording(Done done, TloSource source)
+{
+    return [done = std::move(done), source](const SessionResult &r) {
+        if (!r.ok() || !r.tlo || !r.tool || *r.tool < 0)
+            return done(r);
+        SessionResult recorded = r;
+        recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, r.tlo->referenceMz, std::nullopt,
+            QDateTime::currentDateTimeUtc() };
+        done(recorded);
+    };
+}
+
+MachineSession::Done MachineSession::recordingVerdict(Done done)
+{
+    return [done = std::move(done)](const SessionResult &r) {
+        const bool broken = r.outcome == SessionResult::Outcome::ToolBroken;
+        if (!r.breakTest || !r.tool || *r.tool < 0 || !(r.ok() || broken))
+            return done(r);
+        SessionResult recorded = r;
+        recorded.recording = Recording { *r.tool, std::nullopt, TloSource::Probe, std::nullopt, broken,
+            QDateTime::currentDateTimeUtc() };
+        done(recorded);
+    };
+}
+
 void MachineSession::probe(Done done)
 {
+    done = recording(std::move(done), TloSource::Probe);
     run("M491", MachineLink::kMotionTimeoutMs, done, [this, done](const CommandReply &reply) {
         const auto probe = std::find_if(reply.lines.cbegin(), reply.lines.cend(),
             [](const QByteArray &l) { return parseProbeResult(l).has_value(); });
@@ -374,6 +400,7 @@ void MachineSession::probe(Done done)
 
 void MachineSession::breakTest(double tolerance, Done done)
 {
+    done = recordingVerdict(std::move(done));
     if (auto r = validateTolerance(tolerance); !r)
         return refuse(done, r.error().message);
     const QByteArray command = "M491.1 H" + number(tolerance);
@@ -454,6 +481,7 @@ void MachineSession::finishWithReport(const QList<QByteArray> &lines, Done done,
 
 void MachineSession::setTlo(double tlo, Done done)
 {
+    done = recording(std::move(done), TloSource::Manual);
     if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
         return refuse(done, r.error().message);
     run("M493.3 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done,
@@ -479,6 +507,7 @@ void MachineSession::setTlo(double tlo, Done done)
 
 void MachineSession::setTloAboveZ0(double height, Done done)
 {
+    done = recording(std::move(done), TloSource::Manual);
     if (auto r = validateOffset(tr("The height above Z0"), height); !r)
         return refuse(done, r.error().message);
     run("M493.3 H" + number(height), MachineLink::kDefaultTimeoutMs, done,
@@ -500,6 +529,7 @@ void MachineSession::selectTool(int tool, Done done)
 
 void MachineSession::changeTool(int tool, Done done)
 {
+    done = recording(std::move(done), TloSource::Probe); // M6 probes the new tool
     if (auto r = validateToolNumber(tool); !r)
         return refuse(done, r.error().message);
     run("M6 T" + QByteArray::number(tool), MachineLink::kMotionTimeoutMs, done,
@@ -552,7 +582,12 @@ void MachineSession::restoreTlo(int tool, double tlo, Done done)
             done(selected);
             return;
         }
-        setTlo(tlo, done);
+        // The table already holds this TLO: a restore is nothing new to record.
+        setTlo(tlo, [done](const SessionResult &r) {
+            SessionResult restored = r;
+            restored.recording.reset();
+            done(restored);
+        });
     });
 }
 

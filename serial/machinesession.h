@@ -7,6 +7,7 @@
 #include <QObject>
 
 #include "model/limits.h"
+#include "model/recording.h"
 #include "model/result.h"
 #include "serial/machinelink.h"
 #include "serial/machinereplies.h"
@@ -30,6 +31,9 @@ struct SessionResult
     std::optional<BreakTestReading> breakTest;
     double tolerance = 0.0;
     std::optional<MachineStatus> status;
+    // What the table should record of this result (a TLO with its source, or a break test's verdict), when
+    // the operation measured or set something for a tool in the spindle.
+    std::optional<Recording> recording;
 
     [[nodiscard]] bool ok() const { return outcome == Outcome::Success; }
 };
@@ -90,6 +94,9 @@ private:
     [[nodiscard]] static SessionResult stayedBusy(const QString &state, qint64 waitedMs);
     static void refuse(Done done, const QString &message);
     static SessionResult failure(const CommandReply &reply);
+    // `done`, with the recording a successful result carries: the TLO as `source`, or a break test's verdict.
+    [[nodiscard]] static Done recording(Done done, TloSource source);
+    [[nodiscard]] static Done recordingVerdict(Done done);
     static QByteArray number(double value);
 
     MachineLink *m_link;

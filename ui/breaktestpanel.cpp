@@ -165,9 +165,8 @@ void BreakTestPanel::run(bool confirm)
     const bool handSet = stored && stored->measuredTlo && stored->tloSource == TloSource::Manual;
     const bool started = m_connection->breakTest(tolerance, [this](const SessionResult &r) {
         // A broken tool is marked in the table (and its file, once saved) until it is probed again.
-        if (r.breakTest && r.tool && *r.tool >= 0
-            && (r.ok() || r.outcome == SessionResult::Outcome::ToolBroken))
-            (void)m_document->recordBreakTest(*r.tool, r.outcome == SessionResult::Outcome::ToolBroken);
+        if (r.recording)
+            (void)m_document->record(*r.recording);
         showResult(r);
         Q_EMIT finished(r);
     });

@@ -155,8 +155,8 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
                 tlo = t;
         }
         if (setsTlo && tlo && tool && *tool >= 0) {
-            auto recorded = m_document->recordMeasurement(
-                *tool, tlo->tlo(), QDateTime::currentDateTimeUtc(), TloSource::Manual, tlo->referenceMz);
+            auto recorded = m_document->record(Recording { *tool, tlo->tlo(), TloSource::Manual,
+                tlo->referenceMz, std::nullopt, QDateTime::currentDateTimeUtc() });
             note(recorded
                     ? tr("recorded in the table: T%1 TLO %2, set by hand")
                           .arg(*tool)

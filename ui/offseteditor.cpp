@@ -170,10 +170,8 @@ void OffsetEditor::send(bool confirm)
         // A change is applied once: a second Send must not add it again.
         if (mode == ChangeTlo)
             m_value->setValue(0.0);
-        const int number = r.tool.value_or(-1);
-        auto recorded = number >= 0 && r.tlo
-            ? m_document->recordMeasurement(
-                number, r.tlo->tlo(), QDateTime::currentDateTimeUtc(), TloSource::Manual, r.tlo->referenceMz)
+        auto recorded = r.recording
+            ? m_document->record(*r.recording)
             : Result<void>(Error { tr("the machine reports no tool in the spindle.") });
         if (!recorded)
             QMessageBox::warning(this, tr("The offset is set but not recorded"),

@@ -129,8 +129,7 @@ void ProbePanel::probe(bool confirm)
     m_connection->probe([this](const SessionResult &r) {
         if (r.ok()) {
             const int number = r.tool.value_or(-1);
-            auto recorded = number >= 0 ? m_document->recordMeasurement(number, r.tlo->tlo(),
-                                QDateTime::currentDateTimeUtc(), TloSource::Probe, r.tlo->referenceMz)
+            auto recorded = r.recording ? m_document->record(*r.recording)
                                         : Result<void>(Error { tr("there is no tool in the spindle.") });
             m_result->setText(recorded ? tr("T%1 measured: TLO %2, recorded in the table.")
                                              .arg(number)

@@ -220,18 +220,13 @@ int runMachineCommand(Invocation &call)
         if (!table)
             return true;
         const int measured = r.tool.value_or(-1);
-        if (measured < 0) {
+        if (!r.recording) {
             fail(call, u"the machine reports no tool in the spindle; nothing was recorded."_s, MachineError);
             exitCode = MachineError;
             recordFailed = true;
             return false;
         }
-        Result<void> saved;
-        if (r.breakTest)
-            saved = table->recordBreakTest(measured, r.outcome == SessionResult::Outcome::ToolBroken);
-        else
-            saved = table->recordMeasurement(measured, r.tlo->tlo(), QDateTime::currentDateTimeUtc(),
-                command == u"set-tlo" ? TloSource::Manual : TloSource::Probe, r.tlo->referenceMz);
+        Result<void> saved = table->record(*r.recording); // as the window records it
         if (saved)
             saved = saveTableFile(tablePath, *table, formatForPath(tablePath).value_or(TableFormat::Json));
         if (!saved) {

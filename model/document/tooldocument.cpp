@@ -176,6 +176,15 @@ Result<void> ToolDocument::recordBreakTest(int number, bool failed)
     return {};
 }
 
+Result<void> ToolDocument::record(const Recording &r)
+{
+    if (r.tlo)
+        return recordMeasurement(r.tool, *r.tlo, r.at, r.source, r.referenceMz);
+    if (r.breakTestFailed)
+        return recordBreakTest(r.tool, *r.breakTestFailed);
+    return {};
+}
+
 void ToolDocument::pushChange(const Tool &changed, const QString &text)
 {
     if (const Tool *existing = table().find(changed.number)) {

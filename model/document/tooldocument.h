@@ -53,6 +53,8 @@ public:
         TloSource source = TloSource::Probe, std::optional<double> referenceMz = std::nullopt);
     // A break test's verdict on tool `number`, as one undoable step (a failed tool stays marked).
     Result<void> recordBreakTest(int number, bool failed);
+    // What an operation on the machine carries, recorded as one of the two above.
+    Result<void> record(const Recording &recording);
     // A new tool with the next free number and its default pocket.
     [[nodiscard]] Tool newTool() const;
 

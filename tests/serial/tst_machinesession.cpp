@@ -42,10 +42,24 @@ private Q_SLOTS:
         QCOMPARE(r.tool.value_or(-1), 2);
         QCOMPARE(r.tlo->currentMz, -105.688);
         QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-33.388"_s);
+        // The result carries what to record: T2's TLO, probed, against the reference at -72.300.
+        QVERIFY(r.recording);
+        QCOMPARE(r.recording->tool, 2);
+        QCOMPARE(*r.recording->tlo, -33.388);
+        QCOMPARE(r.recording->source, TloSource::Probe);
+        QCOMPARE(*r.recording->referenceMz, -72.3);
         r = h.run([&](auto done) { h.session.setTlo(r.tlo->tlo() + 2.9, done); });
         QVERIFY2(r.ok(), qPrintable(r.message));
         QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-30.488"_s);
         QCOMPARE(h.sent.last(), QByteArray("M493.3 Z-30.488"));
+        QVERIFY(r.recording);
+        QCOMPARE(r.recording->source, TloSource::Manual); // set by hand
+        QCOMPARE(*r.recording->tlo, -30.488);
+        // Recorded the same way the window and the CLI record it.
+        ToolTable table;
+        QVERIFY(table.record(*r.recording).ok());
+        QCOMPARE(table.find(2)->tloSource, TloSource::Manual);
+        QCOMPARE(*table.find(2)->referenceMz, -72.3);
     }
 
     void refusesBadInputWithoutSendingIt_data()
@@ -116,6 +130,8 @@ private Q_SLOTS:
         QCOMPARE(r.outcome, Outcome::ToolBroken);
         QVERIFY(r.breakTest.has_value());
         QCOMPARE(QString::number(r.breakTest->newTlo - r.breakTest->oldTlo, 'f', 3), u"-0.300"_s);
+        QVERIFY(r.recording && r.recording->breakTestFailed == true && !r.recording->tlo);
+        QCOMPARE(r.recording->tool, 1);
         QVERIFY2(
             r.message.contains(u"may be broken"_s) && r.message.contains(u"Unlock"_s), qPrintable(r.message));
         QVERIFY(h.emulator.isHalted());
@@ -156,6 +172,7 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), qPrintable(r.message));
         QCOMPARE(r.tool.value_or(-1), 5);
         QCOMPARE(r.tlo->tlo(), -12.25);
+        QVERIFY(!r.recording); // the table's own value, nothing new to record
         QVERIFY(!h.sent.contains("M491") || h.sent.count("M491") == 1);
         QCOMPARE(h.emulator.tool(), 5);
     }
