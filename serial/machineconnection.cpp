@@ -68,13 +68,17 @@ void MachineConnection::teardown()
     m_transport.reset();
 }
 
+std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target)
+{
+    if (target.emulator)
+        return std::make_unique<EmulatorTransport>();
+    return std::make_unique<SerialPortTransport>(target.port, target.baud);
+}
+
 void MachineConnection::connectTo(const ConnectionTarget &target)
 {
     teardown();
-    if (target.emulator)
-        m_transport = std::make_unique<EmulatorTransport>();
-    else
-        m_transport = std::make_unique<SerialPortTransport>(target.port, target.baud);
+    m_transport = makeTransport(target);
     m_link = std::make_unique<MachineLink>(m_transport.get());
     m_session = std::make_unique<MachineSession>(m_link.get());
     connect(m_link.get(), &MachineLink::statusChanged, this, [this](const MachineStatus &status) {

@@ -20,6 +20,10 @@ struct ConnectionTarget
     int baud = 115200;
 };
 
+// The transport a target names: a serial port at its baud rate, or a new built-in emulator. The window's
+// connection and the CLI both make theirs here.
+[[nodiscard]] std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target);
+
 // The window's one machine: it builds the transport, the link and the session for a target, keeps them for
 // the connection's lifetime, and says what state the link is in. No widgets: the panels watch it.
 class MachineConnection final : public QObject

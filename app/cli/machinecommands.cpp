@@ -14,7 +14,7 @@
 #include "app/cli/cli.h"
 #include "model/formats/tablefile.h"
 #include "model/textparsing.h"
-#include "serial/emulatortransport.h"
+#include "serial/machineconnection.h"
 #include "serial/machinesession.h"
 #include "serial/serialporttransport.h"
 
@@ -196,11 +196,8 @@ int runMachineCommand(Invocation &call)
                 BadInput);
     }
 
-    std::unique_ptr<LineTransport> transport;
-    if (call.has(u"emulator"_s))
-        transport = std::make_unique<EmulatorTransport>();
-    else
-        transport = std::make_unique<SerialPortTransport>(call.option(u"port"_s), baud);
+    const std::unique_ptr<LineTransport> transport
+        = makeTransport({ call.has(u"emulator"_s), call.option(u"port"_s), baud });
     MachineLink link(transport.get());
     link.setTimeoutOverride(timeoutMs);
     MachineSession session(&link);
