@@ -63,7 +63,8 @@ ReplyKind classifyReply(QByteArrayView line)
         return ReplyKind::Error;
     if (line.startsWith("ALARM:"))
         return ReplyKind::Alarm;
-    if (line.startsWith("ERROR:"))
+    // The one halting line the firmware prints without a prefix (M491 on an unhomed machine: halt 2).
+    if (line.startsWith("ERROR:") || line == "Machine has not been homed")
         return ReplyKind::HaltError;
     if (line.startsWith('<') && line.endsWith('>'))
         return ReplyKind::Status;

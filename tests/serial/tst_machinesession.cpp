@@ -163,6 +163,19 @@ private Q_SLOTS:
         QVERIFY(!r.status->isAlarm());
     }
 
+    void anUnhomedMachineSaysSoInsteadOfAnUnreadableProbe()
+    {
+        // "Machine has not been homed" has no ALARM:/ERROR: prefix but halts the machine (reason 2).
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        h.emulator.setHomed(false);
+        const SessionResult r = h.run([&](auto done) { h.session.probe(done); });
+        QCOMPARE(r.outcome, Outcome::MachineError);
+        QVERIFY2(r.message.contains(u"not been homed"_s), qPrintable(r.message));
+        QVERIFY(!r.recording);
+        QVERIFY(h.emulator.isHalted());
+    }
+
     void restoresAKnownTloWithoutProbing()
     {
         SessionHarness h;
