@@ -5,6 +5,8 @@
 #include <QJsonObject>
 #include <QSet>
 
+#include "model/limits.h"
+
 using namespace Qt::StringLiterals;
 
 namespace Toffee::Cli {
@@ -25,7 +27,7 @@ The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMM
   status                     state, active tool, TLO, positions
   report                     the tool length offsets (M493.4)
   probe                      measure the current tool on the tool setter (M491); the machine moves
-  break-test [--tolerance H] re-measure and compare with the stored TLO (M491.1; H >= 0.02, default 0.1)
+  break-test [--tolerance H] re-measure and compare with the stored TLO (M491.1; H >= %1, default %2)
   set-tlo --z V              set the TLO directly (M493.3 Z)
   set-tlo --above-z0 H       set the TLO from the current position, the tip H above work Z0 (M493.3 H)
   select-tool N              make tool N active without a change (M493.2 T)
@@ -47,6 +49,12 @@ Exit codes: 0 success, 2 bad input or usage, 3 broken tool detected, 4 machine e
 5 link failure or timeout.
 )"_s;
 
+// The usage text, with the limits it quotes from their one home.
+QString usage()
+{
+    return kUsage.arg(Limits::kMinBreakTolerance).arg(Limits::kDefaultBreakTolerance);
+}
+
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
     u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s };
@@ -54,7 +62,7 @@ const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s };
 int usageError(Invocation &call, const QString &message)
 {
     fail(call, message, BadInput);
-    call.err << '\n' << kUsage;
+    call.err << '\n' << usage();
     return BadInput;
 }
 
@@ -103,7 +111,7 @@ int run(const QStringList &arguments, QTextStream &out, QTextStream &err)
     }
     call.json = call.has(u"json"_s);
     if (call.has(u"help"_s)) {
-        out << kUsage;
+        out << usage();
         return Success;
     }
     if (positional.isEmpty())

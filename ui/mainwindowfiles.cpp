@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The window's file side: open, save, save as (with the question before a format that drops fields), import,
+// export, recent files, unsaved changes, and a file changed by another program.
+#include "ui/mainwindow.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMessageBox>
+#include <QStatusBar>
+
+#include "model/document/filewatcher.h"
+#include "model/document/tooldocument.h"
+#include "ui/appsettings.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString fileFilters()
+{
+    return MainWindow::tr("Tool tables (*.json *.tbl *.csv);;Toffee tool table (*.json);;LinuxCNC tool table "
+                          "(*.tbl);;CSV spreadsheet (*.csv);;All files (*)");
+}
+
+} // namespace
+
+void MainWindow::fileChangedOnDisk(const QString &path)
+{
+    if (path != m_document->filePath())
+        return;
+    const QString question = m_document->isModified()
+        ? tr("%1 was changed by another program.\n\nReload it? Your unsaved changes in Toffee would be lost.")
+        : tr("%1 was changed by another program.\n\nReload it?");
+    if (QMessageBox::question(this, tr("File changed on disk"), question.arg(path)) != QMessageBox::Yes)
+        return;
+    if (auto r = m_document->open(path); !r) {
+        showError(tr("Cannot reload the tool table"),
+            r.error().text() + u"\n\n"_s + tr("The table on screen has not been changed."));
+        return;
+    }
+    m_fileWatcher->watch(path);
+    statusBar()->showMessage(tr("Reloaded %1").arg(path), 5000);
+}
+
+void MainWindow::updateRecentFiles()
+{
+    m_recentMenu->clear();
+    const QStringList files = AppSettings().recentFiles();
+    for (const QString &path : files) {
+        QAction *action = m_recentMenu->addAction(QFileInfo(path).fileName());
+        action->setToolTip(path);
+        connect(action, &QAction::triggered, this, [this, path] {
+            if (maybeSave())
+                openFile(path);
+        });
+    }
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::showError(const QString &title, const QString &message)
+{
+    QMessageBox::warning(this, title, message);
+}
+
+bool MainWindow::openFile(const QString &path)
+{
+    if (auto r = m_document->open(path); !r) {
+        showError(tr("Cannot open the tool table"),
+            r.error().text() + u"\n\n"_s + tr("The table on screen has not been changed."));
+        return false;
+    }
+    m_fileWatcher->watch(path);
+    AppSettings settings;
+    settings.addRecentFile(QFileInfo(path).absoluteFilePath());
+    settings.setLastDirectory(QFileInfo(path).absolutePath());
+    updateRecentFiles();
+    statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+    return true;
+}
+
+void MainWindow::newTable()
+{
+    if (maybeSave()) {
+        m_document->newTable();
+        m_fileWatcher->watch({});
+    }
+}
+
+void MainWindow::open()
+{
+    if (!maybeSave())
+        return;
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open Tool Table"), AppSettings().lastDirectory(), fileFilters());
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+bool MainWindow::confirmLossySave(const QString &path)
+{
+    const auto format = formatForPath(path).value_or(TableFormat::Json);
+    const QStringList losses = formatLosses(m_document->table(), format);
+    if (losses.isEmpty())
+        return true;
+    return QMessageBox::question(this, tr("Save as %1?").arg(formatName(format)),
+               losses.join(u'\n') + u"\n\n"_s
+                   + tr("After saving, the table on screen shows what the file holds; until the window is "
+                        "closed, "
+                        "Undo brings the rest back. To keep everything, Cancel and use Save As with a .json "
+                        "file.\n\nSave anyway?"),
+               QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+        == QMessageBox::Yes;
+}
+
+bool MainWindow::save()
+{
+    if (m_document->filePath().isEmpty())
+        return saveAs();
+    if (!confirmLossySave(m_document->filePath()))
+        return false;
+    if (auto r = m_document->save(); !r) {
+        showError(tr("Cannot save the tool table"), r.error().text());
+        return false;
+    }
+    m_fileWatcher->watch(m_document->filePath());
+    statusBar()->showMessage(tr("Saved %1").arg(m_document->filePath()), 5000);
+    return true;
+}
+
+bool MainWindow::saveAs()
+{
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Tool Table"), AppSettings().lastDirectory(), fileFilters());
+    if (path.isEmpty())
+        return false;
+    if (!formatForPath(path))
+        path += u".json"_s;
+    if (!confirmLossySave(path))
+        return false;
+    if (auto r = m_document->saveAs(path, *formatForPath(path)); !r) {
+        showError(tr("Cannot save the tool table"), r.error().text());
+        return false;
+    }
+    m_fileWatcher->watch(path);
+    AppSettings settings;
+    settings.addRecentFile(QFileInfo(path).absoluteFilePath());
+    settings.setLastDirectory(QFileInfo(path).absolutePath());
+    updateRecentFiles();
+    return true;
+}
+
+void MainWindow::importTable()
+{
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import Tools"), AppSettings().lastDirectory(), fileFilters());
+    if (path.isEmpty())
+        return;
+    auto count = m_document->importFrom(path);
+    if (!count) {
+        showError(tr("Cannot import"), count.error().text() + u"\n\n"_s + tr("Nothing was imported."));
+        return;
+    }
+    statusBar()->showMessage(tr("Imported %1 tools from %2").arg(count.value()).arg(path), 5000);
+}
+
+void MainWindow::exportTable()
+{
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Export Tool Table"), AppSettings().lastDirectory(), fileFilters());
+    if (path.isEmpty())
+        return;
+    if (!formatForPath(path))
+        path += u".json"_s;
+    if (!confirmLossySave(path))
+        return;
+    if (auto r = m_document->exportTo(path, *formatForPath(path)); !r)
+        showError(tr("Cannot export"), r.error().text());
+    else
+        statusBar()->showMessage(tr("Exported to %1").arg(path), 5000);
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_document->isModified())
+        return true;
+    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
+        tr("The tool table has changes that are not saved.\nSave them first?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+} // namespace Toffee
