@@ -59,6 +59,8 @@ private:
     bool confirmLossySave(const QString &path);
     void updateTitle();
     void updateRecentFiles();
+    // The file now open or saved: watched for outside changes, first of the recent files.
+    void rememberFile(const QString &path);
     void showError(const QString &title, const QString &message);
     void readSettings();
     void writeSettings();

@@ -65,6 +65,15 @@ void MainWindow::showError(const QString &title, const QString &message)
     QMessageBox::warning(this, title, message);
 }
 
+void MainWindow::rememberFile(const QString &path)
+{
+    m_fileWatcher->watch(path);
+    AppSettings settings;
+    settings.addRecentFile(QFileInfo(path).absoluteFilePath());
+    settings.setLastDirectory(QFileInfo(path).absolutePath());
+    updateRecentFiles();
+}
+
 bool MainWindow::openFile(const QString &path)
 {
     if (auto r = m_document->open(path); !r) {
@@ -72,11 +81,7 @@ bool MainWindow::openFile(const QString &path)
             r.error().text() + u"\n\n"_s + tr("The table on screen has not been changed."));
         return false;
     }
-    m_fileWatcher->watch(path);
-    AppSettings settings;
-    settings.addRecentFile(QFileInfo(path).absoluteFilePath());
-    settings.setLastDirectory(QFileInfo(path).absolutePath());
-    updateRecentFiles();
+    rememberFile(path);
     statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
     return true;
 }
@@ -144,11 +149,7 @@ bool MainWindow::saveAs()
         showError(tr("Cannot save the tool table"), r.error().text());
         return false;
     }
-    m_fileWatcher->watch(path);
-    AppSettings settings;
-    settings.addRecentFile(QFileInfo(path).absoluteFilePath());
-    settings.setLastDirectory(QFileInfo(path).absolutePath());
-    updateRecentFiles();
+    rememberFile(path);
     return true;
 }
 
