@@ -202,7 +202,8 @@ bool MachineConnection::unlock(Done done)
         tr("Unlock"), true, [](MachineSession *s, Done d) { s->unlock(std::move(d)); }, std::move(done));
 }
 
-bool MachineConnection::sendLine(const QByteArray &line, std::function<void(const CommandReply &)> done)
+bool MachineConnection::sendLine(
+    const QByteArray &line, std::function<void(const CommandReply &, const SessionResult &)> done)
 {
     if (!beginOperation(QString::fromUtf8(line)))
         return false;
@@ -216,7 +217,7 @@ bool MachineConnection::sendLine(const QByteArray &line, std::function<void(cons
         result.tool = activeTool();
         endOperation(result);
         if (done)
-            done(reply);
+            done(reply, result);
     });
     return true;
 }

@@ -64,7 +64,10 @@ public:
     bool unlock(Done done);
     // A line typed in the console, sent as it is (ConsoleCheck has judged it first); offsets in its reply are
     // announced like any operation's.
-    bool sendLine(const QByteArray &line, std::function<void(const CommandReply &)> done);
+    // `done` gets the reply and the result announced for it (the offsets it reported, the tool in the
+    // spindle).
+    bool sendLine(
+        const QByteArray &line, std::function<void(const CommandReply &, const SessionResult &)> done);
     // Stops whatever the machine does now (Ctrl-X); it halts, and Unlock follows.
     void stop();
     // The tool the machine reports in the spindle, if known.

@@ -141,32 +141,30 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
         }
     }
     const bool setsTlo = check.setsTlo;
-    const bool sent = m_connection->sendLine(command.toUtf8(), [this, setsTlo](const CommandReply &reply) {
-        if (!reply.ok()) {
-            note(reply.message);
-            m_connection->refreshOffsets();
-            return;
-        }
-        // An offset set here is recorded like one set in the panel: by hand, for the tool in the spindle.
-        const auto tool = m_connection->activeTool();
-        std::optional<TloReading> tlo;
-        for (const QByteArray &line : reply.lines) {
-            if (auto t = parseTloReport(line))
-                tlo = t;
-        }
-        if (setsTlo && tlo && tool && *tool >= 0) {
-            auto recorded = m_document->record(Recording { *tool, tlo->tlo(), TloSource::Manual,
-                tlo->referenceMz, std::nullopt, QDateTime::currentDateTimeUtc() });
-            note(recorded
-                    ? tr("recorded in the table: T%1 TLO %2, set by hand")
-                          .arg(*tool)
-                          .arg(millimetres(tlo->tlo()))
-                    : tr("the TLO is set on the machine but not recorded: %1").arg(recorded.error().message));
-        }
-        // A typed command may have changed the tool or its offsets: the strip shows the machine as it is now.
-        if (!setsTlo)
-            m_connection->refreshOffsets();
-    });
+    const bool sent = m_connection->sendLine(
+        command.toUtf8(), [this, setsTlo](const CommandReply &reply, const SessionResult &result) {
+            if (!reply.ok()) {
+                note(reply.message);
+                m_connection->refreshOffsets();
+                return;
+            }
+            // An offset set here is recorded like one set in the panel: by hand, for the tool in the spindle.
+            const auto &tool = result.tool;
+            const auto &tlo = result.tlo; // read from the reply once, by the connection
+            if (setsTlo && tlo && tool && *tool >= 0) {
+                auto recorded = m_document->record(Recording { *tool, tlo->tlo(), TloSource::Manual,
+                    tlo->referenceMz, std::nullopt, QDateTime::currentDateTimeUtc() });
+                note(recorded ? tr("recorded in the table: T%1 TLO %2, set by hand")
+                                    .arg(*tool)
+                                    .arg(millimetres(tlo->tlo()))
+                              : tr("the TLO is set on the machine but not recorded: %1")
+                                    .arg(recorded.error().message));
+            }
+            // A typed command may have changed the tool or its offsets: the strip shows the machine as it is
+            // now.
+            if (!setsTlo)
+                m_connection->refreshOffsets();
+        });
     if (!sent)
         note(tr("the machine is busy with %1; wait for it").arg(m_connection->operation()));
 }
