@@ -291,14 +291,17 @@ QList<int> ToolTableModel::toolsSharingPocket(int pocket, int except) const
     return numbers;
 }
 
-void ToolTableModel::pocketsChanged(const Tool &tool)
+void ToolTableModel::pocketsChanged(int pocket, int leftPocket, int number)
 {
-    // Another row's pocket may have become (or stopped being) shared: the column is repainted.
-    if (!m_table.isEmpty())
+    // Only when another row's pocket became, or stopped being, shared is the column repainted: a table whose
+    // pockets are all their own (the usual case) costs nothing more per edit.
+    const bool shared = pocket >= 0 && pocketCount(pocket) > 1;
+    const bool unshared = leftPocket > 0 && pocketCount(leftPocket) == 1;
+    if ((shared || unshared) && !m_table.isEmpty())
         Q_EMIT dataChanged(index(0, PocketColumn), index(int(m_table.size()) - 1, PocketColumn),
             { Qt::ForegroundRole, Qt::ToolTipRole });
-    if (const QList<int> others = toolsSharingPocket(tool.pocket, tool.number); !others.isEmpty())
-        Q_EMIT pocketShared(tool.number, tool.pocket, others);
+    if (shared)
+        Q_EMIT pocketShared(number, pocket, toolsSharingPocket(pocket, number));
 }
 
 void ToolTableModel::resetTable(const ToolTable &table)
@@ -319,7 +322,7 @@ Result<void> ToolTableModel::insertTool(const Tool &tool)
     if (!m_pocketsDirty)
         ++m_pocketCounts[tool.pocket];
     endInsertRows();
-    pocketsChanged(tool);
+    pocketsChanged(tool.pocket, -1, tool.number);
     return {};
 }
 
@@ -344,7 +347,7 @@ Result<void> ToolTableModel::replaceTool(int number, const Tool &tool)
     const int row = rowOfTool(tool.number);
     Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1)); // every role: text, marks, colours
     if (tool.pocket != oldPocket)
-        pocketsChanged(tool);
+        pocketsChanged(tool.pocket, oldPocket, tool.number);
     return {};
 }
 
@@ -359,6 +362,7 @@ bool ToolTableModel::removeTool(int number)
     if (!m_pocketsDirty)
         --m_pocketCounts[pocket];
     endRemoveRows();
+    pocketsChanged(-1, pocket, number);
     return true;
 }
 

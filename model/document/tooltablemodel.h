@@ -75,7 +75,8 @@ private:
     [[nodiscard]] QString tloToolTip(const Tool &tool) const;
 
     [[nodiscard]] int pocketCount(int pocket) const;
-    void pocketsChanged(const Tool &tool);
+    // After tool `number` moved into `pocket` (or -1) from `leftPocket` (or -1).
+    void pocketsChanged(int pocket, int leftPocket, int number);
 
     ToolTable m_table;
     EditHandler m_editHandler;
