@@ -14,6 +14,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -126,6 +127,12 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true);
         QApplication::setOrganizationName(u"ToffeeTest"_s);
         QApplication::setApplicationName(u"tst_workflows"_s);
+    }
+
+    void init()
+    {
+        QSettings()
+            .clear(); // each story starts from the defaults (a first start), whatever the last remembered
     }
 
     void firstStartThroughAManualOffsetAndABrokenToolToReopen()
@@ -436,6 +443,19 @@ private Q_SLOTS:
         QVERIFY(refusal.contains(u"7.700 mm"_s)); // how far off it would be
         QVERIFY(!s.sent.contains("M493.2 T2"));
         QCOMPARE(s.machine()->tool(), 1);
+    }
+
+    void anOffsetTypedInTheConsoleIsRecordedAsSetByHand()
+    {
+        Station s;
+        s.connect();
+        s.probe(); // T1
+        s.window.consoleDock()->sendCommand(u"M493.3 Z-1.5"_s, false);
+        QVERIFY(QTest::qWaitFor([&s] { return s.idle() && s.sent.contains("M493.3 Z-1.5"); }, 5000));
+        QCOMPARE(*s.table().find(1)->measuredTlo, -1.5);
+        QCOMPARE(s.table().find(1)->tloSource, TloSource::Manual);
+        QCOMPARE(*s.table().find(1)->referenceMz, -72.3);
+        QVERIFY(s.window.consoleDock()->lines().last().contains(u"recorded in the table: T1"_s));
     }
 
     void theStatusBarNeverSaysDisconnectedWhileConnected()
