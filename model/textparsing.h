@@ -17,9 +17,6 @@ namespace Toffee {
 [[nodiscard]] std::optional<double> parseDecimal(QByteArrayView text);
 [[nodiscard]] std::optional<qint64> parseInteger(QByteArrayView text);
 
-// The shortest text that reads back as the same double, in fixed notation (never an exponent, never "-0").
-void appendNumber(QByteArray &out, double value);
-
 // Appends `text` as UTF-8; ASCII (nearly all tool data) is copied straight, without a temporary.
 void appendUtf8(QByteArray &out, QStringView text);
 

@@ -143,7 +143,7 @@ Result<void> ToolTable::recordMeasurement(
 {
     // A measured value is stored at the machine's resolution (0.001 mm, 0.0001 in), never with the noise of
     // the arithmetic that produced it.
-    const double steps = m_units == Units::Inch ? 10000.0 : 1000.0;
+    const double steps = std::pow(10.0, resolutionDecimals(m_units));
     if (std::isfinite(tlo))
         tlo = std::round(tlo * steps) / steps;
     if (referenceMz && std::isfinite(*referenceMz))

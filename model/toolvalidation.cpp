@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QLocale>
 
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "model/translate.h"
 
@@ -17,7 +18,7 @@ namespace {
 
 QString shown(double value, Units units)
 {
-    return QString::number(value, 'f', units == Units::Inch ? 4 : 3);
+    return formatNumber(value, NumberFormat::fixed(resolutionDecimals(units)));
 }
 
 } // namespace
@@ -35,22 +36,6 @@ int defaultPocket(int toolNumber)
 double maxWear(Units units)
 {
     return units == Units::Inch ? Limits::kMaxWearInch : Limits::kMaxWearMm;
-}
-
-QString formatNumber(double value)
-{
-    QByteArray text;
-    appendNumber(text, value);
-    return QString::fromLatin1(text);
-}
-
-QString displayNumber(double value, Units units)
-{
-    const int minimum = units == Units::Inch ? 4 : 3;
-    const QString exact = formatNumber(value);
-    const qsizetype point = exact.indexOf(u'.');
-    const int decimals = point < 0 ? 0 : int(exact.size() - point - 1);
-    return decimals > minimum ? exact : QString::number(value, 'f', minimum);
 }
 
 Result<void> validateToolNumber(int number)

@@ -22,11 +22,5 @@ namespace Toffee {
 [[nodiscard]] Result<void> validateLength(const QString &what, double value, double limit, Units units);
 [[nodiscard]] Result<void> validateLinuxCncExtra(const QString &extra);
 
-// Numbers for people: 3 decimals in mm, 4 in inches, more when the value has more, so nothing is hidden.
-[[nodiscard]] QString displayNumber(double value, Units units);
-
-// Numbers as Toffee writes them in files: the shortest text that reads back as the same double, never
-// exponent.
-[[nodiscard]] QString formatNumber(double value);
 
 } // namespace Toffee

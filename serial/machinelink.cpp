@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "serial/machinelink.h"
 
+#include "model/numberformat.h"
 #include "serial/linetransport.h"
 
 namespace Toffee {
@@ -34,7 +35,8 @@ MachineLink::MachineLink(LineTransport *transport, QObject *parent)
             = tr("The machine did not answer \"%1\" within %2 s. The link was closed, because a "
                  "late answer could be taken for the next command's. Reconnect, and check the "
                  "machine before you go on.%3")
-                  .arg(command, QString::number(m_timeout.interval() / 1000.0, 'f', 1), floodNote());
+                  .arg(command, formatNumber(m_timeout.interval() / 1000.0, NumberFormat::fixed(1)),
+                      floodNote());
         complete(CommandReply::Status::Timeout, message);
         failAll(CommandReply::Status::Timeout, message);
         m_lastError = message;

@@ -7,6 +7,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "serial/linetransport.h"
 
@@ -15,6 +16,12 @@ using namespace Qt::StringLiterals;
 namespace Toffee {
 
 namespace {
+
+// A tolerance as the operator typed it: "0.02", not "0.020"; in their own decimal mark.
+QString toleranceText(double tolerance)
+{
+    return formatNumber(tolerance, NumberFormat::upTo(3).inLocale());
+}
 
 QString text(const QByteArray &line)
 {
@@ -59,14 +66,15 @@ Result<void> MachineSession::validateTolerance(double tolerance)
     if (!std::isfinite(tolerance))
         return Error { tr("The break-test tolerance is not a number; enter a value such as 0.1 mm.") };
     if (tolerance < kMinTolerance)
-        return Error { tr(
-            "A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm "
-            "or more (%3 mm is the default).")
-                           .arg(tolerance)
-                           .arg(kMinTolerance)
-                           .arg(kDefaultTolerance) };
+        return Error {
+            tr("A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm "
+               "or more (%3 mm is the default).")
+                .arg(toleranceText(tolerance), toleranceText(kMinTolerance), toleranceText(kDefaultTolerance))
+        };
     if (tolerance > kMaxOffset)
-        return Error { tr("A break-test tolerance of %1 mm is larger than any tool.").arg(tolerance) };
+        return Error {
+            tr("A break-test tolerance of %1 mm is larger than any tool.").arg(toleranceText(tolerance))
+        };
     return {};
 }
 
@@ -90,9 +98,7 @@ Result<void> MachineSession::validateToolNumber(int tool)
 
 QByteArray MachineSession::number(double value)
 {
-    QByteArray out;
-    appendNumber(out, std::round(value * 10000.0) / 10000.0);
-    return out;
+    return numberBytes(value, NumberFormat::command());
 }
 
 void MachineSession::refuse(Done done, const QString &message)
@@ -254,10 +260,10 @@ void MachineSession::breakTest(double tolerance, Done done)
                      "difference of %4 mm; the tolerance is %5 mm). The machine has halted. Check the "
                      "tool and replace it if it is damaged, then Unlock.")
                       .arg(m_tool.value_or(-1))
-                      .arg(reading->newTlo, 0, 'f', 3)
-                      .arg(reading->oldTlo, 0, 'f', 3)
-                      .arg(std::fabs(reading->newTlo - reading->oldTlo), 0, 'f', 3)
-                      .arg(tolerance);
+                      .arg(millimetres(reading->newTlo, false))
+                      .arg(millimetres(reading->oldTlo, false))
+                      .arg(millimetres(std::fabs(reading->newTlo - reading->oldTlo), false))
+                      .arg(toleranceText(tolerance));
             done(result);
             return;
         }
@@ -281,8 +287,8 @@ void MachineSession::breakTest(double tolerance, Done done)
             result.outcome = SessionResult::Outcome::ToolBroken;
             result.message = tr("Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.")
                                  .arg(m_tool.value_or(-1))
-                                 .arg(reading->newTlo, 0, 'f', 3)
-                                 .arg(reading->oldTlo, 0, 'f', 3)
+                                 .arg(millimetres(reading->newTlo, false))
+                                 .arg(millimetres(reading->oldTlo, false))
                                  .arg(tolerance);
         }
         done(result);
@@ -323,8 +329,8 @@ void MachineSession::setTlo(double tlo, Done done)
                         bad.outcome = SessionResult::Outcome::MachineError;
                         bad.message = tr("The machine was told TLO %1 mm but reports %2 mm. Check the "
                                          "offsets before you cut.")
-                                          .arg(tlo, 0, 'f', 3)
-                                          .arg(result.tlo->tlo(), 0, 'f', 3);
+                                          .arg(millimetres(tlo, false))
+                                          .arg(millimetres(result.tlo->tlo(), false));
                         done(bad);
                         return;
                     }

@@ -7,6 +7,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include "model/numberformat.h"
 #include "serial/linetransport.h"
 
 using namespace Qt::StringLiterals;
@@ -22,7 +23,7 @@ bool isBusyState(const QString &state)
 
 QString seconds(qint64 ms)
 {
-    return QString::number(double(ms) / 1000.0, 'f', ms % 1000 == 0 ? 0 : 1);
+    return formatNumber(double(ms) / 1000.0, NumberFormat::upTo(1));
 }
 
 } // namespace

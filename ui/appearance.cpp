@@ -80,19 +80,6 @@ void takeWheelOnlyWhenFocused(QWidget *field)
     field->installEventFilter(guard);
 }
 
-QString localNumber(double value, int decimals)
-{
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    return locale.toString(value, 'f', decimals);
-}
-
-QString millimetres(double value, bool withUnit)
-{
-    const QString number = localNumber(value, 3);
-    return withUnit ? number + u" mm"_s : number;
-}
-
 void useMonospace(QWidget *widget)
 {
     QFont font = widget->font();

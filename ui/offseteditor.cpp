@@ -116,9 +116,9 @@ std::optional<double> OffsetEditor::targetTlo() const
 QString OffsetEditor::commandPreview() const
 {
     if (Mode(m_mode->currentData().toInt()) == AboveZ0)
-        return u"M493.3 H"_s + QString::number(m_value->value(), 'f', 3); // G-code: always a point
+        return u"M493.3 H"_s + formatNumber(m_value->value(), NumberFormat::command());
     const auto target = targetTlo();
-    return target ? u"M493.3 Z"_s + QString::number(*target, 'f', 3)
+    return target ? u"M493.3 Z"_s + formatNumber(*target, NumberFormat::command())
                   : tr("(the current TLO is not known yet)");
 }
 

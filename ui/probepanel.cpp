@@ -189,7 +189,9 @@ void ProbePanel::restore(bool confirm)
                 "right against the reference it was measured from. Probe the reference tool first.");
         if (tool->breakTestFailed)
             details << tr("T%1 failed its last break test.").arg(number);
-        details << tr("Sends: M493.2 T%1, then M493.3 Z%2").arg(number).arg(QString::number(tlo, 'f', 3));
+        details << tr("Sends: M493.2 T%1, then M493.3 Z%2")
+                       .arg(number)
+                       .arg(formatNumber(tlo, NumberFormat::command()));
         box.setInformativeText(details.join(u"\n\n"_s));
         if (details.size() > 2)
             box.setIcon(QMessageBox::Warning);

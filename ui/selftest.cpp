@@ -5,6 +5,7 @@
 #include <QPixmap>
 
 #include "model/document/tooldocument.h"
+#include "model/numberformat.h"
 #include "serial/machineconnection.h"
 #include "ui/machinedock.h"
 #include "ui/mainwindow.h"
@@ -75,7 +76,7 @@ void SelfTest::start(const QElapsedTimer &sinceLaunch)
                     tr("self-test passed: first frame after %1 ms; T%2 probed, TLO %3 mm recorded")
                         .arg(m_firstFrameMs)
                         .arg(r.tool.value_or(-1))
-                        .arg(r.tlo->tlo(), 0, 'f', 3));
+                        .arg(millimetres(r.tlo->tlo(), false)));
             });
             probe->probe(false);
         });

@@ -3,6 +3,7 @@
 
 #include <QLineEdit>
 
+#include "model/numberformat.h"
 #include "model/toolvalidation.h"
 
 namespace Toffee {

@@ -11,6 +11,7 @@
 
 #include "model/document/tooltablemodel.h"
 #include "model/limits.h"
+#include "model/numberformat.h"
 #include "ui/tooltabledelegate.h"
 
 using namespace Qt::StringLiterals;
@@ -78,10 +79,10 @@ void ToolTablePanel::fitColumns()
     m_view->setColumnWidth(ToolTableModel::DescriptionColumn,
         std::clamp(m_view->columnWidth(ToolTableModel::DescriptionColumn), 24 * text, 40 * text));
     // Room for what a recording adds later ("-999.999 (by hand) — BROKEN?"), so that it is never cut off.
-    const int tlo = m_view->fontMetrics().horizontalAdvance(
-                        ToolTableModel::tr("%1 — BROKEN?")
-                            .arg(ToolTableModel::tr("%1 (by hand)")
-                                     .arg(QString::number(-Limits::kMaxGeometryMm, 'f', 3))))
+    const int tlo
+        = m_view->fontMetrics().horizontalAdvance(
+              ToolTableModel::tr("%1 — BROKEN?")
+                  .arg(ToolTableModel::tr("%1 (by hand)").arg(millimetres(-Limits::kMaxGeometryMm, false))))
         + 2 * text;
     m_view->setColumnWidth(ToolTableModel::MeasuredTloColumn,
         std::max(m_view->columnWidth(ToolTableModel::MeasuredTloColumn), tlo));

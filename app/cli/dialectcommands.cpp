@@ -9,6 +9,7 @@
 #include "model/formats/tablefile.h"
 #include "model/gcode/dialect.h"
 #include "model/gcode/gcodeinterpreter.h"
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 
 using namespace Qt::StringLiterals;
@@ -37,7 +38,7 @@ QJsonArray point(const Position &p)
 
 QString fixed(double v)
 {
-    return QString::number(v, 'f', 4);
+    return formatNumber(v, NumberFormat::fixed(4));
 }
 
 } // namespace

@@ -13,6 +13,7 @@
 
 #include "app/cli/cli.h"
 #include "model/formats/tablefile.h"
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "serial/machineconnection.h"
 #include "serial/machinesession.h"
@@ -51,7 +52,7 @@ std::optional<double> decimalOption(Invocation &call, const QString &name)
 
 QString mm(double v)
 {
-    return QString::number(v, 'f', 3);
+    return formatNumber(v, NumberFormat::fixed(3));
 }
 
 QJsonArray axes(const std::array<double, 3> &a)
@@ -318,9 +319,8 @@ int runMachineCommand(Invocation &call)
                                 { u"link"_s, transport->description() } });
                     else
                         call.out << count << " round trips over " << transport->description() << ": median "
-                                 << QString::number(median, 'f', 3) << " ms, p99 "
-                                 << QString::number(p99, 'f', 3) << " ms, max "
-                                 << QString::number(times->last(), 'f', 3) << " ms" << Qt::endl;
+                                 << mm(median) << " ms, p99 " << mm(p99) << " ms, max " << mm(times->last())
+                                 << " ms" << Qt::endl;
                     *next = nullptr; // break the cycle
                     return finishWith(SessionResult {});
                 }

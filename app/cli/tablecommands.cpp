@@ -5,6 +5,7 @@
 
 #include "app/cli/cli.h"
 #include "model/formats/tablefile.h"
+#include "model/numberformat.h"
 #include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;

@@ -4,6 +4,7 @@
 #include <QColor>
 #include <QLocale>
 
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/formats/fileio.h"
+#include "model/numberformat.h"
 #include "model/translate.h"
 
 #include <cerrno>
@@ -45,7 +46,8 @@ Error readError(const QString &path, const QString &reason)
 
 QString megabytes(qint64 bytes)
 {
-    return QString::number(double(bytes) / (1024.0 * 1024.0), 'f', bytes < 10 * 1024 * 1024 ? 1 : 0);
+    const int decimals = bytes < 10 * 1024 * 1024 ? 1 : 0;
+    return formatNumber(double(bytes) / (1024.0 * 1024.0), NumberFormat::fixed(decimals));
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 
 #include <QCoreApplication>
 
+#include "model/numberformat.h"
 #include "model/formats/jsonscanner.h"
 #include "model/formats/tablereading.h"
 #include "model/textparsing.h"

@@ -9,6 +9,7 @@
 
 #include <QCoreApplication>
 
+#include "model/numberformat.h"
 #include "model/formats/tablereading.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"

@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 
 #include "model/limits.h"
+#include "model/numberformat.h"
 #include "model/translate.h"
 
 using namespace Qt::StringLiterals;
@@ -18,11 +19,7 @@ constexpr int kMaxOffsetNumber = Limits::kMaxOffsetNumber; // FANUC offset count
 
 QString value(double v, Units units)
 {
-    const int decimals = units == Units::Inch ? 4 : 3;
-    QString text = QString::number(v, 'f', decimals);
-    if (text.startsWith(u"-0.") && text.toDouble() == 0.0)
-        text.remove(0, 1); // never "-0.000"
-    return text;
+    return formatNumber(v, NumberFormat::fixed(resolutionDecimals(units)));
 }
 
 // The header says how many tools the program writes, which is not always how many the table holds.

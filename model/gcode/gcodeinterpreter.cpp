@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
 #include "model/translate.h"
@@ -39,7 +40,7 @@ bool same(double a, double b)
 
 QString number(double v)
 {
-    return QString::number(v, 'g', 10);
+    return formatNumber(v);
 }
 
 QString tooLarge(QByteArrayView word)

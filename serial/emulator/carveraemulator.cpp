@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "model/numberformat.h"
 #include "model/limits.h"
 #include "model/textparsing.h"
 
@@ -12,7 +13,7 @@ namespace {
 
 QByteArray fixed(double v, int decimals = 3)
 {
-    return QByteArray::number(v, 'f', decimals);
+    return numberBytes(v, NumberFormat::fixed(decimals));
 }
 
 // "M493.3 Z-30.488" as (letter, value) words, upper-case, comments dropped.

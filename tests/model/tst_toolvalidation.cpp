@@ -96,32 +96,6 @@ private Q_SLOTS:
             QVERIFY2(result.error().message.contains(error), qPrintable(result.error().message));
         }
     }
-
-    void formatsNumbersExactlyAndWithoutExponent_data()
-    {
-        QTest::addColumn<double>("value");
-        QTest::addColumn<QString>("text");
-        QTest::newRow("seed TLO") << -33.388 << u"-33.388"_s;
-        QTest::newRow("integer") << 45.0 << u"45"_s;
-        QTest::newRow("negative zero") << -0.0 << u"0"_s;
-        QTest::newRow("tiny") << 0.00001 << u"0.00001"_s;
-        QTest::newRow("tenth") << 0.1 << u"0.1"_s;
-    }
-    void formatsNumbersExactlyAndWithoutExponent()
-    {
-        QFETCH(double, value);
-        QFETCH(QString, text);
-        QCOMPARE(formatNumber(value), text);
-        QCOMPARE(formatNumber(value).toDouble(), value);
-    }
-
-    void displaysAtLeastTheUnitsDecimalsButHidesNone()
-    {
-        QCOMPARE(displayNumber(-33.388, Units::Millimetre), u"-33.388"_s);
-        QCOMPARE(displayNumber(2, Units::Millimetre), u"2.000"_s);
-        QCOMPARE(displayNumber(1.5875, Units::Millimetre), u"1.5875"_s);
-        QCOMPARE(displayNumber(0.5, Units::Inch), u"0.5000"_s);
-    }
 };
 
 QTEST_GUILESS_MAIN(TestToolValidation)
