@@ -3,11 +3,13 @@
 // A spreadsheet saved with ';' between fields and decimal commas (as German Excel does) reads too.
 #include "model/formats/tablefile.h"
 
-#include <list>
+#include <array>
 
 #include <QCoreApplication>
 
+#include "model/formats/csvrecords.h"
 #include "model/formats/tablereading.h"
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
 #include "model/translate.h"
@@ -55,128 +57,240 @@ constexpr const char *kColumnNames[ColumnCount] = {
     "linuxcnc",
 };
 
-// One row: each field a view into the file, or into `unescaped` for a quoted field with doubled quotes.
-struct Record
-{
-    QList<QByteArrayView> fields;
-    std::list<QByteArray> unescaped; // std::list: views into it stay valid as it grows
-    int line = 0;
-
-    void clear()
-    {
-        fields.clear();
-        unescaped.clear();
-    }
-};
-
-QByteArrayView trimmed(QByteArrayView v)
-{
-    while (!v.isEmpty() && (v.front() == ' ' || v.front() == '\t'))
-        v = v.sliced(1);
-    while (!v.isEmpty() && (v.back() == ' ' || v.back() == '\t'))
-        v.chop(1);
-    return v;
-}
-
-// No field of a tool table holds more (notes: 10,000 characters); a longer one is refused as it is read.
-constexpr qsizetype kMaxFieldBytes = 64 * 1024;
-
-Error fieldTooLong(QByteArrayView field, int line)
-{
-    return Error { tr("the field \"%1\" is longer than %2 KB; no column of a tool table holds that much.")
-                       .arg(excerpt(field))
-                       .arg(kMaxFieldBytes / 1024),
-        line };
-}
-
-// Splits the next record off `data` at `pos`; quoted fields may hold separators, quotes ("") and line breaks.
-// A record of more than `maxFields` fields is refused at the first field too many, before it is all split.
-Result<void> nextRecord(QByteArrayView data, qsizetype &pos, int &line, char separator, Record &record,
-    qsizetype maxFields, bool header = false)
-{
-    record.clear();
-    record.line = line;
-    const qsizetype size = data.size();
-    while (true) {
-        // Leading blanks, then either a quoted field or a plain one.
-        qsizetype start = pos;
-        while (pos < size && (data.at(pos) == ' ' || data.at(pos) == '\t'))
-            ++pos;
-        if (pos < size && data.at(pos) == '"') {
-            ++pos;
-            const qsizetype inner = pos;
-            bool doubled = false;
-            while (true) {
-                if (pos >= size)
-                    return Error { tr("a quoted field is never closed; add the closing quote (\")."),
-                        record.line };
-                const char c = data.at(pos);
-                if (c == '"') {
-                    if (pos + 1 < size && data.at(pos + 1) == '"') {
-                        doubled = true;
-                        pos += 2;
-                        continue;
-                    }
-                    break;
-                }
-                if (c == '\n')
-                    ++line;
-                ++pos;
-            }
-            const QByteArrayView content = data.sliced(inner, pos - inner);
-            if (content.size() > kMaxFieldBytes)
-                return fieldTooLong(content, record.line);
-            ++pos; // the closing quote
-            if (doubled) {
-                record.unescaped.push_back(content.toByteArray().replace("\"\"", "\""));
-                record.fields.append(record.unescaped.back());
-            } else {
-                record.fields.append(content);
-            }
-            while (pos < size && (data.at(pos) == ' ' || data.at(pos) == '\t' || data.at(pos) == '\r'))
-                ++pos;
-            if (pos < size && data.at(pos) != separator && data.at(pos) != '\n')
-                return Error { tr("text after a closing quote; put the whole field in quotes."), line };
-        } else {
-            start = pos;
-            while (pos < size && data.at(pos) != separator && data.at(pos) != '\n') {
-                if (data.at(pos) == '"')
-                    return Error {
-                        tr("a quote (\") inside an unquoted field; put the whole field in quotes and "
-                           "double the quote."),
-                        line
-                    };
-                ++pos;
-            }
-            QByteArrayView field = data.sliced(start, pos - start);
-            if (field.size() > kMaxFieldBytes)
-                return fieldTooLong(field, line);
-            if (field.endsWith('\r'))
-                field.chop(1);
-            record.fields.append(trimmed(field));
-        }
-        if (pos >= size)
-            return {};
-        if (data.at(pos++) == '\n') {
-            ++line;
-            return {};
-        }
-        if (record.fields.size() >= maxFields)
-            return Error { header
-                    ? tr("the header has more than %1 columns, more than a tool table has.").arg(maxFields)
-                    : tr("this row has more fields than the header's %1.").arg(maxFields),
-                record.line };
-    }
-}
-
-bool isBlank(const Record &record)
-{
-    return record.fields.size() == 1 && record.fields.front().isEmpty();
-}
-
 QString fromUtf8(QByteArrayView v)
 {
     return QString::fromUtf8(v); // the whole file was checked to be UTF-8 up front
+}
+
+// Which field of a row holds each column; -1 for a column the file does not have.
+using ColumnMap = std::array<int, ColumnCount>;
+
+// The file's text after the byte-order mark spreadsheets write, once it is known to be UTF-8.
+Result<QByteArrayView> csvText(const QByteArray &data)
+{
+    QByteArrayView all(data);
+    if (all.startsWith("\xEF\xBB\xBF"))
+        all = all.sliced(3);
+    if (const qsizetype bad = firstInvalidUtf8(all); bad >= 0) {
+        if (all.at(bad) == '\0')
+            return Error { tr("the file holds binary data; it is not a CSV table."), lineAt(all, bad) };
+        return Error { tr("the file is not UTF-8 text; save it from the spreadsheet as \"CSV UTF-8\"."),
+            lineAt(all, bad) };
+    }
+    return all;
+}
+
+// ';' when the header has it and no ',': how a spreadsheet whose decimal mark is the comma saves.
+char separatorOf(QByteArrayView all)
+{
+    const qsizetype firstBreak = all.indexOf('\n');
+    const QByteArrayView headerLine = firstBreak < 0 ? all : all.first(firstBreak);
+    return !headerLine.contains(',') && headerLine.contains(';') ? ';' : ',';
+}
+
+// The header: the first record that is not an empty line.
+Result<void> readHeader(CsvCursor &in, CsvRecord &header)
+{
+    do {
+        if (auto r = nextCsvRecord(in, header, ColumnCount, true); !r)
+            return r;
+    } while (header.isBlank() && !in.atEnd());
+    if (header.isBlank())
+        return Error { tr("the file is empty; a CSV tool table starts with a header row such as "
+                          "\"number,pocket,description,...\"."),
+            1 };
+    return {};
+}
+
+Result<ColumnMap> mapColumns(const CsvRecord &header)
+{
+    ColumnMap columnOf;
+    columnOf.fill(-1);
+    for (int i = 0; i < header.fields.size(); ++i) {
+        const QByteArray name = header.fields.at(i).toByteArray().toLower();
+        const auto found = std::find_if(
+            std::begin(kColumnNames), std::end(kColumnNames), [&name](const char *n) { return name == n; });
+        if (found == std::end(kColumnNames))
+            return Error {
+                tr("unknown column \"%1\" in the header; the columns are number, pocket, description, "
+                   "length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, "
+                   "measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.")
+                    .arg(excerpt(header.fields.at(i))),
+                header.line
+            };
+        const auto column = found - std::begin(kColumnNames);
+        if (columnOf[column] >= 0)
+            return Error {
+                tr("the column \"%1\" appears twice in the header.").arg(QLatin1StringView(*found)),
+                header.line
+            };
+        columnOf[column] = i;
+    }
+    if (columnOf[Number] < 0)
+        return Error { tr("the header has no \"number\" column."), header.line };
+    return columnOf;
+}
+
+// A row being read into a tool, and the first problem found in its fields: the row reports only that one,
+// once every field is read.
+struct Row
+{
+    Row(const CsvRecord &record, const ColumnMap &columnOf, char separator)
+        : record(record)
+        , columnOf(columnOf)
+        , separator(separator)
+    { }
+
+    const CsvRecord &record;
+    const ColumnMap &columnOf;
+    const char separator;
+    QString problem;
+    QByteArray commaDecimal; // a number written with a decimal comma, as a number with a point
+
+    QByteArrayView cell(Column c) const
+    {
+        return columnOf[c] < 0 ? QByteArrayView() : record.fields.at(columnOf[c]);
+    }
+    QString text(Column c) const { return fromUtf8(cell(c)); }
+};
+
+double decimal(Row &row, Column c, double fallback)
+{
+    QByteArrayView s = row.cell(c);
+    if (s.isEmpty())
+        return fallback;
+    if (row.separator == ';' && s.contains(',')) {
+        row.commaDecimal = s.toByteArray().replace(',', '.');
+        s = row.commaDecimal;
+    }
+    const auto v = parseDecimal(s);
+    if (!v && row.problem.isEmpty())
+        row.problem
+            = tr("%1 \"%2\" is not a number.").arg(QLatin1StringView(kColumnNames[c]), excerpt(row.cell(c)));
+    return v.value_or(fallback);
+}
+
+// Why `s`, in the Number or Pocket column, is no tool or pocket number.
+QString notAWholeNumber(Column c, QByteArrayView s)
+{
+    // A whole number too large for any tool or pocket says so, not "not a whole number".
+    if (!isIntegerText(s))
+        return tr("%1 \"%2\" is not a whole number.").arg(QLatin1StringView(kColumnNames[c]), excerpt(s));
+    if (c == Number)
+        return tr("tool number %1 is out of range; use %2 to %3.")
+            .arg(excerpt(s))
+            .arg(Limits::kMinToolNumber)
+            .arg(Limits::kMaxToolNumber);
+    return tr("pocket %1 is out of range; use %2 to %3.")
+        .arg(excerpt(s))
+        .arg(Limits::kMinPocket)
+        .arg(Limits::kMaxPocket);
+}
+
+int integer(Row &row, Column c, int fallback)
+{
+    const QByteArrayView s = row.cell(c);
+    if (s.isEmpty())
+        return fallback;
+    const auto v = parseInteger(s);
+    const bool fits = v && *v >= INT_MIN && *v <= INT_MAX;
+    if (!fits && row.problem.isEmpty())
+        row.problem = notAWholeNumber(c, s);
+    return fits ? int(*v) : fallback;
+}
+
+void readMeasurement(Row &row, Tool &tool)
+{
+    if (!row.cell(MeasuredTlo).isEmpty())
+        tool.measuredTlo = decimal(row, MeasuredTlo, 0.0);
+    if (const QByteArrayView at = row.cell(MeasuredAt); !at.isEmpty()) {
+        tool.measuredAt = parseIsoDateTime(at);
+        if (!tool.measuredAt.isValid() && row.problem.isEmpty())
+            row.problem
+                = tr("measured_at \"%1\" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).")
+                      .arg(excerpt(at));
+    }
+}
+
+// How the TLO was set, the break test's mark and the reference it was measured against.
+void readMarks(Row &row, Tool &tool)
+{
+    if (const QByteArrayView source = row.cell(TloSourceColumn); source == "manual")
+        tool.tloSource = TloSource::Manual;
+    else if (!source.isEmpty() && source != "probe" && row.problem.isEmpty())
+        row.problem = tr("tlo_source \"%1\" must be probe, manual or empty.").arg(excerpt(source));
+    if (const QByteArrayView test = row.cell(BreakTestColumn); test == "failed")
+        tool.breakTestFailed = true;
+    else if (!test.isEmpty() && test != "passed" && row.problem.isEmpty())
+        row.problem = tr("break_test \"%1\" must be failed, passed or empty.").arg(excerpt(test));
+    if (!row.cell(ReferenceMzColumn).isEmpty())
+        tool.referenceMz = decimal(row, ReferenceMzColumn, 0.0);
+}
+
+// The fields are read in the order of the columns, so that a row with two faults reports the first.
+Tool toolFrom(Row &row)
+{
+    Tool tool;
+    tool.number = integer(row, Number, 0);
+    tool.pocket = integer(row, Pocket, defaultPocket(tool.number));
+    tool.description = row.text(Description);
+    tool.lengthGeometry = decimal(row, LengthGeometry, 0.0);
+    tool.lengthWear = decimal(row, LengthWear, 0.0);
+    tool.radiusGeometry = decimal(row, RadiusGeometry, 0.0);
+    tool.radiusWear = decimal(row, RadiusWear, 0.0);
+    readMeasurement(row, tool);
+    tool.notes = row.text(Notes);
+    readMarks(row, tool);
+    tool.linuxCncExtra = row.text(LinuxCnc);
+    return tool;
+}
+
+// A row may name its units; every row that does must name the same.
+Result<void> readUnits(const Row &row, std::optional<Units> &units)
+{
+    const QByteArrayView u = row.cell(UnitsColumn);
+    if (u.isEmpty())
+        return {};
+    const auto rowUnits = u == "mm" ? Units::Millimetre
+        : u == "in"                 ? Units::Inch
+                                    : unitsFromSymbol(row.text(UnitsColumn));
+    if (!rowUnits)
+        return Error { tr("units \"%1\" must be mm or in.").arg(excerpt(u)), row.record.line };
+    if (units && *units != *rowUnits)
+        return Error { tr("this row is in %1 but the rows above are in %2; a table has one unit.")
+                           .arg(unitsSymbol(*rowUnits), unitsSymbol(*units)),
+            row.record.line };
+    units = rowUnits;
+    return {};
+}
+
+Result<ToolTable> readRows(CsvCursor &in, const CsvRecord &header, const ColumnMap &columnOf)
+{
+    std::optional<Units> units;
+    ToolCollector tools(in.data);
+    CsvRecord record;
+    while (!in.atEnd()) {
+        if (auto r = nextCsvRecord(in, record, header.fields.size()); !r)
+            return r.error();
+        if (record.isBlank())
+            continue;
+        if (record.fields.size() != header.fields.size())
+            return Error { tr("this row has %1 fields but the header has %2.")
+                               .arg(record.fields.size())
+                               .arg(header.fields.size()),
+                record.line };
+        Row row(record, columnOf, in.separator);
+        if (row.cell(Number).isEmpty())
+            return Error { tr("the row has no tool number."), record.line };
+        Tool tool = toolFrom(row);
+        if (auto known = readUnits(row, units); !known)
+            return known.error();
+        if (!row.problem.isEmpty())
+            return Error { row.problem, record.line };
+        if (auto added = tools.add(std::move(tool), record.line, units.value_or(Units::Millimetre)); !added)
+            return added.error();
+    }
+    return tools.build(units.value_or(Units::Millimetre));
 }
 
 // A field as RFC 4180 wants it: quoted (quotes doubled) when it holds a separator, a quote, a line break, or
@@ -206,166 +320,17 @@ void appendField(QByteArray &out, const QString &text)
 
 Result<ToolTable> readCsvTable(const QByteArray &data)
 {
-    QByteArrayView all(data);
-    if (all.startsWith("\xEF\xBB\xBF"))
-        all = all.sliced(3); // the byte-order mark spreadsheets write
-    if (const qsizetype bad = firstInvalidUtf8(all); bad >= 0) {
-        if (all.at(bad) == '\0')
-            return Error { tr("the file holds binary data; it is not a CSV table."), lineAt(all, bad) };
-        return Error { tr("the file is not UTF-8 text; save it from the spreadsheet as \"CSV UTF-8\"."),
-            lineAt(all, bad) };
-    }
-
-    qsizetype pos = 0;
-    int line = 1;
-    const qsizetype firstBreak = all.indexOf('\n');
-    const QByteArrayView headerLine = firstBreak < 0 ? all : all.first(firstBreak);
-    const char separator = !headerLine.contains(',') && headerLine.contains(';') ? ';' : ',';
-
-    Record header;
-    do {
-        if (auto r = nextRecord(all, pos, line, separator, header, ColumnCount, true); !r)
-            return r.error();
-    } while (isBlank(header) && pos < all.size());
-    if (isBlank(header))
-        return Error { tr("the file is empty; a CSV tool table starts with a header row such as "
-                          "\"number,pocket,description,...\"."),
-            1 };
-
-    int columnOf[ColumnCount];
-    std::fill(std::begin(columnOf), std::end(columnOf), -1);
-    for (int i = 0; i < header.fields.size(); ++i) {
-        const QByteArray name = header.fields.at(i).toByteArray().toLower();
-        const auto found = std::find_if(
-            std::begin(kColumnNames), std::end(kColumnNames), [&name](const char *n) { return name == n; });
-        if (found == std::end(kColumnNames))
-            return Error {
-                tr("unknown column \"%1\" in the header; the columns are number, pocket, description, "
-                   "length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, "
-                   "measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.")
-                    .arg(excerpt(header.fields.at(i))),
-                header.line
-            };
-        const auto column = found - std::begin(kColumnNames);
-        if (columnOf[column] >= 0)
-            return Error {
-                tr("the column \"%1\" appears twice in the header.").arg(QLatin1StringView(*found)),
-                header.line
-            };
-        columnOf[column] = i;
-    }
-    if (columnOf[Number] < 0)
-        return Error { tr("the header has no \"number\" column."), header.line };
-
-    std::optional<Units> units;
-    ToolCollector tools(all);
-    Record record;
-    QByteArray commaDecimal;
-    while (pos < all.size()) {
-        if (auto r = nextRecord(all, pos, line, separator, record, header.fields.size()); !r)
-            return r.error();
-        if (isBlank(record))
-            continue;
-        if (record.fields.size() != header.fields.size())
-            return Error { tr("this row has %1 fields but the header has %2.")
-                               .arg(record.fields.size())
-                               .arg(header.fields.size()),
-                record.line };
-
-        auto cell = [&](Column c) {
-            return columnOf[c] < 0 ? QByteArrayView() : record.fields.at(columnOf[c]);
-        };
-        auto text = [&](Column c) {
-            return fromUtf8(cell(c));
-        };
-        QString problem;
-        auto decimal = [&](Column c, double fallback) -> double {
-            QByteArrayView s = cell(c);
-            if (s.isEmpty())
-                return fallback;
-            if (separator == ';' && s.contains(',')) {
-                commaDecimal = s.toByteArray().replace(',', '.');
-                s = commaDecimal;
-            }
-            const auto v = parseDecimal(s);
-            if (!v && problem.isEmpty())
-                problem = tr("%1 \"%2\" is not a number.")
-                              .arg(QLatin1StringView(kColumnNames[c]), excerpt(cell(c)));
-            return v.value_or(fallback);
-        };
-        auto integer = [&](Column c, int fallback) -> int {
-            const QByteArrayView s = cell(c);
-            if (s.isEmpty())
-                return fallback;
-            const auto v = parseInteger(s);
-            const bool fits = v && *v >= INT_MIN && *v <= INT_MAX;
-            if (!fits && problem.isEmpty()) {
-                // A whole number too large for any tool or pocket says so, not "not a whole number".
-                problem = isIntegerText(s)
-                    ? (c == Number ? tr("tool number %1 is out of range; use %2 to %3.")
-                                         .arg(excerpt(s))
-                                         .arg(Limits::kMinToolNumber)
-                                         .arg(Limits::kMaxToolNumber)
-                                   : tr("pocket %1 is out of range; use %2 to %3.")
-                                         .arg(excerpt(s))
-                                         .arg(Limits::kMinPocket)
-                                         .arg(Limits::kMaxPocket))
-                    : tr("%1 \"%2\" is not a whole number.")
-                          .arg(QLatin1StringView(kColumnNames[c]), excerpt(s));
-            }
-            return fits ? int(*v) : fallback;
-        };
-
-        if (cell(Number).isEmpty())
-            return Error { tr("the row has no tool number."), record.line };
-        Tool tool;
-        tool.number = integer(Number, 0);
-        tool.pocket = integer(Pocket, defaultPocket(tool.number));
-        tool.description = text(Description);
-        tool.lengthGeometry = decimal(LengthGeometry, 0.0);
-        tool.lengthWear = decimal(LengthWear, 0.0);
-        tool.radiusGeometry = decimal(RadiusGeometry, 0.0);
-        tool.radiusWear = decimal(RadiusWear, 0.0);
-        if (!cell(MeasuredTlo).isEmpty())
-            tool.measuredTlo = decimal(MeasuredTlo, 0.0);
-        if (!cell(MeasuredAt).isEmpty()) {
-            tool.measuredAt = parseIsoDateTime(cell(MeasuredAt));
-            if (!tool.measuredAt.isValid() && problem.isEmpty())
-                problem = tr(
-                    "measured_at \"%1\" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).")
-                              .arg(excerpt(cell(MeasuredAt)));
-        }
-        tool.notes = text(Notes);
-        if (const QByteArrayView source = cell(TloSourceColumn); source == "manual")
-            tool.tloSource = TloSource::Manual;
-        else if (!source.isEmpty() && source != "probe" && problem.isEmpty())
-            problem = tr("tlo_source \"%1\" must be probe, manual or empty.").arg(excerpt(source));
-        if (const QByteArrayView test = cell(BreakTestColumn); test == "failed")
-            tool.breakTestFailed = true;
-        else if (!test.isEmpty() && test != "passed" && problem.isEmpty())
-            problem = tr("break_test \"%1\" must be failed, passed or empty.").arg(excerpt(test));
-        if (!cell(ReferenceMzColumn).isEmpty())
-            tool.referenceMz = decimal(ReferenceMzColumn, 0.0);
-        tool.linuxCncExtra = text(LinuxCnc);
-        if (const QByteArrayView u = cell(UnitsColumn); !u.isEmpty()) {
-            const auto rowUnits = u == "mm" ? Units::Millimetre
-                : u == "in"                 ? Units::Inch
-                                            : unitsFromSymbol(text(UnitsColumn));
-            if (!rowUnits)
-                return Error { tr("units \"%1\" must be mm or in.").arg(excerpt(cell(UnitsColumn))),
-                    record.line };
-            if (units && *units != *rowUnits)
-                return Error { tr("this row is in %1 but the rows above are in %2; a table has one unit.")
-                                   .arg(unitsSymbol(*rowUnits), unitsSymbol(*units)),
-                    record.line };
-            units = rowUnits;
-        }
-        if (!problem.isEmpty())
-            return Error { problem, record.line };
-        if (auto added = tools.add(std::move(tool), record.line, units.value_or(Units::Millimetre)); !added)
-            return added.error();
-    }
-    return tools.build(units.value_or(Units::Millimetre));
+    const auto text = csvText(data);
+    if (!text)
+        return text.error();
+    CsvCursor in(text.value(), separatorOf(text.value()));
+    CsvRecord header;
+    if (auto r = readHeader(in, header); !r)
+        return r.error();
+    const auto columnOf = mapColumns(header);
+    if (!columnOf)
+        return columnOf.error();
+    return readRows(in, header, columnOf.value());
 }
 
 bool writeCsvTable(const ToolTable &table, const ByteSink &sink)
