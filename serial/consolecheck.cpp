@@ -8,7 +8,8 @@
 
 #include <QList>
 
-#include "model/textparsing.h"
+#include "model/gcode/carvera.h"
+#include "model/gcode/gcodewords.h"
 #include "serial/machinesession.h"
 
 using namespace Qt::StringLiterals;
@@ -16,57 +17,6 @@ using namespace Qt::StringLiterals;
 namespace Toffee {
 
 namespace {
-
-struct Word
-{
-    char letter = 0;
-    double value = 0.0;
-    QString text; // as typed, for messages
-};
-
-// The words of one G-code line, comments dropped; nullopt when a word has no number.
-std::optional<QList<Word>> words(const QString &line)
-{
-    QList<Word> out;
-    const QByteArray bytes = line.toUpper().toLatin1();
-    qsizetype i = 0;
-    while (i < bytes.size()) {
-        const char c = bytes.at(i);
-        if (c == ';')
-            break;
-        if (c == '(') {
-            const qsizetype close = bytes.indexOf(')', i);
-            if (close < 0)
-                break;
-            i = close + 1;
-            continue;
-        }
-        if (c == ' ' || c == '\t') {
-            ++i;
-            continue;
-        }
-        if (c < 'A' || c > 'Z')
-            return std::nullopt;
-        qsizetype j = i + 1;
-        while (j < bytes.size()
-            && (std::isdigit(static_cast<unsigned char>(bytes.at(j))) || bytes.at(j) == '.'
-                || bytes.at(j) == '-' || bytes.at(j) == '+' || bytes.at(j) == ' '))
-            ++j;
-        QByteArray number = bytes.mid(i + 1, j - i - 1);
-        number.replace(' ', QByteArray());
-        const auto value = parseDecimal(number);
-        if (!value)
-            return std::nullopt;
-        out.append({ c, *value, QString::fromLatin1(bytes.mid(i, j - i)).trimmed() });
-        i = j;
-    }
-    return out;
-}
-
-bool is(const Word &w, char letter, double value)
-{
-    return w.letter == letter && std::fabs(w.value - value) < 1e-6;
-}
 
 ConsoleCheck refuse(const QString &reason)
 {
@@ -106,32 +56,31 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
         return refuse(
             tr("Toffee asks the machine for its status several times a second: the strip at the top shows "
                "it."));
-    const auto parsed = words(trimmed);
-    if (!parsed)
+    const QByteArray bytes = trimmed.toLatin1();
+    const auto read = GCodeBlock::read(bytes);
+    if (!read)
+        return refuse(
+            tr("\"%1\" is not a G-code line Toffee can read: %2").arg(trimmed, read.error().message));
+    if (std::any_of(read.value().words.cbegin(), read.value().words.cend(),
+            [](const GCodeWord &w) { return w.bare; }))
         return refuse(
             tr("\"%1\" is not a G-code line Toffee can read; check it for a letter without a number.")
                 .arg(trimmed));
-    const QList<Word> &ws = *parsed;
-    auto find = [&ws](char letter) -> const Word * {
-        for (const Word &w : ws) {
-            if (w.letter == letter)
-                return &w;
-        }
-        return nullptr;
+    const GCodeBlock &block = read.value();
+    const auto &ws = block.words;
+    auto find = [&block](char letter) {
+        return block.find(letter);
     };
-    auto has = [&ws](char letter, double value) {
-        return std::any_of(ws.cbegin(), ws.cend(), [&](const Word &w) { return is(w, letter, value); });
+    auto has = [&block](char letter, double value) {
+        return block.has(letter, value);
     };
 
     if (halted) {
-        // What the firmware still takes while halted (docs/CARVERA.md); everything else would get "Alarm lock".
-        static const double allowed[] = { 2, 5, 9, 30, 80, 81, 105, 106, 107, 114, 115, 119, 503, 911, 999 };
-        const bool onlyAllowed = !ws.isEmpty() && std::all_of(ws.cbegin(), ws.cend(), [](const Word &w) {
-            return w.letter == 'M' && std::any_of(std::begin(allowed), std::end(allowed), [&w](double m) {
-                return std::fabs(w.value - m) < 1e-6;
-            });
-        });
-        if (!onlyAllowed)
+        // What the firmware still takes while halted; everything else would get "Alarm lock". The firmware
+        // looks at the first word only; the console asks that every word be one, so nothing else rides along.
+        if (block.isEmpty() || !std::all_of(ws.cbegin(), ws.cend(), [](const GCodeWord &w) {
+                return carveraRunsWhileHalted(w);
+            }))
             return refuse(
                 tr("The machine is halted: it refuses \"%1\" until it is unlocked. Check the machine, "
                    "then use Machine ▸ Unlock ($X).")
@@ -141,7 +90,7 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
     if (has('G', 20))
         return refuse(tr("The Carvera works in millimetres only: G20 (inches) halts it. Use G21."));
     if (has('M', 491.1)) {
-        const Word *h = find('H');
+        const GCodeWord *h = find('H');
         const double tolerance = h ? h->value : MachineSession::kDefaultTolerance;
         if (auto r = MachineSession::validateTolerance(tolerance); !r)
             return refuse(r.error().message);
@@ -150,8 +99,8 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
                "Use Machine ▸ Break Test to have the result recorded in the table."));
     }
     if (has('M', 493.3)) {
-        const Word *z = find('Z');
-        const Word *h = find('H');
+        const GCodeWord *z = find('Z');
+        const GCodeWord *h = find('H');
         if (!z && !h)
             return refuse(tr("M493.3 needs Z (the TLO) or H (the tool tip's height above Z0)."));
         if (auto r = MachineSession::validateOffset(
@@ -165,20 +114,20 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
         return c;
     }
     // M493.2 and M6 need a tool word that is a tool number; either halts the machine without one.
-    auto toolProblem = [](const Word *t, const QString &missing) -> QString {
+    auto toolProblem = [](const GCodeWord *t, const QString &missing) -> QString {
         if (!t)
             return missing;
         if (t->value != std::floor(t->value) || t->value < Limits::kEmptySpindle
             || t->value > Limits::kMaxToolNumber || !MachineSession::validateToolNumber(int(t->value)))
             return tr("%1 is not a tool number; use %2 to %3 (%4 for an empty spindle).")
-                .arg(t->text)
+                .arg(QString::fromLatin1(t->text).toUpper())
                 .arg(Limits::kMinToolNumber)
                 .arg(Limits::kMaxToolNumber)
                 .arg(Limits::kEmptySpindle);
         return {};
     };
     if (has('M', 493.2)) {
-        const Word *t = find('T');
+        const GCodeWord *t = find('T');
         if (const QString problem
             = toolProblem(t, tr("M493.2 needs a tool (M493.2 T2): without one the machine halts."));
             !problem.isEmpty())
@@ -191,7 +140,7 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
         return c;
     }
     if (has('M', 6)) {
-        const Word *t = find('T');
+        const GCodeWord *t = find('T');
         if (const QString problem = toolProblem(t, tr("M6 needs a tool (M6 T2).")); !problem.isEmpty())
             return refuse(problem);
         ConsoleCheck c = confirm(
@@ -208,7 +157,7 @@ ConsoleCheck ConsoleCheck::check(const QString &line, bool halted)
     if (has('M', 3) || has('M', 4))
         return confirm(tr("%1 starts the spindle.").arg(trimmed));
     const bool motion = std::any_of(ws.cbegin(), ws.cend(),
-                            [](const Word &w) {
+                            [](const GCodeWord &w) {
                                 return w.letter == 'X' || w.letter == 'Y' || w.letter == 'Z'
                                     || w.letter == 'A' || w.letter == 'B' || w.letter == 'C';
                             })

@@ -328,10 +328,6 @@
         <translation>Unbekannte Steuerung.</translation>
     </message>
     <message>
-        <source>%1 is too large: a controller takes at most eight digits before the decimal point.</source>
-        <translation>%1 ist zu groß: Eine Steuerung nimmt höchstens acht Stellen vor dem Dezimalpunkt.</translation>
-    </message>
-    <message>
         <source>%1… (%2 characters)</source>
         <translation>%1… (%2 Zeichen)</translation>
     </message>
@@ -770,6 +766,10 @@
         <source>%1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
         <translation>%1 ist keine Werkzeugnummer; verwenden Sie %2 bis %3 (%4 für eine leere Spindel).</translation>
     </message>
+    <message>
+        <source>"%1" is not a G-code line Toffee can read: %2</source>
+        <translation>„%1“ ist keine G-Code-Zeile, die Toffee lesen kann: %2</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleDock</name>
@@ -925,10 +925,6 @@
 <context>
     <name>Toffee::GCodeInterpreter</name>
     <message>
-        <source>a comment "(" is never closed on this line.</source>
-        <translation>Ein Kommentar „(“ wird in dieser Zeile nicht geschlossen.</translation>
-    </message>
-    <message>
         <source>"%1" is not G-code this controller reads.</source>
         <translation>„%1“ ist kein G-Code, den diese Steuerung liest.</translation>
     </message>
@@ -939,22 +935,6 @@
     <message>
         <source>"%1" is not a number.</source>
         <translation>„%1“ ist keine Zahl.</translation>
-    </message>
-    <message>
-        <source>too many G codes in one block.</source>
-        <translation>Zu viele G-Codes in einem Satz.</translation>
-    </message>
-    <message>
-        <source>too many M codes in one block.</source>
-        <translation>Zu viele M-Codes in einem Satz.</translation>
-    </message>
-    <message>
-        <source>the word %1 appears twice in one block.</source>
-        <translation>Das Wort %1 kommt in einem Satz zweimal vor.</translation>
-    </message>
-    <message>
-        <source>unexpected "%1".</source>
-        <translation>Unerwartetes „%1“.</translation>
     </message>
     <message>
         <source>G%1 is not simulated.</source>
@@ -1095,6 +1075,41 @@
     <message>
         <source>%1%2 must be a whole number from %3 to %4.</source>
         <translation>%1%2 muss eine ganze Zahl von %3 bis %4 sein.</translation>
+    </message>
+    <message>
+        <source>too many G codes in one block.</source>
+        <translation>Zu viele G-Codes in einem Satz.</translation>
+    </message>
+    <message>
+        <source>too many M codes in one block.</source>
+        <translation>Zu viele M-Codes in einem Satz.</translation>
+    </message>
+    <message>
+        <source>the word %1 appears twice in one block.</source>
+        <translation>Das Wort %1 kommt in einem Satz zweimal vor.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::GCodeLexer</name>
+    <message>
+        <source>a comment "(" is never closed on this line.</source>
+        <translation>Ein Kommentar „(“ wird in dieser Zeile nicht geschlossen.</translation>
+    </message>
+    <message>
+        <source>unexpected "%1".</source>
+        <translation>Unerwartetes „%1“.</translation>
+    </message>
+    <message>
+        <source>"%1" is not a number.</source>
+        <translation>„%1“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>%1 is too large: a controller takes at most eight digits before the decimal point.</source>
+        <translation>%1 ist zu groß: Eine Steuerung nimmt höchstens acht Stellen vor dem Dezimalpunkt.</translation>
+    </message>
+    <message>
+        <source>"%1" is not G-code this controller reads.</source>
+        <translation>„%1“ ist kein G-Code, den diese Steuerung liest.</translation>
     </message>
 </context>
 <context>

@@ -328,10 +328,6 @@
         <translation>未知的控制器。</translation>
     </message>
     <message>
-        <source>%1 is too large: a controller takes at most eight digits before the decimal point.</source>
-        <translation>%1 太大：控制器在小数点前最多接受八位数字。</translation>
-    </message>
-    <message>
         <source>%1… (%2 characters)</source>
         <translation>%1…（共 %2 个字符）</translation>
     </message>
@@ -770,6 +766,10 @@
         <source>%1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
         <translation>%1 不是刀具号；请使用 %2 到 %3（%4 表示主轴为空）。</translation>
     </message>
+    <message>
+        <source>"%1" is not a G-code line Toffee can read: %2</source>
+        <translation>“%1”不是 Toffee 能读取的 G 代码行：%2</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleDock</name>
@@ -925,10 +925,6 @@
 <context>
     <name>Toffee::GCodeInterpreter</name>
     <message>
-        <source>a comment "(" is never closed on this line.</source>
-        <translation>本行的注释“(”没有结束。</translation>
-    </message>
-    <message>
         <source>"%1" is not G-code this controller reads.</source>
         <translation>“%1”不是此控制器能读取的 G 代码。</translation>
     </message>
@@ -939,22 +935,6 @@
     <message>
         <source>"%1" is not a number.</source>
         <translation>“%1”不是数字。</translation>
-    </message>
-    <message>
-        <source>too many G codes in one block.</source>
-        <translation>一个程序段中的 G 代码太多。</translation>
-    </message>
-    <message>
-        <source>too many M codes in one block.</source>
-        <translation>一个程序段中的 M 代码太多。</translation>
-    </message>
-    <message>
-        <source>the word %1 appears twice in one block.</source>
-        <translation>字 %1 在一个程序段中出现了两次。</translation>
-    </message>
-    <message>
-        <source>unexpected "%1".</source>
-        <translation>意外的“%1”。</translation>
     </message>
     <message>
         <source>G%1 is not simulated.</source>
@@ -1095,6 +1075,41 @@
     <message>
         <source>%1%2 must be a whole number from %3 to %4.</source>
         <translation>%1%2 必须是 %3 到 %4 之间的整数。</translation>
+    </message>
+    <message>
+        <source>too many G codes in one block.</source>
+        <translation>一个程序段中的 G 代码太多。</translation>
+    </message>
+    <message>
+        <source>too many M codes in one block.</source>
+        <translation>一个程序段中的 M 代码太多。</translation>
+    </message>
+    <message>
+        <source>the word %1 appears twice in one block.</source>
+        <translation>字 %1 在一个程序段中出现了两次。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::GCodeLexer</name>
+    <message>
+        <source>a comment "(" is never closed on this line.</source>
+        <translation>本行的注释“(”没有结束。</translation>
+    </message>
+    <message>
+        <source>unexpected "%1".</source>
+        <translation>意外的“%1”。</translation>
+    </message>
+    <message>
+        <source>"%1" is not a number.</source>
+        <translation>“%1”不是数字。</translation>
+    </message>
+    <message>
+        <source>%1 is too large: a controller takes at most eight digits before the decimal point.</source>
+        <translation>%1 太大：控制器在小数点前最多接受八位数字。</translation>
+    </message>
+    <message>
+        <source>"%1" is not G-code this controller reads.</source>
+        <translation>“%1”不是此控制器能读取的 G 代码。</translation>
     </message>
 </context>
 <context>

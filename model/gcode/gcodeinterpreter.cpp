@@ -5,6 +5,8 @@
 
 #include <QCoreApplication>
 
+#include "model/gcode/gcodeinterpreter_p.h"
+#include "model/gcode/gcodewords.h"
 #include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
@@ -13,80 +15,6 @@
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
-
-namespace {
-
-constexpr int kMaxOffsetNumber = Limits::kMaxOffsetNumber;
-constexpr double kMaxGeometry = Limits::kMaxGeometryMm;
-constexpr double kMaxWear = Limits::kMaxWearMm;
-// Controllers take at most eight digits before the point (FANUC's +-99999999). The bound also keeps every
-// position a program can reach finite: without it, two G91 moves of 1e308 end at infinity.
-constexpr double kMaxWordValue = Limits::kMaxWordValue;
-
-bool isLetter(char c)
-{
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
-}
-
-char upper(char c)
-{
-    return c >= 'a' && c <= 'z' ? char(c - 'a' + 'A') : c;
-}
-
-bool same(double a, double b)
-{
-    return std::fabs(a - b) < 1e-6;
-}
-
-QString number(double v)
-{
-    return formatNumber(v);
-}
-
-QString tooLarge(QByteArrayView word)
-{
-    return tr("%1 is too large: a controller takes at most eight digits before the decimal point.")
-        .arg(QString::fromUtf8(word));
-}
-
-int axisIndex(char letter)
-{
-    return letter == 'X' ? 0 : letter == 'Y' ? 1 : letter == 'Z' ? 2 : -1;
-}
-
-} // namespace
-
-struct GCodeInterpreter::Words
-{
-    std::array<double, 26> value {};
-    std::array<bool, 26> has {};
-    std::array<bool, 26> bare {}; // a letter with no number: Aerotech's "G44 X Y Z"
-    std::array<double, 8> g {};
-    int gCount = 0;
-    std::array<double, 4> m {};
-    int mCount = 0;
-
-    [[nodiscard]] bool hasG(double code) const
-    {
-        for (int i = 0; i < gCount; ++i) {
-            if (same(g[size_t(i)], code))
-                return true;
-        }
-        return false;
-    }
-    [[nodiscard]] bool hasM(double code) const
-    {
-        for (int i = 0; i < mCount; ++i) {
-            if (same(m[size_t(i)], code))
-                return true;
-        }
-        return false;
-    }
-    [[nodiscard]] bool word(char letter) const { return has[size_t(letter - 'A')]; }
-    [[nodiscard]] double get(char letter) const { return value[size_t(letter - 'A')]; }
-    [[nodiscard]] bool isBare(char letter) const { return bare[size_t(letter - 'A')]; }
-    [[nodiscard]] bool anyAxis() const { return word('X') || word('Y') || word('Z'); }
-};
 
 GCodeInterpreter::GCodeInterpreter(Dialect dialect, OffsetTable offsets, int samples)
     : m_dialect(dialect)
@@ -157,73 +85,25 @@ Result<void> GCodeInterpreter::run(QByteArrayView program)
 Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
 {
     Words w;
-    qsizetype i = 0;
-    const qsizetype n = text.size();
-    while (i < n) {
-        const char c = text.at(i);
-        if (c == ' ' || c == '\t' || c == '\r' || c == '%') {
-            ++i;
-        } else if (c == '(') {
-            const qsizetype close = text.indexOf(')', i);
-            if (close < 0)
-                return error(line, tr("a comment \"(\" is never closed on this line."));
-            i = close + 1;
-        } else if (c == ';' || (c == '/' && i + 1 < n && text.at(i + 1) == '/')) {
-            break;
-        } else if (isLetter(c) && i + 1 < n && isLetter(text.at(i + 1))) {
-            // A function call, as Aerotech writes them: the rest of the line, less a trailing comment.
-            QByteArrayView call = text.sliced(i);
-            if (const qsizetype comment = call.indexOf("//"); comment >= 0)
-                call = call.first(comment);
+    GCodeLexer lexer(text);
+    for (;;) {
+        switch (lexer.next()) {
+        case GCodeLexer::Token::Word:
+            if (const QString problem = w.add(lexer.word()); !problem.isEmpty())
+                return error(line, problem);
+            continue;
+        case GCodeLexer::Token::Call:
             if (m_dialect != Dialect::Aerotech)
                 return error(line,
-                    tr("\"%1\" is not G-code this controller reads.").arg(QString::fromUtf8(call.trimmed())));
+                    tr("\"%1\" is not G-code this controller reads.").arg(QString::fromUtf8(lexer.call())));
             ++m_blocks;
-            return callFunction(call.trimmed(), line);
-        } else if (isLetter(c)) {
-            const char letter = upper(c);
-            qsizetype j = i + 1;
-            while (j < n && (text.at(j) == ' '))
-                ++j;
-            qsizetype k = j;
-            while (k < n
-                && ((text.at(k) >= '0' && text.at(k) <= '9') || text.at(k) == '.' || text.at(k) == '-'
-                    || text.at(k) == '+'))
-                ++k;
-            const size_t slot = size_t(letter - 'A');
-            if (k == j) {
-                if (axisIndex(letter) < 0)
-                    return error(line, tr("the word %1 needs a value.").arg(QChar::fromLatin1(letter)));
-                w.has[slot] = true;
-                w.bare[slot] = true;
-                i = j;
-                continue;
-            }
-            const auto v = parseDecimal(text.sliced(j, k - j));
-            if (!v)
-                return error(
-                    line, tr("\"%1\" is not a number.").arg(QString::fromUtf8(text.sliced(j, k - j))));
-            if (std::fabs(*v) > kMaxWordValue)
-                return error(line, tooLarge(text.sliced(i, k - i)));
-            if (letter == 'G') {
-                if (w.gCount == int(w.g.size()))
-                    return error(line, tr("too many G codes in one block."));
-                w.g[size_t(w.gCount++)] = *v;
-            } else if (letter == 'M') {
-                if (w.mCount == int(w.m.size()))
-                    return error(line, tr("too many M codes in one block."));
-                w.m[size_t(w.mCount++)] = *v;
-            } else {
-                if (w.has[slot])
-                    return error(
-                        line, tr("the word %1 appears twice in one block.").arg(QChar::fromLatin1(letter)));
-                w.has[slot] = true;
-                w.value[slot] = *v;
-            }
-            i = k;
-        } else {
-            return error(line, tr("unexpected \"%1\".").arg(QChar::fromLatin1(c)));
+            return callFunction(lexer.call(), line);
+        case GCodeLexer::Token::Error:
+            return error(line, lexer.error());
+        case GCodeLexer::Token::End:
+            break;
         }
+        break;
     }
     if (w.gCount == 0 && w.mCount == 0
         && std::none_of(w.has.cbegin(), w.has.cend(), [](bool b) { return b; }))
@@ -305,304 +185,6 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
     return {};
 }
 
-Result<void> GCodeInterpreter::lengthWords(const Words &w, int line)
-{
-    const bool fanuc = m_dialect == Dialect::Fanuc;
-    const bool ab = m_dialect == Dialect::AllenBradley9;
-    const bool fagor = m_dialect == Dialect::Fagor8055M;
-    const bool carvera = m_dialect == Dialect::Carvera;
-
-    if (carvera) {
-        if (w.hasG(43) || w.hasG(44) || w.hasG(49))
-            return error(line, tr("the Carvera has no G43/G44/G49: its TLO always applies."));
-        if (w.hasM(493.3) && w.word('Z'))
-            m_lengthValue = w.get('Z');
-        if (w.hasM(6) && w.word('H'))
-            m_lengthValue = w.get('H');
-        m_lengthMode = LengthMode::Plus;
-        return {};
-    }
-    if (fagor) {
-        if (w.word('T') && !w.word('D')) {
-            const auto tool = wholeWord(w, 'T', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
-            if (!tool)
-                return tool.error();
-            m_lengthValue = offsetValue(tool.value()); // the offset linked to the tool
-        }
-        if (w.word('D')) {
-            const auto d = wholeWord(w, 'D', 0, kMaxOffsetNumber, line);
-            if (!d)
-                return d.error();
-            m_lengthValue = offsetValue(d.value());
-        }
-        if (w.hasG(43))
-            m_lengthMode = LengthMode::Plus; // the value carries its own sign
-        if (w.hasG(44) || w.hasG(74))
-            m_lengthMode = LengthMode::Off;
-        return {};
-    }
-    // FANUC and Allen-Bradley: H calls (and latches) an offset; G43 / G44 set the direction; G49 cancels.
-    if (w.word('H')) {
-        const double h = w.get('H');
-        if (h != std::floor(h) || h < 0 || h > kMaxOffsetNumber)
-            return error(line,
-                fanuc ? tr("PS0030 ILLEGAL OFFSET NUMBER: H%1; offsets go from 0 to %2.")
-                            .arg(number(h))
-                            .arg(kMaxOffsetNumber)
-                      : tr("H%1 is not an offset number (0 to %2).").arg(number(h)).arg(kMaxOffsetNumber));
-        m_hNumber = int(h);
-        m_lengthValue = m_hNumber == 0 ? 0.0 : offsetValue(m_hNumber);
-        if (fanuc && m_hNumber == 0)
-            m_lengthMode = LengthMode::Off; // FANUC: H0 cancels; AB keeps the mode with a value of 0
-    }
-    if (w.hasG(43))
-        m_lengthMode = LengthMode::Plus;
-    if (w.hasG(44))
-        m_lengthMode = LengthMode::Minus;
-    if (w.hasG(49))
-        m_lengthMode = LengthMode::Off; // AB keeps H; FANUC's next G43 needs an H anyway
-    Q_UNUSED(ab);
-    return {};
-}
-
-Result<void> GCodeInterpreter::linuxCncLength(const Words &w, int line)
-{
-    const bool change = w.hasG(43) || w.hasG(43.1) || w.hasG(43.2) || w.hasG(49);
-    if (change && m_radiusComp)
-        return error(line, tr("Cannot change tool offset with cutter radius compensation on"));
-    if (w.word('T')) {
-        const auto tool = wholeWord(w, 'T', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
-        if (!tool)
-            return tool.error();
-        m_preparedTool = tool.value();
-    }
-    if (w.hasM(6))
-        m_loadedTool = m_preparedTool; // the offset does not change: issue G43 after
-    if (w.hasM(61)) {
-        if (!w.word('Q'))
-            return error(line, tr("M61 needs Q, the tool number."));
-        const auto tool = wholeWord(w, 'Q', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
-        if (!tool)
-            return tool.error();
-        m_loadedTool = tool.value();
-    }
-    // The length of the tool the H word names, or else of the loaded tool.
-    auto toolLength = [this, &w, line]() -> Result<double> {
-        int tool = m_loadedTool;
-        if (w.word('H')) {
-            const auto h = wholeWord(w, 'H', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
-            if (!h)
-                return h.error();
-            tool = h.value();
-        }
-        if (tool == 0)
-            return 0.0;
-        const auto it = m_offsets.find(tool);
-        if (it == m_offsets.end())
-            return error(line, tr("tool %1 is not in the tool table.").arg(tool));
-        return it->second.length();
-    };
-    if (w.hasG(43)) {
-        auto v = toolLength();
-        if (!v)
-            return v.error();
-        m_lengthValue = v.value();
-        m_lengthMode = LengthMode::Plus;
-    } else if (w.hasG(43.1)) {
-        if (!w.word('Z'))
-            return error(line, tr("G43.1 needs Z, the offset."));
-        m_lengthValue = w.get('Z');
-        m_lengthMode = LengthMode::Plus;
-    } else if (w.hasG(43.2)) {
-        if (!w.word('H'))
-            return error(line, tr("G43.2 needs H, the tool whose offset it adds."));
-        auto v = toolLength();
-        if (!v)
-            return v.error();
-        m_lengthValue += v.value();
-        m_lengthMode = LengthMode::Plus;
-    } else if (w.hasG(49)) {
-        m_lengthValue = 0.0;
-        m_lengthMode = LengthMode::Off;
-    }
-    return {};
-}
-
-Result<void> GCodeInterpreter::g10(const Words &w, int line)
-{
-    const bool fanuc = m_dialect == Dialect::Fanuc;
-    if (!w.word('L'))
-        return error(line,
-            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: G10 needs an L word.") : tr("G10 needs an L word."));
-    const double l = w.get('L');
-    if (same(l, 2) || same(l, 20)) { // a work offset: G10 L2 P1 X Y Z
-        if (w.word('P') && !same(w.get('P'), 1))
-            return error(line, tr("only G54 (P1) is simulated."));
-        for (size_t i = 0; i < 3; ++i) {
-            const char a = "XYZ"[i];
-            if (w.word(a))
-                // L20: the current position becomes `value`, tool length offset included.
-                m_g54[i] = same(l, 2)
-                    ? w.get(a)
-                    : m_machine[i] - w.get(a) - (i == size_t(m_lengthAxis) ? m_appliedLength : 0.0);
-        }
-        return {};
-    }
-    if (m_dialect == Dialect::LinuxCnc) {
-        if (!same(l, 1))
-            return error(line,
-                tr("G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.").arg(number(l)));
-        if (!w.word('P') || w.get('P') < 1 || w.get('P') > Limits::kMaxToolNumber
-            || w.get('P') != std::floor(w.get('P')))
-            return error(line, tr("G10 L1 needs P, a tool number in the tool table."));
-        const auto it = m_offsets.find(int(w.get('P')));
-        if (it == m_offsets.end())
-            return error(line, tr("G10 L1: tool %1 is not in the tool table.").arg(number(w.get('P'))));
-        if (w.word('Z'))
-            it->second.lengthGeometry
-                = w.get('Z'); // the table only: the active offset changes at the next G43
-        if (w.word('R'))
-            it->second.radiusGeometry = w.get('R');
-        return {};
-    }
-    if (m_dialect != Dialect::Fanuc && m_dialect != Dialect::AllenBradley9)
-        return error(line, tr("this controller's offset table is not programmed with G10."));
-    if (m_dialect == Dialect::AllenBradley9 && m_radiusComp)
-        return error(line,
-            tr("G10 may not be programmed while cutter compensation (G41/G42) is active; nothing was "
-               "written."));
-    if (!same(l, 10) && !same(l, 11) && !same(l, 12) && !same(l, 13))
-        return error(line,
-            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: L%1 is not L10 to L13.").arg(number(l))
-                  : tr("G10 L%1 is not L10 to L13.").arg(number(l)));
-    const double p = w.word('P') ? w.get('P') : -1;
-    if (p < 1 || p > kMaxOffsetNumber || p != std::floor(p))
-        return error(line,
-            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: P must be an offset number from 1 to %1.")
-                        .arg(kMaxOffsetNumber)
-                  : tr("G10 needs P, an offset number from 1 to %1.").arg(kMaxOffsetNumber));
-    // AB: R may be replaced by the tool length axis' name.
-    const char lengthAxis = "XYZ"[m_lengthAxis];
-    double value = 0.0;
-    if (w.word('R'))
-        value = w.get('R');
-    else if (m_dialect == Dialect::AllenBradley9 && (same(l, 10) || same(l, 11)) && w.word(lengthAxis)
-        && !w.isBare(lengthAxis))
-        value = w.get(lengthAxis);
-    else
-        return error(line,
-            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: the value (R) is missing.")
-                  : tr("G10 needs R, the value."));
-    const bool wear = same(l, 11) || same(l, 13);
-    // Worked on a copy: a refused value must not leave behind a register it created.
-    const auto stored = m_offsets.find(int(p));
-    OffsetEntry entry = stored == m_offsets.end() ? OffsetEntry {} : stored->second;
-    double &field = same(l, 10) ? entry.lengthGeometry
-        : same(l, 11)           ? entry.lengthWear
-        : same(l, 12)           ? entry.radiusGeometry
-                                : entry.radiusWear;
-    const double result = m_absolute ? value : field + value; // G90 replaces, G91 adds
-    const double limit = wear ? kMaxWear : kMaxGeometry;
-    if (!std::isfinite(result) || std::fabs(result) > limit + 1e-9)
-        return error(line,
-            fanuc ? tr("PS0032 ILLEGAL OFFSET VALUE IN G10: %1 is beyond ±%2.").arg(number(result)).arg(limit)
-                  : tr("G10: %1 is beyond ±%2.").arg(number(result)).arg(limit));
-    field = result;
-    m_offsets[int(p)] = entry;
-    return {};
-}
-
-Result<void> GCodeInterpreter::aerotechAxes(const QList<int> &axes, int line)
-{
-    if (axes.size() != 2 && axes.size() != 3)
-        return error(line, tr("cutter compensation takes 2 or 3 axes."));
-    if (m_compSign != 0 || m_pending != 0)
-        return error(
-            line, tr("the compensation axes can only change while cutter offset compensation is off."));
-    m_compAxes = axes;
-    m_compOffsets = QList<double>(axes.size(), 0.0);
-    return {};
-}
-
-Result<void> GCodeInterpreter::callFunction(QByteArrayView call, int line)
-{
-    const qsizetype open = call.indexOf('(');
-    if (open < 0 || !call.endsWith(')'))
-        return error(line, tr("\"%1\" is not a call this simulator knows.").arg(QString::fromUtf8(call)));
-    const QByteArrayView name = call.first(open).trimmed();
-    QByteArrayView args = call.sliced(open + 1, call.size() - open - 2).trimmed();
-    if (args.startsWith('[') && args.endsWith(']'))
-        args = args.sliced(1, args.size() - 2);
-    QList<QByteArrayView> items;
-    for (QByteArrayView item : splitView(args, ',')) {
-        if (!item.trimmed().isEmpty())
-            items.append(item.trimmed());
-    }
-    auto axesOf = [&](QList<int> &axes) -> bool {
-        for (QByteArrayView item : items) {
-            const int index = item.size() == 1 ? axisIndex(upper(item.front())) : -1;
-            if (index < 0)
-                return false;
-            axes.append(index);
-        }
-        return true;
-    };
-    if (name == "CutterCompensationSetAxes") {
-        QList<int> axes;
-        if (!axesOf(axes))
-            return error(line, tr("CutterCompensationSetAxes takes axes such as [X, Y, Z]."));
-        return aerotechAxes(axes, line);
-    }
-    if (name == "CutterCompensationSetOffsets") {
-        if (m_compSign != 0 || m_pending != 0)
-            return error(
-                line, tr("CutterCompensationSetOffsets works only while cutter offset compensation is off."));
-        if (items.size() != m_compAxes.size())
-            return error(line,
-                tr("CutterCompensationSetOffsets needs %1 offsets, one for each compensation axis.")
-                    .arg(m_compAxes.size()));
-        QList<double> offsets;
-        for (QByteArrayView item : items) {
-            const auto v = parseDecimal(item);
-            if (!v)
-                return error(line, tr("\"%1\" is not a number.").arg(QString::fromUtf8(item)));
-            if (std::fabs(*v) > kMaxWordValue)
-                return error(line, tooLarge(item));
-            offsets.append(*v);
-        }
-        m_compOffsets = offsets;
-        return {};
-    }
-    if (name == "Home") {
-        QList<int> axes;
-        if (!axesOf(axes) || axes.isEmpty())
-            return error(line, tr("Home takes axes such as X or [X, Y]."));
-        // Compensation ends at once, with no lead-off.
-        m_compSign = 0;
-        m_compFraction = 0.0;
-        m_pending = 0;
-        SimulatedMove record { line, m_machine, {} };
-        const Position start = m_machine;
-        for (int a : axes) {
-            m_machine[size_t(a)] = 0.0;
-            m_program[size_t(a)] = 0.0;
-        }
-        if (m_recordMoves) {
-            record.end = m_machine;
-            for (int s = 0; s < m_samples; ++s) {
-                const double t = m_samples == 1 ? 1.0 : double(s) / double(m_samples - 1);
-                Position p {};
-                for (size_t k = 0; k < 3; ++k)
-                    p[k] = start[k] + t * (m_machine[k] - start[k]);
-                record.points.append(p);
-            }
-            m_moves.append(record);
-        }
-        return {};
-    }
-    return error(line, tr("\"%1\" is not a call this simulator knows.").arg(QString::fromUtf8(name)));
-}
-
 double GCodeInterpreter::lengthContribution() const
 {
     switch (m_lengthMode) {
@@ -670,23 +252,46 @@ void GCodeInterpreter::move(const Words &w, int line)
             m_program[i] = end[i] - m_g54[i] - (i == size_t(m_lengthAxis) ? m_appliedLength : 0.0);
     }
     m_machine = end;
+    if (m_dialect == Dialect::Aerotech)
+        recordCompensated(line, programStart, fromFraction, toFraction);
+    else
+        recordStraight(line, start);
+}
+
+// The move to where the machine is now, from `start`, sampled along a straight line.
+void GCodeInterpreter::recordStraight(int line, const Position &start)
+{
     if (!m_recordMoves)
         return;
-    SimulatedMove record { line, end, {} };
+    SimulatedMove record { line, m_machine, {} };
+    for (int s = 0; s < m_samples; ++s) {
+        const double t = m_samples == 1 ? 1.0 : double(s) / double(m_samples - 1);
+        Position p {};
+        for (size_t k = 0; k < 3; ++k)
+            p[k] = start[k] + t * (m_machine[k] - start[k]);
+        record.points.append(p);
+    }
+    m_moves.append(record);
+}
+
+// An Aerotech move, sampled as the controller blends its compensation in (or out) from `fromFraction` to
+// `toFraction` of the offsets over the move.
+void GCodeInterpreter::recordCompensated(
+    int line, const Position &programStart, double fromFraction, double toFraction)
+{
+    if (!m_recordMoves)
+        return;
+    SimulatedMove record { line, m_machine, {} };
+    const int sign = m_compSign != 0 ? m_compSign : (fromFraction > 0 ? 1 : 0);
     for (int s = 0; s < m_samples; ++s) {
         const double t = m_samples == 1 ? 1.0 : double(s) / double(m_samples - 1);
         Position p {};
         for (size_t i = 0; i < 3; ++i) {
-            if (m_dialect == Dialect::Aerotech) {
-                const double programmed = programStart[i] + t * (m_program[i] - programStart[i]);
-                const int sign = m_compSign != 0 ? m_compSign : (fromFraction > 0 ? 1 : 0);
-                const qsizetype k = m_compAxes.indexOf(int(i));
-                const double offset = k < 0 ? 0.0 : m_compOffsets.at(k);
-                p[i] = programmed
-                    + (sign == 0 ? 0.0 : sign * offset * (fromFraction + t * (toFraction - fromFraction)));
-            } else {
-                p[i] = start[i] + t * (end[i] - start[i]);
-            }
+            const double programmed = programStart[i] + t * (m_program[i] - programStart[i]);
+            const qsizetype k = m_compAxes.indexOf(int(i));
+            const double offset = k < 0 ? 0.0 : m_compOffsets.at(k);
+            p[i] = programmed
+                + (sign == 0 ? 0.0 : sign * offset * (fromFraction + t * (toFraction - fromFraction)));
         }
         record.points.append(p);
     }

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include <QByteArrayView>
+#include <QCoreApplication>
 #include <QList>
 
 #include "model/gcode/dialect.h"
@@ -50,6 +51,8 @@ struct SimulatedMove
 // - Carvera: no G43; the TLO set by M493.3 Z (or M6 T H) always applies.
 class GCodeInterpreter
 {
+    Q_DECLARE_TR_FUNCTIONS(Toffee::GCodeInterpreter)
+
 public:
     GCodeInterpreter(Dialect dialect, OffsetTable offsets = {}, int samples = 0);
 
@@ -77,10 +80,16 @@ private:
     [[nodiscard]] Result<void> execute(const Words &w, int line);
     [[nodiscard]] Result<void> callFunction(QByteArrayView call, int line);
     [[nodiscard]] Result<void> g10(const Words &w, int line);
+    [[nodiscard]] Result<void> g10WorkOffset(const Words &w, double l, int line);
+    [[nodiscard]] Result<void> g10ToolTable(const Words &w, double l, int line);
+    [[nodiscard]] Result<void> g10Register(const Words &w, double l, int line);
     [[nodiscard]] Result<void> lengthWords(const Words &w, int line);
     [[nodiscard]] Result<void> linuxCncLength(const Words &w, int line);
     [[nodiscard]] Result<void> aerotechAxes(const QList<int> &axes, int line);
     void move(const Words &w, int line);
+    void home(const QList<int> &axes, int line);
+    void recordStraight(int line, const Position &start);
+    void recordCompensated(int line, const Position &programStart, double fromFraction, double toFraction);
     [[nodiscard]] double lengthContribution() const;
     [[nodiscard]] Error error(int line, const QString &message) const;
     [[nodiscard]] double offsetValue(int number) const;

@@ -10,6 +10,7 @@
 #include <QTimer>
 
 #include "model/gcode/gcodeinterpreter.h"
+#include "model/gcode/gcodewords.h"
 
 namespace Toffee {
 
@@ -94,12 +95,42 @@ private:
         double amount = 0;
     };
 
+    // The firmware's halt reasons (the status report's H: field) that the emulator raises.
+    enum class HaltReason {
+        Manual = 1,
+        HomeFail = 2,
+        ProbeFail = 3,
+        CalibrateFail = 4,
+        AtcToolInvalid = 6,
+        AtcNoTool = 7
+    };
+    // An M-code's handler gets the block and the line as received (for the "Unsupported command" echo).
+    using Handler = void (CarveraEmulator::*)(const GCodeBlock &block, const QByteArray &line);
+    struct MCommand
+    {
+        double code;
+        Handler run;
+    };
+    static const std::array<MCommand, 8> kMCommands;
+
     void processNext();
     void execute(const QByteArray &line);
+    void systemCommand(const QByteArray &upper);
     void say(const QByteArray &line);
     void finish();
+    void refuse(const QByteArray &line, const QByteArray &why = {});
+    void haltWith(const QByteArray &message, HaltReason reason);
     void later(int ms, std::function<void()> step);
-    [[nodiscard]] bool allowedWhileHalted(const QByteArray &upper) const;
+
+    void probeTool(const GCodeBlock &block, const QByteArray &line);
+    void breakTest(const GCodeBlock &block, const QByteArray &line);
+    void takeProbe(const GCodeBlock &block, const QByteArray &line);
+    void selectTool(const GCodeBlock &block, const QByteArray &line);
+    void setTlo(const GCodeBlock &block, const QByteArray &line);
+    void showOffsets(const GCodeBlock &block, const QByteArray &line);
+    void changeTool(const GCodeBlock &block, const QByteArray &line);
+    void invalidTool(double tool);
+    void move(const QByteArray &line);
 
     void calibrate(bool breakTest, double tolerance);
     void reportOffsets();

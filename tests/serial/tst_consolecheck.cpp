@@ -27,8 +27,11 @@ private Q_SLOTS:
         QTest::newRow("M493.3 alone") << u"m493.3"_s << false << Verdict::Refuse << u"needs Z"_s;
         QTest::newRow("M493.2 with no tool") << u"M493.2"_s << false << Verdict::Refuse << u"halts"_s;
         QTest::newRow("M6 with no tool") << u"M6"_s << false << Verdict::Refuse << u"M6 T2"_s;
+        // Refused as it is read: no controller takes a word with more than eight digits before the point.
         QTest::newRow("a huge tool") << u"M6 T99999999999999"_s << false << Verdict::Refuse
-                                     << u"not a tool number"_s;
+                                     << u"T99999999999999 is too large"_s;
+        QTest::newRow("a tool beyond the table")
+            << u"M6 T1000000"_s << false << Verdict::Refuse << u"not a tool number"_s;
         QTest::newRow("a fractional tool")
             << u"M6 T2.5"_s << false << Verdict::Refuse << u"not a tool number"_s;
         QTest::newRow("a tool that is none")

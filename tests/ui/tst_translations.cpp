@@ -2,6 +2,7 @@
 // The translations are complete, and what the window shows really comes out translated.
 #include <QApplication>
 #include <QDir>
+#include <QDirIterator>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QHeaderView>
@@ -19,6 +20,7 @@
 #include <QXmlStreamReader>
 
 #include "model/document/tooldocument.h"
+#include "model/gcode/gcodeinterpreter.h"
 #include "ui/appearance.h"
 #include "ui/mainwindow.h"
 #include "ui/translations.h"
@@ -114,6 +116,46 @@ private Q_SLOTS:
             QVERIFY2(m.type.isEmpty(), qPrintable(u"not in translations/*.ts yet: "_s + m.source));
     }
 
+    // lupdate files a class member's tr() under the class, but at run time an unqualified tr() in a class
+    // without Q_OBJECT or Q_DECLARE_TR_FUNCTIONS is the free one (context "Toffee"): its messages would never
+    // come out translated. Every context in the files must be one the code really translates in.
+    void everyContextIsOneTheCodeTranslatesIn()
+    {
+        QString sources;
+        for (const QString &folder : { u"app"_s, u"ui"_s, u"model"_s, u"serial"_s }) {
+            QDirIterator it(QStringLiteral(TOFFEE_SOURCE_DIR "/") + folder, { u"*.h"_s, u"*.cpp"_s },
+                QDir::Files, QDirIterator::Subdirectories);
+            while (it.hasNext()) {
+                QFile file(it.next());
+                QVERIFY(file.open(QIODevice::ReadOnly));
+                sources += QString::fromUtf8(file.readAll());
+            }
+        }
+        QFile ts(QStringLiteral(TOFFEE_SOURCE_DIR "/translations/toffee_de.ts"));
+        QVERIFY(ts.open(QIODevice::ReadOnly));
+        QXmlStreamReader xml(&ts);
+        QStringList wrong;
+        int contexts = 0;
+        while (xml.readNextStartElement() || !xml.atEnd()) {
+            if (!xml.isStartElement() || xml.name() != u"name")
+                continue;
+            const QString context = xml.readElementText();
+            ++contexts;
+            if (context == u"Toffee" || context == u"main")
+                continue; // the free tr() of model/translate.h, and the programs' main()
+            const QString name = context.section(u"::"_s, -1);
+            const bool declared = QRegularExpression(
+                u"(class|struct) "_s + name + u"\\b[^;{]*\\{\\s*(Q_OBJECT|Q_GADGET|Q_DECLARE_TR_FUNCTIONS)"_s)
+                                      .match(sources)
+                                      .hasMatch();
+            const bool named = sources.contains(u'"' + context + u'"'); // QCoreApplication::translate("…", …)
+            if (!declared && !named)
+                wrong << context;
+        }
+        QVERIFY(contexts > 10);
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong.join(u", "_s)));
+    }
+
     void theWindowSpeaksGerman()
     {
         QTranslator german;
@@ -141,6 +183,15 @@ private Q_SLOTS:
             const QString message = rejected.front().front().toString();
             QVERIFY2(message.contains(u"Längenverschleiß"_s) && message.contains(u"außerhalb des Bereichs"_s),
                 qPrintable(message));
+            // The interpreter's and the tokenizer's messages (they were filed under their classes by lupdate
+            // but looked up in "Toffee" at run time, and came out in English).
+            GCodeInterpreter fanuc(Dialect::Fanuc);
+            const auto twice = fanuc.runLine("G0 X1 X2", 1);
+            QVERIFY(!twice);
+            QCOMPARE(twice.error().message, u"Das Wort X kommt in einem Satz zweimal vor."_s);
+            const auto notANumber = fanuc.runLine("G0 X1..2", 2);
+            QVERIFY(!notANumber);
+            QCOMPARE(notANumber.error().message, u"„1..2“ ist keine Zahl."_s);
         }
         QCoreApplication::removeTranslator(&german);
     }
