@@ -9,8 +9,8 @@
 
 #include <QCoreApplication>
 
-#include "model/numberformat.h"
 #include "model/formats/tablereading.h"
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
 #include "model/translate.h"
@@ -29,30 +29,105 @@ bool isSpace(char c)
 // The fields Toffee keeps verbatim, in the order LinuxCNC writes them.
 constexpr char kExtraLetters[] = "XYABCUVWIJQ";
 
-Result<Tool> parseLine(QByteArrayView line)
+// What a line's fields say, read one by one before the line is checked as a whole.
+struct ParsedLine
 {
-    QByteArrayView fields = line;
-    QString comment;
-    if (const qsizetype semicolon = line.indexOf(';'); semicolon >= 0) {
-        fields = line.first(semicolon);
-        // The comment is the description: at most 255 characters, so at most four times as many bytes.
-        if (line.size() - semicolon - 1 > 4 * Limits::kMaxDescriptionLength)
-            return Error { tr("the comment \"%1\" is longer than a description may be (%2 characters).")
-                               .arg(excerpt(line.sliced(semicolon + 1)))
-                               .arg(Limits::kMaxDescriptionLength) };
-        const auto text = decodeUtf8(line.sliced(semicolon + 1));
-        if (!text)
-            return Error { tr("the comment is not valid UTF-8 text.") };
-        comment = text->trimmed();
-    }
-
     std::optional<qint64> number;
     std::optional<qint64> pocket;
     std::optional<double> z;
     std::optional<double> diameter;
     std::optional<double> extra[sizeof kExtraLetters - 1];
-    QByteArray seen;
+    QByteArray seen; // the letters read so far: each field may appear once
+};
 
+// The comment after ';' is the description; `fields` is the line before it.
+Result<void> splitComment(QByteArrayView line, QByteArrayView &fields, QString &comment)
+{
+    fields = line;
+    const qsizetype semicolon = line.indexOf(';');
+    if (semicolon < 0)
+        return {};
+    fields = line.first(semicolon);
+    // The comment is the description: at most 255 characters, so at most four times as many bytes.
+    if (line.size() - semicolon - 1 > 4 * Limits::kMaxDescriptionLength)
+        return Error { tr("the comment \"%1\" is longer than a description may be (%2 characters).")
+                           .arg(excerpt(line.sliced(semicolon + 1)))
+                           .arg(Limits::kMaxDescriptionLength) };
+    const auto text = decodeUtf8(line.sliced(semicolon + 1));
+    if (!text)
+        return Error { tr("the comment is not valid UTF-8 text.") };
+    comment = text->trimmed();
+    return {};
+}
+
+// T, P and Q, whose values are whole numbers.
+Result<void> readWholeNumberField(char letter, QByteArrayView token, ParsedLine &parsed)
+{
+    const QByteArrayView value = token.sliced(1);
+    const auto n = parseInteger(value);
+    if (!n && isIntegerText(value) && letter == 'T')
+        return Error { tr("tool number %1 is out of range; use %2 to %3.")
+                           .arg(excerpt(value))
+                           .arg(Limits::kMinToolNumber)
+                           .arg(Limits::kMaxToolNumber) };
+    if (!n && isIntegerText(value) && letter == 'P')
+        return Error { tr("pocket %1 is out of range; use %2 to %3.")
+                           .arg(excerpt(value))
+                           .arg(Limits::kMinPocket)
+                           .arg(Limits::kMaxPocket) };
+    if (!n)
+        return Error {
+            tr("\"%1\": %2 needs a whole number.").arg(excerpt(token), QChar::fromLatin1(letter))
+        };
+    if (letter == 'T')
+        parsed.number = n;
+    else if (letter == 'P')
+        parsed.pocket = n;
+    else if (*n < 0 || *n > 9)
+        return Error { tr("\"%1\": the orientation Q must be 0 to 9.").arg(excerpt(token)) };
+    else
+        parsed.extra[std::strchr(kExtraLetters, 'Q') - kExtraLetters] = double(*n);
+    return {};
+}
+
+// Z, D and the fields kept verbatim, whose values are decimal numbers; any other letter is no field.
+Result<void> readDecimalField(char letter, QByteArrayView token, ParsedLine &parsed)
+{
+    const char *slot = letter ? std::strchr(kExtraLetters, letter) : nullptr;
+    if (letter != 'Z' && letter != 'D' && !slot)
+        return Error { tr(
+            "\"%1\" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, "
+            "J, Q and a ;comment.")
+                           .arg(excerpt(token)) };
+    const auto v = parseDecimal(token.sliced(1));
+    if (!v)
+        return Error { tr("\"%1\": %2 needs a number.").arg(excerpt(token), QChar::fromLatin1(letter)) };
+    if (letter == 'Z')
+        parsed.z = v;
+    else if (letter == 'D')
+        parsed.diameter = v;
+    else
+        parsed.extra[slot - kExtraLetters] = v;
+    return {};
+}
+
+// One field: a letter (either case) and its value, such as "T12" or "z-30.5".
+Result<void> readField(QByteArrayView token, ParsedLine &parsed)
+{
+    const char letter = char(QChar::toUpper(uchar(token.front())));
+    if (parsed.seen.contains(letter))
+        return Error {
+            tr("\"%1\": the field %2 appears twice.").arg(excerpt(token), QChar::fromLatin1(letter))
+        };
+    parsed.seen += letter;
+    if (letter == 'T' || letter == 'P' || letter == 'Q')
+        return readWholeNumberField(letter, token, parsed);
+    return readDecimalField(letter, token, parsed);
+}
+
+// The fields between blanks, each read as it is split off.
+Result<void> readFields(QByteArrayView fields, ParsedLine &parsed)
+{
     qsizetype i = 0;
     while (i < fields.size()) {
         while (i < fields.size() && isSpace(fields.at(i)))
@@ -62,93 +137,69 @@ Result<Tool> parseLine(QByteArrayView line)
         qsizetype end = i;
         while (end < fields.size() && !isSpace(fields.at(end)))
             ++end;
-        const QByteArrayView token = fields.sliced(i, end - i);
+        if (auto read = readField(fields.sliced(i, end - i), parsed); !read)
+            return read;
         i = end;
-
-        const char letter = char(QChar::toUpper(uchar(token.front())));
-        const QByteArrayView value = token.sliced(1);
-        const auto tokenText = [token] {
-            return excerpt(token);
-        }; // for messages only
-        if (seen.contains(letter))
-            return Error {
-                tr("\"%1\": the field %2 appears twice.").arg(tokenText(), QChar::fromLatin1(letter))
-            };
-        seen += letter;
-        if (letter == 'T' || letter == 'P' || letter == 'Q') {
-            const auto n = parseInteger(value);
-            if (!n && isIntegerText(value) && letter == 'T')
-                return Error { tr("tool number %1 is out of range; use %2 to %3.")
-                                   .arg(excerpt(value))
-                                   .arg(Limits::kMinToolNumber)
-                                   .arg(Limits::kMaxToolNumber) };
-            if (!n && isIntegerText(value) && letter == 'P')
-                return Error { tr("pocket %1 is out of range; use %2 to %3.")
-                                   .arg(excerpt(value))
-                                   .arg(Limits::kMinPocket)
-                                   .arg(Limits::kMaxPocket) };
-            if (!n)
-                return Error {
-                    tr("\"%1\": %2 needs a whole number.").arg(tokenText(), QChar::fromLatin1(letter))
-                };
-            if (letter == 'T')
-                number = n;
-            else if (letter == 'P')
-                pocket = n;
-            else if (*n < 0 || *n > 9)
-                return Error { tr("\"%1\": the orientation Q must be 0 to 9.").arg(tokenText()) };
-            else
-                extra[std::strchr(kExtraLetters, 'Q') - kExtraLetters] = double(*n);
-            continue;
-        }
-        const char *slot = letter ? std::strchr(kExtraLetters, letter) : nullptr;
-        if (letter != 'Z' && letter != 'D' && !slot)
-            return Error { tr(
-                "\"%1\" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, "
-                "J, Q and a ;comment.")
-                               .arg(tokenText()) };
-        const auto v = parseDecimal(value);
-        if (!v)
-            return Error { tr("\"%1\": %2 needs a number.").arg(tokenText(), QChar::fromLatin1(letter)) };
-        if (letter == 'Z')
-            z = v;
-        else if (letter == 'D')
-            diameter = v;
-        else
-            extra[slot - kExtraLetters] = v;
     }
+    return {};
+}
 
-    if (!number)
+// T and P are required, and must fit a tool and a pocket before they are made ints.
+Result<void> checkNumbers(const ParsedLine &parsed)
+{
+    if (!parsed.number)
         return Error { tr("the line has no tool number (T)."), 0 };
-    if (!pocket)
-        return Error { tr("T%1 has no pocket (P).").arg(*number) };
-    if (*number < Limits::kMinToolNumber || *number > Limits::kMaxToolNumber)
+    const qint64 number = *parsed.number;
+    if (!parsed.pocket)
+        return Error { tr("T%1 has no pocket (P).").arg(number) };
+    if (number < Limits::kMinToolNumber || number > Limits::kMaxToolNumber)
         return Error { tr("tool number %1 is out of range; use %2 to %3.")
-                           .arg(*number)
+                           .arg(number)
                            .arg(Limits::kMinToolNumber)
                            .arg(Limits::kMaxToolNumber) };
-    if (*pocket < Limits::kMinPocket || *pocket > Limits::kMaxPocket)
+    const qint64 pocket = *parsed.pocket;
+    if (pocket < Limits::kMinPocket || pocket > Limits::kMaxPocket)
         return Error { tr("T%1: pocket %2 is out of range; use %3 to %4.")
-                           .arg(*number)
-                           .arg(*pocket)
+                           .arg(number)
+                           .arg(pocket)
                            .arg(Limits::kMinPocket)
                            .arg(Limits::kMaxPocket) };
+    return {};
+}
 
-    Tool tool;
-    tool.number = int(*number);
-    tool.pocket = int(*pocket);
-    tool.lengthGeometry = z.value_or(0.0);
-    tool.radiusGeometry = diameter.value_or(0.0) / 2.0;
-    tool.description = comment;
+// The fields Toffee keeps verbatim, as LinuxCNC writes them: "X0.5 Q2".
+QString extraText(const ParsedLine &parsed)
+{
     QStringList kept;
     for (size_t k = 0; k < sizeof kExtraLetters - 1; ++k) {
-        if (extra[k]) {
+        if (parsed.extra[k]) {
             const char letter = kExtraLetters[k];
             kept << QChar::fromLatin1(letter)
-                    + (letter == 'Q' ? QString::number(int(*extra[k])) : formatNumber(*extra[k]));
+                    + (letter == 'Q' ? QString::number(int(*parsed.extra[k]))
+                                     : formatNumber(*parsed.extra[k]));
         }
     }
-    tool.linuxCncExtra = kept.join(u' ');
+    return kept.join(u' ');
+}
+
+Result<Tool> parseLine(QByteArrayView line)
+{
+    QByteArrayView fields;
+    QString comment;
+    if (auto split = splitComment(line, fields, comment); !split)
+        return split.error();
+    ParsedLine parsed;
+    if (auto read = readFields(fields, parsed); !read)
+        return read.error();
+    if (auto checked = checkNumbers(parsed); !checked)
+        return checked.error();
+    Tool tool;
+    tool.number = int(*parsed.number);
+    tool.pocket = int(*parsed.pocket);
+    tool.lengthGeometry = parsed.z.value_or(0.0);
+    tool.radiusGeometry = parsed.diameter.value_or(0.0) / 2.0;
+    tool.description = std::move(comment);
+    tool.linuxCncExtra = extraText(parsed);
     return tool;
 }
 
