@@ -80,6 +80,7 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
     teardown();
     m_transport = makeTransport(target);
     m_link = std::make_unique<MachineLink>(m_transport.get());
+    m_link->setTimeoutOverride(target.timeoutMs);
     m_session = std::make_unique<MachineSession>(m_link.get());
     connect(m_link.get(), &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
         setHalt(status.isAlarm(), status.haltReason);
@@ -161,6 +162,42 @@ QString MachineConnection::activeToolName() const
     return tool && *tool >= 0 ? u"T"_s + QString::number(*tool) : tr("the current tool");
 }
 
+bool MachineConnection::status(Done done)
+{
+    return perform(
+        tr("Reading the status…"), true, [](MachineSession *s, Done d) { s->status(std::move(d)); },
+        std::move(done));
+}
+
+bool MachineConnection::report(Done done)
+{
+    return perform(
+        tr("Reading the offsets…"), false, [](MachineSession *s, Done d) { s->report(std::move(d)); },
+        std::move(done));
+}
+
+bool MachineConnection::selectTool(int tool, Done done)
+{
+    return perform(
+        tr("Selecting T%1…").arg(tool), false,
+        [tool](MachineSession *s, Done d) { s->selectTool(tool, std::move(d)); }, std::move(done));
+}
+
+bool MachineConnection::changeTool(int tool, Done done)
+{
+    return perform(
+        tr("Changing to T%1…").arg(tool), false,
+        [tool](MachineSession *s, Done d) { s->changeTool(tool, std::move(d)); }, std::move(done));
+}
+
+QString MachineConnection::haltedMessage() const
+{
+    const QString reason = m_haltReason
+        ? haltReasonName(*m_haltReason) + u": "_s + haltRecovery(*m_haltReason)
+        : tr("Check the machine, then unlock it.");
+    return tr("The machine is halted (Alarm lock) and takes no command but Unlock. %1").arg(reason);
+}
+
 bool MachineConnection::probe(Done done)
 {
     return perform(
@@ -230,8 +267,7 @@ void MachineConnection::stop()
 
 void MachineConnection::refreshOffsets()
 {
-    perform(
-        tr("Reading the offsets…"), false, [](MachineSession *s, Done d) { s->report(std::move(d)); }, {});
+    report({});
 }
 
 bool MachineConnection::beginOperation(const QString &what)

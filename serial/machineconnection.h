@@ -18,6 +18,7 @@ struct ConnectionTarget
     bool emulator = true;
     QString port;
     int baud = 115200;
+    int timeoutMs = 0; // every command's limit, connecting included; 0: each command's own
 };
 
 // The transport a target names: a serial port at its baud rate, or a new built-in emulator. The window's
@@ -56,6 +57,10 @@ public:
     // needs only a connection), shows as the one operation running, and reports one result; false when it
     // did not start. Panels reach the machine through these, never through the session.
     using Done = MachineSession::Done;
+    bool status(Done done); // also while halted: it only reads
+    bool report(Done done);
+    bool selectTool(int tool, Done done);
+    bool changeTool(int tool, Done done);
     bool probe(Done done);
     bool breakTest(double tolerance, Done done);
     bool setTlo(double tlo, Done done);
@@ -84,6 +89,8 @@ public:
     // Halted (Alarm): the controller refuses every motion and offset command until Unlock.
     [[nodiscard]] bool isHalted() const { return m_halted; }
     [[nodiscard]] std::optional<int> haltReason() const { return m_haltReason; }
+    // Why an operation cannot run on a halted machine, and what to do, for people.
+    [[nodiscard]] QString haltedMessage() const;
     // The reference and current MCS Z the machine last reported (M493.4, M493.3), if any since connecting.
     [[nodiscard]] const std::optional<TloReading> &lastOffsets() const { return m_offsets; }
     // Connected, idle and not halted: what every panel's machine operation (but Unlock and Stop) needs.

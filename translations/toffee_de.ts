@@ -1189,6 +1189,26 @@
         <source>Unlock</source>
         <translation>Entsperren</translation>
     </message>
+    <message>
+        <source>Reading the status…</source>
+        <translation>Status wird gelesen…</translation>
+    </message>
+    <message>
+        <source>Selecting T%1…</source>
+        <translation>T%1 wird gewählt…</translation>
+    </message>
+    <message>
+        <source>Changing to T%1…</source>
+        <translation>Wechsel zu T%1…</translation>
+    </message>
+    <message>
+        <source>Check the machine, then unlock it.</source>
+        <translation>Prüfen Sie die Maschine und entsperren Sie sie dann.</translation>
+    </message>
+    <message>
+        <source>The machine is halted (Alarm lock) and takes no command but Unlock. %1</source>
+        <translation>Die Maschine ist angehalten (Alarm lock) und nimmt keinen Befehl außer Entsperren an. %1</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>

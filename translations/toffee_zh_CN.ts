@@ -1189,6 +1189,26 @@
         <source>Unlock</source>
         <translation>解锁</translation>
     </message>
+    <message>
+        <source>Reading the status…</source>
+        <translation>正在读取状态…</translation>
+    </message>
+    <message>
+        <source>Selecting T%1…</source>
+        <translation>正在选择 T%1…</translation>
+    </message>
+    <message>
+        <source>Changing to T%1…</source>
+        <translation>正在换到 T%1…</translation>
+    </message>
+    <message>
+        <source>Check the machine, then unlock it.</source>
+        <translation>请检查机器，然后解锁。</translation>
+    </message>
+    <message>
+        <source>The machine is halted (Alarm lock) and takes no command but Unlock. %1</source>
+        <translation>机器已停机（Alarm lock），除解锁外不接受任何命令。%1</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>

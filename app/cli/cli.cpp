@@ -6,6 +6,7 @@
 #include <QSet>
 
 #include "model/limits.h"
+#include "model/result.h"
 
 using namespace Qt::StringLiterals;
 
@@ -81,9 +82,11 @@ void printJson(Invocation &call, const QJsonObject &object)
     call.out << QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)) << Qt::endl;
 }
 
-int run(const QStringList &arguments, QTextStream &out, QTextStream &err)
+namespace {
+
+// Reads --name value, --name=value and --flag into the options; the rest is the command and its arguments.
+Result<void> parseOptions(const QStringList &arguments, Invocation &call)
 {
-    Invocation call { {}, {}, {}, false, out, err };
     QStringList positional;
     for (qsizetype i = 0; i < arguments.size(); ++i) {
         const QString &arg = arguments.at(i);
@@ -97,36 +100,48 @@ int run(const QStringList &arguments, QTextStream &out, QTextStream &err)
             value = name.mid(eq + 1);
             name.truncate(eq);
         } else if (kValueOptions.contains(name)) {
-            if (i + 1 >= arguments.size()) {
-                call.json = arguments.contains(u"--json"_s);
-                return usageError(call, u"--%1 needs a value."_s.arg(name));
-            }
+            if (i + 1 >= arguments.size())
+                return Error { u"--%1 needs a value."_s.arg(name) };
             value = arguments.at(++i);
         }
-        if (!kValueOptions.contains(name) && !kFlagOptions.contains(name)) {
-            call.json = arguments.contains(u"--json"_s);
-            return usageError(call, u"unknown option --%1."_s.arg(name));
-        }
+        if (!kValueOptions.contains(name) && !kFlagOptions.contains(name))
+            return Error { u"unknown option --%1."_s.arg(name) };
         call.options.insert(name, value);
+    }
+    if (!positional.isEmpty())
+        call.command = positional.takeFirst();
+    call.arguments = positional;
+    return {};
+}
+
+using Command = int (*)(Invocation &);
+const std::pair<QStringView, Command> kTableCommands[] = {
+    { u"show", showTable },
+    { u"convert", convertTable },
+    { u"export", exportOffsets },
+    { u"simulate", simulateProgram },
+};
+
+} // namespace
+
+int run(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    Invocation call { {}, {}, {}, false, out, err };
+    if (auto parsed = parseOptions(arguments, call); !parsed) {
+        call.json = arguments.contains(u"--json"_s);
+        return usageError(call, parsed.error().message);
     }
     call.json = call.has(u"json"_s);
     if (call.has(u"help"_s)) {
         out << usage();
         return Success;
     }
-    if (positional.isEmpty())
+    if (call.command.isEmpty())
         return usageError(call, u"no command given."_s);
-    call.command = positional.takeFirst();
-    call.arguments = positional;
-
-    if (call.command == u"show")
-        return showTable(call);
-    if (call.command == u"convert")
-        return convertTable(call);
-    if (call.command == u"export")
-        return exportOffsets(call);
-    if (call.command == u"simulate")
-        return simulateProgram(call);
+    for (const auto &[name, command] : kTableCommands) {
+        if (call.command == name)
+            return command(call);
+    }
     if (isMachineCommand(call.command))
         return runMachineCommand(call);
     return usageError(call, u"unknown command \"%1\"."_s.arg(call.command));

@@ -6,18 +6,16 @@
 
 #include <QElapsedTimer>
 #include <QEventLoop>
-#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QTimer>
 
 #include "app/cli/cli.h"
+#include "app/cli/machineoptions.h"
 #include "model/formats/tablefile.h"
 #include "model/numberformat.h"
-#include "model/textparsing.h"
 #include "serial/machineconnection.h"
 #include "serial/machinesession.h"
-#include "serial/serialporttransport.h"
 
 using namespace Qt::StringLiterals;
 
@@ -43,11 +41,6 @@ ExitCode exitCodeFor(SessionResult::Outcome outcome)
         return LinkFailure;
     }
     return MachineError;
-}
-
-std::optional<double> decimalOption(Invocation &call, const QString &name)
-{
-    return parseDecimal(call.option(name).toUtf8());
 }
 
 QString mm(double v)
@@ -110,6 +103,211 @@ void printBreakTest(Invocation &call, const SessionResult &r)
         call.err << "toffee-cli: " << r.message << Qt::endl;
 }
 
+void printSelected(Invocation &call, const SessionResult &r)
+{
+    // M493.2 keeps the TLO of the tool measured before: say so, every time.
+    const QString warning
+        = u"T%1 is active but the machine still uses the TLO it had before, which "
+          "is another tool's; probe T%1 (or set its TLO) before you cut."_s.arg(r.tool.value_or(-1));
+    if (call.json)
+        printJson(call, QJsonObject { { u"tool"_s, r.tool.value_or(-1) }, { u"warning"_s, warning } });
+    else
+        call.out << warning << Qt::endl;
+}
+
+void printLinkTimes(Invocation &call, QList<double> times, const QString &link)
+{
+    std::sort(times.begin(), times.end());
+    const double median = times.at(times.size() / 2);
+    const double p99 = times.at(std::min<qsizetype>(times.size() - 1, qsizetype(times.size() * 0.99)));
+    const double mean = std::accumulate(times.cbegin(), times.cend(), 0.0) / double(times.size());
+    if (call.json)
+        printJson(call,
+            QJsonObject { { u"count"_s, times.size() }, { u"median_ms"_s, median }, { u"p99_ms"_s, p99 },
+                { u"max_ms"_s, times.last() }, { u"mean_ms"_s, mean }, { u"link"_s, link } });
+    else
+        call.out << times.size() << " round trips over " << link << ": median " << mm(median) << " ms, p99 "
+                 << mm(p99) << " ms, max " << mm(times.last()) << " ms" << Qt::endl;
+}
+
+// One machine command: one connection, one named operation of it, one result and its exit code.
+class MachineRun
+{
+public:
+    MachineRun(Invocation &call, MachineOptions options)
+        : m_call(call)
+        , m_options(std::move(options))
+    { }
+
+    int exec()
+    {
+        QObject::connect(&m_connection, &MachineConnection::connectFailed, &m_loop,
+            [this] { finishWith(m_connection.connectResult()); });
+        QObject::connect(
+            &m_connection, &MachineConnection::stateChanged, &m_loop, [this](MachineConnection::State state) {
+                if (state == MachineConnection::State::Connected && !std::exchange(m_started, true))
+                    operate();
+            });
+        // Started from inside the loop, so that a failure reported at once still ends it.
+        QTimer::singleShot(0, &m_loop, [this] { m_connection.connectTo(m_options.target); });
+        m_loop.exec();
+        m_connection.disconnectFromMachine();
+        return m_exitCode;
+    }
+
+private:
+    using Done = MachineConnection::Done;
+
+    void operate();
+    void linkTest();
+    void finishWith(const SessionResult &r);
+    [[nodiscard]] bool record(const SessionResult &r);
+    // A result printed by `print` when the operation got that far (a broken tool's verdict included).
+    [[nodiscard]] Done printed(std::function<void(const SessionResult &)> print);
+    // A probe or a manual offset: recorded, then printed.
+    [[nodiscard]] Done recorded();
+
+    Invocation &m_call;
+    MachineOptions m_options;
+    MachineConnection m_connection;
+    QEventLoop m_loop;
+    int m_exitCode = Success;
+    bool m_started = false;
+    bool m_recordFailed = false; // then the exit code says so (unless the tool is broken, which says more)
+};
+
+void MachineRun::finishWith(const SessionResult &r)
+{
+    if (!m_recordFailed || r.outcome == SessionResult::Outcome::ToolBroken)
+        m_exitCode = exitCodeFor(r.outcome);
+    if (!r.ok() && !(r.outcome == SessionResult::Outcome::ToolBroken && r.breakTest))
+        fail(m_call, r.message, ExitCode(m_exitCode));
+    m_loop.quit();
+}
+
+// What a successful probe, a manual offset or a break test means for the table, saved at once.
+bool MachineRun::record(const SessionResult &r)
+{
+    if (!m_options.table)
+        return true;
+    const int measured = r.tool.value_or(-1);
+    QString problem;
+    if (!r.recording) {
+        problem = u"the machine reports no tool in the spindle; nothing was recorded."_s;
+        m_exitCode = MachineError;
+    } else {
+        Result<void> saved = m_options.table->record(*r.recording); // as the window records it
+        if (saved)
+            saved = saveTableFile(m_options.tablePath, *m_options.table,
+                formatForPath(m_options.tablePath).value_or(TableFormat::Json));
+        if (saved)
+            return true;
+        const QString why = saved.error().text();
+        problem = r.breakTest
+            ? u"the break test ran on T%1 but could not be recorded: %2"_s.arg(measured).arg(why)
+            : m_call.command == u"set-tlo"
+            ? u"set T%1's TLO to %2 mm on the machine but could not record it: %3"_s.arg(measured).arg(
+                mm(r.tlo->tlo()), why)
+            : u"measured T%1 (TLO %2 mm) but could not record it: %3"_s.arg(measured).arg(
+                mm(r.tlo->tlo()), why);
+        m_exitCode = BadInput;
+    }
+    fail(m_call, problem, ExitCode(m_exitCode));
+    m_recordFailed = true;
+    return false;
+}
+
+MachineRun::Done MachineRun::printed(std::function<void(const SessionResult &)> print)
+{
+    return [this, print](const SessionResult &r) {
+        if (r.ok() || (r.outcome == SessionResult::Outcome::ToolBroken && r.breakTest))
+            print(r);
+        finishWith(r);
+    };
+}
+
+MachineRun::Done MachineRun::recorded()
+{
+    return [this](const SessionResult &r) {
+        if (!r.ok())
+            return finishWith(r);
+        if (record(r))
+            printTlo(m_call, r);
+        finishWith(r);
+    };
+}
+
+void MachineRun::operate()
+{
+    const QString &command = m_call.command;
+    MachineConnection &c = m_connection;
+    const auto status = printed([this](const SessionResult &r) { printStatus(m_call, *r.status); });
+    bool started = true;
+    if (command == u"status")
+        started = c.status(status);
+    else if (command == u"report")
+        started = c.report(printed([this](const SessionResult &r) { printTlo(m_call, r); }));
+    else if (command == u"probe")
+        started = c.probe(recorded());
+    else if (command == u"change-tool")
+        started = c.changeTool(m_options.tool, recorded());
+    else if (command == u"set-tlo")
+        started = m_options.z ? c.setTlo(*m_options.z, recorded())
+                              : c.setTloAboveZ0(*m_options.aboveZ0, recorded());
+    else if (command == u"break-test")
+        started = c.breakTest(m_options.tolerance, printed([this](const SessionResult &r) {
+            printBreakTest(m_call, r);
+            if (r.breakTest)
+                (void)record(r);
+        }));
+    else if (command == u"select-tool")
+        started = c.selectTool(
+            m_options.tool, printed([this](const SessionResult &r) { printSelected(m_call, r); }));
+    else if (command == u"unlock")
+        started = c.unlock(status);
+    else if (command == u"link-test")
+        linkTest();
+    if (!started) {
+        SessionResult refused;
+        refused.outcome = SessionResult::Outcome::MachineError;
+        refused.message = c.haltedMessage();
+        finishWith(refused);
+    }
+}
+
+// N round trips of "G90" on the link itself, polling off: the link's own latency, not an operation's.
+void MachineRun::linkTest()
+{
+    MachineLink *link = m_connection.link();
+    link->setPollInterval(0);
+    auto times = std::make_shared<QList<double>>();
+    auto clock = std::make_shared<QElapsedTimer>();
+    auto next = std::make_shared<std::function<void()>>();
+    *next = [this, link, times, clock, next] {
+        if (times->size() == m_options.count) {
+            printLinkTimes(m_call, *times, m_connection.description());
+            *next = nullptr; // break the cycle
+            return finishWith(SessionResult {});
+        }
+        clock->start();
+        link->send(
+            "G90", MachineLink::kDefaultTimeoutMs, [this, times, clock, next](const CommandReply &reply) {
+                if (!reply.ok()) {
+                    SessionResult r;
+                    r.outcome = reply.status == CommandReply::Status::Refused
+                        ? SessionResult::Outcome::MachineError
+                        : SessionResult::Outcome::LinkFailure;
+                    r.message = reply.message;
+                    *next = nullptr;
+                    return finishWith(r);
+                }
+                times->append(double(clock->nsecsElapsed()) / 1e6);
+                (*next)();
+            });
+    };
+    (*next)();
+}
+
 } // namespace
 
 bool isMachineCommand(const QString &command)
@@ -119,242 +317,10 @@ bool isMachineCommand(const QString &command)
 
 int runMachineCommand(Invocation &call)
 {
-    // Everything that can be refused is refused here, before the port is even opened.
-    const QString command = call.command;
-    const bool wantsTool = command == u"select-tool" || command == u"change-tool";
-    if (call.arguments.size() != (wantsTool ? 1 : 0))
-        return fail(call,
-            wantsTool ? u"usage: toffee-cli ... %1 N"_s.arg(command)
-                      : u"%1 takes no arguments."_s.arg(command),
-            BadInput);
-    if (call.has(u"port"_s) == call.has(u"emulator"_s))
-        return fail(call, u"say which machine: --port DEVICE or --emulator."_s, BadInput);
-    int tool = 0;
-    if (wantsTool) {
-        const auto n = parseInteger(call.arguments.front().toUtf8());
-        if (!n || *n < INT_MIN || *n > INT_MAX)
-            return fail(call, u"\"%1\" is not a tool number."_s.arg(call.arguments.front()), BadInput);
-        tool = int(*n);
-        if (auto r = MachineSession::validateToolNumber(tool); !r)
-            return fail(call, r.error().message, BadInput);
-    }
-    int baud = SerialPortTransport::kDefaultBaud;
-    if (call.has(u"baud"_s)) {
-        const auto b = parseInteger(call.option(u"baud"_s).toUtf8());
-        if (!b || *b < 50 || *b > 4000000)
-            return fail(call, u"--baud must be a baud rate such as 115200."_s, BadInput);
-        baud = int(*b);
-    }
-    int timeoutMs = 0;
-    if (call.has(u"timeout"_s)) {
-        const auto t = decimalOption(call, u"timeout"_s);
-        if (!t || *t <= 0 || *t > 3600)
-            return fail(call, u"--timeout must be a number of seconds, above 0."_s, BadInput);
-        timeoutMs = int(*t * 1000);
-    }
-    double tolerance = MachineSession::kDefaultTolerance;
-    if (command == u"break-test" && call.has(u"tolerance"_s)) {
-        const auto t = decimalOption(call, u"tolerance"_s);
-        if (!t)
-            return fail(call, u"--tolerance must be a number of millimetres, such as 0.05."_s, BadInput);
-        tolerance = *t;
-        if (auto r = MachineSession::validateTolerance(tolerance); !r)
-            return fail(call, r.error().message, BadInput);
-    }
-    std::optional<double> z;
-    std::optional<double> aboveZ0;
-    if (command == u"set-tlo") {
-        if (call.has(u"z"_s) == call.has(u"above-z0"_s))
-            return fail(call, u"set-tlo needs one of --z V or --above-z0 H."_s, BadInput);
-        const QString name = call.has(u"z"_s) ? u"z"_s : u"above-z0"_s;
-        const auto v = decimalOption(call, name);
-        if (!v)
-            return fail(call, u"--%1 must be a number of millimetres."_s.arg(name), BadInput);
-        if (auto r = MachineSession::validateOffset(u"--"_s + name, *v); !r)
-            return fail(call, r.error().message, BadInput);
-        (name == u"z" ? z : aboveZ0) = *v;
-    }
-    int count = 1000;
-    if (command == u"link-test" && call.has(u"count"_s)) {
-        const auto c = parseInteger(call.option(u"count"_s).toUtf8());
-        if (!c || *c < 1 || *c > 10000000)
-            return fail(call, u"--count must be a whole number from 1 up."_s, BadInput);
-        count = int(*c);
-    }
-    std::optional<ToolTable> table;
-    const QString tablePath = call.option(u"table"_s);
-    if (call.has(u"table"_s)) {
-        auto loaded = loadTableFile(tablePath);
-        if (!loaded)
-            return fail(call, loaded.error().text(), BadInput);
-        table = loaded.takeValue();
-        // Found out before the machine moves, not after: a measurement that cannot be saved is lost.
-        const QFileInfo info(tablePath);
-        if (!info.isWritable() || !QFileInfo(info.absolutePath()).isWritable())
-            return fail(call,
-                u"%1 cannot be written (check its permissions and its folder's); nothing was sent to the "
-                "machine."_s.arg(tablePath),
-                BadInput);
-    }
-
-    const std::unique_ptr<LineTransport> transport
-        = makeTransport({ call.has(u"emulator"_s), call.option(u"port"_s), baud });
-    MachineLink link(transport.get());
-    link.setTimeoutOverride(timeoutMs);
-    MachineSession session(&link);
-    QEventLoop loop;
-    int exitCode = Success;
-
-    bool recordFailed = false; // then the exit code says so (unless the tool is broken, which says more)
-    auto finishWith = [&](const SessionResult &r) {
-        if (!recordFailed || r.outcome == SessionResult::Outcome::ToolBroken)
-            exitCode = exitCodeFor(r.outcome);
-        if (!r.ok() && !(r.outcome == SessionResult::Outcome::ToolBroken && r.breakTest))
-            fail(call, r.message, ExitCode(exitCode));
-        loop.quit();
-    };
-    // What a successful probe, a manual offset or a break test means for the table, saved at once.
-    auto record = [&](const SessionResult &r) {
-        if (!table)
-            return true;
-        const int measured = r.tool.value_or(-1);
-        if (!r.recording) {
-            fail(call, u"the machine reports no tool in the spindle; nothing was recorded."_s, MachineError);
-            exitCode = MachineError;
-            recordFailed = true;
-            return false;
-        }
-        Result<void> saved = table->record(*r.recording); // as the window records it
-        if (saved)
-            saved = saveTableFile(tablePath, *table, formatForPath(tablePath).value_or(TableFormat::Json));
-        if (!saved) {
-            fail(call,
-                r.breakTest ? u"the break test ran on T%1 but could not be recorded: %2"_s.arg(measured).arg(
-                    saved.error().text())
-                    : command == u"set-tlo"
-                    ? u"set T%1's TLO to %2 mm on the machine but could not record it: %3"_s.arg(measured)
-                          .arg(mm(r.tlo->tlo()), saved.error().text())
-                    : u"measured T%1 (TLO %2 mm) but could not record it: %3"_s.arg(measured).arg(
-                        mm(r.tlo->tlo()), saved.error().text()),
-                BadInput);
-            exitCode = BadInput;
-            recordFailed = true;
-            return false;
-        }
-        return true;
-    };
-    auto printed = [&](auto print) {
-        return [&, print](const SessionResult &r) {
-            if (!r.ok() && !(r.outcome == SessionResult::Outcome::ToolBroken && r.breakTest))
-                return finishWith(r);
-            print(r);
-            finishWith(r);
-        };
-    };
-
-    auto operate = [&] {
-        if (command == u"status")
-            session.status(printed([&](const SessionResult &r) { printStatus(call, *r.status); }));
-        else if (command == u"report")
-            session.report(printed([&](const SessionResult &r) { printTlo(call, r); }));
-        else if (command == u"probe" || command == u"change-tool") {
-            auto done = [&](const SessionResult &r) {
-                if (!r.ok())
-                    return finishWith(r);
-                if (record(r))
-                    printTlo(call, r);
-                loop.quit();
-            };
-            if (command == u"probe")
-                session.probe(done);
-            else
-                session.changeTool(tool, done);
-        } else if (command == u"break-test")
-            session.breakTest(tolerance, printed([&](const SessionResult &r) {
-                printBreakTest(call, r);
-                if (r.breakTest)
-                    record(r);
-            }));
-        else if (command == u"set-tlo") {
-            auto print = printed([&](const SessionResult &r) {
-                if (record(r))
-                    printTlo(call, r);
-            });
-            if (z)
-                session.setTlo(*z, print);
-            else
-                session.setTloAboveZ0(*aboveZ0, print);
-        } else if (command == u"select-tool")
-            session.selectTool(tool, printed([&](const SessionResult &r) {
-                // M493.2 keeps the TLO of the tool measured before: say so, every time.
-                const QString warning
-                    = u"T%1 is active but the machine still uses the TLO it had before, which "
-                      "is another tool's; probe T%1 (or set its TLO) before you cut."_s.arg(
-                          r.tool.value_or(-1));
-                if (call.json)
-                    printJson(
-                        call, QJsonObject { { u"tool"_s, r.tool.value_or(-1) }, { u"warning"_s, warning } });
-                else
-                    call.out << warning << Qt::endl;
-            }));
-        else if (command == u"unlock")
-            session.unlock(printed([&](const SessionResult &r) { printStatus(call, *r.status); }));
-        else if (command == u"link-test") {
-            link.setPollInterval(0); // measure the commands alone
-            auto times = std::make_shared<QList<double>>();
-            auto clock = std::make_shared<QElapsedTimer>();
-            auto next = std::make_shared<std::function<void()>>();
-            *next = [&, times, clock, next] {
-                if (times->size() == count) {
-                    std::sort(times->begin(), times->end());
-                    const double median = times->at(times->size() / 2);
-                    const double p99
-                        = times->at(std::min<qsizetype>(times->size() - 1, qsizetype(times->size() * 0.99)));
-                    const double mean
-                        = std::accumulate(times->cbegin(), times->cend(), 0.0) / double(times->size());
-                    if (call.json)
-                        printJson(call,
-                            QJsonObject { { u"count"_s, count }, { u"median_ms"_s, median },
-                                { u"p99_ms"_s, p99 }, { u"max_ms"_s, times->last() }, { u"mean_ms"_s, mean },
-                                { u"link"_s, transport->description() } });
-                    else
-                        call.out << count << " round trips over " << transport->description() << ": median "
-                                 << mm(median) << " ms, p99 " << mm(p99) << " ms, max " << mm(times->last())
-                                 << " ms" << Qt::endl;
-                    *next = nullptr; // break the cycle
-                    return finishWith(SessionResult {});
-                }
-                clock->start();
-                link.send("G90", MachineLink::kDefaultTimeoutMs,
-                    [&, times, clock, next](const CommandReply &reply) {
-                        if (!reply.ok()) {
-                            SessionResult r;
-                            r.outcome = reply.status == CommandReply::Status::Refused
-                                ? SessionResult::Outcome::MachineError
-                                : SessionResult::Outcome::LinkFailure;
-                            r.message = reply.message;
-                            *next = nullptr;
-                            return finishWith(r);
-                        }
-                        times->append(double(clock->nsecsElapsed()) / 1e6);
-                        (*next)();
-                    });
-            };
-            (*next)();
-        }
-    };
-
-    // Started from inside the loop, so that a failure reported at once still ends it.
-    QTimer::singleShot(0, &loop, [&] {
-        session.connectToMachine([&](const SessionResult &r) {
-            if (!r.ok())
-                return finishWith(r);
-            operate();
-        });
-    });
-    loop.exec();
-    link.close();
-    return exitCode;
+    auto options = readMachineOptions(call);
+    if (!options)
+        return fail(call, options.error().message, BadInput);
+    return MachineRun(call, options.takeValue()).exec();
 }
 
 } // namespace Toffee::Cli

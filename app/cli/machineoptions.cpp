@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// toffee-cli's machine options: read and checked apart from running the commands.
+#include "app/cli/machineoptions.h"
+
+#include <climits>
+
+#include <QFileInfo>
+
+#include "model/formats/tablefile.h"
+#include "model/textparsing.h"
+#include "serial/machinesession.h"
+#include "serial/serialporttransport.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee::Cli {
+
+namespace {
+
+std::optional<double> decimalOption(const Invocation &call, const QString &name)
+{
+    return parseDecimal(call.option(name).toUtf8());
+}
+
+Result<void> choosePort(const Invocation &call, MachineOptions &)
+{
+    if (call.has(u"port"_s) == call.has(u"emulator"_s))
+        return Error { u"say which machine: --port DEVICE or --emulator."_s };
+    return {};
+}
+
+Result<void> readTarget(const Invocation &call, MachineOptions &o)
+{
+    o.target = { call.has(u"emulator"_s), call.option(u"port"_s), SerialPortTransport::kDefaultBaud, 0 };
+    if (call.has(u"baud"_s)) {
+        const auto b = parseInteger(call.option(u"baud"_s).toUtf8());
+        if (!b || *b < 50 || *b > 4000000)
+            return Error { u"--baud must be a baud rate such as 115200."_s };
+        o.target.baud = int(*b);
+    }
+    if (call.has(u"timeout"_s)) {
+        const auto t = decimalOption(call, u"timeout"_s);
+        if (!t || *t <= 0 || *t > 3600)
+            return Error { u"--timeout must be a number of seconds, above 0."_s };
+        o.target.timeoutMs = int(*t * 1000);
+    }
+    return {};
+}
+
+bool wantsTool(const Invocation &call)
+{
+    return call.command == u"select-tool" || call.command == u"change-tool";
+}
+
+Result<void> countArguments(const Invocation &call, MachineOptions &)
+{
+    if (call.arguments.size() != (wantsTool(call) ? 1 : 0))
+        return Error { wantsTool(call) ? u"usage: toffee-cli ... %1 N"_s.arg(call.command)
+                                       : u"%1 takes no arguments."_s.arg(call.command) };
+    return {};
+}
+
+Result<void> readTool(const Invocation &call, MachineOptions &o)
+{
+    if (!wantsTool(call))
+        return {};
+    const auto n = parseInteger(call.arguments.front().toUtf8());
+    if (!n || *n < INT_MIN || *n > INT_MAX)
+        return Error { u"\"%1\" is not a tool number."_s.arg(call.arguments.front()) };
+    o.tool = int(*n);
+    return MachineSession::validateToolNumber(o.tool);
+}
+
+Result<void> readCommandOptions(const Invocation &call, MachineOptions &o)
+{
+    o.tolerance = MachineSession::kDefaultTolerance;
+    if (call.command == u"break-test" && call.has(u"tolerance"_s)) {
+        const auto t = decimalOption(call, u"tolerance"_s);
+        if (!t)
+            return Error { u"--tolerance must be a number of millimetres, such as 0.05."_s };
+        o.tolerance = *t;
+        if (auto r = MachineSession::validateTolerance(o.tolerance); !r)
+            return r;
+    }
+    if (call.command == u"set-tlo") {
+        if (call.has(u"z"_s) == call.has(u"above-z0"_s))
+            return Error { u"set-tlo needs one of --z V or --above-z0 H."_s };
+        const QString name = call.has(u"z"_s) ? u"z"_s : u"above-z0"_s;
+        const auto v = decimalOption(call, name);
+        if (!v)
+            return Error { u"--%1 must be a number of millimetres."_s.arg(name) };
+        if (auto r = MachineSession::validateOffset(u"--"_s + name, *v); !r)
+            return r;
+        (name == u"z" ? o.z : o.aboveZ0) = *v;
+    }
+    if (call.command == u"link-test" && call.has(u"count"_s)) {
+        const auto c = parseInteger(call.option(u"count"_s).toUtf8());
+        if (!c || *c < 1 || *c > 10000000)
+            return Error { u"--count must be a whole number from 1 up."_s };
+        o.count = int(*c);
+    }
+    return {};
+}
+
+// Found out before the machine moves, not after: a measurement that cannot be saved is lost.
+Result<void> openTable(const Invocation &call, MachineOptions &o)
+{
+    if (!call.has(u"table"_s))
+        return {};
+    o.tablePath = call.option(u"table"_s);
+    auto loaded = loadTableFile(o.tablePath);
+    if (!loaded)
+        return Error { loaded.error().text() };
+    o.table = loaded.takeValue();
+    const QFileInfo info(o.tablePath);
+    if (!info.isWritable() || !QFileInfo(info.absolutePath()).isWritable())
+        return Error {
+            u"%1 cannot be written (check its permissions and its folder's); nothing was sent to the "
+            "machine."_s.arg(o.tablePath)
+        };
+    return {};
+}
+
+} // namespace
+
+Result<MachineOptions> readMachineOptions(const Invocation &call)
+{
+    MachineOptions o;
+    for (auto read : { countArguments, choosePort, readTool, readTarget, readCommandOptions, openTable }) {
+        if (auto r = read(call, o); !r)
+            return r.error();
+    }
+    return o;
+}
+
+} // namespace Toffee::Cli
