@@ -8,6 +8,9 @@
 
 namespace Toffee {
 
+struct GCodeBlock;
+struct GCodeWord;
+
 // What the console does with a line an operator typed, before it reaches the machine: the same checks the
 // panels make (a tolerance under 0.02, an offset out of range, a tool change with no tool, inches on the
 // Carvera, anything but Unlock while halted), and a question before anything that moves the machine.
@@ -26,6 +29,15 @@ public:
     std::optional<int> tool;
 
     [[nodiscard]] static ConsoleCheck check(const QString &line, bool halted);
+
+private:
+    [[nodiscard]] static ConsoleCheck checkSystem(const QString &trimmed, bool halted);
+    [[nodiscard]] static ConsoleCheck checkHalted(const GCodeBlock &block, const QString &trimmed);
+    [[nodiscard]] static std::optional<ConsoleCheck> checkOffsets(
+        const GCodeBlock &block, const QString &trimmed);
+    [[nodiscard]] static std::optional<ConsoleCheck> checkToolChange(const GCodeBlock &block);
+    [[nodiscard]] static ConsoleCheck checkMotion(const GCodeBlock &block, const QString &trimmed);
+    [[nodiscard]] static QString toolProblem(const GCodeWord *t, const QString &missing);
 };
 
 } // namespace Toffee
