@@ -126,72 +126,7 @@ public:
             ++m_p;
             return decode(raw, high, out);
         }
-        QByteArray buffer(start, m_p - start);
-        while (m_p < m_end) {
-            if (buffer.size() > kMaxTextBytes)
-                return tooLong(start);
-            const char c = *m_p++;
-            if (c == '"')
-                return decode(buffer, 0x80, out);
-            if (uchar(c) < 0x20)
-                return fail(tr("this is not valid JSON: a line break or control character inside a string; "
-                               "write it as \\n."));
-            if (c != '\\') {
-                buffer += c;
-                continue;
-            }
-            if (m_p >= m_end)
-                break;
-            const char e = *m_p++;
-            switch (e) {
-            case '"':
-                buffer += '"';
-                break;
-            case '\\':
-                buffer += '\\';
-                break;
-            case '/':
-                buffer += '/';
-                break;
-            case 'b':
-                buffer += '\b';
-                break;
-            case 'f':
-                buffer += '\f';
-                break;
-            case 'n':
-                buffer += '\n';
-                break;
-            case 'r':
-                buffer += '\r';
-                break;
-            case 't':
-                buffer += '\t';
-                break;
-            case 'u': {
-                char32_t code = 0;
-                if (!hex4(code))
-                    return false;
-                if (code >= 0xD800 && code <= 0xDBFF) {
-                    char32_t low = 0;
-                    if (m_end - m_p < 6 || m_p[0] != '\\' || m_p[1] != 'u')
-                        return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
-                    m_p += 2;
-                    if (!hex4(low) || low < 0xDC00 || low > 0xDFFF)
-                        return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
-                    code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
-                } else if (code >= 0xDC00 && code <= 0xDFFF) {
-                    return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
-                }
-                buffer += QString::fromUcs4(&code, 1).toUtf8();
-                break;
-            }
-            default:
-                return fail(
-                    tr("this is not valid JSON: unknown escape \\%1 in a string.").arg(QLatin1Char(e)));
-            }
-        }
-        return fail(tr("this is not valid JSON: a string is never closed."));
+        return escapedString(start, out);
     }
 
     bool number(double &out)
@@ -275,6 +210,85 @@ public:
     }
 
 private:
+    // The rest of a string that has an escape (or a fault) at `m_p`; `start` is its first character. Only
+    // such a string is copied into a buffer of its own.
+    bool escapedString(const char *start, QString &out)
+    {
+        QByteArray buffer(start, m_p - start);
+        while (m_p < m_end) {
+            if (buffer.size() > kMaxTextBytes)
+                return tooLong(start);
+            const char c = *m_p++;
+            if (c == '"')
+                return decode(buffer, 0x80, out);
+            if (uchar(c) < 0x20)
+                return fail(tr("this is not valid JSON: a line break or control character inside a string; "
+                               "write it as \\n."));
+            if (c != '\\') {
+                buffer += c;
+                continue;
+            }
+            if (m_p >= m_end)
+                break;
+            if (!escape(buffer))
+                return false;
+        }
+        return fail(tr("this is not valid JSON: a string is never closed."));
+    }
+
+    // The escape after a backslash, onto `buffer` as UTF-8.
+    bool escape(QByteArray &buffer)
+    {
+        const char e = *m_p++;
+        switch (e) {
+        case '"':
+        case '\\':
+        case '/':
+            buffer += e;
+            return true;
+        case 'b':
+            buffer += '\b';
+            return true;
+        case 'f':
+            buffer += '\f';
+            return true;
+        case 'n':
+            buffer += '\n';
+            return true;
+        case 'r':
+            buffer += '\r';
+            return true;
+        case 't':
+            buffer += '\t';
+            return true;
+        case 'u':
+            return unicodeEscape(buffer);
+        default:
+            return fail(tr("this is not valid JSON: unknown escape \\%1 in a string.").arg(QLatin1Char(e)));
+        }
+    }
+
+    // \uXXXX, and the low half that must follow a high surrogate: one character beyond the BMP.
+    bool unicodeEscape(QByteArray &buffer)
+    {
+        char32_t code = 0;
+        if (!hex4(code))
+            return false;
+        if (code >= 0xD800 && code <= 0xDBFF) {
+            char32_t low = 0;
+            if (m_end - m_p < 6 || m_p[0] != '\\' || m_p[1] != 'u')
+                return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
+            m_p += 2;
+            if (!hex4(low) || low < 0xDC00 || low > 0xDFFF)
+                return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
+            code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
+        } else if (code >= 0xDC00 && code <= 0xDFFF) {
+            return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
+        }
+        buffer += QString::fromUcs4(&code, 1).toUtf8();
+        return true;
+    }
+
     bool hex4(char32_t &code)
     {
         if (m_end - m_p < 4)
