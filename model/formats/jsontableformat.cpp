@@ -8,9 +8,10 @@
 
 #include <QCoreApplication>
 
-#include "model/numberformat.h"
 #include "model/formats/jsonscanner.h"
+#include "model/formats/jsontool.h"
 #include "model/formats/tablereading.h"
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
 #include "model/translate.h"
@@ -27,156 +28,119 @@ namespace {
 constexpr int kJsonVersion = 2;
 const auto kFormatId = "toffee-tool-table"_L1;
 
-namespace Key {
-const auto Format = "format"_L1;
-const auto Version = "version"_L1;
-const auto Units = "units"_L1;
-const auto Tools = "tools"_L1;
-const auto Number = "number"_L1;
-const auto Pocket = "pocket"_L1;
-const auto Description = "description"_L1;
-const auto LengthGeometry = "length_geometry"_L1;
-const auto LengthWear = "length_wear"_L1;
-const auto RadiusGeometry = "radius_geometry"_L1;
-const auto RadiusWear = "radius_wear"_L1;
-const auto MeasuredTlo = "measured_tlo"_L1;
-const auto MeasuredAt = "measured_at"_L1;
-const auto Notes = "notes"_L1;
-const auto TloSource = "tlo_source"_L1;
-const auto BreakTestFailed = "break_test_failed"_L1;
-const auto ReferenceMz = "reference_mz"_L1;
-const auto LinuxCnc = "linuxcnc"_L1;
-} // namespace Key
-
-bool wholeNumber(JsonScanner &json, const Scalar &v, QLatin1StringView key, int &out)
+// What the table's own fields said so far.
+struct TableFields
 {
-    if (v.kind != Scalar::Number || v.number != std::floor(v.number))
-        return json.fail(tr("\"%1\" must be a whole number.").arg(key));
-    if (std::fabs(v.number) > 2e9) {
-        // Whole, but beyond any tool or pocket: say so rather than "not a whole number".
-        const bool tool = key == Key::Number;
-        return json.fail(tr("\"%1\": %2 is out of range; use %3 to %4.")
-                             .arg(key)
-                             .arg(v.number, 0, 'g', 15)
-                             .arg(tool ? Limits::kMinToolNumber : Limits::kMinPocket)
-                             .arg(tool ? Limits::kMaxToolNumber : Limits::kMaxPocket));
+    std::optional<Units> units;
+    bool hasFormat = false;
+    bool hasVersion = false;
+    bool hasTools = false;
+};
+
+// The "tools" list, `json` after its key: each tool is checked as it is read, in the units known by then.
+Result<void> readTools(JsonScanner &json, TableFields &table, ToolCollector &tools)
+{
+    if (!table.hasFormat)
+        return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\", before \"tools\".")
+                           .arg(kFormatId),
+            json.line() };
+    if (!table.hasVersion)
+        return Error { tr("\"version\" must come before \"tools\"."), json.line() };
+    if (table.hasTools)
+        return Error { tr("\"tools\" appears twice."), json.line() };
+    table.hasTools = true;
+    if (!json.consume('['))
+        return Error { tr("\"tools\" must be a list of tools."), json.line() };
+    if (json.consume(']'))
+        return {};
+    do {
+        Tool tool;
+        const int line = (json.peek(), json.line());
+        if (!readJsonTool(json, tool))
+            return json.error();
+        if (auto added = tools.add(std::move(tool), line, table.units.value_or(Units::Millimetre)); !added)
+            return added;
+    } while (json.consume(','));
+    if (!json.expect(']', "',' or ']' after a tool"))
+        return json.error();
+    return {};
+}
+
+Result<void> checkVersion(const Scalar &v, int line)
+{
+    if (v.kind != Scalar::Number || v.number != std::floor(v.number) || v.number < 1)
+        return Error { tr("\"version\" must be a whole number from 1 up."), line };
+    if (v.number > kJsonVersion)
+        return Error { tr("this table was written by a newer Toffee (format version %1); this one "
+                          "reads up to version %2. Update Toffee to open it.")
+                           .arg(v.number)
+                           .arg(kJsonVersion),
+            line };
+    return {};
+}
+
+// A field of the table other than "tools", whose value `v` begins on `line`.
+Result<void> readTableField(const QString &key, const Scalar &v, int line, TableFields &table)
+{
+    if (key == JsonKey::Format) {
+        if (v.kind != Scalar::String || v.string != kFormatId)
+            return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId),
+                line };
+        table.hasFormat = true;
+    } else if (key == JsonKey::Version) {
+        if (auto known = checkVersion(v, line); !known)
+            return known;
+        table.hasVersion = true;
+    } else if (key == JsonKey::Units) {
+        table.units = v.kind == Scalar::String ? unitsFromSymbol(v.string) : std::nullopt;
+        if (!table.units)
+            return Error { tr("\"units\" must be \"mm\" or \"in\"."), line };
+    } else if (!table.hasFormat) {
+        return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1 };
+    } else {
+        return Error { tr("unknown field \"%1\" in the table.").arg(excerpt(key)), line };
     }
-    out = int(v.number);
-    return true;
+    return {};
 }
 
-bool decimal(JsonScanner &json, const Scalar &v, QLatin1StringView key, double &out)
+// The table object's fields, `json` inside its '{'.
+Result<void> readTableFields(JsonScanner &json, TableFields &table, ToolCollector &tools)
 {
-    if (v.kind != Scalar::Number)
-        return json.fail(tr("\"%1\" must be a number.").arg(key));
-    out = v.number;
-    return true;
+    if (json.consume('}'))
+        return {};
+    do {
+        QString key;
+        if (!json.string(key) || !json.expect(':', "':' after a key"))
+            return json.error();
+        if (key == JsonKey::Tools) {
+            if (auto read = readTools(json, table, tools); !read)
+                return read;
+            continue;
+        }
+        Scalar v;
+        const int line = (json.peek(), json.line());
+        if (!json.value(v))
+            return json.error();
+        if (auto read = readTableField(key, v, line, table); !read)
+            return read;
+    } while (json.consume(','));
+    if (!json.expect('}', "',' or '}' at the end of the table"))
+        return json.error();
+    return {};
 }
 
-bool text(JsonScanner &json, const Scalar &v, QLatin1StringView key, QString &out)
+// The first field the table must have and has not, on line 1, as the table as a whole lacks it.
+Result<void> checkComplete(const TableFields &table)
 {
-    if (v.kind == Scalar::Null)
-        return true;
-    if (v.kind != Scalar::String)
-        return json.fail(tr("\"%1\" must be text.").arg(key));
-    out = v.string;
-    return true;
-}
-
-// One tool object; `json` is at its '{'.
-bool readTool(JsonScanner &json, Tool &tool)
-{
-    if (json.peek() != '{')
-        return json.fail(tr("each entry of \"tools\" must be a JSON object such as {\"number\": 1}."));
-    json.consume('{');
-    bool hasNumber = false;
-    bool hasPocket = false;
-    quint32 seen = 0;
-    static const QLatin1StringView keys[] = { Key::Number, Key::Pocket, Key::Description, Key::LengthGeometry,
-        Key::LengthWear, Key::RadiusGeometry, Key::RadiusWear, Key::MeasuredTlo, Key::MeasuredAt, Key::Notes,
-        Key::TloSource, Key::BreakTestFailed, Key::ReferenceMz, Key::LinuxCnc };
-    if (!json.consume('}')) {
-        do {
-            QByteArrayView key;
-            QString decodedKey;
-            Scalar v;
-            if (!json.key(key, decodedKey) || !json.expect(':', "':' after a key") || !json.value(v))
-                return false;
-            const auto found = std::find_if(std::begin(keys), std::end(keys),
-                [&key](QLatin1StringView k) { return QByteArrayView(k.data(), k.size()) == key; });
-            if (found == std::end(keys))
-                return json.fail(tr("unknown field \"%1\" in a tool.").arg(excerpt(key)));
-            const auto bit = quint32(1) << (found - std::begin(keys));
-            if (seen & bit)
-                return json.fail(tr("the field \"%1\" appears twice in a tool.").arg(excerpt(key)));
-            seen |= bit;
-            const QLatin1StringView k = *found;
-            bool ok = true;
-            if (k == Key::Number) {
-                ok = wholeNumber(json, v, k, tool.number);
-                hasNumber = true;
-            } else if (k == Key::Pocket) {
-                ok = wholeNumber(json, v, k, tool.pocket);
-                hasPocket = true;
-            } else if (k == Key::Description) {
-                ok = text(json, v, k, tool.description);
-            } else if (k == Key::LengthGeometry) {
-                ok = decimal(json, v, k, tool.lengthGeometry);
-            } else if (k == Key::LengthWear) {
-                ok = decimal(json, v, k, tool.lengthWear);
-            } else if (k == Key::RadiusGeometry) {
-                ok = decimal(json, v, k, tool.radiusGeometry);
-            } else if (k == Key::RadiusWear) {
-                ok = decimal(json, v, k, tool.radiusWear);
-            } else if (k == Key::MeasuredTlo) {
-                if (v.kind != Scalar::Null) {
-                    double tlo = 0.0;
-                    ok = decimal(json, v, k, tlo);
-                    tool.measuredTlo = tlo;
-                }
-            } else if (k == Key::MeasuredAt) {
-                QString at;
-                ok = text(json, v, k, at);
-                if (ok && !at.isEmpty()) {
-                    tool.measuredAt = parseIsoDateTime(at.toLatin1());
-                    if (!tool.measuredAt.isValid())
-                        ok = json.fail(tr("\"measured_at\" is not a date and time (use ISO 8601, e.g. "
-                                          "2026-11-22T10:15:00Z)."));
-                }
-            } else if (k == Key::Notes) {
-                ok = text(json, v, k, tool.notes);
-            } else if (k == Key::TloSource) {
-                QString source;
-                ok = text(json, v, k, source);
-                if (ok && source == "manual"_L1)
-                    tool.tloSource = TloSource::Manual;
-                else if (ok && source != "probe"_L1)
-                    ok = json.fail(tr("\"tlo_source\" must be \"probe\" or \"manual\"."));
-            } else if (k == Key::ReferenceMz) {
-                if (v.kind != Scalar::Null) {
-                    double mz = 0.0;
-                    ok = decimal(json, v, k, mz);
-                    tool.referenceMz = mz;
-                }
-            } else if (k == Key::BreakTestFailed) {
-                if (v.kind != Scalar::Bool)
-                    ok = json.fail(tr("\"break_test_failed\" must be true or false."));
-                else
-                    tool.breakTestFailed = v.number != 0.0;
-            } else {
-                ok = text(json, v, k, tool.linuxCncExtra);
-            }
-            if (!ok)
-                return false;
-        } while (json.consume(','));
-        if (!json.expect('}', "',' or '}' in a tool"))
-            return false;
-    }
-    if (!hasNumber)
-        return json.fail(tr("a tool has no \"number\"."));
-    if (!hasPocket)
-        tool.pocket = defaultPocket(tool.number);
-    return true;
+    if (!table.hasFormat)
+        return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1 };
+    if (!table.hasVersion)
+        return Error { tr("\"version\" must be a whole number from 1 up."), 1 };
+    if (!table.units)
+        return Error { tr("\"units\" must be \"mm\" or \"in\"."), 1 };
+    if (!table.hasTools)
+        return Error { tr("\"tools\" must be a list of tools."), 1 };
+    return {};
 }
 
 void appendString(QByteArray &out, const QString &s)
@@ -240,93 +204,15 @@ Result<ToolTable> readJsonTable(const QByteArray &data)
         return Error { tr("this is not a Toffee tool table: the file must hold one JSON object."),
             json.line() };
     json.consume('{');
-
-    std::optional<Units> units;
-    bool hasFormat = false;
-    bool hasVersion = false;
-    bool hasTools = false;
+    TableFields table;
     ToolCollector tools(data); // Toffee writes one tool a line
-    if (!json.consume('}')) {
-        do {
-            QString key;
-            if (!json.string(key) || !json.expect(':', "':' after a key"))
-                return json.error();
-            if (key == Key::Tools) {
-                if (!hasFormat)
-                    return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\", before "
-                                      "\"tools\".")
-                                       .arg(kFormatId),
-                        json.line() };
-                if (!hasVersion)
-                    return Error { tr("\"version\" must come before \"tools\"."), json.line() };
-                if (hasTools)
-                    return Error { tr("\"tools\" appears twice."), json.line() };
-                hasTools = true;
-                if (!json.consume('['))
-                    return Error { tr("\"tools\" must be a list of tools."), json.line() };
-                if (!json.consume(']')) {
-                    do {
-                        Tool tool;
-                        const int line = (json.peek(), json.line());
-                        if (!readTool(json, tool))
-                            return json.error();
-                        if (auto added = tools.add(std::move(tool), line, units.value_or(Units::Millimetre));
-                            !added)
-                            return added.error();
-                    } while (json.consume(','));
-                    if (!json.expect(']', "',' or ']' after a tool"))
-                        return json.error();
-                }
-                continue;
-            }
-            Scalar v;
-            const int line = (json.peek(), json.line());
-            if (!json.value(v))
-                return json.error();
-            if (key == Key::Format) {
-                if (v.kind != Scalar::String || v.string != kFormatId)
-                    return Error {
-                        tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), line
-                    };
-                hasFormat = true;
-            } else if (key == Key::Version) {
-                if (v.kind != Scalar::Number || v.number != std::floor(v.number) || v.number < 1)
-                    return Error { tr("\"version\" must be a whole number from 1 up."), line };
-                if (v.number > kJsonVersion)
-                    return Error {
-                        tr("this table was written by a newer Toffee (format version %1); this one "
-                           "reads up to version %2. Update Toffee to open it.")
-                            .arg(v.number)
-                            .arg(kJsonVersion),
-                        line
-                    };
-                hasVersion = true;
-            } else if (key == Key::Units) {
-                units = v.kind == Scalar::String ? unitsFromSymbol(v.string) : std::nullopt;
-                if (!units)
-                    return Error { tr("\"units\" must be \"mm\" or \"in\"."), line };
-            } else if (!hasFormat) {
-                return Error {
-                    tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1
-                };
-            } else {
-                return Error { tr("unknown field \"%1\" in the table.").arg(excerpt(key)), line };
-            }
-        } while (json.consume(','));
-        if (!json.expect('}', "',' or '}' at the end of the table"))
-            return json.error();
-    }
+    if (auto read = readTableFields(json, table, tools); !read)
+        return read.error();
     if (!json.atEnd())
         return Error { tr("this is not valid JSON: there is more text after the table."), json.line() };
-    if (!hasFormat)
-        return Error { tr("this is not a Toffee tool table: \"format\" must be \"%1\".").arg(kFormatId), 1 };
-    if (!hasVersion)
-        return Error { tr("\"version\" must be a whole number from 1 up."), 1 };
-    if (!units)
-        return Error { tr("\"units\" must be \"mm\" or \"in\"."), 1 };
-    if (!hasTools)
-        return Error { tr("\"tools\" must be a list of tools."), 1 };
-    return tools.build(*units);
+    if (auto complete = checkComplete(table); !complete)
+        return complete.error();
+    return tools.build(*table.units);
 }
 
 bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
@@ -350,12 +236,12 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
         out += QByteArray::number(tool.pocket);
         out += ", \"description\": ";
         appendString(out, tool.description);
-        appendField(out, Key::LengthGeometry, tool.lengthGeometry);
-        appendField(out, Key::LengthWear, tool.lengthWear);
-        appendField(out, Key::RadiusGeometry, tool.radiusGeometry);
-        appendField(out, Key::RadiusWear, tool.radiusWear);
+        appendField(out, JsonKey::LengthGeometry, tool.lengthGeometry);
+        appendField(out, JsonKey::LengthWear, tool.lengthWear);
+        appendField(out, JsonKey::RadiusGeometry, tool.radiusGeometry);
+        appendField(out, JsonKey::RadiusWear, tool.radiusWear);
         if (tool.measuredTlo)
-            appendField(out, Key::MeasuredTlo, *tool.measuredTlo);
+            appendField(out, JsonKey::MeasuredTlo, *tool.measuredTlo);
         if (tool.measuredAt.isValid()) {
             out += ", \"measured_at\": \"";
             appendIsoUtc(out, tool.measuredAt);
@@ -366,7 +252,7 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
         if (tool.breakTestFailed)
             out += ", \"break_test_failed\": true";
         if (tool.referenceMz)
-            appendField(out, Key::ReferenceMz, *tool.referenceMz);
+            appendField(out, JsonKey::ReferenceMz, *tool.referenceMz);
         if (!tool.notes.isEmpty()) {
             out += ", \"notes\": ";
             appendString(out, tool.notes);

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The native JSON format's keys, and the reading of one tool object (jsontool.cpp) apart from the table
+// around it (jsontableformat.cpp). Not part of the model's interface.
+#pragma once
+
+#include <QString>
+
+namespace Toffee {
+
+class JsonScanner;
+struct Tool;
+
+namespace JsonKey {
+inline constexpr QLatin1StringView Format("format");
+inline constexpr QLatin1StringView Version("version");
+inline constexpr QLatin1StringView Units("units");
+inline constexpr QLatin1StringView Tools("tools");
+inline constexpr QLatin1StringView Number("number");
+inline constexpr QLatin1StringView Pocket("pocket");
+inline constexpr QLatin1StringView Description("description");
+inline constexpr QLatin1StringView LengthGeometry("length_geometry");
+inline constexpr QLatin1StringView LengthWear("length_wear");
+inline constexpr QLatin1StringView RadiusGeometry("radius_geometry");
+inline constexpr QLatin1StringView RadiusWear("radius_wear");
+inline constexpr QLatin1StringView MeasuredTlo("measured_tlo");
+inline constexpr QLatin1StringView MeasuredAt("measured_at");
+inline constexpr QLatin1StringView Notes("notes");
+inline constexpr QLatin1StringView TloSource("tlo_source");
+inline constexpr QLatin1StringView BreakTestFailed("break_test_failed");
+inline constexpr QLatin1StringView ReferenceMz("reference_mz");
+inline constexpr QLatin1StringView LinuxCnc("linuxcnc");
+} // namespace JsonKey
+
+// One tool object, `json` at its '{'. False when it is not a tool Toffee reads, the reason in `json.error()`.
+[[nodiscard]] bool readJsonTool(JsonScanner &json, Tool &tool);
+
+} // namespace Toffee
