@@ -78,8 +78,17 @@ MainWindow::MainWindow(QWidget *parent)
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     createActions();
     createMachineActions();
-    // The machine's state, tool and TLO in a strip that no scrolling, dock or window size hides (and that
-    // the toolbar menu cannot switch off).
+    createMachineStrip();
+    connectMachine();
+    connectDocument();
+    updateTitle();
+    readSettings();
+}
+
+// The machine's state, tool and TLO in a strip that no scrolling, dock or window size hides (and that the
+// toolbar menu cannot switch off).
+void MainWindow::createMachineStrip()
+{
     auto *strip = new QToolBar(tr("Machine State"), this);
     strip->setObjectName(u"machineStateBar"_s);
     strip->setMovable(false);
@@ -89,7 +98,11 @@ MainWindow::MainWindow(QWidget *parent)
     strip->addWidget(m_machineDock->tloPanel());
     addToolBarBreak();
     addToolBar(Qt::TopToolBarArea, strip);
+}
 
+// The status bar follows the connection; its failures become messages.
+void MainWindow::connectMachine()
+{
     m_machineLabel = new QLabel(this);
     m_machineLabel->setObjectName(u"machineStatusLabel"_s);
     statusBar()->addPermanentWidget(m_machineLabel);
@@ -112,7 +125,11 @@ MainWindow::MainWindow(QWidget *parent)
         m_machineDock->probePanel()->setSelectedTool(selected.size() == 1 ? selected.front() : -1);
     });
     updateMachineStatus();
+}
 
+// The tool count, the title, the file on disk, autosave and the table's own warnings.
+void MainWindow::connectDocument()
+{
     m_countLabel = new QLabel(this);
     m_countLabel->setObjectName(u"toolCountLabel"_s);
     statusBar()->addPermanentWidget(m_countLabel);
@@ -147,8 +164,6 @@ MainWindow::MainWindow(QWidget *parent)
         });
     connect(m_document->model(), &ToolTableModel::editRejected, this,
         [this](const QString &message) { showError(tr("Value not accepted"), message); });
-    updateTitle();
-    readSettings();
 }
 
 MainWindow::~MainWindow()

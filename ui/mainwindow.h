@@ -45,6 +45,9 @@ private:
         QMenu *menu, const QString &name, const QString &text, const QKeySequence &shortcut, Slot slot);
     void createActions();
     void createMachineActions();
+    void createMachineStrip();
+    void connectMachine();
+    void connectDocument();
     void updateMachineStatus();
     void fileChangedOnDisk(const QString &path);
     void newTable();

@@ -98,7 +98,29 @@ TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidge
     m_unlock->setToolTip(tr("Clear the halt ($X) — Ctrl+Shift+U"));
     m_unlock->hide();
 
-    // The note wraps and the two Z values stack, so that the strip fits 1280 pixels in every language.
+    layOut();
+
+    connect(m_connection, &MachineConnection::statusChanged, this, &TloPanel::showStatus);
+    connect(m_connection, &MachineConnection::offsetsChanged, this, &TloPanel::showOffsets);
+    connect(m_connection, &MachineConnection::haltedChanged, this, &TloPanel::showHalt);
+    connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State s) {
+        if (s != MachineConnection::State::Connected)
+            clear();
+    });
+    // The note compares the machine's TLO with the table's: it follows every edit, undo and file load.
+    connect(m_document->model(), &QAbstractItemModel::modelReset, this, &TloPanel::updateTlo);
+    connect(m_document->model(), &QAbstractItemModel::dataChanged, this, &TloPanel::updateTlo);
+    connect(m_document->model(), &QAbstractItemModel::rowsInserted, this, &TloPanel::updateTlo);
+    connect(m_document->model(), &QAbstractItemModel::rowsRemoved, this, &TloPanel::updateTlo);
+    connect(m_unlock, &QPushButton::clicked, this, &TloPanel::unlock);
+    connect(&m_staleTimer, &QTimer::timeout, this, &TloPanel::checkStale);
+    m_staleTimer.start(500);
+    clear();
+}
+
+// The note wraps and the two Z values stack, so that the strip fits 1280 pixels in every language.
+void TloPanel::layOut()
+{
     m_tloNote->setWordWrap(true);
     m_tloNote->setMinimumWidth(160);
     auto *row = new QHBoxLayout;
@@ -128,23 +150,6 @@ TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidge
     layout->setSpacing(2);
     layout->addLayout(row);
     layout->addWidget(m_halt);
-
-    connect(m_connection, &MachineConnection::statusChanged, this, &TloPanel::showStatus);
-    connect(m_connection, &MachineConnection::offsetsChanged, this, &TloPanel::showOffsets);
-    connect(m_connection, &MachineConnection::haltedChanged, this, &TloPanel::showHalt);
-    connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State s) {
-        if (s != MachineConnection::State::Connected)
-            clear();
-    });
-    // The note compares the machine's TLO with the table's: it follows every edit, undo and file load.
-    connect(m_document->model(), &QAbstractItemModel::modelReset, this, &TloPanel::updateTlo);
-    connect(m_document->model(), &QAbstractItemModel::dataChanged, this, &TloPanel::updateTlo);
-    connect(m_document->model(), &QAbstractItemModel::rowsInserted, this, &TloPanel::updateTlo);
-    connect(m_document->model(), &QAbstractItemModel::rowsRemoved, this, &TloPanel::updateTlo);
-    connect(m_unlock, &QPushButton::clicked, this, &TloPanel::unlock);
-    connect(&m_staleTimer, &QTimer::timeout, this, &TloPanel::checkStale);
-    m_staleTimer.start(500);
-    clear();
 }
 
 void TloPanel::clear()

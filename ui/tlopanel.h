@@ -42,6 +42,7 @@ private:
     void showHalt();
     void updateTlo();
     void checkStale();
+    void layOut();
     void clear();
 
     MachineConnection *m_connection;

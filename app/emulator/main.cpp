@@ -53,6 +53,93 @@ int usageError(const QString &message)
     return 2;
 }
 
+// The command line's options, each once.
+struct Options
+{
+    QCommandLineOption link { u"link"_s, u"Also make a symbolic link to the device at PATH."_s, u"PATH"_s };
+    QCommandLineOption tool { u"tool"_s, u"The physical length of tool N in mm (repeatable)."_s,
+        u"N=LENGTH"_s };
+    QCommandLineOption broken { u"break-tool"_s, u"Tool N is MM shorter than its length (repeatable)."_s,
+        u"N=MM"_s };
+    QCommandLineOption probeMs { u"probe-ms"_s, u"How long a probing cycle takes (default 2000)."_s, u"MS"_s,
+        u"2000"_s };
+    QCommandLineOption moveMs { u"move-ms"_s, u"How long any other command takes (default 0)."_s, u"MS"_s,
+        u"0"_s };
+    QCommandLineOption fixedReference { u"fixed-reference"_s,
+        u"Firmware 2.1.0c: the reference tool MCS Z is configured, not probed."_s, u"MZ"_s };
+    QCommandLineOption notHomed { u"not-homed"_s, u"Start unhomed: probing halts until $H."_s };
+    QCommandLineOption halted { u"halted"_s, u"Start halted with this reason (1-16)."_s, u"REASON"_s };
+    QCommandLineOption fault { u"fault"_s,
+        u"A one-shot fault: drop-ok, no-answer, garble, close, fail-probe, delay:MS or break:MM, "
+        u"optionally @PREFIX to hit the first command starting with PREFIX (repeatable)."_s,
+        u"KIND[@PREFIX]"_s };
+
+    void addTo(QCommandLineParser &parser) const
+    {
+        parser.addOptions({ link, tool, broken, probeMs, moveMs, fixedReference, notHomed, halted, fault });
+    }
+};
+
+// What is wrong with an option, or nothing.
+using Problem = std::optional<QString>;
+
+Problem configureTools(CarveraEmulator &emulator, const QCommandLineParser &parser, const Options &o)
+{
+    for (const QString &value : parser.values(o.tool)) {
+        const auto tv = toolValue(value);
+        if (!tv)
+            return u"--tool %1: write N=LENGTH, e.g. 3=52.5."_s.arg(value);
+        emulator.setToolLength(tv->first, tv->second);
+    }
+    for (const QString &value : parser.values(o.broken)) {
+        const auto tv = toolValue(value);
+        if (!tv)
+            return u"--break-tool %1: write N=MM, e.g. 2=0.5."_s.arg(value);
+        emulator.breakTool(tv->first, tv->second);
+    }
+    return std::nullopt;
+}
+
+Problem configureMachine(CarveraEmulator &emulator, const QCommandLineParser &parser, const Options &o)
+{
+    const auto probe = Toffee::parseInteger(parser.value(o.probeMs).toUtf8());
+    const auto move = Toffee::parseInteger(parser.value(o.moveMs).toUtf8());
+    if (!probe || !move || *probe < 0 || *move < 0)
+        return u"--probe-ms and --move-ms take milliseconds."_s;
+    emulator.setTiming({ int(*probe), int(*move) });
+    if (parser.isSet(o.fixedReference)) {
+        const auto mz = Toffee::parseDecimal(parser.value(o.fixedReference).toUtf8());
+        if (!mz)
+            return u"--fixed-reference takes an MCS Z in mm."_s;
+        emulator.setProfile(CarveraEmulator::Profile::FixedReference, *mz);
+    }
+    emulator.setHomed(!parser.isSet(o.notHomed));
+    if (parser.isSet(o.halted)) {
+        const auto reason = Toffee::parseInteger(parser.value(o.halted).toUtf8());
+        if (!reason || *reason < 1)
+            return u"--halted takes a halt reason, e.g. 3."_s;
+        emulator.halt(int(*reason));
+    }
+    return std::nullopt;
+}
+
+Problem configureFaults(CarveraEmulator &emulator, const QCommandLineParser &parser, const Options &o)
+{
+    for (const QString &value : parser.values(o.fault)) {
+        const QString kind = value.section(u'@', 0, 0);
+        const QString prefix = value.contains(u'@') ? value.section(u'@', 1) : QString();
+        const auto f = faultFromName(kind);
+        const qsizetype colon = kind.indexOf(u':');
+        const auto amount
+            = colon < 0 ? std::optional<double>(0.0) : Toffee::parseDecimal(kind.mid(colon + 1).toUtf8());
+        if (!f || !amount)
+            return u"--fault %1: use drop-ok, no-answer, garble, close, fail-probe, delay:MS or "
+                   u"break:MM."_s.arg(value);
+        emulator.injectFault(*f, prefix.toUtf8(), *amount);
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -64,72 +151,16 @@ int main(int argc, char *argv[])
         u"A Carvera controller on a pseudo-terminal. Prints the device path, then "
         u"serves until stopped."_s);
     parser.addHelpOption();
-    const QCommandLineOption link(
-        u"link"_s, u"Also make a symbolic link to the device at PATH."_s, u"PATH"_s);
-    const QCommandLineOption tool(
-        u"tool"_s, u"The physical length of tool N in mm (repeatable)."_s, u"N=LENGTH"_s);
-    const QCommandLineOption broken(
-        u"break-tool"_s, u"Tool N is MM shorter than its length (repeatable)."_s, u"N=MM"_s);
-    const QCommandLineOption probeMs(
-        u"probe-ms"_s, u"How long a probing cycle takes (default 2000)."_s, u"MS"_s, u"2000"_s);
-    const QCommandLineOption moveMs(
-        u"move-ms"_s, u"How long any other command takes (default 0)."_s, u"MS"_s, u"0"_s);
-    const QCommandLineOption fixedReference(u"fixed-reference"_s,
-        u"Firmware 2.1.0c: the reference tool MCS Z is configured, not probed."_s, u"MZ"_s);
-    const QCommandLineOption notHomed(u"not-homed"_s, u"Start unhomed: probing halts until $H."_s);
-    const QCommandLineOption halted(u"halted"_s, u"Start halted with this reason (1-16)."_s, u"REASON"_s);
-    const QCommandLineOption fault(u"fault"_s,
-        u"A one-shot fault: drop-ok, no-answer, garble, close, fail-probe, delay:MS or break:MM, "
-        u"optionally @PREFIX to hit the first command starting with PREFIX (repeatable)."_s,
-        u"KIND[@PREFIX]"_s);
-    parser.addOptions({ link, tool, broken, probeMs, moveMs, fixedReference, notHomed, halted, fault });
+    const Options options;
+    options.addTo(parser);
     parser.process(app);
 
     CarveraEmulator emulator;
-    for (const QString &value : parser.values(tool)) {
-        const auto tv = toolValue(value);
-        if (!tv)
-            return usageError(u"--tool %1: write N=LENGTH, e.g. 3=52.5."_s.arg(value));
-        emulator.setToolLength(tv->first, tv->second);
+    for (auto configure : { configureTools, configureMachine, configureFaults }) {
+        if (const Problem problem = configure(emulator, parser, options))
+            return usageError(*problem);
     }
-    for (const QString &value : parser.values(broken)) {
-        const auto tv = toolValue(value);
-        if (!tv)
-            return usageError(u"--break-tool %1: write N=MM, e.g. 2=0.5."_s.arg(value));
-        emulator.breakTool(tv->first, tv->second);
-    }
-    const auto probe = Toffee::parseInteger(parser.value(probeMs).toUtf8());
-    const auto move = Toffee::parseInteger(parser.value(moveMs).toUtf8());
-    if (!probe || !move || *probe < 0 || *move < 0)
-        return usageError(u"--probe-ms and --move-ms take milliseconds."_s);
-    emulator.setTiming({ int(*probe), int(*move) });
-    if (parser.isSet(fixedReference)) {
-        const auto mz = Toffee::parseDecimal(parser.value(fixedReference).toUtf8());
-        if (!mz)
-            return usageError(u"--fixed-reference takes an MCS Z in mm."_s);
-        emulator.setProfile(CarveraEmulator::Profile::FixedReference, *mz);
-    }
-    emulator.setHomed(!parser.isSet(notHomed));
-    if (parser.isSet(halted)) {
-        const auto reason = Toffee::parseInteger(parser.value(halted).toUtf8());
-        if (!reason || *reason < 1)
-            return usageError(u"--halted takes a halt reason, e.g. 3."_s);
-        emulator.halt(int(*reason));
-    }
-    for (const QString &value : parser.values(fault)) {
-        const QString kind = value.section(u'@', 0, 0);
-        const QString prefix = value.contains(u'@') ? value.section(u'@', 1) : QString();
-        const auto f = faultFromName(kind);
-        const qsizetype colon = kind.indexOf(u':');
-        const auto amount
-            = colon < 0 ? std::optional<double>(0.0) : Toffee::parseDecimal(kind.mid(colon + 1).toUtf8());
-        if (!f || !amount)
-            return usageError(u"--fault %1: use drop-ok, no-answer, garble, close, fail-probe, delay:MS or "
-                              u"break:MM."_s.arg(value));
-        emulator.injectFault(*f, prefix.toUtf8(), *amount);
-    }
-
-    Toffee::PtyServer server(&emulator, parser.value(link));
+    Toffee::PtyServer server(&emulator, parser.value(options.link));
     QObject::connect(&server, &Toffee::PtyServer::deviceChanged, &app, [](const QString &path) {
         std::printf("%s\n", qPrintable(path));
         std::fflush(stdout);

@@ -29,10 +29,7 @@ int ToolTableModel::columnCount(const QModelIndex &parent) const
 QString ToolTableModel::formatLength(double value) const
 {
     // The locale's decimal separator, as the spin boxes and the rest of the window use ("-33,388" in German).
-    QString text = displayNumber(value, m_table.units());
-    if (const QString point = QLocale().decimalPoint(); point != u".")
-        text.replace(u'.', point);
-    return text;
+    return formatNumber(value, NumberFormat::display(m_table.units()).inLocale());
 }
 
 QVariant ToolTableModel::data(const QModelIndex &index, int role) const
@@ -42,35 +39,11 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
     const Tool &tool = m_table.at(index.row());
     if (role == ToolNumberRole)
         return tool.number;
-    if (role == Qt::TextAlignmentRole) {
-        const bool text = index.column() == DescriptionColumn || index.column() == NotesColumn;
-        return QVariant::fromValue(Qt::AlignVCenter | (text ? Qt::AlignLeft : Qt::AlignRight));
+    if (role != Qt::DisplayRole && role != Qt::EditRole && role != SortRole) {
+        // A cell with nothing to explain shows its text as its tooltip (a long description, a note).
+        if (QVariant look = decoration(tool, index.column(), role); look.isValid() || role != Qt::ToolTipRole)
+            return look;
     }
-    // A tool that failed its break test stands out on every column until it is probed again; a TLO never
-    // measured reads as such, greyed, and not as an empty cell that could pass for zero.
-    // A translucent red reads on the light and the dark palette alike, under the palette's own text colour.
-    if (role == Qt::BackgroundRole && tool.breakTestFailed)
-        return QColor(0xe0, 0x1b, 0x24, 0x60);
-    if (role == Qt::ForegroundRole && index.column() == MeasuredTloColumn && !tool.measuredTlo)
-        return QColor(0x80, 0x80, 0x80);
-    if (role == Qt::ToolTipRole && index.column() == MeasuredTloColumn)
-        return tloToolTip(tool);
-    if (index.column() == PocketColumn && (role == Qt::ForegroundRole || role == Qt::ToolTipRole)
-        && pocketCount(tool.pocket) > 1) {
-        if (role == Qt::ForegroundRole)
-            return QColor(0xb0, 0x50, 0x00);
-        QStringList others;
-        for (int n : toolsSharingPocket(tool.pocket, tool.number))
-            others << u"T"_s + QString::number(n);
-        return tr(
-            "Pocket %1 also holds %2. LinuxCNC's random tool changer needs each tool in its own pocket.")
-            .arg(tool.pocket)
-            .arg(others.join(u", "_s));
-    }
-    if (role == Qt::ToolTipRole && index.column() == NumberColumn && tool.breakTestFailed)
-        return tloToolTip(tool);
-    if (role != Qt::DisplayRole && role != Qt::EditRole && role != SortRole && role != Qt::ToolTipRole)
-        return {};
 
     const bool display = role == Qt::DisplayRole || role == Qt::ToolTipRole;
     auto length = [&](double v) -> QVariant {
@@ -116,6 +89,39 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
     default:
         return {};
     }
+}
+
+// How a cell looks, apart from its text: alignment, colours and the tooltips that explain them.
+QVariant ToolTableModel::decoration(const Tool &tool, int column, int role) const
+{
+    if (role == Qt::TextAlignmentRole) {
+        const bool text = column == DescriptionColumn || column == NotesColumn;
+        return QVariant::fromValue(Qt::AlignVCenter | (text ? Qt::AlignLeft : Qt::AlignRight));
+    }
+    // A tool that failed its break test stands out on every column until it is probed again; a TLO never
+    // measured reads as such, greyed, and not as an empty cell that could pass for zero.
+    // A translucent red reads on the light and the dark palette alike, under the palette's own text colour.
+    if (role == Qt::BackgroundRole && tool.breakTestFailed)
+        return QColor(0xe0, 0x1b, 0x24, 0x60);
+    if (role == Qt::ForegroundRole && column == MeasuredTloColumn && !tool.measuredTlo)
+        return QColor(0x80, 0x80, 0x80);
+    if (role == Qt::ToolTipRole && column == MeasuredTloColumn)
+        return tloToolTip(tool);
+    if (column == PocketColumn && (role == Qt::ForegroundRole || role == Qt::ToolTipRole)
+        && pocketCount(tool.pocket) > 1) {
+        if (role == Qt::ForegroundRole)
+            return QColor(0xb0, 0x50, 0x00);
+        QStringList others;
+        for (int n : toolsSharingPocket(tool.pocket, tool.number))
+            others << u"T"_s + QString::number(n);
+        return tr(
+            "Pocket %1 also holds %2. LinuxCNC's random tool changer needs each tool in its own pocket.")
+            .arg(tool.pocket)
+            .arg(others.join(u", "_s));
+    }
+    if (role == Qt::ToolTipRole && column == NumberColumn && tool.breakTestFailed)
+        return tloToolTip(tool);
+    return {};
 }
 
 QString ToolTableModel::tloToolTip(const Tool &tool) const

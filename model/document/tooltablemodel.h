@@ -72,6 +72,7 @@ Q_SIGNALS:
 
 private:
     [[nodiscard]] QString formatLength(double value) const;
+    [[nodiscard]] QVariant decoration(const Tool &tool, int column, int role) const;
     [[nodiscard]] QString tloToolTip(const Tool &tool) const;
 
     [[nodiscard]] int pocketCount(int pocket) const;
