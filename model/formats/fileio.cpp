@@ -50,6 +50,129 @@ QString megabytes(qint64 bytes)
     return formatNumber(double(bytes) / (1024.0 * 1024.0), NumberFormat::fixed(decimals));
 }
 
+Error tooLarge(const QString &path, qint64 size, qint64 maxBytes)
+{
+    return Error { tr("%1: the file is %2 MB; Toffee reads files of at most %3 MB.")
+                       .arg(path, megabytes(size), megabytes(maxBytes)) };
+}
+
+// A file built into the application (Qt's resource system): Toffee's own, never special.
+Result<QByteArray> readResource(const QString &path, qint64 maxBytes)
+{
+    QFile resource(path);
+    if (!resource.open(QIODevice::ReadOnly))
+        return readError(path, resource.errorString());
+    if (resource.size() > maxBytes)
+        return tooLarge(path, resource.size(), maxBytes);
+    return resource.readAll();
+}
+
+struct FileCloser
+{
+    int fd;
+    ~FileCloser() { ::close(fd); }
+};
+
+// Reads `fd` to the end, never past maxBytes: the file may grow while it is read. `size`: its size before.
+Result<QByteArray> readToEnd(int fd, qint64 size, const QString &path, qint64 maxBytes)
+{
+    QByteArray data;
+    data.resize(qsizetype(size));
+    qsizetype used = 0;
+    while (true) {
+        if (used == data.size()) {
+            if (data.size() > maxBytes)
+                return tooLarge(path, data.size(), maxBytes);
+            data.resize(std::min<qsizetype>(std::max<qsizetype>(data.size() * 2, 4096), maxBytes + 1));
+        }
+        const ssize_t n = ::read(fd, data.data() + used, size_t(data.size() - used));
+        if (n < 0) {
+            if (errno == EINTR)
+                continue;
+            return Error { tr("%1: cannot read: %2").arg(path, systemError(errno)) };
+        }
+        if (n == 0)
+            break;
+        used += n;
+    }
+    if (used > maxBytes)
+        return tooLarge(path, used, maxBytes);
+    data.resize(used);
+    return data;
+}
+
+QString sentence(QString reason)
+{
+    if (!reason.isEmpty() && !reason.endsWith(u'.'))
+        reason += u'.';
+    return reason;
+}
+
+// A save that failed says what became of the file: an old one is unchanged, else nothing was written.
+Error saveFailure(const QString &path, bool existed, const QString &reason)
+{
+    return Error { existed ? tr("%1: cannot save: %2 The old file is unchanged.").arg(path, reason)
+                           : tr("%1: cannot save: %2 Nothing was written.").arg(path, reason) };
+}
+
+// Why QSaveFile could not open `path`: the system's reason (a read-only file system, no permission) says more
+// than QSaveFile's.
+QString openFailure(const QSaveFile &file, const QString &path, const QString &folder, bool existed)
+{
+    if (existed && ::access(QFile::encodeName(path).constData(), W_OK) != 0)
+        return sentence(systemError(errno));
+    if (::access(QFile::encodeName(folder).constData(), W_OK) != 0)
+        return sentence(tr("%1: %2").arg(folder, systemError(errno)));
+    return sentence(file.errorString());
+}
+
+bool writeWhole(QSaveFile &file, QByteArrayView piece, QString &writeError)
+{
+    qsizetype done = 0;
+    while (done < piece.size()) {
+        // A short write is retried: the retry reports why (ENOSPC, EDQUOT, EFBIG).
+        const qint64 n = file.write(piece.data() + done, piece.size() - done);
+        if (n <= 0) {
+            writeError = file.errorString();
+            return false;
+        }
+        done += n;
+    }
+    return true;
+}
+
+// The producer's pieces into `file`; false, with why in `reason`, when one could not be written or the
+// producer gave up.
+bool produceInto(QSaveFile &file, const FileProducer &produce, const QString *producerError, QString &reason)
+{
+    QString writeError;
+    if (produce([&file, &writeError](QByteArrayView piece) { return writeWhole(file, piece, writeError); }))
+        return true;
+    if (!writeError.isEmpty())
+        reason = sentence(writeError);
+    else
+        reason = sentence(producerError ? *producerError : tr("the file could not be written"));
+    return false;
+}
+
+// Puts the written file in place of the old one; false, with why in `reason`, when that failed.
+bool syncAndCommit(QSaveFile &file, QString &reason)
+{
+    // QSaveFile::commit() syncs but does not say whether the sync worked; a disk that fills as delayed
+    // allocation meets it (or a network file system) reports it only here.
+    if (::fsync(file.handle()) != 0) {
+        const int error = errno;
+        file.cancelWriting();
+        reason = sentence(systemError(error));
+        return false;
+    }
+    if (!file.commit()) {
+        reason = sentence(file.errorString());
+        return false;
+    }
+    return true;
+}
+
 } // namespace
 
 bool isRegularFile(const QString &path, Links links)
@@ -67,16 +190,8 @@ Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes)
 {
     if (path.isEmpty())
         return Error { tr("no file name was given.") };
-    if (path.startsWith(u':')) {
-        // A file built into the application (Qt's resource system): Toffee's own, never special.
-        QFile resource(path);
-        if (!resource.open(QIODevice::ReadOnly))
-            return readError(path, resource.errorString());
-        if (resource.size() > maxBytes)
-            return Error { tr("%1: the file is %2 MB; Toffee reads files of at most %3 MB.")
-                               .arg(path, megabytes(resource.size()), megabytes(maxBytes)) };
-        return resource.readAll();
-    }
+    if (path.startsWith(u':'))
+        return readResource(path, maxBytes);
     const QByteArray native = QFile::encodeName(path);
     // stat() first: opening a FIFO for reading would block until a writer came, and a device would never end.
     struct stat before
@@ -91,11 +206,7 @@ Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes)
     const int fd = ::open(native.constData(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (fd < 0)
         return readError(path, systemError(errno));
-    struct Closer
-    {
-        int fd;
-        ~Closer() { ::close(fd); }
-    } closer { fd };
+    const FileCloser closer { fd };
     struct stat info
     {
     };
@@ -103,37 +214,9 @@ Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes)
         return readError(path, systemError(errno));
     if (const QString why = notAFile(info.st_mode); !why.isEmpty())
         return readError(path, why);
-    const auto tooLarge = [&](qint64 size) {
-        return Error { tr("%1: the file is %2 MB; Toffee reads files of at most %3 MB.")
-                           .arg(path, megabytes(size), megabytes(maxBytes)) };
-    };
     if (info.st_size > maxBytes)
-        return tooLarge(info.st_size);
-
-    // Read to the end, never past maxBytes: the file may grow while it is read.
-    QByteArray data;
-    data.resize(qsizetype(info.st_size));
-    qsizetype used = 0;
-    while (true) {
-        if (used == data.size()) {
-            if (data.size() > maxBytes)
-                return tooLarge(data.size());
-            data.resize(std::min<qsizetype>(std::max<qsizetype>(data.size() * 2, 4096), maxBytes + 1));
-        }
-        const ssize_t n = ::read(fd, data.data() + used, size_t(data.size() - used));
-        if (n < 0) {
-            if (errno == EINTR)
-                continue;
-            return Error { tr("%1: cannot read: %2").arg(path, systemError(errno)) };
-        }
-        if (n == 0)
-            break;
-        used += n;
-    }
-    if (used > maxBytes)
-        return tooLarge(used);
-    data.resize(used);
-    return data;
+        return tooLarge(path, info.st_size, maxBytes);
+    return readToEnd(fd, info.st_size, path, maxBytes);
 }
 
 Result<void> writeFileAtomically(
@@ -143,15 +226,6 @@ Result<void> writeFileAtomically(
     {
     };
     const bool existed = ::stat(QFile::encodeName(path).constData(), &existing) == 0;
-    const auto failure = [&](const QString &reason) {
-        return Error { existed ? tr("%1: cannot save: %2 The old file is unchanged.").arg(path, reason)
-                               : tr("%1: cannot save: %2 Nothing was written.").arg(path, reason) };
-    };
-    const auto sentence = [](QString reason) {
-        if (!reason.isEmpty() && !reason.endsWith(u'.'))
-            reason += u'.';
-        return reason;
-    };
     if (existed) {
         // Nothing is written over what is not a file, and there is no "old file" to speak of.
         if (const QString why = notAFile(existing.st_mode); !why.isEmpty())
@@ -159,48 +233,20 @@ Result<void> writeFileAtomically(
     }
     const QString folder = QFileInfo(path).absolutePath();
     if (!QFileInfo(folder).isDir())
-        return failure(tr("the folder %1 does not exist.").arg(folder));
+        return saveFailure(path, existed, tr("the folder %1 does not exist.").arg(folder));
 
     QSaveFile file(path);
     file.setDirectWriteFallback(false);
     // Unbuffered: each write reaches the system at once and its failure is seen here, not lost in a flush.
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
-        // The system's reason (a read-only file system, no permission) says more than QSaveFile's.
-        if (existed && ::access(QFile::encodeName(path).constData(), W_OK) != 0)
-            return failure(sentence(systemError(errno)));
-        if (::access(QFile::encodeName(folder).constData(), W_OK) != 0)
-            return failure(sentence(tr("%1: %2").arg(folder, systemError(errno))));
-        return failure(sentence(file.errorString()));
-    }
-    QString writeError;
-    const bool produced = produce([&file, &writeError](QByteArrayView piece) {
-        qsizetype done = 0;
-        while (done < piece.size()) {
-            // A short write is retried: the retry reports why (ENOSPC, EDQUOT, EFBIG).
-            const qint64 n = file.write(piece.data() + done, piece.size() - done);
-            if (n <= 0) {
-                writeError = file.errorString();
-                return false;
-            }
-            done += n;
-        }
-        return true;
-    });
-    if (!produced) {
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
+        return saveFailure(path, existed, openFailure(file, path, folder, existed));
+    QString reason;
+    if (!produceInto(file, produce, producerError, reason)) {
         file.cancelWriting();
-        if (!writeError.isEmpty())
-            return failure(sentence(writeError));
-        return failure(sentence(producerError ? *producerError : tr("the file could not be written")));
+        return saveFailure(path, existed, reason);
     }
-    // QSaveFile::commit() syncs but does not say whether the sync worked; a disk that fills as delayed
-    // allocation meets it (or a network file system) reports it only here.
-    if (::fsync(file.handle()) != 0) {
-        const int error = errno;
-        file.cancelWriting();
-        return failure(sentence(systemError(error)));
-    }
-    if (!file.commit())
-        return failure(sentence(file.errorString()));
+    if (!syncAndCommit(file, reason))
+        return saveFailure(path, existed, reason);
     return {};
 }
 
