@@ -289,7 +289,7 @@ void MachineSession::breakTest(double tolerance, Done done)
                                  .arg(m_tool.value_or(-1))
                                  .arg(millimetres(reading->newTlo, false))
                                  .arg(millimetres(reading->oldTlo, false))
-                                 .arg(tolerance);
+                                 .arg(toleranceText(tolerance));
         }
         done(result);
     });

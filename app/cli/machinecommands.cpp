@@ -96,8 +96,9 @@ void printBreakTest(Invocation &call, const SessionResult &r)
                 { u"difference"_s, diff }, { u"tolerance"_s, r.tolerance }, { u"broken"_s, broken } });
     } else {
         call.out << "T" << r.tool.value_or(-1) << ": old TLO " << mm(r.breakTest->oldTlo) << ", new "
-                 << mm(r.breakTest->newTlo) << ", difference " << mm(diff) << " (tolerance " << r.tolerance
-                 << "): " << (broken ? "BROKEN" : "OK") << Qt::endl;
+                 << mm(r.breakTest->newTlo) << ", difference " << mm(diff) << " (tolerance "
+                 << formatNumber(r.tolerance, NumberFormat::upTo(3)) << "): " << (broken ? "BROKEN" : "OK")
+                 << Qt::endl;
     }
     if (broken)
         call.err << "toffee-cli: " << r.message << Qt::endl;

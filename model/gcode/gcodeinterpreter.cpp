@@ -39,7 +39,7 @@ Result<int> GCodeInterpreter::wholeWord(const Words &w, char letter, int low, in
         return error(line,
             tr("%1%2 must be a whole number from %3 to %4.")
                 .arg(QChar::fromLatin1(letter))
-                .arg(number(v))
+                .arg(formatNumber(v))
                 .arg(low)
                 .arg(high));
     return int(v);
@@ -138,7 +138,7 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
             || same(g, 149) || same(g, 53))
             continue; // handled below
         else
-            return error(line, tr("G%1 is not simulated.").arg(number(g)));
+            return error(line, tr("G%1 is not simulated.").arg(formatNumber(g)));
     }
     if (w.hasG(10))
         return g10(w, line);

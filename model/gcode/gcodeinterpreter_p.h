@@ -26,11 +26,6 @@ inline bool same(double a, double b)
     return std::fabs(a - b) < 1e-6;
 }
 
-inline QString number(double v)
-{
-    return formatNumber(v);
-}
-
 inline int axisIndex(char letter)
 {
     return letter == 'X' ? 0 : letter == 'Y' ? 1 : letter == 'Z' ? 2 : -1;

@@ -53,9 +53,11 @@ Result<void> GCodeInterpreter::lengthWords(const Words &w, int line)
         if (h != std::floor(h) || h < 0 || h > kMaxOffsetNumber)
             return error(line,
                 fanuc ? tr("PS0030 ILLEGAL OFFSET NUMBER: H%1; offsets go from 0 to %2.")
-                            .arg(number(h))
+                            .arg(formatNumber(h))
                             .arg(kMaxOffsetNumber)
-                      : tr("H%1 is not an offset number (0 to %2).").arg(number(h)).arg(kMaxOffsetNumber));
+                      : tr("H%1 is not an offset number (0 to %2).")
+                            .arg(formatNumber(h))
+                            .arg(kMaxOffsetNumber));
         m_hNumber = int(h);
         m_lengthValue = m_hNumber == 0 ? 0.0 : offsetValue(m_hNumber);
         if (fanuc && m_hNumber == 0)
@@ -168,14 +170,14 @@ Result<void> GCodeInterpreter::g10WorkOffset(const Words &w, double l, int line)
 Result<void> GCodeInterpreter::g10ToolTable(const Words &w, double l, int line)
 {
     if (!same(l, 1))
-        return error(
-            line, tr("G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.").arg(number(l)));
+        return error(line,
+            tr("G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.").arg(formatNumber(l)));
     if (!w.word('P') || w.get('P') < 1 || w.get('P') > Limits::kMaxToolNumber
         || w.get('P') != std::floor(w.get('P')))
         return error(line, tr("G10 L1 needs P, a tool number in the tool table."));
     const auto it = m_offsets.find(int(w.get('P')));
     if (it == m_offsets.end())
-        return error(line, tr("G10 L1: tool %1 is not in the tool table.").arg(number(w.get('P'))));
+        return error(line, tr("G10 L1: tool %1 is not in the tool table.").arg(formatNumber(w.get('P'))));
     if (w.word('Z'))
         it->second.lengthGeometry = w.get('Z'); // the table only: the active offset changes at the next G43
     if (w.word('R'))
@@ -195,8 +197,8 @@ Result<void> GCodeInterpreter::g10Register(const Words &w, double l, int line)
                "written."));
     if (!same(l, 10) && !same(l, 11) && !same(l, 12) && !same(l, 13))
         return error(line,
-            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: L%1 is not L10 to L13.").arg(number(l))
-                  : tr("G10 L%1 is not L10 to L13.").arg(number(l)));
+            fanuc ? tr("PS0031 ILLEGAL P COMMAND IN G10: L%1 is not L10 to L13.").arg(formatNumber(l))
+                  : tr("G10 L%1 is not L10 to L13.").arg(formatNumber(l)));
     const double p = w.word('P') ? w.get('P') : -1;
     if (p < 1 || p > kMaxOffsetNumber || p != std::floor(p))
         return error(line,
@@ -227,8 +229,10 @@ Result<void> GCodeInterpreter::g10Register(const Words &w, double l, int line)
     const double limit = wear ? kMaxWear : kMaxGeometry;
     if (!std::isfinite(result) || std::fabs(result) > limit + 1e-9)
         return error(line,
-            fanuc ? tr("PS0032 ILLEGAL OFFSET VALUE IN G10: %1 is beyond ±%2.").arg(number(result)).arg(limit)
-                  : tr("G10: %1 is beyond ±%2.").arg(number(result)).arg(limit));
+            fanuc ? tr("PS0032 ILLEGAL OFFSET VALUE IN G10: %1 is beyond ±%2.")
+                        .arg(formatNumber(result))
+                        .arg(limit)
+                  : tr("G10: %1 is beyond ±%2.").arg(formatNumber(result), formatNumber(limit)));
     field = result;
     m_offsets[int(p)] = entry;
     return {};
