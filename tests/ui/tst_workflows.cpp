@@ -28,6 +28,7 @@
 #include "serial/emulator/carveraemulator.h"
 #include "serial/machineconnection.h"
 #include "tests/support/messageboxes.h"
+#include "tests/support/station.h"
 #include "ui/consoledock.h"
 #include "ui/exportdialog.h"
 #include "ui/machinedock.h"
@@ -38,83 +39,13 @@
 using namespace Toffee;
 using namespace Qt::StringLiterals;
 using Toffee::Test::answerNextBox;
+using Toffee::Test::Station;
 
 namespace {
 
 const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
 
 // The window as an operator has it, with every line it sent to the machine.
-struct Station
-{
-    QList<QByteArray> sent;
-    MainWindow window;
-
-    Station() { window.show(); }
-
-    template<typename T> T *find(const QString &name) const
-    {
-        T *found = window.findChild<T *>(name);
-        if (!found)
-            qFatal("no widget named %s", qPrintable(name));
-        return found;
-    }
-    QString text(const QString &label) const { return find<QLabel>(label)->text(); }
-    CarveraEmulator *machine() const { return window.connection()->emulator(); }
-    const ToolTable &table() const { return window.document()->table(); }
-    bool idle() const { return !window.connection()->isBusy(); }
-    // What the table shows in a cell of tool `number`.
-    QString cell(int number, int column) const
-    {
-        auto *model = window.document()->model();
-        return model->index(model->rowOfTool(number), column).data().toString();
-    }
-
-    void connect()
-    {
-        window.connection()->connectTo({ true, {}, 115200 });
-        QVERIFY(QTest::qWaitFor(
-            [this] { return window.connection()->state() == MachineConnection::State::Connected; }));
-        QObject::connect(window.connection(), &MachineConnection::consoleLine, &window,
-            [this](const QByteArray &line, bool outgoing) {
-                if (outgoing)
-                    sent.append(line);
-            });
-        QTRY_VERIFY(text(u"machineStateLabel"_s) == u"Idle"_s);
-    }
-    void trigger(const QString &action) { find<QAction>(action)->trigger(); }
-    // Presses a key on whatever has focus, as a person at the keyboard does.
-    void key(int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
-    {
-        QWidget *target = QApplication::activeModalWidget() ? QApplication::activeModalWidget()
-            : QApplication::focusWidget()                   ? QApplication::focusWidget()
-                                                            : &window;
-        QTest::keyClick(target, Qt::Key(key), modifiers);
-    }
-    // Probes through the Machine menu (F5), answering its question.
-    QString probe()
-    {
-        QString question;
-        answerNextBox(QMessageBox::Yes, &question);
-        trigger(u"actionProbe"_s);
-        if (!QTest::qWaitFor([this] { return idle(); }, 10000))
-            qWarning("the probe did not finish");
-        return question;
-    }
-    // Saves through File ▸ Save As, typing the name into the file dialog; answers a lossy-format question.
-    void saveAs(const QString &path, QString *lossQuestion = nullptr)
-    {
-        QTimer::singleShot(0, [path] {
-            auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
-            QVERIFY(dialog);
-            dialog->selectFile(path);
-            static_cast<QDialog *>(dialog)->accept();
-        });
-        if (lossQuestion)
-            QTimer::singleShot(50, [lossQuestion] { answerNextBox(QMessageBox::Yes, lossQuestion); });
-        trigger(u"actionSaveAs"_s);
-    }
-};
-
 } // namespace
 
 class TestWorkflows : public QObject
