@@ -69,6 +69,38 @@ bool probes(int operation)
     return operation == Probe || operation == BreakTest || operation == ChangeTool;
 }
 
+// The fault of a row, aimed at the operation's first command.
+void injectFault(CarveraEmulator &emulator, int operation, int fault)
+{
+    const QByteArray target = kFirstCommand[size_t(operation)];
+    switch (fault) {
+    case DropOk:
+        emulator.injectFault(Fault::DropOk, target);
+        break;
+    case NoAnswer:
+        emulator.injectFault(Fault::NoAnswer, target);
+        break;
+    case Garble:
+        emulator.injectFault(Fault::Garble, target);
+        break;
+    case CloseLink:
+        emulator.injectFault(Fault::CloseLink, target);
+        break;
+    case Alarm:
+        if (probes(operation))
+            emulator.injectFault(Fault::FailProbe); // the alarm comes in the middle of the cycle
+        else
+            emulator.halt(3); // already halted: every command gets "Alarm lock"
+        break;
+    case LateAnswer:
+        emulator.injectFault(Fault::Delay, target, 800); // beyond any limit the test set
+        break;
+    case ToolBroken:
+        emulator.injectFault(Fault::BreakTool, target, 0.5); // the tool in the spindle loses 0.5 mm
+        break;
+    }
+}
+
 } // namespace
 
 class TestFaultMatrix : public QObject
@@ -100,33 +132,7 @@ private Q_SLOTS:
                               .takeValue();
         const ToolTable before = table;
 
-        const QByteArray target = kFirstCommand[size_t(operation)];
-        switch (fault) {
-        case DropOk:
-            h.emulator.injectFault(Fault::DropOk, target);
-            break;
-        case NoAnswer:
-            h.emulator.injectFault(Fault::NoAnswer, target);
-            break;
-        case Garble:
-            h.emulator.injectFault(Fault::Garble, target);
-            break;
-        case CloseLink:
-            h.emulator.injectFault(Fault::CloseLink, target);
-            break;
-        case Alarm:
-            if (probes(operation))
-                h.emulator.injectFault(Fault::FailProbe); // the alarm comes in the middle of the cycle
-            else
-                h.emulator.halt(3); // already halted: every command gets "Alarm lock"
-            break;
-        case LateAnswer:
-            h.emulator.injectFault(Fault::Delay, target, 800); // beyond any limit the test set
-            break;
-        case ToolBroken:
-            h.emulator.injectFault(Fault::BreakTool, target, 0.5); // the tool in the spindle loses 0.5 mm
-            break;
-        }
+        injectFault(h.emulator, operation, fault);
 
         const SessionResult r = h.run([&](auto done) { start(h.session, operation, done); });
         // What the window and the CLI do: record only a whole success.

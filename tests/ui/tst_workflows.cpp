@@ -46,6 +46,177 @@ namespace {
 const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
 
 // The window as an operator has it, with every line it sent to the machine.
+// The chapters of the first story, in order; each leaves the station where the next begins.
+
+// First start, connect, and the reference tool probed.
+void firstStartAndTheReference(Station &s)
+{
+    // First start: an empty table, no machine; nothing claims to be measured.
+    QCOMPARE(s.table().size(), 0);
+    QCOMPARE(s.text(u"machineStateLabel"_s), u"Not connected"_s);
+    QVERIFY(!s.find<QAction>(u"actionProbe"_s)->isEnabled());
+
+    // Connect: a fresh machine has measured nothing, and the strip says so rather than "0.000 mm".
+    s.connect();
+    QCOMPARE(s.text(u"activeToolLabel"_s), u"T1"_s);
+    QCOMPARE(s.text(u"tloLabel"_s), u"not measured"_s);
+    QVERIFY(s.text(u"tloNoteLabel"_s).contains(u"probe the reference tool first"_s));
+    QCOMPARE(s.text(u"referenceMzLabel"_s), u"not measured"_s);
+
+    // Probe the reference tool: T1 enters the table, measured.
+    const QString first = s.probe();
+    QVERIFY(first.contains(u"recorded as T1's TLO"_s));
+    QVERIFY(first.contains(u"T1 becomes the reference tool"_s));
+    QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
+    QCOMPARE(s.table().find(1)->tloSource, TloSource::Probe);
+    QCOMPARE(s.text(u"tloLabel"_s), u"0.000 mm"_s);
+    QVERIFY(s.text(u"tloNoteLabel"_s).startsWith(u"measured "_s));
+    QCOMPARE(s.text(u"referenceMzLabel"_s), u"-72.300 mm"_s);
+}
+
+// T2 loaded from the console, then probed.
+void changeToT2FromTheConsole(Station &s)
+{
+    // Change to T2 from the console: it moves the machine, so it asks first; No sends nothing.
+    auto *console = s.find<QLineEdit>(u"consoleCommand"_s);
+    QString question;
+    answerNextBox(QMessageBox::Cancel, &question);
+    QTest::keyClicks(console, u"M6 T2"_s);
+    QTest::keyClick(console, Qt::Key_Return);
+    QVERIFY(question.contains(u"changes the tool"_s));
+    QVERIFY(!s.sent.contains("M6 T2"));
+    QCOMPARE(s.machine()->tool(), 1);
+    answerNextBox(QMessageBox::Yes);
+    QTest::keyClick(console, Qt::Key_Up);
+    QTest::keyClick(console, Qt::Key_Return);
+    QVERIFY(QTest::qWaitFor([&s] { return s.idle() && s.sent.contains("M6 T2"); }, 10000));
+    QCOMPARE(s.machine()->tool(), 2);
+    // The console's tool change measured T2 on the machine, but only a probe from Toffee records it; the
+    // strip shows the machine as it is after the command, not as it was before.
+    QTRY_VERIFY(s.text(u"tloNoteLabel"_s).contains(u"T2 has no TLO in the table"_s));
+    QCOMPARE(s.text(u"currentMzLabel"_s), u"-105.688 mm"_s);
+    QCOMPARE(s.text(u"tloLabel"_s), u"-33.388 mm"_s);
+
+    // Probe T2: -33.388 mm, at the machine's resolution.
+    s.probe();
+    QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
+    QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+}
+
+// T2's offset adjusted by hand: the machine and the table agree, marked so.
+void adjustT2ByHand(Station &s)
+{
+    QString question;
+    // Adjust by hand (+2.9, the seed's example): the machine and the table agree, marked set by hand.
+    auto *mode = s.find<QComboBox>(u"offsetModeCombo"_s);
+    mode->setCurrentIndex(mode->findText(u"Change TLO by"_s));
+    auto *value = s.find<QDoubleSpinBox>(u"offsetValueSpin"_s);
+    value->setValue(2.9);
+    answerNextBox(QMessageBox::Yes, &question);
+    QTest::mouseClick(s.find<QPushButton>(u"sendOffsetButton"_s), Qt::LeftButton);
+    QVERIFY(question.contains(u"T2"_s));
+    QVERIFY(question.contains(u"M493.3 Z-30.488"_s));
+    QVERIFY(QTest::qWaitFor([&s] { return s.idle(); }, 5000));
+    QVERIFY(std::fabs(s.machine()->tlo() + 30.488) < 1e-9);
+    QCOMPARE(*s.table().find(2)->measuredTlo, -30.488);
+    QCOMPARE(s.table().find(2)->tloSource, TloSource::Manual);
+    QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-30.488 (by hand)"_s);
+    QVERIFY(s.text(u"tloNoteLabel"_s).startsWith(u"set by hand"_s));
+    QCOMPARE(value->value(), 0.0); // a second Send would not add 2.9 again
+    QVERIFY(!s.find<QPushButton>(u"sendOffsetButton"_s)->isEnabled()); // and adding 0 is no change
+    // The probe panel no longer claims the probe's TLO is the one in use.
+    QVERIFY(!s.text(u"probeResultLabel"_s).contains(u"-33.388"_s));
+    QCOMPARE(s.window.document()->undoStack()->undoText(), u"Set T2 TLO by hand"_s);
+}
+
+// A break test against the hand-set TLO finds T2 "broken"; the machine halts.
+void breakTestFindsT2Broken(Station &s)
+{
+    QString question;
+    // Break test: told first that the TLO it compares against was set by hand.
+    answerNextBox(QMessageBox::Yes, &question);
+    s.trigger(u"actionBreakTest"_s);
+    QVERIFY(question.contains(u"Break-test T2?"_s) || question.contains(u"measure T2 again"_s));
+    QVERIFY(question.contains(u"was set by hand"_s));
+    // The real T2 is 2.9 mm from the hand-set TLO: broken. A reflex Enter leaves the machine halted.
+    QString alarm;
+    QTimer::singleShot(100, [&] {
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        if (!box)
+            return;
+        alarm = box->text() + u'\n' + box->informativeText();
+        QTest::keyClick(box, Qt::Key_Return);
+    });
+    QVERIFY(QTest::qWaitFor([&alarm] { return !alarm.isEmpty(); }, 10000));
+    QVERIFY(alarm.contains(u"T2 may be broken"_s));
+    // It says that the value it compared with was set by hand: the tool may be whole.
+    QVERIFY(alarm.contains(u"the tool may be whole"_s));
+    QVERIFY(QTest::qWaitFor([&s] { return s.idle() && !QApplication::activeModalWidget(); }, 5000));
+    QVERIFY(s.machine()->isHalted());
+    QVERIFY(!s.sent.contains("$X"));
+}
+
+// Halted: the window says so and offers nothing that moves; the console is no back door.
+void haltedOffersNothingThatMoves(Station &s)
+{
+    auto *console = s.find<QLineEdit>(u"consoleCommand"_s);
+    // Halted: the strip says so in words, nothing that moves is offered, and the tool is marked.
+    QCOMPARE(s.text(u"machineStateLabel"_s), u"HALTED"_s);
+    QVERIFY(s.find<QLabel>(u"haltLabel"_s)->isVisible());
+    QVERIFY(s.text(u"haltLabel"_s).contains(u"Unlock"_s));
+    QVERIFY(s.find<QPushButton>(u"unlockButton"_s)->isVisible());
+    QVERIFY(!s.find<QAction>(u"actionProbe"_s)->isEnabled());
+    QVERIFY(!s.find<QAction>(u"actionBreakTest"_s)->isEnabled());
+    QVERIFY(!s.find<QPushButton>(u"probeButton"_s)->isEnabled());
+    QVERIFY(!s.find<QPushButton>(u"sendOffsetButton"_s)->isEnabled());
+    QVERIFY(s.find<QAction>(u"actionUnlock"_s)->isEnabled());
+    QVERIFY(s.table().find(2)->breakTestFailed);
+    QVERIFY(s.cell(2, ToolTableModel::MeasuredTloColumn).contains(u"BROKEN?"_s));
+    QVERIFY(s.text(u"tloNoteLabel"_s).contains(u"T2 FAILED ITS BREAK TEST"_s));
+    // The console is no back door.
+    const int before = int(s.sent.size());
+    QTest::keyClicks(console, u"M491"_s);
+    QTest::keyClick(console, Qt::Key_Return);
+    QCOMPARE(int(s.sent.size()), before);
+    QVERIFY(s.window.consoleDock()->lines().last().contains(u"  · not sent: The machine is halted"_s));
+}
+
+// Saved with the mark; unlocked and probed again, the mark is gone; reopened, the window shows the file.
+void unlockAndProbeAgain(Station &s, const QTemporaryDir &dir)
+{
+    // Saved now, the file keeps the mark.
+    const QString path = dir.filePath(u"shop.json"_s);
+    s.saveAs(path);
+    QVERIFY(!s.window.document()->isModified());
+    auto saved = loadTableFile(path);
+    QVERIFY(saved.ok());
+    QVERIFY(saved.value().find(2)->breakTestFailed);
+    QCOMPARE(saved.value().find(2)->tloSource, TloSource::Manual);
+
+    // Unlock (Ctrl+Shift+U), then probe T2 again: measured, and the mark is gone.
+    s.window.activateWindow();
+    s.trigger(u"actionUnlock"_s);
+    QVERIFY(QTest::qWaitFor([&s] { return s.idle() && !s.machine()->isHalted(); }, 5000));
+    QTRY_VERIFY(s.find<QAction>(u"actionProbe"_s)->isEnabled());
+    QTRY_VERIFY(!s.find<QLabel>(u"haltLabel"_s)->isVisible());
+    s.probe();
+    QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
+    QVERIFY(!s.table().find(2)->breakTestFailed);
+    QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
+    QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+    // The break test's "BROKEN TOOL" was about the tool before it was measured again.
+    QVERIFY(s.text(u"breakVerdictLabel"_s).isEmpty());
+
+    // Save (Ctrl+S) and reopen: the window shows what the file holds.
+    s.trigger(u"actionSave"_s);
+    QVERIFY(!s.window.document()->isModified());
+    Station reopened;
+    QVERIFY(reopened.window.openFile(path));
+    QCOMPARE(reopened.table(), s.table());
+    QCOMPARE(reopened.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+    QCOMPARE(reopened.cell(1, ToolTableModel::MeasuredTloColumn), u"0.000"_s);
+}
+
 } // namespace
 
 class TestWorkflows : public QObject
@@ -70,147 +241,13 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         Station s;
-        // First start: an empty table, no machine; nothing claims to be measured.
-        QCOMPARE(s.table().size(), 0);
-        QCOMPARE(s.text(u"machineStateLabel"_s), u"Not connected"_s);
-        QVERIFY(!s.find<QAction>(u"actionProbe"_s)->isEnabled());
-
-        // Connect: a fresh machine has measured nothing, and the strip says so rather than "0.000 mm".
-        s.connect();
-        QCOMPARE(s.text(u"activeToolLabel"_s), u"T1"_s);
-        QCOMPARE(s.text(u"tloLabel"_s), u"not measured"_s);
-        QVERIFY(s.text(u"tloNoteLabel"_s).contains(u"probe the reference tool first"_s));
-        QCOMPARE(s.text(u"referenceMzLabel"_s), u"not measured"_s);
-
-        // Probe the reference tool: T1 enters the table, measured.
-        const QString first = s.probe();
-        QVERIFY(first.contains(u"recorded as T1's TLO"_s));
-        QVERIFY(first.contains(u"T1 becomes the reference tool"_s));
-        QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
-        QCOMPARE(s.table().find(1)->tloSource, TloSource::Probe);
-        QCOMPARE(s.text(u"tloLabel"_s), u"0.000 mm"_s);
-        QVERIFY(s.text(u"tloNoteLabel"_s).startsWith(u"measured "_s));
-        QCOMPARE(s.text(u"referenceMzLabel"_s), u"-72.300 mm"_s);
-
-        // Change to T2 from the console: it moves the machine, so it asks first; No sends nothing.
-        auto *console = s.find<QLineEdit>(u"consoleCommand"_s);
-        QString question;
-        answerNextBox(QMessageBox::Cancel, &question);
-        QTest::keyClicks(console, u"M6 T2"_s);
-        QTest::keyClick(console, Qt::Key_Return);
-        QVERIFY(question.contains(u"changes the tool"_s));
-        QVERIFY(!s.sent.contains("M6 T2"));
-        QCOMPARE(s.machine()->tool(), 1);
-        answerNextBox(QMessageBox::Yes);
-        QTest::keyClick(console, Qt::Key_Up);
-        QTest::keyClick(console, Qt::Key_Return);
-        QVERIFY(QTest::qWaitFor([&s] { return s.idle() && s.sent.contains("M6 T2"); }, 10000));
-        QCOMPARE(s.machine()->tool(), 2);
-        // The console's tool change measured T2 on the machine, but only a probe from Toffee records it; the
-        // strip shows the machine as it is after the command, not as it was before.
-        QTRY_VERIFY(s.text(u"tloNoteLabel"_s).contains(u"T2 has no TLO in the table"_s));
-        QCOMPARE(s.text(u"currentMzLabel"_s), u"-105.688 mm"_s);
-        QCOMPARE(s.text(u"tloLabel"_s), u"-33.388 mm"_s);
-
-        // Probe T2: -33.388 mm, at the machine's resolution.
-        s.probe();
-        QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
-        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
-
-        // Adjust by hand (+2.9, the seed's example): the machine and the table agree, marked set by hand.
-        auto *mode = s.find<QComboBox>(u"offsetModeCombo"_s);
-        mode->setCurrentIndex(mode->findText(u"Change TLO by"_s));
-        auto *value = s.find<QDoubleSpinBox>(u"offsetValueSpin"_s);
-        value->setValue(2.9);
-        answerNextBox(QMessageBox::Yes, &question);
-        QTest::mouseClick(s.find<QPushButton>(u"sendOffsetButton"_s), Qt::LeftButton);
-        QVERIFY(question.contains(u"T2"_s));
-        QVERIFY(question.contains(u"M493.3 Z-30.488"_s));
-        QVERIFY(QTest::qWaitFor([&s] { return s.idle(); }, 5000));
-        QVERIFY(std::fabs(s.machine()->tlo() + 30.488) < 1e-9);
-        QCOMPARE(*s.table().find(2)->measuredTlo, -30.488);
-        QCOMPARE(s.table().find(2)->tloSource, TloSource::Manual);
-        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-30.488 (by hand)"_s);
-        QVERIFY(s.text(u"tloNoteLabel"_s).startsWith(u"set by hand"_s));
-        QCOMPARE(value->value(), 0.0); // a second Send would not add 2.9 again
-        QVERIFY(!s.find<QPushButton>(u"sendOffsetButton"_s)->isEnabled()); // and adding 0 is no change
-        // The probe panel no longer claims the probe's TLO is the one in use.
-        QVERIFY(!s.text(u"probeResultLabel"_s).contains(u"-33.388"_s));
-        QCOMPARE(s.window.document()->undoStack()->undoText(), u"Set T2 TLO by hand"_s);
-
-        // Break test: told first that the TLO it compares against was set by hand.
-        answerNextBox(QMessageBox::Yes, &question);
-        s.trigger(u"actionBreakTest"_s);
-        QVERIFY(question.contains(u"Break-test T2?"_s) || question.contains(u"measure T2 again"_s));
-        QVERIFY(question.contains(u"was set by hand"_s));
-        // The real T2 is 2.9 mm from the hand-set TLO: broken. A reflex Enter leaves the machine halted.
-        QString alarm;
-        QTimer::singleShot(100, [&] {
-            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
-            if (!box)
+        for (auto chapter : { firstStartAndTheReference, changeToT2FromTheConsole, adjustT2ByHand,
+                 breakTestFindsT2Broken, haltedOffersNothingThatMoves }) {
+            chapter(s);
+            if (QTest::currentTestFailed())
                 return;
-            alarm = box->text() + u'\n' + box->informativeText();
-            QTest::keyClick(box, Qt::Key_Return);
-        });
-        QVERIFY(QTest::qWaitFor([&alarm] { return !alarm.isEmpty(); }, 10000));
-        QVERIFY(alarm.contains(u"T2 may be broken"_s));
-        // It says that the value it compared with was set by hand: the tool may be whole.
-        QVERIFY(alarm.contains(u"the tool may be whole"_s));
-        QVERIFY(QTest::qWaitFor([&s] { return s.idle() && !QApplication::activeModalWidget(); }, 5000));
-        QVERIFY(s.machine()->isHalted());
-        QVERIFY(!s.sent.contains("$X"));
-
-        // Halted: the strip says so in words, nothing that moves is offered, and the tool is marked.
-        QCOMPARE(s.text(u"machineStateLabel"_s), u"HALTED"_s);
-        QVERIFY(s.find<QLabel>(u"haltLabel"_s)->isVisible());
-        QVERIFY(s.text(u"haltLabel"_s).contains(u"Unlock"_s));
-        QVERIFY(s.find<QPushButton>(u"unlockButton"_s)->isVisible());
-        QVERIFY(!s.find<QAction>(u"actionProbe"_s)->isEnabled());
-        QVERIFY(!s.find<QAction>(u"actionBreakTest"_s)->isEnabled());
-        QVERIFY(!s.find<QPushButton>(u"probeButton"_s)->isEnabled());
-        QVERIFY(!s.find<QPushButton>(u"sendOffsetButton"_s)->isEnabled());
-        QVERIFY(s.find<QAction>(u"actionUnlock"_s)->isEnabled());
-        QVERIFY(s.table().find(2)->breakTestFailed);
-        QVERIFY(s.cell(2, ToolTableModel::MeasuredTloColumn).contains(u"BROKEN?"_s));
-        QVERIFY(s.text(u"tloNoteLabel"_s).contains(u"T2 FAILED ITS BREAK TEST"_s));
-        // The console is no back door.
-        const int before = int(s.sent.size());
-        QTest::keyClicks(console, u"M491"_s);
-        QTest::keyClick(console, Qt::Key_Return);
-        QCOMPARE(int(s.sent.size()), before);
-        QVERIFY(s.window.consoleDock()->lines().last().contains(u"  · not sent: The machine is halted"_s));
-
-        // Saved now, the file keeps the mark.
-        const QString path = dir.filePath(u"shop.json"_s);
-        s.saveAs(path);
-        QVERIFY(!s.window.document()->isModified());
-        auto saved = loadTableFile(path);
-        QVERIFY(saved.ok());
-        QVERIFY(saved.value().find(2)->breakTestFailed);
-        QCOMPARE(saved.value().find(2)->tloSource, TloSource::Manual);
-
-        // Unlock (Ctrl+Shift+U), then probe T2 again: measured, and the mark is gone.
-        s.window.activateWindow();
-        s.trigger(u"actionUnlock"_s);
-        QVERIFY(QTest::qWaitFor([&s] { return s.idle() && !s.machine()->isHalted(); }, 5000));
-        QTRY_VERIFY(s.find<QAction>(u"actionProbe"_s)->isEnabled());
-        QTRY_VERIFY(!s.find<QLabel>(u"haltLabel"_s)->isVisible());
-        s.probe();
-        QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
-        QVERIFY(!s.table().find(2)->breakTestFailed);
-        QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
-        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
-        // The break test's "BROKEN TOOL" was about the tool before it was measured again.
-        QVERIFY(s.text(u"breakVerdictLabel"_s).isEmpty());
-
-        // Save (Ctrl+S) and reopen: the window shows what the file holds.
-        s.trigger(u"actionSave"_s);
-        QVERIFY(!s.window.document()->isModified());
-        Station reopened;
-        QVERIFY(reopened.window.openFile(path));
-        QCOMPARE(reopened.table(), s.table());
-        QCOMPARE(reopened.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
-        QCOMPARE(reopened.cell(1, ToolTableModel::MeasuredTloColumn), u"0.000"_s);
+        }
+        unlockAndProbeAgain(s, dir);
     }
 
     void aBrokenToolStaysMarkedAcrossAReopenUntilItIsProbed()
