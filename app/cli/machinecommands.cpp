@@ -161,6 +161,7 @@ private:
 
     void operate();
     void linkTest();
+    void roundTrip();
     void finishWith(const SessionResult &r);
     [[nodiscard]] bool record(const SessionResult &r);
     // A result printed by `print` when the operation got that far (a broken tool's verdict included).
@@ -174,6 +175,8 @@ private:
     QEventLoop m_loop;
     int m_exitCode = Success;
     bool m_started = false;
+    QList<double> m_times; // link-test: each round trip's milliseconds
+    QElapsedTimer m_clock;
     bool m_recordFailed = false; // then the exit code says so (unless the tool is broken, which says more)
 };
 
@@ -279,34 +282,28 @@ void MachineRun::operate()
 // N round trips of "G90" on the link itself, polling off: the link's own latency, not an operation's.
 void MachineRun::linkTest()
 {
-    MachineLink *link = m_connection.link();
-    link->setPollInterval(0);
-    auto times = std::make_shared<QList<double>>();
-    auto clock = std::make_shared<QElapsedTimer>();
-    auto next = std::make_shared<std::function<void()>>();
-    *next = [this, link, times, clock, next] {
-        if (times->size() == m_options.count) {
-            printLinkTimes(m_call, *times, m_connection.description());
-            *next = nullptr; // break the cycle
-            return finishWith(SessionResult {});
+    m_connection.link()->setPollInterval(0);
+    roundTrip();
+}
+
+void MachineRun::roundTrip()
+{
+    if (m_times.size() == m_options.count) {
+        printLinkTimes(m_call, m_times, m_connection.description());
+        return finishWith(SessionResult {});
+    }
+    m_clock.start();
+    m_connection.link()->send("G90", MachineLink::kDefaultTimeoutMs, [this](const CommandReply &reply) {
+        if (!reply.ok()) {
+            SessionResult r;
+            r.outcome = reply.status == CommandReply::Status::Refused ? SessionResult::Outcome::MachineError
+                                                                      : SessionResult::Outcome::LinkFailure;
+            r.message = reply.message;
+            return finishWith(r);
         }
-        clock->start();
-        link->send(
-            "G90", MachineLink::kDefaultTimeoutMs, [this, times, clock, next](const CommandReply &reply) {
-                if (!reply.ok()) {
-                    SessionResult r;
-                    r.outcome = reply.status == CommandReply::Status::Refused
-                        ? SessionResult::Outcome::MachineError
-                        : SessionResult::Outcome::LinkFailure;
-                    r.message = reply.message;
-                    *next = nullptr;
-                    return finishWith(r);
-                }
-                times->append(double(clock->nsecsElapsed()) / 1e6);
-                (*next)();
-            });
-    };
-    (*next)();
+        m_times.append(double(m_clock.nsecsElapsed()) / 1e6);
+        roundTrip();
+    });
 }
 
 } // namespace

@@ -51,6 +51,19 @@ private Q_SLOTS:
         }
     }
 
+    // The link's own latency, on the built-in emulator: every round trip counted, and a clean exit (the loop
+    // that sent them once destroyed itself while it ran, and the CLI crashed after printing).
+    void measuresTheLinkAndExitsCleanly()
+    {
+        const Run run = cli({ u"--json"_s, u"--emulator"_s, u"link-test"_s, u"--count"_s, u"200"_s });
+        QCOMPARE(run.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(run.out).object();
+        QCOMPARE(o.value(u"count"_s).toInt(), 200);
+        QVERIFY(o.value(u"median_ms"_s).toDouble() > 0.0);
+        QVERIFY(o.value(u"max_ms"_s).toDouble() >= o.value(u"p99_ms"_s).toDouble());
+        QVERIFY(run.err.isEmpty());
+    }
+
     void showsATable()
     {
         const Run run = cli({ u"show"_s, kExample });
