@@ -89,7 +89,7 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
     for (;;) {
         switch (lexer.next()) {
         case GCodeLexer::Token::Word:
-            if (const QString problem = w.add(lexer.word()); !problem.isEmpty())
+            if (QString problem; !w.add(lexer.word(), problem))
                 return error(line, problem);
             continue;
         case GCodeLexer::Token::Call:

@@ -62,30 +62,39 @@ struct GCodeInterpreter::Words
     [[nodiscard]] bool isBare(char letter) const { return bare[size_t(letter - 'A')]; }
     [[nodiscard]] bool anyAxis() const { return word('X') || word('Y') || word('Z'); }
 
-    // Takes one word of the block; what is wrong with it, or nothing.
-    [[nodiscard]] QString add(const GCodeWord &word)
+    // Takes one word of the block; false, with what is wrong in `problem`, when it cannot.
+    [[nodiscard]] bool add(const GCodeWord &word, QString &problem)
     {
         const size_t slot = size_t(word.letter - 'A');
         if (word.bare) {
-            if (axisIndex(word.letter) < 0)
-                return GCodeInterpreter::tr("the word %1 needs a value.").arg(QChar::fromLatin1(word.letter));
+            if (axisIndex(word.letter) < 0) {
+                problem
+                    = GCodeInterpreter::tr("the word %1 needs a value.").arg(QChar::fromLatin1(word.letter));
+                return false;
+            }
             has[slot] = bare[slot] = true;
         } else if (word.letter == 'G') {
-            if (gCount == int(g.size()))
-                return GCodeInterpreter::tr("too many G codes in one block.");
+            if (gCount == int(g.size())) {
+                problem = GCodeInterpreter::tr("too many G codes in one block.");
+                return false;
+            }
             g[size_t(gCount++)] = word.value;
         } else if (word.letter == 'M') {
-            if (mCount == int(m.size()))
-                return GCodeInterpreter::tr("too many M codes in one block.");
+            if (mCount == int(m.size())) {
+                problem = GCodeInterpreter::tr("too many M codes in one block.");
+                return false;
+            }
             m[size_t(mCount++)] = word.value;
         } else {
-            if (has[slot])
-                return GCodeInterpreter::tr("the word %1 appears twice in one block.")
-                    .arg(QChar::fromLatin1(word.letter));
+            if (has[slot]) {
+                problem = GCodeInterpreter::tr("the word %1 appears twice in one block.")
+                              .arg(QChar::fromLatin1(word.letter));
+                return false;
+            }
             has[slot] = true;
             value[slot] = word.value;
         }
-        return {};
+        return true;
     }
 };
 
