@@ -9,9 +9,12 @@
 
 namespace Toffee {
 
-// What an operation on the machine means for the tool table, carried by its result so that the window and the
-// CLI record it with one call (ToolTable::record, ToolDocument::record): a tool's new TLO (probed or set by
-// hand) with the reference it is measured against, or a break test's verdict.
+// What kind of operation a recording comes from: the history library keeps them apart.
+enum class RecordingKind : quint8 { Probe, ManualSet, Restore, BreakTest };
+
+// What an operation on the machine means for the tool table and its history, carried by its result so that the
+// window and the CLI record it with one call (ToolTable::record, ToolDocument::record): a tool's new TLO (probed
+// or set by hand) with the reference it is measured against, a break test's verdict, or a stored TLO restored.
 struct Recording
 {
     int tool = -1;
@@ -20,6 +23,12 @@ struct Recording
     std::optional<double> referenceMz;
     std::optional<bool> breakTestFailed; // a break test's verdict (no TLO)
     QDateTime at; // UTC
+    RecordingKind kind = RecordingKind::Probe;
+    // What the machine reported, for the history: the tool's MCS Z, and a break test's numbers.
+    std::optional<double> currentMz = std::nullopt;
+    std::optional<double> tolerance = std::nullopt;
+    std::optional<double> oldTlo = std::nullopt;
+    std::optional<double> newTlo = std::nullopt;
 };
 
 } // namespace Toffee

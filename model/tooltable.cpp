@@ -167,6 +167,8 @@ Result<void> ToolTable::recordBreakTest(int number, bool failed)
 
 Result<void> ToolTable::record(const Recording &r)
 {
+    if (r.kind == RecordingKind::Restore)
+        return {}; // the table already holds the TLO that was set back: history only
     if (r.tlo)
         return recordMeasurement(r.tool, *r.tlo, r.at, r.source, r.referenceMz);
     if (r.breakTestFailed)

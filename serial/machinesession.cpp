@@ -189,14 +189,15 @@ void MachineSession::report(Done done)
     readOffsets(done, SessionResult {});
 }
 
-MachineSession::Done MachineSession::recording(Done done, TloSource source)
+MachineSession::Done MachineSession::recording(Done done, RecordingKind kind)
 {
-    return [done = std::move(done), source](const SessionResult &r) {
+    return [done = std::move(done), kind](const SessionResult &r) {
         if (!r.ok() || !r.tlo || !r.tool || *r.tool < 0)
             return done(r);
         SessionResult recorded = r;
+        const TloSource source = kind == RecordingKind::Probe ? TloSource::Probe : TloSource::Manual;
         recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, r.tlo->referenceMz, std::nullopt,
-            QDateTime::currentDateTimeUtc() };
+            QDateTime::currentDateTimeUtc(), kind, r.tlo->currentMz };
         done(recorded);
     };
 }
@@ -209,14 +210,15 @@ MachineSession::Done MachineSession::recordingVerdict(Done done)
             return done(r);
         SessionResult recorded = r;
         recorded.recording = Recording { *r.tool, std::nullopt, TloSource::Probe, std::nullopt, broken,
-            QDateTime::currentDateTimeUtc() };
+            QDateTime::currentDateTimeUtc(), RecordingKind::BreakTest, std::nullopt, r.tolerance,
+            r.breakTest->oldTlo, r.breakTest->newTlo };
         done(recorded);
     };
 }
 
 void MachineSession::probe(Done done)
 {
-    done = recording(std::move(done), TloSource::Probe);
+    done = recording(std::move(done), RecordingKind::Probe);
     run("M491", MachineLink::kMotionTimeoutMs, done, [this, done](const CommandReply &reply) {
         const auto probe = std::find_if(reply.lines.cbegin(), reply.lines.cend(),
             [](const QByteArray &l) { return parseProbeResult(l).has_value(); });
@@ -316,7 +318,7 @@ void MachineSession::finishWithReport(const QList<QByteArray> &lines, Done done,
 
 void MachineSession::setTlo(double tlo, Done done)
 {
-    done = recording(std::move(done), TloSource::Manual);
+    done = recording(std::move(done), RecordingKind::ManualSet);
     if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
         return refuse(done, r.error().message);
     run("M493.3 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done,
@@ -342,7 +344,7 @@ void MachineSession::setTlo(double tlo, Done done)
 
 void MachineSession::setTloAboveZ0(double height, Done done)
 {
-    done = recording(std::move(done), TloSource::Manual);
+    done = recording(std::move(done), RecordingKind::ManualSet);
     if (auto r = validateOffset(tr("The height above Z0"), height); !r)
         return refuse(done, r.error().message);
     run("M493.3 H" + number(height), MachineLink::kDefaultTimeoutMs, done,
@@ -364,7 +366,7 @@ void MachineSession::selectTool(int tool, Done done)
 
 void MachineSession::changeTool(int tool, Done done)
 {
-    done = recording(std::move(done), TloSource::Probe); // M6 probes the new tool
+    done = recording(std::move(done), RecordingKind::Probe); // M6 probes the new tool
     if (auto r = validateToolNumber(tool); !r)
         return refuse(done, r.error().message);
     run("M6 T" + QByteArray::number(tool), MachineLink::kMotionTimeoutMs, done,
@@ -417,10 +419,11 @@ void MachineSession::restoreTlo(int tool, double tlo, Done done)
             done(selected);
             return;
         }
-        // The table already holds this TLO: a restore is nothing new to record.
+        // The table already holds this TLO: a restore changes no tool, and goes into the history as a restore.
         setTlo(tlo, [done](const SessionResult &r) {
             SessionResult restored = r;
-            restored.recording.reset();
+            if (restored.recording)
+                restored.recording->kind = RecordingKind::Restore;
             done(restored);
         });
     });

@@ -95,7 +95,7 @@ private:
     static void refuse(Done done, const QString &message);
     static SessionResult failure(const CommandReply &reply);
     // `done`, with the recording a successful result carries: the TLO as `source`, or a break test's verdict.
-    [[nodiscard]] static Done recording(Done done, TloSource source);
+    [[nodiscard]] static Done recording(Done done, RecordingKind kind);
     [[nodiscard]] static Done recordingVerdict(Done done);
     static QByteArray number(double value);
 

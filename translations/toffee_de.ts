@@ -1156,6 +1156,112 @@
     </message>
 </context>
 <context>
+    <name>Toffee::Library</name>
+    <message>
+        <source>Adding the machine %1</source>
+        <translation>Das Hinzufügen der Maschine %1</translation>
+    </message>
+    <message>
+        <source>Reading the machines</source>
+        <translation>Das Lesen der Maschinen</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 lässt sich nicht schreiben: %2</translation>
+    </message>
+    <message>
+        <source>Recording T%1&apos;s %2</source>
+        <translation>Das Aufzeichnen von T%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Recording T%1&apos;s use</source>
+        <translation>Das Aufzeichnen der Nutzung von T%1</translation>
+    </message>
+    <message>
+        <source>Reading the history</source>
+        <translation>Das Lesen des Verlaufs</translation>
+    </message>
+    <message>
+        <source>Reading the tools&apos; use</source>
+        <translation>Das Lesen der Werkzeugnutzung</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a library file. Choose a file in it, such as %2.</source>
+        <translation>%1 ist ein Ordner, keine Bibliotheksdatei. Wählen Sie eine Datei darin, etwa %2.</translation>
+    </message>
+    <message>
+        <source>%1 is not a regular file: a library is an SQLite file.</source>
+        <translation>%1 ist keine gewöhnliche Datei: Eine Bibliothek ist eine SQLite-Datei.</translation>
+    </message>
+    <message>
+        <source>%1 is not a Toffee library: it is not an SQLite database. Choose another file, or move this one away.</source>
+        <translation>%1 ist keine Toffee-Bibliothek: Es ist keine SQLite-Datenbank. Wählen Sie eine andere Datei oder verschieben Sie diese.</translation>
+    </message>
+    <message>
+        <source>The folder of %1 cannot be created.</source>
+        <translation>Der Ordner von %1 lässt sich nicht anlegen.</translation>
+    </message>
+    <message>
+        <source>Qt&apos;s SQLite driver is missing: install libqt6sql6-sqlite.</source>
+        <translation>Qts SQLite-Treiber fehlt: Installieren Sie libqt6sql6-sqlite.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be opened: %2</source>
+        <translation>%1 lässt sich nicht öffnen: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 failed: %3</source>
+        <translation>%1: %2 ist fehlgeschlagen: %3</translation>
+    </message>
+    <message>
+        <source>%1 is damaged or is not a library: %2. Move it away (Toffee then starts a new one), or choose another file.</source>
+        <translation>%1 ist beschädigt oder keine Bibliothek: %2. Verschieben Sie die Datei (Toffee legt dann eine neue an) oder wählen Sie eine andere.</translation>
+    </message>
+    <message>
+        <source>%1 was written by a newer Toffee (library version %2; this Toffee knows up to %3). It was not changed: use a newer Toffee with it, or choose another library.</source>
+        <translation>%1 wurde von einem neueren Toffee geschrieben (Bibliotheksversion %2; dieses Toffee kennt bis %3). Sie wurde nicht verändert: Verwenden Sie ein neueres Toffee dafür oder wählen Sie eine andere Bibliothek.</translation>
+    </message>
+    <message>
+        <source>Reading the library</source>
+        <translation>Das Lesen der Bibliothek</translation>
+    </message>
+    <message>
+        <source>%1 is an SQLite database, but not a Toffee library (it has tables of its own). Choose another file.</source>
+        <translation>%1 ist eine SQLite-Datenbank, aber keine Toffee-Bibliothek (sie hat eigene Tabellen). Wählen Sie eine andere Datei.</translation>
+    </message>
+    <message>
+        <source>Reading the library&apos;s version</source>
+        <translation>Das Lesen der Bibliotheksversion</translation>
+    </message>
+    <message>
+        <source>Creating the library</source>
+        <translation>Das Anlegen der Bibliothek</translation>
+    </message>
+    <message>
+        <source>Bringing the library to version %1</source>
+        <translation>Das Aktualisieren der Bibliothek auf Version %1</translation>
+    </message>
+    <message>
+        <source>Bringing the library up to date</source>
+        <translation>Das Aktualisieren der Bibliothek</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::LibraryLocation</name>
+    <message>
+        <source>%1: a shared library on PostgreSQL is not supported by this version of Toffee; use an SQLite file (a path, or sqlite:PATH).</source>
+        <translation>%1: Eine gemeinsame Bibliothek auf PostgreSQL unterstützt diese Toffee-Version nicht; verwenden Sie eine SQLite-Datei (einen Pfad oder sqlite:PFAD).</translation>
+    </message>
+    <message>
+        <source>No library file was given: name an SQLite file, such as sqlite:library.sqlite.</source>
+        <translation>Es wurde keine Bibliotheksdatei angegeben: Nennen Sie eine SQLite-Datei, etwa sqlite:library.sqlite.</translation>
+    </message>
+    <message>
+        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH), not from "%2".</source>
+        <translation>%1: Toffee liest eine Bibliothek aus einer SQLite-Datei (einem Pfad oder sqlite:PFAD), nicht aus „%2“.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::MachineConnection</name>
     <message>
         <source>Disconnected.</source>
@@ -2376,6 +2482,17 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>Tool table</source>
         <translation>Werkzeugtabelle</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::WearTrend</name>
+    <message>
+        <source>T%1 measured %2 shorter than its trend predicts (±%3): check the tip.</source>
+        <translation>T%1 hat %2 kürzer gemessen, als sein Trend vorhersagt (±%3): Prüfen Sie die Spitze.</translation>
+    </message>
+    <message>
+        <source>T%1 measured %2 longer than its trend predicts (±%3): check that it sits right in its holder.</source>
+        <translation>T%1 hat %2 länger gemessen, als sein Trend vorhersagt (±%3): Prüfen Sie, ob es richtig im Halter sitzt.</translation>
     </message>
 </context>
 <context>

@@ -1156,6 +1156,112 @@
     </message>
 </context>
 <context>
+    <name>Toffee::Library</name>
+    <message>
+        <source>Adding the machine %1</source>
+        <translation>添加机器 %1</translation>
+    </message>
+    <message>
+        <source>Reading the machines</source>
+        <translation>读取机器</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Recording T%1&apos;s %2</source>
+        <translation>记录 T%1 的 %2</translation>
+    </message>
+    <message>
+        <source>Recording T%1&apos;s use</source>
+        <translation>记录 T%1 的使用</translation>
+    </message>
+    <message>
+        <source>Reading the history</source>
+        <translation>读取历史</translation>
+    </message>
+    <message>
+        <source>Reading the tools&apos; use</source>
+        <translation>读取刀具使用</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a library file. Choose a file in it, such as %2.</source>
+        <translation>%1 是文件夹，不是库文件。请选择其中的文件，例如 %2。</translation>
+    </message>
+    <message>
+        <source>%1 is not a regular file: a library is an SQLite file.</source>
+        <translation>%1 不是普通文件：库是一个 SQLite 文件。</translation>
+    </message>
+    <message>
+        <source>%1 is not a Toffee library: it is not an SQLite database. Choose another file, or move this one away.</source>
+        <translation>%1 不是 Toffee 库：它不是 SQLite 数据库。请选择另一个文件，或将此文件移走。</translation>
+    </message>
+    <message>
+        <source>The folder of %1 cannot be created.</source>
+        <translation>无法创建 %1 所在的文件夹。</translation>
+    </message>
+    <message>
+        <source>Qt&apos;s SQLite driver is missing: install libqt6sql6-sqlite.</source>
+        <translation>缺少 Qt 的 SQLite 驱动：请安装 libqt6sql6-sqlite。</translation>
+    </message>
+    <message>
+        <source>%1 cannot be opened: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: %2 failed: %3</source>
+        <translation>%1：%2 失败：%3</translation>
+    </message>
+    <message>
+        <source>%1 is damaged or is not a library: %2. Move it away (Toffee then starts a new one), or choose another file.</source>
+        <translation>%1 已损坏或不是库：%2。请将其移走（Toffee 会新建一个），或选择另一个文件。</translation>
+    </message>
+    <message>
+        <source>%1 was written by a newer Toffee (library version %2; this Toffee knows up to %3). It was not changed: use a newer Toffee with it, or choose another library.</source>
+        <translation>%1 由较新的 Toffee 写入（库版本 %2；此 Toffee 最高支持 %3）。该库未被更改：请使用较新的 Toffee，或选择另一个库。</translation>
+    </message>
+    <message>
+        <source>Reading the library</source>
+        <translation>读取库</translation>
+    </message>
+    <message>
+        <source>%1 is an SQLite database, but not a Toffee library (it has tables of its own). Choose another file.</source>
+        <translation>%1 是 SQLite 数据库，但不是 Toffee 库（它有自己的表）。请选择另一个文件。</translation>
+    </message>
+    <message>
+        <source>Reading the library&apos;s version</source>
+        <translation>读取库的版本</translation>
+    </message>
+    <message>
+        <source>Creating the library</source>
+        <translation>创建库</translation>
+    </message>
+    <message>
+        <source>Bringing the library to version %1</source>
+        <translation>将库升级到版本 %1</translation>
+    </message>
+    <message>
+        <source>Bringing the library up to date</source>
+        <translation>更新库</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::LibraryLocation</name>
+    <message>
+        <source>%1: a shared library on PostgreSQL is not supported by this version of Toffee; use an SQLite file (a path, or sqlite:PATH).</source>
+        <translation>%1：此版本的 Toffee 不支持 PostgreSQL 上的共享库；请使用 SQLite 文件（路径或 sqlite:路径）。</translation>
+    </message>
+    <message>
+        <source>No library file was given: name an SQLite file, such as sqlite:library.sqlite.</source>
+        <translation>未给出库文件：请指定一个 SQLite 文件，例如 sqlite:library.sqlite。</translation>
+    </message>
+    <message>
+        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH), not from "%2".</source>
+        <translation>%1：Toffee 从 SQLite 文件（路径或 sqlite:路径）读取库，而不是从“%2”。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::MachineConnection</name>
     <message>
         <source>Disconnected.</source>
@@ -2376,6 +2482,17 @@ Probe T%1 instead.</source>
     <message>
         <source>Tool table</source>
         <translation>刀具表</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::WearTrend</name>
+    <message>
+        <source>T%1 measured %2 shorter than its trend predicts (±%3): check the tip.</source>
+        <translation>T%1 测得比趋势预测短 %2（±%3）：请检查刀尖。</translation>
+    </message>
+    <message>
+        <source>T%1 measured %2 longer than its trend predicts (±%3): check that it sits right in its holder.</source>
+        <translation>T%1 测得比趋势预测长 %2（±%3）：请检查其在刀柄中是否安装正确。</translation>
     </message>
 </context>
 <context>

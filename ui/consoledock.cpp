@@ -153,7 +153,8 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
             const auto &tlo = result.tlo; // read from the reply once, by the connection
             if (setsTlo && tlo && tool && *tool >= 0) {
                 auto recorded = m_document->record(Recording { *tool, tlo->tlo(), TloSource::Manual,
-                    tlo->referenceMz, std::nullopt, QDateTime::currentDateTimeUtc() });
+                    tlo->referenceMz, std::nullopt, QDateTime::currentDateTimeUtc(), RecordingKind::ManualSet,
+                    tlo->currentMz });
                 note(recorded ? tr("recorded in the table: T%1 TLO %2, set by hand")
                                     .arg(*tool)
                                     .arg(millimetres(tlo->tlo()))

@@ -204,6 +204,8 @@ void ProbePanel::restore(bool confirm)
             return;
     }
     m_connection->restoreTlo(number, tlo, [this, number](const SessionResult &r) {
+        if (r.recording)
+            (void)m_document->record(*r.recording); // the history's restore; the table already holds the TLO
         if (r.ok())
             m_result->setText(tr("T%1 is active with TLO %2.").arg(number).arg(millimetres(r.tlo->tlo())));
         report(r, tr("Restoring failed"));

@@ -178,6 +178,10 @@ Result<void> ToolDocument::recordBreakTest(int number, bool failed)
 
 Result<void> ToolDocument::record(const Recording &r)
 {
+    // The history keeps what the machine did whether or not the table could take it.
+    Q_EMIT recorded(r);
+    if (r.kind == RecordingKind::Restore)
+        return {}; // the table already holds the TLO that was set back
     if (r.tlo)
         return recordMeasurement(r.tool, *r.tlo, r.at, r.source, r.referenceMz);
     if (r.breakTestFailed)

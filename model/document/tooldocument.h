@@ -61,6 +61,8 @@ public:
 Q_SIGNALS:
     void modifiedChanged(bool modified);
     void filePathChanged(const QString &path);
+    // An operation on the machine was recorded (whether or not the table could take it): for the history.
+    void recorded(const Toffee::Recording &recording);
 
 private:
     // `changed` replaces the tool with its number, or is added, as one undoable step named `text`.

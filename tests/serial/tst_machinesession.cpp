@@ -185,7 +185,16 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), qPrintable(r.message));
         QCOMPARE(r.tool.value_or(-1), 5);
         QCOMPARE(r.tlo->tlo(), -12.25);
-        QVERIFY(!r.recording); // the table's own value, nothing new to record
+        // The table's own value: the history gets a restore, the table nothing new.
+        QVERIFY(r.recording);
+        QCOMPARE(r.recording->kind, RecordingKind::Restore);
+        QCOMPARE(r.recording->tlo, -12.25);
+        ToolTable table
+            = ToolTable::fromTools({ Tool { 5, 5, {}, 40, 0, 3, 0, -12.25, {}, {}, {} } }, Units::Millimetre)
+                  .takeValue();
+        const ToolTable before = table;
+        QVERIFY(table.record(*r.recording));
+        QCOMPARE(table, before);
         QVERIFY(!h.sent.contains("M491") || h.sent.count("M491") == 1);
         QCOMPARE(h.emulator.tool(), 5);
     }

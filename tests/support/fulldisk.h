@@ -71,6 +71,16 @@ public:
             filler.resize(std::max<qint64>(0, filler.size() - spare));
     }
 
+    // Makes room again: the filler goes, the file-size limit is lifted.
+    void free()
+    {
+        QFile::remove(path(QStringLiteral(".filler")));
+        if (m_limited) {
+            ::setrlimit(RLIMIT_FSIZE, &m_oldLimit);
+            m_limited = false;
+        }
+    }
+
 private:
     QTemporaryDir m_dir;
     bool m_mounted = false;

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <optional>
+
+#include <QDateTime>
+#include <QList>
+#include <QString>
+
+#include "model/recording.h"
+
+namespace Toffee {
+
+// What happened to a tool's length: measured on the tool setter, break-tested, set by hand, restored from the
+// table, or imported from elsewhere. Stored by these names (docs/LIBRARY.md).
+enum class EventKind { Probe, BreakTest, ManualSet, Restore, Import };
+
+[[nodiscard]] QString eventKindName(
+    EventKind kind); // "probe", "break_test", "manual_set", "restore", "import"
+[[nodiscard]] std::optional<EventKind> eventKindFromName(QStringView name);
+
+// One measurement event, as the history library keeps it. Lengths in millimetres; what the machine did not
+// report stays empty.
+struct HistoryEvent
+{
+    QString id; // a UUID made where the event happened: written twice, it is still one row
+    QString machine;
+    int tool = 0;
+    QDateTime at; // UTC, to the millisecond
+    EventKind kind = EventKind::Probe;
+    std::optional<double> tlo; // the TLO the tool has after the event
+    std::optional<double> referenceMz;
+    std::optional<double> currentMz;
+    std::optional<double> tolerance; // a break test's
+    std::optional<double> oldTlo; // a break test's: what it compared against ...
+    std::optional<double> newTlo; // ... and what it measured
+    std::optional<bool> failed; // a break test's verdict
+
+    [[nodiscard]] static QString newId();
+    friend bool operator==(const HistoryEvent &, const HistoryEvent &) = default;
+};
+
+// The history's view of an operation the window or toffee-cli recorded, on `machine`.
+[[nodiscard]] HistoryEvent historyEvent(const Recording &recording, const QString &machine);
+
+// A program that ran on a machine, and what each tool did in it.
+struct ToolUse
+{
+    QString id;
+    QString machine;
+    int tool = 0;
+    QDateTime at; // when the operator said it ran (UTC)
+    QString program; // the program's file name, for people
+    double cuttingSeconds = 0.0; // feed moves at their F
+    double feedPathMm = 0.0;
+    friend bool operator==(const ToolUse &, const ToolUse &) = default;
+};
+
+// A machine the library knows: its name (the key), its controller dialect, and how Toffee reaches it.
+struct MachineRecord
+{
+    QString name;
+    QString dialect; // as toffee-cli names it: carvera, fanuc, …
+    QString connection; // "emulator", "/dev/ttyUSB0 115200", …
+    friend bool operator==(const MachineRecord &, const MachineRecord &) = default;
+};
+
+// Which events to read: all of them, or one machine's, one tool's, since a time.
+struct HistoryQuery
+{
+    QString machine; // empty: every machine
+    std::optional<int> tool;
+    QDateTime since; // invalid: from the start
+    int limit = 0; // 0: no limit; else the newest `limit`, still returned oldest first
+};
+
+} // namespace Toffee

@@ -1,0 +1,236 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Reading and writing a library: machines, events, tool use.
+#include "model/library/library.h"
+
+#include <QAtomicInt>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QSqlDatabase>
+#include <QSqlDriver>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QVariant>
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+const QString kEventColumns
+    = u"id, machine, tool, measured_at, kind, tlo, reference_mz, current_mz, tolerance, old_tlo, new_tlo, failed"_s;
+
+QString timeText(const QDateTime &at)
+{
+    return at.toUTC().toString(Qt::ISODateWithMs);
+}
+
+QDateTime timeFrom(const QVariant &text)
+{
+    QDateTime at = QDateTime::fromString(text.toString(), Qt::ISODateWithMs);
+    return at.toUTC();
+}
+
+QVariant nullable(std::optional<double> value)
+{
+    return value ? QVariant(*value) : QVariant(QMetaType::fromType<double>());
+}
+
+std::optional<double> optionalDouble(const QVariant &value)
+{
+    return value.isNull() ? std::nullopt : std::optional(value.toDouble());
+}
+
+} // namespace
+
+Result<void> Library::addMachine(const MachineRecord &machine)
+{
+    QSqlQuery query(database());
+    query.prepare(u"INSERT INTO machines (name, dialect, connection) VALUES (?, ?, ?) ON CONFLICT (name) DO "
+                  "UPDATE SET dialect = excluded.dialect, connection = excluded.connection"_s);
+    query.addBindValue(machine.name);
+    query.addBindValue(machine.dialect);
+    query.addBindValue(machine.connection);
+    if (!query.exec())
+        return failure(tr("Adding the machine %1").arg(machine.name), query);
+    return {};
+}
+
+Result<QList<MachineRecord>> Library::machines() const
+{
+    QSqlQuery query(database());
+    if (!query.exec(u"SELECT name, dialect, connection FROM machines ORDER BY name"_s))
+        return failure(tr("Reading the machines"), query);
+    QList<MachineRecord> out;
+    while (query.next())
+        out.append({ query.value(0).toString(), query.value(1).toString(), query.value(2).toString() });
+    return out;
+}
+
+Result<void> Library::ensureMachines(const QStringList &names)
+{
+    QSqlQuery query(database());
+    query.prepare(u"INSERT INTO machines (name) VALUES (?) ON CONFLICT (name) DO NOTHING"_s);
+    for (const QString &name : names) {
+        query.addBindValue(name);
+        if (!query.exec())
+            return failure(tr("Adding the machine %1").arg(name), query);
+    }
+    return {};
+}
+
+// The rows of one batch, in one transaction with their machines: all of them or none.
+Result<int> Library::insertAll(const QString &sql, const QStringList &machines, qsizetype count,
+    const std::function<QString(QSqlQuery &, qsizetype)> &bind)
+{
+    QSqlDatabase db = database();
+    if (!db.transaction())
+        return Error { tr("%1 cannot be written: %2").arg(m_location.path, db.lastError().text()) };
+    if (auto added = ensureMachines(machines); !added) {
+        db.rollback();
+        return added.error();
+    }
+    QSqlQuery query(db);
+    query.prepare(sql);
+    int written = 0;
+    for (qsizetype i = 0; i < count; ++i) {
+        const QString what = bind(query, i);
+        if (!query.exec()) {
+            const Error error = failure(what, query);
+            db.rollback();
+            return error;
+        }
+        written += std::max(0, query.numRowsAffected());
+    }
+    if (!db.commit()) {
+        const QString why = db.lastError().text();
+        db.rollback();
+        return Error { tr("%1 cannot be written: %2").arg(m_location.path, why) };
+    }
+    return written;
+}
+
+Result<int> Library::append(const QList<HistoryEvent> &events)
+{
+    if (events.isEmpty())
+        return 0;
+    QStringList machines;
+    for (const HistoryEvent &e : events) {
+        if (!machines.contains(e.machine))
+            machines.append(e.machine);
+    }
+    const QString sql = u"INSERT INTO events ("_s + kEventColumns
+        + u") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (id) DO NOTHING"_s;
+    return insertAll(sql, machines, events.size(), [&events](QSqlQuery &query, qsizetype i) {
+        const HistoryEvent &e = events.at(i);
+        query.addBindValue(e.id);
+        query.addBindValue(e.machine);
+        query.addBindValue(e.tool);
+        query.addBindValue(timeText(e.at));
+        query.addBindValue(eventKindName(e.kind));
+        for (const auto &value : { e.tlo, e.referenceMz, e.currentMz, e.tolerance, e.oldTlo, e.newTlo })
+            query.addBindValue(nullable(value));
+        query.addBindValue(e.failed ? QVariant(int(*e.failed)) : QVariant(QMetaType::fromType<int>()));
+        return tr("Recording T%1's %2").arg(e.tool).arg(eventKindName(e.kind));
+    });
+}
+
+Result<int> Library::appendUse(const QList<ToolUse> &uses)
+{
+    if (uses.isEmpty())
+        return 0;
+    QStringList machines;
+    for (const ToolUse &u : uses) {
+        if (!machines.contains(u.machine))
+            machines.append(u.machine);
+    }
+    const QString sql = u"INSERT INTO tool_use (id, machine, tool, recorded_at, program, cutting_seconds, "
+                        "feed_path_mm) VALUES (?, ?, ?, ?, ?, ?, ?) ON CONFLICT (id) DO NOTHING"_s;
+    return insertAll(sql, machines, uses.size(), [&uses](QSqlQuery &query, qsizetype i) {
+        const ToolUse &u = uses.at(i);
+        for (const QVariant &v :
+            { QVariant(u.id), QVariant(u.machine), QVariant(u.tool), QVariant(timeText(u.at)),
+                QVariant(u.program), QVariant(u.cuttingSeconds), QVariant(u.feedPathMm) })
+            query.addBindValue(v);
+        return tr("Recording T%1's use").arg(u.tool);
+    });
+}
+
+Result<QList<HistoryEvent>> Library::history(const HistoryQuery &q) const
+{
+    QStringList where;
+    QVariantList values;
+    if (!q.machine.isEmpty()) {
+        where << u"machine = ?"_s;
+        values << q.machine;
+    }
+    if (q.tool) {
+        where << u"tool = ?"_s;
+        values << *q.tool;
+    }
+    if (q.since.isValid()) {
+        where << u"measured_at >= ?"_s;
+        values << timeText(q.since);
+    }
+    QString sql = u"SELECT "_s + kEventColumns + u" FROM events"_s;
+    if (!where.isEmpty())
+        sql += u" WHERE "_s + where.join(u" AND "_s);
+    // The newest `limit`, read newest first and turned round.
+    sql += q.limit > 0 ? u" ORDER BY measured_at DESC, id DESC LIMIT "_s + QString::number(q.limit)
+                       : u" ORDER BY measured_at, id"_s;
+    QSqlQuery query(database());
+    query.setForwardOnly(true);
+    query.prepare(sql);
+    for (const QVariant &v : values)
+        query.addBindValue(v);
+    if (!query.exec())
+        return failure(tr("Reading the history"), query);
+    QList<HistoryEvent> out;
+    while (query.next()) {
+        HistoryEvent e;
+        e.id = query.value(0).toString();
+        e.machine = query.value(1).toString();
+        e.tool = query.value(2).toInt();
+        e.at = timeFrom(query.value(3));
+        e.kind = eventKindFromName(query.value(4).toString()).value_or(EventKind::Import);
+        e.tlo = optionalDouble(query.value(5));
+        e.referenceMz = optionalDouble(query.value(6));
+        e.currentMz = optionalDouble(query.value(7));
+        e.tolerance = optionalDouble(query.value(8));
+        e.oldTlo = optionalDouble(query.value(9));
+        e.newTlo = optionalDouble(query.value(10));
+        if (!query.value(11).isNull())
+            e.failed = query.value(11).toInt() != 0;
+        out.append(std::move(e));
+    }
+    if (q.limit > 0)
+        std::reverse(out.begin(), out.end());
+    return out;
+}
+
+Result<QList<ToolUse>> Library::uses(const QString &machine, std::optional<int> tool) const
+{
+    QString sql
+        = u"SELECT id, machine, tool, recorded_at, program, cutting_seconds, feed_path_mm FROM tool_use "
+          "WHERE machine = ?"_s;
+    if (tool)
+        sql += u" AND tool = ?"_s;
+    sql += u" ORDER BY recorded_at, id"_s;
+    QSqlQuery query(database());
+    query.setForwardOnly(true);
+    query.prepare(sql);
+    query.addBindValue(machine);
+    if (tool)
+        query.addBindValue(*tool);
+    if (!query.exec())
+        return failure(tr("Reading the tools' use"), query);
+    QList<ToolUse> out;
+    while (query.next())
+        out.append({ query.value(0).toString(), query.value(1).toString(), query.value(2).toInt(),
+            timeFrom(query.value(3)), query.value(4).toString(), query.value(5).toDouble(),
+            query.value(6).toDouble() });
+    return out;
+}
+
+} // namespace Toffee

@@ -1,0 +1,343 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The history library on real SQLite files: what it keeps, what it refuses, and that nothing is lost to a
+// killed writer, a second writer, a lock or a full disk.
+#include <csignal>
+
+#include <QCryptographicHash>
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "model/library/historyrecorder.h"
+#include "model/library/library.h"
+#include "tests/support/fulldisk.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+QDateTime at(int minutes)
+{
+    return QDateTime(QDate(2026, 11, 23), QTime(8, 0), Qt::UTC).addSecs(minutes * 60).addMSecs(125);
+}
+
+HistoryEvent makeEvent(int tool, EventKind kind, int minutes, double tlo)
+{
+    HistoryEvent e;
+    e.id = HistoryEvent::newId();
+    e.machine = u"Carvera"_s;
+    e.tool = tool;
+    e.at = at(minutes);
+    e.kind = kind;
+    e.tlo = tlo;
+    return e;
+}
+
+QByteArray digest(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    return QCryptographicHash::hash(file.readAll(), QCryptographicHash::Sha256);
+}
+
+// A second connection of the test's own, straight through Qt SQL.
+struct RawConnection
+{
+    QString name;
+    explicit RawConnection(const QString &path, const QString &id)
+        : name(id)
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, name);
+        db.setDatabaseName(path);
+        db.open();
+    }
+    ~RawConnection()
+    {
+        QSqlDatabase::database(name, false).close();
+        QSqlDatabase::removeDatabase(name);
+    }
+    bool exec(const QString &sql) const
+    {
+        QSqlQuery query(QSqlDatabase::database(name));
+        return query.exec(sql);
+    }
+    QVariant value(const QString &sql) const
+    {
+        QSqlQuery query(QSqlDatabase::database(name));
+        return query.exec(sql) && query.next() ? query.value(0) : QVariant();
+    }
+};
+
+} // namespace
+
+class TestLibrary : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void recordsEveryKindWithEveryField()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"new/folder/library.sqlite"_s);
+        auto library = Library::open({ path });
+        QVERIFY2(library, qPrintable(library.error().message));
+        QList<HistoryEvent> events;
+        for (EventKind kind : { EventKind::Probe, EventKind::BreakTest, EventKind::ManualSet,
+                 EventKind::Restore, EventKind::Import }) {
+            HistoryEvent e = makeEvent(3, kind, int(events.size()), -33.388 + double(events.size()));
+            e.referenceMz = -72.3;
+            e.currentMz = -105.688;
+            e.tolerance = 0.05;
+            e.oldTlo = -33.388;
+            e.newTlo = -33.901;
+            e.failed = kind == EventKind::BreakTest;
+            events.append(e);
+        }
+        HistoryEvent bare = makeEvent(4, EventKind::ManualSet, 10, 1.5); // what the machine did not report
+        events.append(bare);
+        QCOMPARE(library.value()->append(events).value(), 6);
+        const auto read = library.value()->history({});
+        QVERIFY(read);
+        QCOMPARE(read.value(), events);
+        QCOMPARE(read.value().last().referenceMz, std::nullopt);
+        QCOMPARE(read.value().last().failed, std::nullopt);
+        // Another program reads the same rows by the documented names (docs/LIBRARY.md).
+        library.value().reset();
+        RawConnection raw(path, u"raw-read"_s);
+        QCOMPARE(raw.value(u"SELECT version FROM toffee_schema"_s).toInt(), Library::kSchemaVersion);
+        QCOMPARE(
+            raw.value(u"SELECT count(*) FROM events WHERE kind = 'break_test' AND failed = 1"_s).toInt(), 1);
+        QCOMPARE(raw.value(u"SELECT measured_at FROM events WHERE tool = 4"_s).toString(),
+            u"2026-11-23T08:10:00.125Z"_s);
+        QCOMPARE(raw.value(u"SELECT name FROM machines"_s).toString(), u"Carvera"_s);
+    }
+
+    void readsOneToolSinceATimeAndTheNewestFew()
+    {
+        QTemporaryDir dir;
+        auto library = Library::open({ dir.filePath(u"l.sqlite"_s) });
+        QVERIFY(library);
+        QList<HistoryEvent> events;
+        for (int i = 0; i < 20; ++i)
+            events.append(makeEvent(1 + i % 2, EventKind::Probe, i, -i * 0.01));
+        HistoryEvent other = makeEvent(1, EventKind::Probe, 5, 9.0);
+        other.machine = u"Mill"_s;
+        events.append(other);
+        QVERIFY(library.value()->append(events));
+        auto t1 = library.value()->history({ u"Carvera"_s, 1, {}, 0 });
+        QCOMPARE(t1.value().size(), 10);
+        QVERIFY(std::all_of(t1.value().cbegin(), t1.value().cend(),
+            [](const HistoryEvent &e) { return e.tool == 1 && e.machine == u"Carvera"; }));
+        auto since = library.value()->history({ u"Carvera"_s, 1, at(10), 0 });
+        QCOMPARE(since.value().size(), 5);
+        QCOMPARE(since.value().front().at, at(10));
+        auto newest = library.value()->history({ u"Carvera"_s, 2, {}, 3 });
+        QCOMPARE(newest.value().size(), 3);
+        QCOMPARE(newest.value().front().at, at(15)); // oldest first, the newest three
+        QCOMPARE(newest.value().back().at, at(19));
+        auto machines = library.value()->machines();
+        QCOMPARE(machines.value().size(), 2);
+    }
+
+    void anEventWrittenTwiceIsOneRow()
+    {
+        QTemporaryDir dir;
+        auto library = Library::open({ dir.filePath(u"l.sqlite"_s) });
+        const HistoryEvent e = makeEvent(2, EventKind::Probe, 0, -1.0);
+        QCOMPARE(library.value()->append({ e }).value(), 1);
+        QCOMPARE(library.value()->append({ e, makeEvent(2, EventKind::Probe, 1, -1.1) }).value(), 1);
+        QCOMPARE(library.value()->history({}).value().size(), 2);
+    }
+
+    void keepsMachinesAndToolUse()
+    {
+        QTemporaryDir dir;
+        auto library = Library::open({ dir.filePath(u"l.sqlite"_s) });
+        QVERIFY(library.value()->addMachine({ u"Carvera"_s, u"carvera"_s, u"/dev/ttyUSB0 115200"_s }));
+        QVERIFY(library.value()->addMachine({ u"Carvera"_s, u"carvera"_s, u"emulator"_s }));
+        QCOMPARE(library.value()->machines().value(),
+            (QList<MachineRecord> { { u"Carvera"_s, u"carvera"_s, u"emulator"_s } }));
+        const ToolUse use { HistoryEvent::newId(), u"Carvera"_s, 3, at(0), u"pocket.nc"_s, 754.5, 12034.25 };
+        QCOMPARE(library.value()->appendUse({ use, use }).value(), 1);
+        QCOMPARE(library.value()->uses(u"Carvera"_s, 3).value(), QList<ToolUse> { use });
+        QVERIFY(library.value()->uses(u"Carvera"_s, 4).value().isEmpty());
+    }
+
+    void refusesANewerLibraryAndLeavesItAsItIs()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        {
+            auto library = Library::open({ path });
+            QVERIFY(library.value()->append({ makeEvent(1, EventKind::Probe, 0, 0.0) }));
+        }
+        {
+            RawConnection raw(path, u"raw-newer"_s);
+            QVERIFY(raw.exec(u"UPDATE toffee_schema SET version = 7"_s));
+            QVERIFY(raw.exec(u"PRAGMA wal_checkpoint(TRUNCATE)"_s));
+        }
+        const QByteArray before = digest(path);
+        auto library = Library::open({ path });
+        QVERIFY(!library);
+        QVERIFY2(library.error().message.contains(u"newer Toffee"_s), qPrintable(library.error().message));
+        QVERIFY(library.error().message.contains(path));
+        QVERIFY(library.error().message.contains(u"version 7"_s));
+        QCOMPARE(digest(path), before);
+    }
+
+    void refusesWhatIsNotALibraryByName_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("a folder") << u"folder"_s << u"is a folder"_s;
+        QTest::newRow("a text file") << u"text"_s << u"not an SQLite database"_s;
+        QTest::newRow("a damaged SQLite file") << u"corrupt"_s << u"is damaged"_s;
+        QTest::newRow("another program's database") << u"foreign"_s << u"not a Toffee library"_s;
+        QTest::newRow("a PostgreSQL URL") << u"postgresql"_s << u"PostgreSQL"_s;
+    }
+    void refusesWhatIsNotALibraryByName()
+    {
+        QFETCH(QString, kind);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        QString path = dir.filePath(u"library.sqlite"_s);
+        if (kind == u"folder") {
+            QVERIFY(QDir().mkpath(path));
+        } else if (kind == u"text") {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("tool,pocket\n1,1\n");
+        } else if (kind == u"corrupt") {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray("SQLite format 3\0", 16) + QByteArray(8192, '\x5a'));
+        } else if (kind == u"foreign") {
+            RawConnection raw(path, u"raw-foreign"_s);
+            QVERIFY(raw.exec(u"CREATE TABLE recipes (name TEXT)"_s));
+        }
+        const QByteArray before = digest(path);
+        auto location = kind == u"postgresql" ? LibraryLocation::parse(u"postgresql://shop@server/tools"_s)
+                                              : Result<LibraryLocation>(LibraryLocation { path });
+        QString error = location ? QString() : location.error().message;
+        if (location) {
+            auto library = Library::open(location.value());
+            QVERIFY(!library);
+            error = library.error().message;
+            QVERIFY2(error.contains(path), qPrintable(error));
+            QCOMPARE(digest(path), before);
+        }
+        QVERIFY2(error.contains(message), qPrintable(error));
+    }
+
+    void readsALocationAsAPathOrAnSqliteUrl()
+    {
+        QCOMPARE(LibraryLocation::parse(u"sqlite:/tmp/a.sqlite"_s).value().path, u"/tmp/a.sqlite"_s);
+        QCOMPARE(LibraryLocation::parse(u"/tmp/b.sqlite"_s).value().path, u"/tmp/b.sqlite"_s);
+        QCOMPARE(LibraryLocation::parse(u"/tmp/b.sqlite"_s).value().text(), u"sqlite:/tmp/b.sqlite"_s);
+        QVERIFY(!LibraryLocation::parse(u"sqlite:"_s));
+        QVERIFY(!LibraryLocation::parse(u"mysql://server/db"_s));
+        QVERIFY(LibraryLocation::standard().path.endsWith(u"/library.sqlite"_s));
+    }
+
+    void aKilledWriterLeavesEveryCommittedEvent()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        QProcess worker;
+        worker.start(QStringLiteral(TOFFEE_WORKER), { path, u"Carvera"_s, u"5"_s, u"10000"_s });
+        QVERIFY(worker.waitForStarted());
+        QByteArray reported;
+        while (reported.count('\n') < 300 && worker.waitForReadyRead(20000))
+            reported += worker.readAllStandardOutput();
+        ::kill(pid_t(worker.processId()), SIGKILL);
+        QVERIFY(worker.waitForFinished());
+        QCOMPARE(worker.exitStatus(), QProcess::CrashExit); // killed before it wrote all 10,000
+        reported += worker.readAllStandardOutput();
+        QStringList ids = QString::fromLatin1(reported).split(u'\n', Qt::SkipEmptyParts);
+        if (!reported.endsWith('\n'))
+            ids.removeLast(); // a line cut by the kill
+        QVERIFY(ids.size() >= 300);
+        auto library = Library::open({ path });
+        QVERIFY2(library, qPrintable(library.error().message));
+        const auto events = library.value()->history({ u"Carvera"_s, 5, {}, 0 });
+        QVERIFY(events);
+        QSet<QString> present;
+        for (const HistoryEvent &e : events.value())
+            present.insert(e.id);
+        for (const QString &id : ids)
+            QVERIFY2(present.contains(id), qPrintable(id));
+        QVERIFY(events.value().size() < 10000);
+    }
+
+    void twoWritersAtOnceLoseNothing()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        QVERIFY(Library::open({ path })); // created before both start
+        QProcess a;
+        QProcess b;
+        a.start(QStringLiteral(TOFFEE_WORKER), { path, u"Carvera"_s, u"1"_s, u"1500"_s });
+        b.start(QStringLiteral(TOFFEE_WORKER), { path, u"Mill"_s, u"1"_s, u"1500"_s });
+        QVERIFY(a.waitForFinished(120000));
+        QVERIFY(b.waitForFinished(120000));
+        QCOMPARE(a.exitCode(), 0);
+        QCOMPARE(b.exitCode(), 0);
+        auto library = Library::open({ path });
+        QCOMPARE(library.value()->history({ u"Carvera"_s, 1, {}, 0 }).value().size(), 1500);
+        QCOMPARE(library.value()->history({ u"Mill"_s, 1, {}, 0 }).value().size(), 1500);
+    }
+
+    void aLockedLibraryKeepsTheEventsAndWritesThemLater()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        HistoryRecorder recorder;
+        QVERIFY(recorder.setLocation({ path }, Library::Options { 50 }));
+        QSignalSpy down(&recorder, &HistoryRecorder::unavailable);
+        QSignalSpy up(&recorder, &HistoryRecorder::available);
+        RawConnection other(path, u"raw-lock"_s);
+        QVERIFY(other.exec(u"BEGIN IMMEDIATE"_s)); // another program holds the write lock
+        recorder.record(makeEvent(7, EventKind::Probe, 0, -1.0));
+        recorder.record(makeEvent(7, EventKind::BreakTest, 1, -1.0));
+        QCOMPARE(recorder.pendingCount(), 2);
+        QCOMPARE(down.size(), 1); // told once, not per event
+        QVERIFY(down.front().front().toString().contains(path));
+        QVERIFY(!recorder.flush());
+        QCOMPARE(down.size(), 1);
+        QVERIFY(other.exec(u"ROLLBACK"_s));
+        QTRY_COMPARE_WITH_TIMEOUT(up.size(), 1, 3 * HistoryRecorder::kRetryMs); // the retry writes them
+        QCOMPARE(recorder.pendingCount(), 0);
+        QCOMPARE(recorder.library()->history({}).value().size(), 2);
+    }
+
+    void aFullDiskKeepsTheEventsAndWritesThemWhenThereIsRoom()
+    {
+        Test::FullDisk disk(1024 * 1024);
+        const QString path = disk.path(u"l.sqlite"_s);
+        HistoryRecorder recorder;
+        QVERIFY(recorder.setLocation({ path }));
+        recorder.record(makeEvent(1, EventKind::Probe, 0, 0.0)); // the library and its WAL exist
+        QCOMPARE(recorder.pendingCount(), 0);
+        QSignalSpy down(&recorder, &HistoryRecorder::unavailable);
+        disk.fill();
+        for (int i = 1; i <= 200; ++i)
+            recorder.record(makeEvent(1, EventKind::Probe, i, -i * 0.001));
+        QCOMPARE(down.size(), 1);
+        QCOMPARE(recorder.pendingCount(), 200); // a failed batch is not half-written: all of it waits
+        QVERIFY2(down.front().front().toString().contains(path), qPrintable(down.front().front().toString()));
+        disk.free();
+        QVERIFY(recorder.flush());
+        QCOMPARE(recorder.library()->history({}).value().size(), 201);
+        QCOMPARE(recorder.pendingCount(), 0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLibrary)
+#include "tst_library.moc"

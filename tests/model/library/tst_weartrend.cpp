@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A tool's wear trend, on rows computed by hand, and the warning a probe off the trend gets.
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "model/library/library.h"
+#include "model/library/weartrend.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+const QDateTime kStart(QDate(2026, 11, 2), QTime(7, 0), Qt::UTC);
+
+HistoryEvent probe(int hours, double tlo, EventKind kind = EventKind::Probe)
+{
+    HistoryEvent e;
+    e.id = HistoryEvent::newId();
+    e.machine = u"Carvera"_s;
+    e.tool = 3;
+    e.at = kStart.addSecs(hours * 3600);
+    e.kind = kind;
+    e.tlo = tlo;
+    return e;
+}
+
+ToolUse use(int hours, double cuttingSeconds)
+{
+    return { HistoryEvent::newId(), u"Carvera"_s, 3, kStart.addSecs(hours * 3600), u"job.nc"_s, cuttingSeconds,
+        1000.0 };
+}
+
+} // namespace
+
+class TestWearTrend : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void fitsAStraightLineExactly()
+    {
+        const auto t = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.01 }, { 7200, -10.02 }, { 10800, -10.03 } });
+        QVERIFY(t);
+        QCOMPARE(t->points, 4);
+        QVERIFY(std::fabs(t->slope * 3600 + 0.01) < 1e-12); // -0.01 mm an hour
+        QVERIFY(std::fabs(t->intercept + 10.0) < 1e-9);
+        QVERIFY(t->spread < 1e-9);
+    }
+
+    void fitsNoisyProbesAsComputedByHand()
+    {
+        // By hand: mean x 5400, mean TLO -10.015, Sxy -172.8, Sxx 64,800,000: slope -2.6667e-6 mm/s
+        // (-0.0096 mm an hour), intercept -10.0006; residuals 0.0006, -0.0018, 0.0018, -0.0006: SS 7.2e-6 over
+        // 2 degrees of freedom, spread sqrt(3.6e-6) = 0.0018974.
+        const auto t = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.012 }, { 7200, -10.018 }, { 10800, -10.03 } });
+        QVERIFY(t);
+        QVERIFY(std::fabs(t->slope * 3600 + 0.0096) < 1e-9);
+        QVERIFY(std::fabs(t->intercept + 10.0006) < 1e-9);
+        QVERIFY(std::fabs(t->spread - 0.0018974) < 1e-6);
+        QVERIFY(std::fabs(t->predict(14400) + 10.039) < 1e-9);
+    }
+
+    void fitsNothingToNoPointAndALevelLineToOne()
+    {
+        QVERIFY(!WearTrend::fit({}));
+        const auto one = WearTrend::fit({ { 500, -7.5 } });
+        QCOMPARE(one->slope, 0.0);
+        QCOMPARE(one->predict(99999), -7.5);
+        QCOMPARE(one->spread, 0.0);
+    }
+
+    void warnsWithNumbersWhenAProbeIsOffTheTrend()
+    {
+        const auto t = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.012 }, { 7200, -10.018 }, { 10800, -10.03 } });
+        const auto shorter = t->check(3, 14400, -10.22, 0.05);
+        QVERIFY(shorter);
+        QCOMPARE(*shorter, u"T3 measured 0.181 mm shorter than its trend predicts (±0.05): check the tip."_s);
+        QVERIFY(t->check(3, 14400, -10.5, 0.05)->contains(u"0.461 mm shorter"_s));
+        QVERIFY(t->check(3, 14400, -9.9, 0.05)->contains(u"longer than its trend"_s));
+        QVERIFY(!t->check(3, 14400, -10.05, 0.05)); // 0.011 off: within the tolerance
+    }
+
+    void takesCuttingTimeWhenItIsRecordedAndWallTimeWhenNot()
+    {
+        const QList<HistoryEvent> events { probe(0, -10.0), probe(24, -10.01, EventKind::BreakTest),
+            probe(48, -10.02) };
+        bool cutting = true;
+        QList<TrendPoint> wall = WearTrend::pointsOf(events, {}, &cutting);
+        QVERIFY(!cutting);
+        QCOMPARE(wall.size(), 2); // probes only: a break test is no measurement of the trend
+        QCOMPARE(wall.at(1).x, 48 * 3600.0);
+        const QList<ToolUse> uses { use(10, 1200), use(30, 600), use(60, 999) };
+        QList<TrendPoint> cut = WearTrend::pointsOf(events, uses, &cutting);
+        QVERIFY(cutting);
+        QCOMPARE(cut.at(0).x, 0.0);
+        QCOMPARE(cut.at(1).x, 1800.0); // what was cut before the probe at 48 h, not after
+    }
+
+    void checksANewProbeAgainstTheLibrarysHistory()
+    {
+        QTemporaryDir dir;
+        auto library = Library::open({ dir.filePath(u"l.sqlite"_s) });
+        QVERIFY(library);
+        QList<HistoryEvent> before;
+        const double tlos[] = { -10.0, -10.012, -10.018, -10.03 };
+        QList<ToolUse> uses;
+        for (int i = 0; i < 4; ++i) {
+            before.append(probe(i * 10, tlos[i]));
+            uses.append(use(i * 10 + 5, 3600)); // an hour of cutting between probes
+        }
+        QVERIFY(library.value()->append(before));
+        QVERIFY(library.value()->appendUse(uses));
+        HistoryEvent fine = probe(45, -10.04); // 0.001 off the trend's -10.039
+        QVERIFY(!checkProbeAgainstTrend(*library.value(), fine, 0.05));
+        HistoryEvent broken = probe(45, -10.22);
+        QVERIFY(library.value()->append({ broken })); // recorded first, as the window does: it is not its own trend
+        const auto warning = checkProbeAgainstTrend(*library.value(), broken, 0.05);
+        QVERIFY(warning);
+        QCOMPARE(*warning, u"T3 measured 0.181 mm shorter than its trend predicts (±0.05): check the tip."_s);
+        HistoryEvent other = broken;
+        other.tool = 4; // no history: nothing to compare with
+        QVERIFY(!checkProbeAgainstTrend(*library.value(), other, 0.05));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestWearTrend)
+#include "tst_weartrend.moc"
