@@ -35,6 +35,10 @@ The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMM
   change-tool N              change to tool N and measure it (M6 T); the machine moves
   unlock                     clear a halt ($X)
   link-test --count N        N round trips; median, p99 and max in milliseconds
+  probe, break-test, set-tlo and change-tool record every measurement in the history library
+  (--machine NAME, default Carvera), and warn when a probe is off its tool's wear trend
+
+The history: toffee-cli history [--machine NAME] [--tool N] [--since DATE] [--json | --csv]
 
 Options:
   --json                     print one JSON object on stdout (errors too: {"error": message})
@@ -43,6 +47,9 @@ Options:
   --table FILE               probe, change-tool, set-tlo, break-test: record in FILE the measured TLO,
                              the TLO set by hand (marked so), or a failed break test (the tool stays marked
                              until it is probed again); FILE must be writable before the machine moves
+  --library PATH             the history library (an SQLite file, or sqlite:PATH; default
+                             ~/.local/share/Toffee/Toffee/library.sqlite)
+  --no-history               record nothing in the history library
   --timeout S                give up on connecting, or on any command, after S seconds (default: 5, 120 for motion)
   --help                     this text
 
@@ -57,8 +64,9 @@ QString usage()
 }
 
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
-    u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s };
-const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s };
+    u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s, u"library"_s,
+    u"machine"_s, u"since"_s };
+const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s, u"no-history"_s, u"csv"_s };
 
 int usageError(Invocation &call, const QString &message)
 {
@@ -120,6 +128,7 @@ const std::pair<QStringView, Command> kTableCommands[] = {
     { u"convert", convertTable },
     { u"export", exportOffsets },
     { u"simulate", simulateProgram },
+    { u"history", showHistory },
 };
 
 } // namespace

@@ -34,6 +34,7 @@ int showTable(Invocation &call);
 int convertTable(Invocation &call);
 int exportOffsets(Invocation &call);
 int simulateProgram(Invocation &call);
+int showHistory(Invocation &call);
 [[nodiscard]] bool isMachineCommand(const QString &command);
 int runMachineCommand(Invocation &call);
 

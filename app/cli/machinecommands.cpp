@@ -13,6 +13,7 @@
 #include "app/cli/cli.h"
 #include "app/cli/machineoptions.h"
 #include "model/formats/tablefile.h"
+#include "model/library/weartrend.h"
 #include "model/numberformat.h"
 #include "serial/machineconnection.h"
 #include "serial/machinesession.h"
@@ -53,13 +54,15 @@ QJsonArray axes(const std::array<double, 3> &a)
     return { a[0], a[1], a[2] };
 }
 
-void printTlo(Invocation &call, const SessionResult &r)
+void printTlo(Invocation &call, const SessionResult &r, const QString &trendWarning = {})
 {
     const int tool = r.tool.value_or(-1);
     if (call.json) {
-        printJson(call,
-            QJsonObject { { u"tool"_s, tool }, { u"reference_mz"_s, r.tlo->referenceMz },
-                { u"current_mz"_s, r.tlo->currentMz }, { u"tlo"_s, r.tlo->tlo() } });
+        QJsonObject o { { u"tool"_s, tool }, { u"reference_mz"_s, r.tlo->referenceMz },
+            { u"current_mz"_s, r.tlo->currentMz }, { u"tlo"_s, r.tlo->tlo() } };
+        if (!trendWarning.isEmpty())
+            o.insert(u"trend_warning"_s, trendWarning);
+        printJson(call, o);
         return;
     }
     call.out << "T" << tool << ": TLO " << mm(r.tlo->tlo()) << " mm (current tool MCS Z "
@@ -164,6 +167,7 @@ private:
     void roundTrip();
     void finishWith(const SessionResult &r);
     [[nodiscard]] bool record(const SessionResult &r);
+    void recordHistory(const SessionResult &r);
     // A result printed by `print` when the operation got that far (a broken tool's verdict included).
     [[nodiscard]] Done printed(std::function<void(const SessionResult &)> print);
     // A probe or a manual offset: recorded, then printed.
@@ -175,6 +179,7 @@ private:
     QEventLoop m_loop;
     int m_exitCode = Success;
     bool m_started = false;
+    QString m_trendWarning; // a probe off its tool's wear trend
     QList<double> m_times; // link-test: each round trip's milliseconds
     QElapsedTimer m_clock;
     bool m_recordFailed = false; // then the exit code says so (unless the tool is broken, which says more)
@@ -189,9 +194,27 @@ void MachineRun::finishWith(const SessionResult &r)
     m_loop.quit();
 }
 
+// Every recording goes into the history library, table or not; a probe is checked against its tool's trend.
+void MachineRun::recordHistory(const SessionResult &r)
+{
+    if (!m_options.library || !r.recording)
+        return;
+    const HistoryEvent event = historyEvent(*r.recording, m_options.machine);
+    if (auto written = m_options.library->append({ event }); !written) {
+        m_call.err << "toffee-cli: T" << event.tool << "'s " << eventKindName(event.kind)
+                   << " is not in the history library: " << written.error().message << Qt::endl;
+        return;
+    }
+    if (auto warning = checkProbeAgainstTrend(*m_options.library, event, m_options.tolerance)) {
+        m_trendWarning = *warning;
+        m_call.err << "toffee-cli: warning: " << *warning << Qt::endl;
+    }
+}
+
 // What a successful probe, a manual offset or a break test means for the table, saved at once.
 bool MachineRun::record(const SessionResult &r)
 {
+    recordHistory(r);
     if (!m_options.table)
         return true;
     const int measured = r.tool.value_or(-1);
@@ -236,7 +259,7 @@ MachineRun::Done MachineRun::recorded()
         if (!r.ok())
             return finishWith(r);
         if (record(r))
-            printTlo(m_call, r);
+            printTlo(m_call, r, m_trendWarning);
         finishWith(r);
     };
 }

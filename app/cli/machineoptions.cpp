@@ -121,12 +121,38 @@ Result<void> openTable(const Invocation &call, MachineOptions &o)
     return {};
 }
 
+Result<void> openHistory(const Invocation &call, MachineOptions &o)
+{
+    o.machine = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
+    if (o.machine.isEmpty())
+        return Error { u"--machine needs a name."_s };
+    auto library = openLibraryOption(call);
+    if (!library)
+        return Error { library.error().message
+            + u" Nothing was sent to the machine; use --no-history to measure without "
+              "recording the history."_s };
+    o.library = library.takeValue();
+    return {};
+}
+
 } // namespace
+
+Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call)
+{
+    if (call.has(u"no-history"_s))
+        return std::unique_ptr<Library> {};
+    auto location = call.has(u"library"_s) ? LibraryLocation::parse(call.option(u"library"_s))
+                                           : Result<LibraryLocation>(LibraryLocation::standard());
+    if (!location)
+        return location.error();
+    return Library::open(location.value());
+}
 
 Result<MachineOptions> readMachineOptions(const Invocation &call)
 {
     MachineOptions o;
-    for (auto read : { countArguments, choosePort, readTool, readTarget, readCommandOptions, openTable }) {
+    for (auto read :
+        { countArguments, choosePort, readTool, readTarget, readCommandOptions, openTable, openHistory }) {
         if (auto r = read(call, o); !r)
             return r.error();
     }

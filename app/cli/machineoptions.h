@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "app/cli/cli.h"
+#include "model/library/library.h"
 #include "model/result.h"
 #include "model/tooltable.h"
 #include "serial/machineconnection.h"
@@ -22,7 +23,17 @@ struct MachineOptions
     int count = 1000; // link-test
     std::optional<ToolTable> table; // --table, loaded, and writable
     QString tablePath;
+    // The history library every measurement is recorded in (none with --no-history), opened before the
+    // machine moves; and the machine's name in it (--machine).
+    std::unique_ptr<Library> library;
+    QString machine;
 };
+
+// The machine a command's history belongs to, when --machine does not name one.
+inline const QString kDefaultMachineName = QStringLiteral("Carvera");
+
+// The library --library names (or the standard one), opened; nothing with --no-history.
+[[nodiscard]] Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call);
 
 [[nodiscard]] Result<MachineOptions> readMachineOptions(const Invocation &call);
 

@@ -28,10 +28,11 @@ Result<LibraryLocation> LibraryLocation::parse(const QString &text)
     return LibraryLocation { QFileInfo(path).absoluteFilePath() };
 }
 
+// The window's AppDataLocation, whichever program asks: toffee-cli must find the library the window writes.
 LibraryLocation LibraryLocation::standard()
 {
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-    return LibraryLocation { QDir(folder).absoluteFilePath(u"library.sqlite"_s) };
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation);
+    return LibraryLocation { QDir(folder).absoluteFilePath(u"Toffee/Toffee/library.sqlite"_s) };
 }
 
 QString LibraryLocation::text() const

@@ -40,9 +40,10 @@ class TestEndToEnd : public QObject
 private:
     QTemporaryDir m_dir;
     QString tty() const { return m_dir.filePath(u"ttyCARVERA"_s); }
+    QString library() const { return m_dir.filePath(u"library.sqlite"_s); }
     Run machine(const QStringList &arguments)
     {
-        return cli(QStringList { u"--json"_s, u"--port"_s, tty() } + arguments);
+        return cli(QStringList { u"--json"_s, u"--library"_s, library(), u"--port"_s, tty() } + arguments);
     }
 
 private Q_SLOTS:
@@ -121,6 +122,52 @@ private Q_SLOTS:
         QVERIFY(!shownTool(1).value(u"break_test_failed"_s).toBool());
         QCOMPARE(shownTool(1).value(u"tlo_source"_s).toString(), u"probe"_s);
         QCOMPARE(fixed3(shownTool(1).value(u"measured_tlo"_s)), u"-33.388"_s);
+
+        // Every measurement is in the history library, in order, with what the machine reported.
+        run = cli({ u"--json"_s, u"--library"_s, library(), u"history"_s, u"--tool"_s, u"2"_s });
+        QCOMPARE(run.exitCode, 0);
+        const QJsonArray events = json(run).value(u"events"_s).toArray();
+        QStringList kinds;
+        for (const QJsonValue &e : events)
+            kinds << e[u"kind"_s].toString();
+        QCOMPARE(kinds,
+            (QStringList { u"probe"_s, u"break_test"_s, u"manual_set"_s, u"break_test"_s, u"probe"_s }));
+        QCOMPARE(fixed3(events.at(0)[u"tlo"_s]), u"-33.388"_s);
+        QCOMPARE(fixed3(events.at(0)[u"current_mz"_s]), u"-105.688"_s);
+        QCOMPARE(fixed3(events.at(0)[u"reference_mz"_s]), u"-72.300"_s);
+        QCOMPARE(events.at(1)[u"failed"_s].toBool(), false);
+        QCOMPARE(events.at(1)[u"tolerance"_s].toDouble(), 0.05);
+        QCOMPARE(fixed3(events.at(2)[u"tlo"_s]), u"-30.488"_s);
+        QCOMPARE(events.at(3)[u"failed"_s].toBool(), true);
+        QCOMPARE(fixed3(events.at(3)[u"old_tlo"_s]), u"-30.488"_s);
+        QCOMPARE(fixed3(events.at(3)[u"new_tlo"_s]), u"-33.388"_s);
+        QCOMPARE(events.at(4)[u"machine"_s].toString(), u"Carvera"_s);
+        const Run csv = cli({ u"--library"_s, library(), u"history"_s, u"--csv"_s });
+        QCOMPARE(csv.exitCode, 0);
+        QVERIFY(csv.out.startsWith("id,machine,tool,measured_at,kind,tlo,"));
+        QCOMPARE(csv.out.count('\n'), 7); // the header, T1's probe and T2's five
+    }
+
+    void warnsWhenAProbeIsOffItsTrend()
+    {
+        {
+            Emulator emulator(tty(), {});
+            QVERIFY(emulator.started());
+            QCOMPARE(machine({ u"probe"_s }).exitCode, 0); // T1, the reference
+            QCOMPARE(machine({ u"--machine"_s, u"Mill 2"_s, u"change-tool"_s, u"2"_s }).exitCode, 0);
+            const Run again = machine({ u"--machine"_s, u"Mill 2"_s, u"probe"_s });
+            QCOMPARE(again.exitCode, 0);
+            QVERIFY(!json(again).contains(u"trend_warning"_s)); // the same length: on its trend
+        }
+        // The same machine later, with T2 0.2 mm shorter than it was.
+        Emulator emulator(tty(), { u"--break-tool"_s, u"2=0.2"_s });
+        QVERIFY(emulator.started());
+        QCOMPARE(machine({ u"--machine"_s, u"Mill 2"_s, u"probe"_s }).exitCode, 0);
+        const Run run = machine({ u"--machine"_s, u"Mill 2"_s, u"change-tool"_s, u"2"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(json(run).value(u"trend_warning"_s).toString(),
+            u"T2 measured 0.200 mm shorter than its trend predicts (±0.1): check the tip."_s);
+        QVERIFY(run.err.contains("warning: T2 measured 0.200 mm shorter"));
     }
 
     void aTableThatCannotBeWrittenIsRefusedBeforeTheMachineMoves()
@@ -185,6 +232,21 @@ private Q_SLOTS:
         QVERIFY(json(run).value(u"error"_s).toString().contains(u"Alarm lock"_s));
         QCOMPARE(machine({ u"unlock"_s }).exitCode, 0);
         QCOMPARE(machine({ u"report"_s }).exitCode, 0);
+    }
+
+    void aLibraryThatIsNotOneIsRefusedBeforeTheMachineMoves()
+    {
+        Emulator emulator(tty(), {});
+        QVERIFY(emulator.started());
+        const QString folder = m_dir.filePath(u"not-a-file"_s);
+        QVERIFY(QDir().mkpath(folder));
+        const Run run = cli({ u"--library"_s, folder, u"--port"_s, tty(), u"probe"_s });
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QByteArray(folder.toUtf8() + " is a folder")), run.err.constData());
+        QVERIFY(run.err.contains("--no-history"));
+        // Nothing moved: the machine still has nothing measured.
+        QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"reference_mz"_s)), u"0.000"_s);
+        QCOMPARE(cli({ u"--no-history"_s, u"--port"_s, tty(), u"probe"_s }).exitCode, 0);
     }
 
     void refusesATooSmallToleranceWithoutTouchingTheMachine()

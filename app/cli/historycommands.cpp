@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// toffee-cli history: the measurements the library keeps, for people, as JSON or as CSV.
+#include <climits>
+
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include "app/cli/cli.h"
+#include "app/cli/machineoptions.h"
+#include "model/library/library.h"
+#include "model/numberformat.h"
+#include "model/textparsing.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee::Cli {
+
+namespace {
+
+QJsonValue jsonNumber(std::optional<double> v)
+{
+    return v ? QJsonValue(*v) : QJsonValue();
+}
+
+QJsonObject eventJson(const HistoryEvent &e)
+{
+    QJsonObject o { { u"id"_s, e.id }, { u"machine"_s, e.machine }, { u"tool"_s, e.tool },
+        { u"at"_s, e.at.toString(Qt::ISODateWithMs) }, { u"kind"_s, eventKindName(e.kind) },
+        { u"tlo"_s, jsonNumber(e.tlo) }, { u"reference_mz"_s, jsonNumber(e.referenceMz) },
+        { u"current_mz"_s, jsonNumber(e.currentMz) } };
+    if (e.kind == EventKind::BreakTest) {
+        o.insert(u"tolerance"_s, jsonNumber(e.tolerance));
+        o.insert(u"old_tlo"_s, jsonNumber(e.oldTlo));
+        o.insert(u"new_tlo"_s, jsonNumber(e.newTlo));
+        o.insert(u"failed"_s, e.failed ? QJsonValue(*e.failed) : QJsonValue());
+    }
+    return o;
+}
+
+QString cell(std::optional<double> v)
+{
+    return v ? formatNumber(*v) : QString();
+}
+
+void printCsv(Invocation &call, const QList<HistoryEvent> &events)
+{
+    call.out
+        << "id,machine,tool,measured_at,kind,tlo,reference_mz,current_mz,tolerance,old_tlo,new_tlo,failed\n";
+    for (const HistoryEvent &e : events) {
+        QString machine = e.machine;
+        if (machine.contains(u',') || machine.contains(u'"') || machine.contains(u'\n'))
+            machine = u'"' + machine.replace(u'"', u"\"\""_s) + u'"';
+        call.out << e.id << ',' << machine << ',' << e.tool << ',' << e.at.toString(Qt::ISODateWithMs) << ','
+                 << eventKindName(e.kind) << ',' << cell(e.tlo) << ',' << cell(e.referenceMz) << ','
+                 << cell(e.currentMz) << ',' << cell(e.tolerance) << ',' << cell(e.oldTlo) << ','
+                 << cell(e.newTlo) << ',' << (e.failed ? (*e.failed ? "1" : "0") : "") << '\n';
+    }
+    call.out.flush();
+}
+
+void printText(Invocation &call, const QList<HistoryEvent> &events)
+{
+    for (const HistoryEvent &e : events) {
+        call.out << e.at.toString(Qt::ISODate) << "  " << e.machine << "  T" << e.tool << "  "
+                 << eventKindName(e.kind);
+        if (e.tlo)
+            call.out << "  TLO " << formatNumber(*e.tlo, NumberFormat::fixed(3));
+        if (e.kind == EventKind::BreakTest && e.failed)
+            call.out << (*e.failed ? "  FAILED" : "  passed");
+        call.out << '\n';
+    }
+    call.out << events.size() << (events.size() == 1 ? " event" : " events") << Qt::endl;
+}
+
+Result<HistoryQuery> readQuery(const Invocation &call)
+{
+    HistoryQuery q;
+    q.machine = call.option(u"machine"_s).trimmed();
+    if (call.has(u"tool"_s)) {
+        const auto n = parseInteger(call.option(u"tool"_s).toUtf8());
+        if (!n || *n < INT_MIN || *n > INT_MAX)
+            return Error { u"--tool must be a tool number."_s };
+        q.tool = int(*n);
+    }
+    if (call.has(u"since"_s)) {
+        const QString since = call.option(u"since"_s);
+        q.since = QDateTime::fromString(since, Qt::ISODateWithMs);
+        if (!q.since.isValid())
+            q.since = QDateTime(QDate::fromString(since, Qt::ISODate), QTime(0, 0));
+        if (!q.since.isValid())
+            return Error { u"--since must be a date (2026-11-23) or a time (2026-11-23T08:00:00Z)."_s };
+        q.since = q.since.toUTC();
+    }
+    return q;
+}
+
+} // namespace
+
+int showHistory(Invocation &call)
+{
+    if (!call.arguments.isEmpty())
+        return fail(call, u"history takes no arguments; say --machine, --tool or --since."_s, BadInput);
+    if (call.has(u"no-history"_s))
+        return fail(call, u"history reads the library: leave out --no-history."_s, BadInput);
+    const auto query = readQuery(call);
+    if (!query)
+        return fail(call, query.error().message, BadInput);
+    auto library = openLibraryOption(call);
+    if (!library)
+        return fail(call, library.error().message, BadInput);
+    const auto events = library.value()->history(query.value());
+    if (!events)
+        return fail(call, events.error().message, MachineError);
+    if (call.json) {
+        QJsonArray list;
+        for (const HistoryEvent &e : events.value())
+            list.append(eventJson(e));
+        printJson(
+            call, QJsonObject { { u"library"_s, library.value()->location().path }, { u"events"_s, list } });
+    } else if (call.has(u"csv"_s)) {
+        printCsv(call, events.value());
+    } else {
+        printText(call, events.value());
+    }
+    return Success;
+}
+
+} // namespace Toffee::Cli
