@@ -1805,6 +1805,14 @@ Save anyway?</source>
 
 Trotzdem speichern?</translation>
     </message>
+    <message>
+        <source>The history library cannot be written: %1 Measurements wait here and are written as soon as it can be.</source>
+        <translation>Die Verlaufsbibliothek lässt sich nicht schreiben: %1 Die Messungen warten hier und werden geschrieben, sobald es geht.</translation>
+    </message>
+    <message>
+        <source>The history library is written again: every waiting measurement is in it.</source>
+        <translation>Die Verlaufsbibliothek wird wieder geschrieben: Jede wartende Messung ist darin.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -2528,6 +2536,10 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>A tool table to open.</source>
         <translation>Eine Werkzeugtabelle zum Öffnen.</translation>
+    </message>
+    <message>
+        <source>The history library: an SQLite file (or sqlite:PATH).</source>
+        <translation>Die Verlaufsbibliothek: eine SQLite-Datei (oder sqlite:PFAD).</translation>
     </message>
 </context>
 </TS>

@@ -1805,6 +1805,14 @@ Save anyway?</source>
 
 仍然保存？</translation>
     </message>
+    <message>
+        <source>The history library cannot be written: %1 Measurements wait here and are written as soon as it can be.</source>
+        <translation>无法写入历史库：%1 测量结果在此等待，一旦可以写入就会写入。</translation>
+    </message>
+    <message>
+        <source>The history library is written again: every waiting measurement is in it.</source>
+        <translation>历史库已恢复写入：所有等待的测量结果都已写入。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -2528,6 +2536,10 @@ Probe T%1 instead.</source>
     <message>
         <source>A tool table to open.</source>
         <translation>要打开的刀具表。</translation>
+    </message>
+    <message>
+        <source>The history library: an SQLite file (or sqlite:PATH).</source>
+        <translation>历史库：一个 SQLite 文件（或 sqlite:路径）。</translation>
     </message>
 </context>
 </TS>

@@ -17,6 +17,8 @@ const auto ConnectionPort = u"machine/port"_s;
 const auto ConnectionBaud = u"machine/baud"_s;
 const auto Tolerance = u"machine/breakTestTolerance"_s;
 const auto DarkPalette = u"view/darkPalette"_s;
+const auto Library = u"history/library"_s;
+const auto MachineName = u"history/machine"_s;
 const auto ExportDialect = u"files/exportDialect"_s;
 } // namespace Key
 } // namespace
@@ -84,6 +86,27 @@ int AppSettings::connectionBaud() const
 void AppSettings::setConnectionBaud(int baud)
 {
     m_settings.setValue(Key::ConnectionBaud, baud);
+}
+
+QString AppSettings::libraryLocation() const
+{
+    return m_settings.value(Key::Library).toString();
+}
+
+void AppSettings::setLibraryLocation(const QString &location)
+{
+    m_settings.setValue(Key::Library, location);
+}
+
+QString AppSettings::machineName() const
+{
+    const QString name = m_settings.value(Key::MachineName).toString().trimmed();
+    return name.isEmpty() ? u"Carvera"_s : name;
+}
+
+void AppSettings::setMachineName(const QString &name)
+{
+    m_settings.setValue(Key::MachineName, name);
 }
 
 double AppSettings::breakTestTolerance() const

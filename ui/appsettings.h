@@ -32,6 +32,11 @@ public:
 
     [[nodiscard]] QString exportDialect() const;
     void setExportDialect(const QString &key);
+    // The history library ("sqlite:PATH"; empty: the standard one) and this machine's name in it.
+    [[nodiscard]] QString libraryLocation() const;
+    void setLibraryLocation(const QString &location);
+    [[nodiscard]] QString machineName() const;
+    void setMachineName(const QString &name);
     [[nodiscard]] bool darkPalette() const;
     void setDarkPalette(bool dark);
 

@@ -20,6 +20,7 @@
 #include "model/document/autosave.h"
 #include "model/document/filewatcher.h"
 #include "model/document/tooldocument.h"
+#include "model/library/historyrecorder.h"
 #include "serial/machineconnection.h"
 #include "ui/appearance.h"
 #include "ui/appsettings.h"
@@ -67,6 +68,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_consoleDock(new ConsoleDock(m_connection, m_document, this))
     , m_fileWatcher(new FileWatcher(this))
     , m_autoSave(new AutoSave(m_document, AutoSave::defaultDirectory(), this))
+    , m_history(new HistoryRecorder(this))
 {
     setObjectName(u"mainWindow"_s);
     setWindowIcon(themeIcon(u"toffee"_s));
@@ -81,6 +83,7 @@ MainWindow::MainWindow(QWidget *parent)
     createMachineStrip();
     connectMachine();
     connectDocument();
+    connectHistory();
     updateTitle();
     readSettings();
 }

@@ -3,6 +3,9 @@
 
 #include <QMainWindow>
 
+#include "model/library/historyevent.h"
+#include "model/library/librarylocation.h"
+
 class QAction;
 class QLabel;
 class QMenu;
@@ -12,6 +15,7 @@ namespace Toffee {
 class AutoSave;
 class ConsoleDock;
 class FileWatcher;
+class HistoryRecorder;
 class MachineConnection;
 class MachineDock;
 class ToolDocument;
@@ -33,6 +37,9 @@ public:
     [[nodiscard]] MachineDock *machineDock() const { return m_machineDock; }
     [[nodiscard]] ConsoleDock *consoleDock() const { return m_consoleDock; }
     [[nodiscard]] AutoSave *autoSave() const { return m_autoSave; }
+    [[nodiscard]] HistoryRecorder *history() const { return m_history; }
+    // The history library every measurement goes into (--library, or the setting, or the standard one).
+    void setLibrary(const LibraryLocation &location);
     // Opens a table, reporting a failure in a message box; the current table stays if it fails.
     bool openFile(const QString &path);
 
@@ -65,6 +72,9 @@ private:
     // The file now open or saved: watched for outside changes, first of the recent files.
     void rememberFile(const QString &path);
     void showError(const QString &title, const QString &message);
+    void connectHistory();
+    void recordHistory(const Recording &recording);
+    void checkTrends(const QList<HistoryEvent> &events);
     void readSettings();
     void writeSettings();
 
@@ -76,6 +86,7 @@ private:
     QLabel *m_machineLabel = nullptr;
     FileWatcher *m_fileWatcher;
     AutoSave *m_autoSave;
+    HistoryRecorder *m_history;
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;

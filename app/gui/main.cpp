@@ -40,12 +40,15 @@ struct Options
         QApplication::translate("main", "Language: de, zh_CN or en (default: the system's)."),
         u"LANGUAGE"_s };
 
+    const QCommandLineOption library { u"library"_s,
+        QApplication::translate("main", "The history library: an SQLite file (or sqlite:PATH)."), u"PATH"_s };
+
     void describe(QCommandLineParser &parser) const
     {
         parser.setApplicationDescription(QApplication::translate("main", "Toffee, the tool offset manager."));
         parser.addHelpOption();
         parser.addVersionOption();
-        parser.addOptions({ emulator, port, baud, selfTest, dark, lang });
+        parser.addOptions({ emulator, port, baud, selfTest, dark, lang, library });
         parser.addPositionalArgument(
             u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
     }
@@ -115,6 +118,14 @@ int main(int argc, char *argv[])
         // Started inside the event loop, so that exit() ends it even when a step fails before it would run.
         QTimer::singleShot(0, &window, [&test, &sinceLaunch] { test.start(sinceLaunch); });
         return QApplication::exec();
+    }
+    if (parser.isSet(options.library)) {
+        const auto location = Toffee::LibraryLocation::parse(parser.value(options.library));
+        if (!location) {
+            std::fprintf(stderr, "toffee: %s\n", qPrintable(location.error().message));
+            return 2;
+        }
+        window.setLibrary(location.value());
     }
     window.show();
     // Edits a crash would have lost come first; the table asked for opens when none are recovered.

@@ -8,6 +8,7 @@
 #include <QFileDialog>
 #include <QLabel>
 #include <QMessageBox>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
@@ -26,9 +27,15 @@ using namespace Qt::StringLiterals;
 struct Station
 {
     QList<QByteArray> sent;
+    QTemporaryDir libraryFolder; // each story its own history library
     MainWindow window;
 
-    Station() { window.show(); }
+    Station()
+    {
+        window.setLibrary({ libraryPath() });
+        window.show();
+    }
+    QString libraryPath() const { return libraryFolder.filePath(QStringLiteral("library.sqlite")); }
 
     template<typename T> T *find(const QString &name) const
     {

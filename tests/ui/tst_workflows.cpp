@@ -15,6 +15,8 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
+#include <QSqlDatabase>
+#include <QSqlQuery>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -25,6 +27,7 @@
 #include "model/document/tooldocument.h"
 #include "model/document/tooltablemodel.h"
 #include "model/gcode/dialect.h"
+#include "model/library/historyrecorder.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/machineconnection.h"
 #include "tests/support/messageboxes.h"
@@ -424,6 +427,56 @@ private Q_SLOTS:
         QCOMPARE(s.table().find(1)->tloSource, TloSource::Manual);
         QCOMPARE(*s.table().find(1)->referenceMz, -72.3);
         QVERIFY(s.window.consoleDock()->lines().last().contains(u"recorded in the table: T1"_s));
+    }
+
+    // The history library is locked by another program (toffee-cli writing a long batch): the probe is in the
+    // table at once, the status bar says once that the library waits, and the measurement is written after.
+    void aLockedHistoryLibraryKeepsTheMeasurementAndWritesItLater()
+    {
+        Station s;
+        s.connect();
+        s.probe();
+        QCOMPARE(s.window.history()->library()->history({}).value().size(), 1);
+        QSqlDatabase other = QSqlDatabase::addDatabase(u"QSQLITE"_s, u"other-program"_s);
+        other.setDatabaseName(s.libraryPath());
+        QVERIFY(other.open());
+        QSqlQuery lock(other);
+        QVERIFY(lock.exec(u"BEGIN IMMEDIATE"_s));
+
+        s.machine()->setToolLength(1, 77.69); // worn by 0.01: a new TLO the table must show now
+        s.probe();
+        QCOMPARE(*s.table().find(1)->measuredTlo, -0.01);
+        QCOMPARE(s.window.history()->pendingCount(), 1);
+        QVERIFY(s.window.statusBar()->currentMessage().contains(u"cannot be written"_s));
+        QVERIFY(s.window.statusBar()->currentMessage().contains(s.libraryPath()));
+
+        QVERIFY(lock.exec(u"ROLLBACK"_s));
+        QTRY_COMPARE_WITH_TIMEOUT(s.window.history()->pendingCount(), 0, 3 * HistoryRecorder::kRetryMs);
+        QVERIFY(s.window.statusBar()->currentMessage().contains(u"written again"_s));
+        const auto events = s.window.history()->library()->history({}).value();
+        QCOMPARE(events.size(), 2);
+        QCOMPARE(events.last().tlo, -0.01);
+        lock.finish();
+        other.close();
+        other = QSqlDatabase();
+        QSqlDatabase::removeDatabase(u"other-program"_s);
+    }
+
+    // A tool that measures far off its trend is pointed out with numbers as soon as it is probed.
+    void aProbeOffTheTrendIsPointedOut()
+    {
+        Station s;
+        s.connect();
+        s.probe(); // T1, the reference
+        s.machine()->setToolLength(1, 77.6); // 0.1 shorter: within the 0.1 tolerance of the trend
+        s.probe();
+        QVERIFY(!s.window.statusBar()->currentMessage().contains(u"trend"_s));
+        s.machine()->setToolLength(1, 77.3); // 0.4 short of where it started, well below its trend: the tip
+        s.probe();
+        QVERIFY2(s.window.statusBar()->currentMessage().startsWith(u"T1 measured "_s)
+                && s.window.statusBar()->currentMessage().contains(
+                    u"shorter than its trend predicts (±0.1): check the tip"_s),
+            qPrintable(s.window.statusBar()->currentMessage()));
     }
 
     void theStatusBarNeverSaysDisconnectedWhileConnected()
