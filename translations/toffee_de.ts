@@ -1088,6 +1088,18 @@
         <source>the word %1 appears twice in one block.</source>
         <translation>Das Wort %1 kommt in einem Satz zweimal vor.</translation>
     </message>
+    <message>
+        <source>F%1 is not a feed rate.</source>
+        <translation>F%1 ist kein Vorschub.</translation>
+    </message>
+    <message>
+        <source>the arc&apos;s R%1 cannot reach its end point.</source>
+        <translation>Der Bogen mit R%1 erreicht seinen Endpunkt nicht.</translation>
+    </message>
+    <message>
+        <source>G%1 needs the arc&apos;s centre (%2 %3) or its radius (R).</source>
+        <translation>G%1 braucht den Mittelpunkt des Bogens (%2 %3) oder seinen Radius (R).</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::GCodeLexer</name>

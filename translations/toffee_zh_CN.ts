@@ -1088,6 +1088,18 @@
         <source>the word %1 appears twice in one block.</source>
         <translation>字 %1 在一个程序段中出现了两次。</translation>
     </message>
+    <message>
+        <source>F%1 is not a feed rate.</source>
+        <translation>F%1 不是进给速度。</translation>
+    </message>
+    <message>
+        <source>the arc&apos;s R%1 cannot reach its end point.</source>
+        <translation>圆弧的 R%1 无法到达其终点。</translation>
+    </message>
+    <message>
+        <source>G%1 needs the arc&apos;s centre (%2 %3) or its radius (R).</source>
+        <translation>G%1 需要圆弧的圆心（%2 %3）或半径（R）。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::GCodeLexer</name>

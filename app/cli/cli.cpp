@@ -39,6 +39,8 @@ The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMM
   (--machine NAME, default Carvera), and warn when a probe is off its tool's wear trend
 
 The history: toffee-cli history [--machine NAME] [--tool N] [--since DATE] [--json | --csv]
+  history add-use --machine NAME --program FILE [--dialect D]
+                             the program ran: record each tool's cutting time and feed path
 
 Options:
   --json                     print one JSON object on stdout (errors too: {"error": message})
@@ -65,7 +67,7 @@ QString usage()
 
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
     u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s, u"library"_s,
-    u"machine"_s, u"since"_s };
+    u"machine"_s, u"since"_s, u"program"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s, u"no-history"_s, u"csv"_s };
 
 int usageError(Invocation &call, const QString &message)

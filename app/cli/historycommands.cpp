@@ -2,11 +2,15 @@
 // toffee-cli history: the measurements the library keeps, for people, as JSON or as CSV.
 #include <climits>
 
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonObject>
 
 #include "app/cli/cli.h"
 #include "app/cli/machineoptions.h"
+#include "model/formats/fileio.h"
+#include "model/gcode/dialect.h"
+#include "model/gcode/gcodeinterpreter.h"
 #include "model/library/library.h"
 #include "model/numberformat.h"
 #include "model/textparsing.h"
@@ -94,12 +98,83 @@ Result<HistoryQuery> readQuery(const Invocation &call)
     return q;
 }
 
+// The machine's dialect as the library knows it, unless --dialect says otherwise; the Carvera by default.
+std::optional<Dialect> programDialect(const Invocation &call, const Library &library, const QString &machine)
+{
+    if (call.has(u"dialect"_s))
+        return dialectFromKey(call.option(u"dialect"_s));
+    if (const auto machines = library.machines()) {
+        for (const MachineRecord &m : machines.value()) {
+            if (m.name == machine && !m.dialect.isEmpty())
+                return dialectFromKey(m.dialect);
+        }
+    }
+    return Dialect::Carvera;
+}
+
+// toffee-cli history add-use --machine M --program FILE: the program ran; each tool's cutting time and feed
+// path go into the library.
+int addUse(Invocation &call)
+{
+    if (!call.has(u"program"_s))
+        return fail(call, u"usage: toffee-cli history add-use --machine NAME --program FILE [--dialect D]"_s,
+            BadInput);
+    const QString machine
+        = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
+    auto library = openLibraryOption(call);
+    if (!library || !library.value())
+        return fail(call,
+            library ? u"history add-use records in the library: leave out --no-history."_s
+                    : library.error().message,
+            BadInput);
+    const auto dialect = programDialect(call, *library.value(), machine);
+    if (!dialect)
+        return fail(call, u"--dialect is not a dialect Toffee knows."_s, BadInput);
+    constexpr qint64 kMaxProgramBytes = 512LL * 1024 * 1024;
+    const QString path = call.option(u"program"_s);
+    const auto read = readRegularFile(path, kMaxProgramBytes);
+    if (!read)
+        return fail(call, read.error().text(), BadInput);
+    GCodeInterpreter interpreter(*dialect);
+    interpreter.setRecordMoves(false);
+    if (auto ran = interpreter.run(read.value()); !ran)
+        return fail(call, u"%1: %2 Nothing was recorded."_s.arg(path, ran.error().text()), MachineError);
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    QList<ToolUse> uses;
+    for (const auto &[tool, usage] : interpreter.toolUsage()) {
+        if (tool >= 0)
+            uses.append({ HistoryEvent::newId(), machine, tool, now, QFileInfo(path).fileName(),
+                usage.cuttingSeconds, usage.feedPathMm });
+    }
+    if (auto written = library.value()->appendUse(uses); !written)
+        return fail(call, written.error().message, MachineError);
+    if (call.json) {
+        QJsonArray list;
+        for (const ToolUse &u : uses)
+            list.append(QJsonObject { { u"tool"_s, u.tool }, { u"cutting_seconds"_s, u.cuttingSeconds },
+                { u"feed_path_mm"_s, u.feedPathMm } });
+        printJson(call,
+            QJsonObject { { u"machine"_s, machine }, { u"program"_s, path }, { u"tools"_s, list },
+                { u"rapid_mm"_s, interpreter.rapidDistance() } });
+        return Success;
+    }
+    for (const ToolUse &u : uses)
+        call.out << "T" << u.tool << ": " << formatNumber(u.cuttingSeconds / 60.0, NumberFormat::fixed(1))
+                 << " min cutting, " << formatNumber(u.feedPathMm / 1000.0, NumberFormat::fixed(2))
+                 << " m of feed\n";
+    call.out << "recorded for " << machine << " in " << library.value()->location().path << Qt::endl;
+    return Success;
+}
+
 } // namespace
 
 int showHistory(Invocation &call)
 {
+    if (call.arguments == QStringList { u"add-use"_s })
+        return addUse(call);
     if (!call.arguments.isEmpty())
-        return fail(call, u"history takes no arguments; say --machine, --tool or --since."_s, BadInput);
+        return fail(
+            call, u"history takes no arguments but add-use; say --machine, --tool or --since."_s, BadInput);
     if (call.has(u"no-history"_s))
         return fail(call, u"history reads the library: leave out --no-history."_s, BadInput);
     const auto query = readQuery(call);

@@ -117,9 +117,10 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
     bool motion = false;
     for (int i = 0; i < w.gCount; ++i) {
         const double g = w.g[size_t(i)];
-        if (same(g, 0) || same(g, 1))
+        if (same(g, 0) || same(g, 1) || same(g, 2) || same(g, 3)) {
             motion = true;
-        else if (same(g, 90))
+            m_motionMode = int(g);
+        } else if (same(g, 90))
             m_absolute = true;
         else if (same(g, 91))
             m_absolute = false;
@@ -142,6 +143,8 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
     }
     if (w.hasG(10))
         return g10(w, line);
+    if (auto r = modalWords(w, line); !r)
+        return r;
 
     if (m_dialect == Dialect::LinuxCnc) {
         if (auto r = linuxCncLength(w, line); !r)
@@ -178,8 +181,14 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
             return error(line, tr("the word %1 needs a value.").arg(QChar::fromLatin1(a)));
     }
     const bool consumedZ = m_dialect == Dialect::LinuxCnc && w.hasG(43.1);
-    if (motion || (w.anyAxis() && !consumedZ))
+    if (motion || (w.anyAxis() && !consumedZ)) {
+        const Position programStart = m_program;
         move(w, line);
+        const auto length = pathLength(w, programStart, line);
+        if (!length)
+            return length.error();
+        account(length.value());
+    }
     if (w.hasM(2) || w.hasM(30))
         m_ended = true;
     return {};

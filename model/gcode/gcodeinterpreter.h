@@ -27,6 +27,14 @@ struct OffsetEntry
 using OffsetTable = std::map<int, OffsetEntry>;
 using Position = std::array<double, 3>;
 
+// What one tool did in a program: its feed moves' time at their F (no override assumed) and length, in the
+// program's units (mm on every machine Toffee drives).
+struct ToolUsage
+{
+    double cuttingSeconds = 0.0;
+    double feedPathMm = 0.0;
+};
+
 struct SimulatedMove
 {
     int line = 0;
@@ -75,6 +83,12 @@ public:
     void setLengthOffset(double offset);
     [[nodiscard]] bool ended() const { return m_ended; }
 
+    // Tool life: what each tool did, by the tool loaded (M6, M61) or, before any change, selected (T); -1 for
+    // moves before any tool. Rapids (G0) count only in the rapid distance.
+    [[nodiscard]] const std::map<int, ToolUsage> &toolUsage() const { return m_usage; }
+    [[nodiscard]] double rapidDistance() const { return m_rapid; }
+    [[nodiscard]] int activeTool() const { return m_cuttingTool >= 0 ? m_cuttingTool : m_selectedTool; }
+
 private:
     struct Words;
     [[nodiscard]] Result<void> execute(const Words &w, int line);
@@ -87,6 +101,10 @@ private:
     [[nodiscard]] Result<void> linuxCncLength(const Words &w, int line);
     [[nodiscard]] Result<void> aerotechAxes(const QList<int> &axes, int line);
     void move(const Words &w, int line);
+    [[nodiscard]] Result<void> modalWords(const Words &w, int line);
+    // The path of the move just made from `programStart`: a line, or the arc of G2/G3 in the active plane.
+    [[nodiscard]] Result<double> pathLength(const Words &w, const Position &programStart, int line) const;
+    void account(double length);
     void home(const QList<int> &axes, int line);
     void recordStraight(int line, const Position &start);
     void recordCompensated(int line, const Position &programStart, double fromFraction, double toFraction);
@@ -105,6 +123,12 @@ private:
     bool m_ended = false;
 
     Position m_program {}; // programmed (work) position
+    int m_motionMode = 0; // G0, G1, G2 or G3: modal
+    double m_feed = 0.0; // F, units per minute
+    int m_selectedTool = -1; // tool life: the last T word
+    int m_cuttingTool = -1; // tool life: the tool M6 (or M61) loaded
+    std::map<int, ToolUsage> m_usage;
+    double m_rapid = 0.0;
     Position m_machine {}; // where the machine is
     Position m_g54 {};
     bool m_absolute = true;

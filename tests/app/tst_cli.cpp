@@ -8,6 +8,7 @@
 
 using namespace Qt::StringLiterals;
 
+#include "model/library/library.h"
 #include "tests/support/processes.h"
 
 using Toffee::Test::cli;
@@ -62,6 +63,38 @@ private Q_SLOTS:
         QVERIFY(o.value(u"median_ms"_s).toDouble() > 0.0);
         QVERIFY(o.value(u"max_ms"_s).toDouble() >= o.value(u"p99_ms"_s).toDouble());
         QVERIFY(run.err.isEmpty());
+    }
+
+    // The operator says a program ran: each tool's cutting time and feed path go into the library.
+    void recordsWhatAProgramMadeEachToolDo()
+    {
+        QTemporaryDir dir;
+        const QString program = dir.filePath(u"pocket.nc"_s);
+        write(program, "T1 M6\nG0 X0 Y0 Z5\nG1 Z0 F300\nX60 F600\nT4 M6\nG1 X0 F1200\nM30\n");
+        const QString library = dir.filePath(u"library.sqlite"_s);
+        const Run run = cli({ u"--json"_s, u"--library"_s, library, u"history"_s, u"add-use"_s,
+            u"--machine"_s, u"Mill 2"_s, u"--program"_s, program, u"--dialect"_s, u"fanuc"_s });
+        QCOMPARE(run.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(run.out).object();
+        QCOMPARE(o[u"tools"_s].toArray().size(), 2);
+        QCOMPARE(
+            o[u"tools"_s].toArray().at(0)[u"cutting_seconds"_s].toDouble(), 7.0); // 5 mm at 300, 60 at 600
+        QCOMPARE(o[u"tools"_s].toArray().at(1)[u"feed_path_mm"_s].toDouble(), 60.0);
+        QCOMPARE(o[u"rapid_mm"_s].toDouble(), 5.0);
+        auto opened = Toffee::Library::open({ library });
+        QVERIFY(opened);
+        const auto uses = opened.value()->uses(u"Mill 2"_s, 4);
+        QCOMPARE(uses.value().size(), 1);
+        QCOMPARE(uses.value().front().cuttingSeconds, 3.0);
+        QCOMPARE(uses.value().front().program, u"pocket.nc"_s);
+
+        // A program the interpreter refuses records nothing, and says where it stopped.
+        write(program, "T1 M6\nG1 X10 F100\nG2 X50 Y0 R10\n");
+        const Run bad = cli({ u"--library"_s, library, u"history"_s, u"add-use"_s, u"--machine"_s,
+            u"Mill 2"_s, u"--program"_s, program, u"--dialect"_s, u"fanuc"_s });
+        QCOMPARE(bad.exitCode, 4);
+        QVERIFY2(bad.err.contains("line 3") && bad.err.contains("Nothing was recorded"), bad.err.constData());
+        QCOMPARE(opened.value()->uses(u"Mill 2"_s, 1).value().size(), 1);
     }
 
     void showsATable()

@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The interpreter's tool life: motion modes, feed, which tool is loaded, and the length and time of each move
+// (arcs as arcs), for the cutting time per tool of a program.
+#include "model/gcode/gcodeinterpreter.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "model/gcode/gcodeinterpreter_p.h"
+
+namespace Toffee {
+
+namespace {
+
+// The two axes of the arc plane and the helix axis: G17 X Y (Z), G18 Z X (Y), G19 Y Z (X); and the centre
+// offset letters of the two plane axes.
+struct ArcPlane
+{
+    size_t first;
+    size_t second;
+    size_t helix;
+    char firstOffset;
+    char secondOffset;
+};
+
+ArcPlane planeOf(int lengthAxis)
+{
+    if (lengthAxis == 1)
+        return { 2, 0, 1, 'K', 'I' };
+    if (lengthAxis == 0)
+        return { 1, 2, 0, 'J', 'K' };
+    return { 0, 1, 2, 'I', 'J' };
+}
+
+} // namespace
+
+Result<void> GCodeInterpreter::modalWords(const Words &w, int line)
+{
+    if (w.word('F')) {
+        if (w.get('F') < 0)
+            return error(line, tr("F%1 is not a feed rate.").arg(formatNumber(w.get('F'))));
+        m_feed = w.get('F');
+    }
+    if (w.word('T') && !w.isBare('T')) {
+        // Only the Carvera has a tool -1, its empty spindle.
+        const int lowest = m_dialect == Dialect::Carvera ? Limits::kEmptySpindle : Limits::kMinToolNumber;
+        const auto tool = wholeWord(w, 'T', lowest, Limits::kMaxToolNumber, line);
+        if (!tool)
+            return tool.error();
+        m_selectedTool = tool.value();
+    }
+    if (w.hasM(6))
+        m_cuttingTool = m_selectedTool;
+    if (w.hasM(61) && w.word('Q'))
+        m_cuttingTool = int(w.get('Q'));
+    return {};
+}
+
+Result<double> GCodeInterpreter::pathLength(const Words &w, const Position &programStart, int line) const
+{
+    double straight = 0.0;
+    for (size_t i = 0; i < 3; ++i)
+        straight += (m_program[i] - programStart[i]) * (m_program[i] - programStart[i]);
+    straight = std::sqrt(straight);
+    if (m_motionMode != 2 && m_motionMode != 3)
+        return straight;
+    const ArcPlane p = planeOf(m_lengthAxis);
+    const double sx = programStart[p.first];
+    const double sy = programStart[p.second];
+    const double ex = m_program[p.first];
+    const double ey = m_program[p.second];
+    double cx = 0.0;
+    double cy = 0.0;
+    if (w.word('R')) {
+        // The centre on the chord's perpendicular bisector; a negative R takes the arc over 180°.
+        const double r = w.get('R');
+        const double dx = ex - sx;
+        const double dy = ey - sy;
+        const double chord = std::hypot(dx, dy);
+        if (chord == 0.0 || chord > 2.0 * std::fabs(r) + 1e-9)
+            return error(line, tr("the arc's R%1 cannot reach its end point.").arg(formatNumber(r)));
+        const double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4.0));
+        const double side = (m_motionMode == 2) == (r > 0) ? -1.0 : 1.0;
+        cx = sx + dx / 2.0 - side * h * dy / chord;
+        cy = sy + dy / 2.0 + side * h * dx / chord;
+    } else if (w.word(p.firstOffset) || w.word(p.secondOffset)) {
+        cx = sx + (w.word(p.firstOffset) ? w.get(p.firstOffset) : 0.0);
+        cy = sy + (w.word(p.secondOffset) ? w.get(p.secondOffset) : 0.0);
+    } else {
+        return error(line,
+            tr("G%1 needs the arc's centre (%2 %3) or its radius (R).")
+                .arg(m_motionMode)
+                .arg(QChar::fromLatin1(p.firstOffset), QChar::fromLatin1(p.secondOffset)));
+    }
+    const double radius = std::hypot(sx - cx, sy - cy);
+    double sweep = std::atan2(ey - cy, ex - cx) - std::atan2(sy - cy, sx - cx);
+    // G2 turns clockwise (negative), G3 counter-clockwise; the same start and end is a whole circle.
+    if (m_motionMode == 2) {
+        while (sweep >= -1e-12)
+            sweep -= 2.0 * std::numbers::pi;
+    } else {
+        while (sweep <= 1e-12)
+            sweep += 2.0 * std::numbers::pi;
+    }
+    const double helix = m_program[p.helix] - programStart[p.helix];
+    return std::hypot(radius * std::fabs(sweep), helix);
+}
+
+void GCodeInterpreter::account(double length)
+{
+    if (m_motionMode == 0) {
+        m_rapid += length;
+        return;
+    }
+    ToolUsage &usage = m_usage[activeTool()];
+    usage.feedPathMm += length;
+    if (m_feed > 0.0)
+        usage.cuttingSeconds += length / m_feed * 60.0;
+}
+
+} // namespace Toffee
