@@ -65,6 +65,7 @@ bench: build
 	done | sort -n | awk '{ t[NR] = $$1 } END { print "window to first frame (toffee --self-test, offscreen), median of 5: " t[3] " ms" }'
 	$(BUILD_DIR)/bin/toffee-bench-table
 	$(BUILD_DIR)/bin/toffee-bench-interpreter 1000000
+	$(BUILD_DIR)/bin/toffee-bench-library 1000000
 	$(BUILD_DIR)/bin/toffee-cli --emulator link-test --count 10000
 	@link=$$(mktemp -u /tmp/toffee-bench-tty.XXXXXX); \
 	$(BUILD_DIR)/bin/toffee-emulator --link $$link > /dev/null & pid=$$!; \
