@@ -1125,6 +1125,141 @@
     </message>
 </context>
 <context>
+    <name>Toffee::HistoryDock</name>
+    <message>
+        <source>probe</source>
+        <translation>Messung</translation>
+    </message>
+    <message>
+        <source>break test</source>
+        <translation>Bruchtest</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>von Hand gesetzt</translation>
+    </message>
+    <message>
+        <source>restored</source>
+        <translation>wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>imported</source>
+        <translation>importiert</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Als CSV exportieren…</translation>
+    </message>
+    <message>
+        <source>Copy Chart</source>
+        <translation>Diagramm kopieren</translation>
+    </message>
+    <message>
+        <source>TLO over time</source>
+        <translation>TLO über die Zeit</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Messungen</translation>
+    </message>
+    <message>
+        <source>Select one tool to see its history.</source>
+        <translation>Wählen Sie ein Werkzeug, um seinen Verlauf zu sehen.</translation>
+    </message>
+    <message>
+        <source>T%1: the history library is not open.</source>
+        <translation>T%1: Die Verlaufsbibliothek ist nicht geöffnet.</translation>
+    </message>
+    <message>
+        <source>T%1 on %2: 1 measurement</source>
+        <translation>T%1 auf %2: 1 Messung</translation>
+    </message>
+    <message>
+        <source>T%1 on %2: %3 measurements</source>
+        <translation>T%1 auf %2: %3 Messungen</translation>
+    </message>
+    <message>
+        <source>Probes</source>
+        <translation>Messungen</translation>
+    </message>
+    <message>
+        <source>Break test passed</source>
+        <translation>Bruchtest bestanden</translation>
+    </message>
+    <message>
+        <source>Break test failed</source>
+        <translation>Bruchtest nicht bestanden</translation>
+    </message>
+    <message>
+        <source>Set by hand</source>
+        <translation>Von Hand gesetzt</translation>
+    </message>
+    <message>
+        <source>Wear trend</source>
+        <translation>Verschleißtrend</translation>
+    </message>
+    <message>
+        <source>± %1 mm</source>
+        <translation>± %1 mm</translation>
+    </message>
+    <message>
+        <source>No measurements of T%1 yet</source>
+        <translation>Noch keine Messungen von T%1</translation>
+    </message>
+    <message>
+        <source>TLO (mm)</source>
+        <translation>TLO (mm)</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>TLO</source>
+        <translation>TLO</translation>
+    </message>
+    <message>
+        <source>Reference Z</source>
+        <translation>Referenz-Z</translation>
+    </message>
+    <message>
+        <source>Current Z</source>
+        <translation>Aktuelles Z</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Toleranz</translation>
+    </message>
+    <message>
+        <source>Old TLO</source>
+        <translation>Alte TLO</translation>
+    </message>
+    <message>
+        <source>New TLO</source>
+        <translation>Neue TLO</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>BROKEN?</source>
+        <translation>GEBROCHEN?</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>bestanden</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::JsonScanner</name>
     <message>
         <source>this is not valid JSON: expected %1.</source>
@@ -1824,6 +1959,22 @@ Trotzdem speichern?</translation>
     <message>
         <source>The history library is written again: every waiting measurement is in it.</source>
         <translation>Die Verlaufsbibliothek wird wieder geschrieben: Jede wartende Messung ist darin.</translation>
+    </message>
+    <message>
+        <source>Export History</source>
+        <translation>Verlauf exportieren</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>The history was not exported</source>
+        <translation>Der Verlauf wurde nicht exportiert</translation>
+    </message>
+    <message>
+        <source>Exported %1 measurements to %2</source>
+        <translation>%1 Messungen nach %2 exportiert</translation>
     </message>
 </context>
 <context>

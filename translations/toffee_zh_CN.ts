@@ -1125,6 +1125,141 @@
     </message>
 </context>
 <context>
+    <name>Toffee::HistoryDock</name>
+    <message>
+        <source>probe</source>
+        <translation>探测</translation>
+    </message>
+    <message>
+        <source>break test</source>
+        <translation>断刀检测</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>手动设置</translation>
+    </message>
+    <message>
+        <source>restored</source>
+        <translation>已恢复</translation>
+    </message>
+    <message>
+        <source>imported</source>
+        <translation>已导入</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>历史</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>导出 CSV…</translation>
+    </message>
+    <message>
+        <source>Copy Chart</source>
+        <translation>复制图表</translation>
+    </message>
+    <message>
+        <source>TLO over time</source>
+        <translation>TLO 随时间变化</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>测量记录</translation>
+    </message>
+    <message>
+        <source>Select one tool to see its history.</source>
+        <translation>选择一把刀具以查看其历史。</translation>
+    </message>
+    <message>
+        <source>T%1: the history library is not open.</source>
+        <translation>T%1：历史库未打开。</translation>
+    </message>
+    <message>
+        <source>T%1 on %2: 1 measurement</source>
+        <translation>%2 上的 T%1：1 次测量</translation>
+    </message>
+    <message>
+        <source>T%1 on %2: %3 measurements</source>
+        <translation>%2 上的 T%1：%3 次测量</translation>
+    </message>
+    <message>
+        <source>Probes</source>
+        <translation>探测</translation>
+    </message>
+    <message>
+        <source>Break test passed</source>
+        <translation>断刀检测通过</translation>
+    </message>
+    <message>
+        <source>Break test failed</source>
+        <translation>断刀检测未通过</translation>
+    </message>
+    <message>
+        <source>Set by hand</source>
+        <translation>手动设置</translation>
+    </message>
+    <message>
+        <source>Wear trend</source>
+        <translation>磨损趋势</translation>
+    </message>
+    <message>
+        <source>± %1 mm</source>
+        <translation>± %1 mm</translation>
+    </message>
+    <message>
+        <source>No measurements of T%1 yet</source>
+        <translation>尚无 T%1 的测量记录</translation>
+    </message>
+    <message>
+        <source>TLO (mm)</source>
+        <translation>TLO（mm）</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>TLO</source>
+        <translation>TLO</translation>
+    </message>
+    <message>
+        <source>Reference Z</source>
+        <translation>参考 Z</translation>
+    </message>
+    <message>
+        <source>Current Z</source>
+        <translation>当前 Z</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>公差</translation>
+    </message>
+    <message>
+        <source>Old TLO</source>
+        <translation>旧 TLO</translation>
+    </message>
+    <message>
+        <source>New TLO</source>
+        <translation>新 TLO</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>BROKEN?</source>
+        <translation>断刀？</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>通过</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::JsonScanner</name>
     <message>
         <source>this is not valid JSON: expected %1.</source>
@@ -1824,6 +1959,22 @@ Save anyway?</source>
     <message>
         <source>The history library is written again: every waiting measurement is in it.</source>
         <translation>历史库已恢复写入：所有等待的测量结果都已写入。</translation>
+    </message>
+    <message>
+        <source>Export History</source>
+        <translation>导出历史</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV（*.csv）</translation>
+    </message>
+    <message>
+        <source>The history was not exported</source>
+        <translation>历史未导出</translation>
+    </message>
+    <message>
+        <source>Exported %1 measurements to %2</source>
+        <translation>已将 %1 条测量记录导出到 %2</translation>
     </message>
 </context>
 <context>

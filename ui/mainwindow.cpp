@@ -28,6 +28,7 @@
 #include "ui/connectionpanel.h"
 #include "ui/consoledock.h"
 #include "ui/exportdialog.h"
+#include "ui/historydock.h"
 #include "ui/machinedock.h"
 #include "ui/probepanel.h"
 #include "ui/tlopanel.h"
@@ -69,12 +70,16 @@ MainWindow::MainWindow(QWidget *parent)
     , m_fileWatcher(new FileWatcher(this))
     , m_autoSave(new AutoSave(m_document, AutoSave::defaultDirectory(), this))
     , m_history(new HistoryRecorder(this))
+    , m_historyDock(new HistoryDock(m_history, this))
 {
     setObjectName(u"mainWindow"_s);
     setWindowIcon(themeIcon(u"toffee"_s));
     setCentralWidget(m_tablePanel);
     addDockWidget(Qt::RightDockWidgetArea, m_machineDock);
     addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_historyDock);
+    tabifyDockWidget(m_consoleDock, m_historyDock);
+    m_consoleDock->raise();
     // The machine panel runs the full height beside the table and the console: at 1280×720 it then needs no
     // scrolling to reach the break test.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);

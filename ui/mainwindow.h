@@ -15,6 +15,7 @@ namespace Toffee {
 class AutoSave;
 class ConsoleDock;
 class FileWatcher;
+class HistoryDock;
 class HistoryRecorder;
 class MachineConnection;
 class MachineDock;
@@ -38,6 +39,7 @@ public:
     [[nodiscard]] ConsoleDock *consoleDock() const { return m_consoleDock; }
     [[nodiscard]] AutoSave *autoSave() const { return m_autoSave; }
     [[nodiscard]] HistoryRecorder *history() const { return m_history; }
+    [[nodiscard]] HistoryDock *historyDock() const { return m_historyDock; }
     // The history library every measurement goes into (--library, or the setting, or the standard one).
     void setLibrary(const LibraryLocation &location);
     // Opens a table, reporting a failure in a message box; the current table stays if it fails.
@@ -75,6 +77,8 @@ private:
     void connectHistory();
     void recordHistory(const Recording &recording);
     void checkTrends(const QList<HistoryEvent> &events);
+    void showSelectedHistory();
+    void exportHistory();
     void readSettings();
     void writeSettings();
 
@@ -87,6 +91,7 @@ private:
     FileWatcher *m_fileWatcher;
     AutoSave *m_autoSave;
     HistoryRecorder *m_history;
+    HistoryDock *m_historyDock;
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;

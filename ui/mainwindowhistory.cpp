@@ -3,12 +3,19 @@
 // pointed out, and a library that cannot be written is told once while the measurements wait.
 #include "ui/mainwindow.h"
 
+#include <QDir>
+#include <QFileDialog>
+#include <QItemSelectionModel>
+#include <QPushButton>
 #include <QStatusBar>
+#include <QTableView>
 
 #include "model/document/tooldocument.h"
 #include "model/library/historyrecorder.h"
 #include "model/library/weartrend.h"
 #include "ui/appsettings.h"
+#include "ui/historydock.h"
+#include "ui/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
 
@@ -36,6 +43,9 @@ void MainWindow::connectHistory()
         statusBar()->showMessage(
             tr("The history library is written again: every waiting measurement is in it."), 10000);
     });
+    connect(m_tablePanel->view()->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+        &MainWindow::showSelectedHistory);
+    connect(m_historyDock->exportButton(), &QPushButton::clicked, this, &MainWindow::exportHistory);
     const QString chosen = AppSettings().libraryLocation();
     auto location = chosen.isEmpty() ? Result<LibraryLocation>(LibraryLocation::standard())
                                      : LibraryLocation::parse(chosen);
@@ -51,6 +61,29 @@ void MainWindow::setLibrary(const LibraryLocation &location)
 void MainWindow::recordHistory(const Recording &recording)
 {
     m_history->record(historyEvent(recording, AppSettings().machineName()));
+}
+
+void MainWindow::showSelectedHistory()
+{
+    const QList<int> selected = m_tablePanel->selectedToolNumbers();
+    const AppSettings settings;
+    m_historyDock->showTool(
+        selected.size() == 1 ? selected.front() : -1, settings.machineName(), settings.breakTestTolerance());
+}
+
+void MainWindow::exportHistory()
+{
+    const QString suggested
+        = QDir(AppSettings().lastDirectory()).filePath(u"T%1-history.csv"_s.arg(m_historyDock->tool()));
+    const QString path
+        = QFileDialog::getSaveFileName(this, tr("Export History"), suggested, tr("CSV (*.csv)"));
+    if (path.isEmpty())
+        return;
+    if (auto written = m_historyDock->exportCsv(path); !written)
+        showError(tr("The history was not exported"), written.error().text());
+    else
+        statusBar()->showMessage(
+            tr("Exported %1 measurements to %2").arg(m_historyDock->events().size()).arg(path), 5000);
 }
 
 // A probe is checked once it is in the library, against the probes before it.

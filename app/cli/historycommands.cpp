@@ -41,27 +41,6 @@ QJsonObject eventJson(const HistoryEvent &e)
     return o;
 }
 
-QString cell(std::optional<double> v)
-{
-    return v ? formatNumber(*v) : QString();
-}
-
-void printCsv(Invocation &call, const QList<HistoryEvent> &events)
-{
-    call.out
-        << "id,machine,tool,measured_at,kind,tlo,reference_mz,current_mz,tolerance,old_tlo,new_tlo,failed\n";
-    for (const HistoryEvent &e : events) {
-        QString machine = e.machine;
-        if (machine.contains(u',') || machine.contains(u'"') || machine.contains(u'\n'))
-            machine = u'"' + machine.replace(u'"', u"\"\""_s) + u'"';
-        call.out << e.id << ',' << machine << ',' << e.tool << ',' << e.at.toString(Qt::ISODateWithMs) << ','
-                 << eventKindName(e.kind) << ',' << cell(e.tlo) << ',' << cell(e.referenceMz) << ','
-                 << cell(e.currentMz) << ',' << cell(e.tolerance) << ',' << cell(e.oldTlo) << ','
-                 << cell(e.newTlo) << ',' << (e.failed ? (*e.failed ? "1" : "0") : "") << '\n';
-    }
-    call.out.flush();
-}
-
 void printText(Invocation &call, const QList<HistoryEvent> &events)
 {
     for (const HistoryEvent &e : events) {
@@ -193,7 +172,8 @@ int showHistory(Invocation &call)
         printJson(
             call, QJsonObject { { u"library"_s, library.value()->location().path }, { u"events"_s, list } });
     } else if (call.has(u"csv"_s)) {
-        printCsv(call, events.value());
+        call.out << QString::fromUtf8(eventsAsCsv(events.value()));
+        call.out.flush();
     } else {
         printText(call, events.value());
     }

@@ -3,6 +3,8 @@
 
 #include <QUuid>
 
+#include "model/numberformat.h"
+
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
@@ -64,7 +66,8 @@ HistoryEvent historyEvent(const Recording &r, const QString &machine)
         break;
     }
     // A break test leaves the tool at the TLO it measured when it passed; a failed one changes nothing.
-    e.tlo = r.kind == RecordingKind::BreakTest ? (r.breakTestFailed.value_or(false) ? r.oldTlo : r.newTlo) : r.tlo;
+    e.tlo = r.kind == RecordingKind::BreakTest ? (r.breakTestFailed.value_or(false) ? r.oldTlo : r.newTlo)
+                                               : r.tlo;
     e.referenceMz = r.referenceMz;
     e.currentMz = r.currentMz;
     e.tolerance = r.tolerance;
@@ -72,6 +75,33 @@ HistoryEvent historyEvent(const Recording &r, const QString &machine)
     e.newTlo = r.newTlo;
     e.failed = r.breakTestFailed;
     return e;
+}
+
+QByteArray eventsAsCsv(const QList<HistoryEvent> &events)
+{
+    QByteArray out
+        = "id,machine,tool,measured_at,kind,tlo,reference_mz,current_mz,tolerance,old_tlo,new_tlo,failed\n";
+    auto number = [&out](std::optional<double> v) {
+        out += ',';
+        if (v)
+            appendNumber(out, *v);
+    };
+    for (const HistoryEvent &e : events) {
+        out += e.id.toLatin1();
+        out += ',';
+        QString machine = e.machine;
+        if (machine.contains(u',') || machine.contains(u'"') || machine.contains(u'\n'))
+            machine = u'"' + machine.replace(u'"', u"\"\""_s) + u'"';
+        out += machine.toUtf8() + ',' + QByteArray::number(e.tool) + ','
+            + e.at.toString(Qt::ISODateWithMs).toLatin1() + ',' + eventKindName(e.kind).toLatin1();
+        for (const auto &v : { e.tlo, e.referenceMz, e.currentMz, e.tolerance, e.oldTlo, e.newTlo })
+            number(v);
+        out += ',';
+        if (e.failed)
+            out += *e.failed ? '1' : '0';
+        out += '\n';
+    }
+    return out;
 }
 
 QString HistoryEvent::newId()

@@ -43,6 +43,9 @@ struct HistoryEvent
 // The history's view of an operation the window or toffee-cli recorded, on `machine`.
 [[nodiscard]] HistoryEvent historyEvent(const Recording &recording, const QString &machine);
 
+// Events as CSV, a header line and a row each, every column of the library's events table (docs/LIBRARY.md).
+[[nodiscard]] QByteArray eventsAsCsv(const QList<HistoryEvent> &events);
+
 // A program that ran on a machine, and what each tool did in it.
 struct ToolUse
 {
