@@ -1976,6 +1976,30 @@ Trotzdem speichern?</translation>
         <source>Exported %1 measurements to %2</source>
         <translation>%1 Messungen nach %2 exportiert</translation>
     </message>
+    <message>
+        <source>&amp;Record a Program Run…</source>
+        <translation>&amp;Programmlauf aufzeichnen…</translation>
+    </message>
+    <message>
+        <source>%1: %2 Nothing was recorded.</source>
+        <translation>%1: %2 Es wurde nichts aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>Record a Program Run</source>
+        <translation>Programmlauf aufzeichnen</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.nc *.gcode *.ngc *.tap *.cnc);;All files (*)</source>
+        <translation>G-Code-Programme (*.nc *.gcode *.ngc *.tap *.cnc);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>The program run was not recorded</source>
+        <translation>Der Programmlauf wurde nicht aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>Recorded the cutting time of %1 tools from %2.</source>
+        <translation>Die Schnittzeit von %1 Werkzeugen aus %2 wurde aufgezeichnet.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -2584,10 +2608,6 @@ Vermessen Sie T%1 stattdessen.</translation>
         <translation>Gemessene TLO</translation>
     </message>
     <message>
-        <source>Measured at</source>
-        <translation>Gemessen am</translation>
-    </message>
-    <message>
         <source>Notes</source>
         <translation>Notizen</translation>
     </message>
@@ -2638,6 +2658,46 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>T%1 failed its last break test: check it, replace it if it is damaged, then probe it again. It stays marked until it is probed.</source>
         <translation>T%1 hat seinen letzten Bruchtest nicht bestanden: Prüfen Sie es, ersetzen Sie es, wenn es beschädigt ist, und vermessen Sie es dann erneut. Es bleibt markiert, bis es vermessen wird.</translation>
+    </message>
+    <message>
+        <source>%1 (stale)</source>
+        <translation>%1 (veraltet)</translation>
+    </message>
+    <message>
+        <source>just now</source>
+        <translation>gerade eben</translation>
+    </message>
+    <message>
+        <source>%1 min ago</source>
+        <translation>vor %1 min</translation>
+    </message>
+    <message>
+        <source>%1 h ago</source>
+        <translation>vor %1 h</translation>
+    </message>
+    <message>
+        <source>%1 days ago</source>
+        <translation>vor %1 Tagen</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>Last measured</source>
+        <translation>Zuletzt gemessen</translation>
+    </message>
+    <message>
+        <source>Cutting time</source>
+        <translation>Schnittzeit</translation>
     </message>
 </context>
 <context>

@@ -1976,6 +1976,30 @@ Save anyway?</source>
         <source>Exported %1 measurements to %2</source>
         <translation>已将 %1 条测量记录导出到 %2</translation>
     </message>
+    <message>
+        <source>&amp;Record a Program Run…</source>
+        <translation>记录程序运行(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>%1: %2 Nothing was recorded.</source>
+        <translation>%1：%2 未记录任何内容。</translation>
+    </message>
+    <message>
+        <source>Record a Program Run</source>
+        <translation>记录程序运行</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.nc *.gcode *.ngc *.tap *.cnc);;All files (*)</source>
+        <translation>G 代码程序 (*.nc *.gcode *.ngc *.tap *.cnc);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>The program run was not recorded</source>
+        <translation>程序运行未被记录</translation>
+    </message>
+    <message>
+        <source>Recorded the cutting time of %1 tools from %2.</source>
+        <translation>已记录 %2 中 %1 把刀具的切削时间。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -2584,10 +2608,6 @@ Probe T%1 instead.</source>
         <translation>测得 TLO</translation>
     </message>
     <message>
-        <source>Measured at</source>
-        <translation>测量时间</translation>
-    </message>
-    <message>
         <source>Notes</source>
         <translation>备注</translation>
     </message>
@@ -2638,6 +2658,46 @@ Probe T%1 instead.</source>
     <message>
         <source>T%1 failed its last break test: check it, replace it if it is damaged, then probe it again. It stays marked until it is probed.</source>
         <translation>T%1 未通过上次断刀检测：请检查该刀具，如有损坏请更换，然后重新对刀。在重新对刀之前，它会一直保持标记。</translation>
+    </message>
+    <message>
+        <source>%1 (stale)</source>
+        <translation>%1（已过期）</translation>
+    </message>
+    <message>
+        <source>just now</source>
+        <translation>刚刚</translation>
+    </message>
+    <message>
+        <source>%1 min ago</source>
+        <translation>%1 分钟前</translation>
+    </message>
+    <message>
+        <source>%1 h ago</source>
+        <translation>%1 小时前</translation>
+    </message>
+    <message>
+        <source>%1 days ago</source>
+        <translation>%1 天前</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 分钟</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 小时 %2 分钟</translation>
+    </message>
+    <message>
+        <source>Last measured</source>
+        <translation>上次测量</translation>
+    </message>
+    <message>
+        <source>Cutting time</source>
+        <translation>切削时间</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/appsettings.h"
 
+#include <algorithm>
+
 #include <QDir>
 
 using namespace Qt::StringLiterals;
@@ -19,6 +21,7 @@ const auto Tolerance = u"machine/breakTestTolerance"_s;
 const auto DarkPalette = u"view/darkPalette"_s;
 const auto Library = u"history/library"_s;
 const auto MachineName = u"history/machine"_s;
+const auto StaleDays = u"history/staleAfterDays"_s;
 const auto ExportDialect = u"files/exportDialect"_s;
 } // namespace Key
 } // namespace
@@ -107,6 +110,16 @@ QString AppSettings::machineName() const
 void AppSettings::setMachineName(const QString &name)
 {
     m_settings.setValue(Key::MachineName, name);
+}
+
+int AppSettings::staleAfterDays() const
+{
+    return std::max(1, m_settings.value(Key::StaleDays, 7).toInt());
+}
+
+void AppSettings::setStaleAfterDays(int days)
+{
+    m_settings.setValue(Key::StaleDays, days);
 }
 
 double AppSettings::breakTestTolerance() const

@@ -37,6 +37,9 @@ public:
     void setLibraryLocation(const QString &location);
     [[nodiscard]] QString machineName() const;
     void setMachineName(const QString &name);
+    // A measurement older than this is stale (the table marks it).
+    [[nodiscard]] int staleAfterDays() const;
+    void setStaleAfterDays(int days);
     [[nodiscard]] bool darkPalette() const;
     void setDarkPalette(bool dark);
 

@@ -278,6 +278,9 @@ void MainWindow::createMachineActions()
         [this] { m_machineDock->tloPanel()->unlock(); }));
     toolBar->addAction(add(u"actionStop"_s, tr("&Stop the Machine"), QKeySequence(Qt::CTRL | Qt::Key_Period),
         [this] { m_machineDock->probePanel()->cancel(); }));
+    machine->addSeparator();
+    add(u"actionRecordRun"_s, tr("&Record a Program Run…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
+        [this] { recordProgramRun(); });
     QMenu *view = menuBar()->addMenu(tr("&View"));
     QAction *machineView = m_machineDock->toggleViewAction();
     machineView->setObjectName(u"actionShowMachine"_s);
@@ -287,6 +290,10 @@ void MainWindow::createMachineActions()
     consoleView->setObjectName(u"actionShowConsole"_s);
     consoleView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_2));
     view->addAction(consoleView);
+    QAction *historyView = m_historyDock->toggleViewAction();
+    historyView->setObjectName(u"actionShowHistory"_s);
+    historyView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_3));
+    view->addAction(historyView);
     view->addSeparator();
     auto *dark = new QAction(tr("&Dark Palette"), this);
     dark->setObjectName(u"actionDarkPalette"_s);

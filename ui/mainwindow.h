@@ -40,6 +40,8 @@ public:
     [[nodiscard]] AutoSave *autoSave() const { return m_autoSave; }
     [[nodiscard]] HistoryRecorder *history() const { return m_history; }
     [[nodiscard]] HistoryDock *historyDock() const { return m_historyDock; }
+    // The program's use of each tool, recorded (what Record a Program Run does once a file is chosen).
+    Result<int> recordProgramRun(const QString &path);
     // The history library every measurement goes into (--library, or the setting, or the standard one).
     void setLibrary(const LibraryLocation &location);
     // Opens a table, reporting a failure in a message box; the current table stays if it fails.
@@ -78,6 +80,9 @@ private:
     void recordHistory(const Recording &recording);
     void checkTrends(const QList<HistoryEvent> &events);
     void showSelectedHistory();
+    void refreshToolLife();
+    // File ▸ Record a Program Run…: the program ran on this machine; each tool's cutting time is recorded.
+    void recordProgramRun();
     void exportHistory();
     void readSettings();
     void writeSettings();

@@ -5,12 +5,17 @@
 
 #include <QDir>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QItemSelectionModel>
 #include <QPushButton>
 #include <QStatusBar>
 #include <QTableView>
+#include <QTimer>
 
 #include "model/document/tooldocument.h"
+#include "model/document/tooltablemodel.h"
+#include "model/formats/fileio.h"
+#include "model/gcode/gcodeinterpreter.h"
 #include "model/library/historyrecorder.h"
 #include "model/library/weartrend.h"
 #include "ui/appsettings.h"
@@ -46,6 +51,12 @@ void MainWindow::connectHistory()
     connect(m_tablePanel->view()->selectionModel(), &QItemSelectionModel::selectionChanged, this,
         &MainWindow::showSelectedHistory);
     connect(m_historyDock->exportButton(), &QPushButton::clicked, this, &MainWindow::exportHistory);
+    connect(m_history, &HistoryRecorder::usesChanged, this, &MainWindow::refreshToolLife);
+    // Ages move on while the window is open: "3 h ago" becomes "4 h ago", and a tool turns stale.
+    m_document->model()->setStaleAfterDays(AppSettings().staleAfterDays());
+    auto *ages = new QTimer(this);
+    connect(ages, &QTimer::timeout, m_document->model(), &ToolTableModel::refreshAges);
+    ages->start(60 * 1000);
     const QString chosen = AppSettings().libraryLocation();
     auto location = chosen.isEmpty() ? Result<LibraryLocation>(LibraryLocation::standard())
                                      : LibraryLocation::parse(chosen);
@@ -61,6 +72,51 @@ void MainWindow::setLibrary(const LibraryLocation &location)
 void MainWindow::recordHistory(const Recording &recording)
 {
     m_history->record(historyEvent(recording, AppSettings().machineName()));
+}
+
+void MainWindow::refreshToolLife()
+{
+    if (!m_history->library())
+        return;
+    if (auto totals = m_history->library()->cuttingTotals(AppSettings().machineName()))
+        m_document->model()->setCuttingTimes(totals.value());
+}
+
+Result<int> MainWindow::recordProgramRun(const QString &path)
+{
+    constexpr qint64 kMaxProgramBytes = 512LL * 1024 * 1024;
+    const auto read = readRegularFile(path, kMaxProgramBytes);
+    if (!read)
+        return read.error();
+    GCodeInterpreter interpreter(Dialect::Carvera);
+    interpreter.setRecordMoves(false);
+    if (auto ran = interpreter.run(read.value()); !ran)
+        return Error { tr("%1: %2 Nothing was recorded.").arg(path, ran.error().text()) };
+    const QString machine = AppSettings().machineName();
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    QList<ToolUse> uses;
+    for (const auto &[tool, usage] : interpreter.toolUsage()) {
+        if (tool >= 0)
+            uses.append({ HistoryEvent::newId(), machine, tool, now, QFileInfo(path).fileName(),
+                usage.cuttingSeconds, usage.feedPathMm });
+    }
+    m_history->recordUse(uses);
+    return int(uses.size());
+}
+
+void MainWindow::recordProgramRun()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Record a Program Run"),
+        AppSettings().lastDirectory(), tr("G-code programs (*.nc *.gcode *.ngc *.tap *.cnc);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    const auto recorded = recordProgramRun(path);
+    if (!recorded)
+        return showError(tr("The program run was not recorded"), recorded.error().message);
+    statusBar()->showMessage(tr("Recorded the cutting time of %1 tools from %2.")
+                                 .arg(recorded.value())
+                                 .arg(QFileInfo(path).fileName()),
+        8000);
 }
 
 void MainWindow::showSelectedHistory()

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/document/tooltablemodel.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <QColor>
 #include <QLocale>
 
@@ -83,7 +86,16 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
             return {};
         if (role == SortRole || role == Qt::EditRole)
             return tool.measuredAt;
-        return QLocale().toString(tool.measuredAt.toLocalTime(), QLocale::ShortFormat);
+        if (role == Qt::ToolTipRole)
+            return QLocale().toString(tool.measuredAt.toLocalTime(), QLocale::LongFormat);
+        return isStale(tool) ? tr("%1 (stale)").arg(ageText(tool.measuredAt)) : ageText(tool.measuredAt);
+    case CuttingTimeColumn: {
+        const auto seconds = m_cuttingSeconds.constFind(tool.number);
+        if (seconds == m_cuttingSeconds.cend())
+            return role == SortRole ? QVariant(0.0) : QVariant();
+        return role == SortRole || role == Qt::EditRole ? QVariant(*seconds)
+                                                        : QVariant(durationText(*seconds));
+    }
     case NotesColumn:
         return role == Qt::DisplayRole ? QString(tool.notes).replace(u'\n', u' ') : tool.notes;
     default:
@@ -105,6 +117,8 @@ QVariant ToolTableModel::decoration(const Tool &tool, int column, int role) cons
         return QColor(0xe0, 0x1b, 0x24, 0x60);
     if (role == Qt::ForegroundRole && column == MeasuredTloColumn && !tool.measuredTlo)
         return QColor(0x80, 0x80, 0x80);
+    if (role == Qt::ForegroundRole && column == MeasuredAtColumn && isStale(tool))
+        return QColor(0xb0, 0x50, 0x00); // stale: measure it again before trusting it
     if (role == Qt::ToolTipRole && column == MeasuredTloColumn)
         return tloToolTip(tool);
     if (column == PocketColumn && (role == Qt::ForegroundRole || role == Qt::ToolTipRole)
@@ -122,6 +136,53 @@ QVariant ToolTableModel::decoration(const Tool &tool, int column, int role) cons
     if (role == Qt::ToolTipRole && column == NumberColumn && tool.breakTestFailed)
         return tloToolTip(tool);
     return {};
+}
+
+QString ToolTableModel::ageText(const QDateTime &at, const QDateTime &now)
+{
+    const qint64 minutes = std::max<qint64>(0, at.secsTo(now) / 60);
+    if (minutes < 1)
+        return tr("just now");
+    if (minutes < 60)
+        return tr("%1 min ago").arg(minutes);
+    if (minutes < 48 * 60)
+        return tr("%1 h ago").arg(minutes / 60);
+    return tr("%1 days ago").arg(minutes / (24 * 60));
+}
+
+QString ToolTableModel::durationText(double seconds)
+{
+    const qint64 whole = qint64(std::llround(seconds));
+    if (whole < 60)
+        return tr("%1 s").arg(whole);
+    const qint64 minutes = (whole + 30) / 60;
+    if (minutes < 60)
+        return tr("%1 min").arg(minutes);
+    return tr("%1 h %2 min").arg(minutes / 60).arg(minutes % 60, 2, 10, QLatin1Char('0'));
+}
+
+void ToolTableModel::setCuttingTimes(const QHash<int, double> &seconds)
+{
+    m_cuttingSeconds = seconds;
+    if (rowCount() > 0)
+        Q_EMIT dataChanged(index(0, CuttingTimeColumn), index(rowCount() - 1, CuttingTimeColumn));
+}
+
+void ToolTableModel::setStaleAfterDays(int days)
+{
+    m_staleAfterDays = std::max(1, days);
+    refreshAges();
+}
+
+bool ToolTableModel::isStale(const Tool &tool, const QDateTime &now) const
+{
+    return tool.measuredAt.isValid() && tool.measuredAt.secsTo(now) > qint64(m_staleAfterDays) * 24 * 3600;
+}
+
+void ToolTableModel::refreshAges()
+{
+    if (rowCount() > 0)
+        Q_EMIT dataChanged(index(0, MeasuredAtColumn), index(rowCount() - 1, MeasuredAtColumn));
 }
 
 QString ToolTableModel::tloToolTip(const Tool &tool) const
@@ -169,7 +230,9 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
     case MeasuredTloColumn:
         return tr("Measured TLO");
     case MeasuredAtColumn:
-        return tr("Measured at");
+        return tr("Last measured");
+    case CuttingTimeColumn:
+        return tr("Cutting time");
     case NotesColumn:
         return tr("Notes");
     default:
@@ -184,7 +247,7 @@ Qt::ItemFlags ToolTableModel::flags(const QModelIndex &index) const
         return f;
     // The total is computed and the measurement comes from the tool setter: neither is typed in.
     const int c = index.column();
-    if (c != TotalLengthColumn && c != MeasuredTloColumn && c != MeasuredAtColumn)
+    if (c != TotalLengthColumn && c != MeasuredTloColumn && c != MeasuredAtColumn && c != CuttingTimeColumn)
         f |= Qt::ItemIsEditable;
     return f;
 }

@@ -28,7 +28,8 @@ public:
         RadiusGeometryColumn,
         RadiusWearColumn,
         MeasuredTloColumn,
-        MeasuredAtColumn,
+        MeasuredAtColumn, // shown as an age ("3 h ago"), marked stale when older than the limit
+        CuttingTimeColumn, // the history library's total for the tool, when known
         NotesColumn,
         ColumnCount
     };
@@ -63,6 +64,23 @@ public:
     // The other tools in `pocket` (pocket 0, the spindle of a random changer, is never shared).
     [[nodiscard]] QList<int> toolsSharingPocket(int pocket, int except) const;
 
+    // Tool life from the history library: each tool's total cutting time in seconds (a tool missing has
+    // none).
+    void setCuttingTimes(const QHash<int, double> &seconds);
+    // A measurement older than this many days is stale; "now" moves on, so the ages are redrawn on
+    // refreshAges.
+    void setStaleAfterDays(int days);
+    [[nodiscard]] int staleAfterDays() const { return m_staleAfterDays; }
+    [[nodiscard]] bool isStale(
+        const Tool &tool, const QDateTime &now = QDateTime::currentDateTimeUtc()) const;
+    void refreshAges();
+    static constexpr int kDefaultStaleDays = 7;
+
+    // "just now", "12 min ago", "5 h ago", "9 days ago"; "25 min", "3 h 05 min".
+    [[nodiscard]] static QString ageText(
+        const QDateTime &at, const QDateTime &now = QDateTime::currentDateTimeUtc());
+    [[nodiscard]] static QString durationText(double seconds);
+
 Q_SIGNALS:
     // An edit from a view was refused; the message says why and what to enter instead.
     void editRejected(const QString &message);
@@ -82,6 +100,8 @@ private:
     ToolTable m_table;
     EditHandler m_editHandler;
     mutable QHash<int, int> m_pocketCounts; // built when first needed after a change
+    QHash<int, double> m_cuttingSeconds;
+    int m_staleAfterDays = kDefaultStaleDays;
     mutable bool m_pocketsDirty = true;
 };
 

@@ -24,6 +24,7 @@ Result<void> HistoryRecorder::setLocation(const LibraryLocation &location, Libra
     }
     m_library = opened.takeValue();
     flush();
+    Q_EMIT usesChanged();
     return {};
 }
 
@@ -70,8 +71,11 @@ bool HistoryRecorder::flush()
             Q_EMIT recorded(done);
         return false;
     }
+    const bool usesWritten = !m_pendingUse.isEmpty();
     m_pendingUse.clear();
     m_retry.stop();
+    if (usesWritten)
+        Q_EMIT usesChanged();
     if (!done.isEmpty())
         Q_EMIT recorded(done);
     if (m_down) {

@@ -42,6 +42,8 @@ public:
 
 Q_SIGNALS:
     void recorded(const QList<Toffee::HistoryEvent> &events);
+    // Tool use was written, or a library opened: totals may have changed.
+    void usesChanged();
     // The library stopped taking writes: what is wrong. Said once until it takes them again.
     void unavailable(const QString &message);
     // Everything that waited is written.

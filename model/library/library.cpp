@@ -233,4 +233,18 @@ Result<QList<ToolUse>> Library::uses(const QString &machine, std::optional<int> 
     return out;
 }
 
+Result<QHash<int, double>> Library::cuttingTotals(const QString &machine) const
+{
+    QSqlQuery query(database());
+    query.setForwardOnly(true);
+    query.prepare(u"SELECT tool, SUM(cutting_seconds) FROM tool_use WHERE machine = ? GROUP BY tool"_s);
+    query.addBindValue(machine);
+    if (!query.exec())
+        return failure(tr("Reading the tools' use"), query);
+    QHash<int, double> out;
+    while (query.next())
+        out.insert(query.value(0).toInt(), query.value(1).toDouble());
+    return out;
+}
+
 } // namespace Toffee

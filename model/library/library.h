@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <QCoreApplication>
+#include <QHash>
 #include <QList>
 #include <QString>
 
@@ -54,6 +55,8 @@ public:
     // Oldest first.
     [[nodiscard]] Result<QList<HistoryEvent>> history(const HistoryQuery &query) const;
     [[nodiscard]] Result<QList<ToolUse>> uses(const QString &machine, std::optional<int> tool) const;
+    // Each tool's total cutting time on the machine, in seconds.
+    [[nodiscard]] Result<QHash<int, double>> cuttingTotals(const QString &machine) const;
 
 private:
     Library(LibraryLocation location, QString connection);

@@ -18,8 +18,8 @@ public:
     QString path; // the SQLite file, absolute
 
     [[nodiscard]] static Result<LibraryLocation> parse(const QString &text);
-    // The window's <AppDataLocation>/library.sqlite (~/.local/share/Toffee/Toffee/library.sqlite), for the window
-    // and toffee-cli alike: where the library lives when nothing else is chosen.
+    // The window's <AppDataLocation>/library.sqlite (~/.local/share/Toffee/Toffee/library.sqlite), for the
+    // window and toffee-cli alike: where the library lives when nothing else is chosen.
     [[nodiscard]] static LibraryLocation standard();
     // "sqlite:/home/…/library.sqlite", as a setting or --library takes it back.
     [[nodiscard]] QString text() const;

@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
@@ -477,6 +478,36 @@ private Q_SLOTS:
                 && s.window.statusBar()->currentMessage().contains(
                     u"shorter than its trend predicts (±0.1): check the tip"_s),
             qPrintable(s.window.statusBar()->currentMessage()));
+    }
+
+    // The operator records that a program ran: each tool's cutting time goes into the library and the table.
+    void aProgramRunGivesEachToolItsCuttingTime()
+    {
+        Station s;
+        QVERIFY(s.window.openFile(kExample));
+        QTemporaryDir dir;
+        const QString program = dir.filePath(u"pocket.nc"_s);
+        QFile file(program);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("M6 T2\nG0 X0 Y0\nG1 X600 F600\nM6 T3\nG1 X0 F1200\nG2 X0 Y0 I5\nM30\n");
+        file.close();
+        const auto recorded = s.window.recordProgramRun(program);
+        QVERIFY2(recorded, qPrintable(recorded.error().message));
+        QCOMPARE(recorded.value(), 2);
+        QCOMPARE(s.cell(2, ToolTableModel::CuttingTimeColumn), u"1 min"_s); // 600 mm at 600 mm/min
+        QCOMPARE(
+            s.cell(3, ToolTableModel::CuttingTimeColumn), u"32 s"_s); // 600 mm and a 10π mm circle at 1200
+        QVERIFY(s.cell(1, ToolTableModel::CuttingTimeColumn).isEmpty());
+        QCOMPARE(
+            s.window.history()->library()->uses(u"Carvera"_s, 2).value().front().program, u"pocket.nc"_s);
+        // A program the interpreter refuses records nothing.
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("M6 T2\nG1 X10 F100\nG2 X50 Y0 R10\n");
+        file.close();
+        const auto refused = s.window.recordProgramRun(program);
+        QVERIFY(!refused);
+        QVERIFY(refused.error().message.contains(u"Nothing was recorded"_s));
+        QCOMPARE(s.cell(2, ToolTableModel::CuttingTimeColumn), u"1 min"_s);
     }
 
     void theStatusBarNeverSaysDisconnectedWhileConnected()

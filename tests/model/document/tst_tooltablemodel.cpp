@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QAbstractItemModelTester>
+#include <QLocale>
 #include <QSignalSpy>
 #include <QSortFilterProxyModel>
 #include <QTest>
@@ -227,6 +228,51 @@ private Q_SLOTS:
         proxy.setFilterFixedString(u"BALL"_s);
         QCOMPARE(proxy.rowCount(), 1);
         QCOMPARE(proxy.index(0, 0).data(ToolTableModel::ToolNumberRole).toInt(), 10);
+    }
+
+    void showsWhenAToolWasMeasuredAsAnAgeAndMarksItStale()
+    {
+        const QDateTime now = QDateTime::currentDateTimeUtc();
+        QCOMPARE(ToolTableModel::ageText(now.addSecs(-20), now), u"just now"_s);
+        QCOMPARE(ToolTableModel::ageText(now.addSecs(-12 * 60), now), u"12 min ago"_s);
+        QCOMPARE(ToolTableModel::ageText(now.addSecs(-3 * 3600 - 59), now), u"3 h ago"_s);
+        QCOMPARE(ToolTableModel::ageText(now.addDays(-9), now), u"9 days ago"_s);
+        Tool fresh { 1, 1, {}, 10, 0, 1, 0, -1.0, now.addSecs(-3 * 3600), {}, {} };
+        Tool old { 2, 2, {}, 10, 0, 1, 0, -2.0, now.addDays(-8), {}, {} };
+        Tool never { 3, 3, {}, 10, 0, 1, 0, {}, {}, {}, {} };
+        ToolTableModel model;
+        model.resetTable(ToolTable::fromTools({ fresh, old, never }, Units::Millimetre).takeValue());
+        auto cell = [&model](int row, int role = Qt::DisplayRole) {
+            return model.index(row, ToolTableModel::MeasuredAtColumn).data(role);
+        };
+        QCOMPARE(cell(0).toString(), u"3 h ago"_s);
+        QCOMPARE(cell(1).toString(), u"8 days ago (stale)"_s);
+        QVERIFY(cell(1, Qt::ForegroundRole).isValid());
+        QVERIFY(!cell(0, Qt::ForegroundRole).isValid());
+        QVERIFY(!cell(2).isValid()); // never measured: no age
+        QCOMPARE(cell(1, Qt::ToolTipRole).toString(), // the full date, on hovering
+            QLocale().toString(old.measuredAt.toLocalTime(), QLocale::LongFormat));
+        QCOMPARE(cell(1, ToolTableModel::SortRole).toDateTime(), old.measuredAt);
+        QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+        model.setStaleAfterDays(10); // the setting: eight days is fresh again
+        QCOMPARE(changed.size(), 1);
+        QCOMPARE(cell(1).toString(), u"8 days ago"_s);
+    }
+
+    void showsEachToolsCuttingTime()
+    {
+        QCOMPARE(ToolTableModel::durationText(42), u"42 s"_s);
+        QCOMPARE(ToolTableModel::durationText(25 * 60 + 10), u"25 min"_s);
+        QCOMPARE(ToolTableModel::durationText(3 * 3600 + 5 * 60), u"3 h 05 min"_s);
+        ToolTableModel model;
+        model.resetTable(
+            ToolTable::fromTools({ Test::tool(4), Test::tool(5) }, Units::Millimetre).takeValue());
+        model.setCuttingTimes({ { model.table().tools().front().number, 754.5 } });
+        QCOMPARE(model.index(0, ToolTableModel::CuttingTimeColumn).data().toString(), u"13 min"_s);
+        QCOMPARE(model.index(0, ToolTableModel::CuttingTimeColumn).data(ToolTableModel::SortRole).toDouble(),
+            754.5);
+        QVERIFY(!model.index(1, ToolTableModel::CuttingTimeColumn).data().isValid()); // none recorded
+        QVERIFY(!(model.flags(model.index(0, ToolTableModel::CuttingTimeColumn)) & Qt::ItemIsEditable));
     }
 
     void headersAreTranslatable()
