@@ -66,6 +66,7 @@ bench: build
 	$(BUILD_DIR)/bin/toffee-bench-table
 	$(BUILD_DIR)/bin/toffee-bench-interpreter 1000000
 	$(BUILD_DIR)/bin/toffee-bench-library 1000000
+	QT_QPA_PLATFORM=offscreen $(BUILD_DIR)/bin/toffee-bench-historychart 10000
 	$(BUILD_DIR)/bin/toffee-cli --emulator link-test --count 10000
 	@link=$$(mktemp -u /tmp/toffee-bench-tty.XXXXXX); \
 	$(BUILD_DIR)/bin/toffee-emulator --link $$link > /dev/null & pid=$$!; \

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include <QAbstractTableModel>
 #include <QAreaSeries>
 #include <QChart>
 #include <QChartView>
@@ -14,10 +15,9 @@
 #include <QLabel>
 #include <QLineSeries>
 #include <QLocale>
+#include <QPainter>
 #include <QPushButton>
-#include <QScatterSeries>
 #include <QSplitter>
-#include <QStandardItemModel>
 #include <QTableView>
 #include <QVBoxLayout>
 #include <QValueAxis>
@@ -33,15 +33,34 @@ namespace Toffee {
 
 namespace {
 
-QScatterSeries *markers(
-    const QString &name, QScatterSeries::MarkerShape shape, const QColor &color, qreal size)
+enum class MarkerShape { Circle, Triangle, Square };
+
+// Points drawn as light markers on an invisible line: one chart item for the whole series, so ten thousand
+// measurements draw in milliseconds (a QScatterSeries makes an item per point).
+QLineSeries *markers(const QString &name, MarkerShape shape, const QColor &color, int size)
 {
-    auto *series = new QScatterSeries;
+    QImage image(size, size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(color.darker(140), 1));
+    painter.setBrush(color);
+    const QRectF box(0.5, 0.5, size - 1.0, size - 1.0);
+    if (shape == MarkerShape::Circle) {
+        painter.drawEllipse(box);
+    } else if (shape == MarkerShape::Square) {
+        painter.drawRect(box.adjusted(1, 1, -1, -1));
+    } else {
+        painter.drawPolygon(
+            QPolygonF({ QPointF(box.center().x(), box.top()), box.bottomRight(), box.bottomLeft() }));
+    }
+    painter.end();
+    auto *series = new QLineSeries;
     series->setName(name);
-    series->setMarkerShape(shape);
-    series->setMarkerSize(size);
+    series->setPen(Qt::NoPen);
     series->setColor(color);
-    series->setBorderColor(color.darker(130));
+    series->setLightMarker(image);
+    series->setMarkerSize(size);
     return series;
 }
 
@@ -69,13 +88,88 @@ QString lengthCell(std::optional<double> v)
 
 } // namespace
 
+// The measurements, newest first, formatted only when a view asks: ten thousand rows cost no items.
+class HistoryTableModel final : public QAbstractTableModel
+{
+public:
+    enum Column { Time, Kind, Tlo, Reference, Current, Tolerance, OldTlo, NewTlo, Verdict, ColumnCount };
+
+    explicit HistoryTableModel(QObject *parent)
+        : QAbstractTableModel(parent)
+    { }
+    void setEvents(const QList<HistoryEvent> *events, const QColor &alarm)
+    {
+        beginResetModel();
+        m_events = events;
+        m_alarm = alarm;
+        endResetModel();
+    }
+    int rowCount(const QModelIndex &parent = {}) const override
+    {
+        return parent.isValid() || !m_events ? 0 : int(m_events->size());
+    }
+    int columnCount(const QModelIndex &parent = {}) const override
+    {
+        return parent.isValid() ? 0 : ColumnCount;
+    }
+    QVariant headerData(int section, Qt::Orientation orientation, int role) const override
+    {
+        if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+            return {};
+        const QString names[] = { HistoryDock::tr("Time"), HistoryDock::tr("Kind"), HistoryDock::tr("TLO"),
+            HistoryDock::tr("Reference Z"), HistoryDock::tr("Current Z"), HistoryDock::tr("Tolerance"),
+            HistoryDock::tr("Old TLO"), HistoryDock::tr("New TLO"), HistoryDock::tr("Result") };
+        return section >= 0 && section < ColumnCount ? names[section] : QVariant();
+    }
+    QVariant data(const QModelIndex &index, int role) const override
+    {
+        if (!index.isValid() || !m_events)
+            return {};
+        const HistoryEvent &e = m_events->at(m_events->size() - 1 - index.row()); // newest first
+        if (role == Qt::TextAlignmentRole)
+            return index.column() >= Tlo && index.column() <= NewTlo
+                ? QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter)
+                : QVariant();
+        if (role == Qt::ForegroundRole && index.column() == Verdict && e.failed.value_or(false))
+            return m_alarm;
+        if (role != Qt::DisplayRole)
+            return {};
+        switch (index.column()) {
+        case Time:
+            return QLocale().toString(e.at.toLocalTime(), QLocale::ShortFormat);
+        case Kind:
+            return kindText(e.kind);
+        case Tlo:
+            return lengthCell(e.tlo);
+        case Reference:
+            return lengthCell(e.referenceMz);
+        case Current:
+            return lengthCell(e.currentMz);
+        case Tolerance:
+            return lengthCell(e.tolerance);
+        case OldTlo:
+            return lengthCell(e.oldTlo);
+        case NewTlo:
+            return lengthCell(e.newTlo);
+        case Verdict:
+            return !e.failed ? QString() : *e.failed ? HistoryDock::tr("BROKEN?") : HistoryDock::tr("passed");
+        default:
+            return {};
+        }
+    }
+
+private:
+    const QList<HistoryEvent> *m_events = nullptr;
+    QColor m_alarm;
+};
+
 HistoryDock::HistoryDock(HistoryRecorder *recorder, QWidget *parent)
     : QDockWidget(tr("History"), parent)
     , m_recorder(recorder)
     , m_title(new QLabel(this))
     , m_view(new QChartView(this))
     , m_table(new QTableView(this))
-    , m_model(new QStandardItemModel(this))
+    , m_model(new HistoryTableModel(this))
     , m_export(new QPushButton(tr("Export CSV…"), this))
     , m_copy(new QPushButton(tr("Copy Chart"), this))
 {
@@ -90,6 +184,7 @@ HistoryDock::HistoryDock(HistoryRecorder *recorder, QWidget *parent)
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setResizeContentsPrecision(200);
     m_table->setAccessibleName(tr("Measurements"));
     m_export->setObjectName(u"historyExportButton"_s);
     m_copy->setObjectName(u"historyCopyButton"_s);
@@ -175,13 +270,10 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
     chart->setBackgroundBrush(palette().brush(QPalette::Base));
     chart->setTitleBrush(text);
     chart->legend()->setLabelColor(text);
-    auto *probes
-        = markers(tr("Probes"), QScatterSeries::MarkerShapeCircle, palette().color(QPalette::Highlight), 8);
-    auto *passed
-        = markers(tr("Break test passed"), QScatterSeries::MarkerShapeTriangle, QColor(0x26, 0xa2, 0x69), 10);
-    auto *failed = markers(tr("Break test failed"), QScatterSeries::MarkerShapeTriangle, alarm, 12);
-    auto *manual
-        = markers(tr("Set by hand"), QScatterSeries::MarkerShapeRectangle, QColor(0x98, 0x6a, 0x44), 8);
+    auto *probes = markers(tr("Probes"), MarkerShape::Circle, palette().color(QPalette::Highlight), 8);
+    auto *passed = markers(tr("Break test passed"), MarkerShape::Triangle, QColor(0x26, 0xa2, 0x69), 11);
+    auto *failed = markers(tr("Break test failed"), MarkerShape::Triangle, alarm, 13);
+    auto *manual = markers(tr("Set by hand"), MarkerShape::Square, QColor(0x98, 0x6a, 0x44), 9);
     QList<QPointF> probeTimes;
     for (const HistoryEvent &e : m_events) {
         const qreal t = qreal(e.at.toMSecsSinceEpoch());
@@ -266,33 +358,8 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
 
 void HistoryDock::fillTable()
 {
-    m_model->clear();
-    m_model->setHorizontalHeaderLabels({ tr("Time"), tr("Kind"), tr("TLO"), tr("Reference Z"),
-        tr("Current Z"), tr("Tolerance"), tr("Old TLO"), tr("New TLO"), tr("Result") });
-    const QLocale locale;
-    // Newest first: the last measurement is the one an operator looks for.
-    for (auto it = m_events.crbegin(); it != m_events.crend(); ++it) {
-        const HistoryEvent &e = *it;
-        QList<QStandardItem *> row {
-            new QStandardItem(locale.toString(e.at.toLocalTime(), QLocale::ShortFormat)),
-            new QStandardItem(kindText(e.kind)),
-            new QStandardItem(lengthCell(e.tlo)),
-            new QStandardItem(lengthCell(e.referenceMz)),
-            new QStandardItem(lengthCell(e.currentMz)),
-            new QStandardItem(lengthCell(e.tolerance)),
-            new QStandardItem(lengthCell(e.oldTlo)),
-            new QStandardItem(lengthCell(e.newTlo)),
-            new QStandardItem(!e.failed ? QString()
-                    : *e.failed         ? tr("BROKEN?")
-                                        : tr("passed")),
-        };
-        for (qsizetype c = 2; c < 8; ++c)
-            row.at(c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        if (e.failed.value_or(false))
-            row.last()->setForeground(alarmColor(palette()));
-        m_model->appendRow(row);
-    }
-    m_table->resizeColumnsToContents();
+    m_model->setEvents(&m_events, alarmColor(palette()));
+    m_table->resizeColumnsToContents(); // from the first rows: the header's precision is bounded
 }
 
 QByteArray HistoryDock::csv() const

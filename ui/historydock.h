@@ -11,12 +11,12 @@ class QChart;
 class QChartView;
 class QLabel;
 class QPushButton;
-class QStandardItemModel;
 class QTableView;
 
 namespace Toffee {
 
 class HistoryRecorder;
+class HistoryTableModel;
 
 // One tool's history: a chart of its TLO over time (probes as points, break tests marked, failed ones in red,
 // the wear trend with a band of ± the tolerance around it) and the measurements as a table; Export as CSV and
@@ -49,7 +49,7 @@ private:
     QLabel *m_title;
     QChartView *m_view;
     QTableView *m_table;
-    QStandardItemModel *m_model;
+    HistoryTableModel *m_model;
     QPushButton *m_export;
     QPushButton *m_copy;
     int m_tool = -1;

@@ -6,7 +6,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineSeries>
-#include <QScatterSeries>
+#include <QXYSeries>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -42,13 +42,13 @@ HistoryEvent makeEvent(int tool, int hours, EventKind kind, double tlo, std::opt
     return e;
 }
 
-QScatterSeries *series(QChart *chart, const QString &name)
+QXYSeries *series(QChart *chart, const QString &name)
 {
     for (QAbstractSeries *s : chart->series()) {
         if (s->name() == name)
-            return qobject_cast<QScatterSeries *>(s);
+            return qobject_cast<QXYSeries *>(s);
     }
-    return nullptr;
+    qFatal("no series named %s", qPrintable(name));
 }
 
 } // namespace
@@ -110,7 +110,7 @@ private Q_SLOTS:
         QCOMPARE(dock.findChild<QLabel *>(u"historyTitle"_s)->text(), u"T2 on Carvera: 9 measurements"_s);
         QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 6);
         QCOMPARE(series(dock.chart(), u"Break test passed"_s)->points().size(), 1);
-        QScatterSeries *failed = series(dock.chart(), u"Break test failed"_s);
+        QXYSeries *failed = series(dock.chart(), u"Break test failed"_s);
         QCOMPARE(failed->points().size(), 1);
         QCOMPARE(failed->points().front().y(), -33.91); // drawn at what it measured
         QCOMPARE(failed->color(), alarmColor(dock.palette())); // in red
