@@ -3,15 +3,17 @@
 // the trend and its band, the table, and the CSV export.
 #include <QAreaSeries>
 #include <QChart>
+#include <QClipboard>
 #include <QFile>
+#include <QGuiApplication>
 #include <QLabel>
 #include <QLineSeries>
-#include <QXYSeries>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QValueAxis>
+#include <QXYSeries>
 
 #include "model/library/historyrecorder.h"
 #include "ui/appearance.h"
@@ -163,6 +165,18 @@ private Q_SLOTS:
         QVERIFY(lines.at(8).contains(",break_test,-33.41,,,0.1,-33.41,-33.91,1"));
         // A folder where the file should be: the export fails with the system's reason, nothing written.
         QVERIFY(!dock.exportCsv(m_dir.path()));
+    }
+
+    void copiesTheChartAsAnImage()
+    {
+        HistoryDock dock(&m_recorder);
+        dock.resize(700, 400);
+        dock.showTool(2, u"Carvera"_s, 0.1);
+        QGuiApplication::clipboard()->clear();
+        dock.copyChart();
+        const QImage copied = QGuiApplication::clipboard()->image();
+        QVERIFY(!copied.isNull());
+        QVERIFY(copied.width() > 300 && copied.height() > 100);
     }
 
     void followsWhatIsRecordedForItsTool()

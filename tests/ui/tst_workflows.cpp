@@ -463,6 +463,23 @@ private Q_SLOTS:
         QSqlDatabase::removeDatabase(u"other-program"_s);
     }
 
+    // A library that is not one (a folder here) is named in the status bar; the table and the machine work
+    // on, and the measurement waits for a library.
+    void aLibraryThatIsNotOneLeavesTheTableUsable()
+    {
+        Station s;
+        QTemporaryDir dir;
+        s.window.setLibrary({ dir.path() });
+        QVERIFY(s.window.statusBar()->currentMessage().contains(dir.path() + u" is a folder"_s));
+        s.connect();
+        s.probe();
+        QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
+        QCOMPARE(s.window.history()->pendingCount(), 1);
+        s.window.setLibrary({ s.libraryPath() }); // a library again: what waited is written
+        QCOMPARE(s.window.history()->pendingCount(), 0);
+        QCOMPARE(s.window.history()->library()->history({}).value().size(), 1);
+    }
+
     // A tool that measures far off its trend is pointed out with numbers as soon as it is probed.
     void aProbeOffTheTrendIsPointedOut()
     {
