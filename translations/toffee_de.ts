@@ -1981,10 +1981,6 @@ Trotzdem speichern?</translation>
         <translation>&amp;Programmlauf aufzeichnen…</translation>
     </message>
     <message>
-        <source>%1: %2 Nothing was recorded.</source>
-        <translation>%1: %2 Es wurde nichts aufgezeichnet.</translation>
-    </message>
-    <message>
         <source>Record a Program Run</source>
         <translation>Programmlauf aufzeichnen</translation>
     </message>
@@ -2239,6 +2235,13 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>The table does not say which reference tool T%1&apos;s TLO was measured against: make sure it is the reference the machine has now.</source>
         <translation>Die Tabelle sagt nicht, gegen welches Referenzwerkzeug die TLO von T%1 gemessen wurde: Stellen Sie sicher, dass es die Referenz ist, die die Maschine jetzt hat.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ProgramUse</name>
+    <message>
+        <source>%1 Nothing was recorded.</source>
+        <translation>%1 Es wurde nichts aufgezeichnet.</translation>
     </message>
 </context>
 <context>

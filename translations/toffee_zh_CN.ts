@@ -1981,10 +1981,6 @@ Save anyway?</source>
         <translation>记录程序运行(&amp;R)…</translation>
     </message>
     <message>
-        <source>%1: %2 Nothing was recorded.</source>
-        <translation>%1：%2 未记录任何内容。</translation>
-    </message>
-    <message>
         <source>Record a Program Run</source>
         <translation>记录程序运行</translation>
     </message>
@@ -2239,6 +2235,13 @@ Probe T%1 instead.</source>
     <message>
         <source>The table does not say which reference tool T%1&apos;s TLO was measured against: make sure it is the reference the machine has now.</source>
         <translation>刀具表未记录 T%1 的 TLO 是相对于哪把基准刀具测得的：请确认它就是机床当前的基准。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ProgramUse</name>
+    <message>
+        <source>%1 Nothing was recorded.</source>
+        <translation>%1 未记录任何内容。</translation>
     </message>
 </context>
 <context>

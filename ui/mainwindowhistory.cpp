@@ -17,6 +17,7 @@
 #include "model/formats/fileio.h"
 #include "model/gcode/gcodeinterpreter.h"
 #include "model/library/historyrecorder.h"
+#include "model/library/programuse.h"
 #include "model/library/weartrend.h"
 #include "ui/appsettings.h"
 #include "ui/historydock.h"
@@ -84,24 +85,11 @@ void MainWindow::refreshToolLife()
 
 Result<int> MainWindow::recordProgramRun(const QString &path)
 {
-    constexpr qint64 kMaxProgramBytes = 512LL * 1024 * 1024;
-    const auto read = readRegularFile(path, kMaxProgramBytes);
-    if (!read)
-        return read.error();
-    GCodeInterpreter interpreter(Dialect::Carvera);
-    interpreter.setRecordMoves(false);
-    if (auto ran = interpreter.run(read.value()); !ran)
-        return Error { tr("%1: %2 Nothing was recorded.").arg(path, ran.error().text()) };
-    const QString machine = AppSettings().machineName();
-    const QDateTime now = QDateTime::currentDateTimeUtc();
-    QList<ToolUse> uses;
-    for (const auto &[tool, usage] : interpreter.toolUsage()) {
-        if (tool >= 0)
-            uses.append({ HistoryEvent::newId(), machine, tool, now, QFileInfo(path).fileName(),
-                usage.cuttingSeconds, usage.feedPathMm });
-    }
-    m_history->recordUse(uses);
-    return int(uses.size());
+    auto program = ProgramUse::read(path, Dialect::Carvera, AppSettings().machineName());
+    if (!program)
+        return program.error();
+    m_history->recordUse(program.value().uses);
+    return int(program.value().uses.size());
 }
 
 void MainWindow::recordProgramRun()
@@ -112,7 +100,7 @@ void MainWindow::recordProgramRun()
         return;
     const auto recorded = recordProgramRun(path);
     if (!recorded)
-        return showError(tr("The program run was not recorded"), recorded.error().message);
+        return showError(tr("The program run was not recorded"), recorded.error().text());
     statusBar()->showMessage(tr("Recorded the cutting time of %1 tools from %2.")
                                  .arg(recorded.value())
                                  .arg(QFileInfo(path).fileName()),

@@ -12,6 +12,7 @@
 #include "model/gcode/dialect.h"
 #include "model/gcode/gcodeinterpreter.h"
 #include "model/library/library.h"
+#include "model/library/programuse.h"
 #include "model/numberformat.h"
 #include "model/textparsing.h"
 
@@ -109,22 +110,11 @@ int addUse(Invocation &call)
     const auto dialect = programDialect(call, *library.value(), machine);
     if (!dialect)
         return fail(call, u"--dialect is not a dialect Toffee knows."_s, BadInput);
-    constexpr qint64 kMaxProgramBytes = 512LL * 1024 * 1024;
     const QString path = call.option(u"program"_s);
-    const auto read = readRegularFile(path, kMaxProgramBytes);
-    if (!read)
-        return fail(call, read.error().text(), BadInput);
-    GCodeInterpreter interpreter(*dialect);
-    interpreter.setRecordMoves(false);
-    if (auto ran = interpreter.run(read.value()); !ran)
-        return fail(call, u"%1: %2 Nothing was recorded."_s.arg(path, ran.error().text()), MachineError);
-    const QDateTime now = QDateTime::currentDateTimeUtc();
-    QList<ToolUse> uses;
-    for (const auto &[tool, usage] : interpreter.toolUsage()) {
-        if (tool >= 0)
-            uses.append({ HistoryEvent::newId(), machine, tool, now, QFileInfo(path).fileName(),
-                usage.cuttingSeconds, usage.feedPathMm });
-    }
+    const auto program = ProgramUse::read(path, *dialect, machine);
+    if (!program)
+        return fail(call, program.error().text(), program.error().line > 0 ? MachineError : BadInput);
+    const QList<ToolUse> &uses = program.value().uses;
     if (auto written = library.value()->appendUse(uses); !written)
         return fail(call, written.error().message, MachineError);
     if (call.json) {
@@ -134,7 +124,7 @@ int addUse(Invocation &call)
                 { u"feed_path_mm"_s, u.feedPathMm } });
         printJson(call,
             QJsonObject { { u"machine"_s, machine }, { u"program"_s, path }, { u"tools"_s, list },
-                { u"rapid_mm"_s, interpreter.rapidDistance() } });
+                { u"rapid_mm"_s, program.value().rapidMm } });
         return Success;
     }
     for (const ToolUse &u : uses)
