@@ -33,9 +33,11 @@ The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMM
   set-tlo --above-z0 H       set the TLO from the current position, the tip H above work Z0 (M493.3 H)
   select-tool N              make tool N active without a change (M493.2 T)
   change-tool N              change to tool N and measure it (M6 T); the machine moves
+  restore N --table FILE     set the TLO the table holds for tool N on the machine (M493.2 T, M493.3 Z),
+                             when it was measured against the machine's reference
   unlock                     clear a halt ($X)
   link-test --count N        N round trips; median, p99 and max in milliseconds
-  probe, break-test, set-tlo and change-tool record every measurement in the history library
+  probe, break-test, set-tlo, change-tool and restore record every measurement in the history library
   (--machine NAME, default Carvera), and warn when a probe is off its tool's wear trend
 
 The history: toffee-cli history [--machine NAME] [--tool N] [--since DATE] [--json | --csv]

@@ -25,7 +25,7 @@ namespace Toffee::Cli {
 namespace {
 
 const QStringList kMachineCommands = { u"status"_s, u"report"_s, u"probe"_s, u"break-test"_s, u"set-tlo"_s,
-    u"select-tool"_s, u"change-tool"_s, u"unlock"_s, u"link-test"_s };
+    u"select-tool"_s, u"change-tool"_s, u"restore"_s, u"unlock"_s, u"link-test"_s };
 
 ExitCode exitCodeFor(SessionResult::Outcome outcome)
 {
@@ -164,6 +164,9 @@ private:
 
     void operate();
     void linkTest();
+    // Sets the table's TLO for the tool back on the machine, when it was measured against the machine's
+    // reference.
+    bool restore();
     void roundTrip();
     void finishWith(const SessionResult &r);
     [[nodiscard]] bool record(const SessionResult &r);
@@ -287,6 +290,8 @@ void MachineRun::operate()
             if (r.breakTest)
                 (void)record(r);
         }));
+    else if (command == u"restore")
+        started = restore();
     else if (command == u"select-tool")
         started = c.selectTool(
             m_options.tool, printed([this](const SessionResult &r) { printSelected(m_call, r); }));
@@ -300,6 +305,33 @@ void MachineRun::operate()
         refused.message = c.haltedMessage();
         finishWith(refused);
     }
+}
+
+bool MachineRun::restore()
+{
+    const Tool *tool = m_options.table->find(m_options.tool);
+    // The offsets read on connecting: the reference the machine has now.
+    const auto &offsets = m_connection.connectResult().tlo;
+    const double machineReference = offsets ? offsets->referenceMz : 0.0;
+    QString refusal;
+    if (machineReference == 0.0)
+        refusal
+            = u"the machine has no reference tool measured since it started, and a stored TLO is only right "
+              "against its own reference: probe the reference tool first."_s;
+    else if (tool->referenceMz && std::fabs(*tool->referenceMz - machineReference) > 0.0005)
+        refusal = u"T%1's TLO %2 mm was measured against reference MCS Z %3, but the machine's reference is "
+                  u"%4 now "
+                  "(%5 mm apart): probe T%1 instead."_s.arg(m_options.tool)
+                      .arg(mm(*tool->measuredTlo), mm(*tool->referenceMz), mm(machineReference),
+                          mm(std::fabs(*tool->referenceMz - machineReference)));
+    if (!refusal.isEmpty()) {
+        SessionResult refused;
+        refused.outcome = SessionResult::Outcome::Refused;
+        refused.message = refusal;
+        finishWith(refused);
+        return true;
+    }
+    return m_connection.restoreTlo(m_options.tool, *tool->measuredTlo, recorded());
 }
 
 // N round trips of "G90" on the link itself, polling off: the link's own latency, not an operation's.

@@ -49,7 +49,7 @@ Result<void> readTarget(const Invocation &call, MachineOptions &o)
 
 bool wantsTool(const Invocation &call)
 {
-    return call.command == u"select-tool" || call.command == u"change-tool";
+    return call.command == u"select-tool" || call.command == u"change-tool" || call.command == u"restore";
 }
 
 Result<void> countArguments(const Invocation &call, MachineOptions &)
@@ -121,6 +121,19 @@ Result<void> openTable(const Invocation &call, MachineOptions &o)
     return {};
 }
 
+// restore N sets the TLO the table holds for N: the table must have one.
+Result<void> checkRestore(const Invocation &call, MachineOptions &o)
+{
+    if (call.command != u"restore")
+        return {};
+    if (!o.table)
+        return Error { u"restore sets the TLO the table holds: name the table with --table FILE."_s };
+    const Tool *tool = o.table->find(o.tool);
+    if (!tool || !tool->measuredTlo)
+        return Error { u"T%1 has no measured TLO in %2: probe it instead."_s.arg(o.tool).arg(o.tablePath) };
+    return {};
+}
+
 Result<void> openHistory(const Invocation &call, MachineOptions &o)
 {
     o.machine = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
@@ -151,8 +164,8 @@ Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call)
 Result<MachineOptions> readMachineOptions(const Invocation &call)
 {
     MachineOptions o;
-    for (auto read :
-        { countArguments, choosePort, readTool, readTarget, readCommandOptions, openTable, openHistory }) {
+    for (auto read : { countArguments, choosePort, readTool, readTarget, readCommandOptions, openTable,
+             checkRestore, openHistory }) {
         if (auto r = read(call, o); !r)
             return r.error();
     }

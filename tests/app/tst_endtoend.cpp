@@ -234,6 +234,67 @@ private Q_SLOTS:
         QCOMPARE(machine({ u"report"_s }).exitCode, 0);
     }
 
+    // A stored TLO set back on the machine without probing, only against the reference it was measured with.
+    void restoresAStoredTloAndRecordsTheRestore()
+    {
+        const QString table = m_dir.filePath(u"restore.json"_s);
+        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table));
+        QFile::setPermissions(table, QFile::ReadOwner | QFile::WriteOwner);
+        {
+            Emulator fresh(tty(), {});
+            QVERIFY(fresh.started());
+            // A machine that has measured nothing since it started: no reference to restore against.
+            const Run refused = machine({ u"--table"_s, table, u"restore"_s, u"2"_s });
+            QCOMPARE(refused.exitCode, 2);
+            QVERIFY2(refused.err.contains("probe the reference tool first"), refused.err.constData());
+        }
+        Emulator emulator(tty(), {});
+        QVERIFY(emulator.started());
+        QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0); // T1, the reference
+        QCOMPARE(machine({ u"--table"_s, table, u"change-tool"_s, u"2"_s }).exitCode, 0); // T2: -33.388
+        QCOMPARE(machine({ u"select-tool"_s, u"1"_s }).exitCode, 0);
+        QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0);
+
+        const Run run = machine({ u"--table"_s, table, u"restore"_s, u"2"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(json(run).value(u"tool"_s).toInt(), 2);
+        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"-33.388"_s);
+        QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"tlo"_s)), u"-33.388"_s);
+        const QJsonArray events
+            = json(cli({ u"--json"_s, u"--library"_s, library(), u"history"_s, u"--tool"_s, u"2"_s }))
+                  .value(u"events"_s)
+                  .toArray();
+        QCOMPARE(events.last()[u"kind"_s].toString(), u"restore"_s);
+        QCOMPARE(fixed3(events.last()[u"tlo"_s]), u"-33.388"_s);
+
+        // T3 has no TLO in the table: nothing to restore, nothing sent.
+        const Run none = machine({ u"--table"_s, table, u"restore"_s, u"3"_s });
+        QCOMPARE(none.exitCode, 2);
+        QVERIFY(none.err.contains("T3 has no measured TLO"));
+    }
+
+    void refusesToRestoreAgainstAnotherReference()
+    {
+        const QString table = m_dir.filePath(u"other-reference.json"_s);
+        {
+            Emulator emulator(tty(), {});
+            QVERIFY(emulator.started());
+            QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table));
+            QFile::setPermissions(table, QFile::ReadOwner | QFile::WriteOwner);
+            QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0);
+            QCOMPARE(
+                machine({ u"--table"_s, table, u"change-tool"_s, u"2"_s }).exitCode, 0); // against -72.300
+        }
+        // Another day, a reference 10 mm lower: T2's stored TLO would be 10 mm off.
+        Emulator emulator(tty(), { u"--fixed-reference"_s, u"-82.3"_s });
+        QVERIFY(emulator.started());
+        const QJsonObject before = json(machine({ u"report"_s }));
+        const Run run = machine({ u"--table"_s, table, u"restore"_s, u"2"_s });
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains("(10.000 mm apart): probe T2 instead"), run.err.constData());
+        QCOMPARE(json(machine({ u"report"_s })), before); // nothing was set
+    }
+
     void aLibraryThatIsNotOneIsRefusedBeforeTheMachineMoves()
     {
         Emulator emulator(tty(), {});
