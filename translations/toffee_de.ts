@@ -1260,6 +1260,57 @@
     </message>
 </context>
 <context>
+    <name>Toffee::HistorySettingsDialog</name>
+    <message>
+        <source>History Library</source>
+        <translation>Verlaufsbibliothek</translation>
+    </message>
+    <message>
+        <source>Library file</source>
+        <translation>Bibliotheksdatei</translation>
+    </message>
+    <message>
+        <source>Machine name</source>
+        <translation>Maschinenname</translation>
+    </message>
+    <message>
+        <source> days</source>
+        <translation> Tage</translation>
+    </message>
+    <message>
+        <source>Stale after</source>
+        <translation>Veraltet nach</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Library file:</source>
+        <translation>Bibliotheksdatei:</translation>
+    </message>
+    <message>
+        <source>This machine&apos;s name:</source>
+        <translation>Name dieser Maschine:</translation>
+    </message>
+    <message>
+        <source>A measurement is stale after:</source>
+        <translation>Eine Messung ist veraltet nach:</translation>
+    </message>
+    <message>
+        <source>SQLite libraries (*.sqlite *.db);;All files (*)</source>
+        <translation>SQLite-Bibliotheken (*.sqlite *.db);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Give this machine a name: its history is kept under it.</source>
+        <translation>Geben Sie dieser Maschine einen Namen: Ihr Verlauf wird darunter geführt.</translation>
+    </message>
+    <message>
+        <source>This library cannot be used: %1</source>
+        <translation>Diese Bibliothek lässt sich nicht verwenden: %1</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::JsonScanner</name>
     <message>
         <source>this is not valid JSON: expected %1.</source>
@@ -1995,6 +2046,10 @@ Trotzdem speichern?</translation>
     <message>
         <source>Recorded the cutting time of %1 tools from %2.</source>
         <translation>Die Schnittzeit von %1 Werkzeugen aus %2 wurde aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>History &amp;Library…</source>
+        <translation>&amp;Verlaufsbibliothek…</translation>
     </message>
 </context>
 <context>

@@ -1260,6 +1260,57 @@
     </message>
 </context>
 <context>
+    <name>Toffee::HistorySettingsDialog</name>
+    <message>
+        <source>History Library</source>
+        <translation>历史库</translation>
+    </message>
+    <message>
+        <source>Library file</source>
+        <translation>库文件</translation>
+    </message>
+    <message>
+        <source>Machine name</source>
+        <translation>机器名称</translation>
+    </message>
+    <message>
+        <source> days</source>
+        <translation> 天</translation>
+    </message>
+    <message>
+        <source>Stale after</source>
+        <translation>过期时间</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>Library file:</source>
+        <translation>库文件：</translation>
+    </message>
+    <message>
+        <source>This machine&apos;s name:</source>
+        <translation>本机名称：</translation>
+    </message>
+    <message>
+        <source>A measurement is stale after:</source>
+        <translation>测量结果过期时间：</translation>
+    </message>
+    <message>
+        <source>SQLite libraries (*.sqlite *.db);;All files (*)</source>
+        <translation>SQLite 库 (*.sqlite *.db);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Give this machine a name: its history is kept under it.</source>
+        <translation>请为本机命名：其历史记录以此名称保存。</translation>
+    </message>
+    <message>
+        <source>This library cannot be used: %1</source>
+        <translation>无法使用此库：%1</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::JsonScanner</name>
     <message>
         <source>this is not valid JSON: expected %1.</source>
@@ -1995,6 +2046,10 @@ Save anyway?</source>
     <message>
         <source>Recorded the cutting time of %1 tools from %2.</source>
         <translation>已记录 %2 中 %1 把刀具的切削时间。</translation>
+    </message>
+    <message>
+        <source>History &amp;Library…</source>
+        <translation>历史库(&amp;L)…</translation>
     </message>
 </context>
 <context>

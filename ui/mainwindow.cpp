@@ -281,6 +281,8 @@ void MainWindow::createMachineActions()
     machine->addSeparator();
     add(u"actionRecordRun"_s, tr("&Record a Program Run…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
         [this] { recordProgramRun(); });
+    add(u"actionHistorySettings"_s, tr("History &Library…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+        [this] { editHistorySettings(); });
     QMenu *view = menuBar()->addMenu(tr("&View"));
     QAction *machineView = m_machineDock->toggleViewAction();
     machineView->setObjectName(u"actionShowMachine"_s);

@@ -83,6 +83,8 @@ private:
     void refreshToolLife();
     // File ▸ Record a Program Run…: the program ran on this machine; each tool's cutting time is recorded.
     void recordProgramRun();
+    // Machine ▸ History Library…: the library, this machine's name in it, the stale limit.
+    void editHistorySettings();
     void exportHistory();
     void readSettings();
     void writeSettings();

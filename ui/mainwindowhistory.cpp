@@ -21,6 +21,7 @@
 #include "model/library/weartrend.h"
 #include "ui/appsettings.h"
 #include "ui/historydock.h"
+#include "ui/historysettingsdialog.h"
 #include "ui/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
@@ -105,6 +106,22 @@ void MainWindow::recordProgramRun()
                                  .arg(recorded.value())
                                  .arg(QFileInfo(path).fileName()),
         8000);
+}
+
+void MainWindow::editHistorySettings()
+{
+    HistorySettingsDialog dialog(this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    AppSettings settings;
+    settings.setLibraryLocation(dialog.location());
+    settings.setMachineName(dialog.machineName());
+    settings.setStaleAfterDays(dialog.staleAfterDays());
+    m_document->model()->setStaleAfterDays(dialog.staleAfterDays());
+    if (auto location = LibraryLocation::parse(dialog.location()))
+        setLibrary(location.value());
+    refreshToolLife();
+    showSelectedHistory();
 }
 
 void MainWindow::showSelectedHistory()

@@ -7,6 +7,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDialog>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileDialog>
@@ -16,6 +17,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QSqlDatabase>
 #include <QSqlQuery>
 #include <QStandardPaths>
@@ -33,6 +35,7 @@
 #include "serial/machineconnection.h"
 #include "tests/support/messageboxes.h"
 #include "tests/support/station.h"
+#include "ui/appsettings.h"
 #include "ui/consoledock.h"
 #include "ui/exportdialog.h"
 #include "ui/machinedock.h"
@@ -478,6 +481,39 @@ private Q_SLOTS:
         s.window.setLibrary({ s.libraryPath() }); // a library again: what waited is written
         QCOMPARE(s.window.history()->pendingCount(), 0);
         QCOMPARE(s.window.history()->library()->history({}).value().size(), 1);
+    }
+
+    // Machine ▸ History Library…: another library and another machine name; a folder is refused with the
+    // dialog still open.
+    void theHistoryLibraryAndTheMachinesNameAreChosenInADialog()
+    {
+        Station s;
+        QTemporaryDir dir;
+        const QString other = dir.filePath(u"shop.sqlite"_s);
+        QString refusal;
+        QTimer::singleShot(0, [&] {
+            auto *dialog = qobject_cast<QDialog *>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            dialog->findChild<QLineEdit *>(u"libraryPathEdit"_s)->setText(dir.path()); // a folder
+            answerNextBox(QMessageBox::Ok, &refusal);
+            dialog->accept();
+            QVERIFY(dialog->isVisible()); // refused: still open
+            dialog->findChild<QLineEdit *>(u"libraryPathEdit"_s)->setText(other);
+            dialog->findChild<QLineEdit *>(u"machineNameEdit"_s)->setText(u"Mill 2"_s);
+            dialog->findChild<QSpinBox *>(u"staleDaysSpin"_s)->setValue(3);
+            dialog->accept();
+        });
+        s.trigger(u"actionHistorySettings"_s);
+        QVERIFY2(refusal.contains(u"is a folder"_s), qPrintable(refusal));
+        QCOMPARE(AppSettings().machineName(), u"Mill 2"_s);
+        QCOMPARE(AppSettings().staleAfterDays(), 3);
+        QCOMPARE(s.window.document()->model()->staleAfterDays(), 3);
+        QCOMPARE(s.window.history()->location().path, other);
+        s.connect();
+        s.probe();
+        const auto events = s.window.history()->library()->history({}).value();
+        QCOMPARE(events.size(), 1);
+        QCOMPARE(events.front().machine, u"Mill 2"_s);
     }
 
     // A tool that measures far off its trend is pointed out with numbers as soon as it is probed.

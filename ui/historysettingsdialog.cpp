@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/historysettingsdialog.h"
+
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSpinBox>
+
+#include "model/library/library.h"
+#include "ui/appsettings.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+HistorySettingsDialog::HistorySettingsDialog(QWidget *parent)
+    : QDialog(parent)
+    , m_path(new QLineEdit(this))
+    , m_machine(new QLineEdit(this))
+    , m_stale(new QSpinBox(this))
+{
+    setWindowTitle(tr("History Library"));
+    setObjectName(u"historySettingsDialog"_s);
+    const AppSettings settings;
+    const auto chosen = LibraryLocation::parse(settings.libraryLocation());
+    m_path->setText(chosen ? chosen.value().path : LibraryLocation::standard().path);
+    m_path->setObjectName(u"libraryPathEdit"_s);
+    m_path->setAccessibleName(tr("Library file"));
+    m_path->setMinimumWidth(420);
+    m_machine->setText(settings.machineName());
+    m_machine->setObjectName(u"machineNameEdit"_s);
+    m_machine->setAccessibleName(tr("Machine name"));
+    m_stale->setRange(1, 365);
+    m_stale->setSuffix(tr(" days"));
+    m_stale->setValue(settings.staleAfterDays());
+    m_stale->setObjectName(u"staleDaysSpin"_s);
+    m_stale->setAccessibleName(tr("Stale after"));
+
+    auto *browse = new QPushButton(tr("Browse…"), this);
+    connect(browse, &QPushButton::clicked, this, &HistorySettingsDialog::browse);
+    auto *pathRow = new QHBoxLayout;
+    pathRow->addWidget(m_path, 1);
+    pathRow->addWidget(browse);
+    auto *form = new QFormLayout;
+    form->addRow(tr("Library file:"), pathRow);
+    form->addRow(tr("This machine's name:"), m_machine);
+    form->addRow(tr("A measurement is stale after:"), m_stale);
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(buttons);
+}
+
+QString HistorySettingsDialog::location() const
+{
+    return LibraryLocation { m_path->text().trimmed() }.text();
+}
+
+QString HistorySettingsDialog::machineName() const
+{
+    return m_machine->text().trimmed();
+}
+
+int HistorySettingsDialog::staleAfterDays() const
+{
+    return m_stale->value();
+}
+
+void HistorySettingsDialog::browse()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("History Library"), m_path->text(),
+        tr("SQLite libraries (*.sqlite *.db);;All files (*)"), nullptr, QFileDialog::DontConfirmOverwrite);
+    if (!path.isEmpty())
+        m_path->setText(path);
+}
+
+// Checked before it is taken: a library that does not open stays out of the settings.
+void HistorySettingsDialog::accept()
+{
+    if (machineName().isEmpty()) {
+        QMessageBox::warning(
+            this, tr("History Library"), tr("Give this machine a name: its history is kept under it."));
+        return;
+    }
+    const auto location = LibraryLocation::parse(m_path->text());
+    auto opened
+        = location ? Library::open(location.value()) : Result<std::unique_ptr<Library>>(location.error());
+    if (!opened) {
+        QMessageBox::warning(
+            this, tr("History Library"), tr("This library cannot be used: %1").arg(opened.error().message));
+        return;
+    }
+    QDialog::accept();
+}
+
+} // namespace Toffee

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QDialog>
+
+class QLineEdit;
+class QSpinBox;
+
+namespace Toffee {
+
+// Machine ▸ History Library…: which library the window records into, this machine's name in it, and after how
+// many days a measurement is stale. A library that does not open is said so, and the dialog stays.
+class HistorySettingsDialog final : public QDialog
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(HistorySettingsDialog)
+
+public:
+    explicit HistorySettingsDialog(QWidget *parent = nullptr);
+
+    [[nodiscard]] QString location() const; // "sqlite:PATH"
+    [[nodiscard]] QString machineName() const;
+    [[nodiscard]] int staleAfterDays() const;
+
+    void accept() override;
+
+private:
+    void browse();
+
+    QLineEdit *m_path;
+    QLineEdit *m_machine;
+    QSpinBox *m_stale;
+};
+
+} // namespace Toffee
