@@ -19,6 +19,7 @@
 #include "model/library/historyrecorder.h"
 #include "model/library/programuse.h"
 #include "model/library/weartrend.h"
+#include "serial/machineconnection.h"
 #include "ui/appsettings.h"
 #include "ui/historydock.h"
 #include "ui/historysettingsdialog.h"
@@ -54,6 +55,12 @@ void MainWindow::connectHistory()
         &MainWindow::showSelectedHistory);
     connect(m_historyDock->exportButton(), &QPushButton::clicked, this, &MainWindow::exportHistory);
     connect(m_history, &HistoryRecorder::usesChanged, this, &MainWindow::refreshToolLife);
+    // The machine as the library knows it: its dialect and how the window reached it.
+    connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State state) {
+        if (state == MachineConnection::State::Connected && m_history->library())
+            (void)m_history->library()->addMachine(
+                { AppSettings().machineName(), u"carvera"_s, m_connection->description() });
+    });
     // Ages move on while the window is open: "3 h ago" becomes "4 h ago", and a tool turns stale.
     m_document->model()->setStaleAfterDays(AppSettings().staleAfterDays());
     auto *ages = new QTimer(this);

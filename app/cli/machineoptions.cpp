@@ -145,6 +145,13 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
             + u" Nothing was sent to the machine; use --no-history to measure without "
               "recording the history."_s };
     o.library = library.takeValue();
+    // The machine as the library knows it: a Carvera, and how it was reached this time.
+    if (o.library) {
+        const QString connection
+            = o.target.emulator ? u"emulator"_s : o.target.port + u' ' + QString::number(o.target.baud);
+        if (auto added = o.library->addMachine({ o.machine, u"carvera"_s, connection }); !added)
+            return Error { added.error().message + u" Nothing was sent to the machine."_s };
+    }
     return {};
 }
 

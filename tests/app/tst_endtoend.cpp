@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "model/library/library.h"
 #include "tests/support/processes.h"
 
 using namespace Qt::StringLiterals;
@@ -142,6 +143,14 @@ private Q_SLOTS:
         QCOMPARE(fixed3(events.at(3)[u"old_tlo"_s]), u"-30.488"_s);
         QCOMPARE(fixed3(events.at(3)[u"new_tlo"_s]), u"-33.388"_s);
         QCOMPARE(events.at(4)[u"machine"_s].toString(), u"Carvera"_s);
+        {
+            auto opened = Toffee::Library::open({ library() });
+            QVERIFY(opened);
+            const auto machines = opened.value()->machines().value();
+            QCOMPARE(machines.size(), 1);
+            QCOMPARE(machines.front().dialect, u"carvera"_s);
+            QCOMPARE(machines.front().connection, tty() + u" 115200"_s);
+        }
         const Run csv = cli({ u"--library"_s, library(), u"history"_s, u"--csv"_s });
         QCOMPARE(csv.exitCode, 0);
         QVERIFY(csv.out.startsWith("id,machine,tool,measured_at,kind,tlo,"));

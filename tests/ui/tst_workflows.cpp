@@ -514,6 +514,10 @@ private Q_SLOTS:
         const auto events = s.window.history()->library()->history({}).value();
         QCOMPARE(events.size(), 1);
         QCOMPARE(events.front().machine, u"Mill 2"_s);
+        const auto machines = s.window.history()->library()->machines().value();
+        QCOMPARE(machines.size(), 1);
+        QCOMPARE(machines.front().dialect, u"carvera"_s);
+        QCOMPARE(machines.front().connection, s.window.connection()->description());
     }
 
     // A tool that measures far off its trend is pointed out with numbers as soon as it is probed.
