@@ -268,6 +268,9 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
     const QColor alarm = alarmColor(palette());
     const QColor text = palette().color(QPalette::Text);
     chart->setBackgroundBrush(palette().brush(QPalette::Base));
+    // The axis labels in the user's decimal mark ("-33,400" in German), like every other number in the window.
+    chart->setLocalizeNumbers(true);
+    chart->setLocale(QLocale());
     chart->setTitleBrush(text);
     chart->legend()->setLabelColor(text);
     auto *probes = markers(tr("Probes"), MarkerShape::Circle, palette().color(QPalette::Highlight), 8);
@@ -323,6 +326,15 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
     tlo->setLabelFormat(u"%.3f"_s);
     chart->addAxis(time, Qt::AlignBottom);
     chart->addAxis(tlo, Qt::AlignLeft);
+    // Set once the chart's theme has dressed the axes: grid lines that stay in the background on the light and
+    // the dark palette alike.
+    const QColor grid = palette().color(QPalette::Text).lightness() > 128 ? QColor(0x55, 0x55, 0x55)
+                                                                          : QColor(0xd0, 0xd0, 0xd0);
+    for (QAbstractAxis *axis : { static_cast<QAbstractAxis *>(time), static_cast<QAbstractAxis *>(tlo) }) {
+        axis->setGridLineColor(grid);
+        axis->setLinePenColor(grid);
+        axis->setLabelsBrush(palette().color(QPalette::Text));
+    }
     qreal x0 = std::numeric_limits<qreal>::max();
     qreal x1 = std::numeric_limits<qreal>::lowest();
     qreal y0 = x0;

@@ -117,6 +117,7 @@ private Q_SLOTS:
         QCOMPARE(failed->points().front().y(), -33.91); // drawn at what it measured
         QCOMPARE(failed->color(), alarmColor(dock.palette())); // in red
         QCOMPARE(series(dock.chart(), u"Set by hand"_s)->points().size(), 1);
+        QVERIFY(dock.chart()->localizeNumbers()); // "-33,400" in German, like the rest of the window
         QLineSeries *trend = nullptr;
         QAreaSeries *band = nullptr;
         for (QAbstractSeries *s : dock.chart()->series()) {
