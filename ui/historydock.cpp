@@ -20,6 +20,7 @@
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
+#include <QTimer>
 #include <QValueAxis>
 
 #include "model/formats/fileio.h"
@@ -167,7 +168,6 @@ HistoryDock::HistoryDock(HistoryRecorder *recorder, QWidget *parent)
     : QDockWidget(tr("History"), parent)
     , m_recorder(recorder)
     , m_title(new QLabel(this))
-    , m_view(new QChartView(this))
     , m_table(new QTableView(this))
     , m_model(new HistoryTableModel(this))
     , m_export(new QPushButton(tr("Export CSV…"), this))
@@ -175,10 +175,6 @@ HistoryDock::HistoryDock(HistoryRecorder *recorder, QWidget *parent)
 {
     setObjectName(u"historyDock"_s);
     m_title->setObjectName(u"historyTitle"_s);
-    m_view->setObjectName(u"historyChart"_s);
-    m_view->setRenderHint(QPainter::Antialiasing);
-    m_view->setMinimumHeight(180);
-    m_view->setAccessibleName(tr("TLO over time"));
     m_table->setObjectName(u"historyTable"_s);
     m_table->setModel(m_model);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -191,8 +187,8 @@ HistoryDock::HistoryDock(HistoryRecorder *recorder, QWidget *parent)
     connect(m_copy, &QPushButton::clicked, this, &HistoryDock::copyChart);
     // Export asks the window for a file name: it is wired where the dialogs live.
 
-    auto *split = new QSplitter(Qt::Vertical, this);
-    split->addWidget(m_view);
+    m_split = new QSplitter(Qt::Vertical, this);
+    auto *split = m_split;
     split->addWidget(m_table);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
@@ -222,7 +218,14 @@ QPushButton *HistoryDock::exportButton() const
 
 QChart *HistoryDock::chart() const
 {
-    return m_view->chart();
+    return m_view ? m_view->chart() : nullptr;
+}
+
+void HistoryDock::showEvent(QShowEvent *event)
+{
+    QDockWidget::showEvent(event);
+    if (m_stale)
+        QTimer::singleShot(0, this, &HistoryDock::reload);
 }
 
 void HistoryDock::showTool(int tool, const QString &machine, double tolerance)
@@ -235,6 +238,12 @@ void HistoryDock::showTool(int tool, const QString &machine, double tolerance)
 
 void HistoryDock::reload()
 {
+    // Drawn when seen: a panel behind the console's tab builds no chart (Qt Charts is slow to start).
+    if (!isVisible() || visibleRegion().isEmpty()) {
+        m_stale = true;
+        return;
+    }
+    m_stale = false;
     m_events.clear();
     QList<ToolUse> uses;
     if (m_tool >= 0 && m_recorder->library()) {
@@ -363,6 +372,17 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
         QDateTime::fromMSecsSinceEpoch(qint64(x0 - xPad)), QDateTime::fromMSecsSinceEpoch(qint64(x1 + xPad)));
     tlo->setRange(y0 - yPad, y1 + yPad);
     tlo->applyNiceNumbers(); // ticks at round millimetres, not at the data's own edges
+    if (!m_view) {
+        // Made when first seen: a chart view costs the window's first frame several milliseconds.
+        m_view = new QChartView(this);
+        m_view->setObjectName(u"historyChart"_s);
+        m_view->setRenderHint(QPainter::Antialiasing);
+        m_view->setMinimumHeight(180);
+        m_view->setAccessibleName(tr("TLO over time"));
+        m_split->insertWidget(0, m_view);
+        m_split->setStretchFactor(0, 3);
+        m_split->setStretchFactor(1, 2);
+    }
     QChart *old = m_view->chart();
     m_view->setChart(chart);
     delete old;
@@ -387,7 +407,8 @@ Result<void> HistoryDock::exportCsv(const QString &path) const
 
 void HistoryDock::copyChart()
 {
-    QGuiApplication::clipboard()->setImage(m_view->grab().toImage());
+    if (m_view)
+        QGuiApplication::clipboard()->setImage(m_view->grab().toImage());
 }
 
 } // namespace Toffee

@@ -11,6 +11,7 @@ class QChart;
 class QChartView;
 class QLabel;
 class QPushButton;
+class QSplitter;
 class QTableView;
 
 namespace Toffee {
@@ -40,6 +41,9 @@ public:
     [[nodiscard]] QPushButton *exportButton() const;
     void copyChart();
 
+protected:
+    void showEvent(QShowEvent *event) override;
+
 private:
     void reload();
     void fillChart(const std::optional<WearTrend> &trend, const QList<TrendPoint> &points);
@@ -47,7 +51,8 @@ private:
 
     HistoryRecorder *m_recorder;
     QLabel *m_title;
-    QChartView *m_view;
+    QChartView *m_view = nullptr;
+    QSplitter *m_split;
     QTableView *m_table;
     HistoryTableModel *m_model;
     QPushButton *m_export;
@@ -56,6 +61,7 @@ private:
     QString m_machine;
     double m_tolerance = 0.1;
     QList<HistoryEvent> m_events;
+    bool m_stale = true; // the tool changed while the panel was not seen
 };
 
 } // namespace Toffee

@@ -69,7 +69,11 @@ void MainWindow::connectHistory()
     const QString chosen = AppSettings().libraryLocation();
     auto location = chosen.isEmpty() ? Result<LibraryLocation>(LibraryLocation::standard())
                                      : LibraryLocation::parse(chosen);
-    setLibrary(location ? location.value() : LibraryLocation::standard());
+    // Opened once the event loop runs, not on the way to the window; unless --library chose one before.
+    QTimer::singleShot(0, this, [this, location] {
+        if (m_history->location().path.isEmpty())
+            setLibrary(location ? location.value() : LibraryLocation::standard());
+    });
 }
 
 void MainWindow::setLibrary(const LibraryLocation &location)

@@ -83,6 +83,8 @@ private Q_SLOTS:
     void saysWhatToDoWithNoToolAndWithNoMeasurement()
     {
         HistoryDock dock(&m_recorder);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
         QCOMPARE(
             dock.findChild<QLabel *>(u"historyTitle"_s)->text(), u"Select one tool to see its history."_s);
         dock.showTool(9, u"Carvera"_s, 0.1);
@@ -96,6 +98,8 @@ private Q_SLOTS:
     void drawsOnePointInARangeAroundIt()
     {
         HistoryDock dock(&m_recorder);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.showTool(1, u"Carvera"_s, 0.1);
         QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 1);
         auto *axis = qobject_cast<QValueAxis *>(dock.chart()->axes(Qt::Vertical).front());
@@ -107,6 +111,8 @@ private Q_SLOTS:
     void marksBreakTestsAndTheTrendWithItsBand()
     {
         HistoryDock dock(&m_recorder);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.resize(900, 500);
         dock.showTool(2, u"Carvera"_s, 0.1);
         QCOMPARE(dock.findChild<QLabel *>(u"historyTitle"_s)->text(), u"T2 on Carvera: 9 measurements"_s);
@@ -143,6 +149,8 @@ private Q_SLOTS:
     void drawsTenThousandPoints()
     {
         HistoryDock dock(&m_recorder);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.resize(900, 500);
         dock.showTool(3, u"Carvera"_s, 0.1);
         QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 10000);
@@ -154,6 +162,8 @@ private Q_SLOTS:
     void exportsTheMeasurementsAsCsv()
     {
         HistoryDock dock(&m_recorder);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.showTool(2, u"Carvera"_s, 0.1);
         const QString path = m_dir.filePath(u"T2.csv"_s);
         QVERIFY(dock.exportCsv(path));
@@ -171,6 +181,8 @@ private Q_SLOTS:
     void copiesTheChartAsAnImage()
     {
         HistoryDock dock(&m_recorder);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.resize(700, 400);
         dock.showTool(2, u"Carvera"_s, 0.1);
         QGuiApplication::clipboard()->clear();
@@ -180,9 +192,23 @@ private Q_SLOTS:
         QVERIFY(copied.width() > 300 && copied.height() > 100);
     }
 
+    // A panel behind another tab builds no chart; it draws the tool when it is seen.
+    void drawsOnlyWhenSeen()
+    {
+        HistoryDock dock(&m_recorder);
+        dock.showTool(2, u"Carvera"_s, 0.1);
+        QVERIFY(dock.events().isEmpty()); // hidden: nothing read, nothing built
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
+        QTRY_COMPARE(dock.events().size(), 9);
+        QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 6);
+    }
+
     void followsWhatIsRecordedForItsTool()
     {
         HistoryDock dock(&m_recorder);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.showTool(1, u"Carvera"_s, 0.1);
         m_recorder.record(makeEvent(1, 5, EventKind::Probe, -10.002));
         QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 2);
