@@ -136,6 +136,12 @@ Result<void> checkRestore(const Invocation &call, MachineOptions &o)
 
 Result<void> openHistory(const Invocation &call, MachineOptions &o)
 {
+    // Only what records needs the library: status, report, select-tool, unlock and link-test work without
+    // one.
+    static const QStringList kRecording
+        = { u"probe"_s, u"break-test"_s, u"set-tlo"_s, u"change-tool"_s, u"restore"_s };
+    if (!kRecording.contains(call.command))
+        return {};
     o.machine = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
     if (o.machine.isEmpty())
         return Error { u"--machine needs a name."_s };

@@ -314,6 +314,8 @@ private Q_SLOTS:
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(run.err.contains(QByteArray(folder.toUtf8() + " is a folder")), run.err.constData());
         QVERIFY(run.err.contains("--no-history"));
+        // What records nothing needs no library: the status still answers.
+        QCOMPARE(cli({ u"--library"_s, folder, u"--port"_s, tty(), u"status"_s }).exitCode, 0);
         // Nothing moved: the machine still has nothing measured.
         QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"reference_mz"_s)), u"0.000"_s);
         QCOMPARE(cli({ u"--no-history"_s, u"--port"_s, tty(), u"probe"_s }).exitCode, 0);
