@@ -5,6 +5,8 @@
 
 #include <QDir>
 
+#include "model/library/historyevent.h"
+
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
@@ -104,7 +106,7 @@ void AppSettings::setLibraryLocation(const QString &location)
 QString AppSettings::machineName() const
 {
     const QString name = m_settings.value(Key::MachineName).toString().trimmed();
-    return name.isEmpty() ? u"Carvera"_s : name;
+    return name.isEmpty() ? kDefaultMachineName : name;
 }
 
 void AppSettings::setMachineName(const QString &name)

@@ -29,9 +29,6 @@ struct MachineOptions
     QString machine;
 };
 
-// The machine a command's history belongs to, when --machine does not name one.
-inline const QString kDefaultMachineName = QStringLiteral("Carvera");
-
 // The library --library names (or the standard one), opened; nothing with --no-history.
 [[nodiscard]] Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call);
 

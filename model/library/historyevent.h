@@ -59,6 +59,9 @@ struct ToolUse
     friend bool operator==(const ToolUse &, const ToolUse &) = default;
 };
 
+// The machine's name when none is given (toffee-cli --machine, the window's setting).
+inline const QString kDefaultMachineName = QStringLiteral("Carvera");
+
 // A machine the library knows: its name (the key), its controller dialect, and how Toffee reaches it.
 struct MachineRecord
 {
