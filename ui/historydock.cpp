@@ -19,8 +19,8 @@
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableView>
-#include <QVBoxLayout>
 #include <QTimer>
+#include <QVBoxLayout>
 #include <QValueAxis>
 
 #include "model/formats/fileio.h"
@@ -239,7 +239,7 @@ void HistoryDock::showTool(int tool, const QString &machine, double tolerance)
 void HistoryDock::reload()
 {
     // Drawn when seen: a panel behind the console's tab builds no chart (Qt Charts is slow to start).
-    if (!isVisible() || visibleRegion().isEmpty()) {
+    if (!isVisible()) {
         m_stale = true;
         return;
     }
@@ -277,7 +277,8 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
     const QColor alarm = alarmColor(palette());
     const QColor text = palette().color(QPalette::Text);
     chart->setBackgroundBrush(palette().brush(QPalette::Base));
-    // The axis labels in the user's decimal mark ("-33,400" in German), like every other number in the window.
+    // The axis labels in the user's decimal mark ("-33,400" in German), like every other number in the
+    // window.
     chart->setLocalizeNumbers(true);
     chart->setLocale(QLocale());
     chart->setTitleBrush(text);
@@ -335,8 +336,8 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
     tlo->setLabelFormat(u"%.3f"_s);
     chart->addAxis(time, Qt::AlignBottom);
     chart->addAxis(tlo, Qt::AlignLeft);
-    // Set once the chart's theme has dressed the axes: grid lines that stay in the background on the light and
-    // the dark palette alike.
+    // Set once the chart's theme has dressed the axes: grid lines that stay in the background on the light
+    // and the dark palette alike.
     const QColor grid = palette().color(QPalette::Text).lightness() > 128 ? QColor(0x55, 0x55, 0x55)
                                                                           : QColor(0xd0, 0xd0, 0xd0);
     for (QAbstractAxis *axis : { static_cast<QAbstractAxis *>(time), static_cast<QAbstractAxis *>(tlo) }) {
@@ -372,6 +373,11 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
         QDateTime::fromMSecsSinceEpoch(qint64(x0 - xPad)), QDateTime::fromMSecsSinceEpoch(qint64(x1 + xPad)));
     tlo->setRange(y0 - yPad, y1 + yPad);
     tlo->applyNiceNumbers(); // ticks at round millimetres, not at the data's own edges
+    // Within a few days the dates repeat: show the times. With nothing to draw, no axes at all.
+    if (x1 + xPad - (x0 - xPad) < 3 * 24 * hour)
+        time->setFormat(QLocale().timeFormat(QLocale::ShortFormat));
+    time->setVisible(!m_events.isEmpty());
+    tlo->setVisible(!m_events.isEmpty());
     if (!m_view) {
         // Made when first seen: a chart view costs the window's first frame several milliseconds.
         m_view = new QChartView(this);
