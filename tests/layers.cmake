@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Fails when a source file includes from a layer above its own. Run as
 #   cmake -DROOT=<source root> -P tests/layers.cmake
-# The layers, lowest first: model ← formats, gcode, library ← document; model, gcode ← emulator ← serial; ui; app.
+# The layers, lowest first: model ← formats, gcode, library, camimport, job ← document; model, gcode ← emulator ←
+# serial; ui; app.
 # Includes are written from the source root ("serial/machinesession.h"), so the first folders name the layer.
 
 cmake_minimum_required(VERSION 3.25)
@@ -13,7 +14,7 @@ endif()
 # The layer of a path relative to ROOT, most specific first.
 function(layer_of path out)
     foreach(pair "model/document:document" "model/formats:formats" "model/gcode:gcode" "model/library:library"
-            "model:model"
+            "model/camimport:camimport" "model/job:job" "model:model"
             "serial/emulator:emulator" "serial:serial" "ui:ui" "app:app")
         string(REPLACE ":" ";" pair "${pair}")
         list(GET pair 0 prefix)
@@ -32,10 +33,12 @@ set(allowed_formats model formats)
 set(allowed_gcode model gcode)
 set(allowed_document model formats document)
 set(allowed_library model formats gcode library)
+set(allowed_camimport model formats camimport)
+set(allowed_job model formats gcode library job)
 set(allowed_emulator model gcode emulator)
 set(allowed_serial model gcode emulator serial)
-set(allowed_ui model formats gcode document library emulator serial ui)
-set(allowed_app model formats gcode document library emulator serial ui app)
+set(allowed_ui model formats gcode document library camimport job emulator serial ui)
+set(allowed_app model formats gcode document library camimport job emulator serial ui app)
 
 file(GLOB_RECURSE sources RELATIVE ${ROOT}
     ${ROOT}/model/*.h ${ROOT}/model/*.cpp ${ROOT}/serial/*.h ${ROOT}/serial/*.cpp
