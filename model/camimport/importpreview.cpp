@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "model/camimport/importpreview.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/numberformat.h"
+#include "model/textparsing.h"
+#include "model/toolvalidation.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+constexpr double kMillimetresPerInch = 25.4;
+
+// A converted value keeps one decimal more than a machine resolves (0.0001 mm, 0.00001 in): the conversion's
+// floating-point noise goes, and importing the same library again finds nothing changed.
+double converted(double value, Units from, Units to)
+{
+    if (from == to)
+        return value;
+    const double v = to == Units::Inch ? value / kMillimetresPerInch : value * kMillimetresPerInch;
+    const double scale = std::pow(10.0, resolutionDecimals(to) + 1);
+    return std::round(v * scale) / scale;
+}
+
+QString lengthText(double value, Units units)
+{
+    return formatNumber(value, NumberFormat::upTo(resolutionDecimals(units) + 1)) + u' ' + unitsSymbol(units);
+}
+
+// The CAM's lengths of a cutter are not the machine's tool length offset: they go into the notes, on a line
+// of their own, never into the length geometry a controller would apply.
+QString camLine(const CamTool &cam, Units units)
+{
+    QStringList parts;
+    auto add = [&](const QString &what, const std::optional<double> &value) {
+        if (value)
+            parts << what + u' ' + lengthText(converted(*value, cam.units, units), units);
+    };
+    add(ImportPreview::tr("flute length"), cam.fluteLength);
+    add(ImportPreview::tr("below the holder"), cam.stickOut);
+    add(ImportPreview::tr("overall length"), cam.overallLength);
+    if (parts.isEmpty())
+        return {};
+    return ImportPreview::kNotesMarker + u' ' + parts.join(u", "_s);
+}
+
+qsizetype camLineIndex(const QStringList &lines)
+{
+    for (qsizetype i = 0; i < lines.size(); ++i) {
+        if (lines.at(i).startsWith(ImportPreview::kNotesMarker))
+            return i;
+    }
+    return -1;
+}
+
+QString camLineOf(const QString &notes)
+{
+    const QStringList lines = notes.split(u'\n');
+    const qsizetype at = camLineIndex(lines);
+    return at < 0 ? QString() : lines.at(at).mid(ImportPreview::kNotesMarker.size()).trimmed();
+}
+
+// The notes with the CAM's line put in place of the old one, or added after the operator's lines.
+QString notesWith(const QString &notes, const QString &line)
+{
+    if (line.isEmpty())
+        return notes;
+    if (notes.isEmpty())
+        return line;
+    QStringList lines = notes.split(u'\n');
+    if (const qsizetype at = camLineIndex(lines); at >= 0)
+        lines[at] = line;
+    else
+        lines.append(line);
+    return lines.join(u'\n');
+}
+
+QStringList changes(const Tool &before, const Tool &after, Units units)
+{
+    QStringList fields;
+    if (before.description != after.description)
+        fields << ImportPreview::tr("description “%1” → “%2”")
+                      .arg(excerpt(before.description), excerpt(after.description));
+    if (before.radiusGeometry != after.radiusGeometry)
+        fields << ImportPreview::tr("radius %1 → %2 %3")
+                      .arg(displayNumber(before.radiusGeometry, units),
+                          displayNumber(after.radiusGeometry, units), unitsSymbol(units));
+    const QString wasLine = camLineOf(before.notes);
+    const QString isLine = camLineOf(after.notes);
+    if (wasLine != isLine)
+        fields << (wasLine.isEmpty()
+                ? ImportPreview::tr("CAM lengths added to the notes (%1)").arg(isLine)
+                : ImportPreview::tr("CAM lengths in the notes: %1 → %2").arg(wasLine, isLine));
+    return fields;
+}
+
+// The table's tool with the CAM's fields put in, or a new tool with its default pocket.
+Tool mergedTool(const CamTool &cam, const Tool *existing, Units units)
+{
+    Tool tool;
+    if (existing) {
+        tool = *existing;
+    } else {
+        tool.number = cam.number;
+        tool.pocket = defaultPocket(cam.number);
+    }
+    tool.description = cam.description;
+    if (cam.diameter)
+        tool.radiusGeometry = converted(*cam.diameter / 2.0, cam.units, units);
+    tool.notes = notesWith(tool.notes, camLine(cam, units));
+    return tool;
+}
+
+} // namespace
+
+Result<ImportPreview> ImportPreview::build(const ToolTable &current, const CamLibrary &library)
+{
+    ImportPreview preview;
+    preview.m_merged = current;
+    const Units units = current.units();
+    preview.m_tools.reserve(library.tools.size());
+    for (const CamTool &cam : library.tools) {
+        const Tool *existing = current.find(cam.number);
+        const Tool tool = mergedTool(cam, existing, units);
+        auto refuse = [&cam, &library](const Error &error) {
+            return Error { cam.place.isEmpty() ? error.message : cam.place + u": "_s + error.message,
+                cam.line, library.path };
+        };
+        if (auto r = validateTool(tool, units); !r)
+            return refuse(r.error());
+        ImportedTool item { cam.number, tool.description, ImportChange::New, {} };
+        if (existing) {
+            item.fields = changes(*existing, tool, units);
+            item.change = *existing == tool ? ImportChange::Unchanged : ImportChange::Changed;
+            if (item.change == ImportChange::Changed && item.fields.isEmpty())
+                item.fields << tr("the CAM lengths line in the notes");
+        }
+        if (auto r = existing ? preview.m_merged.replace(cam.number, tool) : preview.m_merged.insert(tool);
+            !r)
+            return refuse(r.error());
+        preview.m_tools.append(std::move(item));
+    }
+    return preview;
+}
+
+qsizetype ImportPreview::count(ImportChange change) const
+{
+    return std::count_if(m_tools.cbegin(), m_tools.cend(),
+        [change](const ImportedTool &tool) { return tool.change == change; });
+}
+
+QString ImportPreview::summary() const
+{
+    return tr("%1 new, %2 changed, %3 unchanged")
+        .arg(count(ImportChange::New))
+        .arg(count(ImportChange::Changed))
+        .arg(count(ImportChange::Unchanged));
+}
+
+} // namespace Toffee

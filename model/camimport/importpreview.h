@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QCoreApplication>
+#include <QStringList>
+
+#include "model/camimport/camtool.h"
+#include "model/result.h"
+#include "model/tooltable.h"
+
+namespace Toffee {
+
+// What an import does to one tool of the library.
+enum class ImportChange { New, Changed, Unchanged };
+
+struct ImportedTool
+{
+    int number = 0;
+    QString description; // as the table will have it
+    ImportChange change = ImportChange::New;
+    QStringList fields; // for a changed tool: each change in words, "radius 3.000 → 3.175 mm"
+};
+
+// A CAM library merged into a table, before anything is applied: what happens to each of the library's tools,
+// and the table it makes. Only what the CAM owns changes: the description, the radius geometry (half the
+// diameter) and the CAM's own line in the notes. The measured TLO, its time, source and reference, the
+// break-test mark, the wear, the pocket, the length geometry and the operator's notes stay as they are.
+class ImportPreview
+{
+    Q_DECLARE_TR_FUNCTIONS(Toffee::ImportPreview)
+
+public:
+    // Converts the library's units into the table's; refuses the whole library when one tool would not be a
+    // valid tool of the table, naming it.
+    [[nodiscard]] static Result<ImportPreview> build(const ToolTable &current, const CamLibrary &library);
+
+    [[nodiscard]] const QList<ImportedTool> &tools() const { return m_tools; }
+    [[nodiscard]] const ToolTable &merged() const { return m_merged; }
+    [[nodiscard]] qsizetype count(ImportChange change) const;
+    [[nodiscard]] bool changesAnything() const { return count(ImportChange::Unchanged) < m_tools.size(); }
+    // "2 new, 1 changed, 3 unchanged"
+    [[nodiscard]] QString summary() const;
+
+    // The notes line an import owns starts with this (never translated, so that it is found again in any
+    // language); the operator's other lines are never touched.
+    static constexpr QStringView kNotesMarker = u"From CAM:";
+
+private:
+    QList<ImportedTool> m_tools;
+    ToolTable m_merged;
+};
+
+} // namespace Toffee

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Fusion / HSM JSON tool libraries and .tools archives (model/camimport/fusionjson.cpp, fusionarchive.cpp).
+#include <QTest>
+
+#include "model/camimport/camreaders.h"
+#include "tests/support/camfiles.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+const QByteArray kTwoTools = Test::fusionLibrary({ Test::fusionTool(3),
+    Test::fusionTool(7, "1/4 ball", "inches",
+        R"("DC": 0.25, "LCF": 0.75, "OAL": 2.5, "tip-diameter": 0, "shoulder-length": 1)") });
+
+void verifyRefused(const Result<QList<CamTool>> &read, int line, const QString &message)
+{
+    QVERIFY2(!read.ok(), "the library was read");
+    QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
+    QCOMPARE(read.error().line, line);
+}
+
+} // namespace
+
+class TestFusionLibrary : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void readsTheCutterAndNothingElse()
+    {
+        const auto read = readFusionJson(kTwoTools);
+        QVERIFY2(read.ok(), qPrintable(read.error().text()));
+        QCOMPARE(read.value().size(), 2);
+        const CamTool &t3 = read.value().at(0);
+        QCOMPARE(t3.number, 3);
+        QCOMPARE(t3.description, u"6 mm flat"_s);
+        QCOMPARE(t3.type, u"flat end mill"_s);
+        QCOMPARE(t3.units, Units::Millimetre);
+        QCOMPARE(t3.diameter, 6.0);
+        QCOMPARE(t3.fluteLength, 20.0);
+        QCOMPARE(t3.stickOut, 30.0);
+        QCOMPARE(t3.overallLength, 50.0);
+        QCOMPARE(t3.place, u"tool 1 in \"data\""_s);
+        const CamTool &t7 = read.value().at(1);
+        QCOMPARE(t7.number, 7);
+        QCOMPARE(t7.units, Units::Inch);
+        QCOMPARE(t7.diameter, 0.25);
+        QCOMPARE(t7.stickOut, std::nullopt);
+    }
+
+    void aToolWithoutDescriptionIsNamedByItsTypeAndSize()
+    {
+        const auto read = readFusionJson(Test::fusionLibrary({ Test::fusionTool(1, "  ") }));
+        QVERIFY2(read.ok(), qPrintable(read.error().text()));
+        QCOMPARE(read.value().front().description, u"flat end mill, 6 mm"_s);
+    }
+
+    void refusesAMalformedLibraryWhole_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<int>("line");
+        QTest::addColumn<QString>("message");
+        const QByteArray good = Test::fusionTool(1);
+        QTest::newRow("truncated") << kTwoTools.first(kTwoTools.size() / 2) << 0 << u"not valid JSON"_s;
+        QTest::newRow("empty file") << QByteArray() << 1 << u"not valid JSON"_s;
+        QTest::newRow("DC is text") << Test::fusionLibrary(
+            { good, Test::fusionTool(2, "x", "millimeters", R"("DC": "abc")") })
+                                    << 0 << u"tool 2 in \"data\": \"DC\" is \"abc\", not a number."_s;
+        QTest::newRow("negative DC")
+            << Test::fusionLibrary({ Test::fusionTool(2, "x", "millimeters", R"("DC": -6)") }) << 0
+            << u"tool 1 in \"data\" (T2): the diameter is -6 mm; it cannot be negative."_s;
+        QTest::newRow("OAL is a list")
+            << Test::fusionLibrary({ Test::fusionTool(2, "x", "millimeters", R"("DC": 6, "OAL": [50])") })
+            << 0 << u"\"OAL\" is a list, not a number."_s;
+        QTest::newRow("number is text")
+            << Test::fusionLibrary({ QByteArray(good).replace(R"("number": 1,)", R"("number": "abc",)") })
+            << 0 << u"its \"number\" is \"abc\", not a whole number."_s;
+        QTest::newRow("number has a fraction")
+            << Test::fusionLibrary({ QByteArray(good).replace(R"("number": 1,)", R"("number": 2.5,)") }) << 0
+            << u"its \"number\" is 2.5, not a whole number."_s;
+        QTest::newRow("number out of range")
+            << Test::fusionLibrary({ QByteArray(good).replace(R"("number": 1,)", R"("number": 1000000,)") })
+            << 0 << u"tool number 1000000 is out of range"_s;
+        QTest::newRow("no number") << Test::fusionLibrary({ QByteArray(good).replace(R"("number": 1,)", "") })
+                                   << 0 << u"no \"post-process\" \"number\""_s;
+        QTest::newRow("repeated number") << Test::fusionLibrary({ good, Test::fusionTool(2), good }) << 0
+                                         << u"tool 3 in \"data\" (T1): number 1 is taken already (tool 1 in "
+                                            u"\"data\")"_s;
+        QTest::newRow("no unit") << Test::fusionLibrary(
+            { QByteArray(good).replace(R"("unit": "millimeters",)", "") })
+                                 << 0 << u"no \"unit\""_s;
+        QTest::newRow("unknown unit") << Test::fusionLibrary({ Test::fusionTool(1, "x", "furlongs") }) << 0
+                                      << u"\"unit\" is \"furlongs\""_s;
+        QTest::newRow("geometry is a number") << Test::fusionLibrary(
+            { Test::fusionTool(1, "x", "millimeters", "").replace(R"("geometry": {})", R"("geometry": 5)") })
+                                              << 0 << u"\"geometry\" is 5, not an object."_s;
+        QTest::newRow("a tool that is a number")
+            << Test::fusionLibrary({ good, "42" }) << 0 << u"tool 2 in \"data\": it is 42, not an object."_s;
+        QTest::newRow("no data") << QByteArray(R"({"version": 14, "tools": []})") << 1
+                                 << u"not a Fusion tool library"_s;
+        QTest::newRow("a list, not an object") << QByteArray("[1, 2]") << 1 << u"not a Fusion tool library"_s;
+        QTest::newRow("no tools") << Test::fusionLibrary({}) << 0 << u"holds no tools"_s;
+    }
+    void refusesAMalformedLibraryWhole()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(int, line);
+        QFETCH(QString, message);
+        const auto read = readFusionJson(json);
+        QVERIFY2(!read.ok(), "the library was read");
+        QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
+        if (line > 0)
+            QCOMPARE(read.error().line, line);
+    }
+
+    void aSyntaxErrorNamesItsLineAndColumn()
+    {
+        // Line 3 is the first tool; the comma after "unit" is missing: the parser stops at the next quote.
+        const QByteArray json
+            = "{\n  \"data\": [\n    {\"type\": \"drill\", \"unit\": \"mm\" \"number\": 1}\n  ]\n}\n";
+        const auto read = readFusionJson(json);
+        verifyRefused(read, 3, u"column 36: this is not valid JSON"_s);
+    }
+
+    void readsTheLibraryInsideAToolsArchive()
+    {
+        const QByteArray zip = Test::zipArchive({ { "tools.json", kTwoTools } });
+        QVERIFY(zip.startsWith("PK"));
+        const auto read = readFusionArchive(zip);
+        QVERIFY2(read.ok(), qPrintable(read.error().text()));
+        QCOMPARE(read.value(), readFusionJson(kTwoTools).value());
+        const auto inAFolder = readFusionArchive(Test::zipArchive({ { "Library/tools.json", kTwoTools } }));
+        QVERIFY2(inAFolder.ok(), qPrintable(inAFolder.error().text()));
+        QCOMPARE(inAFolder.value().size(), 2);
+    }
+
+    void refusesABrokenArchive_data()
+    {
+        QTest::addColumn<QByteArray>("zip");
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("line");
+        QTest::addColumn<QString>("message");
+        const QByteArray good = Test::zipArchive({ { "tools.json", kTwoTools } });
+        QTest::newRow("not a zip") << QByteArray("this is plain text, not an archive\n") << QString() << 0
+                                   << u"this is not a .tools archive"_s;
+        QTest::newRow("empty") << QByteArray() << QString() << 0 << u"this is not a .tools archive"_s;
+        QTest::newRow("truncated") << good.first(good.size() / 2) << QString() << 0
+                                   << u"this is not a .tools archive"_s;
+        QTest::newRow("no tools.json") << Test::zipArchive({ { "library.json", kTwoTools } }) << QString()
+                                       << 0 << u"the archive holds no tools.json"_s;
+        QTest::newRow("garbled tools.json")
+            << Test::zipArchive({ { "tools.json", "{\n  \"data\": [\n    {,\n" } }) << u"tools.json"_s << 3
+            << u"column 6: this is not valid JSON"_s;
+        QByteArray corrupted = good;
+        // The compressed data follows the 30-byte local header, the name and the extra field: flip some of
+        // it.
+        const auto u16 = [&good](int at) {
+            return uchar(good.at(at)) | uchar(good.at(at + 1)) << 8;
+        };
+        const int data = 30 + u16(26) + u16(28);
+        for (int i = data + 2; i < data + 12; ++i)
+            corrupted[i] = char(corrupted.at(i) ^ 0x5a);
+        QTest::newRow("corrupted data") << corrupted << u"tools.json"_s << 0 << u"cannot be unpacked"_s;
+    }
+    void refusesABrokenArchive()
+    {
+        QFETCH(QByteArray, zip);
+        QFETCH(QString, file);
+        QFETCH(int, line);
+        QFETCH(QString, message);
+        const auto read = readFusionArchive(zip);
+        verifyRefused(read, line, message);
+        QCOMPARE(read.error().file, file);
+    }
+
+    void refusesAnArchiveThatUnpacksPastTheLimit()
+    {
+        // 65 MB of blanks compress to a few kilobytes: the reader stops at 64 MB, not at the memory's end.
+        QByteArray bomb(kMaxCamLibraryBytes + 1024 * 1024, ' ');
+        bomb.prepend("{\"data\": [");
+        const QByteArray zip = Test::zipArchive({ { "tools.json", bomb } });
+        bomb.clear();
+        QVERIFY(!zip.isEmpty() && zip.size() < 1024 * 1024);
+        verifyRefused(readFusionArchive(zip), 0, u"unpacks to more than 64 MB"_s);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFusionLibrary)
+#include "tst_fusionlibrary.moc"

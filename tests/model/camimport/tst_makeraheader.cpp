@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Makera CAM's tool header in a G-code program (model/camimport/makeraheader.cpp).
+#include <QTest>
+
+#include "model/camimport/camreaders.h"
+#include "tests/support/camfiles.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+class TestMakeraHeader : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void readsEachToolLineOfTheHeader()
+    {
+        const QByteArray program = Test::makeraProgram(
+            { Test::makeraTool(3), Test::makeraTool(1, "diameter=6|flutelength=22|colour=blue|oddfield") });
+        const auto read = readMakeraHeader(program);
+        QVERIFY2(read.ok(), qPrintable(read.error().text()));
+        QCOMPARE(read.value().size(), 2);
+        const CamTool &t3 = read.value().at(0);
+        QCOMPARE(t3.number, 3);
+        QCOMPARE(t3.description, u"Flat 3"_s);
+        QCOMPARE(t3.type, u"flat end mill"_s);
+        QCOMPARE(t3.units, Units::Millimetre);
+        QCOMPARE(t3.diameter, 3.175);
+        QCOMPARE(t3.fluteLength, 12.0);
+        QCOMPARE(t3.stickOut, 18.0);
+        QCOMPARE(t3.overallLength, std::nullopt);
+        QCOMPARE(t3.line, 3);
+        QCOMPARE(read.value().at(1).diameter, 6.0);
+        QCOMPARE(read.value().at(1).line, 4);
+    }
+
+    void readsOnlyTheHeader()
+    {
+        // A tool line after the first G-code line is part of the program, not of its header.
+        QByteArray program
+            = Test::makeraProgram({ Test::makeraTool(3) }, "G21\n" + Test::makeraTool(9) + "\n");
+        program.replace('\n', "\r\n");
+        const auto read = readMakeraHeader(program);
+        QVERIFY2(read.ok(), qPrintable(read.error().text()));
+        QCOMPARE(read.value().size(), 1);
+        QCOMPARE(read.value().front().number, 3);
+        QCOMPARE(read.value().front().description, u"Flat 3"_s);
+    }
+
+    void refusesAMalformedHeaderWhole_data()
+    {
+        QTest::addColumn<QByteArray>("program");
+        QTest::addColumn<int>("line");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("number=abc") << Test::makeraProgram(
+            { Test::makeraTool(3), ";@MKR|TOOL|number=abc|name=x|diameter=3" })
+                                    << 4 << u"number=abc is not a tool number."_s;
+        QTest::newRow("diameter=abc") << Test::makeraProgram({ Test::makeraTool(3, "diameter=abc") }) << 3
+                                      << u"diameter=abc is not a number."_s;
+        QTest::newRow("diameter=nan") << Test::makeraProgram({ Test::makeraTool(3, "diameter=nan") }) << 3
+                                      << u"diameter=nan is not a number."_s;
+        QTest::newRow("negative") << Test::makeraProgram({ Test::makeraTool(3, "diameter=-1") }) << 3
+                                  << u"T3: the diameter is -1 mm; it cannot be negative."_s;
+        QTest::newRow("no number") << Test::makeraProgram({ ";@MKR|TOOL|name=x|diameter=3" }) << 3
+                                   << u"no number="_s;
+        QTest::newRow("number out of range") << Test::makeraProgram({ Test::makeraTool(1234567) }) << 3
+                                             << u"tool number 1234567 is out of range"_s;
+        QTest::newRow("repeated") << Test::makeraProgram({ Test::makeraTool(3), Test::makeraTool(3) }) << 4
+                                  << u"number 3 is taken already (line 3)"_s;
+        QTest::newRow("no header") << "G21\nG0 X0 Y0\n"_ba << 0 << u"no Makera CAM tool header"_s;
+        QTest::newRow("empty") << QByteArray() << 0 << u"no Makera CAM tool header"_s;
+        QTest::newRow("binary") << QByteArray("\x7f"
+                                              "ELF\x02\x01\x01\0\0\0",
+            10) << 0 << u"no Makera CAM tool header"_s;
+    }
+    void refusesAMalformedHeaderWhole()
+    {
+        QFETCH(QByteArray, program);
+        QFETCH(int, line);
+        QFETCH(QString, message);
+        const auto read = readMakeraHeader(program);
+        QVERIFY2(!read.ok(), "the header was read");
+        QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
+        QCOMPARE(read.error().line, line);
+    }
+
+    void refusesAHeaderThatRunsPastWhatWasRead()
+    {
+        const QByteArray head = Test::makeraProgram({ Test::makeraTool(3) }, ";" + QByteArray(100, 'x'));
+        const auto read = readMakeraHeader(head, false);
+        QVERIFY(!read.ok());
+        QVERIFY2(read.error().message.contains(u"all comments"_s), qPrintable(read.error().message));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMakeraHeader)
+#include "tst_makeraheader.moc"
