@@ -103,6 +103,14 @@ Result<int> ToolDocument::importFrom(const QString &path, std::optional<TableFor
     return count;
 }
 
+bool ToolDocument::replaceTable(const ToolTable &table, const QString &undoText)
+{
+    if (table == this->table())
+        return false;
+    m_undoStack.push(new ReplaceTableCommand(&m_model, this->table(), table, undoText));
+    return true;
+}
+
 QString ToolDocument::recoverEdits(
     const ToolTable &edits, const QString &originalPath, TableFormat originalFormat)
 {

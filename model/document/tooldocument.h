@@ -39,6 +39,10 @@ public:
     Result<int> importFrom(
         const QString &path, std::optional<TableFormat> format = {}, Units tblUnits = Units::Millimetre);
 
+    // Puts `table` in place of the whole table as one undoable step named `undoText` (a CAM import's merge).
+    // Returns false, with no step, when it is the table already.
+    bool replaceTable(const ToolTable &table, const QString &undoText);
+
     // Unsaved edits brought back after a crash (AutoSave), on top of the file they were made to as one
     // undoable step: the document is left modified, and Undo shows the file as it is on disk. With no file to
     // start from, the edits become a new table. Returns what the operator should know about that, or nothing.

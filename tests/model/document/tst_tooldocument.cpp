@@ -198,6 +198,37 @@ private Q_SLOTS:
         QCOMPARE(doc.undoStack()->count(), steps);
     }
 
+    void aReplacedTableIsOneUndoStep()
+    {
+        ToolDocument doc;
+        QAbstractItemModelTester tester(doc.model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QVERIFY(doc.addTool(tool(1)).ok());
+        QVERIFY(doc.addTool(tool(2)).ok());
+        doc.undoStack()->setClean();
+        const ToolTable before = doc.table();
+        ToolTable after = before;
+        Tool changed = *after.find(2);
+        changed.radiusGeometry = 3.0;
+        QVERIFY(after.replace(2, changed).ok());
+        QVERIFY(after.insert(tool(9)).ok());
+
+        QVERIFY(doc.replaceTable(after, u"Import 2 tools from lib.json"_s));
+        QCOMPARE(doc.undoStack()->count(), 3);
+        QCOMPARE(doc.undoStack()->undoText(), u"Import 2 tools from lib.json"_s);
+        QCOMPARE(doc.table(), after);
+        QCOMPARE(doc.model()->rowCount(), 3);
+        QVERIFY(doc.isModified());
+        doc.undoStack()->undo();
+        QCOMPARE(doc.table(), before);
+        QCOMPARE(doc.model()->rowCount(), 2);
+        QVERIFY(!doc.isModified());
+        doc.undoStack()->redo();
+        QCOMPARE(doc.table(), after);
+
+        QVERIFY(!doc.replaceTable(after, u"nothing"_s));
+        QCOMPARE(doc.undoStack()->count(), 3);
+    }
+
     void aBrokenToolStaysMarkedUntilItIsProbed()
     {
         ToolDocument doc;
