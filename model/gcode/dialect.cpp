@@ -83,6 +83,12 @@ std::optional<Dialect> dialectFromKey(QStringView key)
     return std::nullopt;
 }
 
+bool usesG43(Dialect dialect)
+{
+    return dialect == Dialect::Fanuc || dialect == Dialect::Fagor8055M || dialect == Dialect::AllenBradley9
+        || dialect == Dialect::LinuxCnc;
+}
+
 Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::optional<int> tool)
 {
     const Units u = table.units();

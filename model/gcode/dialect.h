@@ -29,6 +29,9 @@ struct DialectInfo
 [[nodiscard]] const QList<DialectInfo> &dialects();
 [[nodiscard]] const DialectInfo &dialectInfo(Dialect dialect);
 [[nodiscard]] std::optional<Dialect> dialectFromKey(QStringView key);
+// Whether the controller's length compensation is G43 / G44 / G49 with a register (FANUC, FAGOR,
+// Allen-Bradley, LinuxCNC): a tool change needs its G43 after it.
+[[nodiscard]] bool usesG43(Dialect dialect);
 
 // The program that loads `table` into the controller. Offset numbers are tool numbers (H = D = T). Values are
 // written at the controller's resolution (0.001 mm, 0.0001 in); `tool` picks the one tool for controllers

@@ -9,12 +9,25 @@
 #include "model/gcode/gcodewords.h"
 #include "model/numberformat.h"
 #include "model/textparsing.h"
+#include "model/tooltable.h"
 #include "model/toolvalidation.h"
 #include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
+
+OffsetTable offsetTableFor(const ToolTable &table, Dialect dialect)
+{
+    OffsetTable offsets;
+    for (const Tool &t : table.tools()) {
+        if (dialect != Dialect::Carvera)
+            offsets[t.number] = { t.lengthGeometry, t.lengthWear, t.radiusGeometry, t.radiusWear };
+        else if (t.measuredTlo)
+            offsets[t.number] = { *t.measuredTlo, 0.0, t.radiusGeometry, t.radiusWear };
+    }
+    return offsets;
+}
 
 GCodeInterpreter::GCodeInterpreter(Dialect dialect, OffsetTable offsets, int samples)
     : m_dialect(dialect)
@@ -25,6 +38,14 @@ GCodeInterpreter::GCodeInterpreter(Dialect dialect, OffsetTable offsets, int sam
         m_compAxes = { 0, 1 };
         m_compOffsets = { 0.0, 0.0 };
     }
+}
+
+// G-codes that change nothing the simulation follows: a dwell, feed per minute, path control, cancelling a
+// canned cycle, and their retract modes.
+bool GCodeInterpreter::isPassive(double g)
+{
+    return same(g, 4) || same(g, 94) || same(g, 61) || same(g, 64) || same(g, 80) || same(g, 98)
+        || same(g, 99) || same(g, 15) || same(g, 69);
 }
 
 Error GCodeInterpreter::error(int line, const QString &message) const
@@ -84,6 +105,7 @@ Result<void> GCodeInterpreter::run(QByteArrayView program)
 
 Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
 {
+    m_effect = {};
     Words w;
     GCodeLexer lexer(text);
     for (;;) {
@@ -136,8 +158,10 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
             m_radiusComp = true;
         else if (same(g, 20) || same(g, 21) || same(g, 54) || same(g, 10) || same(g, 43) || same(g, 44)
             || same(g, 49) || same(g, 43.1) || same(g, 43.2) || same(g, 74) || same(g, 143) || same(g, 144)
-            || same(g, 149) || same(g, 53))
+            || same(g, 149) || same(g, 53) || same(g, 28))
             continue; // handled below
+        else if (isPassive(g))
+            continue;
         else
             return error(line, tr("G%1 is not simulated.").arg(formatNumber(g)));
     }
@@ -145,6 +169,9 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
         return g10(w, line);
     if (auto r = modalWords(w, line); !r)
         return r;
+    if (w.hasG(43) || w.hasG(44) || w.hasG(49) || w.hasG(43.1) || w.hasG(43.2) || w.word('H')
+        || (m_dialect == Dialect::Fagor8055M && w.word('D')))
+        ++m_lengthCalls;
 
     if (m_dialect == Dialect::LinuxCnc) {
         if (auto r = linuxCncLength(w, line); !r)
@@ -180,18 +207,34 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
         if (w.word(a) && w.isBare(a))
             return error(line, tr("the word %1 needs a value.").arg(QChar::fromLatin1(a)));
     }
-    const bool consumedZ = m_dialect == Dialect::LinuxCnc && w.hasG(43.1);
-    if (motion || (w.anyAxis() && !consumedZ)) {
+    // LinuxCNC's G43.1 takes Z as the offset, and so does the Carvera's M493.3; a dwell's X (FANUC's G4 X) is
+    // its time.
+    const bool consumedZ = (m_dialect == Dialect::LinuxCnc && w.hasG(43.1))
+        || (m_dialect == Dialect::Carvera && w.hasM(493.3));
+    const bool dwell = w.hasG(4);
+    if (w.hasG(28)) {
+        returnHome(w, line);
+    } else if ((motion || (w.anyAxis() && !consumedZ)) && !dwell) {
         const Position programStart = m_program;
         move(w, line);
-        const auto length = pathLength(w, programStart, line);
-        if (!length)
-            return length.error();
-        account(length.value());
+        const auto geometry = measureMove(w, programStart, line);
+        if (!geometry)
+            return geometry.error();
+        m_effect.machineCoordinates = w.hasG(53);
+        m_effect.lengthAxisWord = w.word("XYZ"[m_lengthAxis]);
+        m_effect.lowestZ = geometry.value().lowestZ;
+        account(geometry.value().length);
     }
     if (w.hasM(2) || w.hasM(30))
         m_ended = true;
     return {};
+}
+
+LengthCompensation GCodeInterpreter::lengthCompensation() const
+{
+    if (m_dialect == Dialect::Aerotech)
+        return { m_compSign != 0 || m_pending == 1 || m_pending == -1, -1, 0.0 };
+    return { m_lengthMode != LengthMode::Off, m_lengthRegister, lengthContribution() };
 }
 
 double GCodeInterpreter::lengthContribution() const

@@ -11,6 +11,7 @@
 
 #include "model/gcode/dialect.h"
 #include "model/result.h"
+#include "model/units.h"
 
 namespace Toffee {
 
@@ -27,12 +28,41 @@ struct OffsetEntry
 using OffsetTable = std::map<int, OffsetEntry>;
 using Position = std::array<double, 3>;
 
+class ToolTable;
+// The offsets a controller of `dialect` holds for `table`: each tool's length and radius, geometry and wear;
+// for the Carvera, which keeps one TLO and measures it at every change, each tool's measured TLO.
+[[nodiscard]] OffsetTable offsetTableFor(const ToolTable &table, Dialect dialect);
+
 // What one tool did in a program: its feed moves' time at their F (no override assumed) and length, in the
 // program's units (mm on every machine Toffee drives).
 struct ToolUsage
 {
     double cuttingSeconds = 0.0;
     double feedPathMm = 0.0;
+};
+
+// What the block just run did, for a caller that follows a program block by block (the job check and its
+// preparation). Work Z is the programmed Z: without the work offset and the length offset.
+struct BlockEffect
+{
+    enum class Motion : quint8 { None, Rapid, Feed };
+    Motion motion = Motion::None;
+    bool machineCoordinates = false; // G53: neither the work offset nor the length offset applies
+    bool toolChange = false; // M6 or M61 loaded a tool
+    // The Carvera measured its tool on the setter (M6 without H, M491, M491.1): its TLO is the tool's own.
+    bool probe = false;
+    bool unitsWord = false; // G20 or G21
+    bool lengthAxisWord = false; // the block commands the length axis (Z under G17), which takes the offset
+    double lowestZ = 0.0; // the lowest work Z the move passes through
+};
+
+// The length compensation in force: whether any, and which register (H, FAGOR's D or T, LinuxCNC's tool) it
+// took its value from; -1 for a value given directly (LinuxCNC's G43.1, the Carvera's TLO).
+struct LengthCompensation
+{
+    bool active = false;
+    int reg = -1;
+    double value = 0.0;
 };
 
 struct SimulatedMove
@@ -88,6 +118,22 @@ public:
     [[nodiscard]] const std::map<int, ToolUsage> &toolUsage() const { return m_usage; }
     [[nodiscard]] double rapidDistance() const { return m_rapid; }
     [[nodiscard]] int activeTool() const { return m_cuttingTool >= 0 ? m_cuttingTool : m_selectedTool; }
+    // The tool M6 (or M61) loaded last; -1 before any change.
+    [[nodiscard]] int loadedTool() const { return m_cuttingTool; }
+
+    // The last block's effect, and the state a job check follows.
+    [[nodiscard]] const BlockEffect &lastBlock() const { return m_effect; }
+    [[nodiscard]] LengthCompensation lengthCompensation() const;
+    // How many blocks have called a length offset (G43, G44, G49, H, …) so far: whether one came since a tool
+    // change.
+    [[nodiscard]] qint64 lengthCalls() const { return m_lengthCalls; }
+    // The program's units once it says (G20, G21); nothing before.
+    [[nodiscard]] std::optional<Units> programUnits() const { return m_units; }
+    // Where the program is, in work coordinates.
+    [[nodiscard]] const Position &workPosition() const { return m_program; }
+    [[nodiscard]] double feedRate() const { return m_feed; }
+    // The spindle turns (M3, M4) or stands (M5, and at the start).
+    [[nodiscard]] bool spindleOn() const { return m_spindleOn; }
 
 private:
     struct Words;
@@ -102,14 +148,25 @@ private:
     [[nodiscard]] Result<void> aerotechAxes(const QList<int> &axes, int line);
     void move(const Words &w, int line);
     [[nodiscard]] Result<void> modalWords(const Words &w, int line);
-    // The path of the move just made from `programStart`: a line, or the arc of G2/G3 in the active plane.
-    [[nodiscard]] Result<double> pathLength(const Words &w, const Position &programStart, int line) const;
+    [[nodiscard]] Result<void> carveraLength(const Words &w, int line);
+    // The move just made from `programStart`: its path (a line, or the arc of G2/G3 in the active plane) and
+    // the lowest work Z it passes through (an arc in G18 or G19 may dip below both ends).
+    struct MoveGeometry
+    {
+        double length = 0.0;
+        double lowestZ = 0.0;
+    };
+    [[nodiscard]] Result<MoveGeometry> measureMove(
+        const Words &w, const Position &programStart, int line) const;
     void account(double length);
     void home(const QList<int> &axes, int line);
+    // G28: through the point the axis words give to the machine's home on those axes, at rapid.
+    void returnHome(const Words &w, int line);
     void recordStraight(int line, const Position &start);
     void recordCompensated(int line, const Position &programStart, double fromFraction, double toFraction);
     [[nodiscard]] double lengthContribution() const;
     [[nodiscard]] Error error(int line, const QString &message) const;
+    [[nodiscard]] static bool isPassive(double g);
     [[nodiscard]] double offsetValue(int number) const;
     // A word naming a tool or a register (T, D, H, P, Q): a whole number from low to high, or an error.
     [[nodiscard]] Result<int> wholeWord(const Words &w, char letter, int low, int high, int line) const;
@@ -124,6 +181,11 @@ private:
 
     Position m_program {}; // programmed (work) position
     int m_motionMode = 0; // G0, G1, G2 or G3: modal
+    BlockEffect m_effect;
+    std::optional<Units> m_units;
+    bool m_spindleOn = false;
+    qint64 m_lengthCalls = 0;
+    int m_lengthRegister = -1; // the register the length value came from
     double m_feed = 0.0; // F, units per minute
     int m_selectedTool = -1; // tool life: the last T word
     int m_cuttingTool = -1; // tool life: the tool M6 (or M61) loaded

@@ -49,21 +49,53 @@ Result<void> GCodeInterpreter::modalWords(const Words &w, int line)
             return tool.error();
         m_selectedTool = tool.value();
     }
-    if (w.hasM(6))
+    if (w.hasG(20) || w.hasG(21)) {
+        m_units = w.hasG(20) ? Units::Inch : Units::Millimetre;
+        m_effect.unitsWord = true;
+    }
+    if (w.hasM(3) || w.hasM(4))
+        m_spindleOn = true;
+    if (w.hasM(5) || w.hasM(6) || w.hasM(2) || w.hasM(30))
+        m_spindleOn = false; // a tool change stops the spindle, and so does the end
+    if (w.hasM(6)) {
         m_cuttingTool = m_selectedTool;
-    if (w.hasM(61) && w.word('Q'))
-        m_cuttingTool = int(w.get('Q'));
+        m_effect.toolChange = true;
+    }
+    if (w.hasM(61) && w.word('Q')) {
+        const auto tool = wholeWord(w, 'Q', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
+        if (!tool)
+            return tool.error();
+        m_cuttingTool = tool.value();
+        m_effect.toolChange = true;
+    }
     return {};
 }
 
-Result<double> GCodeInterpreter::pathLength(const Words &w, const Position &programStart, int line) const
+namespace {
+
+// Whether the arc from angle `start` over `sweep` (negative: clockwise) passes through angle `target`.
+bool sweepsThrough(double start, double sweep, double target)
 {
+    const double twoPi = 2.0 * std::numbers::pi;
+    double delta = std::fmod(sweep > 0 ? target - start : start - target, twoPi);
+    if (delta < 0)
+        delta += twoPi;
+    return delta <= std::fabs(sweep);
+}
+
+} // namespace
+
+Result<GCodeInterpreter::MoveGeometry> GCodeInterpreter::measureMove(
+    const Words &w, const Position &programStart, int line) const
+{
+    MoveGeometry out;
+    out.lowestZ = std::min(programStart[2], m_program[2]);
     double straight = 0.0;
     for (size_t i = 0; i < 3; ++i)
         straight += (m_program[i] - programStart[i]) * (m_program[i] - programStart[i]);
-    straight = std::sqrt(straight);
+    out.length = std::sqrt(straight);
     if (m_motionMode != 2 && m_motionMode != 3)
-        return straight;
+        return out;
     const ArcPlane p = planeOf(m_lengthAxis);
     const double sx = programStart[p.first];
     const double sy = programStart[p.second];
@@ -93,7 +125,8 @@ Result<double> GCodeInterpreter::pathLength(const Words &w, const Position &prog
                 .arg(QChar::fromLatin1(p.firstOffset), QChar::fromLatin1(p.secondOffset)));
     }
     const double radius = std::hypot(sx - cx, sy - cy);
-    double sweep = std::atan2(ey - cy, ex - cx) - std::atan2(sy - cy, sx - cx);
+    const double startAngle = std::atan2(sy - cy, sx - cx);
+    double sweep = std::atan2(ey - cy, ex - cx) - startAngle;
     // G2 turns clockwise (negative), G3 counter-clockwise; the same start and end is a whole circle.
     if (m_motionMode == 2) {
         while (sweep >= -1e-12)
@@ -103,11 +136,45 @@ Result<double> GCodeInterpreter::pathLength(const Words &w, const Position &prog
             sweep += 2.0 * std::numbers::pi;
     }
     const double helix = m_program[p.helix] - programStart[p.helix];
-    return std::hypot(radius * std::fabs(sweep), helix);
+    out.length = std::hypot(radius * std::fabs(sweep), helix);
+    // Z in the arc's plane (G18: the first axis, G19: the second) is lowest at one angle of the circle.
+    if (p.first == 2 && sweepsThrough(startAngle, sweep, std::numbers::pi))
+        out.lowestZ = std::min(out.lowestZ, cx - radius);
+    else if (p.second == 2 && sweepsThrough(startAngle, sweep, -std::numbers::pi / 2.0))
+        out.lowestZ = std::min(out.lowestZ, cy - radius);
+    return out;
+}
+
+void GCodeInterpreter::returnHome(const Words &w, int line)
+{
+    const Position start = m_machine;
+    Position via = m_machine;
+    double path = 0.0;
+    for (size_t i = 0; i < 3; ++i) {
+        const char a = "XYZ"[i];
+        if (!w.word(a))
+            continue;
+        const double program = m_absolute ? w.get(a) : m_program[i] + w.get(a);
+        via[i] = program + m_g54[i] + (i == size_t(m_lengthAxis) ? m_appliedLength : 0.0);
+        m_machine[i] = 0.0;
+        m_program[i] = -m_g54[i] - (i == size_t(m_lengthAxis) ? m_appliedLength : 0.0);
+    }
+    double first = 0.0;
+    for (size_t i = 0; i < 3; ++i) {
+        first += (via[i] - start[i]) * (via[i] - start[i]);
+        path += (m_machine[i] - via[i]) * (m_machine[i] - via[i]);
+    }
+    m_rapid += std::sqrt(first) + std::sqrt(path);
+    m_effect.motion = BlockEffect::Motion::Rapid;
+    m_effect.machineCoordinates = true;
+    m_effect.lengthAxisWord = w.word("XYZ"[m_lengthAxis]);
+    m_effect.lowestZ = std::min(start[2], m_machine[2]);
+    recordStraight(line, start);
 }
 
 void GCodeInterpreter::account(double length)
 {
+    m_effect.motion = m_motionMode == 0 ? BlockEffect::Motion::Rapid : BlockEffect::Motion::Feed;
     if (m_motionMode == 0) {
         m_rapid += length;
         return;

@@ -18,16 +18,8 @@ Result<void> GCodeInterpreter::lengthWords(const Words &w, int line)
     const bool fagor = m_dialect == Dialect::Fagor8055M;
     const bool carvera = m_dialect == Dialect::Carvera;
 
-    if (carvera) {
-        if (w.hasG(43) || w.hasG(44) || w.hasG(49))
-            return error(line, tr("the Carvera has no G43/G44/G49: its TLO always applies."));
-        if (w.hasM(493.3) && w.word('Z'))
-            m_lengthValue = w.get('Z');
-        if (w.hasM(6) && w.word('H'))
-            m_lengthValue = w.get('H');
-        m_lengthMode = LengthMode::Plus;
-        return {};
-    }
+    if (carvera)
+        return carveraLength(w, line);
     if (fagor) {
         if (w.word('T') && !w.word('D')) {
             const auto tool = wholeWord(w, 'T', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
@@ -41,6 +33,8 @@ Result<void> GCodeInterpreter::lengthWords(const Words &w, int line)
                 return d.error();
             m_lengthValue = offsetValue(d.value());
         }
+        if (w.word('T') || w.word('D'))
+            m_lengthRegister = w.word('D') ? int(w.get('D')) : int(w.get('T'));
         if (w.hasG(43))
             m_lengthMode = LengthMode::Plus; // the value carries its own sign
         if (w.hasG(44) || w.hasG(74))
@@ -59,6 +53,7 @@ Result<void> GCodeInterpreter::lengthWords(const Words &w, int line)
                             .arg(formatNumber(h))
                             .arg(kMaxOffsetNumber));
         m_hNumber = int(h);
+        m_lengthRegister = m_hNumber;
         m_lengthValue = m_hNumber == 0 ? 0.0 : offsetValue(m_hNumber);
         if (fanuc && m_hNumber == 0)
             m_lengthMode = LengthMode::Off; // FANUC: H0 cancels; AB keeps the mode with a value of 0
@@ -70,6 +65,28 @@ Result<void> GCodeInterpreter::lengthWords(const Words &w, int line)
     if (w.hasG(49))
         m_lengthMode = LengthMode::Off; // AB keeps H; FANUC's next G43 needs an H anyway
     Q_UNUSED(ab);
+    return {};
+}
+
+// The Carvera has one TLO, always applied: set by M493.3 Z or M6 … H, and measured on the setter by M6
+// (without H), M491 and M491.1. A measurement gives the tool its own length: the table's, when the table has
+// the tool.
+Result<void> GCodeInterpreter::carveraLength(const Words &w, int line)
+{
+    if (w.hasG(43) || w.hasG(44) || w.hasG(49))
+        return error(line, tr("the Carvera has no G43/G44/G49: its TLO always applies."));
+    if (w.hasM(493.3) && w.word('Z'))
+        m_lengthValue = w.get('Z');
+    if (w.hasM(6) && w.word('H'))
+        m_lengthValue = w.get('H');
+    const bool measures = (w.hasM(6) && !w.word('H')) || w.hasM(491) || w.hasM(491.1);
+    if (measures) {
+        m_effect.probe = true;
+        if (const auto it = m_offsets.find(m_cuttingTool); it != m_offsets.end())
+            m_lengthValue = it->second.length();
+    }
+    m_lengthRegister = -1;
+    m_lengthMode = LengthMode::Plus;
     return {};
 }
 
@@ -103,6 +120,7 @@ Result<void> GCodeInterpreter::linuxCncLength(const Words &w, int line)
                 return h.error();
             tool = h.value();
         }
+        m_lengthRegister = tool;
         if (tool == 0)
             return 0.0;
         const auto it = m_offsets.find(tool);
@@ -120,6 +138,7 @@ Result<void> GCodeInterpreter::linuxCncLength(const Words &w, int line)
         if (!w.word('Z'))
             return error(line, tr("G43.1 needs Z, the offset."));
         m_lengthValue = w.get('Z');
+        m_lengthRegister = -1;
         m_lengthMode = LengthMode::Plus;
     } else if (w.hasG(43.2)) {
         if (!w.word('H'))
