@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <utility>
 
 #include <QCoreApplication>
 #include <QFile>
@@ -66,12 +67,6 @@ Result<QByteArray> readResource(const QString &path, qint64 maxBytes)
         return tooLarge(path, resource.size(), maxBytes);
     return resource.readAll();
 }
-
-struct FileCloser
-{
-    int fd;
-    ~FileCloser() { ::close(fd); }
-};
 
 // Reads `fd` to the end, never past maxBytes: the file may grow while it is read. `size`: its size before.
 Result<QByteArray> readToEnd(int fd, qint64 size, const QString &path, qint64 maxBytes)
@@ -186,12 +181,10 @@ bool isRegularFile(const QString &path, Links links)
     return found == 0 && S_ISREG(info.st_mode);
 }
 
-Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes)
+Result<OpenFile> openRegularFile(const QString &path)
 {
     if (path.isEmpty())
         return Error { tr("no file name was given.") };
-    if (path.startsWith(u':'))
-        return readResource(path, maxBytes);
     const QByteArray native = QFile::encodeName(path);
     // stat() first: opening a FIFO for reading would block until a writer came, and a device would never end.
     struct stat before
@@ -203,20 +196,53 @@ Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes)
         return readError(path, why);
     // O_NONBLOCK: should the name be swapped for a FIFO between stat() and open(), open() still returns at
     // once, and fstat() below refuses it.
-    const int fd = ::open(native.constData(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0)
+    OpenFile file;
+    file.fd = ::open(native.constData(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (file.fd < 0)
         return readError(path, systemError(errno));
-    const FileCloser closer { fd };
     struct stat info
     {
     };
-    if (::fstat(fd, &info) != 0)
+    if (::fstat(file.fd, &info) != 0)
         return readError(path, systemError(errno));
     if (const QString why = notAFile(info.st_mode); !why.isEmpty())
         return readError(path, why);
-    if (info.st_size > maxBytes)
-        return tooLarge(path, info.st_size, maxBytes);
-    return readToEnd(fd, info.st_size, path, maxBytes);
+    file.size = info.st_size;
+    return file;
+}
+
+OpenFile::~OpenFile()
+{
+    if (fd >= 0)
+        ::close(fd);
+}
+
+OpenFile::OpenFile(OpenFile &&other) noexcept
+    : fd(std::exchange(other.fd, -1))
+    , size(other.size)
+{ }
+
+Result<qint64> readSome(const OpenFile &file, char *into, qint64 bytes, const QString &path)
+{
+    while (true) {
+        const ssize_t n = ::read(file.fd, into, size_t(bytes));
+        if (n >= 0)
+            return qint64(n);
+        if (errno != EINTR)
+            return Error { tr("%1: cannot read: %2").arg(path, systemError(errno)) };
+    }
+}
+
+Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes)
+{
+    if (path.startsWith(u':'))
+        return readResource(path, maxBytes);
+    auto file = openRegularFile(path);
+    if (!file)
+        return file.error();
+    if (file.value().size > maxBytes)
+        return tooLarge(path, file.value().size, maxBytes);
+    return readToEnd(file.value().fd, file.value().size, path, maxBytes);
 }
 
 Result<void> writeFileAtomically(

@@ -18,6 +18,23 @@ namespace Toffee {
 // beginning with ':' is one of the application's own resources.
 [[nodiscard]] Result<QByteArray> readRegularFile(const QString &path, qint64 maxBytes);
 
+// A regular file open for reading, closed when it goes: its descriptor and its size when it was opened.
+struct OpenFile
+{
+    OpenFile() = default;
+    OpenFile(OpenFile &&other) noexcept;
+    OpenFile &operator=(OpenFile &&) = delete;
+    ~OpenFile();
+    int fd = -1;
+    qint64 size = 0;
+};
+
+// Opens `path` for reading on the same terms as readRegularFile (a regular file, refused by name otherwise),
+// for a reader that streams it (LineReader).
+[[nodiscard]] Result<OpenFile> openRegularFile(const QString &path);
+// Up to `bytes` of `file` into `into`: how many, 0 at its end.
+[[nodiscard]] Result<qint64> readSome(const OpenFile &file, char *into, qint64 bytes, const QString &path);
+
 // Whether `path` is a regular file: through a link to one, or (`Links::NotFollowed`) only the name itself.
 enum class Links { Followed, NotFollowed };
 [[nodiscard]] bool isRegularFile(const QString &path, Links links = Links::Followed);
