@@ -9,6 +9,7 @@
 
 #include "model/numberformat.h"
 #include "model/textparsing.h"
+#include "model/timetext.h"
 #include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
@@ -136,29 +137,6 @@ QVariant ToolTableModel::decoration(const Tool &tool, int column, int role) cons
     if (role == Qt::ToolTipRole && column == NumberColumn && tool.breakTestFailed)
         return tloToolTip(tool);
     return {};
-}
-
-QString ToolTableModel::ageText(const QDateTime &at, const QDateTime &now)
-{
-    const qint64 minutes = std::max<qint64>(0, at.secsTo(now) / 60);
-    if (minutes < 1)
-        return tr("just now");
-    if (minutes < 60)
-        return tr("%1 min ago").arg(minutes);
-    if (minutes < 48 * 60)
-        return tr("%1 h ago").arg(minutes / 60);
-    return tr("%1 days ago").arg(minutes / (24 * 60));
-}
-
-QString ToolTableModel::durationText(double seconds)
-{
-    const qint64 whole = qint64(std::llround(seconds));
-    if (whole < 60)
-        return tr("%1 s").arg(whole);
-    const qint64 minutes = (whole + 30) / 60;
-    if (minutes < 60)
-        return tr("%1 min").arg(minutes);
-    return tr("%1 h %2 min").arg(minutes / 60).arg(minutes % 60, 2, 10, QLatin1Char('0'));
 }
 
 void ToolTableModel::setCuttingTimes(const QHash<int, double> &seconds)

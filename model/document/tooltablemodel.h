@@ -76,11 +76,6 @@ public:
     void refreshAges();
     static constexpr int kDefaultStaleDays = 7;
 
-    // "just now", "12 min ago", "5 h ago", "9 days ago"; "25 min", "3 h 05 min".
-    [[nodiscard]] static QString ageText(
-        const QDateTime &at, const QDateTime &now = QDateTime::currentDateTimeUtc());
-    [[nodiscard]] static QString durationText(double seconds);
-
 Q_SIGNALS:
     // An edit from a view was refused; the message says why and what to enter instead.
     void editRejected(const QString &message);

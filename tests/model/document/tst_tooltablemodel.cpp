@@ -8,6 +8,7 @@
 #include "tests/support/testtables.h"
 
 #include "model/document/tooltablemodel.h"
+#include "model/timetext.h"
 
 using namespace Toffee;
 using Toffee::Test::tool;
@@ -233,10 +234,10 @@ private Q_SLOTS:
     void showsWhenAToolWasMeasuredAsAnAgeAndMarksItStale()
     {
         const QDateTime now = QDateTime::currentDateTimeUtc();
-        QCOMPARE(ToolTableModel::ageText(now.addSecs(-20), now), u"just now"_s);
-        QCOMPARE(ToolTableModel::ageText(now.addSecs(-12 * 60), now), u"12 min ago"_s);
-        QCOMPARE(ToolTableModel::ageText(now.addSecs(-3 * 3600 - 59), now), u"3 h ago"_s);
-        QCOMPARE(ToolTableModel::ageText(now.addDays(-9), now), u"9 days ago"_s);
+        QCOMPARE(ageText(now.addSecs(-20), now), u"just now"_s);
+        QCOMPARE(ageText(now.addSecs(-12 * 60), now), u"12 min ago"_s);
+        QCOMPARE(ageText(now.addSecs(-3 * 3600 - 59), now), u"3 h ago"_s);
+        QCOMPARE(ageText(now.addDays(-9), now), u"9 days ago"_s);
         Tool fresh { 1, 1, {}, 10, 0, 1, 0, -1.0, now.addSecs(-3 * 3600), {}, {} };
         Tool old { 2, 2, {}, 10, 0, 1, 0, -2.0, now.addDays(-8), {}, {} };
         Tool never { 3, 3, {}, 10, 0, 1, 0, {}, {}, {}, {} };
@@ -261,9 +262,9 @@ private Q_SLOTS:
 
     void showsEachToolsCuttingTime()
     {
-        QCOMPARE(ToolTableModel::durationText(42), u"42 s"_s);
-        QCOMPARE(ToolTableModel::durationText(25 * 60 + 10), u"25 min"_s);
-        QCOMPARE(ToolTableModel::durationText(3 * 3600 + 5 * 60), u"3 h 05 min"_s);
+        QCOMPARE(durationText(42), u"42 s"_s);
+        QCOMPARE(durationText(25 * 60 + 10), u"25 min"_s);
+        QCOMPARE(durationText(3 * 3600 + 5 * 60), u"3 h 05 min"_s);
         ToolTableModel model;
         model.resetTable(
             ToolTable::fromTools({ Test::tool(4), Test::tool(5) }, Units::Millimetre).takeValue());
