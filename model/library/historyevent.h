@@ -78,6 +78,7 @@ struct HistoryQuery
     std::optional<int> tool;
     QDateTime since; // invalid: from the start
     int limit = 0; // 0: no limit; else the newest `limit`, still returned oldest first
+    QList<EventKind> kinds = {}; // empty: every kind
 };
 
 } // namespace Toffee

@@ -173,6 +173,14 @@ Result<QList<HistoryEvent>> Library::history(const HistoryQuery &q) const
         where << u"measured_at >= ?"_s;
         values << timeText(q.since);
     }
+    if (!q.kinds.isEmpty()) {
+        QStringList marks;
+        for (EventKind kind : q.kinds) {
+            marks << u"?"_s;
+            values << eventKindName(kind);
+        }
+        where << u"kind IN ("_s + marks.join(u", "_s) + u")"_s;
+    }
     QString sql = u"SELECT "_s + kEventColumns + u" FROM events"_s;
     if (!where.isEmpty())
         sql += u" WHERE "_s + where.join(u" AND "_s);

@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "model/job/jobchecker.h"
+
+#include <algorithm>
+
+#include "model/limits.h"
+#include "model/numberformat.h"
+#include "model/timetext.h"
+#include "model/tooltable.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+quint64 aggregateKey(FindingKind kind, int tool)
+{
+    return (quint64(kind) << 32) | quint32(tool);
+}
+
+QString mm(double value)
+{
+    return formatNumber(value, NumberFormat::fixed(3));
+}
+
+} // namespace
+
+void JobCheckSetup::useTable(const ToolTable &table)
+{
+    hasTable = true;
+    tableUnits = table.units();
+    offsets = offsetTableFor(table, dialect);
+    facts = factsFromTable(table);
+}
+
+QList<int> carveraRack()
+{
+    return { 1, 2, 3, 4, 5, 6 };
+}
+
+bool isCarveraNonCutter(int tool)
+{
+    return tool == Limits::kEmptySpindle || tool == 0 || tool >= 999990;
+}
+
+JobChecker::JobChecker(JobCheckSetup setup)
+    : m_setup(std::move(setup))
+    , m_interpreter(m_setup.dialect, m_setup.offsets)
+{
+    m_interpreter.setRecordMoves(false);
+}
+
+void JobChecker::feed(QByteArrayView line, int lineNumber)
+{
+    if (m_interpreter.ended())
+        return;
+    ++m_lines;
+    if (auto r = m_interpreter.runLine(line, lineNumber); !r) {
+        programError(r.error());
+        return;
+    }
+    const BlockEffect &effect = m_interpreter.lastBlock();
+    if (effect.unitsWord)
+        unitsChanged(lineNumber);
+    if (effect.toolChange)
+        toolChanged(lineNumber);
+    if (effect.motion == BlockEffect::Motion::Feed)
+        feedMove(lineNumber, effect);
+}
+
+void JobChecker::toolChanged(int line)
+{
+    const int number = m_interpreter.loadedTool();
+    auto found = m_toolIndex.constFind(number);
+    if (found == m_toolIndex.cend()) {
+        JobTool tool;
+        tool.number = number;
+        m_tools.append(tool);
+        found = m_toolIndex.insert(number, m_tools.size() - 1);
+    }
+    m_current = *found;
+    JobTool &tool = m_tools[m_current];
+    if (tool.loadLines.size() < kMaxLinesPerFinding)
+        tool.loadLines.append(line);
+    ++tool.loads;
+    m_compensationDue = true;
+    m_callsAtChange = m_interpreter.lengthCalls();
+}
+
+void JobChecker::feedMove(int line, const BlockEffect &effect)
+{
+    if (m_current < 0) {
+        note(FindingKind::NoToolLoaded, -1, line, [] {
+            return tr("A feed move before any tool change: the program does not say which tool is in the "
+                      "spindle.");
+        });
+    } else if (!effect.machineCoordinates) {
+        JobTool &tool = m_tools[m_current];
+        if (!tool.lowestZ || effect.lowestZ < *tool.lowestZ)
+            tool.lowestZ = effect.lowestZ;
+    }
+    if (m_setup.zFloor && effect.lowestZ < *m_setup.zFloor - 1e-9 && !effect.machineCoordinates) {
+        const int tool = m_interpreter.loadedTool();
+        const double z = effect.lowestZ;
+        note(FindingKind::BelowFloor, tool, line, [this, tool, z] {
+            return tool >= 0
+                ? tr("T%1 feeds to work Z %2, below the floor of %3.")
+                      .arg(tool)
+                      .arg(mm(z), mm(*m_setup.zFloor))
+                : tr("A feed move to work Z %1, below the floor of %2.").arg(mm(z), mm(*m_setup.zFloor));
+        });
+    }
+    if (usesG43(m_setup.dialect) && m_current >= 0)
+        checkCompensation(line);
+}
+
+// After a tool change, and whenever the offset in force changes: is it this tool's?
+void JobChecker::checkCompensation(int line)
+{
+    const LengthCompensation comp = m_interpreter.lengthCompensation();
+    if (!m_compensationDue && comp.active == m_checkedActive && comp.reg == m_checkedRegister)
+        return;
+    m_compensationDue = false;
+    m_checkedActive = comp.active;
+    m_checkedRegister = comp.reg;
+    const int tool = m_interpreter.loadedTool();
+    if (!comp.active) {
+        note(FindingKind::NoLengthCompensation, tool, line, [tool] {
+            return tr("T%1 cuts with no length compensation: no G43 since it was loaded.").arg(tool);
+        });
+    } else if (comp.reg > 0 && comp.reg != tool) {
+        const QString letter = m_setup.dialect == Dialect::Fagor8055M ? u"D"_s : u"H"_s;
+        const bool stale = m_interpreter.lengthCalls() == m_callsAtChange;
+        note(FindingKind::LengthOffsetMismatch, tool, line, [tool, comp, letter, stale] {
+            const QString n = QString::number(tool);
+            const QString reg = QString::number(comp.reg);
+            return stale
+                ? tr("T%1 cuts with %2%3 still in force from the tool before: no G43 %2%1 since its "
+                     "change.")
+                      .arg(n, letter, reg)
+                : tr("T%1 cuts with the length offset %2%3, which is another tool's.").arg(n, letter, reg);
+        });
+    }
+}
+
+void JobChecker::unitsChanged(int line)
+{
+    const Units units = *m_interpreter.programUnits();
+    if (m_setup.dialect == Dialect::Carvera && units == Units::Inch) {
+        note(FindingKind::InchOnCarvera, -1, line, [] {
+            return tr("G20: the Carvera refuses inch programs (ALARM: Imperial Units are unsupported). Post "
+                      "the program in millimetres.");
+        });
+    } else if (m_setup.hasTable && units != m_setup.tableUnits) {
+        note(FindingKind::UnitsMismatch, -1, line, [this, units] {
+            return tr("The program is in %1 but the tool table is in %2.")
+                .arg(unitsSymbol(units), unitsSymbol(m_setup.tableUnits));
+        });
+    }
+}
+
+void JobChecker::programError(const Error &error)
+{
+    if (m_programErrors < kMaxProgramErrors) {
+        ++m_programErrors;
+        m_findings.append({ FindingKind::ProgramError, error.line, m_interpreter.loadedTool(), error.message,
+            { error.line }, 1 });
+        return;
+    }
+    if (m_moreProgramErrors++ == 0)
+        m_firstUncountedError = error.line;
+}
+
+template<typename Message> void JobChecker::note(FindingKind kind, int tool, int line, Message message)
+{
+    const quint64 key = aggregateKey(kind, tool);
+    if (const auto found = m_findingIndex.constFind(key); found != m_findingIndex.cend()) {
+        Finding &f = m_findings[*found];
+        if (f.lines.size() < kMaxLinesPerFinding)
+            f.lines.append(line);
+        ++f.count;
+        return;
+    }
+    m_findingIndex.insert(key, m_findings.size());
+    m_findings.append({ kind, line, tool, message(), { line }, 1 });
+}
+
+QList<int> JobChecker::toolNumbers() const
+{
+    QList<int> numbers;
+    for (const JobTool &t : m_tools)
+        numbers.append(t.number);
+    return numbers;
+}
+
+void JobChecker::addFacts(const QHash<int, ToolFacts> &facts)
+{
+    for (auto it = facts.cbegin(); it != facts.cend(); ++it)
+        m_setup.facts.insert(it.key(), it.value());
+}
+
+} // namespace Toffee

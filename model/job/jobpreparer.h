@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include <QCoreApplication>
+#include <QHash>
+#include <QList>
+#include <QString>
+
+#include "model/gcode/gcodeinterpreter.h"
+#include "model/job/toolfacts.h"
+#include "model/limits.h"
+#include "model/result.h"
+
+namespace Toffee {
+
+class ToolTable;
+
+struct PrepareOptions
+{
+    Dialect dialect = Dialect::Carvera;
+    // Carvera: after a manual change, the tool's stored TLO instead of a probe, when it is fresh.
+    bool useStoredTlo = false;
+    // Carvera: M491.1 after each tool's last cut, before the next change or the end.
+    bool breakTest = false;
+    double tolerance = Limits::kDefaultBreakTolerance;
+    int staleDays = 7;
+    QList<int> rack; // the tools the machine's rack holds (it always measures those at a change)
+    QDateTime now = QDateTime::currentDateTimeUtc();
+};
+
+// One piece of the side-by-side preview: the lines around a change, original on the left, prepared on the
+// right. A row with no original line (0) is inserted; one whose texts differ was changed.
+struct PrepareRow
+{
+    int originalLine = 0;
+    int preparedLine = 0;
+    QString original;
+    QString prepared;
+    friend bool operator==(const PrepareRow &, const PrepareRow &) = default;
+};
+using PrepareHunk = QList<PrepareRow>;
+
+// What a preparation did.
+struct PrepareSummary
+{
+    qint64 originalLines = 0;
+    qint64 preparedLines = 0;
+    int inserted = 0;
+    int changed = 0;
+    int cuttingMoves = 0; // each checked: the same work position as the original, the tool's own offset
+    QList<PrepareHunk> hunks; // the first kMaxHunks
+    int moreHunks = 0;
+    QStringList notes; // what was left as it was, and why ("T2 is in the rack: …")
+};
+
+// Rewrites a program so that the machine restores stored offsets and break-tests each tool (the Carvera), or
+// so that each tool change has its length compensation (the G43 controllers), a line at a time. Every
+// inserted line carries a comment saying why. The prepared program is run beside the original through the
+// interpreter as it is written: every cutting move must reach the same work position, with the tool's own
+// offset where the original had none; anything else stops it (nothing is written).
+class JobPreparer
+{
+    Q_DECLARE_TR_FUNCTIONS(Toffee::JobPreparer)
+    Q_DISABLE_COPY_MOVE(JobPreparer)
+
+public:
+    static constexpr int kMaxHunks = 200;
+    static constexpr int kContextLines = 3;
+    using LineSink = std::function<bool(QByteArrayView line)>; // each prepared line, without its end
+
+    JobPreparer(const ToolTable &table, PrepareOptions options);
+
+    // What these options may do for this dialect; an error for a request the controller cannot take.
+    [[nodiscard]] static Result<void> check(const PrepareOptions &options);
+
+    [[nodiscard]] Result<void> feed(QByteArrayView line, int lineNumber, const LineSink &sink);
+    // After the last line: what the end needs (a last break test), and the summary.
+    [[nodiscard]] Result<PrepareSummary> finish(const LineSink &sink);
+
+private:
+    // An inserted line, run through the prepared program's interpreter and written.
+    [[nodiscard]] Result<void> insertLine(const QString &line, const LineSink &sink, bool inserted);
+    // An original line, as it is or rewritten (`prepared`), run and written.
+    [[nodiscard]] Result<void> writeOriginal(
+        QByteArrayView original, QByteArrayView prepared, int lineNumber, const LineSink &sink);
+    [[nodiscard]] Result<void> breakTest(const LineSink &sink);
+    [[nodiscard]] Result<void> restoreAfterChange(int tool, const LineSink &sink);
+    // The stored TLO to set for `tool` after its change, or nothing (and a note why not, once a tool).
+    [[nodiscard]] std::optional<double> restorable(int tool);
+    // The change line rewritten to take the stored TLO instead of probing, or empty when it stays.
+    [[nodiscard]] QString carveraChange(QByteArrayView line, int tool);
+    // The original and the prepared program after the same original line: the same work position, and the
+    // tool's own length offset where the original had none.
+    [[nodiscard]] Result<void> compare(int lineNumber);
+    [[nodiscard]] QString comment(const QString &why) const;
+    void addRow(const PrepareRow &row, bool changed);
+    void closeHunk();
+    void noteOnce(int tool, const QString &note);
+
+    PrepareOptions m_options;
+    OffsetTable m_offsets;
+    QHash<int, ToolFacts> m_facts;
+    GCodeInterpreter m_original;
+    GCodeInterpreter m_prepared;
+    PrepareSummary m_summary;
+    int m_tool = -1; // the tool in the spindle, as the original loaded it
+    int m_toolLine = 0; // the line that loaded it
+    int m_lastCutLine = 0; // its last cutting move since it was loaded (0: none)
+    bool m_compensationDue = false; // G43 controllers: a tool was loaded and no move of the length axis since
+    qint64 m_callsAtChange = 0; // the original's length calls when the tool was loaded
+    bool m_compensated = false; // a G43 was inserted for the tool in the spindle
+    bool m_changedLine = false; // the current original line was rewritten
+    QHash<int, bool> m_noted; // tools a note was made for
+    // The preview: the last few unchanged rows, and the hunk being built.
+    QList<PrepareRow> m_context;
+    PrepareHunk m_hunk;
+    int m_trailing = 0; // unchanged rows since the last change in m_hunk
+};
+
+} // namespace Toffee

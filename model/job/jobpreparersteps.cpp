@@ -1,0 +1,247 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The preparation's steps: the lines it writes, the Carvera's restores and break tests, the check of each
+// cutting move against the original, and the side-by-side preview.
+#include "model/job/jobpreparer.h"
+
+#include <cmath>
+
+#include "model/gcode/gcodewords.h"
+#include "model/job/jobchecker.h"
+#include "model/numberformat.h"
+#include "model/timetext.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString command(double value)
+{
+    return formatNumber(value, NumberFormat::command());
+}
+
+bool near(const Position &a, const Position &b)
+{
+    for (size_t i = 0; i < 3; ++i) {
+        if (std::fabs(a[i] - b[i]) > 1e-6)
+            return false;
+    }
+    return true;
+}
+
+// Where a line's comment starts (';', '(' or "//"), or its end.
+qsizetype commentStart(QByteArrayView line)
+{
+    qsizetype at = line.size();
+    for (const char *mark : { ";", "(", "//" }) {
+        const qsizetype found = line.indexOf(QByteArrayView(mark));
+        if (found >= 0 && found < at)
+            at = found;
+    }
+    return at;
+}
+
+} // namespace
+
+Result<void> JobPreparer::insertLine(const QString &line, const LineSink &sink, bool inserted)
+{
+    const QByteArray bytes = line.toUtf8();
+    const int number = int(++m_summary.preparedLines);
+    if (auto ran = m_prepared.runLine(bytes, number); !ran)
+        return Error { tr("the line Toffee would insert here, \"%1\", is refused: %2 Nothing was written.")
+                           .arg(line, ran.error().message),
+            int(m_summary.originalLines) };
+    if (m_prepared.lastBlock().motion != BlockEffect::Motion::None)
+        return Error { tr("the line Toffee would insert here, \"%1\", would move the machine. Nothing was "
+                          "written.")
+                           .arg(line),
+            int(m_summary.originalLines) };
+    if (!sink(bytes))
+        return Error { tr("the prepared program could not be written.") };
+    if (inserted)
+        ++m_summary.inserted;
+    addRow({ 0, number, {}, line }, true);
+    return {};
+}
+
+Result<void> JobPreparer::writeOriginal(
+    QByteArrayView original, QByteArrayView prepared, int lineNumber, const LineSink &sink)
+{
+    const int number = int(++m_summary.preparedLines);
+    if (!m_original.ended() || m_changedLine) {
+        if (auto ran = m_prepared.runLine(prepared, number); !ran)
+            return Error { tr("the prepared line \"%1\" is refused: %2 Nothing was written.")
+                               .arg(QString::fromUtf8(prepared), ran.error().message),
+                lineNumber };
+    }
+    if (!sink(prepared))
+        return Error { tr("the prepared program could not be written.") };
+    if (m_changedLine)
+        ++m_summary.changed;
+    addRow({ lineNumber, number, QString::fromUtf8(original), QString::fromUtf8(prepared) }, m_changedLine);
+    return {};
+}
+
+// M491.1 on the tool in the spindle, after its last cut: the spindle stopped first.
+Result<void> JobPreparer::breakTest(const LineSink &sink)
+{
+    const int tool = m_tool;
+    const int lastCut = m_lastCutLine;
+    m_lastCutLine = 0;
+    if (tool < 0 || isCarveraNonCutter(tool)) {
+        noteOnce(tool,
+            tr("The program cuts before any tool change (line %1): there is no tool to break-test.")
+                .arg(lastCut));
+        return {};
+    }
+    if (m_prepared.spindleOn()) {
+        if (auto r = insertLine(
+                u"M5 "_s + comment(tr("the spindle stops for T%1's break test").arg(tool)), sink, true);
+            !r)
+            return r;
+    }
+    return insertLine(u"M491.1 H"_s + command(m_options.tolerance) + u' '
+            + comment(tr("break test of T%1 after its last cut at line %2, tolerance %3 mm")
+                          .arg(tool)
+                          .arg(lastCut)
+                          .arg(command(m_options.tolerance))),
+        sink, true);
+}
+
+std::optional<double> JobPreparer::restorable(int tool)
+{
+    if (isCarveraNonCutter(tool))
+        return std::nullopt;
+    if (m_options.rack.contains(tool)) {
+        noteOnce(tool, tr("T%1 is in the rack: the Carvera measures a rack tool at every change.").arg(tool));
+        return std::nullopt;
+    }
+    const ToolFacts facts = m_facts.value(tool);
+    QString why;
+    if (!facts.inTable)
+        why = tr("T%1 is not in the table: it is measured at its change.").arg(tool);
+    else if (!facts.measuredTlo)
+        why = tr("T%1 has no stored TLO: it is measured at its change.").arg(tool);
+    else if (facts.broken)
+        why = tr("T%1 failed its last break test: it is measured at its change.").arg(tool);
+    else if (!facts.isFresh(m_options.now, m_options.staleDays))
+        why = tr("T%1's stored TLO is older than %n days: it is measured at its change.", nullptr,
+            m_options.staleDays)
+                  .arg(tool);
+    if (!why.isEmpty()) {
+        noteOnce(tool, why);
+        return std::nullopt;
+    }
+    return facts.measuredTlo;
+}
+
+QString JobPreparer::carveraChange(QByteArrayView line, int tool)
+{
+    const auto block = GCodeBlock::read(line);
+    if (!block || block.value().find('H'))
+        return {}; // the program sets the TLO itself
+    const auto tlo = restorable(tool);
+    if (!tlo)
+        return {};
+    const QString before = QString::fromUtf8(line.first(commentStart(line))).trimmed();
+    return before + u" H"_s + command(*tlo) + u' '
+        + comment(tr("was \"%1\": T%2 takes its stored TLO instead of a probe").arg(before).arg(tool));
+}
+
+// The seed's restore (M493.2 T, M493.3 Z) after a change that did not probe: the stock firmware ignores
+// M6's H, the community firmware takes either.
+Result<void> JobPreparer::restoreAfterChange(int tool, const LineSink &sink)
+{
+    const ToolFacts facts = m_facts.value(tool);
+    const double tlo = *facts.measuredTlo;
+    QString measured = facts.source == TloSource::Manual
+        ? tr("set by hand %1").arg(ageText(facts.measuredAt, m_options.now))
+        : tr("measured %1").arg(ageText(facts.measuredAt, m_options.now));
+    if (facts.referenceMz)
+        measured += tr(" against reference MCS Z %1").arg(command(*facts.referenceMz));
+    if (auto r = insertLine(u"M493.2 T"_s + QString::number(tool) + u' '
+                + comment(tr("T%1 is the tool in the spindle").arg(tool)),
+            sink, true);
+        !r)
+        return r;
+    return insertLine(
+        u"M493.3 Z"_s + command(tlo) + u' ' + comment(tr("T%1's stored TLO, %2").arg(tool).arg(measured)),
+        sink, true);
+}
+
+Result<void> JobPreparer::compare(int lineNumber)
+{
+    const BlockEffect &effect = m_original.lastBlock();
+    if (effect.motion == BlockEffect::Motion::None)
+        return {};
+    if (effect.motion == BlockEffect::Motion::Feed)
+        ++m_summary.cuttingMoves;
+    if (!near(m_original.workPosition(), m_prepared.workPosition()))
+        return Error {
+            tr("the prepared program would cut at another work position than the original. Nothing "
+               "was written."),
+            lineNumber
+        };
+    const int tool = m_original.loadedTool();
+    const auto offset = m_offsets.find(tool);
+    if (m_compensated && offset != m_offsets.end()) {
+        // The original called no offset for this tool: the prepared program must carry the tool's own, at
+        // least from its first cut on (before, it may still be on its way to it).
+        const LengthCompensation prepared = m_prepared.lengthCompensation();
+        if (prepared.active && std::fabs(prepared.value - offset->second.length()) < 1e-6)
+            return {};
+        if (effect.motion == BlockEffect::Motion::Feed)
+            return Error {
+                tr("the prepared program would cut without T%1's length offset. Nothing was written.")
+                    .arg(tool),
+                lineNumber
+            };
+    }
+    if (!near(m_original.position(), m_prepared.position()))
+        return Error { tr("the prepared program would put the machine elsewhere than the original with the "
+                          "table's offsets. Nothing was written."),
+            lineNumber };
+    return {};
+}
+
+void JobPreparer::noteOnce(int tool, const QString &note)
+{
+    if (m_noted.contains(tool))
+        return;
+    m_noted.insert(tool, true);
+    m_summary.notes.append(note);
+}
+
+void JobPreparer::addRow(const PrepareRow &row, bool changed)
+{
+    if (changed) {
+        if (m_hunk.isEmpty())
+            m_hunk = m_context;
+        m_context.clear();
+        m_hunk.append(row);
+        m_trailing = 0;
+        return;
+    }
+    if (!m_hunk.isEmpty()) {
+        m_hunk.append(row);
+        if (++m_trailing == kContextLines)
+            closeHunk();
+        return;
+    }
+    m_context.append(row);
+    if (m_context.size() > kContextLines)
+        m_context.removeFirst();
+}
+
+void JobPreparer::closeHunk()
+{
+    if (m_summary.hunks.size() < kMaxHunks)
+        m_summary.hunks.append(m_hunk);
+    else
+        ++m_summary.moreHunks;
+    m_hunk.clear();
+    m_trailing = 0;
+}
+
+} // namespace Toffee

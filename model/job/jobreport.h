@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <optional>
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QList>
+#include <QString>
+
+#include "model/gcode/dialect.h"
+#include "model/tool.h"
+
+namespace Toffee {
+
+enum class Severity : quint8 { Warning, Error };
+
+// What a job check can find, each with its severity (jobFindingSeverity).
+enum class FindingKind : quint8 {
+    MissingTool, // the program loads a tool the table lacks (error)
+    NotMeasured, // the tool has no measured TLO (or, for G43 controllers, no length at all) (warning)
+    StaleTlo, // its TLO is older than the stale limit (warning)
+    BrokenTool, // its last break test failed and it was not measured since (error)
+    ManualChange, // the machine's rack cannot hold the tool: a manual change (warning)
+    LengthOffsetMismatch, // G43 with an H other than the loaded tool (warning)
+    NoLengthCompensation, // a feed move after a tool change with no length compensation (warning)
+    NoToolLoaded, // a feed move before any tool change: the tool in the spindle is not known (warning)
+    UnitsMismatch, // the program's units are not the table's (error)
+    InchOnCarvera, // G20 on the Carvera, which halts (error)
+    ProgramError, // what the controller would refuse or alarm on (error)
+    BelowFloor, // a feed move below the Z floor (error)
+};
+
+[[nodiscard]] Severity findingSeverity(FindingKind kind);
+// As --json writes it: "missing_tool", "not_measured", …
+[[nodiscard]] QString findingKey(FindingKind kind);
+[[nodiscard]] QString severityName(Severity severity); // "error", "warning"
+
+// One finding: where (the first line it happened on), which tool (-1: none), what, and, for one that repeats
+// (a feed below the floor on every pass), the first lines and how often in all.
+struct Finding
+{
+    FindingKind kind = FindingKind::ProgramError;
+    int line = 0;
+    int tool = -1;
+    QString message;
+    QList<int> lines; // the first few lines it happened on
+    qint64 count = 1;
+
+    [[nodiscard]] Severity severity() const { return findingSeverity(kind); }
+    friend bool operator==(const Finding &, const Finding &) = default;
+};
+
+// A tool the program loads, in the order of first use, and what it does.
+struct JobTool
+{
+    int number = 0;
+    QList<int> loadLines; // the first lines that load it
+    qint64 loads = 0;
+    bool inTable = false;
+    std::optional<double> tlo; // the table's (Carvera: measured; others: total length)
+    QDateTime measuredAt; // of the TLO, from the table or the library, whichever is newer
+    double cuttingSeconds = 0.0; // feed moves at their F; no override assumed
+    double feedPathMm = 0.0;
+    std::optional<double> lowestZ; // the lowest work Z of its feed moves
+};
+
+// What a check of one program found. Findings are in line order.
+struct JobReport
+{
+    Q_DECLARE_TR_FUNCTIONS(Toffee::JobReport)
+
+public:
+    QString program; // the file's name
+    Dialect dialect = Dialect::Carvera;
+    qint64 lines = 0; // lines read
+    bool cancelled = false; // stopped before the end: what is here covers `lines` only
+    QList<JobTool> tools;
+    QList<Finding> findings;
+    double cuttingSeconds = 0.0;
+    double rapidMm = 0.0;
+
+    [[nodiscard]] int errors() const;
+    [[nodiscard]] int warnings() const;
+    // toffee-cli job check's exit code: 0 clean, 1 warnings only, 4 errors.
+    [[nodiscard]] int exitCode() const;
+    [[nodiscard]] const JobTool *tool(int number) const;
+    // "2 errors, 1 warning" or "no findings".
+    [[nodiscard]] QString summary() const;
+};
+
+} // namespace Toffee

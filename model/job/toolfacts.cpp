@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "model/job/toolfacts.h"
+
+#include <cmath>
+
+#include "model/library/library.h"
+#include "model/tooltable.h"
+
+namespace Toffee {
+
+bool ToolFacts::isFresh(const QDateTime &now, int staleDays) const
+{
+    return measuredAt.isValid() && measuredAt.secsTo(now) <= qint64(staleDays) * 24 * 3600;
+}
+
+QHash<int, ToolFacts> factsFromTable(const ToolTable &table)
+{
+    QHash<int, ToolFacts> facts;
+    facts.reserve(table.size());
+    for (const Tool &tool : table.tools()) {
+        ToolFacts &f = facts[tool.number];
+        f.inTable = true;
+        f.measuredTlo = tool.measuredTlo;
+        f.source = tool.tloSource;
+        f.referenceMz = tool.referenceMz;
+        f.length = tool.totalLength();
+        f.measuredAt = tool.measuredTlo ? tool.measuredAt : QDateTime();
+        f.broken = tool.breakTestFailed;
+    }
+    return facts;
+}
+
+namespace {
+
+// The newest event of these kinds for the tool, or nothing.
+Result<std::optional<HistoryEvent>> newest(
+    const Library &library, const QString &machine, int tool, const QList<EventKind> &kinds)
+{
+    HistoryQuery query;
+    query.machine = machine;
+    query.tool = tool;
+    query.kinds = kinds;
+    query.limit = 1;
+    auto events = library.history(query);
+    if (!events)
+        return events.error();
+    if (events.value().isEmpty())
+        return std::optional<HistoryEvent>();
+    return std::optional<HistoryEvent>(events.value().constLast());
+}
+
+} // namespace
+
+Result<void> addLibraryFacts(
+    QHash<int, ToolFacts> &facts, const Library &library, const QString &machine, const QList<int> &tools)
+{
+    for (int tool : tools) {
+        auto measured = newest(library, machine, tool, { EventKind::Probe, EventKind::ManualSet });
+        if (!measured)
+            return measured.error();
+        auto tested = newest(library, machine, tool, { EventKind::BreakTest });
+        if (!tested)
+            return tested.error();
+        ToolFacts &f = facts[tool];
+        if (const auto &m = measured.value(); m && m->tlo) {
+            const bool sameTlo = f.measuredTlo && std::fabs(*f.measuredTlo - *m->tlo) < 0.0005;
+            if (!f.inTable) {
+                f.measuredTlo = m->tlo;
+                f.measuredAt = m->at;
+                f.source = m->kind == EventKind::ManualSet ? TloSource::Manual : TloSource::Probe;
+                f.referenceMz = m->referenceMz;
+            } else if (sameTlo && !f.measuredAt.isValid()) {
+                f.measuredAt = m->at;
+            } else if (!sameTlo && (!f.measuredAt.isValid() || m->at > f.measuredAt)) {
+                f.libraryTlo = m->tlo;
+                f.libraryMeasuredAt = m->at;
+            }
+        }
+        const auto &m = measured.value();
+        const auto &t = tested.value();
+        if (!t || !t->failed.value_or(false))
+            continue;
+        // Only a probe clears a failed break test (an offset set by hand does not: the tool was not
+        // measured).
+        const bool probedSince = (m && m->kind == EventKind::Probe && m->at > t->at)
+            || (f.inTable && f.source == TloSource::Probe && f.measuredAt.isValid() && f.measuredAt > t->at);
+        if (!probedSince)
+            f.broken = true;
+    }
+    return {};
+}
+
+} // namespace Toffee

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <optional>
+
+#include <QDateTime>
+#include <QHash>
+#include <QList>
+
+#include "model/result.h"
+#include "model/tool.h"
+
+namespace Toffee {
+
+class Library;
+class ToolTable;
+
+// What the table and the history library know of one tool, for the job check and its preparation.
+struct ToolFacts
+{
+    bool inTable = false;
+    std::optional<double> measuredTlo; // the table's TLO from the machine
+    TloSource source = TloSource::Probe;
+    std::optional<double> referenceMz;
+    double length = 0.0; // the table's total length (what G43 applies on the other controllers)
+    QDateTime measuredAt; // when the TLO above was measured
+    // The library's newest measurement of the tool, when it differs from the TLO above (the table was not
+    // saved after it).
+    std::optional<double> libraryTlo;
+    QDateTime libraryMeasuredAt;
+    // The last break test failed and the tool was not measured since (the table's mark, or the library's
+    // newest break test when no probe came after it).
+    bool broken = false;
+
+    // Measured within `staleDays` of `now`.
+    [[nodiscard]] bool isFresh(const QDateTime &now, int staleDays) const;
+};
+
+// Each tool of the table.
+[[nodiscard]] QHash<int, ToolFacts> factsFromTable(const ToolTable &table);
+// Adds what the library holds for `machine` of each of `tools` (its newest measurement and break test). A
+// tool the table lacks takes its TLO from the library.
+[[nodiscard]] Result<void> addLibraryFacts(
+    QHash<int, ToolFacts> &facts, const Library &library, const QString &machine, const QList<int> &tools);
+
+} // namespace Toffee
