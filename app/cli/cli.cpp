@@ -23,6 +23,11 @@ Tool tables:
   simulate --dialect D PROGRAM [--table FILE] [--samples N]
                              run PROGRAM as controller D would: where each move ends, and the offsets after
   dialects: carvera, fanuc, fagor, ab9, aerotech, linuxcnc
+  import SOURCE --into TABLE [--dry-run]
+                             tools from a CAM library (Fusion .json or .tools, .hsmlib, or a program with
+                             Makera CAM's tool header) into TABLE, created (in --units, default mm) when
+                             missing: what is new, what changes and how, what is unchanged; measured TLOs,
+                             wear and notes are kept, inch libraries converted
 
 The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMMAND
   status                     state, active tool, TLO, positions
@@ -40,6 +45,19 @@ The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMM
   probe, break-test, set-tlo, change-tool and restore record every measurement in the history library
   (--machine NAME, default Carvera), and warn when a probe is off its tool's wear trend
 
+Jobs: toffee-cli job check PROGRAM [--table FILE] [--machine NAME] [--dialect D] [--z-floor Z]
+                             [--stale-days N] [--rack LIST]
+                             the program against the table and the history before it runs: its tools in
+                             order of use, their TLOs and ages, cutting times, and what is wrong, by line;
+                             exit 0 clean, 1 warnings only, 4 errors
+  job prepare PROGRAM --table FILE [--use-stored-tlo] [--break-test [--tolerance H]] -o OUT
+                             Carvera: a manual change takes the tool's fresh stored TLO instead of a probe
+                             (M6 T H, M493.2 T, M493.3 Z); M491.1 after each tool's last cut. G43
+                             controllers: the missing G43 H after each change. Checked through the
+                             interpreter before OUT is written (whole or not at all)
+  --rack LIST                the tools the machine's rack holds: 1-6 (a Carvera C1, the default), none, or
+                             a list such as 1,2,5-8
+
 The history: toffee-cli history [--machine NAME] [--tool N] [--since DATE] [--json | --csv]
   history add-use --machine NAME --program FILE [--dialect D]
                              the program ran: record each tool's cutting time and feed path
@@ -48,6 +66,8 @@ Options:
   --json                     print one JSON object on stdout (errors too: {"error": message})
   --to FORMAT                convert: the output format (json, tbl, csv)
   --units mm|in              the units of a LinuxCNC .tbl file, which does not record them (default mm)
+  --into TABLE               import: the table the tools go into (written whole or not at all)
+  --dry-run                  import: show what would change, write nothing
   --table FILE               probe, change-tool, set-tlo, break-test: record in FILE the measured TLO,
                              the TLO set by hand (marked so), or a failed break test (the tool stays marked
                              until it is probed again); FILE must be writable before the machine moves
@@ -69,8 +89,13 @@ QString usage()
 
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
     u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s, u"library"_s,
-    u"machine"_s, u"since"_s, u"program"_s };
-const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s, u"no-history"_s, u"csv"_s };
+    u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s };
+const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s, u"no-history"_s, u"csv"_s,
+    u"use-stored-tlo"_s, u"break-test"_s };
+
+// toffee-cli import's own options.
+const QSet<QString> kImportValueOptions = { u"into"_s };
+const QSet<QString> kImportFlagOptions = { u"dry-run"_s };
 
 int usageError(Invocation &call, const QString &message)
 {
@@ -101,7 +126,9 @@ Result<void> parseOptions(const QStringList &arguments, Invocation &call)
 {
     QStringList positional;
     for (qsizetype i = 0; i < arguments.size(); ++i) {
-        const QString &arg = arguments.at(i);
+        QString arg = arguments.at(i);
+        if (arg == u"-o"_s)
+            arg = u"--output"_s; // job prepare … -o OUT
         if (!arg.startsWith(u"--"_s) || arg == u"--"_s) {
             positional << arg;
             continue;
@@ -111,12 +138,13 @@ Result<void> parseOptions(const QStringList &arguments, Invocation &call)
         if (const qsizetype eq = name.indexOf(u'='); eq >= 0) {
             value = name.mid(eq + 1);
             name.truncate(eq);
-        } else if (kValueOptions.contains(name)) {
+        } else if (kValueOptions.contains(name) || kImportValueOptions.contains(name)) {
             if (i + 1 >= arguments.size())
                 return Error { u"--%1 needs a value."_s.arg(name) };
             value = arguments.at(++i);
         }
-        if (!kValueOptions.contains(name) && !kFlagOptions.contains(name))
+        if (!kValueOptions.contains(name) && !kFlagOptions.contains(name)
+            && !kImportValueOptions.contains(name) && !kImportFlagOptions.contains(name))
             return Error { u"unknown option --%1."_s.arg(name) };
         call.options.insert(name, value);
     }
@@ -132,7 +160,9 @@ const std::pair<QStringView, Command> kTableCommands[] = {
     { u"convert", convertTable },
     { u"export", exportOffsets },
     { u"simulate", simulateProgram },
+    { u"import", importTools },
     { u"history", showHistory },
+    { u"job", runJob },
 };
 
 } // namespace

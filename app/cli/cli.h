@@ -32,9 +32,11 @@ void printJson(Invocation &call, const QJsonObject &object);
 
 int showTable(Invocation &call);
 int convertTable(Invocation &call);
+int importTools(Invocation &call);
 int exportOffsets(Invocation &call);
 int simulateProgram(Invocation &call);
 int showHistory(Invocation &call);
+int runJob(Invocation &call);
 [[nodiscard]] bool isMachineCommand(const QString &command);
 int runMachineCommand(Invocation &call);
 

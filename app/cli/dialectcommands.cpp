@@ -92,8 +92,7 @@ int simulateProgram(Invocation &call)
         auto table = loadTableFile(call.option(u"table"_s));
         if (!table)
             return fail(call, table.error().text(), BadInput);
-        for (const Tool &t : table.value().tools())
-            offsets[t.number] = { t.lengthGeometry, t.lengthWear, t.radiusGeometry, t.radiusWear };
+        offsets = offsetTableFor(table.value(), *dialect);
     }
     // A program is read whole for now; a FIFO or a device is refused by name, and a program is bounded.
     constexpr qint64 kMaxProgramBytes = 512LL * 1024 * 1024;

@@ -78,20 +78,6 @@ Result<HistoryQuery> readQuery(const Invocation &call)
     return q;
 }
 
-// The machine's dialect as the library knows it, unless --dialect says otherwise; the Carvera by default.
-std::optional<Dialect> programDialect(const Invocation &call, const Library &library, const QString &machine)
-{
-    if (call.has(u"dialect"_s))
-        return dialectFromKey(call.option(u"dialect"_s));
-    if (const auto machines = library.machines()) {
-        for (const MachineRecord &m : machines.value()) {
-            if (m.name == machine && !m.dialect.isEmpty())
-                return dialectFromKey(m.dialect);
-        }
-    }
-    return Dialect::Carvera;
-}
-
 // toffee-cli history add-use --machine M --program FILE: the program ran; each tool's cutting time and feed
 // path go into the library.
 int addUse(Invocation &call)
@@ -107,7 +93,7 @@ int addUse(Invocation &call)
             library ? u"history add-use records in the library: leave out --no-history."_s
                     : library.error().message,
             BadInput);
-    const auto dialect = programDialect(call, *library.value(), machine);
+    const auto dialect = programDialect(call, library.value().get(), machine);
     if (!dialect)
         return fail(call, u"--dialect is not a dialect Toffee knows."_s, BadInput);
     const QString path = call.option(u"program"_s);

@@ -174,6 +174,31 @@ Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call)
     return Library::open(location.value());
 }
 
+Result<std::unique_ptr<Library>> openExistingLibrary(const Invocation &call)
+{
+    if (call.has(u"no-history"_s))
+        return std::unique_ptr<Library> {};
+    if (call.has(u"library"_s))
+        return openLibraryOption(call);
+    const LibraryLocation standard = LibraryLocation::standard();
+    if (!QFileInfo::exists(standard.path))
+        return std::unique_ptr<Library> {};
+    return Library::open(standard);
+}
+
+std::optional<Dialect> programDialect(const Invocation &call, const Library *library, const QString &machine)
+{
+    if (call.has(u"dialect"_s))
+        return dialectFromKey(call.option(u"dialect"_s));
+    if (const auto machines = library ? library->machines() : Result<QList<MachineRecord>>(Error {})) {
+        for (const MachineRecord &m : machines.value()) {
+            if (m.name == machine && !m.dialect.isEmpty())
+                return dialectFromKey(m.dialect);
+        }
+    }
+    return Dialect::Carvera;
+}
+
 Result<MachineOptions> readMachineOptions(const Invocation &call)
 {
     MachineOptions o;

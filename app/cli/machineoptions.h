@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "app/cli/cli.h"
+#include "model/gcode/dialect.h"
 #include "model/library/library.h"
 #include "model/result.h"
 #include "model/tooltable.h"
@@ -31,6 +32,15 @@ struct MachineOptions
 
 // The library --library names (or the standard one), opened; nothing with --no-history.
 [[nodiscard]] Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call);
+
+// For commands that only read the history: --library's (which must open), else the standard library when one
+// exists (a check creates no library); nothing with --no-history or when there is none.
+[[nodiscard]] Result<std::unique_ptr<Library>> openExistingLibrary(const Invocation &call);
+
+// The machine's dialect as the library knows it, unless --dialect says otherwise; the Carvera by default.
+// Nothing when --dialect names no dialect.
+[[nodiscard]] std::optional<Dialect> programDialect(
+    const Invocation &call, const Library *library, const QString &machine);
 
 [[nodiscard]] Result<MachineOptions> readMachineOptions(const Invocation &call);
 

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// toffee-cli import: tools from a CAM library into a table, showing first what is new and what changes.
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include "app/cli/cli.h"
+#include "model/camimport/camlibrary.h"
+#include "model/camimport/camreaders.h"
+#include "model/camimport/importpreview.h"
+#include "model/formats/fileio.h"
+#include "model/formats/tablefile.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee::Cli {
+
+namespace {
+
+const QString kUsage = u"usage: toffee-cli import SOURCE --into TABLE [--dry-run] [--units mm|in]"_s;
+
+QString word(ImportChange change)
+{
+    switch (change) {
+    case ImportChange::New:
+        return u"new"_s;
+    case ImportChange::Changed:
+        return u"changed"_s;
+    case ImportChange::Unchanged:
+        return u"unchanged"_s;
+    }
+    return {};
+}
+
+void printPreview(Invocation &call, const CamLibrary &library, const ImportPreview &preview)
+{
+    call.out << library.path << " (" << camFormatName(library.format) << "): " << preview.tools().size()
+             << (preview.tools().size() == 1 ? " tool\n" : " tools\n");
+    for (const ImportedTool &tool : preview.tools()) {
+        call.out << u"  %1 %2  %3\n"_s.arg(word(tool.change), -10)
+                        .arg(u"T"_s + QString::number(tool.number), -7)
+                        .arg(tool.description);
+        for (const QString &field : tool.fields)
+            call.out << "                      " << field << '\n';
+    }
+}
+
+QJsonObject previewJson(const CamLibrary &library, const QString &table, const ImportPreview &preview)
+{
+    QJsonArray added;
+    QJsonArray changed;
+    QJsonArray unchanged;
+    for (const ImportedTool &tool : preview.tools()) {
+        if (tool.change == ImportChange::New)
+            added.append(tool.number);
+        else if (tool.change == ImportChange::Unchanged)
+            unchanged.append(tool.number);
+        else
+            changed.append(QJsonObject {
+                { u"number"_s, tool.number }, { u"fields"_s, QJsonArray::fromStringList(tool.fields) } });
+    }
+    return QJsonObject { { u"source"_s, library.path }, { u"format"_s, camFormatName(library.format) },
+        { u"table"_s, table }, { u"new"_s, added }, { u"changed"_s, changed },
+        { u"unchanged"_s, unchanged } };
+}
+
+} // namespace
+
+int importTools(Invocation &call)
+{
+    const QString tablePath = call.option(u"into"_s);
+    if (call.arguments.size() != 1 || tablePath.isEmpty())
+        return fail(call, kUsage, BadInput);
+    const auto units = call.has(u"units"_s) ? unitsFromSymbol(call.option(u"units"_s)) : Units::Millimetre;
+    if (!units)
+        return fail(call, u"--units must be mm or in."_s, BadInput);
+    const auto format = formatForPath(tablePath);
+    if (!format)
+        return fail(call,
+            u"%1: cannot tell the table's format from its name (.json, .tbl or .csv)."_s.arg(tablePath),
+            BadInput);
+    const QString source = call.arguments.front();
+    if (camFormatForPath(source) == CamFormat::FusionJson) {
+        if (auto data = readRegularFile(source, kMaxCamLibraryBytes); data && isToffeeTable(data.value()))
+            return fail(call,
+                u"%1 is a Toffee tool table, not a CAM library; open it, or use convert."_s.arg(source),
+                BadInput);
+    }
+    auto library = loadCamLibrary(source);
+    if (!library)
+        return fail(call, library.error().text(), BadInput);
+    // No TABLE yet: a new one, as a CAM library is often the start of a table.
+    const bool isNew = !QFileInfo::exists(tablePath) && !QFileInfo(tablePath).isSymLink();
+    auto table = isNew ? Result<ToolTable>(ToolTable(*units)) : loadTableFile(tablePath, {}, *units);
+    if (!table)
+        return fail(call, table.error().text(), BadInput);
+    auto preview = ImportPreview::build(table.value(), library.value());
+    if (!preview)
+        return fail(call, preview.error().text(), BadInput);
+
+    const ImportPreview &p = preview.value();
+    const bool write = !call.has(u"dry-run"_s) && (isNew || p.changesAnything());
+    const QStringList losses = write ? formatLosses(p.merged(), *format) : QStringList();
+    if (write) {
+        if (auto saved = saveTableFile(tablePath, p.merged(), *format); !saved)
+            return fail(call, saved.error().text(), BadInput);
+    }
+    for (const QString &loss : losses)
+        call.err << "toffee-cli: warning: " << loss << Qt::endl;
+    if (call.json) {
+        QJsonObject object = previewJson(library.value(), tablePath, p);
+        object.insert(u"written"_s, write);
+        printJson(call, object);
+        return Success;
+    }
+    printPreview(call, library.value(), p);
+    call.out << tablePath << ": " << p.summary() << "; "
+             << (write                           ? u"written"_s
+                        : call.has(u"dry-run"_s) ? u"nothing written (--dry-run)"_s
+                                                 : u"nothing to change, left as it was"_s)
+             << Qt::endl;
+    return Success;
+}
+
+} // namespace Toffee::Cli
