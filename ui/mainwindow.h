@@ -46,6 +46,9 @@ public:
     void setLibrary(const LibraryLocation &location);
     // Opens a table, reporting a failure in a message box; the current table stays if it fails.
     bool openFile(const QString &path);
+    // File ▸ Import once a file is chosen: a CAM library through its preview, a table merged as it is. False
+    // when nothing was imported (refused, with a message box, or cancelled).
+    bool importFile(const QString &path);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -66,6 +69,7 @@ private:
     bool save();
     bool saveAs();
     void importTable();
+    bool importCamLibrary(const QString &path);
     void exportTable();
     void addTool();
     void removeTools();

@@ -9,9 +9,12 @@
 #include <QMessageBox>
 #include <QStatusBar>
 
+#include "model/camimport/camlibrary.h"
+#include "model/camimport/importpreview.h"
 #include "model/document/filewatcher.h"
 #include "model/document/tooldocument.h"
 #include "ui/appsettings.h"
+#include "ui/importpreviewdialog.h"
 
 using namespace Qt::StringLiterals;
 
@@ -23,6 +26,16 @@ QString fileFilters()
 {
     return MainWindow::tr("Tool tables (*.json *.tbl *.csv);;Toffee tool table (*.json);;LinuxCNC tool table "
                           "(*.tbl);;CSV spreadsheet (*.csv);;All files (*)");
+}
+
+// Import takes CAM libraries as well: a .json is a Toffee table or a Fusion library by its content.
+QString importFilters()
+{
+    return MainWindow::tr(
+        "Tool tables and CAM libraries (*.json *.tbl *.csv *.tools *.hsmlib *.nc *.gcode *.cnc "
+        "*.ngc *.tap *.txt);;Toffee tool table (*.json);;LinuxCNC tool table (*.tbl);;CSV "
+        "spreadsheet (*.csv);;Fusion tool library (*.json *.tools);;HSM tool library "
+        "(*.hsmlib);;Makera CAM program (*.nc *.gcode *.cnc *.ngc *.tap *.txt);;All files (*)");
 }
 
 } // namespace
@@ -156,15 +169,40 @@ bool MainWindow::saveAs()
 void MainWindow::importTable()
 {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Import Tools"), AppSettings().lastDirectory(), fileFilters());
-    if (path.isEmpty())
-        return;
+        this, tr("Import Tools"), AppSettings().lastDirectory(), importFilters());
+    if (!path.isEmpty())
+        importFile(path);
+}
+
+bool MainWindow::importFile(const QString &path)
+{
+    if (isCamLibraryFile(path))
+        return importCamLibrary(path);
     auto count = m_document->importFrom(path);
     if (!count) {
         showError(tr("Cannot import"), count.error().text() + u"\n\n"_s + tr("Nothing was imported."));
-        return;
+        return false;
     }
     statusBar()->showMessage(tr("Imported %1 tools from %2").arg(count.value()).arg(path), 5000);
+    return true;
+}
+
+bool MainWindow::importCamLibrary(const QString &path)
+{
+    auto library = loadCamLibrary(path);
+    auto preview = library ? ImportPreview::build(m_document->table(), library.value())
+                           : Result<ImportPreview>(library.error());
+    if (!preview) {
+        showError(tr("Cannot import"), preview.error().text() + u"\n\n"_s + tr("Nothing was imported."));
+        return false;
+    }
+    ImportPreviewDialog dialog(preview.value(), path, camFormatName(library.value().format), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return false;
+    m_document->replaceTable(
+        preview.value().merged(), tr("Import tools from %1").arg(QFileInfo(path).fileName()));
+    statusBar()->showMessage(tr("Imported from %1: %2").arg(path, preview.value().summary()), 5000);
+    return true;
 }
 
 void MainWindow::exportTable()

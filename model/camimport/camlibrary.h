@@ -14,6 +14,8 @@ namespace Toffee {
 // Which CAM format `path` is, by its name (.json, .tools, .hsmlib, or a G-code program: .nc, .gcode, .cnc,
 // .ngc, .tap, .txt), or nothing. A .json file may be a Toffee table instead: see isToffeeTable.
 [[nodiscard]] std::optional<CamFormat> camFormatForPath(const QString &path);
+// A CAM format's name for people: "Fusion tool library (JSON)".
+[[nodiscard]] QString camFormatName(CamFormat format);
 // Whether JSON text is a Toffee tool table ("format": "toffee-tool-table") rather than a CAM library.
 [[nodiscard]] bool isToffeeTable(QByteArrayView json);
 // Whether the window and toffee-cli import `path` as a CAM library: by its name, and for .json by its

@@ -32,7 +32,4 @@ inline constexpr qint64 kMaxProgramHeaderBytes = 4LL * 1024 * 1024;
 // diameter or length. The first problem names the tool by its place, and its line.
 [[nodiscard]] Result<QList<CamTool>> checkCamTools(QList<CamTool> tools);
 
-// A CAM format's name for people: "Fusion tool library (JSON)".
-[[nodiscard]] QString camFormatName(CamFormat format);
-
 } // namespace Toffee
