@@ -310,6 +310,14 @@ void GCodeInterpreter::move(const Words &w, int line)
         recordStraight(line, start);
 }
 
+void GCodeInterpreter::keep(SimulatedMove &&move)
+{
+    if (m_moveSink)
+        m_moveSink(move);
+    else
+        m_moves.append(std::move(move));
+}
+
 // The move to where the machine is now, from `start`, sampled along a straight line.
 void GCodeInterpreter::recordStraight(int line, const Position &start)
 {
@@ -323,7 +331,7 @@ void GCodeInterpreter::recordStraight(int line, const Position &start)
             p[k] = start[k] + t * (m_machine[k] - start[k]);
         record.points.append(p);
     }
-    m_moves.append(record);
+    keep(std::move(record));
 }
 
 // An Aerotech move, sampled as the controller blends its compensation in (or out) from `fromFraction` to
@@ -347,7 +355,7 @@ void GCodeInterpreter::recordCompensated(
         }
         record.points.append(p);
     }
-    m_moves.append(record);
+    keep(std::move(record));
 }
 
 } // namespace Toffee

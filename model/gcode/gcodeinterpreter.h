@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -53,7 +54,7 @@ struct BlockEffect
     bool probe = false;
     bool unitsWord = false; // G20 or G21
     bool lengthAxisWord = false; // the block commands the length axis (Z under G17), which takes the offset
-    double lowestZ = 0.0; // the lowest work Z the move passes through
+    double lowestZ = 0.0; // the lowest work Z the move reaches: its end, or lower on an arc
 };
 
 // The length compensation in force: whether any, and which register (H, FAGOR's D or T, LinuxCNC's tool) it
@@ -100,6 +101,10 @@ public:
     [[nodiscard]] Result<void> runLine(QByteArrayView line, int lineNumber);
 
     void setRecordMoves(bool record) { m_recordMoves = record; }
+    // Each move handed over as it is made instead of kept (moves()): a program's moves in memory that does not
+    // grow with the program.
+    using MoveSink = std::function<void(const SimulatedMove &move)>;
+    void setMoveSink(MoveSink sink) { m_moveSink = std::move(sink); }
     [[nodiscard]] const QList<SimulatedMove> &moves() const { return m_moves; }
     [[nodiscard]] const OffsetTable &offsets() const { return m_offsets; }
     [[nodiscard]] const Position &position() const { return m_machine; }
@@ -150,7 +155,7 @@ private:
     [[nodiscard]] Result<void> modalWords(const Words &w, int line);
     [[nodiscard]] Result<void> carveraLength(const Words &w, int line);
     // The move just made from `programStart`: its path (a line, or the arc of G2/G3 in the active plane) and
-    // the lowest work Z it passes through (an arc in G18 or G19 may dip below both ends).
+    // the lowest work Z it reaches (an arc in G18 or G19 may dip below both ends).
     struct MoveGeometry
     {
         double length = 0.0;
@@ -163,6 +168,7 @@ private:
     // G28: through the point the axis words give to the machine's home on those axes, at rapid.
     void returnHome(const Words &w, int line);
     void recordStraight(int line, const Position &start);
+    void keep(SimulatedMove &&move);
     void recordCompensated(int line, const Position &programStart, double fromFraction, double toFraction);
     [[nodiscard]] double lengthContribution() const;
     [[nodiscard]] Error error(int line, const QString &message) const;
@@ -176,6 +182,7 @@ private:
     int m_samples;
     bool m_recordMoves = true;
     QList<SimulatedMove> m_moves;
+    MoveSink m_moveSink;
     qint64 m_blocks = 0;
     bool m_ended = false;
 

@@ -89,7 +89,8 @@ Result<GCodeInterpreter::MoveGeometry> GCodeInterpreter::measureMove(
     const Words &w, const Position &programStart, int line) const
 {
     MoveGeometry out;
-    out.lowestZ = std::min(programStart[2], m_program[2]);
+    // Where the move ends, or lower on its way: its start is the last move's end, already counted.
+    out.lowestZ = m_program[2];
     double straight = 0.0;
     for (size_t i = 0; i < 3; ++i)
         straight += (m_program[i] - programStart[i]) * (m_program[i] - programStart[i]);
@@ -168,7 +169,7 @@ void GCodeInterpreter::returnHome(const Words &w, int line)
     m_effect.motion = BlockEffect::Motion::Rapid;
     m_effect.machineCoordinates = true;
     m_effect.lengthAxisWord = w.word("XYZ"[m_lengthAxis]);
-    m_effect.lowestZ = std::min(start[2], m_machine[2]);
+    m_effect.lowestZ = m_program[2];
     recordStraight(line, start);
 }
 

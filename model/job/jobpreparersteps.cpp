@@ -8,7 +8,6 @@
 #include "model/gcode/gcodewords.h"
 #include "model/job/jobchecker.h"
 #include "model/numberformat.h"
-#include "model/timetext.h"
 
 using namespace Qt::StringLiterals;
 
@@ -155,9 +154,10 @@ Result<void> JobPreparer::restoreAfterChange(int tool, const LineSink &sink)
 {
     const ToolFacts facts = m_facts.value(tool);
     const double tlo = *facts.measuredTlo;
-    QString measured = facts.source == TloSource::Manual
-        ? tr("set by hand %1").arg(ageText(facts.measuredAt, m_options.now))
-        : tr("measured %1").arg(ageText(facts.measuredAt, m_options.now));
+    // A date, not an age: the program is kept and run later.
+    const QString when = facts.measuredAt.toUTC().toString(u"yyyy-MM-dd HH:mm"_s) + u" UTC"_s;
+    QString measured
+        = facts.source == TloSource::Manual ? tr("set by hand %1").arg(when) : tr("measured %1").arg(when);
     if (facts.referenceMz)
         measured += tr(" against reference MCS Z %1").arg(command(*facts.referenceMz));
     if (auto r = insertLine(u"M493.2 T"_s + QString::number(tool) + u' '

@@ -1,0 +1,313 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The job check: every finding, each on its line, against a table and a real SQLite history library.
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "model/job/jobcheck.h"
+#include "model/library/library.h"
+#include "model/tooltable.h"
+
+using namespace Qt::StringLiterals;
+using namespace Toffee;
+
+namespace {
+
+const QDateTime kNow(QDate(2026, 11, 24), QTime(12, 0), Qt::UTC);
+
+Tool cutter(int number, std::optional<double> tlo, int daysAgo, double length = 40.0)
+{
+    Tool t;
+    t.number = number;
+    t.pocket = number;
+    t.lengthGeometry = length;
+    t.measuredTlo = tlo;
+    if (tlo)
+        t.measuredAt = kNow.addDays(-daysAgo);
+    return t;
+}
+
+// T1 (reference), T2 (measured 2 days ago), T3 (never measured), T4 (failed its break test), T5 (measured
+// 30 days ago), T7 (measured, outside the rack), in mm.
+ToolTable shopTable()
+{
+    QList<Tool> tools { cutter(1, 0.0, 1), cutter(2, -33.388, 2), cutter(3, std::nullopt, 0),
+        cutter(4, -12.5, 1), cutter(5, -20.0, 30), cutter(7, -5.0, 1) };
+    tools[3].breakTestFailed = true;
+    return ToolTable::fromTools(tools, Units::Millimetre).value();
+}
+
+JobReport check(const QByteArray &program, Dialect dialect, const ToolTable &table,
+    std::optional<double> zFloor = {}, QList<int> rack = {})
+{
+    JobCheckSetup setup;
+    setup.dialect = dialect;
+    setup.useTable(table);
+    setup.zFloor = zFloor;
+    setup.rack = rack;
+    setup.now = kNow;
+    JobChecker checker(setup);
+    int line = 0;
+    for (const QByteArray &text : program.split('\n'))
+        checker.feed(text, ++line);
+    return checker.finish(u"test.nc"_s, false);
+}
+
+const Finding *find(const JobReport &report, FindingKind kind, int tool = -2)
+{
+    for (const Finding &f : report.findings) {
+        if (f.kind == kind && (tool == -2 || f.tool == tool))
+            return &f;
+    }
+    return nullptr;
+}
+
+} // namespace
+
+class TestJobChecker : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void findsEveryToolProblemOnTheLineThatLoadsIt()
+    {
+        const QByteArray program = "G21 G90\n"
+                                   "M6 T2\n" // 2: fine
+                                   "G1 Z-1 F300\n"
+                                   "M6 T3\n" // 4: never measured
+                                   "G1 Z-1\n"
+                                   "M6 T4\n" // 6: broken
+                                   "G1 Z-1\n"
+                                   "M6 T5\n" // 8: stale
+                                   "G1 Z-1\n"
+                                   "M6 T9\n" // 10: not in the table, and not in the rack
+                                   "G1 Z-1\n"
+                                   "M6 T7\n" // 12: outside the rack
+                                   "G1 Z-1\nM30\n";
+        const JobReport r = check(program, Dialect::Carvera, shopTable(), {}, { 1, 2, 3, 4, 5, 6 });
+        QCOMPARE(r.tools.size(), 6);
+        QCOMPARE(r.tools.at(0).number, 2);
+        QCOMPARE(r.tools.at(4).number, 9);
+        QVERIFY(!r.tools.at(4).inTable);
+        QCOMPARE(r.tools.at(0).tlo, std::optional(-33.388));
+        QCOMPARE(r.tools.at(0).measuredAt, kNow.addDays(-2));
+        const Finding *notMeasured = find(r, FindingKind::NotMeasured, 3);
+        QVERIFY(notMeasured);
+        QCOMPARE(notMeasured->line, 4);
+        QCOMPARE(notMeasured->severity(), Severity::Warning);
+        const Finding *broken = find(r, FindingKind::BrokenTool, 4);
+        QVERIFY(broken);
+        QCOMPARE(broken->line, 6);
+        QCOMPARE(broken->severity(), Severity::Error);
+        const Finding *stale = find(r, FindingKind::StaleTlo, 5);
+        QVERIFY(stale);
+        QCOMPARE(stale->line, 8);
+        QVERIFY2(stale->message.contains(u"30 days ago"_s), qPrintable(stale->message));
+        const Finding *missing = find(r, FindingKind::MissingTool, 9);
+        QVERIFY(missing);
+        QCOMPARE(missing->line, 10);
+        QCOMPARE(missing->severity(), Severity::Error);
+        QCOMPARE(find(r, FindingKind::ManualChange, 9)->line, 10);
+        QCOMPARE(find(r, FindingKind::ManualChange, 7)->line, 12);
+        QVERIFY(!find(r, FindingKind::ManualChange, 2));
+        QVERIFY(!find(r, FindingKind::StaleTlo, 2));
+        QCOMPARE(r.errors(), 2);
+        QCOMPARE(r.warnings(), 4);
+        QCOMPARE(r.exitCode(), 4);
+        // In line order.
+        for (qsizetype i = 1; i < r.findings.size(); ++i)
+            QVERIFY(r.findings.at(i - 1).line <= r.findings.at(i).line);
+    }
+
+    void aToolLoadedTwiceIsOneToolWithBothLines()
+    {
+        const JobReport r
+            = check("M6 T2\nG1 X10 F600\nM6 T1\nG1 X0\nM6 T2\nG1 X10\nM30\n", Dialect::Carvera, shopTable());
+        QCOMPARE(r.tools.size(), 2);
+        QCOMPARE(r.tools.at(0).loadLines, (QList<int> { 1, 5 }));
+        QCOMPARE(r.tools.at(0).loads, 2);
+        // 10 mm at 600 mm/min is one second, twice.
+        QCOMPARE(r.tools.at(0).cuttingSeconds, 2.0);
+        QCOMPARE(r.tools.at(0).feedPathMm, 20.0);
+        QCOMPARE(r.tools.at(1).cuttingSeconds, 1.0);
+        QCOMPARE(r.cuttingSeconds, 3.0);
+        QCOMPARE(r.exitCode(), 0);
+    }
+
+    void findsFeedsBelowTheFloorWithTheirFirstLines()
+    {
+        QByteArray program = "M6 T2\nG0 Z5\nG0 Z-30\n"; // a rapid below the floor is not a feed
+        for (int i = 0; i < 25; ++i)
+            program += "G1 Z-21 F100\nG1 Z-10\n";
+        const JobReport r = check(program, Dialect::Carvera, shopTable(), -20.0);
+        const Finding *below = find(r, FindingKind::BelowFloor, 2);
+        QVERIFY(below);
+        QCOMPARE(below->line, 4);
+        QCOMPARE(below->lines.size(), JobChecker::kMaxLinesPerFinding);
+        QCOMPARE(below->lines.at(1), 6);
+        QCOMPARE(below->count, 25); // the plunges; not the moves up from them
+        QCOMPARE(r.tools.at(0).lowestZ, std::optional(-21.0));
+        QCOMPARE(r.exitCode(), 4);
+        const JobReport arc
+            = check("M6 T2\nG0 X0 Z-10\nG18 G2 X10 Z-10 R5 F100\n", Dialect::Carvera, shopTable(), -14.0);
+        QVERIFY(find(arc, FindingKind::BelowFloor));
+        QCOMPARE(arc.tools.at(0).lowestZ, std::optional(-15.0));
+    }
+
+    void findsInchesOnTheCarveraAndUnitsThatAreNotTheTables()
+    {
+        const JobReport carvera = check("G20\nM6 T2\nM30\n", Dialect::Carvera, shopTable());
+        QCOMPARE(find(carvera, FindingKind::InchOnCarvera)->line, 1);
+        QVERIFY(!find(carvera, FindingKind::UnitsMismatch));
+        const JobReport fanuc = check("G21\nT2 M6\nG20\nM30\n", Dialect::Fanuc, shopTable());
+        QCOMPARE(find(fanuc, FindingKind::UnitsMismatch)->line, 3);
+        QCOMPARE(find(fanuc, FindingKind::UnitsMismatch)->severity(), Severity::Error);
+    }
+
+    void findsLengthCompensationThatIsMissingOrAnotherTools()
+    {
+        const QByteArray program = "T1 M6\n"
+                                   "G43 H1 G0 Z50\n"
+                                   "G1 Z-1 F100\n" // 3: fine
+                                   "T2 M6\n"
+                                   "G0 X5\n"
+                                   "G1 Z-2\n" // 6: H1 still in force
+                                   "T3 M6\n"
+                                   "G49\n"
+                                   "G1 Z-3\n" // 9: none
+                                   "T5 M6\n"
+                                   "G43 H2 Z10\n"
+                                   "G1 Z-1\n" // 12: H2, deliberately
+                                   "M30\n";
+        const JobReport r = check(program, Dialect::Fanuc, shopTable());
+        QVERIFY(!find(r, FindingKind::LengthOffsetMismatch, 1));
+        const Finding *stale = find(r, FindingKind::LengthOffsetMismatch, 2);
+        QCOMPARE(stale->line, 6);
+        QVERIFY2(stale->message.contains(u"still in force"_s), qPrintable(stale->message));
+        QCOMPARE(find(r, FindingKind::NoLengthCompensation, 3)->line, 9);
+        const Finding *other = find(r, FindingKind::LengthOffsetMismatch, 5);
+        QCOMPARE(other->line, 11); // G1 is in force: the G43 block feeds
+        QVERIFY2(other->message.contains(u"H2"_s), qPrintable(other->message));
+        QCOMPARE(r.exitCode(), 1);
+        // LinuxCNC: G43 without H takes the loaded tool; FAGOR: D names the offset.
+        QCOMPARE(check("T2 M6\nG43\nG1 Z-1 F100\nM30\n", Dialect::LinuxCnc, shopTable()).findings.size(), 0);
+        const JobReport fagor = check("T2 D3 M6\nG43\nG1 Z-1 F100\nM30\n", Dialect::Fagor8055M, shopTable());
+        QVERIFY(find(fagor, FindingKind::LengthOffsetMismatch, 2)->message.contains(u"D3"_s));
+        // The Carvera and Automation1 have no G43 to check.
+        QVERIFY(!find(
+            check("M6 T2\nG1 Z-1 F100\n", Dialect::Carvera, shopTable()), FindingKind::NoLengthCompensation));
+    }
+
+    void findsEveryLineTheControllerRefusesAndCountsBeyondAHundred()
+    {
+        QByteArray program = "M6 T2\n";
+        for (int i = 0; i < 250; ++i)
+            program += "G1 X1 Y1 G7\n";
+        const JobReport r = check(program, Dialect::Fanuc, shopTable());
+        QCOMPARE(r.errors(), JobChecker::kMaxProgramErrors + 1);
+        QCOMPARE(r.findings.at(0).line, 2);
+        QVERIFY2(r.findings.at(0).message.contains(u"G7"_s), qPrintable(r.findings.at(0).message));
+        const Finding &rest = r.findings.constLast();
+        QCOMPARE(rest.kind, FindingKind::ProgramError);
+        QCOMPARE(rest.line, 102);
+        QCOMPARE(rest.count, 150);
+    }
+
+    void aFeedBeforeAnyToolChangeIsPointedOut()
+    {
+        const JobReport r = check("G1 X10 F100\nG1 X20\nM6 T2\nM30\n", Dialect::Carvera, shopTable());
+        const Finding *f = find(r, FindingKind::NoToolLoaded);
+        QCOMPARE(f->line, 1);
+        QCOMPARE(f->count, 2);
+        QCOMPARE(r.exitCode(), 1);
+    }
+
+    void nothingAfterTheEndRuns()
+    {
+        const JobReport r = check("M6 T2\nM30\nM6 T99\nG7\n", Dialect::Carvera, shopTable());
+        QCOMPARE(r.tools.size(), 1);
+        QCOMPARE(r.lines, 2);
+        QCOMPARE(r.exitCode(), 0);
+    }
+
+    void readsWhatTheHistoryLibraryKnows()
+    {
+        QTemporaryDir dir;
+        auto library = Library::open(LibraryLocation { dir.filePath(u"library.sqlite"_s) });
+        QVERIFY2(library.ok(), qPrintable(library.ok() ? QString() : library.error().message));
+        auto event
+            = [](int tool, EventKind kind, QDateTime at, std::optional<double> tlo, bool failed = false) {
+                  HistoryEvent e;
+                  e.id = HistoryEvent::newId();
+                  e.machine = u"Carvera"_s;
+                  e.tool = tool;
+                  e.kind = kind;
+                  e.at = at;
+                  e.tlo = tlo;
+                  if (kind == EventKind::BreakTest)
+                      e.failed = failed;
+                  return e;
+              };
+        // T2: probed at the table's time, then failed a break test. T1: probed again an hour ago, to another
+        // TLO than the table's. T3: the table has no TLO; the library has one.
+        QVERIFY(library.value()
+                    ->append({ event(2, EventKind::Probe, kNow.addDays(-2), -33.388),
+                        event(2, EventKind::BreakTest, kNow.addDays(-1), -33.9, true),
+                        event(1, EventKind::Probe, kNow.addSecs(-3600), 0.05),
+                        event(3, EventKind::Probe, kNow.addDays(-3), -7.5) })
+                    .ok());
+        QTemporaryDir programs;
+        const QString path = programs.filePath(u"job.nc"_s);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("M6 T1\nG1 Z-1 F100\nM6 T2\nG1 Z-1\nM6 T3\nG1 Z-1\nM30\n");
+        file.close();
+        JobCheckSetup setup;
+        setup.useTable(shopTable());
+        setup.now = kNow;
+        const Library &lib = *library.value();
+        const auto report
+            = checkJobFile(path, setup, [&lib](QHash<int, ToolFacts> &facts, const QList<int> &tools) {
+                  return addLibraryFacts(facts, lib, u"Carvera"_s, tools);
+              });
+        QVERIFY(report.ok());
+        const JobReport &r = report.value();
+        QCOMPARE(find(r, FindingKind::BrokenTool, 2)->line, 3);
+        const Finding *newer = find(r, FindingKind::StaleTlo, 1);
+        QVERIFY(newer);
+        QVERIFY2(newer->message.contains(u"0.050 mm"_s) && newer->message.contains(u"1 h ago"_s),
+            qPrintable(newer->message));
+        // The table says T3 is unmeasured; the library's probe is not the table's TLO.
+        QVERIFY(find(r, FindingKind::NotMeasured, 3));
+        QCOMPARE(r.program, u"job.nc"_s);
+    }
+
+    void aCancelledCheckSaysSoAndAFileThatIsNotOneIsRefused()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"long.nc"_s);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("M6 T2\n");
+        for (int i = 0; i < 300000; ++i)
+            file.write("G1 X1 F100\nG1 X0\n");
+        file.close();
+        JobCheckSetup setup;
+        setup.useTable(shopTable());
+        int calls = 0;
+        const auto report = checkJobFile(
+            path, setup, {}, [&calls](qint64 done, qint64 total) { return ++calls < 2 && done < total; });
+        QVERIFY(report.ok());
+        QVERIFY(report.value().cancelled);
+        QVERIFY(report.value().lines < 600001);
+        QVERIFY(report.value().lines >= 65536);
+        const auto folder = checkJobFile(dir.path(), setup);
+        QVERIFY(!folder.ok());
+        QVERIFY2(folder.error().message.contains(u"folder"_s), qPrintable(folder.error().message));
+        const auto device = checkJobFile(u"/dev/zero"_s, setup);
+        QVERIFY(!device.ok());
+        QVERIFY2(device.error().message.contains(u"device"_s), qPrintable(device.error().message));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestJobChecker)
+#include "tst_jobchecker.moc"
