@@ -2,10 +2,12 @@
 // toffee-cli export and simulate: the offset programs of each controller.
 #include <QFile>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
 
 #include "app/cli/cli.h"
 #include "model/formats/fileio.h"
+#include "model/formats/linereader.h"
 #include "model/formats/tablefile.h"
 #include "model/gcode/dialect.h"
 #include "model/gcode/gcodeinterpreter.h"
@@ -39,6 +41,45 @@ QJsonArray point(const Position &p)
 QString fixed(double v)
 {
     return formatNumber(v, NumberFormat::fixed(4));
+}
+
+QJsonObject moveJson(const SimulatedMove &m)
+{
+    QJsonArray points;
+    for (const Position &p : m.points)
+        points.append(point(p));
+    return { { u"line"_s, m.line }, { u"x"_s, m.end[0] }, { u"y"_s, m.end[1] }, { u"z"_s, m.end[2] },
+        { u"points"_s, points } };
+}
+
+QJsonArray offsetsJson(const OffsetTable &offsets)
+{
+    QJsonArray table;
+    for (const auto &[number, e] : offsets)
+        table.append(QJsonObject { { u"number"_s, number }, { u"length_geometry"_s, e.lengthGeometry },
+            { u"length_wear"_s, e.lengthWear }, { u"radius_geometry"_s, e.radiusGeometry },
+            { u"radius_wear"_s, e.radiusWear } });
+    return table;
+}
+
+void printMove(Invocation &call, const SimulatedMove &m)
+{
+    call.out << "line " << m.line << ": X" << fixed(m.end[0]) << " Y" << fixed(m.end[1]) << " Z"
+             << fixed(m.end[2]) << '\n';
+    for (const Position &p : m.points)
+        call.out << "    " << fixed(p[0]) << ' ' << fixed(p[1]) << ' ' << fixed(p[2]) << '\n';
+}
+
+void printOffsets(Invocation &call, const OffsetTable &offsets)
+{
+    if (!offsets.empty()) {
+        call.out << "offsets:\n";
+        for (const auto &[number, e] : offsets)
+            call.out << "  " << number << ": length " << fixed(e.lengthGeometry) << " wear "
+                     << fixed(e.lengthWear) << ", radius " << fixed(e.radiusGeometry) << " wear "
+                     << fixed(e.radiusWear) << '\n';
+    }
+    call.out.flush();
 }
 
 } // namespace
@@ -94,52 +135,41 @@ int simulateProgram(Invocation &call)
             return fail(call, table.error().text(), BadInput);
         offsets = offsetTableFor(table.value(), *dialect);
     }
-    // A program is read whole for now; a FIFO or a device is refused by name, and a program is bounded.
-    constexpr qint64 kMaxProgramBytes = 512LL * 1024 * 1024;
-    const auto read = readRegularFile(call.arguments.front(), kMaxProgramBytes);
-    if (!read)
-        return fail(call, read.error().text(), BadInput);
-    const QByteArray &program = read.value();
-
+    // Read a line at a time and each move printed as it is made: memory does not grow with the program.
+    LineReader reader;
+    if (auto opened = reader.open(call.arguments.front()); !opened)
+        return fail(call, opened.error().text(), BadInput);
     GCodeInterpreter interpreter(*dialect, offsets, samples);
-    const auto result = interpreter.run(program);
-
+    bool first = true;
     if (call.json) {
-        QJsonArray moves;
-        for (const SimulatedMove &m : interpreter.moves()) {
-            QJsonArray points;
-            for (const Position &p : m.points)
-                points.append(point(p));
-            moves.append(QJsonObject { { u"line"_s, m.line }, { u"x"_s, m.end[0] }, { u"y"_s, m.end[1] },
-                { u"z"_s, m.end[2] }, { u"points"_s, points } });
-        }
-        QJsonArray table;
-        for (const auto &[number, e] : interpreter.offsets())
-            table.append(QJsonObject { { u"number"_s, number }, { u"length_geometry"_s, e.lengthGeometry },
-                { u"length_wear"_s, e.lengthWear }, { u"radius_geometry"_s, e.radiusGeometry },
-                { u"radius_wear"_s, e.radiusWear } });
-        const QJsonValue error = result.ok() ? QJsonValue()
-                                             : QJsonValue(QJsonObject { { u"line"_s, result.error().line },
-                                                 { u"message"_s, result.error().message } });
-        printJson(call,
-            QJsonObject { { u"dialect"_s, dialectInfo(*dialect).key }, { u"moves"_s, moves },
-                { u"offsets"_s, table }, { u"error"_s, error } });
+        call.out << "{\"dialect\":\"" << dialectInfo(*dialect).key << "\",\"moves\":[";
+        interpreter.setMoveSink([&call, &first](const SimulatedMove &m) {
+            call.out << (first ? "" : ",")
+                     << QString::fromUtf8(QJsonDocument(moveJson(m)).toJson(QJsonDocument::Compact));
+            first = false;
+        });
     } else {
-        for (const SimulatedMove &m : interpreter.moves()) {
-            call.out << "line " << m.line << ": X" << fixed(m.end[0]) << " Y" << fixed(m.end[1]) << " Z"
-                     << fixed(m.end[2]) << '\n';
-            for (const Position &p : m.points)
-                call.out << "    " << fixed(p[0]) << ' ' << fixed(p[1]) << ' ' << fixed(p[2]) << '\n';
-        }
-        if (!interpreter.offsets().empty()) {
-            call.out << "offsets:\n";
-            for (const auto &[number, e] : interpreter.offsets())
-                call.out << "  " << number << ": length " << fixed(e.lengthGeometry) << " wear "
-                         << fixed(e.lengthWear) << ", radius " << fixed(e.radiusGeometry) << " wear "
-                         << fixed(e.radiusWear) << '\n';
-        }
-        call.out.flush();
+        interpreter.setMoveSink([&call](const SimulatedMove &m) { printMove(call, m); });
     }
+    Result<void> result;
+    QByteArrayView line;
+    while (result.ok() && !interpreter.ended() && reader.next(line))
+        result = interpreter.runLine(line, reader.lineNumber());
+    if (result.ok() && reader.error())
+        result = *reader.error();
+    if (call.json)
+        call.out << "],\"offsets\":"
+                 << QString::fromUtf8(
+                        QJsonDocument(offsetsJson(interpreter.offsets())).toJson(QJsonDocument::Compact))
+                 << ",\"error\":"
+                 << (result.ok() ? u"null"_s
+                                 : QString::fromUtf8(
+                                     QJsonDocument(QJsonObject { { u"line"_s, result.error().line },
+                                                       { u"message"_s, result.error().message } })
+                                         .toJson(QJsonDocument::Compact)))
+                 << "}" << Qt::endl;
+    else
+        printOffsets(call, interpreter.offsets());
     if (!result) {
         call.err << "toffee-cli: " << result.error().text() << Qt::endl;
         return MachineError;

@@ -3,21 +3,26 @@
 
 #include <QFileInfo>
 
-#include "model/formats/fileio.h"
+#include "model/formats/linereader.h"
 #include "model/gcode/gcodeinterpreter.h"
 
 namespace Toffee {
 
 Result<ProgramUse> ProgramUse::read(const QString &path, Dialect dialect, const QString &machine)
 {
-    constexpr qint64 kMaxProgramBytes = 512LL * 1024 * 1024;
-    const auto program = readRegularFile(path, kMaxProgramBytes);
-    if (!program)
-        return program.error();
+    // A line at a time: memory does not grow with the program.
+    LineReader reader;
+    if (auto opened = reader.open(path); !opened)
+        return opened.error();
     GCodeInterpreter interpreter(dialect);
     interpreter.setRecordMoves(false);
-    if (auto ran = interpreter.run(program.value()); !ran)
-        return Error { tr("%1 Nothing was recorded.").arg(ran.error().message), ran.error().line, path };
+    QByteArrayView line;
+    while (!interpreter.ended() && reader.next(line)) {
+        if (auto ran = interpreter.runLine(line, reader.lineNumber()); !ran)
+            return Error { tr("%1 Nothing was recorded.").arg(ran.error().message), ran.error().line, path };
+    }
+    if (reader.error())
+        return *reader.error();
     ProgramUse out;
     out.rapidMm = interpreter.rapidDistance();
     const QDateTime now = QDateTime::currentDateTimeUtc();
