@@ -13,8 +13,8 @@
 namespace Toffee {
 
 // The largest CAM library Toffee reads, and the largest tools.json it unpacks from a .tools archive: Fusion's
-// own libraries are a few megabytes.
-inline constexpr qint64 kMaxCamLibraryBytes = 64LL * 1024 * 1024;
+// own libraries are a few megabytes, and a parsed JSON document takes up to ten times its size in memory.
+inline constexpr qint64 kMaxCamLibraryBytes = 32LL * 1024 * 1024;
 // How much of a G-code program's beginning may be its tool header: the program after it is never read.
 inline constexpr qint64 kMaxProgramHeaderBytes = 4LL * 1024 * 1024;
 
