@@ -2,6 +2,7 @@
 // CAM libraries from files (model/camimport/camlibrary.cpp): which reader, and refusals that name the file.
 #include <sys/stat.h>
 
+#include <QRandomGenerator>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -89,6 +90,45 @@ private Q_SLOTS:
         const auto library = loadCamLibrary(path);
         QVERIFY2(library.ok(), qPrintable(library.error().text()));
         QCOMPARE(library.value().tools.front().number, 2);
+    }
+
+    void survivesGarbledFilesOfEachKind()
+    {
+        // Bytes flipped, cut and repeated, 600 times per format: each reader returns the tools or a reason,
+        // never a crash and never an empty refusal.
+        const QByteArray json = Test::fusionLibrary({ Test::fusionTool(1), Test::fusionTool(2) });
+        const std::pair<QByteArray, Result<QList<CamTool>> (*)(QByteArrayView)> kinds[] = {
+            { json, readFusionJson },
+            { Test::zipArchive({ { "tools.json", json } }), readFusionArchive },
+            { Test::hsmLibrary(Test::hsmTool(1) + Test::hsmTool(2)), readHsmLibrary },
+            { Test::makeraProgram({ Test::makeraTool(1), Test::makeraTool(2) }),
+                [](QByteArrayView data) {
+                    return readMakeraHeader(data);
+                } },
+        };
+        QRandomGenerator random(13);
+        for (const auto &[good, read] : kinds) {
+            for (int i = 0; i < 600; ++i) {
+                QByteArray garbled = good;
+                for (int edits = random.bounded(1, 6); edits > 0; --edits) {
+                    const qsizetype at = random.bounded(qsizetype(garbled.size()));
+                    switch (random.bounded(3)) {
+                    case 0:
+                        garbled[at] = char(random.bounded(256));
+                        break;
+                    case 1:
+                        garbled.truncate(at);
+                        break;
+                    default:
+                        garbled.insert(at, garbled.mid(at, random.bounded(1, 64)));
+                    }
+                    if (garbled.isEmpty())
+                        break;
+                }
+                const auto result = read(garbled);
+                QVERIFY(result.ok() ? !result.value().isEmpty() : !result.error().message.isEmpty());
+            }
+        }
     }
 
     void refusesWhatIsNotAFile()
