@@ -2,7 +2,9 @@
 // Running toffee-cli and toffee-emulator as a user or a script runs them.
 #pragma once
 
+#include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QTest>
 
@@ -28,6 +30,53 @@ inline Run cli(const QStringList &arguments, int timeoutMs = 60000)
     }
     run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
     run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
+}
+
+// toffee-cli run with its output thrown away (`keepOutput` false) or kept, and its peak resident memory read
+// from the kernel while it runs (/proc/PID/status, VmHWM: the largest it has been, so polling misses nothing
+// but the last few milliseconds before it exits).
+struct MeasuredRun : Run
+{
+    long peakKb = 0;
+};
+
+inline MeasuredRun cliWithPeak(const QStringList &arguments, bool keepOutput = true, int timeoutMs = 300000)
+{
+    QProcess process;
+    if (!keepOutput)
+        process.setStandardOutputFile(QProcess::nullDevice());
+    process.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"), arguments);
+    MeasuredRun run;
+    if (!process.waitForStarted()) {
+        run.err = "TEST: toffee-cli did not start";
+        return run;
+    }
+    QFile status(QStringLiteral("/proc/%1/status").arg(process.processId()));
+    // Until exec() the child is a copy of this test: its memory is not toffee-cli's.
+    const QString exe = QStringLiteral("/proc/%1/exe").arg(process.processId());
+    const QString program = QFileInfo(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli")).canonicalFilePath();
+    QElapsedTimer clock;
+    clock.start();
+    while (!process.waitForFinished(2)) {
+        if (clock.elapsed() > timeoutMs) {
+            process.kill();
+            process.waitForFinished();
+            run.err = "TEST: toffee-cli did not finish";
+            return run;
+        }
+        if (QFileInfo(exe).symLinkTarget() == program && status.open(QIODevice::ReadOnly)) {
+            for (const QByteArray &line : status.readAll().split('\n')) {
+                if (line.startsWith("VmHWM:"))
+                    run.peakKb = std::max(run.peakKb, line.mid(6).trimmed().split(' ').value(0).toLong());
+            }
+            status.close();
+        }
+    }
+    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    if (keepOutput)
+        run.out = process.readAllStandardOutput();
     run.err = process.readAllStandardError();
     return run;
 }

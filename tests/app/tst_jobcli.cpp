@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// toffee-cli job check and job prepare as a script runs them: exit codes, JSON, refusals, and memory that
+// does not grow with the program (a million lines and five million peak within 10 % of each other).
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "tests/support/processes.h"
+#include "tests/support/programs.h"
+
+using namespace Qt::StringLiterals;
+using namespace Toffee::Test;
+
+namespace {
+
+// Under AddressSanitizer memory is the sanitizer's: the bound is for the real build, the ratio for both.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kUnderAsan = true;
+#else
+constexpr bool kUnderAsan = false;
+#endif
+
+const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
+
+void write(const QString &path, const QByteArray &content)
+{
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(content);
+}
+
+QJsonObject json(const Run &run)
+{
+    return QJsonDocument::fromJson(run.out).object();
+}
+
+} // namespace
+
+class TestJobCli : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() { qputenv("HOME", m_home.path().toUtf8()); }
+
+    void exitsByTheWorstFinding_data()
+    {
+        QTest::addColumn<QByteArray>("program");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("kind");
+        // The example table's T1 and T2 are measured, T3 is not; the stale limit is a long one here.
+        QTest::newRow("clean") << QByteArray("G21\nM6 T2\nG1 Z-1 F300\nM30\n") << 0 << QString();
+        QTest::newRow("a warning") << QByteArray("M6 T3\nG1 Z-1 F300\nM30\n") << 1 << u"not_measured"_s;
+        QTest::newRow("an error") << QByteArray("M6 T2\nG1 Z-1 F300\nM6 T42\nM30\n") << 4
+                                  << u"missing_tool"_s;
+        QTest::newRow("inches") << QByteArray("G20\nM6 T2\nM30\n") << 4 << u"inch_on_carvera"_s;
+        QTest::newRow("below the floor") << QByteArray("M6 T2\nG1 Z-30 F300\nM30\n") << 4 << u"below_floor"_s;
+    }
+
+    void exitsByTheWorstFinding()
+    {
+        QFETCH(QByteArray, program);
+        QFETCH(int, exitCode);
+        QFETCH(QString, kind);
+        const QString path = m_dir.filePath(u"job.nc"_s);
+        write(path, program);
+        const Run run = cli({ u"--json"_s, u"job"_s, u"check"_s, path, u"--table"_s, kExample, u"--z-floor"_s,
+            u"-20"_s, u"--stale-days"_s, u"3650"_s, u"--no-history"_s });
+        QCOMPARE(run.exitCode, exitCode);
+        const QJsonObject o = json(run);
+        QCOMPARE(o.value(u"program"_s).toString(), u"job.nc"_s);
+        QCOMPARE(o.value(u"dialect"_s).toString(), u"carvera"_s);
+        const QJsonArray findings = o.value(u"findings"_s).toArray();
+        QCOMPARE(findings.isEmpty(), kind.isEmpty());
+        QStringList kinds;
+        for (const QJsonValue &f : findings)
+            kinds << f.toObject().value(u"kind"_s).toString();
+        QVERIFY2(kind.isEmpty() || kinds.contains(kind), qPrintable(kinds.join(u", "_s)));
+    }
+
+    void reportsToolsAndFindingsForPeople()
+    {
+        const QString path = m_dir.filePath(u"people.nc"_s);
+        write(path, "M6 T2\nG1 X60 F600\nM6 T9\nG1 Z-1 F100\nM30\n");
+        const Run run = cli({ u"job"_s, u"check"_s, path, u"--table"_s, kExample, u"--stale-days"_s,
+            u"3650"_s, u"--no-history"_s });
+        QCOMPARE(run.exitCode, 4);
+        QVERIFY2(run.out.contains("T2  loaded at line 1  TLO -33.388"), run.out.constData());
+        QVERIFY2(run.out.contains("cutting 6 s, 60.000 mm"), run.out.constData());
+        QVERIFY2(run.out.contains("error: line 3: T9 is not in the tool table"), run.out.constData());
+        QVERIFY2(
+            run.out.contains("warning: line 3: The machine's rack does not hold T9"), run.out.constData());
+        QVERIFY2(run.out.contains("1 error, 1 warning"), run.out.constData());
+    }
+
+    void refusesBadInputWithExit2_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("message");
+        const QString program = QStringLiteral(TOFFEE_SOURCE_DIR "/README.md");
+        QTest::newRow("no program") << QStringList { u"job"_s, u"check"_s }
+                                    << u"usage: toffee-cli job check"_s;
+        QTest::newRow("no such program") << QStringList { u"job"_s, u"check"_s, u"/nonexistent.nc"_s }
+                                         << u"/nonexistent.nc: cannot open"_s;
+        QTest::newRow("a folder") << QStringList { u"job"_s, u"check"_s, u"/tmp"_s } << u"folder"_s;
+        QTest::newRow("bad floor") << QStringList { u"job"_s, u"check"_s, program, u"--z-floor"_s, u"deep"_s }
+                                   << u"--z-floor must be a work Z"_s;
+        QTest::newRow("bad dialect") << QStringList { u"job"_s, u"check"_s, program, u"--dialect"_s,
+            u"heidenhain"_s } << u"--dialect must be one of"_s;
+        QTest::newRow("bad rack") << QStringList { u"job"_s, u"check"_s, program, u"--rack"_s, u"6-1"_s }
+                                  << u"--rack must be none"_s;
+        QTest::newRow("bad stale days") << QStringList { u"job"_s, u"check"_s, program, u"--stale-days"_s,
+            u"0"_s } << u"--stale-days must be"_s;
+        QTest::newRow("prepare without table") << QStringList { u"job"_s, u"prepare"_s, program, u"-o"_s,
+            u"/tmp/x.nc"_s } << u"usage: toffee-cli job prepare"_s;
+        QTest::newRow("a break test on FANUC") << QStringList { u"job"_s, u"prepare"_s, program, u"--table"_s,
+            kExample, u"--dialect"_s, u"fanuc"_s, u"--break-test"_s, u"-o"_s, u"/tmp/x.nc"_s }
+                                               << u"for the Carvera"_s;
+        QTest::newRow("tolerance below the minimum") << QStringList { u"job"_s, u"prepare"_s, program,
+            u"--table"_s, kExample, u"--break-test"_s, u"--tolerance"_s, u"0.01"_s, u"-o"_s, u"/tmp/x.nc"_s }
+                                                     << u"at least 0.02"_s;
+        QTest::newRow("unknown subcommand")
+            << QStringList { u"job"_s, u"run"_s } << u"usage: toffee-cli job"_s;
+    }
+
+    void refusesBadInputWithExit2()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, message);
+        const Run run = cli(arguments << u"--no-history"_s);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(QString::fromUtf8(run.err).contains(message), run.err.constData());
+    }
+
+    void preparesAProgramThatChecksClean()
+    {
+        const QString path = m_dir.filePath(u"carvera.nc"_s);
+        const QString out = m_dir.filePath(u"prepared.nc"_s);
+        write(path, "G21\nM6 T2\nM3 S10000\nG1 Z-1 F300\nG1 X10\nM6 T1\nG1 Z-1\nM30\n");
+        Run run = cli({ u"--json"_s, u"job"_s, u"prepare"_s, path, u"--table"_s, kExample, u"--break-test"_s,
+            u"--tolerance"_s, u"0.05"_s, u"-o"_s, out, u"--no-history"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(json(run).value(u"inserted"_s).toInt(), 3);
+        QCOMPARE(json(run).value(u"cutting_moves_checked"_s).toInt(), 3);
+        const QByteArray prepared = readFile(out);
+        QCOMPARE(prepared.count("M491.1 H0.05"), 2);
+        QVERIFY(prepared.contains("M5 (Toffee: the spindle stops for T2's break test)\n"));
+        run = cli({ u"job"_s, u"check"_s, out, u"--table"_s, kExample, u"--stale-days"_s, u"3650"_s,
+            u"--no-history"_s });
+        QCOMPARE(run.exitCode, 0);
+    }
+
+    void checksAProgramInMemoryThatDoesNotGrowWithIt()
+    {
+        const QString small = m_dir.filePath(u"1m.nc"_s);
+        const QString large = m_dir.filePath(u"5m.nc"_s);
+        QVERIFY(writeCamProgram(small, 1000000));
+        QVERIFY(writeCamProgram(large, 5000000));
+        const QStringList common { u"--table"_s, kExample, u"--stale-days"_s, u"3650"_s, u"--z-floor"_s,
+            u"-0.5"_s, u"--no-history"_s, u"--json"_s };
+        const MeasuredRun one = cliWithPeak(QStringList { u"job"_s, u"check"_s, small } + common);
+        const MeasuredRun five = cliWithPeak(QStringList { u"job"_s, u"check"_s, large } + common);
+        QCOMPARE(one.exitCode, 4); // the floor is crossed: errors, each counted
+        QCOMPARE(five.exitCode, 4);
+        QCOMPARE(json(five).value(u"lines"_s).toInteger(), 5000000);
+        // The findings are the table's and the floor's (one per tool, each with its count): the controller
+        // runs every line.
+        for (const QJsonValue &f : json(five).value(u"findings"_s).toArray())
+            QVERIFY(f.toObject().value(u"kind"_s).toString() != u"program_error"_s);
+        QVERIFY(one.peakKb > 0 && five.peakKb > 0);
+        qInfo("job check peak: 1,000,000 lines %ld KB, 5,000,000 lines %ld KB", one.peakKb, five.peakKb);
+        QVERIFY2(double(five.peakKb) <= 1.1 * double(one.peakKb),
+            qPrintable(u"%1 KB against %2 KB"_s.arg(five.peakKb).arg(one.peakKb)));
+        QVERIFY2(five.peakKb <= 60 * 1024 || kUnderAsan, qPrintable(u"%1 KB"_s.arg(five.peakKb)));
+        // simulate streams the same way, printing every move.
+        const MeasuredRun simOne = cliWithPeak({ u"simulate"_s, u"--dialect"_s, u"carvera"_s, small }, false);
+        const MeasuredRun simFive
+            = cliWithPeak({ u"simulate"_s, u"--dialect"_s, u"carvera"_s, large }, false);
+        QCOMPARE(simOne.exitCode, 0);
+        QCOMPARE(simFive.exitCode, 0);
+        qInfo("simulate peak: 1,000,000 lines %ld KB, 5,000,000 lines %ld KB", simOne.peakKb, simFive.peakKb);
+        QVERIFY2(double(simFive.peakKb) <= 1.1 * double(simOne.peakKb),
+            qPrintable(u"%1 KB against %2 KB"_s.arg(simFive.peakKb).arg(simOne.peakKb)));
+    }
+
+private:
+    QTemporaryDir m_home;
+    QTemporaryDir m_dir;
+};
+
+QTEST_GUILESS_MAIN(TestJobCli)
+#include "tst_jobcli.moc"
