@@ -523,6 +523,134 @@
         <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
         <translation>unbekannte Spalte „%1“ in der Kopfzeile; die Spalten sind number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units und linuxcnc.</translation>
     </message>
+    <message>
+        <source>%1 is %2 %3; it cannot be negative.</source>
+        <translation>%1 ist %2 %3; das kann nicht negativ sein.</translation>
+    </message>
+    <message>
+        <source>the diameter</source>
+        <translation>der Durchmesser</translation>
+    </message>
+    <message>
+        <source>the flute length</source>
+        <translation>die Schneidenlänge</translation>
+    </message>
+    <message>
+        <source>the length below the holder</source>
+        <translation>die Länge unter dem Halter</translation>
+    </message>
+    <message>
+        <source>the overall length</source>
+        <translation>die Gesamtlänge</translation>
+    </message>
+    <message>
+        <source>%1: cannot open it.</source>
+        <translation>%1: kann nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Fusion tool library (JSON)</source>
+        <translation>Fusion-Werkzeugbibliothek (JSON)</translation>
+    </message>
+    <message>
+        <source>Fusion tool library (.tools)</source>
+        <translation>Fusion-Werkzeugbibliothek (.tools)</translation>
+    </message>
+    <message>
+        <source>HSM tool library (.hsmlib)</source>
+        <translation>HSM-Werkzeugbibliothek (.hsmlib)</translation>
+    </message>
+    <message>
+        <source>Makera CAM program&apos;s tool header</source>
+        <translation>Werkzeugkopf eines Makera-CAM-Programms</translation>
+    </message>
+    <message>
+        <source>the library holds no tools; nothing to import.</source>
+        <translation>die Bibliothek enthält keine Werkzeuge; nichts zu importieren.</translation>
+    </message>
+    <message>
+        <source>number %1 is taken already (%2); each tool needs a number of its own.</source>
+        <translation>die Nummer %1 ist schon vergeben (%2); jedes Werkzeug braucht eine eigene Nummer.</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>%1: not a CAM tool library Toffee reads (.json, .tools, .hsmlib, or a G-code program with Makera CAM&apos;s tool header).</source>
+        <translation>%1: keine CAM-Werkzeugbibliothek, die Toffee liest (.json, .tools, .hsmlib oder ein G-Code-Programm mit dem Werkzeugkopf von Makera CAM).</translation>
+    </message>
+    <message>
+        <source>it unpacks to more than %1 MB; Toffee reads libraries of at most %1 MB.</source>
+        <translation>entpackt ergibt sie mehr als %1 MB; Toffee liest Bibliotheken von höchstens %1 MB.</translation>
+    </message>
+    <message>
+        <source>this is not a .tools archive: a zip archive could not be read from it (%1).</source>
+        <translation>das ist kein .tools-Archiv: es ließ sich nicht als ZIP-Archiv lesen (%1).</translation>
+    </message>
+    <message>
+        <source>it cannot be unpacked: %1.</source>
+        <translation>sie lässt sich nicht entpacken: %1.</translation>
+    </message>
+    <message>
+        <source>it cannot be unpacked: %1; the archive is damaged or truncated.</source>
+        <translation>sie lässt sich nicht entpacken: %1; das Archiv ist beschädigt oder abgeschnitten.</translation>
+    </message>
+    <message>
+        <source>this is not a .tools archive: the file is empty.</source>
+        <translation>das ist kein .tools-Archiv: die Datei ist leer.</translation>
+    </message>
+    <message>
+        <source>the archive holds no %1; a Fusion .tools file is a zip archive with the library in %1.</source>
+        <translation>das Archiv enthält keine %1; eine Fusion-.tools-Datei ist ein ZIP-Archiv mit der Bibliothek in %1.</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>eine Liste</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>ein Objekt</translation>
+    </message>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>column %1: this is not valid JSON (%2).</source>
+        <translation>Spalte %1: das ist kein gültiges JSON (%2).</translation>
+    </message>
+    <message>
+        <source>this is not a Fusion tool library: that is a JSON object with "data", a list of tools.</source>
+        <translation>das ist keine Fusion-Werkzeugbibliothek: die ist ein JSON-Objekt mit „data“, einer Liste von Werkzeugen.</translation>
+    </message>
+    <message>
+        <source>tool %1 in "data"</source>
+        <translation>Werkzeug %1 in „data“</translation>
+    </message>
+    <message>
+        <source>it is %1, not an object.</source>
+        <translation>es ist %1, kein Objekt.</translation>
+    </message>
+    <message>
+        <source>%1=%2 is not a number.</source>
+        <translation>%1=%2 ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>number=%1 is not a tool number.</source>
+        <translation>number=%1 ist keine Werkzeugnummer.</translation>
+    </message>
+    <message>
+        <source>this tool line has no number=…; Toffee needs the T number.</source>
+        <translation>diese Werkzeugzeile hat kein number=…; Toffee braucht die T-Nummer.</translation>
+    </message>
+    <message>
+        <source>the program&apos;s first %1 MB are all comments; Toffee reads the tool header only from the start of a program.</source>
+        <translation>die ersten %1 MB des Programms sind nur Kommentare; Toffee liest den Werkzeugkopf nur am Anfang eines Programms.</translation>
+    </message>
+    <message>
+        <source>this program has no Makera CAM tool header (";@MKR|TOOL|number=…" lines before the program body); there are no tools to import from it.</source>
+        <translation>dieses Programm hat keinen Werkzeugkopf von Makera CAM (Zeilen „;@MKR|TOOL|number=…“ vor dem Programm); es gibt keine Werkzeuge daraus zu importieren.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -923,6 +1051,41 @@
     </message>
 </context>
 <context>
+    <name>Toffee::FusionToolReader</name>
+    <message>
+        <source>"%1" is %2, not an object.</source>
+        <translation>„%1“ ist %2, kein Objekt.</translation>
+    </message>
+    <message>
+        <source>"%1" is %2, not text.</source>
+        <translation>„%1“ ist %2, kein Text.</translation>
+    </message>
+    <message>
+        <source>"%1" is %2, not a number.</source>
+        <translation>„%1“ ist %2, keine Zahl.</translation>
+    </message>
+    <message>
+        <source>it has no "post-process" "number": Toffee needs the T number the post writes.</source>
+        <translation>es hat keine „post-process“-„number“: Toffee braucht die T-Nummer, die der Postprozessor schreibt.</translation>
+    </message>
+    <message>
+        <source>its "number" is %1, not a whole number.</source>
+        <translation>seine „number“ ist %1, keine ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>its "number" %1 is out of range; use %2 to %3.</source>
+        <translation>seine „number“ %1 liegt außerhalb des Bereichs; verwenden Sie %2 bis %3.</translation>
+    </message>
+    <message>
+        <source>it has no "unit" (millimeters or inches).</source>
+        <translation>es hat keine „unit“ (millimeters oder inches).</translation>
+    </message>
+    <message>
+        <source>its "unit" is "%1"; Toffee reads millimeters or inches.</source>
+        <translation>seine „unit“ ist „%1“; Toffee liest millimeters oder inches.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::GCodeInterpreter</name>
     <message>
         <source>"%1" is not G-code this controller reads.</source>
@@ -1308,6 +1471,163 @@
     <message>
         <source>This library cannot be used: %1</source>
         <translation>Diese Bibliothek lässt sich nicht verwenden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::HsmReader</name>
+    <message>
+        <source>there is no XML element in it</source>
+        <translation>es enthält kein XML-Element</translation>
+    </message>
+    <message>
+        <source>column %1: this is not an HSM tool library: its root element is &lt;%2&gt; in namespace "%3", where a library has &lt;tool-library&gt; in "%4".</source>
+        <translation>Spalte %1: das ist keine HSM-Werkzeugbibliothek: ihr Wurzelelement ist &lt;%2&gt; im Namensraum „%3“, eine Bibliothek hat &lt;tool-library&gt; in „%4“.</translation>
+    </message>
+    <message>
+        <source>column %1: this is not well-formed XML (%2).</source>
+        <translation>Spalte %1: das ist kein wohlgeformtes XML (%2).</translation>
+    </message>
+    <message>
+        <source>tool %1</source>
+        <translation>Werkzeug %1</translation>
+    </message>
+    <message>
+        <source>its unit is "%1"; Toffee reads millimeters or inches.</source>
+        <translation>seine Einheit ist „%1“; Toffee liest millimeters oder inches.</translation>
+    </message>
+    <message>
+        <source>it has no &lt;nc number=…&gt;: Toffee needs the T number the post writes.</source>
+        <translation>es hat kein &lt;nc number=…&gt;: Toffee braucht die T-Nummer, die der Postprozessor schreibt.</translation>
+    </message>
+    <message>
+        <source>its nc number is "%1", not a tool number.</source>
+        <translation>seine nc-Nummer ist „%1“, keine Werkzeugnummer.</translation>
+    </message>
+    <message>
+        <source>its body %1 is "%2", not a number.</source>
+        <translation>sein body-Attribut %1 ist „%2“, keine Zahl.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ImportPreview</name>
+    <message>
+        <source>flute length</source>
+        <translation>Schneidenlänge</translation>
+    </message>
+    <message>
+        <source>below the holder</source>
+        <translation>unter dem Halter</translation>
+    </message>
+    <message>
+        <source>overall length</source>
+        <translation>Gesamtlänge</translation>
+    </message>
+    <message>
+        <source>description “%1” → “%2”</source>
+        <translation>Beschreibung „%1“ → „%2“</translation>
+    </message>
+    <message>
+        <source>radius %1 → %2 %3</source>
+        <translation>Radius %1 → %2 %3</translation>
+    </message>
+    <message>
+        <source>CAM lengths added to the notes (%1)</source>
+        <translation>CAM-Längen in die Notizen aufgenommen (%1)</translation>
+    </message>
+    <message>
+        <source>CAM lengths in the notes: %1 → %2</source>
+        <translation>CAM-Längen in den Notizen: %1 → %2</translation>
+    </message>
+    <message>
+        <source>T%1 is in the library twice.</source>
+        <translation>T%1 steht zweimal in der Bibliothek.</translation>
+    </message>
+    <message>
+        <source>the CAM lengths line in the notes</source>
+        <translation>die Zeile mit den CAM-Längen in den Notizen</translation>
+    </message>
+    <message>
+        <source>%1 new, %2 changed, %3 unchanged</source>
+        <translation>%1 neu, %2 geändert, %3 unverändert</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ImportPreviewDialog</name>
+    <message>
+        <source>New</source>
+        <translation>Neu</translation>
+    </message>
+    <message>
+        <source>Changed</source>
+        <translation>Geändert</translation>
+    </message>
+    <message>
+        <source>Unchanged</source>
+        <translation>Unverändert</translation>
+    </message>
+    <message>
+        <source>&amp;Import</source>
+        <translation>&amp;Importieren</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Import tools</source>
+        <translation>Werkzeuge importieren</translation>
+    </message>
+    <message>
+        <source>Import Tools from %1</source>
+        <translation>Werkzeuge aus %1 importieren</translation>
+    </message>
+    <message>
+        <source>What the import does</source>
+        <translation>Was der Import ändert</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3.</source>
+        <translation>%1 (%2): %3.</translation>
+    </message>
+    <message>
+        <source>Only descriptions, radii and the CAM&apos;s line in the notes change; measured TLOs, wear, pockets and your notes stay as they are.</source>
+        <translation>Nur Beschreibungen, Radien und die CAM-Zeile in den Notizen ändern sich; gemessene Längenkorrekturen, Verschleiß, Plätze und Ihre Notizen bleiben, wie sie sind.</translation>
+    </message>
+    <message>
+        <source>The table already has these tools as the library describes them.</source>
+        <translation>Die Tabelle hat diese Werkzeuge schon so, wie die Bibliothek sie beschreibt.</translation>
+    </message>
+    <message>
+        <source>Tools in the library</source>
+        <translation>Werkzeuge in der Bibliothek</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Import</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Changes</source>
+        <translation>Änderungen</translation>
+    </message>
+    <message>
+        <source>Import the tools</source>
+        <translation>Die Werkzeuge importieren</translation>
+    </message>
+    <message>
+        <source>Cancel the import</source>
+        <translation>Den Import abbrechen</translation>
+    </message>
+    <message>
+        <source>Import or cancel</source>
+        <translation>Importieren oder abbrechen</translation>
     </message>
 </context>
 <context>
@@ -2050,6 +2370,18 @@ Trotzdem speichern?</translation>
     <message>
         <source>History &amp;Library…</source>
         <translation>&amp;Verlaufsbibliothek…</translation>
+    </message>
+    <message>
+        <source>Tool tables and CAM libraries (*.json *.tbl *.csv *.tools *.hsmlib *.nc *.gcode *.cnc *.ngc *.tap *.txt);;Toffee tool table (*.json);;LinuxCNC tool table (*.tbl);;CSV spreadsheet (*.csv);;Fusion tool library (*.json *.tools);;HSM tool library (*.hsmlib);;Makera CAM program (*.nc *.gcode *.cnc *.ngc *.tap *.txt);;All files (*)</source>
+        <translation>Werkzeugtabellen und CAM-Bibliotheken (*.json *.tbl *.csv *.tools *.hsmlib *.nc *.gcode *.cnc *.ngc *.tap *.txt);;Toffee-Werkzeugtabelle (*.json);;LinuxCNC-Werkzeugtabelle (*.tbl);;CSV-Tabelle (*.csv);;Fusion-Werkzeugbibliothek (*.json *.tools);;HSM-Werkzeugbibliothek (*.hsmlib);;Makera-CAM-Programm (*.nc *.gcode *.cnc *.ngc *.tap *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Import tools from %1</source>
+        <translation>Werkzeuge aus %1 importieren</translation>
+    </message>
+    <message>
+        <source>Imported from %1: %2</source>
+        <translation>Importiert aus %1: %2</translation>
     </message>
 </context>
 <context>

@@ -523,6 +523,134 @@
         <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
         <translation>表头中有未知列“%1”；可用的列为 number、pocket、description、length_geometry、length_wear、radius_geometry、radius_wear、measured_tlo、measured_at、notes、tlo_source、break_test、reference_mz、units 和 linuxcnc。</translation>
     </message>
+    <message>
+        <source>%1 is %2 %3; it cannot be negative.</source>
+        <translation>%1 为 %2 %3；不能为负数。</translation>
+    </message>
+    <message>
+        <source>the diameter</source>
+        <translation>直径</translation>
+    </message>
+    <message>
+        <source>the flute length</source>
+        <translation>刃长</translation>
+    </message>
+    <message>
+        <source>the length below the holder</source>
+        <translation>夹头下方长度</translation>
+    </message>
+    <message>
+        <source>the overall length</source>
+        <translation>总长</translation>
+    </message>
+    <message>
+        <source>%1: cannot open it.</source>
+        <translation>%1：无法打开。</translation>
+    </message>
+    <message>
+        <source>Fusion tool library (JSON)</source>
+        <translation>Fusion 刀具库（JSON）</translation>
+    </message>
+    <message>
+        <source>Fusion tool library (.tools)</source>
+        <translation>Fusion 刀具库（.tools）</translation>
+    </message>
+    <message>
+        <source>HSM tool library (.hsmlib)</source>
+        <translation>HSM 刀具库（.hsmlib）</translation>
+    </message>
+    <message>
+        <source>Makera CAM program&apos;s tool header</source>
+        <translation>Makera CAM 程序的刀具头</translation>
+    </message>
+    <message>
+        <source>the library holds no tools; nothing to import.</source>
+        <translation>该刀具库不含任何刀具；没有可导入的内容。</translation>
+    </message>
+    <message>
+        <source>number %1 is taken already (%2); each tool needs a number of its own.</source>
+        <translation>编号 %1 已被使用（%2）；每把刀具都需要自己的编号。</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>第 %1 行</translation>
+    </message>
+    <message>
+        <source>%1: not a CAM tool library Toffee reads (.json, .tools, .hsmlib, or a G-code program with Makera CAM&apos;s tool header).</source>
+        <translation>%1：不是 Toffee 可读取的 CAM 刀具库（.json、.tools、.hsmlib，或带有 Makera CAM 刀具头的 G 代码程序）。</translation>
+    </message>
+    <message>
+        <source>it unpacks to more than %1 MB; Toffee reads libraries of at most %1 MB.</source>
+        <translation>解压后超过 %1 MB；Toffee 只读取不超过 %1 MB 的刀具库。</translation>
+    </message>
+    <message>
+        <source>this is not a .tools archive: a zip archive could not be read from it (%1).</source>
+        <translation>这不是 .tools 归档：无法将其作为 zip 归档读取（%1）。</translation>
+    </message>
+    <message>
+        <source>it cannot be unpacked: %1.</source>
+        <translation>无法解压：%1。</translation>
+    </message>
+    <message>
+        <source>it cannot be unpacked: %1; the archive is damaged or truncated.</source>
+        <translation>无法解压：%1；归档已损坏或不完整。</translation>
+    </message>
+    <message>
+        <source>this is not a .tools archive: the file is empty.</source>
+        <translation>这不是 .tools 归档：文件为空。</translation>
+    </message>
+    <message>
+        <source>the archive holds no %1; a Fusion .tools file is a zip archive with the library in %1.</source>
+        <translation>归档中没有 %1；Fusion 的 .tools 文件是一个 zip 归档，刀具库保存在 %1 中。</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>一个列表</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>一个对象</translation>
+    </message>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>column %1: this is not valid JSON (%2).</source>
+        <translation>第 %1 列：这不是有效的 JSON（%2）。</translation>
+    </message>
+    <message>
+        <source>this is not a Fusion tool library: that is a JSON object with "data", a list of tools.</source>
+        <translation>这不是 Fusion 刀具库：刀具库是一个带有“data”（刀具列表）的 JSON 对象。</translation>
+    </message>
+    <message>
+        <source>tool %1 in "data"</source>
+        <translation>“data”中的第 %1 把刀具</translation>
+    </message>
+    <message>
+        <source>it is %1, not an object.</source>
+        <translation>它是 %1，不是对象。</translation>
+    </message>
+    <message>
+        <source>%1=%2 is not a number.</source>
+        <translation>%1=%2 不是数字。</translation>
+    </message>
+    <message>
+        <source>number=%1 is not a tool number.</source>
+        <translation>number=%1 不是刀具号。</translation>
+    </message>
+    <message>
+        <source>this tool line has no number=…; Toffee needs the T number.</source>
+        <translation>该刀具行没有 number=…；Toffee 需要 T 号。</translation>
+    </message>
+    <message>
+        <source>the program&apos;s first %1 MB are all comments; Toffee reads the tool header only from the start of a program.</source>
+        <translation>程序的前 %1 MB 全是注释；Toffee 只从程序开头读取刀具头。</translation>
+    </message>
+    <message>
+        <source>this program has no Makera CAM tool header (";@MKR|TOOL|number=…" lines before the program body); there are no tools to import from it.</source>
+        <translation>该程序没有 Makera CAM 刀具头（程序主体之前的“;@MKR|TOOL|number=…”行）；没有可从中导入的刀具。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -923,6 +1051,41 @@
     </message>
 </context>
 <context>
+    <name>Toffee::FusionToolReader</name>
+    <message>
+        <source>"%1" is %2, not an object.</source>
+        <translation>“%1”为 %2，不是对象。</translation>
+    </message>
+    <message>
+        <source>"%1" is %2, not text.</source>
+        <translation>“%1”为 %2，不是文本。</translation>
+    </message>
+    <message>
+        <source>"%1" is %2, not a number.</source>
+        <translation>“%1”为 %2，不是数字。</translation>
+    </message>
+    <message>
+        <source>it has no "post-process" "number": Toffee needs the T number the post writes.</source>
+        <translation>它没有“post-process”的“number”：Toffee 需要后处理器输出的 T 号。</translation>
+    </message>
+    <message>
+        <source>its "number" is %1, not a whole number.</source>
+        <translation>它的“number”为 %1，不是整数。</translation>
+    </message>
+    <message>
+        <source>its "number" %1 is out of range; use %2 to %3.</source>
+        <translation>它的“number” %1 超出范围；请使用 %2 到 %3。</translation>
+    </message>
+    <message>
+        <source>it has no "unit" (millimeters or inches).</source>
+        <translation>它没有“unit”（millimeters 或 inches）。</translation>
+    </message>
+    <message>
+        <source>its "unit" is "%1"; Toffee reads millimeters or inches.</source>
+        <translation>它的“unit”为“%1”；Toffee 只读取 millimeters 或 inches。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::GCodeInterpreter</name>
     <message>
         <source>"%1" is not G-code this controller reads.</source>
@@ -1308,6 +1471,163 @@
     <message>
         <source>This library cannot be used: %1</source>
         <translation>无法使用此库：%1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::HsmReader</name>
+    <message>
+        <source>there is no XML element in it</source>
+        <translation>其中没有 XML 元素</translation>
+    </message>
+    <message>
+        <source>column %1: this is not an HSM tool library: its root element is &lt;%2&gt; in namespace "%3", where a library has &lt;tool-library&gt; in "%4".</source>
+        <translation>第 %1 列：这不是 HSM 刀具库：其根元素是命名空间“%3”中的 &lt;%2&gt;，而刀具库的根元素是“%4”中的 &lt;tool-library&gt;。</translation>
+    </message>
+    <message>
+        <source>column %1: this is not well-formed XML (%2).</source>
+        <translation>第 %1 列：这不是格式正确的 XML（%2）。</translation>
+    </message>
+    <message>
+        <source>tool %1</source>
+        <translation>第 %1 把刀具</translation>
+    </message>
+    <message>
+        <source>its unit is "%1"; Toffee reads millimeters or inches.</source>
+        <translation>它的单位为“%1”；Toffee 只读取 millimeters 或 inches。</translation>
+    </message>
+    <message>
+        <source>it has no &lt;nc number=…&gt;: Toffee needs the T number the post writes.</source>
+        <translation>它没有 &lt;nc number=…&gt;：Toffee 需要后处理器输出的 T 号。</translation>
+    </message>
+    <message>
+        <source>its nc number is "%1", not a tool number.</source>
+        <translation>它的 nc 编号为“%1”，不是刀具号。</translation>
+    </message>
+    <message>
+        <source>its body %1 is "%2", not a number.</source>
+        <translation>它的 body %1 为“%2”，不是数字。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ImportPreview</name>
+    <message>
+        <source>flute length</source>
+        <translation>刃长</translation>
+    </message>
+    <message>
+        <source>below the holder</source>
+        <translation>夹头下方</translation>
+    </message>
+    <message>
+        <source>overall length</source>
+        <translation>总长</translation>
+    </message>
+    <message>
+        <source>description “%1” → “%2”</source>
+        <translation>描述“%1”→“%2”</translation>
+    </message>
+    <message>
+        <source>radius %1 → %2 %3</source>
+        <translation>半径 %1 → %2 %3</translation>
+    </message>
+    <message>
+        <source>CAM lengths added to the notes (%1)</source>
+        <translation>CAM 长度已加入备注（%1）</translation>
+    </message>
+    <message>
+        <source>CAM lengths in the notes: %1 → %2</source>
+        <translation>备注中的 CAM 长度：%1 → %2</translation>
+    </message>
+    <message>
+        <source>T%1 is in the library twice.</source>
+        <translation>T%1 在刀具库中出现了两次。</translation>
+    </message>
+    <message>
+        <source>the CAM lengths line in the notes</source>
+        <translation>备注中的 CAM 长度行</translation>
+    </message>
+    <message>
+        <source>%1 new, %2 changed, %3 unchanged</source>
+        <translation>新增 %1，修改 %2，未变 %3</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ImportPreviewDialog</name>
+    <message>
+        <source>New</source>
+        <translation>新增</translation>
+    </message>
+    <message>
+        <source>Changed</source>
+        <translation>修改</translation>
+    </message>
+    <message>
+        <source>Unchanged</source>
+        <translation>未变</translation>
+    </message>
+    <message>
+        <source>&amp;Import</source>
+        <translation>导入(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Import tools</source>
+        <translation>导入刀具</translation>
+    </message>
+    <message>
+        <source>Import Tools from %1</source>
+        <translation>从 %1 导入刀具</translation>
+    </message>
+    <message>
+        <source>What the import does</source>
+        <translation>导入将做什么</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3.</source>
+        <translation>%1（%2）：%3。</translation>
+    </message>
+    <message>
+        <source>Only descriptions, radii and the CAM&apos;s line in the notes change; measured TLOs, wear, pockets and your notes stay as they are.</source>
+        <translation>只有描述、半径和备注中的 CAM 行会改变；测得的刀长补偿、磨损、刀位和您的备注保持不变。</translation>
+    </message>
+    <message>
+        <source>The table already has these tools as the library describes them.</source>
+        <translation>刀具表中已有这些刀具，且与刀具库的描述一致。</translation>
+    </message>
+    <message>
+        <source>Tools in the library</source>
+        <translation>刀具库中的刀具</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>刀具</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>描述</translation>
+    </message>
+    <message>
+        <source>Changes</source>
+        <translation>更改</translation>
+    </message>
+    <message>
+        <source>Import the tools</source>
+        <translation>导入这些刀具</translation>
+    </message>
+    <message>
+        <source>Cancel the import</source>
+        <translation>取消导入</translation>
+    </message>
+    <message>
+        <source>Import or cancel</source>
+        <translation>导入或取消</translation>
     </message>
 </context>
 <context>
@@ -2050,6 +2370,18 @@ Save anyway?</source>
     <message>
         <source>History &amp;Library…</source>
         <translation>历史库(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>Tool tables and CAM libraries (*.json *.tbl *.csv *.tools *.hsmlib *.nc *.gcode *.cnc *.ngc *.tap *.txt);;Toffee tool table (*.json);;LinuxCNC tool table (*.tbl);;CSV spreadsheet (*.csv);;Fusion tool library (*.json *.tools);;HSM tool library (*.hsmlib);;Makera CAM program (*.nc *.gcode *.cnc *.ngc *.tap *.txt);;All files (*)</source>
+        <translation>刀具表和 CAM 刀具库 (*.json *.tbl *.csv *.tools *.hsmlib *.nc *.gcode *.cnc *.ngc *.tap *.txt);;Toffee 刀具表 (*.json);;LinuxCNC 刀具表 (*.tbl);;CSV 电子表格 (*.csv);;Fusion 刀具库 (*.json *.tools);;HSM 刀具库 (*.hsmlib);;Makera CAM 程序 (*.nc *.gcode *.cnc *.ngc *.tap *.txt);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Import tools from %1</source>
+        <translation>从 %1 导入刀具</translation>
+    </message>
+    <message>
+        <source>Imported from %1: %2</source>
+        <translation>已从 %1 导入：%2</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -54,11 +55,14 @@ QString shown(const QJsonValue &value)
     }
 }
 
-// Reads one tool object; the first member that is not what the format says stops it, with the reason.
-class ToolReader
+// Reads one tool object; the first member that is not what the format says stops it, with the reason. It
+// translates in its own context: lupdate files a class's tr() under the class, never under "Toffee".
+class FusionToolReader
 {
+    Q_DECLARE_TR_FUNCTIONS(Toffee::FusionToolReader)
+
 public:
-    ToolReader(const QJsonObject &object, QString place)
+    FusionToolReader(const QJsonObject &object, QString place)
         : m_object(object)
     {
         m_tool.place = std::move(place);
@@ -197,7 +201,7 @@ Result<QList<CamTool>> readFusionJson(QByteArrayView data)
         if (!v.isObject())
             return Error { place + u": "_s + tr("it is %1, not an object.").arg(shown(v)) };
         const QJsonObject object = v.toObject();
-        auto tool = ToolReader(object, place).read();
+        auto tool = FusionToolReader(object, place).read();
         if (!tool)
             return tool.error();
         read.append(tool.takeValue());

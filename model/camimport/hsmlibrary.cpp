@@ -3,6 +3,7 @@
 // QXmlStreamReader decodes from the BOM or the declaration. Only tool/@unit, @type, description, nc/@number
 // and body/@diameter, @flute-length, @overall-length are read; motion, coolant and the holder are not
 // offsets.
+#include <QCoreApplication>
 #include <QXmlStreamReader>
 
 #include "model/camimport/camreaders.h"
@@ -17,8 +18,11 @@ namespace {
 
 constexpr auto kNamespace = "http://www.hsmworks.com/xml/2004/cnc/tool-library"_L1;
 
+// Translates in its own context: lupdate files a class's tr() under the class, never under "Toffee".
 class HsmReader
 {
+    Q_DECLARE_TR_FUNCTIONS(Toffee::HsmReader)
+
 public:
     explicit HsmReader(QByteArrayView xml)
         : m_xml(QByteArray::fromRawData(xml.data(), xml.size()))
