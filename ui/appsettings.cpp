@@ -2,6 +2,7 @@
 #include "ui/appsettings.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <QDir>
 
@@ -25,6 +26,10 @@ const auto Library = u"history/library"_s;
 const auto MachineName = u"history/machine"_s;
 const auto StaleDays = u"history/staleAfterDays"_s;
 const auto ExportDialect = u"files/exportDialect"_s;
+const auto JobDialect = u"jobs/dialect"_s;
+const auto JobZFloor = u"jobs/zFloor"_s;
+const auto PrepareStoredTlo = u"jobs/prepareUsesStoredTlo"_s;
+const auto PrepareBreakTests = u"jobs/prepareBreakTests"_s;
 } // namespace Key
 } // namespace
 
@@ -152,6 +157,51 @@ bool AppSettings::darkPalette() const
 void AppSettings::setDarkPalette(bool dark)
 {
     m_settings.setValue(Key::DarkPalette, dark);
+}
+
+QString AppSettings::jobDialect() const
+{
+    return m_settings.value(Key::JobDialect, u"carvera"_s).toString();
+}
+
+void AppSettings::setJobDialect(const QString &key)
+{
+    m_settings.setValue(Key::JobDialect, key);
+}
+
+std::optional<double> AppSettings::jobZFloor() const
+{
+    bool ok = false;
+    const double z = m_settings.value(Key::JobZFloor).toDouble(&ok);
+    return ok && std::isfinite(z) ? std::optional(z) : std::nullopt;
+}
+
+void AppSettings::setJobZFloor(std::optional<double> z)
+{
+    if (z)
+        m_settings.setValue(Key::JobZFloor, *z);
+    else
+        m_settings.remove(Key::JobZFloor);
+}
+
+bool AppSettings::prepareUsesStoredTlo() const
+{
+    return m_settings.value(Key::PrepareStoredTlo, true).toBool();
+}
+
+void AppSettings::setPrepareUsesStoredTlo(bool use)
+{
+    m_settings.setValue(Key::PrepareStoredTlo, use);
+}
+
+bool AppSettings::prepareBreakTests() const
+{
+    return m_settings.value(Key::PrepareBreakTests, true).toBool();
+}
+
+void AppSettings::setPrepareBreakTests(bool test)
+{
+    m_settings.setValue(Key::PrepareBreakTests, test);
 }
 
 } // namespace Toffee

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <optional>
+
 #include <QByteArray>
 #include <QSettings>
 #include <QStringList>
@@ -40,6 +42,16 @@ public:
     // A measurement older than this is stale (the table marks it).
     [[nodiscard]] int staleAfterDays() const;
     void setStaleAfterDays(int days);
+    // File ▸ Check Job…: the controller a program is checked for, the Z floor (nothing: none), and what
+    // Prepare… does for the Carvera.
+    [[nodiscard]] QString jobDialect() const;
+    void setJobDialect(const QString &key);
+    [[nodiscard]] std::optional<double> jobZFloor() const;
+    void setJobZFloor(std::optional<double> z);
+    [[nodiscard]] bool prepareUsesStoredTlo() const;
+    void setPrepareUsesStoredTlo(bool use);
+    [[nodiscard]] bool prepareBreakTests() const;
+    void setPrepareBreakTests(bool test);
     [[nodiscard]] bool darkPalette() const;
     void setDarkPalette(bool dark);
 

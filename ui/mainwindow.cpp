@@ -75,6 +75,7 @@ MainWindow::MainWindow(QWidget *parent)
     setObjectName(u"mainWindow"_s);
     setWindowIcon(themeIcon(u"toffee"_s));
     setCentralWidget(m_tablePanel);
+    setAcceptDrops(true);
     addDockWidget(Qt::RightDockWidgetArea, m_machineDock);
     addDockWidget(Qt::BottomDockWidgetArea, m_consoleDock);
     addDockWidget(Qt::BottomDockWidgetArea, m_historyDock);
@@ -223,6 +224,9 @@ void MainWindow::createActions()
             ExportDialog dialog(m_document->table(), this);
             dialog.exec();
         });
+    file->addSeparator();
+    add(file, u"actionCheckJob"_s, tr("Check &Job…"), QKeySequence(Qt::CTRL | Qt::Key_J),
+        &MainWindow::checkJob);
     file->addSeparator();
     add(file, u"actionQuit"_s, tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), &QWidget::close);
 

@@ -9,6 +9,8 @@
 class QAction;
 class QLabel;
 class QMenu;
+class QDragEnterEvent;
+class QDropEvent;
 
 namespace Toffee {
 
@@ -17,6 +19,7 @@ class ConsoleDock;
 class FileWatcher;
 class HistoryDock;
 class HistoryRecorder;
+class JobCheckDialog;
 class MachineConnection;
 class MachineDock;
 class ToolDocument;
@@ -46,12 +49,16 @@ public:
     void setLibrary(const LibraryLocation &location);
     // Opens a table, reporting a failure in a message box; the current table stays if it fails.
     bool openFile(const QString &path);
+    // File ▸ Check Job… once a program is chosen (or dropped on the window): the check starts at once.
+    JobCheckDialog *openJobCheck(const QString &path);
     // File ▸ Import once a file is chosen: a CAM library through its preview, a table merged as it is. False
     // when nothing was imported (refused, with a message box, or cancelled).
     bool importFile(const QString &path);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void dragEnterEvent(QDragEnterEvent *event) override;
+    void dropEvent(QDropEvent *event) override;
 
 private:
     template<typename Slot>
@@ -90,6 +97,7 @@ private:
     // Machine ▸ History Library…: the library, this machine's name in it, the stale limit.
     void editHistorySettings();
     void exportHistory();
+    void checkJob();
     void readSettings();
     void writeSettings();
 
@@ -106,6 +114,7 @@ private:
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;
+    JobCheckDialog *m_jobDialog = nullptr;
 };
 
 } // namespace Toffee

@@ -43,12 +43,17 @@ struct Options
     const QCommandLineOption library { u"library"_s,
         QApplication::translate("main", "The history library: an SQLite file (or sqlite:PATH)."), u"PATH"_s };
 
+    const QCommandLineOption checkJob { u"check-job"_s,
+        QApplication::translate(
+            "main", "Check the G-code PROGRAM against the table once the window is open."),
+        u"PROGRAM"_s };
+
     void describe(QCommandLineParser &parser) const
     {
         parser.setApplicationDescription(QApplication::translate("main", "Toffee, the tool offset manager."));
         parser.addHelpOption();
         parser.addVersionOption();
-        parser.addOptions({ emulator, port, baud, selfTest, dark, lang, library });
+        parser.addOptions({ emulator, port, baud, selfTest, dark, lang, library, checkJob });
         parser.addPositionalArgument(
             u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
     }
@@ -137,5 +142,7 @@ int main(int argc, char *argv[])
         window.machineDock()->connectionPanel()->setTarget(target);
         window.connection()->connectTo(target);
     }
+    if (parser.isSet(options.checkJob))
+        window.openJobCheck(parser.value(options.checkJob));
     return QApplication::exec();
 }

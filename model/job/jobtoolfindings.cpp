@@ -49,8 +49,11 @@ JobReport JobChecker::finish(const QString &program, bool cancelled)
                 int(m_moreProgramErrors)),
             { m_firstUncountedError }, m_moreProgramErrors });
     report.findings = m_findings;
-    std::stable_sort(report.findings.begin(), report.findings.end(),
-        [](const Finding &a, const Finding &b) { return a.line < b.line; });
+    // By line, and on one line the errors first.
+    std::stable_sort(report.findings.begin(), report.findings.end(), [](const Finding &a, const Finding &b) {
+        return a.line != b.line ? a.line < b.line
+                                : a.severity() == Severity::Error && b.severity() != Severity::Error;
+    });
     return report;
 }
 

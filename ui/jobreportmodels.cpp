@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/jobreportmodels.h"
+
+#include <QBrush>
+#include <QColor>
+
+#include "model/numberformat.h"
+#include "model/timetext.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString lineList(const QList<int> &lines, qint64 count)
+{
+    QStringList numbers;
+    for (int line : lines)
+        numbers << QString::number(line);
+    QString text = numbers.join(u", "_s);
+    if (count > lines.size())
+        text += u", …"_s;
+    return text;
+}
+
+} // namespace
+
+JobToolsModel::JobToolsModel(QObject *parent)
+    : QAbstractTableModel(parent)
+{ }
+
+void JobToolsModel::setReport(const QList<JobTool> &tools, const QDateTime &now)
+{
+    beginResetModel();
+    m_tools = tools;
+    m_now = now;
+    endResetModel();
+}
+
+int JobToolsModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(m_tools.size());
+}
+
+int JobToolsModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QString JobToolsModel::text(const JobTool &tool, int column) const
+{
+    switch (column) {
+    case NumberColumn:
+        return u"T"_s + QString::number(tool.number);
+    case LoadedColumn:
+        return lineList(tool.loadLines, tool.loads);
+    case TloColumn:
+        if (!tool.inTable)
+            return tr("not in the table");
+        return tool.tlo ? millimetres(*tool.tlo, false) : tr("not measured");
+    case MeasuredColumn:
+        return tool.measuredAt.isValid() ? ageText(tool.measuredAt, m_now) : QString();
+    case CuttingColumn:
+        return durationText(tool.cuttingSeconds);
+    case PathColumn:
+        return millimetres(tool.feedPathMm, false);
+    case LowestZColumn:
+        return tool.lowestZ ? millimetres(*tool.lowestZ, false) : QString();
+    }
+    return {};
+}
+
+QVariant JobToolsModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_tools.size())
+        return {};
+    const JobTool &tool = m_tools.at(index.row());
+    if (role == Qt::DisplayRole)
+        return text(tool, index.column());
+    if (role == Qt::ToolTipRole && index.column() == MeasuredColumn && tool.measuredAt.isValid())
+        return QLocale().toString(tool.measuredAt.toLocalTime(), QLocale::LongFormat);
+    if (role == Qt::TextAlignmentRole && index.column() != NumberColumn && index.column() != LoadedColumn)
+        return QVariant(Qt::AlignRight | Qt::AlignVCenter);
+    if (role == Qt::ForegroundRole && index.column() == TloColumn && (!tool.inTable || !tool.tlo))
+        return QBrush(QColor(0xd3, 0x2f, 0x2f));
+    return {};
+}
+
+QVariant JobToolsModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case NumberColumn:
+        return tr("Tool");
+    case LoadedColumn:
+        return tr("Loaded at line");
+    case TloColumn:
+        return tr("TLO (mm)");
+    case MeasuredColumn:
+        return tr("Measured");
+    case CuttingColumn:
+        return tr("Cutting time");
+    case PathColumn:
+        return tr("Feed path (mm)");
+    case LowestZColumn:
+        return tr("Lowest cut Z (mm)");
+    }
+    return {};
+}
+
+JobFindingsModel::JobFindingsModel(QObject *parent)
+    : QAbstractTableModel(parent)
+{ }
+
+void JobFindingsModel::setFindings(const QList<Finding> &findings)
+{
+    beginResetModel();
+    m_findings = findings;
+    endResetModel();
+}
+
+int JobFindingsModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(m_findings.size());
+}
+
+int JobFindingsModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant JobFindingsModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_findings.size())
+        return {};
+    const Finding &f = m_findings.at(index.row());
+    const bool error = f.severity() == Severity::Error;
+    if (role == LineRole)
+        return f.line;
+    if (role == Qt::DisplayRole) {
+        switch (index.column()) {
+        case SeverityColumn:
+            return error ? tr("Error") : tr("Warning");
+        case LineColumn:
+            return f.line;
+        case ToolColumn:
+            return f.tool >= 0 ? u"T"_s + QString::number(f.tool) : QString();
+        case MessageColumn:
+            return f.count > 1
+                ? tr("%1 (%n times: lines %2)", nullptr, int(std::min<qint64>(f.count, INT_MAX)))
+                      .arg(f.message, lineList(f.lines, f.count))
+                : f.message;
+        }
+    }
+    if (role == Qt::ToolTipRole && index.column() == MessageColumn)
+        return f.message;
+    if (role == Qt::ForegroundRole && index.column() == SeverityColumn)
+        return QBrush(error ? QColor(0xd3, 0x2f, 0x2f) : QColor(0xe6, 0x7e, 0x00));
+    return {};
+}
+
+QVariant JobFindingsModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case SeverityColumn:
+        return tr("Severity");
+    case LineColumn:
+        return tr("Line");
+    case ToolColumn:
+        return tr("Tool");
+    case MessageColumn:
+        return tr("Finding");
+    }
+    return {};
+}
+
+} // namespace Toffee
