@@ -13,6 +13,9 @@ DEB_PACKAGES := cmake ninja-build g++ make \
 	libqt6svg6 libqt6sql6-sqlite libgl-dev fonts-dejavu-core xvfb xauth qt6-translations-l10n \
 	pkg-config libzip-dev
 
+# `make bench` also runs LinuxCNC's own interpreter (rs274) on the job check's program, as its yardstick.
+BENCH_PACKAGES := linuxcnc-uspace
+
 # `make fuzz` also needs clang and its libFuzzer and sanitizer runtimes.
 FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_SECONDS ?= 600
@@ -60,6 +63,7 @@ test: build
 	ctest --preset $(PRESET) --output-on-failure
 
 bench: build
+	$(call install_missing,$(BENCH_PACKAGES))
 	@for i in 1 2 3 4 5; do \
 		QT_QPA_PLATFORM=offscreen $(BUILD_DIR)/bin/toffee --lang en --self-test 2>/dev/null \
 			| sed -n 's/.*first frame after \([0-9]*\) ms.*/\1/p'; \
@@ -68,6 +72,7 @@ bench: build
 	$(BUILD_DIR)/bin/toffee-bench-interpreter 1000000
 	$(BUILD_DIR)/bin/toffee-bench-library 1000000
 	QT_QPA_PLATFORM=offscreen $(BUILD_DIR)/bin/toffee-bench-historychart 10000
+	$(BUILD_DIR)/bin/toffee-bench-jobcheck 5000000
 	$(BUILD_DIR)/bin/toffee-cli --emulator link-test --count 10000
 	@link=$$(mktemp -u /tmp/toffee-bench-tty.XXXXXX); \
 	$(BUILD_DIR)/bin/toffee-emulator --link $$link > /dev/null & pid=$$!; \
