@@ -40,12 +40,17 @@ GCodeInterpreter::GCodeInterpreter(Dialect dialect, OffsetTable offsets, int sam
     }
 }
 
-// G-codes that change nothing the simulation follows: a dwell, feed per minute, path control, cancelling a
-// canned cycle, and their retract modes.
+// G-codes that change nothing the simulation follows: a dwell, feed per minute, path control.
 bool GCodeInterpreter::isPassive(double g)
 {
-    return same(g, 4) || same(g, 94) || same(g, 61) || same(g, 64) || same(g, 80) || same(g, 98)
-        || same(g, 99) || same(g, 15) || same(g, 69);
+    return same(g, 4) || same(g, 94) || same(g, 61) || same(g, 64) || same(g, 15) || same(g, 69);
+}
+
+// Drilling and boring: G73 and G83 peck, G81 drills, G82 dwells at the bottom, G85 / G86 / G89 bore.
+bool GCodeInterpreter::isCycle(double g)
+{
+    return same(g, 73) || same(g, 81) || same(g, 82) || same(g, 83) || same(g, 85) || same(g, 86)
+        || same(g, 89);
 }
 
 Error GCodeInterpreter::error(int line, const QString &message) const
@@ -106,6 +111,7 @@ Result<void> GCodeInterpreter::run(QByteArrayView program)
 Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
 {
     m_effect = {};
+    m_cycleCalled = false;
     Words w;
     GCodeLexer lexer(text);
     for (;;) {
@@ -134,14 +140,15 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
     return execute(w, line);
 }
 
-Result<void> GCodeInterpreter::execute(const Words &w, int line)
+// The block's G-codes that set a mode; whether one of them is a motion (G0-G3) in `motion`.
+Result<void> GCodeInterpreter::modalGCodes(const Words &w, int line, bool &motion)
 {
-    bool motion = false;
     for (int i = 0; i < w.gCount; ++i) {
         const double g = w.g[size_t(i)];
         if (same(g, 0) || same(g, 1) || same(g, 2) || same(g, 3)) {
             motion = true;
             m_motionMode = int(g);
+            m_cycle = 0; // a motion ends a canned cycle
         } else if (same(g, 90))
             m_absolute = true;
         else if (same(g, 91))
@@ -156,15 +163,29 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
             m_radiusComp = false;
         else if (same(g, 41) || same(g, 42))
             m_radiusComp = true;
-        else if (same(g, 20) || same(g, 21) || same(g, 54) || same(g, 10) || same(g, 43) || same(g, 44)
-            || same(g, 49) || same(g, 43.1) || same(g, 43.2) || same(g, 74) || same(g, 143) || same(g, 144)
-            || same(g, 149) || same(g, 53) || same(g, 28))
-            continue; // handled below
-        else if (isPassive(g))
-            continue;
+        else if (same(g, 80))
+            m_cycle = 0;
+        else if (same(g, 98) || same(g, 99))
+            m_cycleToR = same(g, 99);
+        else if (isCycle(g) && m_dialect != Dialect::Aerotech)
+            startCycle(int(g));
+        else if (g >= 54 - 1e-6 && g <= 59 + 1e-6 && same(g, std::round(g)))
+            selectWorkOffset(int(std::round(g)) - 54);
+        else if (same(g, 20) || same(g, 21) || same(g, 10) || same(g, 43) || same(g, 44) || same(g, 49)
+            || same(g, 43.1) || same(g, 43.2) || same(g, 74) || same(g, 143) || same(g, 144) || same(g, 149)
+            || same(g, 53) || same(g, 28) || isPassive(g))
+            continue; // handled below, or changes nothing the simulation follows
         else
             return error(line, tr("G%1 is not simulated.").arg(formatNumber(g)));
     }
+    return {};
+}
+
+Result<void> GCodeInterpreter::execute(const Words &w, int line)
+{
+    bool motion = false;
+    if (auto r = modalGCodes(w, line, motion); !r)
+        return r;
     if (w.hasG(10))
         return g10(w, line);
     if (auto r = modalWords(w, line); !r)
@@ -172,41 +193,53 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
     if (w.hasG(43) || w.hasG(44) || w.hasG(49) || w.hasG(43.1) || w.hasG(43.2) || w.word('H')
         || (m_dialect == Dialect::Fagor8055M && w.word('D')))
         ++m_lengthCalls;
-
-    if (m_dialect == Dialect::LinuxCnc) {
-        if (auto r = linuxCncLength(w, line); !r)
-            return r;
-    } else if (m_dialect == Dialect::Aerotech) {
-        if (w.hasG(43))
-            return error(line,
-                tr("on Automation1, G43 is not tool length compensation; use G44 axes, offsets and "
-                   "G143 / G144."));
-        if (w.hasG(44)) {
-            QList<int> axes;
-            for (char a : { 'X', 'Y', 'Z' }) {
-                if (w.word(a))
-                    axes.append(axisIndex(a));
-            }
-            return aerotechAxes(axes, line);
-        }
-        const int requests = int(w.hasG(143)) + int(w.hasG(144)) + int(w.hasG(149));
-        if (requests > 1)
-            return error(line, tr("G143, G144 and G149 exclude one another."));
-        if (w.hasG(143))
-            m_pending = 1;
-        else if (w.hasG(144))
-            m_pending = -1;
-        else if (w.hasG(149))
-            m_pending = 2;
-    } else {
-        if (auto r = lengthWords(w, line); !r)
-            return r;
-    }
-
+    if (m_dialect == Dialect::Aerotech && w.hasG(44))
+        return aerotechWords(w, line); // G44 X Y Z names the axes: nothing moves
+    if (auto r = m_dialect == Dialect::LinuxCnc ? linuxCncLength(w, line)
+            : m_dialect == Dialect::Aerotech    ? aerotechWords(w, line)
+                                                : lengthWords(w, line);
+        !r)
+        return r;
     for (char a : { 'X', 'Y', 'Z' }) {
         if (w.word(a) && w.isBare(a))
             return error(line, tr("the word %1 needs a value.").arg(QChar::fromLatin1(a)));
     }
+    if (auto r = motionOf(w, line, motion); !r)
+        return r;
+    if (w.hasM(2) || w.hasM(30))
+        m_ended = true;
+    return {};
+}
+
+Result<void> GCodeInterpreter::aerotechWords(const Words &w, int line)
+{
+    if (w.hasG(43))
+        return error(line,
+            tr("on Automation1, G43 is not tool length compensation; use G44 axes, offsets and "
+               "G143 / G144."));
+    if (w.hasG(44)) {
+        QList<int> axes;
+        for (char a : { 'X', 'Y', 'Z' }) {
+            if (w.word(a))
+                axes.append(axisIndex(a));
+        }
+        return aerotechAxes(axes, line);
+    }
+    const int requests = int(w.hasG(143)) + int(w.hasG(144)) + int(w.hasG(149));
+    if (requests > 1)
+        return error(line, tr("G143, G144 and G149 exclude one another."));
+    if (w.hasG(143))
+        m_pending = 1;
+    else if (w.hasG(144))
+        m_pending = -1;
+    else if (w.hasG(149))
+        m_pending = 2;
+    return {};
+}
+
+// What the block moves: home (G28), a canned cycle's hole, or a move (G0-G3, or axis words in the mode).
+Result<void> GCodeInterpreter::motionOf(const Words &w, int line, bool motion)
+{
     // LinuxCNC's G43.1 takes Z as the offset, and so does the Carvera's M493.3; a dwell's X (FANUC's G4 X) is
     // its time.
     const bool consumedZ = (m_dialect == Dialect::LinuxCnc && w.hasG(43.1))
@@ -214,7 +247,11 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
     const bool dwell = w.hasG(4);
     if (w.hasG(28)) {
         returnHome(w, line);
-    } else if ((motion || (w.anyAxis() && !consumedZ)) && !dwell) {
+        return {};
+    }
+    if (m_cycle != 0 && !motion && (w.anyAxis() || m_cycleCalled) && !dwell)
+        return cycle(w, line);
+    if ((motion || (w.anyAxis() && !consumedZ)) && !dwell) {
         const Position programStart = m_program;
         move(w, line);
         const auto geometry = measureMove(w, programStart, line);
@@ -225,8 +262,6 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
         m_effect.lowestZ = geometry.value().lowestZ;
         account(geometry.value().length);
     }
-    if (w.hasM(2) || w.hasM(30))
-        m_ended = true;
     return {};
 }
 

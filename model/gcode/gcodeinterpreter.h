@@ -101,8 +101,8 @@ public:
     [[nodiscard]] Result<void> runLine(QByteArrayView line, int lineNumber);
 
     void setRecordMoves(bool record) { m_recordMoves = record; }
-    // Each move handed over as it is made instead of kept (moves()): a program's moves in memory that does not
-    // grow with the program.
+    // Each move handed over as it is made instead of kept (moves()): a program's moves in memory that does
+    // not grow with the program.
     using MoveSink = std::function<void(const SimulatedMove &move)>;
     void setMoveSink(MoveSink sink) { m_moveSink = std::move(sink); }
     [[nodiscard]] const QList<SimulatedMove> &moves() const { return m_moves; }
@@ -143,6 +143,17 @@ public:
 private:
     struct Words;
     [[nodiscard]] Result<void> execute(const Words &w, int line);
+    [[nodiscard]] Result<void> modalGCodes(const Words &w, int line, bool &motion);
+    [[nodiscard]] Result<void> aerotechWords(const Words &w, int line);
+    [[nodiscard]] Result<void> motionOf(const Words &w, int line, bool motion);
+    // G54-G59: the machine stays; its work position is now the other offset's.
+    void selectWorkOffset(int index);
+    // Canned cycles (G73, G81-G89): the cycle's modal state, and one hole.
+    [[nodiscard]] static bool isCycle(double g);
+    void startCycle(int code);
+    [[nodiscard]] Result<void> cycle(const Words &w, int line);
+    // A straight move of the cycle to `target` (work coordinates), at rapid or at feed.
+    void cycleMove(const Position &target, bool feed, int line);
     [[nodiscard]] Result<void> callFunction(QByteArrayView call, int line);
     [[nodiscard]] Result<void> g10(const Words &w, int line);
     [[nodiscard]] Result<void> g10WorkOffset(const Words &w, double l, int line);
@@ -199,7 +210,15 @@ private:
     std::map<int, ToolUsage> m_usage;
     double m_rapid = 0.0;
     Position m_machine {}; // where the machine is
-    Position m_g54 {};
+    Position m_g54 {}; // the work offset in use (G54 to G59)
+    std::array<Position, 6> m_workOffsets {}; // G54 to G59, the one in use kept in m_g54
+    int m_workOffset = 0;
+    int m_cycle = 0; // the canned cycle in force (73, 81 … 89), or 0
+    bool m_cycleCalled = false; // this block names the cycle: it drills even without X or Y
+    bool m_cycleToR = false; // G99: back to R after each hole; G98: to the level the cycle began at
+    double m_cycleInitialZ = 0.0;
+    std::optional<double> m_cycleR;
+    std::optional<double> m_cycleZ;
     bool m_absolute = true;
     int m_lengthAxis = 2;
     bool m_radiusComp = false;

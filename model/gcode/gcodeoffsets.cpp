@@ -169,16 +169,22 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
     return g10Register(w, l, line);
 }
 
-// G10 L2 P1 X Y Z, or L20: G54 itself, or made so that the current position is the given one.
+// G10 L2 P X Y Z, or L20: a work offset itself (P1 G54 … P6 G59; P0 the one in use, as LinuxCNC has it), or
+// made so that the current position is the given one.
 Result<void> GCodeInterpreter::g10WorkOffset(const Words &w, double l, int line)
 {
-    if (w.word('P') && !same(w.get('P'), 1))
-        return error(line, tr("only G54 (P1) is simulated."));
+    const double p = w.word('P') ? w.get('P') : 1.0;
+    if (p != std::floor(p) || p < 0 || p > 6)
+        return error(line,
+            tr("G10 L%1 P%2: the work offsets simulated are G54 to G59 (P1 to P6).")
+                .arg(formatNumber(l), formatNumber(p)));
+    const int index = p == 0 ? m_workOffset : int(p) - 1;
+    Position &offset = index == m_workOffset ? m_g54 : m_workOffsets[size_t(index)];
     for (size_t i = 0; i < 3; ++i) {
         const char a = "XYZ"[i];
         if (w.word(a))
             // L20: the current position becomes `value`, tool length offset included.
-            m_g54[i] = same(l, 2)
+            offset[i] = same(l, 2)
                 ? w.get(a)
                 : m_machine[i] - w.get(a) - (i == size_t(m_lengthAxis) ? m_appliedLength : 0.0);
     }

@@ -151,6 +151,13 @@ private Q_SLOTS:
             = check("M6 T2\nG0 X0 Z-10\nG18 G2 X10 Z-10 R5 F100\n", Dialect::Carvera, shopTable(), -14.0);
         QVERIFY(find(arc, FindingKind::BelowFloor));
         QCOMPARE(arc.tools.at(0).lowestZ, std::optional(-15.0));
+        // A drilling cycle's holes go to its Z.
+        const JobReport drill = check("T2 M6\nG43 H2 G0 Z10\nG99 G81 X5 Y5 Z-25 R2 F100\nX10\nG80\nM30\n",
+            Dialect::Fanuc, shopTable(), -20.0);
+        const Finding *hole = find(drill, FindingKind::BelowFloor, 2);
+        QVERIFY(hole);
+        QCOMPARE(hole->lines, (QList<int> { 3, 4 }));
+        QCOMPARE(drill.tools.at(0).lowestZ, std::optional(-25.0));
     }
 
     void findsInchesOnTheCarveraAndUnitsThatAreNotTheTables()
