@@ -20,7 +20,6 @@
 
 #include "model/job/jobcheck.h"
 #include "model/job/programexcerpt.h"
-#include "model/library/library.h"
 #include "model/numberformat.h"
 #include "model/timetext.h"
 #include "ui/appearance.h"
@@ -58,24 +57,14 @@ struct CheckInput
 {
     QString path;
     JobCheckSetup setup;
-    std::optional<LibraryLocation> library;
-    QString machine;
+    JobSources sources;
 };
 
 Result<JobReport> runCheck(const CheckInput &in, const BackgroundTask::Progress &progress)
 {
-    // The library is opened on this thread, for it (one connection a thread), and only when there is one: a
-    // check creates no library.
-    std::unique_ptr<Library> library;
-    if (in.library && QFileInfo::exists(in.library->path)) {
-        if (auto opened = Library::open(*in.library, Library::Options { 250 }))
-            library = opened.takeValue();
-    }
-    JobFactSource facts;
-    if (library)
-        facts = [&library, &in](QHash<int, ToolFacts> &known, const QList<int> &tools) {
-            return addLibraryFacts(known, *library, in.machine, tools);
-        };
+    const JobFactSource facts = [&in](QHash<int, ToolFacts> &known, const QList<int> &tools) {
+        return addHistoryFacts(in.sources, known, tools);
+    };
     return checkJobFile(in.path, in.setup, facts, progress);
 }
 
@@ -197,7 +186,7 @@ void JobCheckDialog::check(const QString &path)
     m_excerpt->clear();
     m_program->setText(tr("Program: %1").arg(QDir::toNativeSeparators(path)));
     m_summary->setText(tr("Checking…"));
-    CheckInput input { path, {}, m_sources.library, m_sources.machine };
+    CheckInput input { path, {}, m_sources };
     input.setup.dialect = dialectFromKey(m_dialect->currentData().toString()).value_or(Dialect::Carvera);
     input.setup.useTable(m_sources.table);
     input.setup.staleDays = m_sources.staleDays;
@@ -249,11 +238,12 @@ void JobCheckDialog::showReport()
     m_findingsModel->setFindings(r.findings);
     m_tools->resizeColumnsToContents();
     m_findings->resizeColumnsToContents();
-    QString text = tr("%1: %2 lines as %3; %n tools, cutting %4, rapids %5 mm.", nullptr, int(r.tools.size()))
+    QString text = tr("%1: %2 lines as %3; tools: %4, cutting %5, rapids %6 mm.")
                        .arg(r.program)
                        .arg(QLocale().toString(r.lines))
-                       .arg(dialectInfo(r.dialect).name, durationText(r.cuttingSeconds),
-                           millimetres(r.rapidMm, false));
+                       .arg(dialectInfo(r.dialect).name)
+                       .arg(r.tools.size())
+                       .arg(durationText(r.cuttingSeconds), millimetres(r.rapidMm, false));
     if (r.cancelled)
         text = tr("Cancelled after %1 lines: what was found so far.").arg(QLocale().toString(r.lines)) + u' '
             + text;
@@ -303,7 +293,8 @@ void JobCheckDialog::prepare()
 {
     if (!m_report)
         return;
-    JobPrepareDialog dialog(m_path, m_sources.table, m_report->dialect, m_sources.staleDays, this);
+    JobPrepareDialog dialog(m_path, m_sources, m_report->dialect,
+        m_useFloor->isChecked() ? std::optional(m_floor->value()) : std::nullopt, this);
     dialog.exec();
 }
 

@@ -7,8 +7,7 @@
 #include <QDialog>
 
 #include "model/job/jobreport.h"
-#include "model/library/librarylocation.h"
-#include "model/tooltable.h"
+#include "ui/jobsources.h"
 
 class QCheckBox;
 class QComboBox;
@@ -34,15 +33,7 @@ class JobCheckDialog final : public QDialog
     Q_DISABLE_COPY_MOVE(JobCheckDialog)
 
 public:
-    // What the check reads besides the program: the table as it is now (a copy), the history library (when
-    // it exists), this machine's name in it, and the stale limit.
-    struct Sources
-    {
-        ToolTable table;
-        std::optional<LibraryLocation> library;
-        QString machine;
-        int staleDays = 7;
-    };
+    using Sources = JobSources;
 
     JobCheckDialog(Sources sources, QWidget *parent = nullptr);
     ~JobCheckDialog() override;

@@ -55,12 +55,12 @@ QString preparedName(const QString &program)
 } // namespace
 
 JobPrepareDialog::JobPrepareDialog(
-    QString program, ToolTable table, Dialect dialect, int staleDays, QWidget *parent)
+    QString program, JobSources sources, Dialect dialect, std::optional<double> zFloor, QWidget *parent)
     : QDialog(parent)
     , m_programPath(std::move(program))
-    , m_table(std::move(table))
+    , m_sources(std::move(sources))
     , m_dialect(dialect)
-    , m_staleDays(staleDays)
+    , m_zFloor(zFloor)
     , m_task(new BackgroundTask(this))
     , m_progress(new QProgressBar(this))
     , m_cancel(new QPushButton(tr("Cancel"), this))
@@ -75,9 +75,9 @@ JobPrepareDialog::JobPrepareDialog(
     if (dialect == Dialect::Carvera) {
         AppSettings settings;
         m_storedTlo = new QCheckBox(
-            tr("After a manual change, set the tool's stored TLO instead of probing, when it was measured "
-               "within %n days",
-                nullptr, staleDays),
+            tr("After a manual change, set the tool's stored TLO instead of probing, when it is within the "
+               "stale limit (%1 d)")
+                .arg(m_sources.staleDays),
             this);
         m_storedTlo->setObjectName(u"prepareStoredTloCheck"_s);
         m_storedTlo->setChecked(settings.prepareUsesStoredTlo());
@@ -148,7 +148,9 @@ PrepareOptions JobPrepareDialog::options() const
 {
     PrepareOptions o;
     o.dialect = m_dialect;
-    o.staleDays = m_staleDays;
+    o.staleDays = m_sources.staleDays;
+    o.zFloor = m_zFloor;
+    o.machineReferenceMz = m_sources.machineReferenceMz;
     if (m_dialect == Dialect::Carvera) {
         o.useStoredTlo = m_storedTlo->isChecked();
         o.breakTest = m_breakTest->isChecked();
@@ -187,9 +189,15 @@ void JobPrepareDialog::run(const QString &output)
     m_result = result;
     setRunning(true);
     m_status->setText(output.isEmpty() ? tr("Preparing the preview…") : tr("Writing %1…").arg(output));
-    m_task->start([result, path = m_programPath, table = m_table, o = options(), output](
+    m_task->start([result, path = m_programPath, sources = m_sources, o = options(), output](
                       const BackgroundTask::Progress &progress) {
-        *result = prepareJobFile(path, table, o, output, progress);
+        PrepareGuards guards;
+        guards.preview = output.isEmpty();
+        guards.protectedFiles = { sources.tablePath };
+        guards.moreFacts = [&sources](QHash<int, ToolFacts> &facts, const QList<int> &tools) {
+            return addHistoryFacts(sources, facts, tools);
+        };
+        *result = prepareJobFile(path, sources.table, o, output, progress, guards);
     });
 }
 
@@ -245,15 +253,16 @@ void JobPrepareDialog::showPreview()
     m_preview->resizeColumnsToContents();
     QString text = s.inserted + s.changed == 0
         ? tr("Nothing to change: the program already does what these options ask.")
-        : tr("%n lines inserted, ", nullptr, s.inserted) + tr("%n changed; ", nullptr, s.changed)
-            + tr(
-                "%n cutting moves checked against the original: each reaches the same work position with its "
-                "tool's own offset.",
-                nullptr, s.cuttingMoves);
+        : tr("Lines inserted: %1, changed: %2. Cutting moves checked against the original: %3; each reaches "
+             "the same work position with its tool's own offset.")
+              .arg(s.inserted)
+              .arg(s.changed)
+              .arg(s.cuttingMoves);
     if (s.moreHunks > 0)
         text += u' '
-            + tr("The preview shows the first %1 changes; %n more are not shown.", nullptr, s.moreHunks)
-                  .arg(s.hunks.size());
+            + tr("The preview shows the first %1 changes; the other %2 are not shown.")
+                  .arg(s.hunks.size())
+                  .arg(s.moreHunks);
     if (!s.notes.isEmpty())
         text += u"\n"_s + s.notes.join(u'\n');
     m_status->setText(text);

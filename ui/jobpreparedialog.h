@@ -7,7 +7,7 @@
 
 #include "model/gcode/dialect.h"
 #include "model/job/jobpreparer.h"
-#include "model/tooltable.h"
+#include "ui/jobsources.h"
 
 class QCheckBox;
 class QDoubleSpinBox;
@@ -29,8 +29,8 @@ class JobPrepareDialog final : public QDialog
     Q_DISABLE_COPY_MOVE(JobPrepareDialog)
 
 public:
-    JobPrepareDialog(
-        QString program, ToolTable table, Dialect dialect, int staleDays, QWidget *parent = nullptr);
+    JobPrepareDialog(QString program, JobSources sources, Dialect dialect, std::optional<double> zFloor,
+        QWidget *parent = nullptr);
     ~JobPrepareDialog() override;
 
     // Runs the preparation for the preview (no file), or into `output`.
@@ -55,9 +55,9 @@ private:
     void setRunning(bool running);
 
     QString m_programPath;
-    ToolTable m_table;
+    JobSources m_sources;
     Dialect m_dialect;
-    int m_staleDays;
+    std::optional<double> m_zFloor;
     BackgroundTask *m_task;
     QCheckBox *m_storedTlo = nullptr;
     QCheckBox *m_breakTest = nullptr;

@@ -149,8 +149,7 @@ QVariant JobFindingsModel::data(const QModelIndex &index, int role) const
             return f.tool >= 0 ? u"T"_s + QString::number(f.tool) : QString();
         case MessageColumn:
             return f.count > 1
-                ? tr("%1 (%n times: lines %2)", nullptr, int(std::min<qint64>(f.count, INT_MAX)))
-                      .arg(f.message, lineList(f.lines, f.count))
+                ? tr("%1 (%2 times: lines %3)").arg(f.message).arg(f.count).arg(lineList(f.lines, f.count))
                 : f.message;
         }
     }

@@ -98,6 +98,7 @@ private:
     void editHistorySettings();
     void exportHistory();
     void checkJob();
+    [[nodiscard]] std::optional<double> machineReference() const;
     void readSettings();
     void writeSettings();
 

@@ -11,6 +11,7 @@
 #include "model/document/tooldocument.h"
 #include "model/formats/tablefile.h"
 #include "model/library/historyrecorder.h"
+#include "serial/machineconnection.h"
 #include "ui/appsettings.h"
 #include "ui/jobcheckdialog.h"
 
@@ -49,8 +50,8 @@ void MainWindow::checkJob()
 JobCheckDialog *MainWindow::openJobCheck(const QString &path)
 {
     AppSettings settings;
-    JobCheckDialog::Sources sources { m_document->table(), m_history->location(), settings.machineName(),
-        settings.staleAfterDays() };
+    JobSources sources { m_document->table(), m_document->filePath(), m_history->location(),
+        settings.machineName(), settings.staleAfterDays(), machineReference() };
     if (sources.library->path.isEmpty())
         sources.library.reset();
     if (!m_jobDialog) {
@@ -65,6 +66,16 @@ JobCheckDialog *MainWindow::openJobCheck(const QString &path)
     m_jobDialog->activateWindow();
     m_jobDialog->check(path);
     return m_jobDialog;
+}
+
+// The reference MCS Z the connected machine holds, when it has one: stored TLOs measured against another are
+// not restored by a preparation.
+std::optional<double> MainWindow::machineReference() const
+{
+    const auto &offsets = m_connection->lastOffsets();
+    if (!offsets || offsets->referenceMz == 0.0)
+        return std::nullopt; // nothing measured since the machine started (docs/CARVERA.md § 3)
+    return offsets->referenceMz;
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent *event)

@@ -24,6 +24,7 @@ Result<PrepareOptions> readPrepareOptions(Invocation &call, const JobCheckSetup 
     o.staleDays = setup.staleDays;
     o.rack = setup.rack;
     o.now = setup.now;
+    o.zFloor = setup.zFloor;
     if (call.has(u"tolerance"_s)) {
         if (!o.breakTest)
             return Error { u"--tolerance is the break test's: give --break-test with it."_s };
@@ -86,7 +87,14 @@ int prepareJob(Invocation &call)
     if (!table)
         return fail(call, table.error().text(), BadInput);
     const QString output = call.option(u"output"_s);
-    const auto summary = prepareJobFile(call.arguments.at(1), table.value(), options.value(), output);
+    PrepareGuards guards;
+    guards.protectedFiles = { call.option(u"table"_s) };
+    if (library)
+        guards.moreFacts = [&library, &machine](QHash<int, ToolFacts> &facts, const QList<int> &tools) {
+            return addLibraryFacts(facts, *library, machine, tools);
+        };
+    const auto summary
+        = prepareJobFile(call.arguments.at(1), table.value(), options.value(), output, {}, guards);
     if (!summary)
         return fail(call, summary.error().text(), summary.error().line > 0 ? MachineError : BadInput);
     printSummary(call, summary.value(), output);

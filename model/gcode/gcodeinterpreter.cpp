@@ -190,8 +190,9 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
         return g10(w, line);
     if (auto r = modalWords(w, line); !r)
         return r;
+    // FAGOR latches the offset of the tool a T selects (or of its D).
     if (w.hasG(43) || w.hasG(44) || w.hasG(49) || w.hasG(43.1) || w.hasG(43.2) || w.word('H')
-        || (m_dialect == Dialect::Fagor8055M && w.word('D')))
+        || (m_dialect == Dialect::Fagor8055M && (w.word('D') || w.word('T'))))
         ++m_lengthCalls;
     if (m_dialect == Dialect::Aerotech && w.hasG(44))
         return aerotechWords(w, line); // G44 X Y Z names the axes: nothing moves
@@ -268,8 +269,8 @@ Result<void> GCodeInterpreter::motionOf(const Words &w, int line, bool motion)
 LengthCompensation GCodeInterpreter::lengthCompensation() const
 {
     if (m_dialect == Dialect::Aerotech)
-        return { m_compSign != 0 || m_pending == 1 || m_pending == -1, -1, 0.0 };
-    return { m_lengthMode != LengthMode::Off, m_lengthRegister, lengthContribution() };
+        return { m_compSign != 0 || m_pending == 1 || m_pending == -1, -1, 0.0, 0.0 };
+    return { m_lengthMode != LengthMode::Off, m_lengthRegister, lengthContribution(), m_lengthValue };
 }
 
 double GCodeInterpreter::lengthContribution() const

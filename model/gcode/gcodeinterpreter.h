@@ -63,7 +63,8 @@ struct LengthCompensation
 {
     bool active = false;
     int reg = -1;
-    double value = 0.0;
+    double value = 0.0; // what the length axis carries (0 when none is active)
+    double latched = 0.0; // the value the last call selected, which G43 would apply
 };
 
 struct SimulatedMove
@@ -137,6 +138,8 @@ public:
     // Where the program is, in work coordinates.
     [[nodiscard]] const Position &workPosition() const { return m_program; }
     [[nodiscard]] double feedRate() const { return m_feed; }
+    // The axis a length offset rides on: 2 (Z) under G17, 1 (Y) under G18, 0 (X) under G19.
+    [[nodiscard]] int lengthAxis() const { return m_lengthAxis; }
     // The spindle turns (M3, M4) or stands (M5, and at the start).
     [[nodiscard]] bool spindleOn() const { return m_spindleOn; }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/job/jobprepare.h"
 
+#include <algorithm>
+
 #include <QFileInfo>
 
 #include "model/formats/fileio.h"
@@ -14,17 +16,48 @@ namespace {
 constexpr int kLinesPerProgress = 1 << 14;
 constexpr qsizetype kPieceBytes = 1024 * 1024;
 
-// Runs the whole preparation into `sink` (lines, each with its end); the summary, or why it stopped.
+// The job check the preparation runs beside it: a program with errors is not prepared.
+JobCheckSetup checkSetup(const ToolTable &table, const PrepareOptions &options)
+{
+    JobCheckSetup setup;
+    setup.dialect = options.dialect;
+    setup.useTable(table);
+    setup.zFloor = options.zFloor;
+    setup.staleDays = options.staleDays;
+    setup.rack = options.rack;
+    setup.now = options.now;
+    return setup;
+}
+
+Error checkFailed(const JobReport &report, const QString &path)
+{
+    const auto first = std::find_if(report.findings.cbegin(), report.findings.cend(),
+        [](const Finding &f) { return f.severity() == Severity::Error; });
+    const int errors = report.errors();
+    return Error {
+        tr("the job check finds %1; the first, on line %2: %3 Fix them before preparing the program "
+           "(Check Job, or toffee-cli job check, lists them). Nothing was written.")
+            .arg(errors == 1 ? tr("an error") : tr("%1 errors").arg(errors))
+            .arg(first->line)
+            .arg(first->message),
+        first->line, path
+    };
+}
+
+// Runs the whole preparation into `sink` (lines, each with its end), and the job check beside it; the
+// summary, or why it stopped.
 Result<PrepareSummary> run(const QString &path, const ToolTable &table, const PrepareOptions &options,
-    const JobPreparer::LineSink &sink, const JobProgress &progress)
+    const JobPreparer::LineSink &sink, const JobProgress &progress, const JobFactSource &moreFacts)
 {
     LineReader reader;
     if (auto opened = reader.open(path); !opened)
         return opened.error();
     JobPreparer preparer(table, options);
+    JobChecker checker(checkSetup(table, options));
     QByteArrayView line;
     int sinceProgress = 0;
     while (reader.next(line)) {
+        checker.feed(line, reader.lineNumber());
         if (auto r = preparer.feed(line, reader.lineNumber(), sink); !r)
             return Error { r.error().message, r.error().line, path };
         if (++sinceProgress == kLinesPerProgress) {
@@ -35,26 +68,51 @@ Result<PrepareSummary> run(const QString &path, const ToolTable &table, const Pr
     }
     if (reader.error())
         return *reader.error();
+    if (moreFacts) {
+        QHash<int, ToolFacts> facts = checker.facts();
+        if (auto added = moreFacts(facts, checker.toolNumbers()); !added)
+            return added.error();
+        checker.addFacts(facts);
+    }
+    if (const JobReport report = checker.finish(QFileInfo(path).fileName(), false); report.errors() > 0)
+        return checkFailed(report, path);
     auto summary = preparer.finish(sink);
     if (!summary)
         return Error { summary.error().message, summary.error().line, path };
     return summary;
 }
 
+// The file itself, links followed, for comparing two names of it.
+QString realPath(const QString &path)
+{
+    const QFileInfo info(path);
+    const QString canonical = info.canonicalFilePath();
+    return canonical.isEmpty() ? info.absoluteFilePath() : canonical;
+}
+
 } // namespace
 
 Result<PrepareSummary> prepareJobFile(const QString &path, const ToolTable &table,
-    const PrepareOptions &options, const QString &output, const JobProgress &progress)
+    const PrepareOptions &options, const QString &output, const JobProgress &progress,
+    const PrepareGuards &guards)
 {
     if (auto allowed = JobPreparer::check(options); !allowed)
         return allowed.error();
-    if (output.isEmpty())
+    if (guards.preview)
         return run(
-            path, table, options, [](QByteArrayView) { return true; }, progress);
-    if (QFileInfo(output).absoluteFilePath() == QFileInfo(path).absoluteFilePath())
+            path, table, options, [](QByteArrayView) { return true; }, progress, guards.moreFacts);
+    if (output.trimmed().isEmpty())
+        return Error { tr("Say where the prepared program goes: no file name was given.") };
+    if (realPath(output) == realPath(path))
         return Error {
             tr("%1: the prepared program must go to another file than the program itself.").arg(output)
         };
+    for (const QString &kept : guards.protectedFiles) {
+        if (!kept.isEmpty() && realPath(output) == realPath(kept))
+            return Error {
+                tr("%1 is the tool table: the prepared program must go to another file.").arg(output)
+            };
+    }
     std::optional<Result<PrepareSummary>> result;
     QString stopped;
     const auto produce = [&](const FileSink &fileSink) {
@@ -69,7 +127,7 @@ Result<PrepareSummary> prepareJobFile(const QString &path, const ToolTable &tabl
             piece.clear();
             return written;
         };
-        result = run(path, table, options, lines, progress);
+        result = run(path, table, options, lines, progress, guards.moreFacts);
         if (!result->ok()) {
             stopped = result->error().text();
             return false;

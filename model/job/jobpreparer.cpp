@@ -44,9 +44,11 @@ Result<void> JobPreparer::check(const PrepareOptions &options)
         return Error { tr("Say what to prepare: --use-stored-tlo, --break-test, or both.") };
     if (options.breakTest
         && (!std::isfinite(options.tolerance) || options.tolerance < Limits::kMinBreakTolerance
-            || options.tolerance > Limits::kMaxMachineOffsetMm))
-        return Error { tr("The break-test tolerance must be at least %1 mm: the Carvera halts below it.")
-                           .arg(command(Limits::kMinBreakTolerance)) };
+            || options.tolerance > kMaxPrepareTolerance))
+        return Error { tr(
+            "The break-test tolerance must be from %1 mm (the Carvera halts below it) to %2 mm (a "
+            "looser test would miss a broken tool).")
+                           .arg(command(Limits::kMinBreakTolerance), command(kMaxPrepareTolerance)) };
     return {};
 }
 
@@ -61,7 +63,8 @@ QString JobPreparer::comment(const QString &why) const
 
 Result<void> JobPreparer::feed(QByteArrayView line, int lineNumber, const LineSink &sink)
 {
-    if (m_original.ended()) {
+    m_afterEnd = m_original.ended();
+    if (m_afterEnd) {
         // The controller runs nothing after the end: copied as it is.
         ++m_summary.originalLines;
         m_changedLine = false;
@@ -83,6 +86,7 @@ Result<void> JobPreparer::feed(QByteArrayView line, int lineNumber, const LineSi
         m_compensationDue = false;
         if (m_original.lengthCalls() == m_callsAtChange && m_tool > 0) {
             m_compensated = true;
+            m_callsAtInsertion = m_original.lengthCalls();
             const QString letter = m_options.dialect == Dialect::Fagor8055M ? u"D"_s : u"H"_s;
             const QString call = u"G43 "_s + letter + QString::number(m_tool);
             if (auto r = insertLine(call + u' '

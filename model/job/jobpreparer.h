@@ -29,6 +29,10 @@ struct PrepareOptions
     int staleDays = 7;
     QList<int> rack; // the tools the machine's rack holds (it always measures those at a change)
     QDateTime now = QDateTime::currentDateTimeUtc();
+    // The machine's reference MCS Z, when it is known (the window, connected): a stored TLO measured against
+    // another is not restored.
+    std::optional<double> machineReferenceMz;
+    std::optional<double> zFloor; // for the job check run beside the preparation
 };
 
 // One piece of the side-by-side preview: the lines around a change, original on the left, prepared on the
@@ -69,6 +73,8 @@ class JobPreparer
 public:
     static constexpr int kMaxHunks = 200;
     static constexpr int kContextLines = 3;
+    // The loosest break test a preparation writes: a tool broken by more than this is not "within tolerance".
+    static constexpr double kMaxPrepareTolerance = 5.0;
     using LineSink = std::function<bool(QByteArrayView line)>; // each prepared line, without its end
 
     JobPreparer(const ToolTable &table, PrepareOptions options);
@@ -99,6 +105,7 @@ private:
     void addRow(const PrepareRow &row, bool changed);
     void closeHunk();
     void noteOnce(int tool, const QString &note);
+    [[nodiscard]] Result<void> sameReference(int tool, const ToolFacts &facts);
 
     PrepareOptions m_options;
     OffsetTable m_offsets;
@@ -112,8 +119,12 @@ private:
     bool m_compensationDue = false; // G43 controllers: a tool was loaded and no move of the length axis since
     qint64 m_callsAtChange = 0; // the original's length calls when the tool was loaded
     bool m_compensated = false; // a G43 was inserted for the tool in the spindle
+    qint64 m_callsAtInsertion = 0; // the original's length calls then
     bool m_changedLine = false; // the current original line was rewritten
+    bool m_afterEnd = false; // the current original line comes after the program's end: copied, not run
     QHash<int, bool> m_noted; // tools a note was made for
+    std::optional<double> m_restoredReference; // the reference of the stored TLOs restored so far
+    int m_restoredTool = -1; // the first tool restored
     // The preview: the last few unchanged rows, and the hunk being built.
     QList<PrepareRow> m_context;
     PrepareHunk m_hunk;

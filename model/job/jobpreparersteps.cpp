@@ -68,7 +68,7 @@ Result<void> JobPreparer::writeOriginal(
     QByteArrayView original, QByteArrayView prepared, int lineNumber, const LineSink &sink)
 {
     const int number = int(++m_summary.preparedLines);
-    if (!m_original.ended() || m_changedLine) {
+    if (!m_afterEnd) {
         if (auto ran = m_prepared.runLine(prepared, number); !ran)
             return Error { tr("the prepared line \"%1\" is refused: %2 Nothing was written.")
                                .arg(QString::fromUtf8(prepared), ran.error().message),
@@ -90,8 +90,16 @@ Result<void> JobPreparer::breakTest(const LineSink &sink)
     m_lastCutLine = 0;
     if (tool < 0 || isCarveraNonCutter(tool)) {
         noteOnce(tool,
-            tr("The program cuts before any tool change (line %1): there is no tool to break-test.")
+            tr("The program cuts before any tool change (original line %1): there is no tool to "
+               "break-test.")
                 .arg(lastCut));
+        return {};
+    }
+    if (const ToolFacts facts = m_facts.value(tool); facts.measuredTlo && *facts.measuredTlo == 0.0) {
+        noteOnce(tool,
+            tr("T%1 is the reference tool (TLO 0): the community firmware does not break-test it (it "
+               "aborts with \"No previous TLO included\"), so no test is inserted.")
+                .arg(tool));
         return {};
     }
     if (m_prepared.spindleOn()) {
@@ -101,7 +109,7 @@ Result<void> JobPreparer::breakTest(const LineSink &sink)
             return r;
     }
     return insertLine(u"M491.1 H"_s + command(m_options.tolerance) + u' '
-            + comment(tr("break test of T%1 after its last cut at line %2, tolerance %3 mm")
+            + comment(tr("break test of T%1 after its last cut at original line %2, tolerance %3 mm")
                           .arg(tool)
                           .arg(lastCut)
                           .arg(command(m_options.tolerance))),
@@ -125,9 +133,15 @@ std::optional<double> JobPreparer::restorable(int tool)
     else if (facts.broken)
         why = tr("T%1 failed its last break test: it is measured at its change.").arg(tool);
     else if (!facts.isFresh(m_options.now, m_options.staleDays))
-        why = tr("T%1's stored TLO is older than %n days: it is measured at its change.", nullptr,
-            m_options.staleDays)
-                  .arg(tool);
+        why = tr("T%1's stored TLO is older than the stale limit (%2 d): it is measured at its change.")
+                  .arg(tool)
+                  .arg(m_options.staleDays);
+    else if (m_options.machineReferenceMz && facts.referenceMz
+        && std::fabs(*facts.referenceMz - *m_options.machineReferenceMz) > 0.0005)
+        why = tr("T%1's stored TLO was measured against reference MCS Z %2, but the machine's is %3: it is "
+                 "measured at its change.")
+                  .arg(tool)
+                  .arg(command(*facts.referenceMz), command(*m_options.machineReferenceMz));
     if (!why.isEmpty()) {
         noteOnce(tool, why);
         return std::nullopt;
@@ -143,9 +157,12 @@ QString JobPreparer::carveraChange(QByteArrayView line, int tool)
     const auto tlo = restorable(tool);
     if (!tlo)
         return {};
-    const QString before = QString::fromUtf8(line.first(commentStart(line))).trimmed();
+    const qsizetype cut = commentStart(line);
+    const QString before = QString::fromUtf8(line.first(cut)).trimmed();
+    const QString own = QString::fromUtf8(line.sliced(cut)).trimmed(); // the program's own comment stays
     return before + u" H"_s + command(*tlo) + u' '
-        + comment(tr("was \"%1\": T%2 takes its stored TLO instead of a probe").arg(before).arg(tool));
+        + comment(tr("was \"%1\": T%2 takes its stored TLO instead of a probe").arg(before).arg(tool))
+        + (own.isEmpty() ? QString() : u' ' + own);
 }
 
 // The seed's restore (M493.2 T, M493.3 Z) after a change that did not probe: the stock firmware ignores
@@ -154,6 +171,8 @@ Result<void> JobPreparer::restoreAfterChange(int tool, const LineSink &sink)
 {
     const ToolFacts facts = m_facts.value(tool);
     const double tlo = *facts.measuredTlo;
+    if (auto same = sameReference(tool, facts); !same)
+        return same;
     // A date, not an age: the program is kept and run later.
     const QString when = facts.measuredAt.toUTC().toString(u"yyyy-MM-dd HH:mm"_s) + u" UTC"_s;
     QString measured
@@ -170,38 +189,91 @@ Result<void> JobPreparer::restoreAfterChange(int tool, const LineSink &sink)
         sink, true);
 }
 
+// After each move of the original: the prepared program is at the same work position on every axis the block
+// named, at the same machine position across the length axis, and its length axis carries the offset it
+// should: the original's, or the tool's own where a G43 was inserted for it. A move in machine coordinates
+// (G53, G28) ends at the same machine position. Where a G43 was inserted, the positions along the length axis
+// differ by design, until the next tool's own offset is in force.
 Result<void> JobPreparer::compare(int lineNumber)
 {
     const BlockEffect &effect = m_original.lastBlock();
     if (effect.motion == BlockEffect::Motion::None)
         return {};
-    if (effect.motion == BlockEffect::Motion::Feed)
+    const bool feed = effect.motion == BlockEffect::Motion::Feed;
+    if (feed)
         ++m_summary.cuttingMoves;
-    if (!near(m_original.workPosition(), m_prepared.workPosition()))
-        return Error {
-            tr("the prepared program would cut at another work position than the original. Nothing "
-               "was written."),
-            lineNumber
-        };
+    const Position &a = m_original.position();
+    const Position &b = m_prepared.position();
+    const size_t axis = size_t(m_original.lengthAxis());
+    const Error elsewhere {
+        tr("the prepared program would put the machine elsewhere than the original with the "
+           "table's offsets. Nothing was written."),
+        lineNumber
+    };
+    if (effect.machineCoordinates)
+        return near(a, b) ? Result<void>() : Result<void>(elsewhere);
+    for (size_t i = 0; i < 3; ++i) {
+        if (i == axis && !effect.lengthAxisWord)
+            continue;
+        if (std::fabs(m_original.workPosition()[i] - m_prepared.workPosition()[i]) > 1e-6)
+            return Error { tr("the prepared program would cut at another work position than the original. "
+                              "Nothing was written."),
+                lineNumber };
+        if (i != axis && std::fabs(a[i] - b[i]) > 1e-6)
+            return elsewhere;
+    }
+    if (!effect.lengthAxisWord && !feed)
+        return {};
+    const LengthCompensation original = m_original.lengthCompensation();
+    const LengthCompensation prepared = m_prepared.lengthCompensation();
+    const bool calledSince = m_original.lengthCalls() != m_callsAtInsertion;
     const int tool = m_original.loadedTool();
     const auto offset = m_offsets.find(tool);
-    if (m_compensated && offset != m_offsets.end()) {
-        // The original called no offset for this tool: the prepared program must carry the tool's own, at
-        // least from its first cut on (before, it may still be on its way to it).
-        const LengthCompensation prepared = m_prepared.lengthCompensation();
-        if (prepared.active && std::fabs(prepared.value - offset->second.length()) < 1e-6)
-            return {};
-        if (effect.motion == BlockEffect::Motion::Feed)
-            return Error {
-                tr("the prepared program would cut without T%1's length offset. Nothing was written.")
-                    .arg(tool),
-                lineNumber
-            };
+    // The offset the prepared program must carry: the tool's own, where a G43 was inserted for it and the
+    // program called none since; the one the program called since where the original has none in force; the
+    // original's otherwise.
+    double expected = original.value;
+    if (m_compensated && !calledSince)
+        expected = offset != m_offsets.end() ? offset->second.length() : 0.0;
+    else if (m_compensated && !original.active && prepared.active)
+        expected = original.latched;
+    if (std::fabs(prepared.value - expected) < 1e-6)
+        return {};
+    return m_compensated
+        ? Error { tr("the prepared program would cut without T%1's length offset. Nothing was "
+                     "written.")
+                      .arg(tool),
+              lineNumber }
+        : elsewhere;
+}
+
+// The machine has one reference: stored TLOs measured against two cannot both be right.
+Result<void> JobPreparer::sameReference(int tool, const ToolFacts &facts)
+{
+    if (!facts.referenceMz) {
+        noteOnce(-2 - tool,
+            tr("T%1's stored TLO does not say which reference it was measured against: check that "
+               "it still holds.")
+                .arg(tool));
+        return {};
     }
-    if (!near(m_original.position(), m_prepared.position()))
-        return Error { tr("the prepared program would put the machine elsewhere than the original with the "
-                          "table's offsets. Nothing was written."),
-            lineNumber };
+    if (m_restoredReference && std::fabs(*m_restoredReference - *facts.referenceMz) > 0.0005)
+        return Error { tr(
+            "T%1's stored TLO was measured against reference MCS Z %2 and T%3's against %4: the machine "
+            "has one reference, so at most one is right. Probe one of them again, or prepare without "
+            "stored TLOs. Nothing was written.")
+                           .arg(tool)
+                           .arg(command(*facts.referenceMz))
+                           .arg(m_restoredTool)
+                           .arg(command(*m_restoredReference)) };
+    if (!m_restoredReference) {
+        m_restoredReference = facts.referenceMz;
+        m_restoredTool = tool;
+        m_summary.notes.append(
+            tr("The stored TLOs hold only while the machine's reference MCS Z is %1 (where its "
+               "reference tool was probed): check it before running the program.")
+                .arg(command(*facts.referenceMz)));
+    }
     return {};
 }
 

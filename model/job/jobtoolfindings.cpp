@@ -45,8 +45,8 @@ JobReport JobChecker::finish(const QString &program, bool cancelled)
     report.rapidMm = m_interpreter.rapidDistance();
     if (m_moreProgramErrors > 0)
         m_findings.append({ FindingKind::ProgramError, m_firstUncountedError, -1,
-            tr("%n more lines the controller would refuse, from this one on.", nullptr,
-                int(m_moreProgramErrors)),
+            tr("More lines the controller would refuse, from this one on: %1 in all.")
+                .arg(m_moreProgramErrors),
             { m_firstUncountedError }, m_moreProgramErrors });
     report.findings = m_findings;
     // By line, and on one line the errors first.
@@ -92,9 +92,10 @@ void JobChecker::toolFindings(const JobTool &tool)
                     : tr("T%1 has no length in the table: G43 would apply 0.").arg(n));
     } else if (facts.measuredAt.isValid() && !facts.isFresh(m_setup.now, m_setup.staleDays)) {
         noteForTool(FindingKind::StaleTlo, tool,
-            tr("T%1's TLO was measured %2, more than %n days ago.", nullptr, m_setup.staleDays)
+            tr("T%1's TLO was measured %2, before the stale limit (%3 d).")
                 .arg(n)
-                .arg(ageText(facts.measuredAt, m_setup.now)));
+                .arg(ageText(facts.measuredAt, m_setup.now))
+                .arg(m_setup.staleDays));
     }
     if (facts.libraryTlo)
         noteForTool(FindingKind::StaleTlo, tool,

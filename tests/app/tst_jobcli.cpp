@@ -120,7 +120,7 @@ private Q_SLOTS:
                                                << u"for the Carvera"_s;
         QTest::newRow("tolerance below the minimum") << QStringList { u"job"_s, u"prepare"_s, program,
             u"--table"_s, kExample, u"--break-test"_s, u"--tolerance"_s, u"0.01"_s, u"-o"_s, u"/tmp/x.nc"_s }
-                                                     << u"at least 0.02"_s;
+                                                     << u"must be from 0.02 mm"_s;
         QTest::newRow("unknown subcommand")
             << QStringList { u"job"_s, u"run"_s } << u"usage: toffee-cli job"_s;
     }
@@ -134,6 +134,40 @@ private Q_SLOTS:
         QVERIFY2(QString::fromUtf8(run.err).contains(message), run.err.constData());
     }
 
+    void refusesToWriteOverTheProgramOrTheTable()
+    {
+        const QString path = m_dir.filePath(u"guarded.nc"_s);
+        write(path, "M6 T2\nG1 Z-1 F300\nM30\n");
+        const QString table = m_dir.filePath(u"guarded.json"_s);
+        QVERIFY(QFile::copy(kExample, table));
+        const QByteArray tableBefore = readFile(table);
+        const QString link = m_dir.filePath(u"link.nc"_s);
+        QVERIFY(QFile::link(path, link));
+        const struct
+        {
+            QString output;
+            QString message;
+        } refused[] = { { table, u"is the tool table"_s }, { link, u"another file than the program"_s },
+            { QString(), u"no file name was given"_s } };
+        for (const auto &r : refused) {
+            const Run run = cli({ u"job"_s, u"prepare"_s, path, u"--table"_s, table, u"--break-test"_s,
+                u"-o"_s, r.output, u"--no-history"_s });
+            QCOMPARE(run.exitCode, 2);
+            QVERIFY2(QString::fromUtf8(run.err).contains(r.message), run.err.constData());
+        }
+        QCOMPARE(readFile(table), tableBefore);
+        QCOMPARE(readFile(path), QByteArray("M6 T2\nG1 Z-1 F300\nM30\n"));
+        // A program the check finds errors in is not prepared: T9 is not in the table.
+        write(path, "M6 T2\nG1 Z-1 F300\nM6 T9\nG1 Z-1\nM30\n");
+        const Run run = cli({ u"job"_s, u"prepare"_s, path, u"--table"_s, table, u"--break-test"_s, u"-o"_s,
+            m_dir.filePath(u"out.nc"_s), u"--no-history"_s });
+        QCOMPARE(run.exitCode, 4);
+        QVERIFY2(run.err.contains(
+                     "the job check finds an error; the first, on line 3: T9 is not in the tool table"),
+            run.err.constData());
+        QVERIFY(!QFile::exists(m_dir.filePath(u"out.nc"_s)));
+    }
+
     void preparesAProgramThatChecksClean()
     {
         const QString path = m_dir.filePath(u"carvera.nc"_s);
@@ -142,10 +176,13 @@ private Q_SLOTS:
         Run run = cli({ u"--json"_s, u"job"_s, u"prepare"_s, path, u"--table"_s, kExample, u"--break-test"_s,
             u"--tolerance"_s, u"0.05"_s, u"-o"_s, out, u"--no-history"_s });
         QCOMPARE(run.exitCode, 0);
-        QCOMPARE(json(run).value(u"inserted"_s).toInt(), 3);
+        // T2 is stopped and tested; T1, the reference tool (TLO 0), is not: the firmware does not test it.
+        QCOMPARE(json(run).value(u"inserted"_s).toInt(), 2);
         QCOMPARE(json(run).value(u"cutting_moves_checked"_s).toInt(), 3);
+        QVERIFY(
+            json(run).value(u"notes"_s).toArray().at(0).toString().contains(u"T1 is the reference tool"_s));
         const QByteArray prepared = readFile(out);
-        QCOMPARE(prepared.count("M491.1 H0.05"), 2);
+        QCOMPARE(prepared.count("M491.1 H0.05"), 1);
         QVERIFY(prepared.contains("M5 (Toffee: the spindle stops for T2's break test)\n"));
         run = cli({ u"job"_s, u"check"_s, out, u"--table"_s, kExample, u"--stale-days"_s, u"3650"_s,
             u"--no-history"_s });

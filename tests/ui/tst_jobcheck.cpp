@@ -12,6 +12,7 @@
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -176,6 +177,8 @@ private Q_SLOTS:
         QTimer::singleShot(0, this, [&saw, output] {
             auto *prep = qobject_cast<JobPrepareDialog *>(QApplication::activeModalWidget());
             QVERIFY(prep);
+            // Closed however the checks below end, so that a failure fails the test instead of hanging it.
+            const auto close = qScopeGuard([prep] { prep->close(); });
             QVERIFY(QTest::qWaitFor([prep] { return !prep->isRunning() && prep->summary(); }, 30000));
             auto *preview = prep->findChild<QTableWidget *>(u"preparePreview"_s);
             QStringList inserted;
@@ -186,7 +189,7 @@ private Q_SLOTS:
             QVERIFY2(inserted.size() == 3, qPrintable(inserted.join(u'\n')));
             QVERIFY(inserted.at(0).startsWith(u"M5 (Toffee: the spindle stops for T2's break test)"_s));
             QVERIFY(inserted.at(1).startsWith(
-                u"M491.1 H0.1 (Toffee: break test of T2 after its last cut at line 7"_s));
+                u"M491.1 H0.1 (Toffee: break test of T2 after its last cut at original line 7"_s));
             // Unticking the break test leaves nothing to do: T2 is a rack tool, measured at its change.
             prep->findChild<QCheckBox *>(u"prepareBreakTestCheck"_s)->setChecked(false);
             QVERIFY(QTest::qWaitFor([prep] { return !prep->isRunning() && prep->summary(); }, 30000));
@@ -197,7 +200,6 @@ private Q_SLOTS:
             prep->saveTo(output);
             QVERIFY(QTest::qWaitFor([prep] { return !prep->savedTo().isEmpty(); }, 30000));
             saw = true;
-            prep->close();
         });
         QTest::mouseClick(prepare, Qt::LeftButton);
         QVERIFY(saw);

@@ -156,7 +156,7 @@ private Q_SLOTS:
         const QList<QByteArray> lines = prepared.split('\n');
         QVERIFY(lines.contains("M6 T2")); // the rack: the machine measures it at the change
         const qsizetype t7 = lines.indexOf(
-            "M6 T7 H-5.25 (Toffee: was \"M6 T7\": T7 takes its stored TLO instead of a probe)");
+            "M6 T7 H-5.25 (Toffee: was \"M6 T7\": T7 takes its stored TLO instead of a probe) (the chamfer)");
         QVERIFY2(t7 > 0, prepared.constData());
         QCOMPARE(lines.at(t7 + 1), "M493.2 T7 (Toffee: T7 is the tool in the spindle)");
         QVERIFY2(lines.at(t7 + 2).startsWith(
@@ -168,7 +168,7 @@ private Q_SLOTS:
         QCOMPARE(summary.changed, 1);
         QCOMPARE(summary.cuttingMoves, 5);
         QVERIFY(summary.notes.join(u'\n').contains(u"T2 is in the rack"_s));
-        QVERIFY(summary.notes.join(u'\n').contains(u"T8's stored TLO is older than 7 days"_s));
+        QVERIFY(summary.notes.join(u'\n').contains(u"T8's stored TLO is older than the stale limit (7 d)"_s));
         verifyEveryNewLineSaysWhy(kCarveraJob, prepared);
         verifyCutsWithEachToolsOffset(kCarveraJob, prepared, Dialect::Carvera);
         // The preview: the change with its context, the original on the left.
@@ -195,24 +195,63 @@ private Q_SLOTS:
         const qsizetype t7 = lines.indexOf("M6 T7 (the chamfer)");
         QCOMPARE(lines.at(t7 - 2), "M5 (Toffee: the spindle stops for T2's break test)");
         QCOMPARE(lines.at(t7 - 1),
-            "M491.1 H0.05 (Toffee: break test of T2 after its last cut at line 6, "
+            "M491.1 H0.05 (Toffee: break test of T2 after its last cut at original line 6, "
             "tolerance 0.05 mm)");
         // T7: the program stopped the spindle itself.
         const qsizetype t8 = lines.indexOf("M6 T8");
         QCOMPARE(lines.at(t8 - 1),
-            "M491.1 H0.05 (Toffee: break test of T7 after its last cut at line 10, "
+            "M491.1 H0.05 (Toffee: break test of T7 after its last cut at original line 10, "
             "tolerance 0.05 mm)");
         QCOMPARE(lines.at(t8 - 2), "M5");
         // T8: before the end.
         const qsizetype end = lines.indexOf("M30");
         QVERIFY(lines.at(end - 1).startsWith(
-            "M491.1 H0.05 (Toffee: break test of T8 after its last cut at line 14"));
+            "M491.1 H0.05 (Toffee: break test of T8 after its last cut at original line 14"));
         QCOMPARE(summary.inserted, 4);
         verifyEveryNewLineSaysWhy(kCarveraJob, prepared);
         verifyCutsWithEachToolsOffset(kCarveraJob, prepared, Dialect::Carvera);
         // A program with no end: the last test is appended.
         const QByteArray open = prepare("M6 T2\nG1 Z-1 F100\n", o);
         QVERIFY(open.endsWith("tolerance 0.05 mm)\n"));
+    }
+
+    void storedTlosOfTwoReferencesAreRefusedAndTheReferenceToolIsNotBreakTested()
+    {
+        // T7 and T8 (made fresh) measured against two references: at most one can be the machine's.
+        ToolTable mixed = table();
+        Tool t8 = *mixed.find(8);
+        t8.measuredAt = kNow.addDays(-1);
+        t8.referenceMz = -80.0;
+        QVERIFY(mixed.replace(8, t8).ok());
+        QTemporaryDir dir;
+        const QString in = dir.filePath(u"job.nc"_s);
+        QFile file(in);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(kCarveraJob);
+        file.close();
+        PrepareOptions o;
+        o.useStoredTlo = true;
+        o.rack = { 1, 2, 3, 4, 5, 6 };
+        o.now = kNow;
+        const auto refused = prepareJobFile(in, mixed, o, dir.filePath(u"out.nc"_s));
+        QVERIFY(!refused);
+        QVERIFY2(refused.error().message.contains(u"reference MCS Z -80 and T7's against -72.3"_s),
+            qPrintable(refused.error().message));
+        QVERIFY(!QFile::exists(dir.filePath(u"out.nc"_s)));
+        // Told the machine's reference (the window, connected), the other one is measured at its change.
+        o.machineReferenceMz = -72.3;
+        const auto prepared = prepareJobFile(in, mixed, o, dir.filePath(u"out.nc"_s));
+        QVERIFY(prepared);
+        QCOMPARE(prepared.value().inserted, 2);
+        QVERIFY(prepared.value().notes.join(u'\n').contains(u"T8's stored TLO was measured against reference MCS "
+                                                             "Z -80, but the machine's is -72.3"_s));
+        // T1 is the reference tool: the community firmware does not break-test a TLO of 0.
+        PrepareOptions test;
+        test.breakTest = true;
+        PrepareSummary summary;
+        const QByteArray withT1 = prepare("M6 T1\nG1 Z-1 F100\nM6 T2\nG1 Z-1\nM30\n", test, &summary);
+        QCOMPARE(withT1.count("M491.1"), 1);
+        QVERIFY(summary.notes.join(u'\n').contains(u"T1 is the reference tool"_s));
     }
 
     void theCarveraTakesBothAtOnce()
@@ -296,7 +335,7 @@ private Q_SLOTS:
         small.breakTest = true;
         small.tolerance = 0.01;
         QVERIFY(prepare("M6 T2\n", small, nullptr, &error).isEmpty());
-        QVERIFY2(error.contains(u"at least 0.02"_s), qPrintable(error));
+        QVERIFY2(error.contains(u"from 0.02 mm"_s), qPrintable(error));
         PrepareOptions nothing;
         QVERIFY(prepare("M6 T2\n", nothing, nullptr, &error).isEmpty());
         QVERIFY2(error.contains(u"--use-stored-tlo"_s), qPrintable(error));
