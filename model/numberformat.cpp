@@ -154,6 +154,15 @@ QString formatNumber(double value, NumberFormat format)
     return locale.toString(text.startsWith('-') ? value : std::fabs(value), 'f', decimals);
 }
 
+QString quotedNumber(double value)
+{
+    constexpr qsizetype kMaxDigits = 20;
+    const QString plain = formatNumber(value);
+    if (plain.size() <= kMaxDigits || !std::isfinite(value))
+        return plain;
+    return QString::number(value, 'g', QLocale::FloatingPointShortest);
+}
+
 QString displayNumber(double value, Units units)
 {
     return formatNumber(value, NumberFormat::display(units));

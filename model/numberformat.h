@@ -39,6 +39,9 @@ struct NumberFormat
 void appendNumber(QByteArray &out, double value, NumberFormat format = {});
 [[nodiscard]] QByteArray numberBytes(double value, NumberFormat format = {});
 [[nodiscard]] QString formatNumber(double value, NumberFormat format = {});
+// How a message quotes a number it refuses: formatNumber's digits when they are few, else the shortest form
+// with an exponent ("1e+308"), never the 309 digits of a huge double.
+[[nodiscard]] QString quotedNumber(double value);
 
 // Shorthands for the formats the window uses most.
 [[nodiscard]] QString displayNumber(double value, Units units);

@@ -65,7 +65,7 @@ Result<void> validateLength(const QString &what, double value, double limit, Uni
                            .arg(what, shown(-limit, units), shown(limit, units), unitsSymbol(units)) };
     if (std::fabs(value) > limit)
         return Error { tr("%1 %2 %3 is out of range; a controller takes %4 to %5 %3.")
-                           .arg(what, formatNumber(value), unitsSymbol(units), shown(-limit, units),
+                           .arg(what, quotedNumber(value), unitsSymbol(units), shown(-limit, units),
                                shown(limit, units)) };
     return {};
 }

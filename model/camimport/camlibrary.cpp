@@ -35,7 +35,7 @@ Result<void> checkLength(const QString &what, const std::optional<double> &value
 {
     if (value && *value < 0)
         return Error {
-            tr("%1 is %2 %3; it cannot be negative.").arg(what, formatNumber(*value), unitsSymbol(units))
+            tr("%1 is %2 %3; it cannot be negative.").arg(what, quotedNumber(*value), unitsSymbol(units))
         };
     if (value)
         return validateLength(what, *value, kMaxMachineMillimetres, units);
@@ -53,16 +53,6 @@ Result<void> checkValues(const CamTool &tool)
     if (auto r = checkLength(tr("the length below the holder"), tool.stickOut, tool.units); !r)
         return r;
     return checkLength(tr("the overall length"), tool.overallLength, tool.units);
-}
-
-// "flat end mill, 6 mm": for a library tool without a description of its own.
-QString fallbackDescription(const CamTool &tool)
-{
-    const QString type = tool.type.simplified();
-    if (!tool.diameter)
-        return type;
-    const QString size = formatNumber(*tool.diameter) + u' ' + unitsSymbol(tool.units);
-    return type.isEmpty() ? size : type + u", "_s + size;
 }
 
 // A program may be gigabytes: only its beginning, where the header is, is read.
@@ -115,8 +105,6 @@ Result<QList<CamTool>> checkCamTools(QList<CamTool> tools)
                     .arg(first.place.isEmpty() ? tr("line %1").arg(first.line) : first.place));
         }
         tool.description = tool.description.simplified();
-        if (tool.description.isEmpty())
-            tool.description = fallbackDescription(tool);
     }
     return tools;
 }

@@ -15,13 +15,16 @@ namespace Toffee {
 struct CamTool
 {
     int number = 0; // the T number the post-processor writes
-    QString description; // one line; the library's type and diameter when it gives no description
+    QString description; // one line; empty when the library gives none (the import then names a new tool)
     QString type; // "flat end mill", "drill", …
     Units units = Units::Millimetre;
     std::optional<double> diameter; // absent: the library says nothing about the radius
     std::optional<double> fluteLength;
     std::optional<double> stickOut; // below the holder (Fusion LB, Makera sticklength)
     std::optional<double> overallLength;
+    // The post's H (Fusion "length-offset", HSM nc/@length-offset): never imported, since Toffee's rule is
+    // H = T; the preview says so when it differs.
+    std::optional<int> lengthOffset;
     // Where the tool is in its file, for messages: "tool 3 in data" or "line 12"; and its line when known.
     QString place;
     int line = 0;

@@ -8,6 +8,7 @@
 
 #include "model/camimport/camreaders.h"
 #include "model/numberformat.h"
+#include "model/textparsing.h"
 #include "model/translate.h"
 
 using namespace Qt::StringLiterals;
@@ -41,6 +42,40 @@ Error tooLarge(const QString &entry)
         0, entry };
 }
 
+// What libzip's error means for a .tools file: its own words describe libzip's state, not the file ("File
+// already exists" for two entries of one name, "Zip archive inconsistent" for a damaged directory).
+QString problem(zip_error_t *error)
+{
+    switch (zip_error_code_zip(error)) {
+    case ZIP_ER_NOZIP:
+        return tr("it is not a zip archive, or one cut short (there is no zip directory at its end)");
+    case ZIP_ER_EXISTS:
+        return tr("two of its entries have the same name, so it cannot be told which one is meant");
+    case ZIP_ER_INCONS:
+        return tr("the archive is damaged (its directory and its entries disagree)");
+    case ZIP_ER_MULTIDISK:
+        return tr("it is one part of an archive split over several files");
+    case ZIP_ER_CRC:
+        return tr("the archive is damaged (what it unpacks to fails its checksum)");
+    case ZIP_ER_COMPNOTSUPP:
+        return tr("it is compressed in a way Toffee cannot unpack (Fusion's own archives use deflate)");
+    case ZIP_ER_ENCRNOTSUPP:
+    case ZIP_ER_NOPASSWD:
+    case ZIP_ER_WRONGPASSWD:
+        return tr("it is encrypted; Toffee reads archives without a password");
+    case ZIP_ER_ZLIB:
+    case ZIP_ER_COMPRESSED_DATA:
+        return tr("its compressed data is damaged");
+    case ZIP_ER_EOF:
+    case ZIP_ER_READ:
+        return tr("the archive is truncated (it ends early)");
+    case ZIP_ER_MEMORY:
+        return tr("there is not enough memory to unpack it");
+    default:
+        return tr("libzip says: %1").arg(QString::fromLocal8Bit(zip_error_strerror(error)));
+    }
+}
+
 Result<Archive> open(QByteArrayView zip)
 {
     zip_error_t error;
@@ -49,13 +84,11 @@ Result<Archive> open(QByteArrayView zip)
     zip_source_t *source = zip_source_buffer_create(zip.data(), zip_uint64_t(zip.size()), 0, &error);
     zip_t *archive = source ? zip_open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error) : nullptr;
     if (!archive) {
-        const QString reason = QString::fromLocal8Bit(zip_error_strerror(&error));
+        const QString reason = problem(&error);
         zip_error_fini(&error);
         if (source)
             zip_source_free(source);
-        return Error {
-            tr("this is not a .tools archive: a zip archive could not be read from it (%1).").arg(reason)
-        };
+        return Error { tr("this is not a .tools archive Toffee can read: %1.").arg(reason) };
     }
     zip_error_fini(&error);
     return Archive(archive);
@@ -71,16 +104,14 @@ Result<QByteArray> unpack(zip_t *archive, zip_int64_t index, const QString &name
         return tooLarge(name);
     Entry file(zip_fopen_index(archive, zip_uint64_t(index), 0));
     if (!file)
-        return Error { tr("it cannot be unpacked: %1.").arg(QString::fromLocal8Bit(zip_strerror(archive))), 0,
-            name };
+        return Error { tr("it cannot be unpacked: %1.").arg(problem(zip_get_error(archive))), 0, name };
     QByteArray data;
     char buffer[64 * 1024];
     while (true) {
         const zip_int64_t n = zip_fread(file.get(), buffer, sizeof buffer);
         if (n < 0)
-            return Error { tr("it cannot be unpacked: %1; the archive is damaged or truncated.")
-                               .arg(QString::fromLocal8Bit(zip_file_strerror(file.get()))),
-                0, name };
+            return Error { tr("it cannot be unpacked: %1.").arg(problem(zip_file_get_error(file.get()))), 0,
+                name };
         if (n == 0)
             break;
         if (data.size() + n > kMaxCamLibraryBytes)
@@ -88,6 +119,29 @@ Result<QByteArray> unpack(zip_t *archive, zip_int64_t index, const QString &name
         data.append(buffer, qsizetype(n));
     }
     return data;
+}
+
+// The entry that is tools.json in any case and folder, or -1. Two of them are refused: which one Fusion would
+// read cannot be told, and taking either silently could import the wrong library.
+Result<zip_int64_t> entryIndex(zip_t *archive)
+{
+    zip_int64_t found = -1;
+    const zip_int64_t count = zip_get_num_entries(archive, 0);
+    for (zip_int64_t i = 0; i < count; ++i) {
+        const char *raw = zip_get_name(archive, zip_uint64_t(i), ZIP_FL_ENC_GUESS);
+        const QString name = raw ? QString::fromUtf8(raw) : QString();
+        if (name.section(u'/', -1).compare(QLatin1StringView(kEntry), Qt::CaseInsensitive) != 0)
+            continue;
+        if (found >= 0)
+            return Error { tr("the archive holds %1 twice (%2 and %3); Toffee will not guess which one is "
+                              "the library.")
+                               .arg(QLatin1StringView(kEntry),
+                                   excerpt(QString::fromUtf8(
+                                       zip_get_name(archive, zip_uint64_t(found), ZIP_FL_ENC_GUESS))),
+                                   excerpt(name)) };
+        found = i;
+    }
+    return found;
 }
 
 } // namespace
@@ -100,15 +154,18 @@ Result<QList<CamTool>> readFusionArchive(QByteArrayView zip)
     auto archive = open(zip);
     if (!archive)
         return archive.error();
-    const zip_int64_t index = zip_name_locate(archive.value().get(), kEntry, ZIP_FL_NOCASE | ZIP_FL_NODIR);
-    if (index < 0)
+    const auto index = entryIndex(archive.value().get());
+    if (!index)
+        return index.error();
+    if (index.value() < 0)
         return Error { tr(
             "the archive holds no %1; a Fusion .tools file is a zip archive with the library in "
             "%1.")
                            .arg(QLatin1StringView(kEntry)) };
-    const char *entryName = zip_get_name(archive.value().get(), zip_uint64_t(index), ZIP_FL_ENC_GUESS);
+    const char *entryName
+        = zip_get_name(archive.value().get(), zip_uint64_t(index.value()), ZIP_FL_ENC_GUESS);
     const QString name = entryName ? QString::fromUtf8(entryName) : QString::fromLatin1(kEntry);
-    auto json = unpack(archive.value().get(), index, name);
+    auto json = unpack(archive.value().get(), index.value(), name);
     if (!json)
         return json.error();
     auto tools = readFusionJson(json.value());

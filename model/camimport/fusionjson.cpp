@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Autodesk Fusion / HSM's JSON tool library (docs: /work/shared/FORMATS.md). Only the cutter's number,
-// description, type, unit, diameter and lengths are read; assemblyGaugeLength, the holder and the feeds are
-// not offsets and are left alone.
+// description, type, unit, diameter and lengths are read, and the post's length offset for a note;
+// assemblyGaugeLength, the holder and the feeds are not offsets and are left alone.
 #include <algorithm>
 #include <cmath>
 
@@ -12,6 +12,7 @@
 
 #include "model/camimport/camreaders.h"
 #include "model/limits.h"
+#include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "model/translate.h"
 
@@ -33,6 +34,7 @@ constexpr auto BodyLength = "LB"_L1;
 constexpr auto OverallLength = "OAL"_L1;
 constexpr auto PostProcess = "post-process"_L1;
 constexpr auto Number = "number"_L1;
+constexpr auto LengthOffset = "length-offset"_L1;
 constexpr auto Comment = "comment"_L1;
 } // namespace Key
 
@@ -45,7 +47,7 @@ QString shown(const QJsonValue &value)
     case QJsonValue::Bool:
         return value.toBool() ? u"true"_s : u"false"_s;
     case QJsonValue::Double:
-        return QString::number(value.toDouble(), 'g', 17);
+        return quotedNumber(value.toDouble());
     case QJsonValue::Array:
         return tr("a list");
     case QJsonValue::Object:
@@ -81,6 +83,7 @@ public:
         m_tool.stickOut = length(geometry, Key::BodyLength);
         m_tool.overallLength = length(geometry, Key::OverallLength);
         readNumber(post);
+        readLengthOffset(post);
         readUnit();
         if (!m_why.isEmpty())
             return Error { m_tool.place + u": "_s + m_why };
@@ -142,6 +145,20 @@ private:
                        .arg(shown(v))
                        .arg(Limits::kMinToolNumber)
                        .arg(Limits::kMaxToolNumber));
+    }
+
+    // Only for the preview's note: Toffee's H is always T.
+    void readLengthOffset(const QJsonObject &post)
+    {
+        const QJsonValue v = post.value(Key::LengthOffset);
+        if (v.isUndefined() || v.isNull())
+            return;
+        const double n = v.toDouble(std::nan(""));
+        if (!v.isDouble() || n != std::floor(n) || std::fabs(n) > 1e9) {
+            failed(tr("its \"length-offset\" is %1, not a whole number.").arg(shown(v)));
+            return;
+        }
+        m_tool.lengthOffset = int(n);
     }
 
     void readUnit()

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // HSMWorks / Fusion .hsmlib tool libraries (FORMATS.md): XML, usually UTF-16 with a byte-order mark, which
 // QXmlStreamReader decodes from the BOM or the declaration. Only tool/@unit, @type, description, nc/@number
-// and body/@diameter, @flute-length, @overall-length are read; motion, coolant and the holder are not
-// offsets.
+// and @length-offset (for a note), body/@diameter, @flute-length, @overall-length are read; motion, coolant
+// and the holder are not offsets.
 #include <QCoreApplication>
+#include <QHash>
 #include <QXmlStreamReader>
 
 #include "model/camimport/camreaders.h"
@@ -86,15 +87,28 @@ private:
         else
             return refuse(
                 tool, tr("its unit is \"%1\"; Toffee reads millimeters or inches.").arg(excerpt(unit)));
+        // The line of each element read once: a second one would silently replace the first.
+        QHash<QString, qint64> seen;
         while (m_xml.readNextStartElement()) {
-            if (m_xml.name() == u"description"_s) {
+            const QString name = m_xml.name().toString();
+            const bool read = name == u"description"_s || name == u"nc"_s || name == u"body"_s;
+            if (read) {
+                if (const auto first = seen.constFind(name); first != seen.cend())
+                    return refuse(tool,
+                        tr("it has a second <%1> (the first is on line %2); a tool has one, and Toffee will "
+                           "not guess which one is meant.")
+                            .arg(name)
+                            .arg(*first));
+                seen.insert(name, m_xml.lineNumber());
+            }
+            if (name == u"description"_s) {
                 tool.description = m_xml.readElementText(QXmlStreamReader::IncludeChildElements);
                 continue;
             }
             bool ok = true;
-            if (m_xml.name() == u"nc"_s)
-                ok = readNumber(tool);
-            else if (m_xml.name() == u"body"_s)
+            if (name == u"nc"_s)
+                ok = readNumber(tool) && readLengthOffset(tool);
+            else if (name == u"body"_s)
                 ok = length(u"diameter"_s, tool.diameter) && length(u"flute-length"_s, tool.fluteLength)
                     && length(u"overall-length"_s, tool.overallLength);
             if (!ok)
@@ -124,6 +138,22 @@ private:
         }
         tool.number = int(*number);
         m_hasNumber = true;
+        return true;
+    }
+
+    // Only for the preview's note: Toffee's H is always T.
+    bool readLengthOffset(CamTool &tool)
+    {
+        const QXmlStreamAttributes attributes = m_xml.attributes();
+        if (!attributes.hasAttribute(u"length-offset"_s))
+            return true;
+        const QString text = attributes.value(u"length-offset"_s).toString();
+        const auto offset = parseInteger(text.trimmed().toUtf8());
+        if (!offset || *offset < -1'000'000'000 || *offset > 1'000'000'000) {
+            m_why = tr("its nc length-offset is \"%1\", not a whole number.").arg(excerpt(text));
+            return false;
+        }
+        tool.lengthOffset = int(*offset);
         return true;
     }
 

@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include <QHash>
 #include <QSet>
 
+#include "model/limits.h"
 #include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
@@ -87,7 +90,8 @@ QStringList changes(const Tool &before, const Tool &after, Units units)
     QStringList fields;
     if (before.description != after.description)
         fields << ImportPreview::tr("description “%1” → “%2”")
-                      .arg(excerpt(before.description), excerpt(after.description));
+                      .arg(excerpt(before.description, Limits::kMaxDescriptionLength),
+                          excerpt(after.description, Limits::kMaxDescriptionLength));
     if (before.radiusGeometry != after.radiusGeometry)
         fields << ImportPreview::tr("radius %1 → %2 %3")
                       .arg(displayNumber(before.radiusGeometry, units),
@@ -101,17 +105,72 @@ QStringList changes(const Tool &before, const Tool &after, Units units)
     return fields;
 }
 
-// The table's tool with the CAM's fields put in, or a new tool with its default pocket.
-Tool mergedTool(const CamTool &cam, const Tool *existing, Units units)
+// "flat end mill, 6 mm": a new tool's description when the library gives none.
+QString fallbackDescription(const CamTool &tool)
+{
+    const QString type = tool.type.simplified();
+    if (!tool.diameter)
+        return type;
+    const QString size = formatNumber(*tool.diameter) + u' ' + unitsSymbol(tool.units);
+    return type.isEmpty() ? size : type + u", "_s + size;
+}
+
+// The pocket of each of the library's new tools: the one the table gives its number (defaultPocket) when no
+// other tool has it, else the lowest one from 1 up that none has. A tool numbered as a pocket is served
+// first, so that T0 (the probe) does not take T2's pocket. Only when every pocket is taken do two share one.
+QHash<int, int> newPockets(const ToolTable &current, const QList<CamTool> &library)
+{
+    std::vector<bool> used(std::size_t(Limits::kMaxPocket) + 1, false);
+    auto claim = [&used](int pocket) {
+        if (pocket >= 0 && pocket <= Limits::kMaxPocket)
+            used[std::size_t(pocket)] = true;
+    };
+    for (const Tool &tool : current.tools())
+        claim(tool.pocket);
+    QHash<int, int> pockets;
+    QList<int> waiting;
+    QSet<int> seen;
+    for (const CamTool &cam : library) {
+        if (current.contains(cam.number) || seen.contains(cam.number))
+            continue;
+        seen.insert(cam.number);
+        const int own = defaultPocket(cam.number);
+        if (own == cam.number && !used[std::size_t(own)]) {
+            pockets.insert(cam.number, own);
+            claim(own);
+        } else {
+            waiting.append(cam.number);
+        }
+    }
+    int lowest = 1;
+    for (const int number : std::as_const(waiting)) {
+        int pocket = defaultPocket(number);
+        if (used[std::size_t(pocket)]) {
+            while (lowest <= Limits::kMaxPocket && used[std::size_t(lowest)])
+                ++lowest;
+            if (lowest <= Limits::kMaxPocket)
+                pocket = lowest;
+        }
+        pockets.insert(number, pocket);
+        claim(pocket);
+    }
+    return pockets;
+}
+
+// The table's tool with the CAM's fields put in, or a new tool in `pocket`. A library without a description
+// never replaces the operator's.
+Tool mergedTool(const CamTool &cam, const Tool *existing, Units units, int pocket)
 {
     Tool tool;
     if (existing) {
         tool = *existing;
     } else {
         tool.number = cam.number;
-        tool.pocket = defaultPocket(cam.number);
+        tool.pocket = pocket;
+        tool.description = fallbackDescription(cam);
     }
-    tool.description = cam.description;
+    if (!cam.description.isEmpty())
+        tool.description = cam.description;
     if (cam.diameter)
         tool.radiusGeometry = converted(*cam.diameter / 2.0, cam.units, units);
     tool.notes = notesWith(tool.notes, camLine(cam, units));
@@ -128,6 +187,7 @@ Result<ImportPreview> ImportPreview::build(const ToolTable &current, const CamLi
     // thousand tools merges in well under a second.
     QList<Tool> tools = current.tools();
     QSet<int> seen;
+    const QHash<int, int> pockets = newPockets(current, library.tools);
     preview.m_tools.reserve(library.tools.size());
     for (const CamTool &cam : library.tools) {
         auto refuse = [&cam, &library](const QString &message) {
@@ -139,10 +199,18 @@ Result<ImportPreview> ImportPreview::build(const ToolTable &current, const CamLi
         seen.insert(cam.number);
         const qsizetype at = current.indexOf(cam.number);
         const Tool *existing = at >= 0 ? &current.at(at) : nullptr;
-        const Tool tool = mergedTool(cam, existing, units);
+        const Tool tool = mergedTool(cam, existing, units, pockets.value(cam.number));
         if (auto r = validateTool(tool, units); !r)
             return refuse(r.error().message);
-        ImportedTool item { cam.number, tool.description, ImportChange::New, {} };
+        ImportedTool item { cam.number, tool.description, ImportChange::New, {}, {} };
+        if (!existing)
+            item.notes << tr("pocket %1; no tool length yet (0 in the table): measure it before use")
+                              .arg(tool.pocket);
+        if (cam.lengthOffset && *cam.lengthOffset != cam.number)
+            item.notes << tr("the library gives length offset H%1; Toffee always uses H = T (H%2), so it is "
+                             "not imported")
+                              .arg(*cam.lengthOffset)
+                              .arg(cam.number);
         if (existing) {
             item.fields = changes(*existing, tool, units);
             item.change = *existing == tool ? ImportChange::Unchanged : ImportChange::Changed;

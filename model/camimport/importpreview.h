@@ -19,12 +19,17 @@ struct ImportedTool
     QString description; // as the table will have it
     ImportChange change = ImportChange::New;
     QStringList fields; // for a changed tool: each change in words, "radius 3.000 → 3.175 mm"
+    // What the operator should know besides: a new tool's pocket and that it has no length yet, a length
+    // offset (H) in the library that Toffee does not take.
+    QStringList notes;
 };
 
 // A CAM library merged into a table, before anything is applied: what happens to each of the library's tools,
 // and the table it makes. Only what the CAM owns changes: the description, the radius geometry (half the
 // diameter) and the CAM's own line in the notes. The measured TLO, its time, source and reference, the
-// break-test mark, the wear, the pocket, the length geometry and the operator's notes stay as they are.
+// break-test mark, the wear, the pocket, the length geometry and the operator's notes stay as they are, and a
+// library tool without a description keeps the table's. A new tool gets the pocket the table gives a tool of
+// its number, or the lowest pocket no other tool has when that one is taken; it has no length until measured.
 class ImportPreview
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::ImportPreview)

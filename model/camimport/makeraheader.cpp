@@ -2,6 +2,11 @@
 // Makera CAM writes one comment line per tool before the program body (FORMATS.md):
 //   ;@MKR|TOOL|number=3|name=…|type=…|diameter=…|flutelength=…|sticklength=…|…
 // in millimetres. Only the header is read: the first line that is neither blank nor a comment ends it.
+#include <algorithm>
+#include <array>
+
+#include <QHash>
+
 #include "model/camimport/camreaders.h"
 #include "model/textparsing.h"
 #include "model/translate.h"
@@ -13,6 +18,9 @@ namespace Toffee {
 namespace {
 
 constexpr QByteArrayView kToolLine = ";@MKR|TOOL|";
+// The fields readField takes; any other is skipped.
+constexpr std::array<QByteArrayView, 6> kReadFields
+    = { "number", "name", "type", "diameter", "flutelength", "sticklength" };
 
 bool isHeaderLine(QByteArrayView line)
 {
@@ -59,11 +67,23 @@ Result<CamTool> readToolLine(QByteArrayView line, int lineNumber)
     tool.line = lineNumber;
     tool.units = Units::Millimetre;
     bool hasNumber = false;
+    // Each field Toffee reads, as first given: a second one would silently win.
+    QHash<QByteArrayView, QByteArrayView> seen;
     for (QByteArrayView field : splitView(line.sliced(kToolLine.size()), '|')) {
         const qsizetype equals = field.indexOf('=');
         if (equals <= 0)
             continue; // not key=value: nothing Toffee reads
-        if (auto r = readField(tool, field.first(equals).trimmed(), field.sliced(equals + 1), hasNumber); !r)
+        const QByteArrayView key = field.first(equals).trimmed();
+        const QByteArrayView value = field.sliced(equals + 1);
+        if (std::find(kReadFields.cbegin(), kReadFields.cend(), key) != kReadFields.cend()) {
+            if (const auto first = seen.constFind(key); first != seen.cend())
+                return Error { tr("%1 is in this tool line twice (%1=%2 and %1=%3); Toffee will not guess "
+                                  "which one is meant.")
+                                   .arg(QString::fromLatin1(key), excerpt(*first), excerpt(value)),
+                    lineNumber };
+            seen.insert(key, value);
+        }
+        if (auto r = readField(tool, key, value, hasNumber); !r)
             return Error { r.error().message, lineNumber };
     }
     if (!hasNumber)
@@ -80,6 +100,12 @@ Result<QList<CamTool>> readMakeraHeader(QByteArrayView program, bool complete)
     int lineNumber = 0;
     while (start < program.size()) {
         qsizetype end = program.indexOf('\n', start);
+        // A G-code program is text: a NUL byte means some other file (or a disk image's zeros), and its
+        // "lines" are neither comments nor a header.
+        if (program.sliced(start, (end < 0 ? program.size() : end) - start).contains('\0'))
+            return Error { tr("this is not a text program: it holds binary data (a NUL byte), which a G-code "
+                              "program never does."),
+                lineNumber + 1 };
         if (end < 0) {
             if (!complete)
                 return Error { tr("the program's first %1 MB are all comments; Toffee reads the tool header "

@@ -38,6 +38,23 @@ bool LineReader::fill()
     return n.value() > 0;
 }
 
+// A text line: a UTF-8 byte-order mark before the first is dropped; a NUL byte is no text's.
+bool LineReader::checked(QByteArrayView &line)
+{
+    if (m_line == 1 && line.startsWith("\xEF\xBB\xBF"))
+        line = line.sliced(3);
+    if (std::memchr(line.data(), '\0', size_t(line.size()))) {
+        m_error = Error {
+            tr("line %1 holds a NUL byte: this is not a text program (UTF-16, or not text at all?). "
+               "Save it as plain text (UTF-8 or ASCII).")
+                .arg(m_line),
+            m_line, m_path
+        };
+        return false;
+    }
+    return true;
+}
+
 bool LineReader::next(QByteArrayView &line)
 {
     if (m_file.fd < 0 || m_error)
@@ -55,7 +72,7 @@ bool LineReader::next(QByteArrayView &line)
                 break;
             ++m_line;
             line = QByteArrayView(begin, length);
-            return true;
+            return checked(line);
         }
         if (qsizetype(available) > kMaxLineBytes)
             break;
@@ -70,7 +87,7 @@ bool LineReader::next(QByteArrayView &line)
             ++m_line;
             if (line.endsWith('\r'))
                 line.chop(1);
-            return true;
+            return checked(line);
         }
     }
     m_error = Error {

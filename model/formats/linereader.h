@@ -40,6 +40,7 @@ public:
 
 private:
     [[nodiscard]] bool fill();
+    [[nodiscard]] bool checked(QByteArrayView &line);
 
     static constexpr qsizetype kBufferBytes = 1024 * 1024;
     QString m_path;

@@ -76,8 +76,7 @@ void GCodeInterpreter::cycleMove(const Position &target, bool feed, int line)
     if (feed) {
         ToolUsage &usage = m_usage[activeTool()];
         usage.feedPathMm += length;
-        if (m_feed > 0.0)
-            usage.cuttingSeconds += length / m_feed * 60.0;
+        usage.cuttingSeconds += feedSeconds(length);
     } else {
         m_rapid += length;
     }

@@ -40,10 +40,12 @@ GCodeInterpreter::GCodeInterpreter(Dialect dialect, OffsetTable offsets, int sam
     }
 }
 
-// G-codes that change nothing the simulation follows: a dwell, feed per minute, path control.
+// G-codes that change nothing the simulation follows: a dwell, exact stop, path control, spindle speed in
+// revolutions (the default), cancelling polar coordinates and rotation.
 bool GCodeInterpreter::isPassive(double g)
 {
-    return same(g, 4) || same(g, 94) || same(g, 61) || same(g, 64) || same(g, 15) || same(g, 69);
+    return same(g, 4) || same(g, 9) || same(g, 61) || same(g, 61.1) || same(g, 64) || same(g, 97)
+        || same(g, 15) || same(g, 69);
 }
 
 // Drilling and boring: G73 and G83 peck, G81 drills, G82 dwells at the bottom, G85 / G86 / G89 bore.
@@ -113,6 +115,13 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
     m_effect = {};
     m_cycleCalled = false;
     Words w;
+    // Block delete ("/" first): the switch is off, so the block runs, as on a controller at its default. The
+    // Carvera has none.
+    if (m_dialect != Dialect::Carvera) {
+        const QByteArrayView trimmed = text.trimmed();
+        if (trimmed.startsWith('/') && !trimmed.startsWith("//"))
+            text = trimmed.sliced(trimmed.size() > 1 && trimmed.at(1) >= '1' && trimmed.at(1) <= '9' ? 2 : 1);
+    }
     GCodeLexer lexer(text);
     for (;;) {
         switch (lexer.next()) {
@@ -171,9 +180,15 @@ Result<void> GCodeInterpreter::modalGCodes(const Words &w, int line, bool &motio
             startCycle(int(g));
         else if (g >= 54 - 1e-6 && g <= 59 + 1e-6 && same(g, std::round(g)))
             selectWorkOffset(int(std::round(g)) - 54);
+        else if (same(g, 59.1) || same(g, 59.2) || same(g, 59.3))
+            selectWorkOffset(6 + int(std::round((g - 59.0) * 10.0)) - 1);
+        else if (same(g, 90.1) || same(g, 91.1))
+            m_arcCentresAbsolute = same(g, 90.1);
+        else if (same(g, 93) || same(g, 94) || same(g, 95))
+            m_feedMode = int(std::round(g));
         else if (same(g, 20) || same(g, 21) || same(g, 10) || same(g, 43) || same(g, 44) || same(g, 49)
             || same(g, 43.1) || same(g, 43.2) || same(g, 74) || same(g, 143) || same(g, 144) || same(g, 149)
-            || same(g, 53) || same(g, 28) || isPassive(g))
+            || same(g, 53) || same(g, 28) || same(g, 30) || isPassive(g))
             continue; // handled below, or changes nothing the simulation follows
         else
             return error(line, tr("G%1 is not simulated.").arg(formatNumber(g)));
@@ -246,7 +261,8 @@ Result<void> GCodeInterpreter::motionOf(const Words &w, int line, bool motion)
     const bool consumedZ = (m_dialect == Dialect::LinuxCnc && w.hasG(43.1))
         || (m_dialect == Dialect::Carvera && w.hasM(493.3));
     const bool dwell = w.hasG(4);
-    if (w.hasG(28)) {
+    // G30's second reference point is the machine's own setting: Toffee takes it as home, as G28.
+    if (w.hasG(28) || w.hasG(30)) {
         returnHome(w, line);
         return {};
     }

@@ -52,6 +52,7 @@ struct BlockEffect
     bool toolChange = false; // M6 or M61 loaded a tool
     // The Carvera measured its tool on the setter (M6 without H, M491, M491.1): its TLO is the tool's own.
     bool probe = false;
+    bool setsTlo = false; // the Carvera's TLO set by the program itself (M493.3 Z, M6 … H)
     bool unitsWord = false; // G20 or G21
     bool lengthAxisWord = false; // the block commands the length axis (Z under G17), which takes the offset
     double lowestZ = 0.0; // the lowest work Z the move reaches: its end, or lower on an arc
@@ -178,6 +179,7 @@ private:
     [[nodiscard]] Result<MoveGeometry> measureMove(
         const Words &w, const Position &programStart, int line) const;
     void account(double length);
+    [[nodiscard]] double feedSeconds(double length) const;
     void home(const QList<int> &axes, int line);
     // G28: through the point the axis words give to the machine's home on those axes, at rapid.
     void returnHome(const Words &w, int line);
@@ -205,6 +207,9 @@ private:
     BlockEffect m_effect;
     std::optional<Units> m_units;
     bool m_spindleOn = false;
+    double m_spindleSpeed = 0.0; // S
+    int m_feedMode = 94; // G93 inverse time, G94 units a minute, G95 units a revolution
+    bool m_arcCentresAbsolute = false; // G90.1; G91.1 (the default) has them from the arc's start
     qint64 m_lengthCalls = 0;
     int m_lengthRegister = -1; // the register the length value came from
     double m_feed = 0.0; // F, units per minute
@@ -214,7 +219,7 @@ private:
     double m_rapid = 0.0;
     Position m_machine {}; // where the machine is
     Position m_g54 {}; // the work offset in use (G54 to G59)
-    std::array<Position, 6> m_workOffsets {}; // G54 to G59, the one in use kept in m_g54
+    std::array<Position, 9> m_workOffsets {}; // G54 to G59, G59.1 to G59.3; the one in use kept in m_g54
     int m_workOffset = 0;
     int m_cycle = 0; // the canned cycle in force (73, 81 … 89), or 0
     bool m_cycleCalled = false; // this block names the cycle: it drills even without X or Y

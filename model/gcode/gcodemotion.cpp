@@ -53,6 +53,13 @@ Result<void> GCodeInterpreter::modalWords(const Words &w, int line)
         m_units = w.hasG(20) ? Units::Inch : Units::Millimetre;
         m_effect.unitsWord = true;
     }
+    if (w.word('S') && w.get('S') >= 0)
+        m_spindleSpeed = w.get('S');
+    if (w.hasM(98) || w.hasM(99))
+        return error(line,
+            tr("M%1 calls or ends a subprogram, which the check does not follow: what it cuts is "
+               "not checked.")
+                .arg(w.hasM(98) ? 98 : 99));
     if (w.hasM(3) || w.hasM(4))
         m_spindleOn = true;
     if (w.hasM(5) || w.hasM(6) || w.hasM(2) || w.hasM(30))
@@ -117,8 +124,11 @@ Result<GCodeInterpreter::MoveGeometry> GCodeInterpreter::measureMove(
         cx = sx + dx / 2.0 - side * h * dy / chord;
         cy = sy + dy / 2.0 + side * h * dx / chord;
     } else if (w.word(p.firstOffset) || w.word(p.secondOffset)) {
-        cx = sx + (w.word(p.firstOffset) ? w.get(p.firstOffset) : 0.0);
-        cy = sy + (w.word(p.secondOffset) ? w.get(p.secondOffset) : 0.0);
+        // G91.1 (the default): the centre from the start; G90.1: where it is.
+        const double baseX = m_arcCentresAbsolute ? 0.0 : sx;
+        const double baseY = m_arcCentresAbsolute ? 0.0 : sy;
+        cx = baseX + (w.word(p.firstOffset) ? w.get(p.firstOffset) : (m_arcCentresAbsolute ? sx : 0.0));
+        cy = baseY + (w.word(p.secondOffset) ? w.get(p.secondOffset) : (m_arcCentresAbsolute ? sy : 0.0));
     } else {
         return error(line,
             tr("G%1 needs the arc's centre (%2 %3) or its radius (R).")
@@ -173,6 +183,19 @@ void GCodeInterpreter::returnHome(const Words &w, int line)
     recordStraight(line, start);
 }
 
+// A feed move's time: F in units a minute (G94), a minute over F for the whole move (G93, inverse time), or
+// units a revolution at S revolutions a minute (G95). Nothing when F (or S) is not known.
+double GCodeInterpreter::feedSeconds(double length) const
+{
+    if (m_feed <= 0.0)
+        return 0.0;
+    if (m_feedMode == 93)
+        return 60.0 / m_feed;
+    if (m_feedMode == 95)
+        return m_spindleSpeed > 0.0 ? length / (m_feed * m_spindleSpeed) * 60.0 : 0.0;
+    return length / m_feed * 60.0;
+}
+
 void GCodeInterpreter::account(double length)
 {
     m_effect.motion = m_motionMode == 0 ? BlockEffect::Motion::Rapid : BlockEffect::Motion::Feed;
@@ -182,8 +205,7 @@ void GCodeInterpreter::account(double length)
     }
     ToolUsage &usage = m_usage[activeTool()];
     usage.feedPathMm += length;
-    if (m_feed > 0.0)
-        usage.cuttingSeconds += length / m_feed * 60.0;
+    usage.cuttingSeconds += feedSeconds(length);
 }
 
 } // namespace Toffee

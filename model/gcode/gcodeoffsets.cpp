@@ -79,6 +79,7 @@ Result<void> GCodeInterpreter::carveraLength(const Words &w, int line)
         m_lengthValue = w.get('Z');
     if (w.hasM(6) && w.word('H'))
         m_lengthValue = w.get('H');
+    m_effect.setsTlo = (w.hasM(493.3) && w.word('Z')) || (w.hasM(6) && w.word('H'));
     const bool measures = (w.hasM(6) && !w.word('H')) || w.hasM(491) || w.hasM(491.1);
     if (measures) {
         m_effect.probe = true;
@@ -174,9 +175,11 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
 Result<void> GCodeInterpreter::g10WorkOffset(const Words &w, double l, int line)
 {
     const double p = w.word('P') ? w.get('P') : 1.0;
-    if (p != std::floor(p) || p < 0 || p > 6)
+    const int highest = m_dialect == Dialect::LinuxCnc ? 9 : 6; // LinuxCNC adds G59.1 to G59.3
+    if (p != std::floor(p) || p < 0 || p > highest)
         return error(line,
-            tr("G10 L%1 P%2: the work offsets simulated are G54 to G59 (P1 to P6).")
+            tr("G10 L%1 P%2: the work offsets are G54 to G59 (P1 to P6; LinuxCNC's G59.1 to G59.3 are P7 to "
+               "P9).")
                 .arg(formatNumber(l), formatNumber(p)));
     const int index = p == 0 ? m_workOffset : int(p) - 1;
     Position &offset = index == m_workOffset ? m_g54 : m_workOffsets[size_t(index)];

@@ -30,6 +30,10 @@ GCodeLexer::Token GCodeLexer::failUnclosedComment()
 
 GCodeLexer::Token GCodeLexer::failUnexpected(char c)
 {
+    // A byte that is not a printable character is named, not printed: it could be a terminal's control code.
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte >= 0x7f)
+        return fail(tr("unexpected byte 0x%1.").arg(byte, 2, 16, QLatin1Char('0')));
     return fail(tr("unexpected \"%1\".").arg(QChar::fromLatin1(c)));
 }
 

@@ -2,6 +2,7 @@
 #include "model/job/jobchecker.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "model/limits.h"
 #include "model/numberformat.h"
@@ -65,6 +66,8 @@ void JobChecker::feed(QByteArrayView line, int lineNumber)
         unitsChanged(lineNumber);
     if (effect.toolChange)
         toolChanged(lineNumber);
+    if (effect.setsTlo)
+        tloSet(lineNumber);
     if (effect.motion == BlockEffect::Motion::Feed)
         feedMove(lineNumber, effect);
 }
@@ -144,6 +147,21 @@ void JobChecker::checkCompensation(int line)
     }
 }
 
+// The program sets the TLO itself: a break test then compares against it, and every cut follows it.
+void JobChecker::tloSet(int line)
+{
+    const int tool = m_interpreter.loadedTool();
+    const double set = m_interpreter.lengthCompensation().latched;
+    const ToolFacts facts = m_setup.facts.value(tool);
+    if (!facts.measuredTlo || std::fabs(*facts.measuredTlo - set) < 0.0005)
+        return;
+    note(FindingKind::ProgramSetsTlo, tool, line, [tool, set, &facts] {
+        return tr("The program sets T%1's TLO to %2 itself; the table holds %3 for it.")
+            .arg(tool)
+            .arg(mm(set), mm(*facts.measuredTlo));
+    });
+}
+
 void JobChecker::unitsChanged(int line)
 {
     const Units units = *m_interpreter.programUnits();
@@ -154,8 +172,9 @@ void JobChecker::unitsChanged(int line)
         });
     } else if (m_setup.hasTable && units != m_setup.tableUnits) {
         note(FindingKind::UnitsMismatch, -1, line, [this, units] {
-            return tr("The program is in %1 but the tool table is in %2.")
-                .arg(unitsSymbol(units), unitsSymbol(m_setup.tableUnits));
+            return units == Units::Inch
+                ? tr("The program is in inches (G20) but the tool table is in millimetres.")
+                : tr("The program is in millimetres (G21) but the tool table is in inches.");
         });
     }
 }

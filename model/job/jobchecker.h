@@ -68,6 +68,7 @@ private:
     void toolChanged(int line);
     void feedMove(int line, const BlockEffect &effect);
     void unitsChanged(int line);
+    void tloSet(int line);
     void checkCompensation(int line);
     void programError(const Error &error);
     // Notes a finding, once per kind and tool: again, only its line and count.

@@ -23,6 +23,7 @@ Severity findingSeverity(FindingKind kind)
     case FindingKind::LengthOffsetMismatch:
     case FindingKind::NoLengthCompensation:
     case FindingKind::NoToolLoaded:
+    case FindingKind::ProgramSetsTlo:
         return Severity::Warning;
     }
     return Severity::Error;
@@ -55,6 +56,8 @@ QString findingKey(FindingKind kind)
         return u"program_error"_s;
     case FindingKind::BelowFloor:
         return u"below_floor"_s;
+    case FindingKind::ProgramSetsTlo:
+        return u"program_sets_tlo"_s;
     }
     return {};
 }

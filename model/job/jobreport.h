@@ -29,6 +29,7 @@ enum class FindingKind : quint8 {
     InchOnCarvera, // G20 on the Carvera, which halts (error)
     ProgramError, // what the controller would refuse or alarm on (error)
     BelowFloor, // a feed move below the Z floor (error)
+    ProgramSetsTlo, // the Carvera program sets a tool's TLO to another value than the table's (warning)
 };
 
 [[nodiscard]] Severity findingSeverity(FindingKind kind);

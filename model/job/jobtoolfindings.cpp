@@ -66,7 +66,8 @@ void JobChecker::toolFindings(const JobTool &tool)
 {
     const int n = tool.number;
     const bool carvera = m_setup.dialect == Dialect::Carvera;
-    if (carvera && isCarveraNonCutter(n))
+    // T0 is no tool on the other controllers (LinuxCNC's empty spindle), the wireless probe on the Carvera.
+    if (n == 0 || (carvera && isCarveraNonCutter(n)))
         return;
     if (!m_setup.rack.isEmpty() && !m_setup.rack.contains(n))
         noteForTool(FindingKind::ManualChange, tool,
@@ -90,6 +91,13 @@ void JobChecker::toolFindings(const JobTool &tool)
         noteForTool(FindingKind::NotMeasured, tool,
             carvera ? tr("T%1 has no measured TLO.").arg(n)
                     : tr("T%1 has no length in the table: G43 would apply 0.").arg(n));
+    } else if (facts.measuredAt.isValid()
+        && facts.measuredAt.secsTo(m_setup.now) < -ToolFacts::kClockSkewSeconds) {
+        noteForTool(FindingKind::StaleTlo, tool,
+            tr("T%1's TLO is dated %2, in the future: a clock was wrong, and when it was measured is not "
+               "known.")
+                .arg(n)
+                .arg(facts.measuredAt.toString(Qt::ISODate)));
     } else if (facts.measuredAt.isValid() && !facts.isFresh(m_setup.now, m_setup.staleDays)) {
         noteForTool(FindingKind::StaleTlo, tool,
             tr("T%1's TLO was measured %2, before the stale limit (%3 d).")

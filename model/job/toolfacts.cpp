@@ -10,7 +10,9 @@ namespace Toffee {
 
 bool ToolFacts::isFresh(const QDateTime &now, int staleDays) const
 {
-    return measuredAt.isValid() && measuredAt.secsTo(now) <= qint64(staleDays) * 24 * 3600;
+    // A measurement from the future (a clock set wrong) is not fresh: nothing says when it was taken.
+    const qint64 age = measuredAt.isValid() ? measuredAt.secsTo(now) : -1;
+    return age >= -kClockSkewSeconds && age <= qint64(staleDays) * 24 * 3600;
 }
 
 QHash<int, ToolFacts> factsFromTable(const ToolTable &table)

@@ -32,8 +32,9 @@ struct ToolFacts
     // newest break test when no probe came after it).
     bool broken = false;
 
-    // Measured within `staleDays` of `now`.
+    // Measured within `staleDays` of `now`, and not after it (beyond a few minutes of clocks that differ).
     [[nodiscard]] bool isFresh(const QDateTime &now, int staleDays) const;
+    static constexpr qint64 kClockSkewSeconds = 300;
 };
 
 // Each tool of the table.

@@ -169,6 +169,82 @@ private Q_SLOTS:
         QCOMPARE(Test::readFile(u"tools.json"_s), before);
     }
 
+    void refusesALibraryOrAnyOtherFileGivenAsTheTable_data()
+    {
+        QTest::addColumn<QString>("into");
+        QTest::addColumn<QByteArray>("contents");
+        QTest::addColumn<QByteArray>("message");
+        const QByteArray json = Test::fusionLibrary({ Test::fusionTool(1) });
+        QTest::newRow("the library itself") << u"lib.json"_s << json
+                                            << "lib.json is a Fusion tool library, not a tool table: give a "
+                                               ".json, .tbl or .csv tool table as "
+                                               "--into."_ba;
+        QTest::newRow("a broken library")
+            << u"other.json"_s << Test::fusionLibrary({ Test::fusionTool(1, "x", "furlongs") })
+            << "other.json is a Fusion tool library, not a tool table"_ba;
+        QTest::newRow("other JSON")
+            << u"other.json"_s << R"({"version": 17, "rows": []})"_ba
+            << "other.json is JSON but not a tool table (it has no \"format\": "
+               "\"toffee-tool-table\"): give a .json, .tbl or .csv tool table as --into."_ba;
+        QTest::newRow("a .tools archive")
+            << u"lib.tools"_s << Test::zipArchive({ { "tools.json", json } })
+            << "lib.tools is a Fusion tool library (.tools), not a tool table"_ba;
+        QTest::newRow("a program") << u"part.nc"_s << Test::makeraProgram({ Test::makeraTool(3) })
+                                   << "part.nc is a G-code program, not a tool table"_ba;
+    }
+    void refusesALibraryOrAnyOtherFileGivenAsTheTable()
+    {
+        QFETCH(QString, into);
+        QFETCH(QByteArray, contents);
+        QFETCH(QByteArray, message);
+        QTemporaryDir dir;
+        QVERIFY(QDir::setCurrent(dir.path()));
+        QVERIFY(Test::writeFile(u"lib.json"_s, Test::fusionLibrary({ Test::fusionTool(1) })));
+        if (into != u"lib.json"_s)
+            QVERIFY(Test::writeFile(into, contents));
+        const QByteArray before = Test::readFile(into);
+        for (const QStringList &extra : { QStringList(), QStringList { u"--dry-run"_s } }) {
+            const Run run = cli(QStringList { u"import"_s, u"lib.json"_s, u"--into"_s, into } + extra);
+            QCOMPARE(run.exitCode, 2);
+            QVERIFY2(run.err.contains(QByteArray("toffee-cli: " + message)), run.err.constData());
+            QVERIFY2(!run.err.contains("newer Toffee"), run.err.constData());
+            QCOMPARE(Test::readFile(into), before);
+        }
+    }
+
+    void newToolsIntoATblGetAPocketOfTheirOwnAndSayTheyHaveNoLength()
+    {
+        QTemporaryDir dir;
+        const QString source = dir.filePath(u"probe.json"_s);
+        const QString table = dir.filePath(u"tool.tbl"_s);
+        QVERIFY(Test::writeFile(table, "T1 P1 Z12.5 D3 ;my drill\n"));
+        // T0, the probe, and a tool numbered past the pockets: the table's rule gives both pocket 1.
+        QVERIFY(Test::writeFile(source,
+            Test::fusionLibrary({ Test::fusionTool(0, "probe"), Test::fusionTool(2, ""),
+                Test::fusionTool(123456, "big")
+                    .replace(R"("length-offset": 123456)", R"("length-offset": 7)") })));
+        const Run run = cli({ u"import"_s, source, u"--into"_s, table });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QVERIFY2(
+            run.out.contains("note: pocket 3; no tool length yet (0 in the table): measure it before use"),
+            run.out.constData());
+        QVERIFY2(
+            run.out.contains("note: the library gives length offset H7; Toffee always uses H = T (H123456)"),
+            run.out.constData());
+        QCOMPARE(Test::readFile(table),
+            "T0 P3 Z0 D6 ;probe\nT1 P1 Z12.5 D3 ;my drill\nT2 P2 Z0 D6 ;flat end mill, 6 mm\n"
+            "T123456 P4 Z0 D6 ;big\n"_ba);
+
+        QVERIFY(Test::writeFile(table, "T1 P1 Z12.5 D3 ;my drill\n"));
+        const Run json = cli({ u"--json"_s, u"import"_s, source, u"--into"_s, table, u"--dry-run"_s });
+        QVERIFY2(json.exitCode == 0, json.err.constData());
+        const QJsonArray notes = QJsonDocument::fromJson(json.out).object().value(u"notes"_s).toArray();
+        QCOMPARE(notes.size(), 3);
+        QCOMPARE(notes.at(0)[u"number"_s].toInt(), 0);
+        QCOMPARE(notes.at(0)[u"notes"_s].toArray(),
+            QJsonArray { u"pocket 3; no tool length yet (0 in the table): measure it before use"_s });
+    }
+
     void refusesAToffeeTableAndAMissingInto()
     {
         const QString example = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");

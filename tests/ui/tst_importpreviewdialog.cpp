@@ -3,7 +3,9 @@
 // findable widgets, and the keyboard.
 #include <QApplication>
 #include <QDialogButtonBox>
+#include <QHeaderView>
 #include <QLabel>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QTest>
 #include <QTreeWidget>
@@ -61,7 +63,9 @@ private Q_SLOTS:
         };
         QCOMPARE(row(0), (QStringList { u"T1"_s, u"Unchanged"_s, u"Flat 1"_s, QString() }));
         QCOMPARE(row(1), (QStringList { u"T2"_s, u"Changed"_s, u"Flat 2"_s, u"radius 1.000 → 3.000 mm"_s }));
-        QCOMPARE(row(2), (QStringList { u"T7"_s, u"New"_s, u"Flat 7"_s, QString() }));
+        QCOMPARE(row(2),
+            (QStringList { u"T7"_s, u"New"_s, u"Flat 7"_s,
+                u"pocket 7; no tool length yet (0 in the table): measure it before use"_s }));
         const QString summary = dialog.findChild<QLabel *>(u"importSummary"_s)->text();
         QVERIFY2(
             summary.contains(u"/tmp/lib.json (Fusion tool library (JSON)): 1 new, 1 changed, 1 unchanged."_s),
@@ -69,11 +73,78 @@ private Q_SLOTS:
         QVERIFY(dialog.findChild<QPushButton *>(u"importButton"_s)->isEnabled());
     }
 
+    void showsTheSelectedToolsChangesWholeWithoutAMouse()
+    {
+        CamTool long2 = camTool(2, 6.0);
+        long2.description = u"6 mm three-flute carbide end mill for aluminium, long reach, ZrN coated"_s;
+        long2.fluteLength = 22;
+        long2.overallLength = 75;
+        long2.lengthOffset = 12;
+        ImportPreviewDialog dialog(
+            preview({ camTool(1, 2.0), long2, camTool(7, 4.0) }), u"lib.json"_s, u"Fusion"_s);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        auto *list = dialog.findChild<QTreeWidget *>(u"importToolList"_s);
+        auto *details = dialog.findChild<QPlainTextEdit *>(u"importDetails"_s);
+        QVERIFY(details);
+        QVERIFY(!details->accessibleName().isEmpty());
+        QVERIFY(details->isReadOnly());
+        QTRY_COMPARE(QApplication::focusWidget(), list);
+        QCOMPARE(details->toPlainText(),
+            u"T1 (Unchanged): Flat 1\nThe table already has this tool as the library describes it."_s);
+
+        QTest::keyClick(list, Qt::Key_Down);
+        const QStringList expected {
+            u"T2 (Changed): "_s + long2.description,
+            u"• description “Flat 2” → “"_s + long2.description + u"”"_s, u"• radius 1.000 → 3.000 mm"_s,
+            u"• CAM lengths added to the notes (flute length 22 mm, overall length 75 mm)"_s,
+            u"• the library gives length offset H12; Toffee always uses H = T (H2), so it is not imported"_s
+        };
+        QCOMPARE(details->toPlainText(), expected.join(u'\n'));
+        // In the list each change is on a line of its own, wrapped rather than cut off.
+        QCOMPARE(list->topLevelItem(1)->text(ImportPreviewDialog::FieldsColumn).count(u'\n'), 3);
+        QVERIFY(list->wordWrap());
+        QVERIFY(list->header()->sectionResizeMode(ImportPreviewDialog::FieldsColumn) == QHeaderView::Stretch);
+
+        QTest::keyClick(list, Qt::Key_Down);
+        QVERIFY2(details->toPlainText().startsWith(u"T7 (New): Flat 7\n• pocket 7"_s),
+            qPrintable(details->toPlainText()));
+
+        // Tab goes from the list to the details, then to Import; Return there still imports.
+        QTest::keyClick(list, Qt::Key_Tab);
+        QCOMPARE(QApplication::focusWidget(), details);
+        QTest::keyClick(details, Qt::Key_Tab);
+        QCOMPARE(QApplication::focusWidget(), dialog.findChild<QPushButton *>(u"importButton"_s));
+    }
+
+    void fitsItsContentsRatherThanEmptySpace()
+    {
+        ImportPreviewDialog dialog(preview(), u"lib.json"_s, u"Fusion"_s);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        auto *list = dialog.findChild<QTreeWidget *>(u"importToolList"_s);
+        // Three rows: the list has room for them and little more.
+        const QTreeWidgetItem *last = list->topLevelItem(2);
+        const int rowsBottom = list->visualItemRect(last).bottom();
+        QVERIFY2(rowsBottom > 0 && rowsBottom < list->viewport()->height(),
+            qPrintable(u"%1 of %2"_s.arg(rowsBottom).arg(list->viewport()->height())));
+        QVERIFY2(list->viewport()->height() - rowsBottom < 3 * list->visualItemRect(last).height(),
+            qPrintable(u"%1 of %2"_s.arg(rowsBottom).arg(list->viewport()->height())));
+        // Every change is shown whole in its column: none is elided.
+        const int changes = list->columnWidth(ImportPreviewDialog::FieldsColumn);
+        const QFontMetrics metrics(list->font());
+        for (int i = 0; i < list->topLevelItemCount(); ++i) {
+            for (const QString &line :
+                list->topLevelItem(i)->text(ImportPreviewDialog::FieldsColumn).split(u'\n'))
+                QVERIFY2(metrics.horizontalAdvance(line) < changes, qPrintable(line));
+        }
+    }
+
     void everyWidgetIsFindableAndNamed()
     {
         ImportPreviewDialog dialog(preview(), u"lib.json"_s, u"Fusion"_s);
-        for (const QString &name : { u"importSummary"_s, u"importToolList"_s, u"importButton"_s,
-                 u"importCancelButton"_s, u"importButtons"_s }) {
+        for (const QString &name : { u"importSummary"_s, u"importToolList"_s, u"importDetails"_s,
+                 u"importButton"_s, u"importCancelButton"_s, u"importButtons"_s }) {
             auto *widget = dialog.findChild<QWidget *>(name);
             QVERIFY2(widget, qPrintable(name));
             QVERIFY2(!widget->accessibleName().isEmpty(), qPrintable(name));

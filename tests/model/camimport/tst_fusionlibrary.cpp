@@ -50,11 +50,45 @@ private Q_SLOTS:
         QCOMPARE(t7.stickOut, std::nullopt);
     }
 
-    void aToolWithoutDescriptionIsNamedByItsTypeAndSize()
+    void aToolWithoutDescriptionHasNone()
     {
+        // The import names a new tool by its type and size, and keeps an existing tool's description.
         const auto read = readFusionJson(Test::fusionLibrary({ Test::fusionTool(1, "  ") }));
         QVERIFY2(read.ok(), qPrintable(read.error().text()));
-        QCOMPARE(read.value().front().description, u"flat end mill, 6 mm"_s);
+        QCOMPARE(read.value().front().description, QString());
+        QCOMPARE(read.value().front().type, u"flat end mill"_s);
+    }
+
+    void readsTheLengthOffsetForANote()
+    {
+        const auto read = readFusionJson(Test::fusionLibrary({ Test::fusionTool(3),
+            Test::fusionTool(4).replace(R"("length-offset": 4)", R"("length-offset": 14)"),
+            Test::fusionTool(5).replace(R"("length-offset": 5,)", "") }));
+        QVERIFY2(read.ok(), qPrintable(read.error().text()));
+        QCOMPARE(read.value().at(0).lengthOffset, 3);
+        QCOMPARE(read.value().at(1).lengthOffset, 14);
+        QCOMPARE(read.value().at(2).lengthOffset, std::nullopt);
+    }
+
+    void quotesAHugeNumberShortly_data()
+    {
+        QTest::addColumn<QByteArray>("tool");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("DC") << Test::fusionTool(2, "x", "millimeters", R"("DC": 1e308)")
+                            << u"the diameter 1e+308 mm is out of range"_s;
+        QTest::newRow("negative LCF") << Test::fusionTool(2, "x", "millimeters", R"("DC": 3, "LCF": -1e308)")
+                                      << u"the flute length is -1e+308 mm; it cannot be negative."_s;
+        QTest::newRow("number") << Test::fusionTool(2).replace(R"("number": 2,)", R"("number": 1.5e300,)")
+                                << u"its \"number\" 1.5e+300 is out of range"_s;
+    }
+    void quotesAHugeNumberShortly()
+    {
+        QFETCH(QByteArray, tool);
+        QFETCH(QString, message);
+        const auto read = readFusionJson(Test::fusionLibrary({ tool }));
+        QVERIFY(!read.ok());
+        QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
+        QVERIFY2(read.error().message.size() < 160, qPrintable(read.error().message));
     }
 
     void refusesAMalformedLibraryWhole_data()
@@ -102,6 +136,10 @@ private Q_SLOTS:
                                  << u"not a Fusion tool library"_s;
         QTest::newRow("a list, not an object") << QByteArray("[1, 2]") << 1 << u"not a Fusion tool library"_s;
         QTest::newRow("no tools") << Test::fusionLibrary({}) << 0 << u"holds no tools"_s;
+        QTest::newRow("length-offset is text")
+            << Test::fusionLibrary(
+                   { QByteArray(good).replace(R"("length-offset": 1,)", R"("length-offset": "H1",)") })
+            << 0 << u"tool 1 in \"data\": its \"length-offset\" is \"H1\", not a whole number."_s;
     }
     void refusesAMalformedLibraryWhole()
     {
@@ -163,6 +201,31 @@ private Q_SLOTS:
         for (int i = data + 2; i < data + 12; ++i)
             corrupted[i] = char(corrupted.at(i) ^ 0x5a);
         QTest::newRow("corrupted data") << corrupted << u"tools.json"_s << 0 << u"cannot be unpacked"_s;
+
+        // libzip refuses a second entry of one name with "File already exists": a zip with tools.json and
+        // tools.jsoX, renamed in its local header and its directory, is such an archive.
+        QByteArray twoOfOneName
+            = Test::zipArchive({ { "tools.json", kTwoTools }, { "tools.jsoX", kTwoTools } });
+        QVERIFY(twoOfOneName.count("tools.jsoX") == 2);
+        twoOfOneName.replace("tools.jsoX", "tools.json");
+        QTest::newRow("two entries of one name")
+            << twoOfOneName << QString() << 0
+            << u"this is not a .tools archive Toffee can read: two of its entries have the same name"_s;
+        QTest::newRow("tools.json twice")
+            << Test::zipArchive({ { "a/tools.json", kTwoTools }, { "B/TOOLS.JSON", kTwoTools } }) << QString()
+            << 0 << u"the archive holds tools.json twice (a/tools.json and B/TOOLS.JSON)"_s;
+        // A checksum that matches neither the data: set alike in the local header (at 14) and the directory
+        // entry (at 16), so that only unpacking finds it.
+        QByteArray badChecksum = good;
+        const qsizetype directory = badChecksum.indexOf("PK\x01\x02");
+        QVERIFY(directory > 0);
+        for (const qsizetype at : { qsizetype(14), directory + 16 })
+            badChecksum[at] = char(badChecksum.at(at) ^ 0x01);
+        QTest::newRow("wrong checksum")
+            << badChecksum << u"tools.json"_s << 0
+            << u"it cannot be unpacked: the archive is damaged (what it unpacks to fails its checksum)."_s;
+        QTest::newRow("cut short") << good.first(good.size() - 30) << QString() << 0
+                                   << u"it is not a zip archive, or one cut short"_s;
     }
     void refusesABrokenArchive()
     {
@@ -173,6 +236,9 @@ private Q_SLOTS:
         const auto read = readFusionArchive(zip);
         verifyRefused(read, line, message);
         QCOMPARE(read.error().file, file);
+        // libzip's own words describe libzip, not the archive.
+        QVERIFY2(!read.error().message.contains(u"File already exists"_s), qPrintable(read.error().message));
+        QVERIFY2(!read.error().message.contains(u"inconsistent"_s), qPrintable(read.error().message));
     }
 
     void refusesAnArchiveThatUnpacksPastTheLimit()

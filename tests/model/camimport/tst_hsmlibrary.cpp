@@ -40,6 +40,15 @@ private Q_SLOTS:
         QCOMPARE(t12.overallLength, std::nullopt);
     }
 
+    void readsTheLengthOffsetForANote()
+    {
+        const auto read = readHsmLibrary(Test::hsmLibrary(Test::hsmTool(4)
+            + QString(Test::hsmTool(5)).replace(u"length-offset=\"5\""_s, u"length-offset=\"25\""_s)));
+        QVERIFY2(read.ok(), qPrintable(read.error().text()));
+        QCOMPARE(read.value().at(0).lengthOffset, 4);
+        QCOMPARE(read.value().at(1).lengthOffset, 25);
+    }
+
     void readsTheOlderToolTableAndUtf8()
     {
         const QString xml
@@ -81,6 +90,19 @@ private Q_SLOTS:
         QTest::newRow("repeated number") << Test::hsmLibrary(good + Test::hsmTool(2) + good) << 21
                                          << u"tool 3 (T1): number 1 is taken already (tool 1)"_s;
         QTest::newRow("no tools") << Test::hsmLibrary({}) << 0 << u"holds no tools"_s;
+        QTest::newRow("two nc") << Test::hsmLibrary(
+            good + QString(Test::hsmTool(2)).replace(u"<coolant mode=\"flood\"/>"_s, u"<nc number=\"7\"/>"_s))
+                                << 15 << u"tool 2: it has a second <nc> (the first is on line 14)"_s;
+        QTest::newRow("two bodies") << Test::hsmLibrary(QString(good).replace(
+            u"<motion spindle-rpm=\"18000\" cutting-feedrate=\"800\"/>"_s, u"<body diameter=\"8\"/>"_s))
+                                    << 9 << u"tool 1: it has a second <body> (the first is on line 8)"_s;
+        QTest::newRow("two descriptions")
+            << Test::hsmLibrary(QString(good).replace(
+                   u"<coolant mode=\"flood\"/>"_s, u"<description>other</description>"_s))
+            << 6 << u"tool 1: it has a second <description> (the first is on line 4)"_s;
+        QTest::newRow("length offset abc")
+            << Test::hsmLibrary(QString(good).replace(u"length-offset=\"1\""_s, u"length-offset=\"H1\""_s))
+            << 5 << u"tool 1: its nc length-offset is \"H1\", not a whole number."_s;
     }
     void refusesAMalformedLibraryWhole()
     {

@@ -162,6 +162,85 @@ private Q_SLOTS:
         QCOMPARE(tool.notes, u"From CAM: flute length 20 mm, below the holder 30 mm, overall length 50 mm"_s);
     }
 
+    void givesANewToolThePocketOfItsNumberOrOneNoOtherToolHas()
+    {
+        // T1 is in pocket 1, T7 was moved to pocket 2: T2's own pocket is taken, and so is pocket 1, which
+        // the table gives T0 and any number beyond the pockets.
+        Tool t1;
+        t1.number = 1;
+        Tool t7;
+        t7.number = 7;
+        t7.pocket = 2;
+        auto table = ToolTable::fromTools({ t1, t7 }, Units::Millimetre);
+        const ImportPreview p = preview(
+            table.value(), { camTool(0, 2.0), camTool(2, 3.0), camTool(123456, 4.0), camTool(3, 5.0) });
+        const auto pocket = [&p](int number) {
+            return p.merged().find(number)->pocket;
+        };
+        QCOMPARE(pocket(3), 3); // its own
+        QCOMPARE(pocket(0), 4); // then the lowest free ones, in the library's order
+        QCOMPARE(pocket(2), 5);
+        QCOMPARE(pocket(123456), 6);
+        QCOMPARE(pocket(1), 1);
+        QCOMPARE(pocket(7), 2);
+
+        // A free pocket of the table's rule is kept: T0 into an empty table is in pocket 1.
+        QCOMPARE(preview(ToolTable(), { camTool(0, 2.0) }).merged().find(0)->pocket, 1);
+        // T1 claims its own pocket before T0, wherever the library lists it.
+        const ImportPreview both = preview(ToolTable(), { camTool(0, 2.0), camTool(1, 2.0) });
+        QCOMPARE(both.merged().find(1)->pocket, 1);
+        QCOMPARE(both.merged().find(0)->pocket, 2);
+    }
+
+    void saysANewToolHasNoLengthYet()
+    {
+        Tool t1;
+        t1.number = 1;
+        auto table = ToolTable::fromTools({ t1 }, Units::Millimetre);
+        const ImportPreview p = preview(table.value(), { camTool(1, 2.0), camTool(0, 2.0) });
+        QCOMPARE(p.tools().at(0).notes, QStringList());
+        QCOMPARE(p.tools().at(1).notes,
+            QStringList { u"pocket 2; no tool length yet (0 in the table): measure it before use"_s });
+        QCOMPARE(p.merged().find(0)->lengthGeometry, 0.0);
+        QCOMPARE(p.merged().find(0)->measuredTlo, std::nullopt);
+    }
+
+    void keepsTheTablesDescriptionWhenTheLibraryHasNone()
+    {
+        Tool mine = measuredTool(2);
+        mine.description = u"the good drill"_s;
+        auto table = ToolTable::fromTools({ mine }, Units::Millimetre);
+        CamTool drill = camTool(2, 3.0);
+        drill.description.clear();
+        drill.type = u"drill"_s;
+        CamTool added = drill;
+        added.number = 4;
+        const ImportPreview p = preview(table.value(), { drill, added });
+        QCOMPARE(p.merged().find(2)->description, u"the good drill"_s);
+        QCOMPARE(p.tools().at(0).description, u"the good drill"_s);
+        QCOMPARE(p.tools().at(0).fields, QStringList { u"radius 1.000 → 1.500 mm"_s });
+        // Only a new tool is named by the library's type and size.
+        QCOMPARE(p.merged().find(4)->description, u"drill, 3 mm"_s);
+    }
+
+    void notesALengthOffsetOtherThanTheToolNumber()
+    {
+        Tool t2 = measuredTool(2);
+        auto table = ToolTable::fromTools({ t2 }, Units::Millimetre);
+        CamTool same = camTool(2, 2.0, Units::Millimetre, t2.description);
+        same.lengthOffset = 12;
+        CamTool own = camTool(3, 2.0);
+        own.lengthOffset = 3;
+        const ImportPreview p = preview(table.value(), { same, own });
+        QCOMPARE(p.tools().at(0).change, ImportChange::Unchanged);
+        QCOMPARE(p.tools().at(0).notes,
+            QStringList {
+                u"the library gives length offset H12; Toffee always uses H = T (H2), so it is not imported"_s });
+        QCOMPARE(*p.merged().find(2), t2);
+        QVERIFY2(!p.tools().at(1).notes.join(u' ').contains(u"H3"_s),
+            qPrintable(p.tools().at(1).notes.join(u' ')));
+    }
+
     void refusesAToolTheTableCannotHoldAndNamesIt()
     {
         CamTool huge = camTool(9, 3000.0);

@@ -71,7 +71,15 @@ private Q_SLOTS:
         QTest::newRow("empty") << QByteArray() << 0 << u"no Makera CAM tool header"_s;
         QTest::newRow("binary") << QByteArray("\x7f"
                                               "ELF\x02\x01\x01\0\0\0",
-            10) << 0 << u"no Makera CAM tool header"_s;
+            10) << 1 << u"this is not a text program"_s;
+        QTest::newRow("NUL bytes") << QByteArray(1000, '\0') << 1 << u"this is not a text program"_s;
+        QTest::newRow("NUL after the header") << Test::makeraProgram({ Test::makeraTool(3) },
+            QByteArray(64, '\0')) << 5 << u"this is not a text program"_s;
+        QTest::newRow("number twice") << Test::makeraProgram({ ";@MKR|TOOL|number=9|number=10|diameter=2" })
+                                      << 3 << u"number is in this tool line twice (number=9 and number=10)"_s;
+        QTest::newRow("diameter twice")
+            << Test::makeraProgram({ Test::makeraTool(3), Test::makeraTool(4, "diameter=2|diameter=3") }) << 4
+            << u"diameter is in this tool line twice (diameter=2 and diameter=3)"_s;
     }
     void refusesAMalformedHeaderWhole()
     {
@@ -82,6 +90,24 @@ private Q_SLOTS:
         QVERIFY2(!read.ok(), "the header was read");
         QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
         QCOMPARE(read.error().line, line);
+    }
+
+    void anUnknownFieldMayRepeat()
+    {
+        const auto read
+            = readMakeraHeader(Test::makeraProgram({ Test::makeraTool(3, "x=1|x=2|diameter=2") }));
+        QVERIFY2(read.ok(), qPrintable(read.error().text()));
+        QCOMPARE(read.value().front().diameter, 2.0);
+    }
+
+    void zerosPastWhatWasReadAreNoTextProgram()
+    {
+        // Four megabytes of NUL bytes have no line end, but they are not "all comments" either.
+        const auto read = readMakeraHeader(QByteArray(4096, '\0'), false);
+        QVERIFY(!read.ok());
+        QVERIFY2(read.error().message.startsWith(u"this is not a text program"_s),
+            qPrintable(read.error().message));
+        QCOMPARE(read.error().line, 1);
     }
 
     void refusesAHeaderThatRunsPastWhatWasRead()

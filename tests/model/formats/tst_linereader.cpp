@@ -59,6 +59,8 @@ private Q_SLOTS:
         QTest::newRow("CRLF") << QByteArray("G0\r\nG1\r\n") << QList<QByteArray> { "G0", "G1" };
         QTest::newRow("CRLF, last without") << QByteArray("G0\r\nG1\r") << QList<QByteArray> { "G0", "G1" };
         QTest::newRow("empty lines") << QByteArray("\n\nM30\n") << QList<QByteArray> { "", "", "M30" };
+        QTest::newRow("UTF-8 byte-order mark")
+            << QByteArray("\xEF\xBB\xBFG21\nM30") << QList<QByteArray> { "G21", "M30" };
     }
 
     void readsLinesWithAnyEnd()
@@ -104,6 +106,18 @@ private Q_SLOTS:
         huge.close();
         QVERIFY(readAll(huge.fileName(), &error).isEmpty());
         QVERIFY(error && error->line == 1);
+    }
+
+    void refusesWhatIsNotText()
+    {
+        QTemporaryDir dir;
+        std::optional<Error> error;
+        // UTF-16: every other byte is NUL.
+        const QList<QByteArray> lines = readAll(write(dir, QByteArray("G\0002\0001\000\n\000", 9)), &error);
+        QVERIFY(lines.isEmpty());
+        QVERIFY(error);
+        QCOMPARE(error->line, 1);
+        QVERIFY2(error->message.contains(u"not a text program"_s), qPrintable(error->message));
     }
 
     void refusesWhatIsNotAFileByName_data() { Test::addSpecialFileRows(); }

@@ -94,6 +94,28 @@ private Q_SLOTS:
         QVERIFY(!refused);
         QVERIFY2(refused.error().message.contains(u"G54 to G59"_s), qPrintable(refused.error().message));
     }
+
+    void takesWhatPostsWriteAroundTheMoves()
+    {
+        // LinuxCNC: absolute arc centres (G90.1) and back (G91.1), G59.1, a deleted block that runs.
+        GCodeInterpreter linuxcnc(Dialect::LinuxCnc);
+        QVERIFY(runAll(linuxcnc, "G10 L2 P7 X50\nG59.1 G90.1 G0 X0 Y0\nG1 F60\nG2 X10 Y0 I5 J0"));
+        QVERIFY(near(linuxcnc.position()[0], 60.0));
+        QVERIFY(near(
+            linuxcnc.toolUsage().at(-1).feedPathMm, 5.0 * std::acos(-1.0))); // centre (5, 0): half a circle
+        QVERIFY(runAll(linuxcnc, "G91.1 G2 X0 Y0 I-5 J0\n/G0 X3\n/2 G0 Y4"));
+        QVERIFY(near(linuxcnc.workPosition()[0], 3.0));
+        QVERIFY(near(linuxcnc.workPosition()[1], 4.0));
+        // Inverse time (G93): each move takes a minute over F; G95: F a revolution at S.
+        GCodeInterpreter fanuc(Dialect::Fanuc);
+        QVERIFY(runAll(fanuc, "T1 M6\nG93 G1 X100 F2\nG95 S1000 G1 X110 F0.1\nG94 G30 G91 Z0\nG9 G61.1 G97"));
+        QVERIFY(near(fanuc.toolUsage().at(1).cuttingSeconds, 30.0 + 6.0));
+        QCOMPARE(fanuc.lastBlock().motion, BlockEffect::Motion::None);
+        // A subprogram is not followed: the check says so instead of passing what it cannot see.
+        const auto call = fanuc.runLine("M98 P2000", 7);
+        QVERIFY(!call);
+        QVERIFY2(call.error().message.contains(u"does not follow"_s), qPrintable(call.error().message));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCyclesAndOffsets)

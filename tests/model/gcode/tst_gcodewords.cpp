@@ -53,6 +53,9 @@ private Q_SLOTS:
         QTest::newRow("two points") << QByteArray("Z1..2") << u"\"1..2\" is not a number"_s;
         QTest::newRow("nine digits") << QByteArray("X123456789") << u"X123456789 is too large"_s;
         QTest::newRow("stray character") << QByteArray("G0 #1") << u"unexpected \"#\""_s;
+        QTest::newRow("a terminal's escape, named not printed")
+            << QByteArray("G0 \x1b[2J") << u"unexpected byte 0x1b"_s;
+        QTest::newRow("a byte beyond ASCII") << QByteArray("G0 \xc3\xa9") << u"unexpected byte 0xc3"_s;
         QTest::newRow("a function call") << QByteArray("Home(X)") << u"not G-code this controller reads"_s;
     }
     void refusesWhatNoControllerReads()

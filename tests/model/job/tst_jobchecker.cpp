@@ -228,6 +228,31 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode(), 1);
     }
 
+    void aTloTheProgramSetsAZeroToolAndAFutureDateAreToldApart()
+    {
+        // The program sets T2's TLO by hand to another value than the table's; T0 is the probe, not looked
+        // up.
+        const JobReport carvera
+            = check("M6 T2 H-30\nG1 Z-1 F100\nM493.3 Z-33.388\nM6 T0\nM30\n", Dialect::Carvera, shopTable());
+        const Finding *set = find(carvera, FindingKind::ProgramSetsTlo, 2);
+        QVERIFY(set);
+        QCOMPARE(set->line, 1);
+        QCOMPARE(set->count, 1); // line 3 sets the table's own value
+        QVERIFY2(set->message.contains(u"-30.000"_s) && set->message.contains(u"-33.388"_s),
+            qPrintable(set->message));
+        QVERIFY(!find(carvera, FindingKind::MissingTool, 0));
+        // LinuxCNC's T0 is the empty spindle: no finding for it.
+        QCOMPARE(check("T0 M6\nM2\n", Dialect::LinuxCnc, shopTable()).findings.size(), 0);
+        // A TLO dated in the future is not fresh: the clock was wrong.
+        QList<Tool> tools { cutter(2, -33.388, 0) };
+        tools[0].measuredAt = kNow.addDays(400);
+        const JobReport future = check(
+            "M6 T2\nG1 Z-1 F100\n", Dialect::Carvera, ToolTable::fromTools(tools, Units::Millimetre).value());
+        QVERIFY(find(future, FindingKind::StaleTlo, 2)->message.contains(u"in the future"_s));
+        QVERIFY(find(check("G21\nT2 M6\nG20\n", Dialect::Fanuc, shopTable()), FindingKind::UnitsMismatch)
+                    ->message.startsWith(u"The program is in inches (G20)"_s));
+    }
+
     void nothingAfterTheEndRuns()
     {
         const JobReport r = check("M6 T2\nM30\nM6 T99\nG7\n", Dialect::Carvera, shopTable());
