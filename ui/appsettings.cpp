@@ -29,6 +29,7 @@ const auto ExportDialect = u"files/exportDialect"_s;
 const auto JobDialect = u"jobs/dialect"_s;
 const auto JobZFloor = u"jobs/zFloor"_s;
 const auto PrepareStoredTlo = u"jobs/prepareUsesStoredTlo"_s;
+const auto JobRack = u"jobs/rack"_s;
 const auto PrepareBreakTests = u"jobs/prepareBreakTests"_s;
 } // namespace Key
 } // namespace
@@ -182,6 +183,16 @@ void AppSettings::setJobZFloor(std::optional<double> z)
         m_settings.setValue(Key::JobZFloor, *z);
     else
         m_settings.remove(Key::JobZFloor);
+}
+
+QString AppSettings::jobRack() const
+{
+    return m_settings.value(Key::JobRack, u"1-6"_s).toString();
+}
+
+void AppSettings::setJobRack(const QString &rack)
+{
+    m_settings.setValue(Key::JobRack, rack);
 }
 
 bool AppSettings::prepareUsesStoredTlo() const

@@ -48,6 +48,9 @@ public:
     void setJobDialect(const QString &key);
     [[nodiscard]] std::optional<double> jobZFloor() const;
     void setJobZFloor(std::optional<double> z);
+    // The Carvera's rack, as written in the dialog ("1-6", "none").
+    [[nodiscard]] QString jobRack() const;
+    void setJobRack(const QString &rack);
     [[nodiscard]] bool prepareUsesStoredTlo() const;
     void setPrepareUsesStoredTlo(bool use);
     [[nodiscard]] bool prepareBreakTests() const;

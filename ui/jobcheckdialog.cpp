@@ -10,6 +10,7 @@
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
@@ -49,6 +50,7 @@ QTableView *reportView(
     view->verticalHeader()->hide();
     view->horizontalHeader()->setStretchLastSection(true);
     view->setWordWrap(false);
+    view->setTabKeyNavigation(false); // Tab leaves the table for the next control; the arrows move in it
     return view;
 }
 
@@ -79,6 +81,7 @@ JobCheckDialog::JobCheckDialog(Sources sources, QWidget *parent)
     , m_dialect(new QComboBox(this))
     , m_useFloor(new QCheckBox(tr("Z &floor:"), this))
     , m_floor(new QDoubleSpinBox(this))
+    , m_rack(new QLineEdit(this))
     , m_program(new QLabel(this))
     , m_progress(new QProgressBar(this))
     , m_cancel(new QPushButton(tr("Cancel"), this))
@@ -124,6 +127,19 @@ void JobCheckDialog::buildControls()
     m_floor->setValue(floor.value_or(-20.0));
     m_floor->setEnabled(floor.has_value());
     connect(m_useFloor, &QCheckBox::toggled, m_floor, &QWidget::setEnabled);
+    m_rack->setObjectName(u"jobRackEdit"_s);
+    m_rack->setAccessibleName(tr("The tools the Carvera's rack holds"));
+    m_rack->setToolTip(
+        tr("The tools the rack holds: 1-6 on a Carvera C1, none on a machine without one, or a "
+           "list such as 1-4,8. Every other tool is a manual change."));
+    m_rack->setText(AppSettings().jobRack());
+    m_rack->setMaximumWidth(120);
+    // Another controller, floor or rack is another check: it runs again, so that what is shown is what they
+    // find.
+    connect(m_dialect, &QComboBox::currentIndexChanged, this, &JobCheckDialog::optionsChanged);
+    connect(m_useFloor, &QCheckBox::toggled, this, &JobCheckDialog::optionsChanged);
+    connect(m_floor, &QDoubleSpinBox::editingFinished, this, &JobCheckDialog::optionsChanged);
+    connect(m_rack, &QLineEdit::editingFinished, this, &JobCheckDialog::optionsChanged);
     m_program->setObjectName(u"jobProgramLabel"_s);
     m_program->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_progress->setObjectName(u"jobProgress"_s);
@@ -148,6 +164,11 @@ void JobCheckDialog::buildControls()
     options->addSpacing(12);
     options->addWidget(m_useFloor);
     options->addWidget(m_floor);
+    options->addSpacing(12);
+    auto *rackLabel = new QLabel(tr("&Rack:"), this);
+    rackLabel->setBuddy(m_rack);
+    options->addWidget(rackLabel);
+    options->addWidget(m_rack);
     options->addStretch(1);
     options->addWidget(m_again);
     auto *running = new QHBoxLayout;
@@ -193,7 +214,7 @@ void JobCheckDialog::check(const QString &path)
     if (m_useFloor->isChecked())
         input.setup.zFloor = m_floor->value();
     if (input.setup.dialect == Dialect::Carvera)
-        input.setup.rack = carveraRack();
+        input.setup.rack = rack();
     auto result = std::make_shared<Result<JobReport>>(Error {});
     m_result = result;
     setRunning(true);
@@ -248,7 +269,7 @@ void JobCheckDialog::showReport()
         text = tr("Cancelled after %1 lines: what was found so far.").arg(QLocale().toString(r.lines)) + u' '
             + text;
     m_summary->setText(text + u' ' + r.summary() + u'.');
-    m_prepare->setEnabled(!r.cancelled && (r.dialect == Dialect::Carvera || usesG43(r.dialect)));
+    updatePrepare();
 }
 
 void JobCheckDialog::setRunning(bool running)
@@ -259,7 +280,9 @@ void JobCheckDialog::setRunning(bool running)
     m_again->setEnabled(!running && !m_path.isEmpty());
     m_dialect->setEnabled(!running);
     m_useFloor->setEnabled(!running);
-    m_prepare->setEnabled(!running && m_report && !m_report->cancelled);
+    m_floor->setEnabled(!running && m_useFloor->isChecked());
+    m_rack->setEnabled(!running);
+    updatePrepare();
     if (running)
         m_cancel->setFocus();
 }
@@ -294,13 +317,39 @@ void JobCheckDialog::prepare()
     if (!m_report)
         return;
     JobPrepareDialog dialog(m_path, m_sources, m_report->dialect,
-        m_useFloor->isChecked() ? std::optional(m_floor->value()) : std::nullopt, this);
+        m_useFloor->isChecked() ? std::optional(m_floor->value()) : std::nullopt,
+        rack().value_or(QList<int> {}), this);
     dialog.exec();
+}
+
+// Prepare… takes a program that ran through and has no errors, for a controller it can prepare for.
+void JobCheckDialog::updatePrepare()
+{
+    const bool preparable = m_report && !m_report->cancelled
+        && (m_report->dialect == Dialect::Carvera || usesG43(m_report->dialect));
+    m_prepare->setEnabled(!m_task->isRunning() && preparable && m_report->errors() == 0);
+    m_prepare->setToolTip(preparable && m_report->errors() > 0
+            ? tr("The check found errors: fix them before preparing the program.")
+            : QString());
+}
+
+void JobCheckDialog::optionsChanged()
+{
+    if (!m_path.isEmpty())
+        check(m_path);
+}
+
+std::optional<QList<int>> JobCheckDialog::rack() const
+{
+    const auto parsed = parseRack(m_rack->text());
+    return parsed ? std::optional(parsed.value()) : std::optional(carveraRack());
 }
 
 void JobCheckDialog::saveSettings()
 {
     AppSettings settings;
+    if (parseRack(m_rack->text()))
+        settings.setJobRack(m_rack->text().trimmed());
     settings.setJobDialect(m_dialect->currentData().toString());
     settings.setJobZFloor(m_useFloor->isChecked() ? std::optional(m_floor->value()) : std::nullopt);
 }

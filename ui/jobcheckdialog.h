@@ -13,6 +13,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLineEdit;
 class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
@@ -62,7 +63,11 @@ private:
     void showReport();
     void setRunning(bool running);
     void prepare();
+    void updatePrepare();
     void saveSettings();
+    // The options changed: what is shown is no longer what they would find.
+    void optionsChanged();
+    [[nodiscard]] std::optional<QList<int>> rack() const;
 
     Sources m_sources;
     BackgroundTask *m_task;
@@ -71,6 +76,7 @@ private:
     QComboBox *m_dialect;
     QCheckBox *m_useFloor;
     QDoubleSpinBox *m_floor;
+    QLineEdit *m_rack;
     QLabel *m_program;
     QProgressBar *m_progress;
     QPushButton *m_cancel;

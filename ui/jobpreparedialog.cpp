@@ -54,13 +54,14 @@ QString preparedName(const QString &program)
 
 } // namespace
 
-JobPrepareDialog::JobPrepareDialog(
-    QString program, JobSources sources, Dialect dialect, std::optional<double> zFloor, QWidget *parent)
+JobPrepareDialog::JobPrepareDialog(QString program, JobSources sources, Dialect dialect,
+    std::optional<double> zFloor, QList<int> rack, QWidget *parent)
     : QDialog(parent)
     , m_programPath(std::move(program))
     , m_sources(std::move(sources))
     , m_dialect(dialect)
     , m_zFloor(zFloor)
+    , m_rack(std::move(rack))
     , m_task(new BackgroundTask(this))
     , m_progress(new QProgressBar(this))
     , m_cancel(new QPushButton(tr("Cancel"), this))
@@ -155,7 +156,7 @@ PrepareOptions JobPrepareDialog::options() const
         o.useStoredTlo = m_storedTlo->isChecked();
         o.breakTest = m_breakTest->isChecked();
         o.tolerance = m_tolerance->value();
-        o.rack = carveraRack();
+        o.rack = m_rack;
     }
     return o;
 }
@@ -205,6 +206,14 @@ void JobPrepareDialog::finished(bool cancelled)
 {
     setRunning(false);
     const Result<PrepareSummary> &result = *m_result;
+    if (!result && !m_output.isEmpty() && m_summary) {
+        // A save that failed leaves the preview as it was: only the file was refused.
+        m_status->setText(cancelled ? tr("Cancelled: nothing was written.")
+                                    : tr("Not saved: %1").arg(result.error().text()));
+        setRunning(false);
+        Q_EMIT done();
+        return;
+    }
     if (!result) {
         m_summary.reset();
         m_preview->setRowCount(0);

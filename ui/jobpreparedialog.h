@@ -30,7 +30,7 @@ class JobPrepareDialog final : public QDialog
 
 public:
     JobPrepareDialog(QString program, JobSources sources, Dialect dialect, std::optional<double> zFloor,
-        QWidget *parent = nullptr);
+        QList<int> rack, QWidget *parent = nullptr);
     ~JobPrepareDialog() override;
 
     // Runs the preparation for the preview (no file), or into `output`.
@@ -58,6 +58,7 @@ private:
     JobSources m_sources;
     Dialect m_dialect;
     std::optional<double> m_zFloor;
+    QList<int> m_rack;
     BackgroundTask *m_task;
     QCheckBox *m_storedTlo = nullptr;
     QCheckBox *m_breakTest = nullptr;

@@ -215,7 +215,7 @@ void MainWindow::createActions()
     add(file, u"actionSaveAs"_s, tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
         [this] { saveAs(); });
     file->addSeparator();
-    add(file, u"actionImport"_s, tr("&Import…"), QKeySequence(Qt::CTRL | Qt::Key_I),
+    add(file, u"actionImport"_s, tr("Import &Tools…"), QKeySequence(Qt::CTRL | Qt::Key_I),
         &MainWindow::importTable);
     add(file, u"actionExport"_s, tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E),
         &MainWindow::exportTable);

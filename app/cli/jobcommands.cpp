@@ -110,26 +110,6 @@ void printReport(Invocation &call, const JobReport &report, const QDateTime &now
     call.out << report.summary() << Qt::endl;
 }
 
-// "none", or tool numbers and ranges: "1-6", "1,2,5-8".
-Result<QList<int>> parseRack(const QString &text)
-{
-    if (text.trimmed() == u"none"_s)
-        return QList<int> {};
-    const Error refused { u"--rack must be none, or tool numbers and ranges such as 1-6 or 1,2,5-8."_s };
-    QList<int> tools;
-    for (const QString &item : text.split(u',')) {
-        const QStringList ends = item.trimmed().split(u'-');
-        const auto first = parseInteger(ends.value(0).toUtf8());
-        const auto last = ends.size() == 2 ? parseInteger(ends.value(1).toUtf8()) : first;
-        if (ends.size() > 2 || !first || !last || *first < 0 || *last < *first
-            || *last > Limits::kMaxToolNumber || *last - *first > 9999)
-            return refused;
-        for (qint64 n = *first; n <= *last; ++n)
-            tools.append(int(n));
-    }
-    return tools;
-}
-
 } // namespace
 
 Result<JobCheckSetup> readJobSetup(Invocation &call, std::unique_ptr<Library> &library, QString &machine)
@@ -165,7 +145,7 @@ Result<JobCheckSetup> readJobSetup(Invocation &call, std::unique_ptr<Library> &l
     if (call.has(u"rack"_s)) {
         const auto rack = parseRack(call.option(u"rack"_s));
         if (!rack)
-            return rack.error();
+            return Error { u"--rack: "_s + rack.error().message };
         setup.rack = rack.value();
     } else if (setup.dialect == Dialect::Carvera) {
         setup.rack = carveraRack();

@@ -22,7 +22,7 @@ Result<PrepareOptions> readPrepareOptions(Invocation &call, const JobCheckSetup 
     o.useStoredTlo = call.has(u"use-stored-tlo"_s);
     o.breakTest = call.has(u"break-test"_s);
     o.staleDays = setup.staleDays;
-    o.rack = setup.rack;
+    o.rack = setup.rack.value_or(QList<int> {});
     o.now = setup.now;
     o.zFloor = setup.zFloor;
     if (call.has(u"tolerance"_s)) {

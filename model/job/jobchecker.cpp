@@ -6,6 +6,8 @@
 
 #include "model/limits.h"
 #include "model/numberformat.h"
+#include "model/textparsing.h"
+#include "model/translate.h"
 #include "model/timetext.h"
 #include "model/tooltable.h"
 
@@ -38,6 +40,40 @@ void JobCheckSetup::useTable(const ToolTable &table)
 QList<int> carveraRack()
 {
     return { 1, 2, 3, 4, 5, 6 };
+}
+
+Result<QList<int>> parseRack(const QString &text)
+{
+    if (text.trimmed() == u"none"_s)
+        return QList<int> {};
+    const Error refused { tr("a rack is \"none\", or tool numbers and ranges such as 1-6 or 1,2,5-8.") };
+    QList<int> tools;
+    for (const QString &item : text.split(u',')) {
+        const QStringList ends = item.trimmed().split(u'-');
+        const auto first = parseInteger(ends.value(0).trimmed().toUtf8());
+        const auto last = ends.size() == 2 ? parseInteger(ends.value(1).trimmed().toUtf8()) : first;
+        if (ends.size() > 2 || !first || !last || *first < 0 || *last < *first
+            || *last > Limits::kMaxToolNumber || *last - *first > 9999)
+            return refused;
+        for (qint64 n = *first; n <= *last; ++n)
+            tools.append(int(n));
+    }
+    return tools;
+}
+
+QString rackText(const QList<int> &rack)
+{
+    if (rack.isEmpty())
+        return u"none"_s;
+    QStringList parts;
+    for (qsizetype i = 0; i < rack.size();) {
+        qsizetype j = i;
+        while (j + 1 < rack.size() && rack.at(j + 1) == rack.at(j) + 1)
+            ++j;
+        parts << (j > i ? u"%1-%2"_s.arg(rack.at(i)).arg(rack.at(j)) : QString::number(rack.at(i)));
+        i = j + 1;
+    }
+    return parts.join(u',');
 }
 
 bool isCarveraNonCutter(int tool)

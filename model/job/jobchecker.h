@@ -27,7 +27,9 @@ struct JobCheckSetup
     QHash<int, ToolFacts> facts; // from the table; the library's are added once the program's tools are known
     std::optional<double> zFloor; // work Z no feed move may go below
     int staleDays = 7;
-    QList<int> rack; // the tools the machine's rack holds; empty when it has none or it is not known
+    // The tools the machine's rack holds: every other is a manual change. Empty: it has no rack; nothing: not
+    // known (no finding either way).
+    std::optional<QList<int>> rack;
     QDateTime now = QDateTime::currentDateTimeUtc();
 
     // Everything `table` says, for `dialect`.
@@ -36,6 +38,9 @@ struct JobCheckSetup
 
 // The tools a Carvera C1's rack holds (docs/CARVERA.md § 7): T1 to T6.
 [[nodiscard]] QList<int> carveraRack();
+// A rack as an operator writes it: "none", or tool numbers and ranges ("1-6", "1,2,5-8"); and back.
+[[nodiscard]] Result<QList<int>> parseRack(const QString &text);
+[[nodiscard]] QString rackText(const QList<int> &rack);
 // The Carvera's probes (T0 wireless, T999990-999999 3-axis) and its empty spindle (T-1): loaded, but not
 // cutters to look up in a table.
 [[nodiscard]] bool isCarveraNonCutter(int tool);

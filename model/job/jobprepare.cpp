@@ -24,7 +24,7 @@ JobCheckSetup checkSetup(const ToolTable &table, const PrepareOptions &options)
     setup.useTable(table);
     setup.zFloor = options.zFloor;
     setup.staleDays = options.staleDays;
-    setup.rack = options.rack;
+    setup.rack = options.dialect == Dialect::Carvera ? std::optional(options.rack) : std::nullopt;
     setup.now = options.now;
     return setup;
 }

@@ -69,7 +69,7 @@ void JobChecker::toolFindings(const JobTool &tool)
     // T0 is no tool on the other controllers (LinuxCNC's empty spindle), the wireless probe on the Carvera.
     if (n == 0 || (carvera && isCarveraNonCutter(n)))
         return;
-    if (!m_setup.rack.isEmpty() && !m_setup.rack.contains(n))
+    if (m_setup.rack && !m_setup.rack->contains(n))
         noteForTool(FindingKind::ManualChange, tool,
             tr("The machine's rack does not hold T%1: it is a manual change, and the machine waits for the "
                "operator.")

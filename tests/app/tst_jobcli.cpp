@@ -110,7 +110,7 @@ private Q_SLOTS:
         QTest::newRow("bad dialect") << QStringList { u"job"_s, u"check"_s, program, u"--dialect"_s,
             u"heidenhain"_s } << u"--dialect must be one of"_s;
         QTest::newRow("bad rack") << QStringList { u"job"_s, u"check"_s, program, u"--rack"_s, u"6-1"_s }
-                                  << u"--rack must be none"_s;
+                                  << u"--rack: a rack is \"none\""_s;
         QTest::newRow("bad stale days") << QStringList { u"job"_s, u"check"_s, program, u"--stale-days"_s,
             u"0"_s } << u"--stale-days must be"_s;
         QTest::newRow("prepare without table") << QStringList { u"job"_s, u"prepare"_s, program, u"-o"_s,

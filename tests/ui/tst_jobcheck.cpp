@@ -8,6 +8,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMimeData>
 #include <QPlainTextEdit>
 #include <QProgressBar>
@@ -112,11 +113,16 @@ private Q_SLOTS:
         QVERIFY2(summary.contains(u"13 lines as Carvera"_s) && summary.contains(u"1 error, 2 warnings"_s),
             qPrintable(summary));
         QVERIFY(!dialog->findChild<QProgressBar *>(u"jobProgress"_s)->isVisible());
+        // A program with errors is not prepared; the button says why.
+        auto *prepare = dialog->findChild<QPushButton *>(u"jobPrepareButton"_s);
+        QVERIFY(!prepare->isEnabled());
+        QVERIFY(prepare->toolTip().contains(u"fix them before preparing"_s));
+        // Tab leaves a table for the next control.
+        QVERIFY(!findings->tabKeyNavigation());
 
-        // The floor: the plunge of T9 to Z-22 is below it.
-        dialog->findChild<QCheckBox *>(u"jobFloorCheck"_s)->setChecked(true);
+        // The floor: the plunge of T9 to Z-22 is below it. Setting it checks again by itself.
         dialog->findChild<QDoubleSpinBox *>(u"jobFloorSpin"_s)->setValue(-20.0);
-        QTest::mouseClick(dialog->findChild<QPushButton *>(u"jobCheckAgainButton"_s), Qt::LeftButton);
+        dialog->findChild<QCheckBox *>(u"jobFloorCheck"_s)->setChecked(true);
         QVERIFY(waitForCheck(dialog));
         QCOMPARE(column(findings->model(), JobFindingsModel::LineColumn), u"9|11|11|12"_s);
         QCOMPARE(dialog->report()->errors(), 2);
@@ -174,7 +180,7 @@ private Q_SLOTS:
         QVERIFY(prepare->isEnabled());
         const QString output = m_dir.filePath(u"two.prepared.nc"_s);
         bool saw = false;
-        QTimer::singleShot(0, this, [&saw, output] {
+        QTimer::singleShot(0, this, [&saw, output, program] {
             auto *prep = qobject_cast<JobPrepareDialog *>(QApplication::activeModalWidget());
             QVERIFY(prep);
             // Closed however the checks below end, so that a failure fails the test instead of hanging it.
@@ -197,6 +203,12 @@ private Q_SLOTS:
             QVERIFY(!prep->findChild<QPushButton *>(u"prepareSaveButton"_s)->isEnabled());
             prep->findChild<QCheckBox *>(u"prepareBreakTestCheck"_s)->setChecked(true);
             QVERIFY(QTest::qWaitFor([prep] { return !prep->isRunning() && prep->summary(); }, 30000));
+            // Saving over the program itself is refused; the preview stays.
+            prep->saveTo(program);
+            QVERIFY(QTest::qWaitFor([prep] { return !prep->isRunning(); }, 30000));
+            QVERIFY(prep->findChild<QLabel *>(u"prepareStatusLabel"_s)->text().startsWith(u"Not saved"_s));
+            QVERIFY(prep->findChild<QTableWidget *>(u"preparePreview"_s)->rowCount() > 0);
+            QVERIFY(prep->findChild<QPushButton *>(u"prepareSaveButton"_s)->isEnabled());
             prep->saveTo(output);
             QVERIFY(QTest::qWaitFor([prep] { return !prep->savedTo().isEmpty(); }, 30000));
             saw = true;
@@ -211,6 +223,27 @@ private Q_SLOTS:
         QVERIFY(waitForCheck(window.openJobCheck(output)));
         QCOMPARE(dialog->report()->errors(), 0);
         QCOMPARE(dialog->report()->program, u"two.prepared.nc"_s);
+    }
+
+    void aMachineWithoutARackMakesEveryChangeManual()
+    {
+        MainWindow window;
+        QVERIFY(window.openFile(kExample));
+        window.show();
+        JobCheckDialog *dialog = window.openJobCheck(write(m_dir, u"rack.nc"_s, "M6 T2\nG1 Z-1 F100\nM30\n"));
+        QVERIFY(waitForCheck(dialog));
+        QCOMPARE(dialog->report()->findings.size(), 0);
+        auto *rack = dialog->findChild<QLineEdit *>(u"jobRackEdit"_s);
+        QCOMPARE(rack->text(), u"1-6"_s);
+        rack->setText(u"none"_s);
+        Q_EMIT rack->editingFinished();
+        QVERIFY(waitForCheck(dialog));
+        QCOMPARE(dialog->report()->findings.size(), 1);
+        QCOMPARE(dialog->report()->findings.front().kind, FindingKind::ManualChange);
+        QCOMPARE(QSettings().value(u"jobs/rack"_s).toString(), u"none"_s);
+        rack->setText(u"1-6"_s);
+        Q_EMIT rack->editingFinished();
+        QVERIFY(waitForCheck(dialog));
     }
 
     void aProgramDroppedOnTheWindowIsChecked()
@@ -248,9 +281,9 @@ private Q_SLOTS:
         JobCheckDialog *dialog = window.openJobCheck(
             write(m_dir, u"fanuc.nc"_s, "T1 M6\nG43 H1 Z50\nG1 Z-1 F100\nT2 M6\nG1 Z-2\nM30\n"));
         QVERIFY(waitForCheck(dialog));
+        // Another controller in the list is another check, run at once.
         auto *combo = dialog->findChild<QComboBox *>(u"jobDialectCombo"_s);
         combo->setCurrentIndex(combo->findData(u"fanuc"_s));
-        QTest::mouseClick(dialog->findChild<QPushButton *>(u"jobCheckAgainButton"_s), Qt::LeftButton);
         QVERIFY(waitForCheck(dialog));
         QCOMPARE(dialog->report()->dialect, Dialect::Fanuc);
         QCOMPARE(dialog->report()->findings.size(), 1);

@@ -37,7 +37,7 @@ ToolTable shopTable()
 }
 
 JobReport check(const QByteArray &program, Dialect dialect, const ToolTable &table,
-    std::optional<double> zFloor = {}, QList<int> rack = {})
+    std::optional<double> zFloor = {}, std::optional<QList<int>> rack = {})
 {
     JobCheckSetup setup;
     setup.dialect = dialect;
@@ -83,7 +83,7 @@ private Q_SLOTS:
                                    "G1 Z-1\n"
                                    "M6 T7\n" // 12: outside the rack
                                    "G1 Z-1\nM30\n";
-        const JobReport r = check(program, Dialect::Carvera, shopTable(), {}, { 1, 2, 3, 4, 5, 6 });
+        const JobReport r = check(program, Dialect::Carvera, shopTable(), {}, carveraRack());
         QCOMPARE(r.tools.size(), 6);
         QCOMPARE(r.tools.at(0).number, 2);
         QCOMPARE(r.tools.at(4).number, 9);
@@ -113,6 +113,12 @@ private Q_SLOTS:
         QCOMPARE(r.errors(), 2);
         QCOMPARE(r.warnings(), 4);
         QCOMPARE(r.exitCode(), 4);
+        // With no rack, every change is manual; with none known, nothing is said of it.
+        QCOMPARE(find(check(program, Dialect::Carvera, shopTable(), {}, QList<int> {}),
+                     FindingKind::ManualChange, 2)
+                     ->line,
+            2);
+        QVERIFY(!find(check(program, Dialect::Carvera, shopTable()), FindingKind::ManualChange));
         // In line order.
         for (qsizetype i = 1; i < r.findings.size(); ++i)
             QVERIFY(r.findings.at(i - 1).line <= r.findings.at(i).line);
