@@ -51,7 +51,25 @@ QTableView *reportView(
     view->horizontalHeader()->setStretchLastSection(true);
     view->setWordWrap(false);
     view->setTabKeyNavigation(false); // Tab leaves the table for the next control; the arrows move in it
+    view->verticalHeader()->setDefaultSectionSize(view->fontMetrics().height() + 8);
     return view;
+}
+
+// A table with its title above it, the title's shortcut focusing it.
+QWidget *titled(const QString &title, QWidget *content, QWidget *parent)
+{
+    auto *box = new QWidget(parent);
+    auto *label = new QLabel(title, box);
+    label->setBuddy(content);
+    QFont bold = label->font();
+    bold.setBold(true);
+    label->setFont(bold);
+    auto *layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addWidget(label);
+    layout->addWidget(content, 1);
+    return box;
 }
 
 // Everything a check needs, copied for its thread: it shares nothing with the window while it runs.
@@ -175,8 +193,8 @@ void JobCheckDialog::buildControls()
     running->addWidget(m_progress, 1);
     running->addWidget(m_cancel);
     auto *split = new QSplitter(Qt::Vertical, this);
-    split->addWidget(m_tools);
-    split->addWidget(m_findings);
+    split->addWidget(titled(tr("&Tools, in order of use"), m_tools, this));
+    split->addWidget(titled(tr("F&indings, by line"), m_findings, this));
     split->addWidget(m_excerpt);
     split->setSizes({ 170, 260, 150 });
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);

@@ -121,6 +121,8 @@ JobPrepareDialog::JobPrepareDialog(QString program, JobSources sources, Dialect 
     m_preview->setAccessibleName(tr("The original and the prepared program, side by side"));
     m_preview->setHorizontalHeaderLabels({ tr("Line"), tr("Original"), tr("Line"), tr("Prepared") });
     m_preview->verticalHeader()->hide();
+    m_preview->verticalHeader()->setDefaultSectionSize(m_preview->fontMetrics().height() + 6);
+    m_preview->setTabKeyNavigation(false);
     m_preview->setWordWrap(false);
     m_preview->setEditTriggers(QAbstractItemView::NoEditTriggers);
     useMonospace(m_preview);
@@ -239,8 +241,10 @@ void JobPrepareDialog::showPreview()
     const QColor inserted(0x43, 0xa0, 0x47, 90);
     const QColor changed(0xe6, 0x7e, 0x00, 90);
     m_preview->setRowCount(0);
+    int lastPrepared = 0;
     for (const PrepareHunk &hunk : s.hunks) {
-        if (m_preview->rowCount() > 0) {
+        // "⋯" between two pieces only where lines were left out between them.
+        if (m_preview->rowCount() > 0 && !hunk.isEmpty() && hunk.front().preparedLine != lastPrepared + 1) {
             m_preview->insertRow(m_preview->rowCount());
             m_preview->setItem(m_preview->rowCount() - 1, OriginalColumn, cell(u"⋯"_s));
         }
@@ -257,6 +261,7 @@ void JobPrepareDialog::showPreview()
             }
             m_preview->setItem(r, PreparedLineColumn, cell(QString::number(row.preparedLine), mark));
             m_preview->setItem(r, PreparedColumn, cell(row.prepared, mark));
+            lastPrepared = row.preparedLine;
         }
     }
     m_preview->resizeColumnsToContents();
