@@ -56,6 +56,17 @@ void BackgroundTask::cancel()
         m_cancel = true;
 }
 
+void BackgroundTask::stopThen(QObject *context, const std::function<void()> &then)
+{
+    if (!m_thread) {
+        then();
+        return;
+    }
+    m_cancel = true;
+    connect(
+        this, &BackgroundTask::finished, context, [then] { then(); }, Qt::SingleShotConnection);
+}
+
 void BackgroundTask::report()
 {
     const qint64 total = m_total.load();

@@ -31,6 +31,8 @@ public:
     // Starts `work`; false when a piece of work is still running.
     bool start(Work work);
     void cancel();
+    // Cancels the work and calls `then` once it has stopped (at once when none runs): a dialog closing.
+    void stopThen(QObject *context, const std::function<void()> &then);
     [[nodiscard]] bool isRunning() const { return m_thread != nullptr; }
     [[nodiscard]] bool isCancelled() const { return m_cancel.load(); }
 

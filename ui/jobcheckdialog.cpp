@@ -374,13 +374,8 @@ void JobCheckDialog::saveSettings()
 
 void JobCheckDialog::reject()
 {
-    // Closing stops the check; the dialog goes once it has.
-    if (m_task->isRunning()) {
-        m_task->cancel();
-        connect(m_task, &BackgroundTask::finished, this, &QDialog::reject, Qt::SingleShotConnection);
-        return;
-    }
-    QDialog::reject();
+    // Closing stops the work; the dialog goes once it has.
+    m_task->stopThen(this, [this] { QDialog::reject(); });
 }
 
 } // namespace Toffee

@@ -304,12 +304,8 @@ void JobPrepareDialog::setRunning(bool running)
 
 void JobPrepareDialog::reject()
 {
-    if (m_task->isRunning()) {
-        m_task->cancel();
-        connect(m_task, &BackgroundTask::finished, this, &QDialog::reject, Qt::SingleShotConnection);
-        return;
-    }
-    QDialog::reject();
+    // Closing stops the work; the dialog goes once it has.
+    m_task->stopThen(this, [this] { QDialog::reject(); });
 }
 
 } // namespace Toffee

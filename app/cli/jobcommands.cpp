@@ -165,12 +165,8 @@ int checkJob(Invocation &call)
     if (!setup)
         return fail(call, setup.error().text(), BadInput);
     const QDateTime now = setup.value().now;
-    JobFactSource history;
-    if (library)
-        history = [&library, &machine](QHash<int, ToolFacts> &facts, const QList<int> &tools) {
-            return addLibraryFacts(facts, *library, machine, tools);
-        };
-    const auto report = checkJobFile(call.arguments.at(1), setup.takeValue(), history);
+    const auto report
+        = checkJobFile(call.arguments.at(1), setup.takeValue(), libraryFacts(library.get(), machine));
     if (!report)
         return fail(call, report.error().text(), BadInput);
     if (call.json)

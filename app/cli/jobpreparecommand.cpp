@@ -89,10 +89,7 @@ int prepareJob(Invocation &call)
     const QString output = call.option(u"output"_s);
     PrepareGuards guards;
     guards.protectedFiles = { call.option(u"table"_s) };
-    if (library)
-        guards.moreFacts = [&library, &machine](QHash<int, ToolFacts> &facts, const QList<int> &tools) {
-            return addLibraryFacts(facts, *library, machine, tools);
-        };
+    guards.moreFacts = libraryFacts(library.get(), machine);
     const auto summary
         = prepareJobFile(call.arguments.at(1), table.value(), options.value(), output, {}, guards);
     if (!summary)

@@ -36,12 +36,8 @@ Result<JobReport> checkJobFile(
     }
     if (reader.error())
         return *reader.error();
-    if (moreFacts) {
-        QHash<int, ToolFacts> facts = checker.facts();
-        if (auto added = moreFacts(facts, checker.toolNumbers()); !added)
-            return added.error();
-        checker.addFacts(facts);
-    }
+    if (auto added = checker.addFacts(moreFacts); !added)
+        return added.error();
     if (progress && !cancelled)
         progress(reader.size(), reader.size());
     return checker.finish(QFileInfo(path).fileName(), cancelled);

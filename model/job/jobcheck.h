@@ -12,8 +12,6 @@ namespace Toffee {
 
 // Told now and then how far the check is (bytes of the file read, of its size); returning false cancels it.
 using JobProgress = std::function<bool(qint64 done, qint64 total)>;
-// Adds what is known of the program's tools beyond the table (the history library), once they are known.
-using JobFactSource = std::function<Result<void>(QHash<int, ToolFacts> &facts, const QList<int> &tools)>;
 
 // Checks the program at `path` a line at a time (LineReader): its memory does not grow with the program.
 // A file that cannot be read, or a line too long for any program, is an error; what the program does wrong is

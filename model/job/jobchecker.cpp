@@ -7,9 +7,9 @@
 #include "model/limits.h"
 #include "model/numberformat.h"
 #include "model/textparsing.h"
-#include "model/translate.h"
 #include "model/timetext.h"
 #include "model/tooltable.h"
+#include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
@@ -249,10 +249,15 @@ QList<int> JobChecker::toolNumbers() const
     return numbers;
 }
 
-void JobChecker::addFacts(const QHash<int, ToolFacts> &facts)
+Result<void> JobChecker::addFacts(const JobFactSource &source)
 {
-    for (auto it = facts.cbegin(); it != facts.cend(); ++it)
-        m_setup.facts.insert(it.key(), it.value());
+    if (!source)
+        return {};
+    QHash<int, ToolFacts> facts = m_setup.facts;
+    if (auto added = source(facts, toolNumbers()); !added)
+        return added;
+    m_setup.facts = std::move(facts);
+    return {};
 }
 
 } // namespace Toffee

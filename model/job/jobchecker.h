@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include <QCoreApplication>
@@ -15,6 +16,9 @@
 namespace Toffee {
 
 class ToolTable;
+
+// Adds what is known of the program's tools beyond the table (the history library), once they are known.
+using JobFactSource = std::function<Result<void>(QHash<int, ToolFacts> &facts, const QList<int> &tools)>;
 
 // What a program is checked against: the controller, the table (its units, offsets and what it knows of each
 // tool), the machine's rack, and the limits.
@@ -65,8 +69,8 @@ public:
     // The tools loaded so far, in the order of first use.
     [[nodiscard]] QList<int> toolNumbers() const;
     [[nodiscard]] const QHash<int, ToolFacts> &facts() const { return m_setup.facts; }
-    // Adds (or replaces) what is known of tools (the library's facts, once toolNumbers() is known).
-    void addFacts(const QHash<int, ToolFacts> &facts);
+    // Adds what `source` knows of the tools loaded so far (the library's facts, once the program is read).
+    [[nodiscard]] Result<void> addFacts(const JobFactSource &source);
     [[nodiscard]] JobReport finish(const QString &program, bool cancelled);
 
 private:

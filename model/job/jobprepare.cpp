@@ -68,12 +68,8 @@ Result<PrepareSummary> run(const QString &path, const ToolTable &table, const Pr
     }
     if (reader.error())
         return *reader.error();
-    if (moreFacts) {
-        QHash<int, ToolFacts> facts = checker.facts();
-        if (auto added = moreFacts(facts, checker.toolNumbers()); !added)
-            return added.error();
-        checker.addFacts(facts);
-    }
+    if (auto added = checker.addFacts(moreFacts); !added)
+        return added.error();
     if (const JobReport report = checker.finish(QFileInfo(path).fileName(), false); report.errors() > 0)
         return checkFailed(report, path);
     auto summary = preparer.finish(sink);

@@ -27,8 +27,8 @@ struct PrepareOptions
     bool breakTest = false;
     double tolerance = Limits::kDefaultBreakTolerance;
     int staleDays = 7;
-    // The tools the machine's rack holds (it always measures those at a change); empty: no rack, every change is
-    // manual.
+    // The tools the machine's rack holds (it always measures those at a change); empty: no rack, every change
+    // is manual.
     QList<int> rack;
     QDateTime now = QDateTime::currentDateTimeUtc();
     // The machine's reference MCS Z, when it is known (the window, connected): a stored TLO measured against

@@ -53,6 +53,16 @@ Result<std::optional<HistoryEvent>> newest(
 
 } // namespace
 
+std::function<Result<void>(QHash<int, ToolFacts> &, const QList<int> &)> libraryFacts(
+    const Library *library, const QString &machine)
+{
+    if (!library)
+        return {};
+    return [library, machine](QHash<int, ToolFacts> &facts, const QList<int> &tools) {
+        return addLibraryFacts(facts, *library, machine, tools);
+    };
+}
+
 Result<void> addLibraryFacts(
     QHash<int, ToolFacts> &facts, const Library &library, const QString &machine, const QList<int> &tools)
 {

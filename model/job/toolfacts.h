@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include <QDateTime>
@@ -39,6 +40,10 @@ struct ToolFacts
 
 // Each tool of the table.
 [[nodiscard]] QHash<int, ToolFacts> factsFromTable(const ToolTable &table);
+// What the library holds for `machine`, as the job check asks for it; nothing without a library. The library
+// must outlive what this returns.
+[[nodiscard]] std::function<Result<void>(QHash<int, ToolFacts> &, const QList<int> &)> libraryFacts(
+    const Library *library, const QString &machine);
 // Adds what the library holds for `machine` of each of `tools` (its newest measurement and break test). A
 // tool the table lacks takes its TLO from the library.
 [[nodiscard]] Result<void> addLibraryFacts(

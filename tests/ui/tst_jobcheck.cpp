@@ -11,6 +11,7 @@
 #include <QLineEdit>
 #include <QMimeData>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScopeGuard>
@@ -166,6 +167,12 @@ private Q_SLOTS:
         QVERIFY(waitForCheck(dialog));
         QVERIFY(!dialog->report()->cancelled);
         QCOMPARE(dialog->report()->lines, 3000000);
+        // Escape while a check runs stops it, then closes the dialog.
+        QPointer<JobCheckDialog> closing = dialog;
+        QTest::mouseClick(dialog->findChild<QPushButton *>(u"jobCheckAgainButton"_s), Qt::LeftButton);
+        QVERIFY(dialog->isRunning());
+        QTest::keyClick(dialog, Qt::Key_Escape);
+        QVERIFY(QTest::qWaitFor([&closing] { return closing.isNull(); }, 30000));
     }
 
     void preparesTheProgramWithASideBySidePreview()
