@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // toffee-cli import: tools from a CAM library into a table, showing first what is new and what changes.
+#include <optional>
+
 #include <QFileInfo>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
 
 #include "app/cli/cli.h"
@@ -42,6 +45,8 @@ void printPreview(Invocation &call, const CamLibrary &library, const ImportPrevi
                         .arg(tool.description);
         for (const QString &field : tool.fields)
             call.out << "                      " << field << '\n';
+        for (const QString &note : tool.notes)
+            call.out << "                      note: " << note << '\n';
     }
 }
 
@@ -50,7 +55,11 @@ QJsonObject previewJson(const CamLibrary &library, const QString &table, const I
     QJsonArray added;
     QJsonArray changed;
     QJsonArray unchanged;
+    QJsonArray notes;
     for (const ImportedTool &tool : preview.tools()) {
+        if (!tool.notes.isEmpty())
+            notes.append(QJsonObject {
+                { u"number"_s, tool.number }, { u"notes"_s, QJsonArray::fromStringList(tool.notes) } });
         if (tool.change == ImportChange::New)
             added.append(tool.number);
         else if (tool.change == ImportChange::Unchanged)
@@ -60,8 +69,34 @@ QJsonObject previewJson(const CamLibrary &library, const QString &table, const I
                 { u"number"_s, tool.number }, { u"fields"_s, QJsonArray::fromStringList(tool.fields) } });
     }
     return QJsonObject { { u"source"_s, library.path }, { u"format"_s, camFormatName(library.format) },
-        { u"table"_s, table }, { u"new"_s, added }, { u"changed"_s, changed },
-        { u"unchanged"_s, unchanged } };
+        { u"table"_s, table }, { u"new"_s, added }, { u"changed"_s, changed }, { u"unchanged"_s, unchanged },
+        { u"notes"_s, notes } };
+}
+
+// Why `path`, given as --into, is no tool table though it exists: a CAM library or program, or JSON that is
+// not Toffee's. Nothing when it may be a table: the table's reader then says what is wrong with it, if
+// anything.
+std::optional<QString> notATable(const QString &path)
+{
+    const auto cam = camFormatForPath(path);
+    if (!cam || !QFileInfo(path).isFile())
+        return std::nullopt;
+    if (*cam == CamFormat::MakeraProgram)
+        return u"a G-code program, not a tool table"_s;
+    if (*cam == CamFormat::FusionArchive)
+        return u"a Fusion tool library (.tools), not a tool table"_s;
+    if (*cam == CamFormat::HsmLibrary)
+        return u"an HSM tool library (.hsmlib), not a tool table"_s;
+    const auto data = readRegularFile(path, kMaxCamLibraryBytes);
+    if (!data || isToffeeTable(data.value()))
+        return std::nullopt;
+    QJsonParseError parsed {};
+    const QJsonDocument json = QJsonDocument::fromJson(data.value(), &parsed);
+    if (parsed.error != QJsonParseError::NoError)
+        return std::nullopt; // the table's reader shows where the JSON breaks
+    if (readFusionJson(data.value()) || json.object().value(u"data"_s).isArray())
+        return u"a Fusion tool library, not a tool table"_s;
+    return u"JSON but not a tool table (it has no \"format\": \"toffee-tool-table\")"_s;
 }
 
 } // namespace
@@ -74,6 +109,11 @@ int importTools(Invocation &call)
     const auto units = call.has(u"units"_s) ? unitsFromSymbol(call.option(u"units"_s)) : Units::Millimetre;
     if (!units)
         return fail(call, u"--units must be mm or in."_s, BadInput);
+    // Refused before anything is read or written: a library given as --into would be read as a table of a
+    // "newer Toffee", or, named .tools or .nc, not be told apart from a misspelt table.
+    if (const auto what = notATable(tablePath))
+        return fail(call,
+            u"%1 is %2: give a .json, .tbl or .csv tool table as --into."_s.arg(tablePath, *what), BadInput);
     const auto format = formatForPath(tablePath);
     if (!format)
         return fail(call,
