@@ -584,16 +584,56 @@
         <translation>entpackt ergibt sie mehr als %1 MB; Toffee liest Bibliotheken von höchstens %1 MB.</translation>
     </message>
     <message>
-        <source>this is not a .tools archive: a zip archive could not be read from it (%1).</source>
-        <translation>das ist kein .tools-Archiv: es ließ sich nicht als ZIP-Archiv lesen (%1).</translation>
+        <source>this is not a .tools archive Toffee can read: %1.</source>
+        <translation>das ist kein .tools-Archiv, das Toffee lesen kann: %1.</translation>
     </message>
     <message>
         <source>it cannot be unpacked: %1.</source>
         <translation>sie lässt sich nicht entpacken: %1.</translation>
     </message>
     <message>
-        <source>it cannot be unpacked: %1; the archive is damaged or truncated.</source>
-        <translation>sie lässt sich nicht entpacken: %1; das Archiv ist beschädigt oder abgeschnitten.</translation>
+        <source>it is not a zip archive, or one cut short (there is no zip directory at its end)</source>
+        <translation>es ist kein ZIP-Archiv oder eines, das abgeschnitten ist (an seinem Ende steht kein ZIP-Verzeichnis)</translation>
+    </message>
+    <message>
+        <source>two of its entries have the same name, so it cannot be told which one is meant</source>
+        <translation>zwei seiner Einträge haben denselben Namen, daher lässt sich nicht sagen, welcher gemeint ist</translation>
+    </message>
+    <message>
+        <source>the archive is damaged (its directory and its entries disagree)</source>
+        <translation>das Archiv ist beschädigt (sein Verzeichnis und seine Einträge passen nicht zusammen)</translation>
+    </message>
+    <message>
+        <source>it is one part of an archive split over several files</source>
+        <translation>es ist ein Teil eines auf mehrere Dateien verteilten Archivs</translation>
+    </message>
+    <message>
+        <source>the archive is damaged (what it unpacks to fails its checksum)</source>
+        <translation>das Archiv ist beschädigt (der entpackte Inhalt besteht die Prüfsumme nicht)</translation>
+    </message>
+    <message>
+        <source>it is compressed in a way Toffee cannot unpack (Fusion&apos;s own archives use deflate)</source>
+        <translation>es ist auf eine Weise komprimiert, die Toffee nicht entpacken kann (Fusions eigene Archive verwenden Deflate)</translation>
+    </message>
+    <message>
+        <source>it is encrypted; Toffee reads archives without a password</source>
+        <translation>es ist verschlüsselt; Toffee liest Archive ohne Passwort</translation>
+    </message>
+    <message>
+        <source>its compressed data is damaged</source>
+        <translation>seine komprimierten Daten sind beschädigt</translation>
+    </message>
+    <message>
+        <source>the archive is truncated (it ends early)</source>
+        <translation>das Archiv ist abgeschnitten (es endet zu früh)</translation>
+    </message>
+    <message>
+        <source>there is not enough memory to unpack it</source>
+        <translation>zum Entpacken ist nicht genug Speicher frei</translation>
+    </message>
+    <message>
+        <source>libzip says: %1</source>
+        <translation>libzip meldet: %1</translation>
     </message>
     <message>
         <source>this is not a .tools archive: the file is empty.</source>
@@ -602,6 +642,10 @@
     <message>
         <source>the archive holds no %1; a Fusion .tools file is a zip archive with the library in %1.</source>
         <translation>das Archiv enthält keine %1; eine Fusion-.tools-Datei ist ein ZIP-Archiv mit der Bibliothek in %1.</translation>
+    </message>
+    <message>
+        <source>the archive holds %1 twice (%2 and %3); Toffee will not guess which one is the library.</source>
+        <translation>das Archiv enthält %1 zweimal (%2 und %3); Toffee rät nicht, welche davon die Bibliothek ist.</translation>
     </message>
     <message>
         <source>a list</source>
@@ -642,6 +686,14 @@
     <message>
         <source>this tool line has no number=…; Toffee needs the T number.</source>
         <translation>diese Werkzeugzeile hat kein number=…; Toffee braucht die T-Nummer.</translation>
+    </message>
+    <message>
+        <source>%1 is in this tool line twice (%1=%2 and %1=%3); Toffee will not guess which one is meant.</source>
+        <translation>%1 steht zweimal in dieser Werkzeugzeile (%1=%2 und %1=%3); Toffee rät nicht, welcher Wert gemeint ist.</translation>
+    </message>
+    <message>
+        <source>this is not a text program: it holds binary data (a NUL byte), which a G-code program never does.</source>
+        <translation>das ist kein Textprogramm: es enthält Binärdaten (ein NUL-Byte), was ein G-Code-Programm nie tut.</translation>
     </message>
     <message>
         <source>the program&apos;s first %1 MB are all comments; Toffee reads the tool header only from the start of a program.</source>
@@ -1071,6 +1123,10 @@
     <message>
         <source>its "number" is %1, not a whole number.</source>
         <translation>seine „number“ ist %1, keine ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>its "length-offset" is %1, not a whole number.</source>
+        <translation>sein „length-offset“ ist %1, keine ganze Zahl.</translation>
     </message>
     <message>
         <source>its "number" %1 is out of range; use %2 to %3.</source>
@@ -1504,6 +1560,14 @@
         <translation>seine nc-Nummer ist „%1“, keine Werkzeugnummer.</translation>
     </message>
     <message>
+        <source>it has a second &lt;%1&gt; (the first is on line %2); a tool has one, and Toffee will not guess which one is meant.</source>
+        <translation>es hat ein zweites &lt;%1&gt; (das erste steht in Zeile %2); ein Werkzeug hat nur eines, und Toffee rät nicht, welches gemeint ist.</translation>
+    </message>
+    <message>
+        <source>its nc length-offset is "%1", not a whole number.</source>
+        <translation>sein nc-length-offset ist „%1“, keine ganze Zahl.</translation>
+    </message>
+    <message>
         <source>its body %1 is "%2", not a number.</source>
         <translation>sein body-Attribut %1 ist „%2“, keine Zahl.</translation>
     </message>
@@ -1529,6 +1593,14 @@
     <message>
         <source>radius %1 → %2 %3</source>
         <translation>Radius %1 → %2 %3</translation>
+    </message>
+    <message>
+        <source>pocket %1; no tool length yet (0 in the table): measure it before use</source>
+        <translation>Platz %1; noch keine Werkzeuglänge (0 in der Tabelle): vor dem Einsatz messen</translation>
+    </message>
+    <message>
+        <source>the library gives length offset H%1; Toffee always uses H = T (H%2), so it is not imported</source>
+        <translation>die Bibliothek gibt die Längenkorrektur H%1 an; Toffee verwendet immer H = T (H%2), daher wird sie nicht importiert</translation>
     </message>
     <message>
         <source>CAM lengths added to the notes (%1)</source>
@@ -1616,6 +1688,18 @@
     <message>
         <source>Changes</source>
         <translation>Änderungen</translation>
+    </message>
+    <message>
+        <source>Changes and notes of the selected tool</source>
+        <translation>Änderungen und Hinweise zum ausgewählten Werkzeug</translation>
+    </message>
+    <message>
+        <source>T%1 (%2): %3</source>
+        <translation>T%1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>The table already has this tool as the library describes it.</source>
+        <translation>Die Tabelle hat dieses Werkzeug schon so, wie die Bibliothek es beschreibt.</translation>
     </message>
     <message>
         <source>Import the tools</source>
@@ -2050,8 +2134,8 @@
         <translation>Speichern &amp;unter …</translation>
     </message>
     <message>
-        <source>&amp;Import…</source>
-        <translation>&amp;Importieren …</translation>
+        <source>Import &amp;Tools…</source>
+        <translation>&amp;Werkzeuge importieren …</translation>
     </message>
     <message>
         <source>&amp;Export…</source>

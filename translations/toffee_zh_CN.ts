@@ -584,16 +584,56 @@
         <translation>解压后超过 %1 MB；Toffee 只读取不超过 %1 MB 的刀具库。</translation>
     </message>
     <message>
-        <source>this is not a .tools archive: a zip archive could not be read from it (%1).</source>
-        <translation>这不是 .tools 归档：无法将其作为 zip 归档读取（%1）。</translation>
+        <source>this is not a .tools archive Toffee can read: %1.</source>
+        <translation>这不是 Toffee 能读取的 .tools 归档：%1。</translation>
     </message>
     <message>
         <source>it cannot be unpacked: %1.</source>
         <translation>无法解压：%1。</translation>
     </message>
     <message>
-        <source>it cannot be unpacked: %1; the archive is damaged or truncated.</source>
-        <translation>无法解压：%1；归档已损坏或不完整。</translation>
+        <source>it is not a zip archive, or one cut short (there is no zip directory at its end)</source>
+        <translation>它不是 zip 归档，或是一个被截断的归档（末尾没有 zip 目录）</translation>
+    </message>
+    <message>
+        <source>two of its entries have the same name, so it cannot be told which one is meant</source>
+        <translation>其中两个条目同名，无法确定指的是哪一个</translation>
+    </message>
+    <message>
+        <source>the archive is damaged (its directory and its entries disagree)</source>
+        <translation>归档已损坏（其目录与条目不一致）</translation>
+    </message>
+    <message>
+        <source>it is one part of an archive split over several files</source>
+        <translation>它是拆分为多个文件的归档中的一部分</translation>
+    </message>
+    <message>
+        <source>the archive is damaged (what it unpacks to fails its checksum)</source>
+        <translation>归档已损坏（解压出的内容未通过校验和）</translation>
+    </message>
+    <message>
+        <source>it is compressed in a way Toffee cannot unpack (Fusion&apos;s own archives use deflate)</source>
+        <translation>它的压缩方式 Toffee 无法解压（Fusion 自己的归档使用 deflate）</translation>
+    </message>
+    <message>
+        <source>it is encrypted; Toffee reads archives without a password</source>
+        <translation>它已加密；Toffee 只读取没有密码的归档</translation>
+    </message>
+    <message>
+        <source>its compressed data is damaged</source>
+        <translation>其压缩数据已损坏</translation>
+    </message>
+    <message>
+        <source>the archive is truncated (it ends early)</source>
+        <translation>归档不完整（提前结束）</translation>
+    </message>
+    <message>
+        <source>there is not enough memory to unpack it</source>
+        <translation>内存不足，无法解压</translation>
+    </message>
+    <message>
+        <source>libzip says: %1</source>
+        <translation>libzip 报告：%1</translation>
     </message>
     <message>
         <source>this is not a .tools archive: the file is empty.</source>
@@ -602,6 +642,10 @@
     <message>
         <source>the archive holds no %1; a Fusion .tools file is a zip archive with the library in %1.</source>
         <translation>归档中没有 %1；Fusion 的 .tools 文件是一个 zip 归档，刀具库保存在 %1 中。</translation>
+    </message>
+    <message>
+        <source>the archive holds %1 twice (%2 and %3); Toffee will not guess which one is the library.</source>
+        <translation>归档中有两个 %1（%2 和 %3）；Toffee 不会猜测哪一个才是刀具库。</translation>
     </message>
     <message>
         <source>a list</source>
@@ -642,6 +686,14 @@
     <message>
         <source>this tool line has no number=…; Toffee needs the T number.</source>
         <translation>该刀具行没有 number=…；Toffee 需要 T 号。</translation>
+    </message>
+    <message>
+        <source>%1 is in this tool line twice (%1=%2 and %1=%3); Toffee will not guess which one is meant.</source>
+        <translation>%1 在这一刀具行中出现了两次（%1=%2 和 %1=%3）；Toffee 不会猜测指的是哪一个。</translation>
+    </message>
+    <message>
+        <source>this is not a text program: it holds binary data (a NUL byte), which a G-code program never does.</source>
+        <translation>这不是文本程序：其中含有二进制数据（NUL 字节），而 G 代码程序从不含有这些。</translation>
     </message>
     <message>
         <source>the program&apos;s first %1 MB are all comments; Toffee reads the tool header only from the start of a program.</source>
@@ -1071,6 +1123,10 @@
     <message>
         <source>its "number" is %1, not a whole number.</source>
         <translation>它的“number”为 %1，不是整数。</translation>
+    </message>
+    <message>
+        <source>its "length-offset" is %1, not a whole number.</source>
+        <translation>它的“length-offset”为 %1，不是整数。</translation>
     </message>
     <message>
         <source>its "number" %1 is out of range; use %2 to %3.</source>
@@ -1504,6 +1560,14 @@
         <translation>它的 nc 编号为“%1”，不是刀具号。</translation>
     </message>
     <message>
+        <source>it has a second &lt;%1&gt; (the first is on line %2); a tool has one, and Toffee will not guess which one is meant.</source>
+        <translation>它有第二个 &lt;%1&gt;（第一个在第 %2 行）；一个刀具只有一个，Toffee 不会猜测指的是哪一个。</translation>
+    </message>
+    <message>
+        <source>its nc length-offset is "%1", not a whole number.</source>
+        <translation>它的 nc length-offset 为“%1”，不是整数。</translation>
+    </message>
+    <message>
         <source>its body %1 is "%2", not a number.</source>
         <translation>它的 body %1 为“%2”，不是数字。</translation>
     </message>
@@ -1529,6 +1593,14 @@
     <message>
         <source>radius %1 → %2 %3</source>
         <translation>半径 %1 → %2 %3</translation>
+    </message>
+    <message>
+        <source>pocket %1; no tool length yet (0 in the table): measure it before use</source>
+        <translation>刀位 %1；尚无刀具长度（表中为 0）：使用前请先测量</translation>
+    </message>
+    <message>
+        <source>the library gives length offset H%1; Toffee always uses H = T (H%2), so it is not imported</source>
+        <translation>刀具库给出长度补偿 H%1；Toffee 始终使用 H = T（H%2），因此不导入它</translation>
     </message>
     <message>
         <source>CAM lengths added to the notes (%1)</source>
@@ -1616,6 +1688,18 @@
     <message>
         <source>Changes</source>
         <translation>更改</translation>
+    </message>
+    <message>
+        <source>Changes and notes of the selected tool</source>
+        <translation>所选刀具的更改和说明</translation>
+    </message>
+    <message>
+        <source>T%1 (%2): %3</source>
+        <translation>T%1（%2）：%3</translation>
+    </message>
+    <message>
+        <source>The table already has this tool as the library describes it.</source>
+        <translation>表中已有此刀具，与刀具库的描述一致。</translation>
     </message>
     <message>
         <source>Import the tools</source>
@@ -2050,8 +2134,8 @@
         <translation>另存为(&amp;A)…</translation>
     </message>
     <message>
-        <source>&amp;Import…</source>
-        <translation>导入(&amp;I)…</translation>
+        <source>Import &amp;Tools…</source>
+        <translation>导入刀具(&amp;T)…</translation>
     </message>
     <message>
         <source>&amp;Export…</source>

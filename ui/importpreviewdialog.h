@@ -4,15 +4,18 @@
 #include <QDialog>
 
 class QLabel;
+class QPlainTextEdit;
 class QPushButton;
 class QTreeWidget;
+class QTreeWidgetItem;
 
 namespace Toffee {
 
 class ImportPreview;
 
 // File ▸ Import of a CAM library: each of its tools, new, changed (and how) or unchanged, before anything
-// changes. Import applies the merge; Cancel leaves the table as it was.
+// changes. The selected tool's changes and notes are shown whole below the list, for the keyboard and screen
+// readers as much as for the eye. Import applies the merge; Cancel leaves the table as it was.
 class ImportPreviewDialog final : public QDialog
 {
     Q_OBJECT
@@ -26,9 +29,12 @@ public:
 
 private:
     void fill(const ImportPreview &preview);
+    void showDetails(const QTreeWidgetItem *item);
+    void fitToContents();
 
     QLabel *m_summary;
     QTreeWidget *m_tools;
+    QPlainTextEdit *m_details;
     QPushButton *m_import;
     QPushButton *m_cancel;
 };

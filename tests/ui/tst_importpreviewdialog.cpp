@@ -101,10 +101,14 @@ private Q_SLOTS:
             u"• the library gives length offset H12; Toffee always uses H = T (H2), so it is not imported"_s
         };
         QCOMPARE(details->toPlainText(), expected.join(u'\n'));
-        // In the list each change is on a line of its own, wrapped rather than cut off.
+        // In the list each change is on a line of its own, in a column as wide as the longest.
         QCOMPARE(list->topLevelItem(1)->text(ImportPreviewDialog::FieldsColumn).count(u'\n'), 3);
-        QVERIFY(list->wordWrap());
-        QVERIFY(list->header()->sectionResizeMode(ImportPreviewDialog::FieldsColumn) == QHeaderView::Stretch);
+        const QFontMetrics metrics(list->font());
+        for (const QString &line :
+            list->topLevelItem(1)->text(ImportPreviewDialog::FieldsColumn).split(u'\n'))
+            QVERIFY2(metrics.horizontalAdvance(line) < list->columnWidth(ImportPreviewDialog::FieldsColumn),
+                qPrintable(line));
+        QVERIFY(list->visualItemRect(list->topLevelItem(1)).height() >= 4 * metrics.height());
 
         QTest::keyClick(list, Qt::Key_Down);
         QVERIFY2(details->toPlainText().startsWith(u"T7 (New): Flat 7\n• pocket 7"_s),

@@ -3,6 +3,8 @@
 // as one undo step, Cancel, and a malformed library refused with its place.
 #include <QAction>
 #include <QApplication>
+#include <QFileDialog>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -56,6 +58,25 @@ void answerPreview(const QString &button, QStringList *rows, int attempts = 500)
     });
 }
 
+// Once the file dialog is up: its title and filters in `seen`, then `path` chosen in it.
+void answerFileDialog(const QString &path, QString *seen, int attempts = 500)
+{
+    QTimer::singleShot(10, [=] {
+        auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+        if (!dialog) {
+            if (attempts > 0)
+                answerFileDialog(path, seen, attempts - 1);
+            return;
+        }
+        *seen = dialog->windowTitle() + u'\n' + dialog->nameFilters().join(u'\n');
+        // The file's path typed into the name field and Enter, as a person without a mouse does.
+        auto *name = dialog->findChild<QLineEdit *>(u"fileNameEdit"_s);
+        QVERIFY(name);
+        name->setText(path);
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+}
+
 // What the table on screen shows in `column` for tool `number`.
 QString shown(QTableView *view, int number, int column)
 {
@@ -99,7 +120,8 @@ private Q_SLOTS:
         answerPreview(u"importButton"_s, &rows);
         QVERIFY(window.importFile(path));
         QCOMPARE(rows,
-            (QStringList { u"T2 Changed radius 3.000 → 4.000 mm"_s, u"T3 Unchanged "_s, u"T12 New "_s }));
+            (QStringList { u"T2 Changed radius 3.000 → 4.000 mm"_s, u"T3 Unchanged "_s,
+                u"T12 New pocket 12; no tool length yet (0 in the table): measure it before use"_s }));
         QCOMPARE(view->model()->rowCount(), 7);
         QCOMPARE(shown(view, 2, ToolTableModel::RadiusGeometryColumn), u"4.000"_s);
         QCOMPARE(shown(view, 2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
@@ -116,6 +138,29 @@ private Q_SLOTS:
         QCOMPARE(window.document()->table(), before);
         QCOMPARE(view->model()->rowCount(), 6);
         QCOMPARE(shown(view, 2, ToolTableModel::RadiusGeometryColumn), u"3.000"_s);
+    }
+
+    void theMenusImportToolsActionTakesALibrary()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"shop.tools"_s);
+        QVERIFY(Test::writeFile(path, library()));
+        MainWindow window;
+        QVERIFY(window.openFile(kExample));
+        auto *action = window.findChild<QAction *>(u"actionImport"_s);
+        QVERIFY(action);
+        QCOMPARE(action->text(), u"Import &Tools…"_s);
+        QCOMPARE(action->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_I));
+        QVERIFY(action->isEnabled());
+        QString seen;
+        QStringList rows;
+        answerFileDialog(path, &seen);
+        answerPreview(u"importButton"_s, &rows);
+        action->trigger();
+        QVERIFY2(seen.startsWith(u"Import Tools\n"_s) && seen.contains(u"*.tools"_s), qPrintable(seen));
+        QCOMPARE(rows.size(), 3);
+        QCOMPARE(window.document()->table().find(12)->description, u"10 mm roughing"_s);
+        QCOMPARE(window.document()->table().find(12)->pocket, 12);
     }
 
     void cancelLeavesTheTableAsItWas()
