@@ -92,6 +92,15 @@ private Q_SLOTS:
         QCOMPARE(displayNumber(0.0, Units::Inch), u"0.0000"_s);
     }
 
+    void quotesAHugeNumberInAMessageShortly()
+    {
+        QCOMPARE(quotedNumber(1500.25), u"1500.25"_s);
+        QCOMPARE(quotedNumber(-100000), u"-100000"_s);
+        QCOMPARE(quotedNumber(1e308), u"1e+308"_s);
+        QCOMPARE(quotedNumber(-1.5e300), u"-1.5e+300"_s);
+        QCOMPARE(quotedNumber(1e-300), u"1e-300"_s);
+    }
+
     void showsPeopleTheirOwnDecimalMarkButNeverGroups()
     {
         QCOMPARE(millimetres(-33.388), u"-33.388 mm"_s);
