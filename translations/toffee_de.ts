@@ -20,7 +20,7 @@
         <translation>%1 %2 %3 liegt außerhalb des Bereichs; eine Steuerung nimmt %4 bis %5 %3.</translation>
     </message>
     <message>
-        <source>"%1" is not a LinuxCNC tool field (X, Y, A, B, C, U, V, W, I, J or Q0-Q9).</source>
+        <source>&quot;%1&quot; is not a LinuxCNC tool field (X, Y, A, B, C, U, V, W, I, J or Q0-Q9).</source>
         <translation>„%1“ ist kein LinuxCNC-Werkzeugfeld (X, Y, A, B, C, U, V, W, I, J oder Q0-Q9).</translation>
     </message>
     <message>
@@ -104,35 +104,35 @@
         <translation>%1: lässt sich nicht lesen: %2</translation>
     </message>
     <message>
-        <source>"%1" must be a whole number.</source>
+        <source>&quot;%1&quot; must be a whole number.</source>
         <translation>„%1“ muss eine ganze Zahl sein.</translation>
     </message>
     <message>
-        <source>"%1" must be a number.</source>
+        <source>&quot;%1&quot; must be a number.</source>
         <translation>„%1“ muss eine Zahl sein.</translation>
     </message>
     <message>
-        <source>"%1" must be text.</source>
+        <source>&quot;%1&quot; must be text.</source>
         <translation>„%1“ muss Text sein.</translation>
     </message>
     <message>
-        <source>each entry of "tools" must be a JSON object such as {"number": 1}.</source>
-        <translation>Jeder Eintrag in „tools“ muss ein JSON-Objekt sein, etwa {"number": 1}.</translation>
+        <source>each entry of &quot;tools&quot; must be a JSON object such as {&quot;number&quot;: 1}.</source>
+        <translation>Jeder Eintrag in „tools“ muss ein JSON-Objekt sein, etwa {&quot;number&quot;: 1}.</translation>
     </message>
     <message>
-        <source>unknown field "%1" in a tool.</source>
+        <source>unknown field &quot;%1&quot; in a tool.</source>
         <translation>Unbekanntes Feld „%1“ in einem Werkzeug.</translation>
     </message>
     <message>
-        <source>the field "%1" appears twice in a tool.</source>
+        <source>the field &quot;%1&quot; appears twice in a tool.</source>
         <translation>Das Feld „%1“ kommt in einem Werkzeug zweimal vor.</translation>
     </message>
     <message>
-        <source>"measured_at" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
+        <source>&quot;measured_at&quot; is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
         <translation>„measured_at“ ist kein Datum mit Uhrzeit (ISO 8601 verwenden, z. B. 2026-11-22T10:15:00Z).</translation>
     </message>
     <message>
-        <source>a tool has no "number".</source>
+        <source>a tool has no &quot;number&quot;.</source>
         <translation>Ein Werkzeug hat keine „number“.</translation>
     </message>
     <message>
@@ -144,27 +144,27 @@
         <translation>Das ist keine Toffee-Werkzeugtabelle: Die Datei muss genau ein JSON-Objekt enthalten.</translation>
     </message>
     <message>
-        <source>this is not a Toffee tool table: "format" must be "%1", before "tools".</source>
+        <source>this is not a Toffee tool table: &quot;format&quot; must be &quot;%1&quot;, before &quot;tools&quot;.</source>
         <translation>Das ist keine Toffee-Werkzeugtabelle: „format“ muss „%1“ sein und vor „tools“ stehen.</translation>
     </message>
     <message>
-        <source>"version" must come before "tools".</source>
+        <source>&quot;version&quot; must come before &quot;tools&quot;.</source>
         <translation>„version“ muss vor „tools“ stehen.</translation>
     </message>
     <message>
-        <source>"tools" appears twice.</source>
+        <source>&quot;tools&quot; appears twice.</source>
         <translation>„tools“ kommt zweimal vor.</translation>
     </message>
     <message>
-        <source>"tools" must be a list of tools.</source>
+        <source>&quot;tools&quot; must be a list of tools.</source>
         <translation>„tools“ muss eine Liste von Werkzeugen sein.</translation>
     </message>
     <message>
-        <source>this is not a Toffee tool table: "format" must be "%1".</source>
+        <source>this is not a Toffee tool table: &quot;format&quot; must be &quot;%1&quot;.</source>
         <translation>Das ist keine Toffee-Werkzeugtabelle: „format“ muss „%1“ sein.</translation>
     </message>
     <message>
-        <source>"version" must be a whole number from 1 up.</source>
+        <source>&quot;version&quot; must be a whole number from 1 up.</source>
         <translation>„version“ muss eine ganze Zahl ab 1 sein.</translation>
     </message>
     <message>
@@ -172,11 +172,11 @@
         <translation>Diese Tabelle stammt von einem neueren Toffee (Formatversion %1); dieses liest bis Version %2. Aktualisieren Sie Toffee, um sie zu öffnen.</translation>
     </message>
     <message>
-        <source>"units" must be "mm" or "in".</source>
+        <source>&quot;units&quot; must be &quot;mm&quot; or &quot;in&quot;.</source>
         <translation>„units“ muss „mm“ oder „in“ sein.</translation>
     </message>
     <message>
-        <source>unknown field "%1" in the table.</source>
+        <source>unknown field &quot;%1&quot; in the table.</source>
         <translation>Unbekanntes Feld „%1“ in der Tabelle.</translation>
     </message>
     <message>
@@ -188,23 +188,23 @@
         <translation>Der Kommentar ist kein gültiger UTF-8-Text.</translation>
     </message>
     <message>
-        <source>"%1": the field %2 appears twice.</source>
+        <source>&quot;%1&quot;: the field %2 appears twice.</source>
         <translation>„%1“: Das Feld %2 kommt zweimal vor.</translation>
     </message>
     <message>
-        <source>"%1": %2 needs a whole number.</source>
+        <source>&quot;%1&quot;: %2 needs a whole number.</source>
         <translation>„%1“: %2 braucht eine ganze Zahl.</translation>
     </message>
     <message>
-        <source>"%1": the orientation Q must be 0 to 9.</source>
+        <source>&quot;%1&quot;: the orientation Q must be 0 to 9.</source>
         <translation>„%1“: Die Orientierung Q muss 0 bis 9 sein.</translation>
     </message>
     <message>
-        <source>"%1" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, J, Q and a ;comment.</source>
+        <source>&quot;%1&quot; is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, J, Q and a ;comment.</source>
         <translation>„%1“ ist kein Feld einer Werkzeugtabelle; eine Zeile enthält T, P, X, Y, Z, A, B, C, U, V, W, D, I, J, Q und einen ;Kommentar.</translation>
     </message>
     <message>
-        <source>"%1": %2 needs a number.</source>
+        <source>&quot;%1&quot;: %2 needs a number.</source>
         <translation>„%1“: %2 braucht eine Zahl.</translation>
     </message>
     <message>
@@ -224,35 +224,35 @@
         <translation>Die Datei enthält Binärdaten; sie ist keine LinuxCNC-Werkzeugtabelle.</translation>
     </message>
     <message>
-        <source>a quoted field is never closed; add the closing quote (").</source>
-        <translation>Ein Feld in Anführungszeichen wird nie geschlossen; ergänzen Sie das schließende Anführungszeichen (").</translation>
+        <source>a quoted field is never closed; add the closing quote (&quot;).</source>
+        <translation>Ein Feld in Anführungszeichen wird nie geschlossen; ergänzen Sie das schließende Anführungszeichen (&quot;).</translation>
     </message>
     <message>
         <source>text after a closing quote; put the whole field in quotes.</source>
         <translation>Text nach einem schließenden Anführungszeichen; setzen Sie das ganze Feld in Anführungszeichen.</translation>
     </message>
     <message>
-        <source>a quote (") inside an unquoted field; put the whole field in quotes and double the quote.</source>
-        <translation>Ein Anführungszeichen (") in einem Feld ohne Anführungszeichen; setzen Sie das ganze Feld in Anführungszeichen und verdoppeln Sie das Zeichen.</translation>
+        <source>a quote (&quot;) inside an unquoted field; put the whole field in quotes and double the quote.</source>
+        <translation>Ein Anführungszeichen (&quot;) in einem Feld ohne Anführungszeichen; setzen Sie das ganze Feld in Anführungszeichen und verdoppeln Sie das Zeichen.</translation>
     </message>
     <message>
         <source>the file holds binary data; it is not a CSV table.</source>
         <translation>Die Datei enthält Binärdaten; sie ist keine CSV-Tabelle.</translation>
     </message>
     <message>
-        <source>the file is not UTF-8 text; save it from the spreadsheet as "CSV UTF-8".</source>
+        <source>the file is not UTF-8 text; save it from the spreadsheet as &quot;CSV UTF-8&quot;.</source>
         <translation>Die Datei ist kein UTF-8-Text; speichern Sie sie in der Tabellenkalkulation als „CSV UTF-8“.</translation>
     </message>
     <message>
-        <source>the file is empty; a CSV tool table starts with a header row such as "number,pocket,description,...".</source>
+        <source>the file is empty; a CSV tool table starts with a header row such as &quot;number,pocket,description,...&quot;.</source>
         <translation>Die Datei ist leer; eine CSV-Werkzeugtabelle beginnt mit einer Kopfzeile wie „number,pocket,description,...“.</translation>
     </message>
     <message>
-        <source>the column "%1" appears twice in the header.</source>
+        <source>the column &quot;%1&quot; appears twice in the header.</source>
         <translation>Die Spalte „%1“ kommt in der Kopfzeile zweimal vor.</translation>
     </message>
     <message>
-        <source>the header has no "number" column.</source>
+        <source>the header has no &quot;number&quot; column.</source>
         <translation>Die Kopfzeile hat keine Spalte „number“.</translation>
     </message>
     <message>
@@ -260,11 +260,11 @@
         <translation>Diese Zeile hat %1 Felder, die Kopfzeile aber %2.</translation>
     </message>
     <message>
-        <source>%1 "%2" is not a number.</source>
+        <source>%1 &quot;%2&quot; is not a number.</source>
         <translation>%1 „%2“ ist keine Zahl.</translation>
     </message>
     <message>
-        <source>%1 "%2" is not a whole number.</source>
+        <source>%1 &quot;%2&quot; is not a whole number.</source>
         <translation>%1 „%2“ ist keine ganze Zahl.</translation>
     </message>
     <message>
@@ -272,11 +272,11 @@
         <translation>Die Zeile hat keine Werkzeugnummer.</translation>
     </message>
     <message>
-        <source>measured_at "%1" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
+        <source>measured_at &quot;%1&quot; is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
         <translation>measured_at „%1“ ist kein Datum mit Uhrzeit (ISO 8601 verwenden, z. B. 2026-11-22T10:15:00Z).</translation>
     </message>
     <message>
-        <source>units "%1" must be mm or in.</source>
+        <source>units &quot;%1&quot; must be mm or in.</source>
         <translation>Einheit „%1“ muss mm oder in sein.</translation>
     </message>
     <message>
@@ -380,7 +380,7 @@
         <translation>Die Tabelle bräuchte mehr als %1 MB, mehr als Toffee wieder einliest; kürzen Sie die Notizen oder teilen Sie die Tabelle.</translation>
     </message>
     <message>
-        <source>"%1": %2 is out of range; use %3 to %4.</source>
+        <source>&quot;%1&quot;: %2 is out of range; use %3 to %4.</source>
         <translation>„%1“: %2 liegt außerhalb des Bereichs; verwenden Sie %3 bis %4.</translation>
     </message>
     <message>
@@ -388,11 +388,11 @@
         <translation>%1: Es ist nicht genug Speicher da, um diese Tabelle zu lesen (die Datei ist %2 MB groß).</translation>
     </message>
     <message>
-        <source>the comment "%1" is longer than a description may be (%2 characters).</source>
+        <source>the comment &quot;%1&quot; is longer than a description may be (%2 characters).</source>
         <translation>Der Kommentar „%1“ ist länger, als eine Beschreibung sein darf (%2 Zeichen).</translation>
     </message>
     <message>
-        <source>the field "%1" is longer than %2 KB; no column of a tool table holds that much.</source>
+        <source>the field &quot;%1&quot; is longer than %2 KB; no column of a tool table holds that much.</source>
         <translation>Das Feld „%1“ ist länger als %2 KB; keine Spalte einer Werkzeugtabelle fasst so viel.</translation>
     </message>
     <message>
@@ -432,20 +432,20 @@
         <translation>Eine LinuxCNC-Tabelle kann kein Werkzeug markieren, das seinen Bruchtest nicht bestanden hat: %1 wäre nicht mehr markiert.</translation>
     </message>
     <message>
-        <source>"tlo_source" must be "probe" or "manual".</source>
-        <translation>"tlo_source" muss "probe" oder "manual" sein.</translation>
+        <source>&quot;tlo_source&quot; must be &quot;probe&quot; or &quot;manual&quot;.</source>
+        <translation>&quot;tlo_source&quot; muss &quot;probe&quot; oder &quot;manual&quot; sein.</translation>
     </message>
     <message>
-        <source>"break_test_failed" must be true or false.</source>
-        <translation>"break_test_failed" muss true oder false sein.</translation>
+        <source>&quot;break_test_failed&quot; must be true or false.</source>
+        <translation>&quot;break_test_failed&quot; muss true oder false sein.</translation>
     </message>
     <message>
-        <source>tlo_source "%1" must be probe, manual or empty.</source>
-        <translation>tlo_source "%1" muss probe, manual oder leer sein.</translation>
+        <source>tlo_source &quot;%1&quot; must be probe, manual or empty.</source>
+        <translation>tlo_source &quot;%1&quot; muss probe, manual oder leer sein.</translation>
     </message>
     <message>
-        <source>break_test "%1" must be failed, passed or empty.</source>
-        <translation>break_test "%1" muss failed, passed oder leer sein.</translation>
+        <source>break_test &quot;%1&quot; must be failed, passed or empty.</source>
+        <translation>break_test &quot;%1&quot; muss failed, passed oder leer sein.</translation>
     </message>
     <message>
         <source>The machine was stopped (Stop, Ctrl-X or the stop button).</source>
@@ -520,7 +520,7 @@
         <translation>Referenz-MCS-Z</translation>
     </message>
     <message>
-        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
+        <source>unknown column &quot;%1&quot; in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
         <translation>unbekannte Spalte „%1“ in der Kopfzeile; die Spalten sind number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units und linuxcnc.</translation>
     </message>
     <message>
@@ -664,11 +664,11 @@
         <translation>Spalte %1: das ist kein gültiges JSON (%2).</translation>
     </message>
     <message>
-        <source>this is not a Fusion tool library: that is a JSON object with "data", a list of tools.</source>
+        <source>this is not a Fusion tool library: that is a JSON object with &quot;data&quot;, a list of tools.</source>
         <translation>das ist keine Fusion-Werkzeugbibliothek: die ist ein JSON-Objekt mit „data“, einer Liste von Werkzeugen.</translation>
     </message>
     <message>
-        <source>tool %1 in "data"</source>
+        <source>tool %1 in &quot;data&quot;</source>
         <translation>Werkzeug %1 in „data“</translation>
     </message>
     <message>
@@ -700,8 +700,68 @@
         <translation>die ersten %1 MB des Programms sind nur Kommentare; Toffee liest den Werkzeugkopf nur am Anfang eines Programms.</translation>
     </message>
     <message>
-        <source>this program has no Makera CAM tool header (";@MKR|TOOL|number=…" lines before the program body); there are no tools to import from it.</source>
+        <source>this program has no Makera CAM tool header (&quot;;@MKR|TOOL|number=…&quot; lines before the program body); there are no tools to import from it.</source>
         <translation>dieses Programm hat keinen Werkzeugkopf von Makera CAM (Zeilen „;@MKR|TOOL|number=…“ vor dem Programm); es gibt keine Werkzeuge daraus zu importieren.</translation>
+    </message>
+    <message>
+        <source>just now</source>
+        <translation>gerade eben</translation>
+    </message>
+    <message>
+        <source>%1 min ago</source>
+        <translation>vor %1 min</translation>
+    </message>
+    <message>
+        <source>%1 h ago</source>
+        <translation>vor %1 h</translation>
+    </message>
+    <message>
+        <source>%1 days ago</source>
+        <translation>vor %1 Tagen</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>a rack is &quot;none&quot;, or tool numbers and ranges such as 1-6 or 1,2,5-8.</source>
+        <translation>Ein Magazin ist „none“ oder eine Liste von Werkzeugnummern und Bereichen wie 1-6 oder 1,2,5-8.</translation>
+    </message>
+    <message>
+        <source>the job check finds %1; the first, on line %2: %3 Fix them before preparing the program (Check Job, or toffee-cli job check, lists them). Nothing was written.</source>
+        <translation>Die Jobprüfung findet %1; der erste, in Zeile %2: %3 Beheben Sie die Fehler, bevor Sie das Programm vorbereiten („Job prüfen“ oder toffee-cli job check listet sie auf). Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>an error</source>
+        <translation>einen Fehler</translation>
+    </message>
+    <message>
+        <source>%1 errors</source>
+        <translation>%1 Fehler</translation>
+    </message>
+    <message>
+        <source>Preparing was cancelled; nothing was written.</source>
+        <translation>Die Vorbereitung wurde abgebrochen; es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>Say where the prepared program goes: no file name was given.</source>
+        <translation>Geben Sie an, wohin das vorbereitete Programm soll: Es wurde kein Dateiname angegeben.</translation>
+    </message>
+    <message>
+        <source>%1: the prepared program must go to another file than the program itself.</source>
+        <translation>%1: Das vorbereitete Programm muss in eine andere Datei als das Programm selbst.</translation>
+    </message>
+    <message>
+        <source>%1 is the tool table: the prepared program must go to another file.</source>
+        <translation>%1 ist die Werkzeugtabelle: Das vorbereitete Programm muss in eine andere Datei.</translation>
     </message>
 </context>
 <context>
@@ -879,11 +939,11 @@
         <translation>%1 verfährt die Maschine im Tippbetrieb.</translation>
     </message>
     <message>
-        <source>"%1" is not a G-code line Toffee can read; check it for a letter without a number.</source>
+        <source>&quot;%1&quot; is not a G-code line Toffee can read; check it for a letter without a number.</source>
         <translation>„%1“ ist keine G-Code-Zeile, die Toffee lesen kann; prüfen Sie, ob darin ein Buchstabe ohne Zahl steht.</translation>
     </message>
     <message>
-        <source>The machine is halted: it refuses "%1" until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
+        <source>The machine is halted: it refuses &quot;%1&quot; until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
         <translation>Die Maschine ist angehalten: Sie lehnt „%1“ ab, bis sie entsperrt ist. Prüfen Sie die Maschine und verwenden Sie dann Maschine ▸ Entsperren ($X).</translation>
     </message>
     <message>
@@ -947,7 +1007,7 @@
         <translation>%1 ist keine Werkzeugnummer; verwenden Sie %2 bis %3 (%4 für eine leere Spindel).</translation>
     </message>
     <message>
-        <source>"%1" is not a G-code line Toffee can read: %2</source>
+        <source>&quot;%1&quot; is not a G-code line Toffee can read: %2</source>
         <translation>„%1“ ist keine G-Code-Zeile, die Toffee lesen kann: %2</translation>
     </message>
 </context>
@@ -1105,46 +1165,46 @@
 <context>
     <name>Toffee::FusionToolReader</name>
     <message>
-        <source>"%1" is %2, not an object.</source>
+        <source>&quot;%1&quot; is %2, not an object.</source>
         <translation>„%1“ ist %2, kein Objekt.</translation>
     </message>
     <message>
-        <source>"%1" is %2, not text.</source>
+        <source>&quot;%1&quot; is %2, not text.</source>
         <translation>„%1“ ist %2, kein Text.</translation>
     </message>
     <message>
-        <source>"%1" is %2, not a number.</source>
+        <source>&quot;%1&quot; is %2, not a number.</source>
         <translation>„%1“ ist %2, keine Zahl.</translation>
     </message>
     <message>
-        <source>it has no "post-process" "number": Toffee needs the T number the post writes.</source>
+        <source>it has no &quot;post-process&quot; &quot;number&quot;: Toffee needs the T number the post writes.</source>
         <translation>es hat keine „post-process“-„number“: Toffee braucht die T-Nummer, die der Postprozessor schreibt.</translation>
     </message>
     <message>
-        <source>its "number" is %1, not a whole number.</source>
+        <source>its &quot;number&quot; is %1, not a whole number.</source>
         <translation>seine „number“ ist %1, keine ganze Zahl.</translation>
     </message>
     <message>
-        <source>its "length-offset" is %1, not a whole number.</source>
+        <source>its &quot;length-offset&quot; is %1, not a whole number.</source>
         <translation>sein „length-offset“ ist %1, keine ganze Zahl.</translation>
     </message>
     <message>
-        <source>its "number" %1 is out of range; use %2 to %3.</source>
+        <source>its &quot;number&quot; %1 is out of range; use %2 to %3.</source>
         <translation>seine „number“ %1 liegt außerhalb des Bereichs; verwenden Sie %2 bis %3.</translation>
     </message>
     <message>
-        <source>it has no "unit" (millimeters or inches).</source>
+        <source>it has no &quot;unit&quot; (millimeters or inches).</source>
         <translation>es hat keine „unit“ (millimeters oder inches).</translation>
     </message>
     <message>
-        <source>its "unit" is "%1"; Toffee reads millimeters or inches.</source>
+        <source>its &quot;unit&quot; is &quot;%1&quot;; Toffee reads millimeters or inches.</source>
         <translation>seine „unit“ ist „%1“; Toffee liest millimeters oder inches.</translation>
     </message>
 </context>
 <context>
     <name>Toffee::GCodeInterpreter</name>
     <message>
-        <source>"%1" is not G-code this controller reads.</source>
+        <source>&quot;%1&quot; is not G-code this controller reads.</source>
         <translation>„%1“ ist kein G-Code, den diese Steuerung liest.</translation>
     </message>
     <message>
@@ -1152,7 +1212,7 @@
         <translation>Das Wort %1 braucht einen Wert.</translation>
     </message>
     <message>
-        <source>"%1" is not a number.</source>
+        <source>&quot;%1&quot; is not a number.</source>
         <translation>„%1“ ist keine Zahl.</translation>
     </message>
     <message>
@@ -1206,10 +1266,6 @@
     <message>
         <source>G10 needs an L word.</source>
         <translation>G10 braucht ein L-Wort.</translation>
-    </message>
-    <message>
-        <source>only G54 (P1) is simulated.</source>
-        <translation>Nur G54 (P1) wird simuliert.</translation>
     </message>
     <message>
         <source>G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.</source>
@@ -1272,7 +1328,7 @@
         <translation>Die Korrekturachsen lassen sich nur bei ausgeschalteter Fräserversatzkorrektur ändern.</translation>
     </message>
     <message>
-        <source>"%1" is not a call this simulator knows.</source>
+        <source>&quot;%1&quot; is not a call this simulator knows.</source>
         <translation>„%1“ ist kein Aufruf, den dieser Simulator kennt.</translation>
     </message>
     <message>
@@ -1319,19 +1375,35 @@
         <source>G%1 needs the arc&apos;s centre (%2 %3) or its radius (R).</source>
         <translation>G%1 braucht den Mittelpunkt des Bogens (%2 %3) oder seinen Radius (R).</translation>
     </message>
+    <message>
+        <source>G10 L%1 P%2: the work offsets are G54 to G59 (P1 to P6; LinuxCNC&apos;s G59.1 to G59.3 are P7 to P9).</source>
+        <translation>G10 L%1 P%2: Die Werkstücknullpunkte sind G54 bis G59 (P1 bis P6; G59.1 bis G59.3 von LinuxCNC sind P7 bis P9).</translation>
+    </message>
+    <message>
+        <source>M%1 calls or ends a subprogram, which the check does not follow: what it cuts is not checked.</source>
+        <translation>M%1 ruft ein Unterprogramm auf oder beendet es, und die Prüfung folgt ihm nicht: Was es schneidet, wird nicht geprüft.</translation>
+    </message>
+    <message>
+        <source>canned cycles are simulated in the XY plane (G17) only.</source>
+        <translation>Festzyklen werden nur in der XY-Ebene (G17) simuliert.</translation>
+    </message>
+    <message>
+        <source>G%1 needs Z, the bottom of the hole.</source>
+        <translation>G%1 braucht Z, den Bohrungsgrund.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::GCodeLexer</name>
     <message>
-        <source>a comment "(" is never closed on this line.</source>
+        <source>a comment &quot;(&quot; is never closed on this line.</source>
         <translation>Ein Kommentar „(“ wird in dieser Zeile nicht geschlossen.</translation>
     </message>
     <message>
-        <source>unexpected "%1".</source>
+        <source>unexpected &quot;%1&quot;.</source>
         <translation>Unerwartetes „%1“.</translation>
     </message>
     <message>
-        <source>"%1" is not a number.</source>
+        <source>&quot;%1&quot; is not a number.</source>
         <translation>„%1“ ist keine Zahl.</translation>
     </message>
     <message>
@@ -1339,8 +1411,12 @@
         <translation>%1 ist zu groß: Eine Steuerung nimmt höchstens acht Stellen vor dem Dezimalpunkt.</translation>
     </message>
     <message>
-        <source>"%1" is not G-code this controller reads.</source>
+        <source>&quot;%1&quot; is not G-code this controller reads.</source>
         <translation>„%1“ ist kein G-Code, den diese Steuerung liest.</translation>
+    </message>
+    <message>
+        <source>unexpected byte 0x%1.</source>
+        <translation>Unerwartetes Byte 0x%1.</translation>
     </message>
 </context>
 <context>
@@ -1536,7 +1612,7 @@
         <translation>es enthält kein XML-Element</translation>
     </message>
     <message>
-        <source>column %1: this is not an HSM tool library: its root element is &lt;%2&gt; in namespace "%3", where a library has &lt;tool-library&gt; in "%4".</source>
+        <source>column %1: this is not an HSM tool library: its root element is &lt;%2&gt; in namespace &quot;%3&quot;, where a library has &lt;tool-library&gt; in &quot;%4&quot;.</source>
         <translation>Spalte %1: das ist keine HSM-Werkzeugbibliothek: ihr Wurzelelement ist &lt;%2&gt; im Namensraum „%3“, eine Bibliothek hat &lt;tool-library&gt; in „%4“.</translation>
     </message>
     <message>
@@ -1548,7 +1624,7 @@
         <translation>Werkzeug %1</translation>
     </message>
     <message>
-        <source>its unit is "%1"; Toffee reads millimeters or inches.</source>
+        <source>its unit is &quot;%1&quot;; Toffee reads millimeters or inches.</source>
         <translation>seine Einheit ist „%1“; Toffee liest millimeters oder inches.</translation>
     </message>
     <message>
@@ -1556,7 +1632,7 @@
         <translation>es hat kein &lt;nc number=…&gt;: Toffee braucht die T-Nummer, die der Postprozessor schreibt.</translation>
     </message>
     <message>
-        <source>its nc number is "%1", not a tool number.</source>
+        <source>its nc number is &quot;%1&quot;, not a tool number.</source>
         <translation>seine nc-Nummer ist „%1“, keine Werkzeugnummer.</translation>
     </message>
     <message>
@@ -1564,11 +1640,11 @@
         <translation>es hat ein zweites &lt;%1&gt; (das erste steht in Zeile %2); ein Werkzeug hat nur eines, und Toffee rät nicht, welches gemeint ist.</translation>
     </message>
     <message>
-        <source>its nc length-offset is "%1", not a whole number.</source>
+        <source>its nc length-offset is &quot;%1&quot;, not a whole number.</source>
         <translation>sein nc-length-offset ist „%1“, keine ganze Zahl.</translation>
     </message>
     <message>
-        <source>its body %1 is "%2", not a number.</source>
+        <source>its body %1 is &quot;%2&quot;, not a number.</source>
         <translation>sein body-Attribut %1 ist „%2“, keine Zahl.</translation>
     </message>
 </context>
@@ -1715,6 +1791,503 @@
     </message>
 </context>
 <context>
+    <name>Toffee::JobCheckDialog</name>
+    <message>
+        <source>Z &amp;floor:</source>
+        <translation>Z-&amp;Untergrenze:</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Check &amp;Again</source>
+        <translation>&amp;Erneut prüfen</translation>
+    </message>
+    <message>
+        <source>&amp;Prepare…</source>
+        <translation>&amp;Vorbereiten …</translation>
+    </message>
+    <message>
+        <source>Tools in order of use</source>
+        <translation>Werkzeuge in Reihenfolge der Verwendung</translation>
+    </message>
+    <message>
+        <source>Findings</source>
+        <translation>Befunde</translation>
+    </message>
+    <message>
+        <source>Check Job</source>
+        <translation>Job prüfen</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Steuerung</translation>
+    </message>
+    <message>
+        <source>Lowest work Z a feed move may reach</source>
+        <translation>Tiefstes Werkstück-Z, das eine Vorschubbewegung erreichen darf</translation>
+    </message>
+    <message>
+        <source>The tools the Carvera&apos;s rack holds</source>
+        <translation>Die Werkzeuge im Magazin der Carvera</translation>
+    </message>
+    <message>
+        <source>The tools the rack holds: 1-6 on a Carvera C1, none on a machine without one, or a list such as 1-4,8. Every other tool is a manual change.</source>
+        <translation>Die Werkzeuge im Magazin: 1-6 bei einer Carvera C1, none bei einer Maschine ohne Magazin oder eine Liste wie 1-4,8. Jedes andere Werkzeug ist ein manueller Wechsel.</translation>
+    </message>
+    <message>
+        <source>How far the check is</source>
+        <translation>Fortschritt der Prüfung</translation>
+    </message>
+    <message>
+        <source>The program around the finding</source>
+        <translation>Das Programm rund um den Befund</translation>
+    </message>
+    <message>
+        <source>Double-click a finding to see the program around its line.</source>
+        <translation>Doppelklicken Sie auf einen Befund, um das Programm rund um seine Zeile zu sehen.</translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation>Steuerung:</translation>
+    </message>
+    <message>
+        <source>&amp;Rack:</source>
+        <translation>&amp;Magazin:</translation>
+    </message>
+    <message>
+        <source>&amp;Tools, in order of use</source>
+        <translation>&amp;Werkzeuge in Reihenfolge der Verwendung</translation>
+    </message>
+    <message>
+        <source>F&amp;indings, by line</source>
+        <translation>&amp;Befunde nach Zeile</translation>
+    </message>
+    <message>
+        <source>Program: %1</source>
+        <translation>Programm: %1</translation>
+    </message>
+    <message>
+        <source>Checking…</source>
+        <translation>Wird geprüft …</translation>
+    </message>
+    <message>
+        <source>The program could not be checked: %1</source>
+        <translation>Das Programm ließ sich nicht prüfen: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 lines as %3; tools: %4, cutting %5, rapids %6 mm.</source>
+        <translation>%1: %2 Zeilen als %3; Werkzeuge: %4, Schnittzeit %5, Eilgang %6 mm.</translation>
+    </message>
+    <message>
+        <source>Cancelled after %1 lines: what was found so far.</source>
+        <translation>Nach %1 Zeilen abgebrochen: was bis dahin gefunden wurde.</translation>
+    </message>
+    <message>
+        <source>The check found errors: fix them before preparing the program.</source>
+        <translation>Die Prüfung hat Fehler gefunden: Beheben Sie sie, bevor Sie das Programm vorbereiten.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobChecker</name>
+    <message>
+        <source>A feed move before any tool change: the program does not say which tool is in the spindle.</source>
+        <translation>Eine Vorschubbewegung vor jedem Werkzeugwechsel: Das Programm sagt nicht, welches Werkzeug in der Spindel ist.</translation>
+    </message>
+    <message>
+        <source>T%1 feeds to work Z %2, below the floor of %3.</source>
+        <translation>T%1 fährt im Vorschub auf Werkstück-Z %2, unter die Untergrenze von %3.</translation>
+    </message>
+    <message>
+        <source>A feed move to work Z %1, below the floor of %2.</source>
+        <translation>Eine Vorschubbewegung auf Werkstück-Z %1, unter die Untergrenze von %2.</translation>
+    </message>
+    <message>
+        <source>T%1 cuts with no length compensation: no G43 since it was loaded.</source>
+        <translation>T%1 schneidet ohne Werkzeuglängenkorrektur: kein G43, seit es eingewechselt wurde.</translation>
+    </message>
+    <message>
+        <source>T%1 cuts with %2%3 still in force from the tool before: no G43 %2%1 since its change.</source>
+        <translation>T%1 schneidet mit %2%3, das noch vom vorigen Werkzeug gilt: kein G43 %2%1 seit seinem Wechsel.</translation>
+    </message>
+    <message>
+        <source>T%1 cuts with the length offset %2%3, which is another tool&apos;s.</source>
+        <translation>T%1 schneidet mit der Längenkorrektur %2%3, die zu einem anderen Werkzeug gehört.</translation>
+    </message>
+    <message>
+        <source>The program sets T%1&apos;s TLO to %2 itself; the table holds %3 for it.</source>
+        <translation>Das Programm setzt die TLO von T%1 selbst auf %2; die Tabelle hat %3 dafür.</translation>
+    </message>
+    <message>
+        <source>G20: the Carvera refuses inch programs (ALARM: Imperial Units are unsupported). Post the program in millimetres.</source>
+        <translation>G20: Die Carvera lehnt Zollprogramme ab (ALARM: Imperial Units are unsupported). Geben Sie das Programm im Postprozessor in Millimetern aus.</translation>
+    </message>
+    <message>
+        <source>The program is in inches (G20) but the tool table is in millimetres.</source>
+        <translation>Das Programm ist in Zoll (G20), die Werkzeugtabelle aber in Millimetern.</translation>
+    </message>
+    <message>
+        <source>The program is in millimetres (G21) but the tool table is in inches.</source>
+        <translation>Das Programm ist in Millimetern (G21), die Werkzeugtabelle aber in Zoll.</translation>
+    </message>
+    <message>
+        <source>More lines the controller would refuse, from this one on: %1 in all.</source>
+        <translation>Weitere Zeilen, die die Steuerung ablehnen würde, ab dieser: insgesamt %1.</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s rack does not hold T%1: it is a manual change, and the machine waits for the operator.</source>
+        <translation>Das Magazin der Maschine enthält T%1 nicht: Es ist ein manueller Wechsel, und die Maschine wartet auf den Bediener.</translation>
+    </message>
+    <message>
+        <source>T%1 is not in the tool table: nothing is known of its length.</source>
+        <translation>T%1 steht nicht in der Werkzeugtabelle: Über seine Länge ist nichts bekannt.</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test and has not been measured since: check the tool and probe it.</source>
+        <translation>T%1 hat seinen letzten Bruchtest nicht bestanden und wurde seitdem nicht gemessen: Prüfen Sie das Werkzeug und vermessen Sie es.</translation>
+    </message>
+    <message>
+        <source>T%1 has no measured TLO.</source>
+        <translation>T%1 hat keine gemessene TLO.</translation>
+    </message>
+    <message>
+        <source>T%1 has no length in the table: G43 would apply 0.</source>
+        <translation>T%1 hat keine Länge in der Tabelle: G43 würde 0 anwenden.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO is dated %2, in the future: a clock was wrong, and when it was measured is not known.</source>
+        <translation>Die TLO von T%1 ist auf %2 datiert, in der Zukunft: Eine Uhr ging falsch, und wann sie gemessen wurde, ist unbekannt.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was measured %2, before the stale limit (%3 d).</source>
+        <translation>Die TLO von T%1 wurde %2 gemessen und ist veraltet (Grenze %3 d).</translation>
+    </message>
+    <message>
+        <source>The history has a newer measurement of T%1 (%2, %3) than the table&apos;s: the table was not saved after it.</source>
+        <translation>Der Verlauf hat eine neuere Messung von T%1 (%2, %3) als die Tabelle: Die Tabelle wurde danach nicht gespeichert.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobFindingsModel</name>
+    <message>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>%1 (%2 times: lines %3)</source>
+        <translation>%1 (%2-mal: Zeilen %3)</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>Schweregrad</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Finding</source>
+        <translation>Befund</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobPrepareDialog</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>&amp;Save Prepared Program…</source>
+        <translation>Vorbereitetes Programm &amp;speichern …</translation>
+    </message>
+    <message>
+        <source>Prepare %1 for %2</source>
+        <translation>%1 für %2 vorbereiten</translation>
+    </message>
+    <message>
+        <source>After a manual change, set the tool&apos;s stored TLO instead of probing, when it is within the stale limit (%1 d)</source>
+        <translation>Nach einem manuellen Wechsel die gespeicherte TLO des Werkzeugs setzen statt zu vermessen, wenn sie nicht veraltet ist (%1 d)</translation>
+    </message>
+    <message>
+        <source>Break-test each tool after its last cut, with the tolerance</source>
+        <translation>Bruchtest für jedes Werkzeug nach seinem letzten Schnitt, mit der Toleranz</translation>
+    </message>
+    <message>
+        <source>Break-test tolerance</source>
+        <translation>Toleranz des Bruchtests</translation>
+    </message>
+    <message>
+        <source>%1: the missing G43 after each tool change is inserted, and nothing else.</source>
+        <translation>%1: Das fehlende G43 nach jedem Werkzeugwechsel wird eingefügt, sonst nichts.</translation>
+    </message>
+    <message>
+        <source>The original and the prepared program, side by side</source>
+        <translation>Das ursprüngliche und das vorbereitete Programm nebeneinander</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>Original</source>
+        <translation>Original</translation>
+    </message>
+    <message>
+        <source>Prepared</source>
+        <translation>Vorbereitet</translation>
+    </message>
+    <message>
+        <source>Preparing the preview…</source>
+        <translation>Vorschau wird erstellt …</translation>
+    </message>
+    <message>
+        <source>Writing %1…</source>
+        <translation>%1 wird geschrieben …</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was written.</source>
+        <translation>Abgebrochen: Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>Nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>The program cannot be prepared: %1</source>
+        <translation>Das Programm lässt sich nicht vorbereiten: %1</translation>
+    </message>
+    <message>
+        <source>Written to %1.</source>
+        <translation>In %1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>Nothing to change: the program already does what these options ask.</source>
+        <translation>Nichts zu ändern: Das Programm tut bereits, was diese Optionen verlangen.</translation>
+    </message>
+    <message>
+        <source>Lines inserted: %1, changed: %2. Cutting moves checked against the original: %3; each reaches the same work position with its tool&apos;s own offset.</source>
+        <translation>Eingefügte Zeilen: %1, geänderte: %2. Gegen das Original geprüfte Schnittbewegungen: %3; jede erreicht dieselbe Werkstückposition mit der eigenen Korrektur ihres Werkzeugs.</translation>
+    </message>
+    <message>
+        <source>The preview shows the first %1 changes; the other %2 are not shown.</source>
+        <translation>Die Vorschau zeigt die ersten %1 Änderungen; die übrigen %2 werden nicht gezeigt.</translation>
+    </message>
+    <message>
+        <source>Save Prepared Program</source>
+        <translation>Vorbereitetes Programm speichern</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.nc *.gcode *.ngc *.tap *.cnc);;All files (*)</source>
+        <translation>G-Code-Programme (*.nc *.gcode *.ngc *.tap *.cnc);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobPreparer</name>
+    <message>
+        <source>%1 has no stored-offset or break-test commands: --use-stored-tlo and --break-test are for the Carvera. For %1, prepare inserts only the missing G43.</source>
+        <translation>%1 hat keine Befehle für gespeicherte Korrekturen oder Bruchtests: --use-stored-tlo und --break-test sind für die Carvera. Für %1 fügt die Vorbereitung nur das fehlende G43 ein.</translation>
+    </message>
+    <message>
+        <source>Preparing a program is for the Carvera and the controllers with G43; Automation1 compensates with G143 / G144, which Toffee does not insert.</source>
+        <translation>Das Vorbereiten eines Programms ist für die Carvera und die Steuerungen mit G43; Automation1 korrigiert mit G143 / G144, die Toffee nicht einfügt.</translation>
+    </message>
+    <message>
+        <source>Say what to prepare: --use-stored-tlo, --break-test, or both.</source>
+        <translation>Geben Sie an, was vorbereitet werden soll: --use-stored-tlo, --break-test oder beides.</translation>
+    </message>
+    <message>
+        <source>The break-test tolerance must be from %1 mm (the Carvera halts below it) to %2 mm (a looser test would miss a broken tool).</source>
+        <translation>Die Bruchtest-Toleranz muss zwischen %1 mm (darunter hält die Carvera an) und %2 mm liegen (ein lockererer Test würde ein gebrochenes Werkzeug übersehen).</translation>
+    </message>
+    <message>
+        <source>%1 Toffee prepares only a program the controller runs: check the job first.</source>
+        <translation>%1 Toffee bereitet nur ein Programm vor, das die Steuerung ausführt: Prüfen Sie zuerst den Job.</translation>
+    </message>
+    <message>
+        <source>no G43 for T%1 after its change at line %2</source>
+        <translation>kein G43 für T%1 nach seinem Wechsel in Zeile %2</translation>
+    </message>
+    <message>
+        <source>the line Toffee would insert here, &quot;%1&quot;, is refused: %2 Nothing was written.</source>
+        <translation>Die Zeile, die Toffee hier einfügen würde, „%1“, wird abgelehnt: %2 Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>the line Toffee would insert here, &quot;%1&quot;, would move the machine. Nothing was written.</source>
+        <translation>Die Zeile, die Toffee hier einfügen würde, „%1“, würde die Maschine bewegen. Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>the prepared program could not be written.</source>
+        <translation>Das vorbereitete Programm ließ sich nicht schreiben.</translation>
+    </message>
+    <message>
+        <source>the prepared line &quot;%1&quot; is refused: %2 Nothing was written.</source>
+        <translation>Die vorbereitete Zeile „%1“ wird abgelehnt: %2 Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>The program cuts before any tool change (original line %1): there is no tool to break-test.</source>
+        <translation>Das Programm schneidet vor jedem Werkzeugwechsel (Originalzeile %1): Es gibt kein Werkzeug für einen Bruchtest.</translation>
+    </message>
+    <message>
+        <source>T%1 is the reference tool (TLO 0): the community firmware does not break-test it (it aborts with &quot;No previous TLO included&quot;), so no test is inserted.</source>
+        <translation>T%1 ist das Referenzwerkzeug (TLO 0): Die Community-Firmware macht damit keinen Bruchtest (sie bricht mit „No previous TLO included“ ab), daher wird kein Test eingefügt.</translation>
+    </message>
+    <message>
+        <source>the spindle stops for T%1&apos;s break test</source>
+        <translation>die Spindel stoppt für den Bruchtest von T%1</translation>
+    </message>
+    <message>
+        <source>break test of T%1 after its last cut at original line %2, tolerance %3 mm</source>
+        <translation>Bruchtest von T%1 nach seinem letzten Schnitt in Originalzeile %2, Toleranz %3 mm</translation>
+    </message>
+    <message>
+        <source>T%1 is in the rack: the Carvera measures a rack tool at every change.</source>
+        <translation>T%1 ist im Magazin: Die Carvera vermisst ein Magazinwerkzeug bei jedem Wechsel.</translation>
+    </message>
+    <message>
+        <source>T%1 is not in the table: it is measured at its change.</source>
+        <translation>T%1 steht nicht in der Tabelle: Es wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1 has no stored TLO: it is measured at its change.</source>
+        <translation>T%1 hat keine gespeicherte TLO: Es wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test: it is measured at its change.</source>
+        <translation>T%1 hat seinen letzten Bruchtest nicht bestanden: Es wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO is older than the stale limit (%2 d): it is measured at its change.</source>
+        <translation>Die gespeicherte TLO von T%1 ist veraltet (Grenze %2 d): T%1 wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
+        <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die der Maschine ist aber %3: T%1 wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>was &quot;%1&quot;: T%2 takes its stored TLO instead of a probe</source>
+        <translation>war „%1“: T%2 nimmt seine gespeicherte TLO statt einer Messung</translation>
+    </message>
+    <message>
+        <source>set by hand %1</source>
+        <translation>von Hand gesetzt am %1</translation>
+    </message>
+    <message>
+        <source>measured %1</source>
+        <translation>gemessen am %1</translation>
+    </message>
+    <message>
+        <source> against reference MCS Z %1</source>
+        <translation> gegen Referenz-MCS-Z %1</translation>
+    </message>
+    <message>
+        <source>T%1 is the tool in the spindle</source>
+        <translation>T%1 ist das Werkzeug in der Spindel</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO, %2</source>
+        <translation>gespeicherte TLO von T%1, %2</translation>
+    </message>
+    <message>
+        <source>the prepared program would put the machine elsewhere than the original with the table&apos;s offsets. Nothing was written.</source>
+        <translation>Das vorbereitete Programm würde die Maschine mit den Korrekturen der Tabelle an eine andere Stelle bringen als das Original. Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>the prepared program would cut at another work position than the original. Nothing was written.</source>
+        <translation>Das vorbereitete Programm würde an einer anderen Werkstückposition schneiden als das Original. Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>the prepared program would cut without T%1&apos;s length offset. Nothing was written.</source>
+        <translation>Das vorbereitete Programm würde ohne die Längenkorrektur von T%1 schneiden. Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO does not say which reference it was measured against: check that it still holds.</source>
+        <translation>Die gespeicherte TLO von T%1 sagt nicht, gegen welche Referenz sie gemessen wurde: Prüfen Sie, ob sie noch stimmt.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2 and T%3&apos;s against %4: the machine has one reference, so at most one is right. Probe one of them again, or prepare without stored TLOs. Nothing was written.</source>
+        <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die von T%3 gegen %4: Die Maschine hat eine Referenz, also stimmt höchstens eine. Vermessen Sie eines der Werkzeuge erneut oder bereiten Sie ohne gespeicherte TLOs vor. Es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
+        <translation>Die gespeicherten TLOs gelten nur, solange die Referenz-MCS-Z der Maschine %1 ist (wo ihr Referenzwerkzeug vermessen wurde): Prüfen Sie das, bevor Sie das Programm starten.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobReport</name>
+    <message>
+        <source>no findings</source>
+        <translation>keine Befunde</translation>
+    </message>
+    <message>
+        <source>1 error</source>
+        <translation>1 Fehler</translation>
+    </message>
+    <message>
+        <source>%1 errors</source>
+        <translation>%1 Fehler</translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>1 Warnung</translation>
+    </message>
+    <message>
+        <source>%1 warnings</source>
+        <translation>%1 Warnungen</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobToolsModel</name>
+    <message>
+        <source>not in the table</source>
+        <translation>nicht in der Tabelle</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Loaded at line</source>
+        <translation>Eingewechselt in Zeile</translation>
+    </message>
+    <message>
+        <source>TLO (mm)</source>
+        <translation>TLO (mm)</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Gemessen</translation>
+    </message>
+    <message>
+        <source>Cutting time</source>
+        <translation>Schnittzeit</translation>
+    </message>
+    <message>
+        <source>Feed path (mm)</source>
+        <translation>Vorschubweg (mm)</translation>
+    </message>
+    <message>
+        <source>Lowest cut Z (mm)</source>
+        <translation>Tiefstes Schnitt-Z (mm)</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::JsonScanner</name>
     <message>
         <source>this is not valid JSON: expected %1.</source>
@@ -1753,7 +2326,7 @@
         <translation>Eine Zeichenkette ist kein gültiger UTF-8-Text.</translation>
     </message>
     <message>
-        <source>the text "%1" is longer than %2 KB; no field of a tool table holds that much.</source>
+        <source>the text &quot;%1&quot; is longer than %2 KB; no field of a tool table holds that much.</source>
         <translation>Der Text „%1“ ist länger als %2 KB; kein Feld einer Werkzeugtabelle fasst so viel.</translation>
     </message>
 </context>
@@ -1859,8 +2432,19 @@
         <translation>Es wurde keine Bibliotheksdatei angegeben: Nennen Sie eine SQLite-Datei, etwa sqlite:library.sqlite.</translation>
     </message>
     <message>
-        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH), not from "%2".</source>
+        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH), not from &quot;%2&quot;.</source>
         <translation>%1: Toffee liest eine Bibliothek aus einer SQLite-Datei (einem Pfad oder sqlite:PFAD), nicht aus „%2“.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::LineReader</name>
+    <message>
+        <source>line %1 holds a NUL byte: this is not a text program (UTF-16, or not text at all?). Save it as plain text (UTF-8 or ASCII).</source>
+        <translation>Zeile %1 enthält ein NUL-Byte: Das ist kein Textprogramm (UTF-16 oder gar kein Text?). Speichern Sie es als reinen Text (UTF-8 oder ASCII).</translation>
+    </message>
+    <message>
+        <source>line %1 is longer than %2 KB; no program line is.</source>
+        <translation>Zeile %1 ist länger als %2 KB; so lang ist keine Programmzeile.</translation>
     </message>
 </context>
 <context>
@@ -1952,7 +2536,7 @@
         <translation>Nicht mit der Maschine verbunden; zuerst verbinden.</translation>
     </message>
     <message>
-        <source>The machine refused "%1": %2</source>
+        <source>The machine refused &quot;%1&quot;: %2</source>
         <translation>Die Maschine hat „%1“ abgelehnt: %2</translation>
     </message>
     <message>
@@ -1960,7 +2544,7 @@
         <translation>die Verbindung wurde geschlossen</translation>
     </message>
     <message>
-        <source>The connection to the machine was lost while it ran "%1": %2</source>
+        <source>The connection to the machine was lost while it ran &quot;%1&quot;: %2</source>
         <translation>Die Verbindung zur Maschine ging verloren, während sie „%1“ ausführte: %2</translation>
     </message>
     <message>
@@ -1968,7 +2552,7 @@
         <translation>Die Verbindung zur Maschine ging verloren: %1</translation>
     </message>
     <message>
-        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
+        <source>The machine did not answer &quot;%1&quot; within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
         <translation>Die Maschine hat auf „%1“ nicht innerhalb von %2 s geantwortet. Die Verbindung wurde geschlossen, weil eine späte Antwort für die des nächsten Befehls gehalten werden könnte. Verbinden Sie erneut und prüfen Sie die Maschine, bevor Sie weitermachen.%3</translation>
     </message>
     <message>
@@ -2023,7 +2607,7 @@
         <translation>Die Maschine hat für dieses Werkzeug keine Längenkorrektur zum Vergleich. Vermessen Sie das Werkzeug zuerst und starten Sie dann den Bruchtest.</translation>
     </message>
     <message>
-        <source>The break test ran but its result ("Old: … , new: …") could not be read. Run it again before you trust the tool.</source>
+        <source>The break test ran but its result (&quot;Old: … , new: …&quot;) could not be read. Run it again before you trust the tool.</source>
         <translation>Der Bruchtest ist gelaufen, aber sein Ergebnis („Old: … , new: …“) war nicht lesbar. Starten Sie ihn erneut, bevor Sie dem Werkzeug trauen.</translation>
     </message>
     <message>
@@ -2059,7 +2643,7 @@
         <translation>Die Maschine hat vor ihrer Antwort %1 Zeilen ausgegeben; nur die letzten %2 wurden behalten, und das Ergebnis war vielleicht unter den anderen.</translation>
     </message>
     <message>
-        <source>The machine did not answer "%1" within the %2 s allowed for connecting. Check that it is on and the cable, then connect again (or allow longer).</source>
+        <source>The machine did not answer &quot;%1&quot; within the %2 s allowed for connecting. Check that it is on and the cable, then connect again (or allow longer).</source>
         <translation>Die Maschine hat auf „%1“ nicht innerhalb der %2 s geantwortet, die zum Verbinden erlaubt sind. Prüfen Sie, ob sie eingeschaltet ist, und das Kabel; verbinden Sie dann erneut (oder erlauben Sie mehr Zeit).</translation>
     </message>
     <message>
@@ -2071,7 +2655,7 @@
         <translation>Die Maschine blieb während der %2 s, die zum Verbinden erlaubt sind, beschäftigt (%1). Warten Sie, bis sie fertig ist, oder halten Sie sie an, und verbinden Sie dann erneut.</translation>
     </message>
     <message>
-        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: "%1". Nothing was recorded; check the offsets on the machine before you cut.</source>
+        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: &quot;%1&quot;. Nothing was recorded; check the offsets on the machine before you cut.</source>
         <translation>Der Korrekturbericht der Maschine (M493.4) enthält Werte, die keine Maschine haben kann: „%1“. Nichts wurde gespeichert; prüfen Sie die Korrekturen an der Maschine, bevor Sie schneiden.</translation>
     </message>
     <message>
@@ -2332,7 +2916,7 @@ Zuerst speichern?</translation>
         <translation>Die Maschine ist beschäftigt</translation>
     </message>
     <message>
-        <source>The machine is running "%1". Stop it and quit?</source>
+        <source>The machine is running &quot;%1&quot;. Stop it and quit?</source>
         <translation>Die Maschine führt „%1“ aus. Anhalten und beenden?</translation>
     </message>
     <message>
@@ -2466,6 +3050,18 @@ Trotzdem speichern?</translation>
     <message>
         <source>Imported from %1: %2</source>
         <translation>Importiert aus %1: %2</translation>
+    </message>
+    <message>
+        <source>Check &amp;Job…</source>
+        <translation>&amp;Job prüfen …</translation>
+    </message>
+    <message>
+        <source>Check Job</source>
+        <translation>Job prüfen</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.nc *.gcode *.ngc *.tap *.cnc *.gc *.g *.pgm *.mpf);;All files (*)</source>
+        <translation>G-Code-Programme (*.nc *.gcode *.ngc *.tap *.cnc *.gc *.g *.pgm *.mpf);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>
@@ -3086,11 +3682,11 @@ Vermessen Sie T%1 stattdessen.</translation>
         <translation>Notizen</translation>
     </message>
     <message>
-        <source>%1: "%2" is not a number; enter a value such as -12.345.</source>
+        <source>%1: &quot;%2&quot; is not a number; enter a value such as -12.345.</source>
         <translation>%1: „%2“ ist keine Zahl; geben Sie einen Wert wie -12,345 ein.</translation>
     </message>
     <message>
-        <source>%1: "%2" is not a whole number.</source>
+        <source>%1: &quot;%2&quot; is not a whole number.</source>
         <translation>%1: „%2“ ist keine ganze Zahl.</translation>
     </message>
     <message>
@@ -3136,34 +3732,6 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>%1 (stale)</source>
         <translation>%1 (veraltet)</translation>
-    </message>
-    <message>
-        <source>just now</source>
-        <translation>gerade eben</translation>
-    </message>
-    <message>
-        <source>%1 min ago</source>
-        <translation>vor %1 min</translation>
-    </message>
-    <message>
-        <source>%1 h ago</source>
-        <translation>vor %1 h</translation>
-    </message>
-    <message>
-        <source>%1 days ago</source>
-        <translation>vor %1 Tagen</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1 min</source>
-        <translation>%1 min</translation>
-    </message>
-    <message>
-        <source>%1 h %2 min</source>
-        <translation>%1 h %2 min</translation>
     </message>
     <message>
         <source>Last measured</source>
@@ -3237,6 +3805,10 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>The history library: an SQLite file (or sqlite:PATH).</source>
         <translation>Die Verlaufsbibliothek: eine SQLite-Datei (oder sqlite:PFAD).</translation>
+    </message>
+    <message>
+        <source>Check the G-code PROGRAM against the table once the window is open.</source>
+        <translation>Das G-Code-Programm PROGRAM gegen die Tabelle prüfen, sobald das Fenster offen ist.</translation>
     </message>
 </context>
 </TS>

@@ -20,7 +20,7 @@
         <translation>%1 %2 %3 超出范围；控制器接受 %4 到 %5 %3。</translation>
     </message>
     <message>
-        <source>"%1" is not a LinuxCNC tool field (X, Y, A, B, C, U, V, W, I, J or Q0-Q9).</source>
+        <source>&quot;%1&quot; is not a LinuxCNC tool field (X, Y, A, B, C, U, V, W, I, J or Q0-Q9).</source>
         <translation>“%1”不是 LinuxCNC 刀具字段（X、Y、A、B、C、U、V、W、I、J 或 Q0-Q9）。</translation>
     </message>
     <message>
@@ -104,35 +104,35 @@
         <translation>%1：无法读取：%2</translation>
     </message>
     <message>
-        <source>"%1" must be a whole number.</source>
+        <source>&quot;%1&quot; must be a whole number.</source>
         <translation>“%1”必须是整数。</translation>
     </message>
     <message>
-        <source>"%1" must be a number.</source>
+        <source>&quot;%1&quot; must be a number.</source>
         <translation>“%1”必须是数字。</translation>
     </message>
     <message>
-        <source>"%1" must be text.</source>
+        <source>&quot;%1&quot; must be text.</source>
         <translation>“%1”必须是文本。</translation>
     </message>
     <message>
-        <source>each entry of "tools" must be a JSON object such as {"number": 1}.</source>
-        <translation>“tools”中的每一项都必须是 JSON 对象，例如 {"number": 1}。</translation>
+        <source>each entry of &quot;tools&quot; must be a JSON object such as {&quot;number&quot;: 1}.</source>
+        <translation>“tools”中的每一项都必须是 JSON 对象，例如 {&quot;number&quot;: 1}。</translation>
     </message>
     <message>
-        <source>unknown field "%1" in a tool.</source>
+        <source>unknown field &quot;%1&quot; in a tool.</source>
         <translation>刀具中有未知字段“%1”。</translation>
     </message>
     <message>
-        <source>the field "%1" appears twice in a tool.</source>
+        <source>the field &quot;%1&quot; appears twice in a tool.</source>
         <translation>字段“%1”在一个刀具中出现了两次。</translation>
     </message>
     <message>
-        <source>"measured_at" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
+        <source>&quot;measured_at&quot; is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
         <translation>“measured_at”不是日期时间（请使用 ISO 8601，例如 2026-11-22T10:15:00Z）。</translation>
     </message>
     <message>
-        <source>a tool has no "number".</source>
+        <source>a tool has no &quot;number&quot;.</source>
         <translation>有一个刀具没有“number”。</translation>
     </message>
     <message>
@@ -144,27 +144,27 @@
         <translation>这不是 Toffee 刀具表：文件必须只包含一个 JSON 对象。</translation>
     </message>
     <message>
-        <source>this is not a Toffee tool table: "format" must be "%1", before "tools".</source>
+        <source>this is not a Toffee tool table: &quot;format&quot; must be &quot;%1&quot;, before &quot;tools&quot;.</source>
         <translation>这不是 Toffee 刀具表：“format”必须是“%1”，并且位于“tools”之前。</translation>
     </message>
     <message>
-        <source>"version" must come before "tools".</source>
+        <source>&quot;version&quot; must come before &quot;tools&quot;.</source>
         <translation>“version”必须位于“tools”之前。</translation>
     </message>
     <message>
-        <source>"tools" appears twice.</source>
+        <source>&quot;tools&quot; appears twice.</source>
         <translation>“tools”出现了两次。</translation>
     </message>
     <message>
-        <source>"tools" must be a list of tools.</source>
+        <source>&quot;tools&quot; must be a list of tools.</source>
         <translation>“tools”必须是刀具列表。</translation>
     </message>
     <message>
-        <source>this is not a Toffee tool table: "format" must be "%1".</source>
+        <source>this is not a Toffee tool table: &quot;format&quot; must be &quot;%1&quot;.</source>
         <translation>这不是 Toffee 刀具表：“format”必须是“%1”。</translation>
     </message>
     <message>
-        <source>"version" must be a whole number from 1 up.</source>
+        <source>&quot;version&quot; must be a whole number from 1 up.</source>
         <translation>“version”必须是从 1 开始的整数。</translation>
     </message>
     <message>
@@ -172,11 +172,11 @@
         <translation>此表由更新版本的 Toffee 写入（格式版本 %1）；当前版本最多读取版本 %2。请更新 Toffee 后再打开。</translation>
     </message>
     <message>
-        <source>"units" must be "mm" or "in".</source>
+        <source>&quot;units&quot; must be &quot;mm&quot; or &quot;in&quot;.</source>
         <translation>“units”必须是“mm”或“in”。</translation>
     </message>
     <message>
-        <source>unknown field "%1" in the table.</source>
+        <source>unknown field &quot;%1&quot; in the table.</source>
         <translation>表中有未知字段“%1”。</translation>
     </message>
     <message>
@@ -188,23 +188,23 @@
         <translation>注释不是有效的 UTF-8 文本。</translation>
     </message>
     <message>
-        <source>"%1": the field %2 appears twice.</source>
+        <source>&quot;%1&quot;: the field %2 appears twice.</source>
         <translation>“%1”：字段 %2 出现了两次。</translation>
     </message>
     <message>
-        <source>"%1": %2 needs a whole number.</source>
+        <source>&quot;%1&quot;: %2 needs a whole number.</source>
         <translation>“%1”：%2 需要整数。</translation>
     </message>
     <message>
-        <source>"%1": the orientation Q must be 0 to 9.</source>
+        <source>&quot;%1&quot;: the orientation Q must be 0 to 9.</source>
         <translation>“%1”：方向 Q 必须是 0 到 9。</translation>
     </message>
     <message>
-        <source>"%1" is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, J, Q and a ;comment.</source>
+        <source>&quot;%1&quot; is not a tool table field; a line holds T, P, X, Y, Z, A, B, C, U, V, W, D, I, J, Q and a ;comment.</source>
         <translation>“%1”不是刀具表字段；一行包含 T、P、X、Y、Z、A、B、C、U、V、W、D、I、J、Q 和 ;注释。</translation>
     </message>
     <message>
-        <source>"%1": %2 needs a number.</source>
+        <source>&quot;%1&quot;: %2 needs a number.</source>
         <translation>“%1”：%2 需要数字。</translation>
     </message>
     <message>
@@ -224,35 +224,35 @@
         <translation>文件包含二进制数据；它不是 LinuxCNC 刀具表。</translation>
     </message>
     <message>
-        <source>a quoted field is never closed; add the closing quote (").</source>
-        <translation>有一个带引号的字段没有结束；请补上结束引号（"）。</translation>
+        <source>a quoted field is never closed; add the closing quote (&quot;).</source>
+        <translation>有一个带引号的字段没有结束；请补上结束引号（&quot;）。</translation>
     </message>
     <message>
         <source>text after a closing quote; put the whole field in quotes.</source>
         <translation>结束引号之后还有文本；请把整个字段放在引号内。</translation>
     </message>
     <message>
-        <source>a quote (") inside an unquoted field; put the whole field in quotes and double the quote.</source>
-        <translation>未加引号的字段中有引号（"）；请把整个字段放在引号内，并将引号写两次。</translation>
+        <source>a quote (&quot;) inside an unquoted field; put the whole field in quotes and double the quote.</source>
+        <translation>未加引号的字段中有引号（&quot;）；请把整个字段放在引号内，并将引号写两次。</translation>
     </message>
     <message>
         <source>the file holds binary data; it is not a CSV table.</source>
         <translation>文件包含二进制数据；它不是 CSV 表格。</translation>
     </message>
     <message>
-        <source>the file is not UTF-8 text; save it from the spreadsheet as "CSV UTF-8".</source>
+        <source>the file is not UTF-8 text; save it from the spreadsheet as &quot;CSV UTF-8&quot;.</source>
         <translation>文件不是 UTF-8 文本；请在电子表格软件中另存为“CSV UTF-8”。</translation>
     </message>
     <message>
-        <source>the file is empty; a CSV tool table starts with a header row such as "number,pocket,description,...".</source>
+        <source>the file is empty; a CSV tool table starts with a header row such as &quot;number,pocket,description,...&quot;.</source>
         <translation>文件为空；CSV 刀具表以表头行开始，例如“number,pocket,description,...”。</translation>
     </message>
     <message>
-        <source>the column "%1" appears twice in the header.</source>
+        <source>the column &quot;%1&quot; appears twice in the header.</source>
         <translation>列“%1”在表头中出现了两次。</translation>
     </message>
     <message>
-        <source>the header has no "number" column.</source>
+        <source>the header has no &quot;number&quot; column.</source>
         <translation>表头没有“number”列。</translation>
     </message>
     <message>
@@ -260,11 +260,11 @@
         <translation>此行有 %1 个字段，但表头有 %2 个。</translation>
     </message>
     <message>
-        <source>%1 "%2" is not a number.</source>
+        <source>%1 &quot;%2&quot; is not a number.</source>
         <translation>%1“%2”不是数字。</translation>
     </message>
     <message>
-        <source>%1 "%2" is not a whole number.</source>
+        <source>%1 &quot;%2&quot; is not a whole number.</source>
         <translation>%1“%2”不是整数。</translation>
     </message>
     <message>
@@ -272,11 +272,11 @@
         <translation>该行没有刀具号。</translation>
     </message>
     <message>
-        <source>measured_at "%1" is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
+        <source>measured_at &quot;%1&quot; is not a date and time (use ISO 8601, e.g. 2026-11-22T10:15:00Z).</source>
         <translation>measured_at“%1”不是日期时间（请使用 ISO 8601，例如 2026-11-22T10:15:00Z）。</translation>
     </message>
     <message>
-        <source>units "%1" must be mm or in.</source>
+        <source>units &quot;%1&quot; must be mm or in.</source>
         <translation>单位“%1”必须是 mm 或 in。</translation>
     </message>
     <message>
@@ -380,7 +380,7 @@
         <translation>该表将超过 %1 MB，超出 Toffee 能读回的大小；请缩短备注或拆分表格。</translation>
     </message>
     <message>
-        <source>"%1": %2 is out of range; use %3 to %4.</source>
+        <source>&quot;%1&quot;: %2 is out of range; use %3 to %4.</source>
         <translation>“%1”：%2 超出范围；请使用 %3 到 %4。</translation>
     </message>
     <message>
@@ -388,11 +388,11 @@
         <translation>%1：内存不足，无法读取此表（文件大小为 %2 MB）。</translation>
     </message>
     <message>
-        <source>the comment "%1" is longer than a description may be (%2 characters).</source>
+        <source>the comment &quot;%1&quot; is longer than a description may be (%2 characters).</source>
         <translation>注释“%1”超过描述允许的长度（%2 个字符）。</translation>
     </message>
     <message>
-        <source>the field "%1" is longer than %2 KB; no column of a tool table holds that much.</source>
+        <source>the field &quot;%1&quot; is longer than %2 KB; no column of a tool table holds that much.</source>
         <translation>字段“%1”超过 %2 KB；刀具表的任何列都容纳不了这么多。</translation>
     </message>
     <message>
@@ -432,20 +432,20 @@
         <translation>LinuxCNC 刀具表无法标记未通过断刀检测的刀具：%1 将不再被标记。</translation>
     </message>
     <message>
-        <source>"tlo_source" must be "probe" or "manual".</source>
-        <translation>"tlo_source" 必须是 "probe" 或 "manual"。</translation>
+        <source>&quot;tlo_source&quot; must be &quot;probe&quot; or &quot;manual&quot;.</source>
+        <translation>&quot;tlo_source&quot; 必须是 &quot;probe&quot; 或 &quot;manual&quot;。</translation>
     </message>
     <message>
-        <source>"break_test_failed" must be true or false.</source>
-        <translation>"break_test_failed" 必须是 true 或 false。</translation>
+        <source>&quot;break_test_failed&quot; must be true or false.</source>
+        <translation>&quot;break_test_failed&quot; 必须是 true 或 false。</translation>
     </message>
     <message>
-        <source>tlo_source "%1" must be probe, manual or empty.</source>
-        <translation>tlo_source "%1" 必须是 probe、manual 或留空。</translation>
+        <source>tlo_source &quot;%1&quot; must be probe, manual or empty.</source>
+        <translation>tlo_source &quot;%1&quot; 必须是 probe、manual 或留空。</translation>
     </message>
     <message>
-        <source>break_test "%1" must be failed, passed or empty.</source>
-        <translation>break_test "%1" 必须是 failed、passed 或留空。</translation>
+        <source>break_test &quot;%1&quot; must be failed, passed or empty.</source>
+        <translation>break_test &quot;%1&quot; 必须是 failed、passed 或留空。</translation>
     </message>
     <message>
         <source>The machine was stopped (Stop, Ctrl-X or the stop button).</source>
@@ -520,7 +520,7 @@
         <translation>基准 MCS Z</translation>
     </message>
     <message>
-        <source>unknown column "%1" in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
+        <source>unknown column &quot;%1&quot; in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
         <translation>表头中有未知列“%1”；可用的列为 number、pocket、description、length_geometry、length_wear、radius_geometry、radius_wear、measured_tlo、measured_at、notes、tlo_source、break_test、reference_mz、units 和 linuxcnc。</translation>
     </message>
     <message>
@@ -664,11 +664,11 @@
         <translation>第 %1 列：这不是有效的 JSON（%2）。</translation>
     </message>
     <message>
-        <source>this is not a Fusion tool library: that is a JSON object with "data", a list of tools.</source>
+        <source>this is not a Fusion tool library: that is a JSON object with &quot;data&quot;, a list of tools.</source>
         <translation>这不是 Fusion 刀具库：刀具库是一个带有“data”（刀具列表）的 JSON 对象。</translation>
     </message>
     <message>
-        <source>tool %1 in "data"</source>
+        <source>tool %1 in &quot;data&quot;</source>
         <translation>“data”中的第 %1 把刀具</translation>
     </message>
     <message>
@@ -700,8 +700,68 @@
         <translation>程序的前 %1 MB 全是注释；Toffee 只从程序开头读取刀具头。</translation>
     </message>
     <message>
-        <source>this program has no Makera CAM tool header (";@MKR|TOOL|number=…" lines before the program body); there are no tools to import from it.</source>
+        <source>this program has no Makera CAM tool header (&quot;;@MKR|TOOL|number=…&quot; lines before the program body); there are no tools to import from it.</source>
         <translation>该程序没有 Makera CAM 刀具头（程序主体之前的“;@MKR|TOOL|number=…”行）；没有可从中导入的刀具。</translation>
+    </message>
+    <message>
+        <source>just now</source>
+        <translation>刚刚</translation>
+    </message>
+    <message>
+        <source>%1 min ago</source>
+        <translation>%1 分钟前</translation>
+    </message>
+    <message>
+        <source>%1 h ago</source>
+        <translation>%1 小时前</translation>
+    </message>
+    <message>
+        <source>%1 days ago</source>
+        <translation>%1 天前</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 分钟</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 小时 %2 分钟</translation>
+    </message>
+    <message>
+        <source>a rack is &quot;none&quot;, or tool numbers and ranges such as 1-6 or 1,2,5-8.</source>
+        <translation>刀库应为“none”，或刀具号及范围，例如 1-6 或 1,2,5-8。</translation>
+    </message>
+    <message>
+        <source>the job check finds %1; the first, on line %2: %3 Fix them before preparing the program (Check Job, or toffee-cli job check, lists them). Nothing was written.</source>
+        <translation>作业检查发现 %1；第一个在第 %2 行：%3 请先修正这些错误，再准备程序（“检查作业”或 toffee-cli job check 会列出它们）。未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>an error</source>
+        <translation>1 个错误</translation>
+    </message>
+    <message>
+        <source>%1 errors</source>
+        <translation>%1 个错误</translation>
+    </message>
+    <message>
+        <source>Preparing was cancelled; nothing was written.</source>
+        <translation>准备已取消；未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Say where the prepared program goes: no file name was given.</source>
+        <translation>请指定准备好的程序保存到哪里：没有给出文件名。</translation>
+    </message>
+    <message>
+        <source>%1: the prepared program must go to another file than the program itself.</source>
+        <translation>%1：准备好的程序必须保存到原程序以外的文件。</translation>
+    </message>
+    <message>
+        <source>%1 is the tool table: the prepared program must go to another file.</source>
+        <translation>%1 是刀具表：准备好的程序必须保存到其他文件。</translation>
     </message>
 </context>
 <context>
@@ -879,11 +939,11 @@
         <translation>%1 会点动机床。</translation>
     </message>
     <message>
-        <source>"%1" is not a G-code line Toffee can read; check it for a letter without a number.</source>
+        <source>&quot;%1&quot; is not a G-code line Toffee can read; check it for a letter without a number.</source>
         <translation>“%1”不是 Toffee 能读取的 G 代码行；请检查其中是否有不带数字的字母。</translation>
     </message>
     <message>
-        <source>The machine is halted: it refuses "%1" until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
+        <source>The machine is halted: it refuses &quot;%1&quot; until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
         <translation>机床已停机：解锁之前它拒绝执行“%1”。请检查机床，然后使用“机床 ▸ 解锁”（$X）。</translation>
     </message>
     <message>
@@ -947,7 +1007,7 @@
         <translation>%1 不是刀具号；请使用 %2 到 %3（%4 表示主轴为空）。</translation>
     </message>
     <message>
-        <source>"%1" is not a G-code line Toffee can read: %2</source>
+        <source>&quot;%1&quot; is not a G-code line Toffee can read: %2</source>
         <translation>“%1”不是 Toffee 能读取的 G 代码行：%2</translation>
     </message>
 </context>
@@ -1105,46 +1165,46 @@
 <context>
     <name>Toffee::FusionToolReader</name>
     <message>
-        <source>"%1" is %2, not an object.</source>
+        <source>&quot;%1&quot; is %2, not an object.</source>
         <translation>“%1”为 %2，不是对象。</translation>
     </message>
     <message>
-        <source>"%1" is %2, not text.</source>
+        <source>&quot;%1&quot; is %2, not text.</source>
         <translation>“%1”为 %2，不是文本。</translation>
     </message>
     <message>
-        <source>"%1" is %2, not a number.</source>
+        <source>&quot;%1&quot; is %2, not a number.</source>
         <translation>“%1”为 %2，不是数字。</translation>
     </message>
     <message>
-        <source>it has no "post-process" "number": Toffee needs the T number the post writes.</source>
+        <source>it has no &quot;post-process&quot; &quot;number&quot;: Toffee needs the T number the post writes.</source>
         <translation>它没有“post-process”的“number”：Toffee 需要后处理器输出的 T 号。</translation>
     </message>
     <message>
-        <source>its "number" is %1, not a whole number.</source>
+        <source>its &quot;number&quot; is %1, not a whole number.</source>
         <translation>它的“number”为 %1，不是整数。</translation>
     </message>
     <message>
-        <source>its "length-offset" is %1, not a whole number.</source>
+        <source>its &quot;length-offset&quot; is %1, not a whole number.</source>
         <translation>它的“length-offset”为 %1，不是整数。</translation>
     </message>
     <message>
-        <source>its "number" %1 is out of range; use %2 to %3.</source>
+        <source>its &quot;number&quot; %1 is out of range; use %2 to %3.</source>
         <translation>它的“number” %1 超出范围；请使用 %2 到 %3。</translation>
     </message>
     <message>
-        <source>it has no "unit" (millimeters or inches).</source>
+        <source>it has no &quot;unit&quot; (millimeters or inches).</source>
         <translation>它没有“unit”（millimeters 或 inches）。</translation>
     </message>
     <message>
-        <source>its "unit" is "%1"; Toffee reads millimeters or inches.</source>
+        <source>its &quot;unit&quot; is &quot;%1&quot;; Toffee reads millimeters or inches.</source>
         <translation>它的“unit”为“%1”；Toffee 只读取 millimeters 或 inches。</translation>
     </message>
 </context>
 <context>
     <name>Toffee::GCodeInterpreter</name>
     <message>
-        <source>"%1" is not G-code this controller reads.</source>
+        <source>&quot;%1&quot; is not G-code this controller reads.</source>
         <translation>“%1”不是此控制器能读取的 G 代码。</translation>
     </message>
     <message>
@@ -1152,7 +1212,7 @@
         <translation>字 %1 需要一个值。</translation>
     </message>
     <message>
-        <source>"%1" is not a number.</source>
+        <source>&quot;%1&quot; is not a number.</source>
         <translation>“%1”不是数字。</translation>
     </message>
     <message>
@@ -1206,10 +1266,6 @@
     <message>
         <source>G10 needs an L word.</source>
         <translation>G10 需要 L 字。</translation>
-    </message>
-    <message>
-        <source>only G54 (P1) is simulated.</source>
-        <translation>只模拟 G54（P1）。</translation>
     </message>
     <message>
         <source>G10 L%1 is not simulated for LinuxCNC; G10 L1 writes the tool table.</source>
@@ -1272,7 +1328,7 @@
         <translation>只有在刀具偏置补偿关闭时才能更改补偿轴。</translation>
     </message>
     <message>
-        <source>"%1" is not a call this simulator knows.</source>
+        <source>&quot;%1&quot; is not a call this simulator knows.</source>
         <translation>“%1”不是此模拟器认识的调用。</translation>
     </message>
     <message>
@@ -1319,19 +1375,35 @@
         <source>G%1 needs the arc&apos;s centre (%2 %3) or its radius (R).</source>
         <translation>G%1 需要圆弧的圆心（%2 %3）或半径（R）。</translation>
     </message>
+    <message>
+        <source>G10 L%1 P%2: the work offsets are G54 to G59 (P1 to P6; LinuxCNC&apos;s G59.1 to G59.3 are P7 to P9).</source>
+        <translation>G10 L%1 P%2：工件坐标系为 G54 到 G59（P1 到 P6；LinuxCNC 的 G59.1 到 G59.3 为 P7 到 P9）。</translation>
+    </message>
+    <message>
+        <source>M%1 calls or ends a subprogram, which the check does not follow: what it cuts is not checked.</source>
+        <translation>M%1 调用或结束子程序，检查不会跟进子程序：其中的切削不会被检查。</translation>
+    </message>
+    <message>
+        <source>canned cycles are simulated in the XY plane (G17) only.</source>
+        <translation>固定循环只在 XY 平面（G17）中模拟。</translation>
+    </message>
+    <message>
+        <source>G%1 needs Z, the bottom of the hole.</source>
+        <translation>G%1 需要 Z，即孔底。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::GCodeLexer</name>
     <message>
-        <source>a comment "(" is never closed on this line.</source>
+        <source>a comment &quot;(&quot; is never closed on this line.</source>
         <translation>本行的注释“(”没有结束。</translation>
     </message>
     <message>
-        <source>unexpected "%1".</source>
+        <source>unexpected &quot;%1&quot;.</source>
         <translation>意外的“%1”。</translation>
     </message>
     <message>
-        <source>"%1" is not a number.</source>
+        <source>&quot;%1&quot; is not a number.</source>
         <translation>“%1”不是数字。</translation>
     </message>
     <message>
@@ -1339,8 +1411,12 @@
         <translation>%1 太大：控制器在小数点前最多接受八位数字。</translation>
     </message>
     <message>
-        <source>"%1" is not G-code this controller reads.</source>
+        <source>&quot;%1&quot; is not G-code this controller reads.</source>
         <translation>“%1”不是此控制器能读取的 G 代码。</translation>
+    </message>
+    <message>
+        <source>unexpected byte 0x%1.</source>
+        <translation>意外的字节 0x%1。</translation>
     </message>
 </context>
 <context>
@@ -1536,7 +1612,7 @@
         <translation>其中没有 XML 元素</translation>
     </message>
     <message>
-        <source>column %1: this is not an HSM tool library: its root element is &lt;%2&gt; in namespace "%3", where a library has &lt;tool-library&gt; in "%4".</source>
+        <source>column %1: this is not an HSM tool library: its root element is &lt;%2&gt; in namespace &quot;%3&quot;, where a library has &lt;tool-library&gt; in &quot;%4&quot;.</source>
         <translation>第 %1 列：这不是 HSM 刀具库：其根元素是命名空间“%3”中的 &lt;%2&gt;，而刀具库的根元素是“%4”中的 &lt;tool-library&gt;。</translation>
     </message>
     <message>
@@ -1548,7 +1624,7 @@
         <translation>第 %1 把刀具</translation>
     </message>
     <message>
-        <source>its unit is "%1"; Toffee reads millimeters or inches.</source>
+        <source>its unit is &quot;%1&quot;; Toffee reads millimeters or inches.</source>
         <translation>它的单位为“%1”；Toffee 只读取 millimeters 或 inches。</translation>
     </message>
     <message>
@@ -1556,7 +1632,7 @@
         <translation>它没有 &lt;nc number=…&gt;：Toffee 需要后处理器输出的 T 号。</translation>
     </message>
     <message>
-        <source>its nc number is "%1", not a tool number.</source>
+        <source>its nc number is &quot;%1&quot;, not a tool number.</source>
         <translation>它的 nc 编号为“%1”，不是刀具号。</translation>
     </message>
     <message>
@@ -1564,11 +1640,11 @@
         <translation>它有第二个 &lt;%1&gt;（第一个在第 %2 行）；一个刀具只有一个，Toffee 不会猜测指的是哪一个。</translation>
     </message>
     <message>
-        <source>its nc length-offset is "%1", not a whole number.</source>
+        <source>its nc length-offset is &quot;%1&quot;, not a whole number.</source>
         <translation>它的 nc length-offset 为“%1”，不是整数。</translation>
     </message>
     <message>
-        <source>its body %1 is "%2", not a number.</source>
+        <source>its body %1 is &quot;%2&quot;, not a number.</source>
         <translation>它的 body %1 为“%2”，不是数字。</translation>
     </message>
 </context>
@@ -1715,6 +1791,503 @@
     </message>
 </context>
 <context>
+    <name>Toffee::JobCheckDialog</name>
+    <message>
+        <source>Z &amp;floor:</source>
+        <translation>Z 下限(&amp;F)：</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Check &amp;Again</source>
+        <translation>重新检查(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Prepare…</source>
+        <translation>准备(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Tools in order of use</source>
+        <translation>按使用顺序排列的刀具</translation>
+    </message>
+    <message>
+        <source>Findings</source>
+        <translation>问题</translation>
+    </message>
+    <message>
+        <source>Check Job</source>
+        <translation>检查作业</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>Lowest work Z a feed move may reach</source>
+        <translation>进给移动可到达的最低工件 Z</translation>
+    </message>
+    <message>
+        <source>The tools the Carvera&apos;s rack holds</source>
+        <translation>Carvera 刀库中的刀具</translation>
+    </message>
+    <message>
+        <source>The tools the rack holds: 1-6 on a Carvera C1, none on a machine without one, or a list such as 1-4,8. Every other tool is a manual change.</source>
+        <translation>刀库中的刀具：Carvera C1 为 1-6，没有刀库的机床为 none，或写成列表，例如 1-4,8。其他刀具都需要手动换刀。</translation>
+    </message>
+    <message>
+        <source>How far the check is</source>
+        <translation>检查进度</translation>
+    </message>
+    <message>
+        <source>The program around the finding</source>
+        <translation>问题所在处的程序</translation>
+    </message>
+    <message>
+        <source>Double-click a finding to see the program around its line.</source>
+        <translation>双击某个问题，查看其所在行附近的程序。</translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation>控制器：</translation>
+    </message>
+    <message>
+        <source>&amp;Rack:</source>
+        <translation>刀库(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>&amp;Tools, in order of use</source>
+        <translation>刀具（按使用顺序）(&amp;T)</translation>
+    </message>
+    <message>
+        <source>F&amp;indings, by line</source>
+        <translation>问题（按行）(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Program: %1</source>
+        <translation>程序：%1</translation>
+    </message>
+    <message>
+        <source>Checking…</source>
+        <translation>正在检查…</translation>
+    </message>
+    <message>
+        <source>The program could not be checked: %1</source>
+        <translation>无法检查该程序：%1</translation>
+    </message>
+    <message>
+        <source>%1: %2 lines as %3; tools: %4, cutting %5, rapids %6 mm.</source>
+        <translation>%1：%2 行，按 %3 解读；刀具：%4，切削 %5，快速移动 %6 mm。</translation>
+    </message>
+    <message>
+        <source>Cancelled after %1 lines: what was found so far.</source>
+        <translation>在 %1 行后取消：以下为目前的结果。</translation>
+    </message>
+    <message>
+        <source>The check found errors: fix them before preparing the program.</source>
+        <translation>检查发现了错误：请先修正，再准备程序。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobChecker</name>
+    <message>
+        <source>A feed move before any tool change: the program does not say which tool is in the spindle.</source>
+        <translation>在任何换刀之前就有进给移动：程序没有说明主轴上是哪把刀具。</translation>
+    </message>
+    <message>
+        <source>T%1 feeds to work Z %2, below the floor of %3.</source>
+        <translation>T%1 进给到工件 Z %2，低于下限 %3。</translation>
+    </message>
+    <message>
+        <source>A feed move to work Z %1, below the floor of %2.</source>
+        <translation>进给移动到工件 Z %1，低于下限 %2。</translation>
+    </message>
+    <message>
+        <source>T%1 cuts with no length compensation: no G43 since it was loaded.</source>
+        <translation>T%1 切削时没有刀具长度补偿：装刀后没有 G43。</translation>
+    </message>
+    <message>
+        <source>T%1 cuts with %2%3 still in force from the tool before: no G43 %2%1 since its change.</source>
+        <translation>T%1 切削时仍沿用上一把刀具的 %2%3：换刀后没有 G43 %2%1。</translation>
+    </message>
+    <message>
+        <source>T%1 cuts with the length offset %2%3, which is another tool&apos;s.</source>
+        <translation>T%1 切削时使用的长度补偿 %2%3 属于另一把刀具。</translation>
+    </message>
+    <message>
+        <source>The program sets T%1&apos;s TLO to %2 itself; the table holds %3 for it.</source>
+        <translation>程序自行将 T%1 的 TLO 设为 %2；刀具表中为 %3。</translation>
+    </message>
+    <message>
+        <source>G20: the Carvera refuses inch programs (ALARM: Imperial Units are unsupported). Post the program in millimetres.</source>
+        <translation>G20：Carvera 拒绝英制程序（ALARM: Imperial Units are unsupported）。请以毫米为单位后处理该程序。</translation>
+    </message>
+    <message>
+        <source>The program is in inches (G20) but the tool table is in millimetres.</source>
+        <translation>程序使用英寸（G20），但刀具表使用毫米。</translation>
+    </message>
+    <message>
+        <source>The program is in millimetres (G21) but the tool table is in inches.</source>
+        <translation>程序使用毫米（G21），但刀具表使用英寸。</translation>
+    </message>
+    <message>
+        <source>More lines the controller would refuse, from this one on: %1 in all.</source>
+        <translation>从此行起还有控制器会拒绝的行：共 %1 行。</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s rack does not hold T%1: it is a manual change, and the machine waits for the operator.</source>
+        <translation>机床刀库中没有 T%1：需要手动换刀，机床会等待操作员。</translation>
+    </message>
+    <message>
+        <source>T%1 is not in the tool table: nothing is known of its length.</source>
+        <translation>T%1 不在刀具表中：其长度未知。</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test and has not been measured since: check the tool and probe it.</source>
+        <translation>T%1 未通过上次断刀检测，此后也未测量：请检查刀具并对刀。</translation>
+    </message>
+    <message>
+        <source>T%1 has no measured TLO.</source>
+        <translation>T%1 没有测得的 TLO。</translation>
+    </message>
+    <message>
+        <source>T%1 has no length in the table: G43 would apply 0.</source>
+        <translation>T%1 在刀具表中没有长度：G43 将使用 0。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO is dated %2, in the future: a clock was wrong, and when it was measured is not known.</source>
+        <translation>T%1 的 TLO 日期为 %2，在未来：某个时钟有误，无法知道它何时测量。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was measured %2, before the stale limit (%3 d).</source>
+        <translation>T%1 的 TLO 测量于 %2，已超过过期期限（%3 天）。</translation>
+    </message>
+    <message>
+        <source>The history has a newer measurement of T%1 (%2, %3) than the table&apos;s: the table was not saved after it.</source>
+        <translation>历史中有比刀具表更新的 T%1 测量记录（%2，%3）：此后刀具表未保存。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobFindingsModel</name>
+    <message>
+        <source>Error</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>%1 (%2 times: lines %3)</source>
+        <translation>%1（%2 次：第 %3 行）</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>严重程度</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>行</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>刀具</translation>
+    </message>
+    <message>
+        <source>Finding</source>
+        <translation>问题</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobPrepareDialog</name>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>&amp;Save Prepared Program…</source>
+        <translation>保存准备好的程序(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Prepare %1 for %2</source>
+        <translation>为 %2 准备 %1</translation>
+    </message>
+    <message>
+        <source>After a manual change, set the tool&apos;s stored TLO instead of probing, when it is within the stale limit (%1 d)</source>
+        <translation>手动换刀后，如果刀具的已存 TLO 未超过过期期限（%1 天），则设置该 TLO 而不对刀</translation>
+    </message>
+    <message>
+        <source>Break-test each tool after its last cut, with the tolerance</source>
+        <translation>在每把刀具最后一次切削后进行断刀检测，公差为</translation>
+    </message>
+    <message>
+        <source>Break-test tolerance</source>
+        <translation>断刀检测公差</translation>
+    </message>
+    <message>
+        <source>%1: the missing G43 after each tool change is inserted, and nothing else.</source>
+        <translation>%1：只在每次换刀后插入缺少的 G43，不做其他更改。</translation>
+    </message>
+    <message>
+        <source>The original and the prepared program, side by side</source>
+        <translation>原程序与准备好的程序并排对照</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>行</translation>
+    </message>
+    <message>
+        <source>Original</source>
+        <translation>原程序</translation>
+    </message>
+    <message>
+        <source>Prepared</source>
+        <translation>准备后</translation>
+    </message>
+    <message>
+        <source>Preparing the preview…</source>
+        <translation>正在准备预览…</translation>
+    </message>
+    <message>
+        <source>Writing %1…</source>
+        <translation>正在写入 %1…</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was written.</source>
+        <translation>已取消：未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>未保存：%1</translation>
+    </message>
+    <message>
+        <source>The program cannot be prepared: %1</source>
+        <translation>无法准备该程序：%1</translation>
+    </message>
+    <message>
+        <source>Written to %1.</source>
+        <translation>已写入 %1。</translation>
+    </message>
+    <message>
+        <source>Nothing to change: the program already does what these options ask.</source>
+        <translation>无需更改：程序已符合这些选项的要求。</translation>
+    </message>
+    <message>
+        <source>Lines inserted: %1, changed: %2. Cutting moves checked against the original: %3; each reaches the same work position with its tool&apos;s own offset.</source>
+        <translation>插入 %1 行，修改 %2 行。已对照原程序检查的切削移动：%3 个；每个都以其刀具自己的补偿到达相同的工件位置。</translation>
+    </message>
+    <message>
+        <source>The preview shows the first %1 changes; the other %2 are not shown.</source>
+        <translation>预览显示前 %1 处更改；其余 %2 处未显示。</translation>
+    </message>
+    <message>
+        <source>Save Prepared Program</source>
+        <translation>保存准备好的程序</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.nc *.gcode *.ngc *.tap *.cnc);;All files (*)</source>
+        <translation>G 代码程序 (*.nc *.gcode *.ngc *.tap *.cnc);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobPreparer</name>
+    <message>
+        <source>%1 has no stored-offset or break-test commands: --use-stored-tlo and --break-test are for the Carvera. For %1, prepare inserts only the missing G43.</source>
+        <translation>%1 没有使用已存补偿或断刀检测的命令：--use-stored-tlo 和 --break-test 用于 Carvera。对于 %1，准备只会插入缺少的 G43。</translation>
+    </message>
+    <message>
+        <source>Preparing a program is for the Carvera and the controllers with G43; Automation1 compensates with G143 / G144, which Toffee does not insert.</source>
+        <translation>准备程序适用于 Carvera 和使用 G43 的控制器；Automation1 用 G143 / G144 进行补偿，而 Toffee 不会插入它们。</translation>
+    </message>
+    <message>
+        <source>Say what to prepare: --use-stored-tlo, --break-test, or both.</source>
+        <translation>请指定要准备的内容：--use-stored-tlo、--break-test 或两者。</translation>
+    </message>
+    <message>
+        <source>The break-test tolerance must be from %1 mm (the Carvera halts below it) to %2 mm (a looser test would miss a broken tool).</source>
+        <translation>断刀检测公差必须在 %1 mm（低于此值 Carvera 会停机）到 %2 mm（更宽松的检测会漏掉断刀）之间。</translation>
+    </message>
+    <message>
+        <source>%1 Toffee prepares only a program the controller runs: check the job first.</source>
+        <translation>%1 Toffee 只准备控制器能运行的程序：请先检查作业。</translation>
+    </message>
+    <message>
+        <source>no G43 for T%1 after its change at line %2</source>
+        <translation>T%1 在第 %2 行换刀后没有 G43</translation>
+    </message>
+    <message>
+        <source>the line Toffee would insert here, &quot;%1&quot;, is refused: %2 Nothing was written.</source>
+        <translation>Toffee 要在此处插入的行“%1”被拒绝：%2 未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>the line Toffee would insert here, &quot;%1&quot;, would move the machine. Nothing was written.</source>
+        <translation>Toffee 要在此处插入的行“%1”会移动机床。未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>the prepared program could not be written.</source>
+        <translation>无法写入准备好的程序。</translation>
+    </message>
+    <message>
+        <source>the prepared line &quot;%1&quot; is refused: %2 Nothing was written.</source>
+        <translation>准备后的行“%1”被拒绝：%2 未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>The program cuts before any tool change (original line %1): there is no tool to break-test.</source>
+        <translation>程序在任何换刀之前就切削（原程序第 %1 行）：没有可进行断刀检测的刀具。</translation>
+    </message>
+    <message>
+        <source>T%1 is the reference tool (TLO 0): the community firmware does not break-test it (it aborts with &quot;No previous TLO included&quot;), so no test is inserted.</source>
+        <translation>T%1 是基准刀具（TLO 0）：社区固件不对其进行断刀检测（会以“No previous TLO included”中止），因此不插入检测。</translation>
+    </message>
+    <message>
+        <source>the spindle stops for T%1&apos;s break test</source>
+        <translation>主轴停止，以便对 T%1 进行断刀检测</translation>
+    </message>
+    <message>
+        <source>break test of T%1 after its last cut at original line %2, tolerance %3 mm</source>
+        <translation>T%1 在原程序第 %2 行最后一次切削后的断刀检测，公差 %3 mm</translation>
+    </message>
+    <message>
+        <source>T%1 is in the rack: the Carvera measures a rack tool at every change.</source>
+        <translation>T%1 在刀库中：Carvera 每次换刀都会测量刀库中的刀具。</translation>
+    </message>
+    <message>
+        <source>T%1 is not in the table: it is measured at its change.</source>
+        <translation>T%1 不在刀具表中：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1 has no stored TLO: it is measured at its change.</source>
+        <translation>T%1 没有已存 TLO：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test: it is measured at its change.</source>
+        <translation>T%1 未通过上次断刀检测：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO is older than the stale limit (%2 d): it is measured at its change.</source>
+        <translation>T%1 的已存 TLO 已超过过期期限（%2 天）：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
+        <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，但机床的基准为 %3：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>was &quot;%1&quot;: T%2 takes its stored TLO instead of a probe</source>
+        <translation>原为“%1”：T%2 使用其已存 TLO，而不对刀</translation>
+    </message>
+    <message>
+        <source>set by hand %1</source>
+        <translation>于 %1 手动设置</translation>
+    </message>
+    <message>
+        <source>measured %1</source>
+        <translation>于 %1 测量</translation>
+    </message>
+    <message>
+        <source> against reference MCS Z %1</source>
+        <translation>，基准 MCS Z %1</translation>
+    </message>
+    <message>
+        <source>T%1 is the tool in the spindle</source>
+        <translation>T%1 是主轴上的刀具</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO, %2</source>
+        <translation>T%1 的已存 TLO，%2</translation>
+    </message>
+    <message>
+        <source>the prepared program would put the machine elsewhere than the original with the table&apos;s offsets. Nothing was written.</source>
+        <translation>使用刀具表中的补偿时，准备好的程序会使机床到达与原程序不同的位置。未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>the prepared program would cut at another work position than the original. Nothing was written.</source>
+        <translation>准备好的程序会在与原程序不同的工件位置切削。未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>the prepared program would cut without T%1&apos;s length offset. Nothing was written.</source>
+        <translation>准备好的程序会在没有 T%1 长度补偿的情况下切削。未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO does not say which reference it was measured against: check that it still holds.</source>
+        <translation>T%1 的已存 TLO 未记录是相对于哪个基准测得的：请确认它仍然有效。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2 and T%3&apos;s against %4: the machine has one reference, so at most one is right. Probe one of them again, or prepare without stored TLOs. Nothing was written.</source>
+        <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，而 T%3 的是相对于 %4：机床只有一个基准，因此最多只有一个正确。请对其中一把刀具重新对刀，或不使用已存 TLO 进行准备。未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
+        <translation>只有当机床的基准 MCS Z 为 %1（其基准刀具对刀处）时，已存 TLO 才有效：运行程序前请检查。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobReport</name>
+    <message>
+        <source>no findings</source>
+        <translation>未发现问题</translation>
+    </message>
+    <message>
+        <source>1 error</source>
+        <translation>1 个错误</translation>
+    </message>
+    <message>
+        <source>%1 errors</source>
+        <translation>%1 个错误</translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>1 个警告</translation>
+    </message>
+    <message>
+        <source>%1 warnings</source>
+        <translation>%1 个警告</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1，%2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::JobToolsModel</name>
+    <message>
+        <source>not in the table</source>
+        <translation>不在刀具表中</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>未测量</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>刀具</translation>
+    </message>
+    <message>
+        <source>Loaded at line</source>
+        <translation>换刀行</translation>
+    </message>
+    <message>
+        <source>TLO (mm)</source>
+        <translation>TLO（mm）</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>测量时间</translation>
+    </message>
+    <message>
+        <source>Cutting time</source>
+        <translation>切削时间</translation>
+    </message>
+    <message>
+        <source>Feed path (mm)</source>
+        <translation>进给路径（mm）</translation>
+    </message>
+    <message>
+        <source>Lowest cut Z (mm)</source>
+        <translation>最低切削 Z（mm）</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::JsonScanner</name>
     <message>
         <source>this is not valid JSON: expected %1.</source>
@@ -1753,7 +2326,7 @@
         <translation>字符串不是有效的 UTF-8 文本。</translation>
     </message>
     <message>
-        <source>the text "%1" is longer than %2 KB; no field of a tool table holds that much.</source>
+        <source>the text &quot;%1&quot; is longer than %2 KB; no field of a tool table holds that much.</source>
         <translation>文本“%1”超过 %2 KB；刀具表的任何字段都容纳不了这么多。</translation>
     </message>
 </context>
@@ -1859,8 +2432,19 @@
         <translation>未给出库文件：请指定一个 SQLite 文件，例如 sqlite:library.sqlite。</translation>
     </message>
     <message>
-        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH), not from "%2".</source>
+        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH), not from &quot;%2&quot;.</source>
         <translation>%1：Toffee 从 SQLite 文件（路径或 sqlite:路径）读取库，而不是从“%2”。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::LineReader</name>
+    <message>
+        <source>line %1 holds a NUL byte: this is not a text program (UTF-16, or not text at all?). Save it as plain text (UTF-8 or ASCII).</source>
+        <translation>第 %1 行含有 NUL 字节：这不是文本程序（是 UTF-16，还是根本不是文本？）。请将其另存为纯文本（UTF-8 或 ASCII）。</translation>
+    </message>
+    <message>
+        <source>line %1 is longer than %2 KB; no program line is.</source>
+        <translation>第 %1 行超过 %2 KB；程序行不会这么长。</translation>
     </message>
 </context>
 <context>
@@ -1952,7 +2536,7 @@
         <translation>未连接到机床；请先连接。</translation>
     </message>
     <message>
-        <source>The machine refused "%1": %2</source>
+        <source>The machine refused &quot;%1&quot;: %2</source>
         <translation>机床拒绝了“%1”：%2</translation>
     </message>
     <message>
@@ -1960,7 +2544,7 @@
         <translation>连接已关闭</translation>
     </message>
     <message>
-        <source>The connection to the machine was lost while it ran "%1": %2</source>
+        <source>The connection to the machine was lost while it ran &quot;%1&quot;: %2</source>
         <translation>机床执行“%1”时连接丢失：%2</translation>
     </message>
     <message>
@@ -1968,7 +2552,7 @@
         <translation>与机床的连接丢失：%1</translation>
     </message>
     <message>
-        <source>The machine did not answer "%1" within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
+        <source>The machine did not answer &quot;%1&quot; within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
         <translation>机器未在 %2 秒内回应“%1”。连接已关闭，因为迟到的回应可能被当作下一条命令的回应。请重新连接，并在继续之前检查机器。%3</translation>
     </message>
     <message>
@@ -2023,7 +2607,7 @@
         <translation>机床没有此刀具的刀长补偿可供比较。请先对刀，再运行断刀检测。</translation>
     </message>
     <message>
-        <source>The break test ran but its result ("Old: … , new: …") could not be read. Run it again before you trust the tool.</source>
+        <source>The break test ran but its result (&quot;Old: … , new: …&quot;) could not be read. Run it again before you trust the tool.</source>
         <translation>断刀检测已运行，但无法读取其结果（“Old: … , new: …”）。在信任该刀具之前请重新运行。</translation>
     </message>
     <message>
@@ -2059,7 +2643,7 @@
         <translation>机器在回应之前输出了 %1 行；只保留了最后 %2 行，结果可能在其余行中。</translation>
     </message>
     <message>
-        <source>The machine did not answer "%1" within the %2 s allowed for connecting. Check that it is on and the cable, then connect again (or allow longer).</source>
+        <source>The machine did not answer &quot;%1&quot; within the %2 s allowed for connecting. Check that it is on and the cable, then connect again (or allow longer).</source>
         <translation>机器未在连接允许的 %2 秒内回应“%1”。请检查机器是否开启以及电缆，然后重新连接（或允许更长时间）。</translation>
     </message>
     <message>
@@ -2071,7 +2655,7 @@
         <translation>在连接允许的 %2 秒内机器一直忙碌（%1）。请等待其完成或将其停止，然后重新连接。</translation>
     </message>
     <message>
-        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: "%1". Nothing was recorded; check the offsets on the machine before you cut.</source>
+        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: &quot;%1&quot;. Nothing was recorded; check the offsets on the machine before you cut.</source>
         <translation>机器的偏置报告（M493.4）含有任何机器都不可能有的数值：“%1”。未记录任何内容；切削前请在机器上检查偏置。</translation>
     </message>
     <message>
@@ -2332,7 +2916,7 @@ Save them first?</source>
         <translation>机床正忙</translation>
     </message>
     <message>
-        <source>The machine is running "%1". Stop it and quit?</source>
+        <source>The machine is running &quot;%1&quot;. Stop it and quit?</source>
         <translation>机床正在执行“%1”。停止并退出吗？</translation>
     </message>
     <message>
@@ -2466,6 +3050,18 @@ Save anyway?</source>
     <message>
         <source>Imported from %1: %2</source>
         <translation>已从 %1 导入：%2</translation>
+    </message>
+    <message>
+        <source>Check &amp;Job…</source>
+        <translation>检查作业(&amp;J)…</translation>
+    </message>
+    <message>
+        <source>Check Job</source>
+        <translation>检查作业</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.nc *.gcode *.ngc *.tap *.cnc *.gc *.g *.pgm *.mpf);;All files (*)</source>
+        <translation>G 代码程序 (*.nc *.gcode *.ngc *.tap *.cnc *.gc *.g *.pgm *.mpf);;所有文件 (*)</translation>
     </message>
 </context>
 <context>
@@ -3086,11 +3682,11 @@ Probe T%1 instead.</source>
         <translation>备注</translation>
     </message>
     <message>
-        <source>%1: "%2" is not a number; enter a value such as -12.345.</source>
+        <source>%1: &quot;%2&quot; is not a number; enter a value such as -12.345.</source>
         <translation>%1：“%2”不是数字；请输入例如 -12.345 的值。</translation>
     </message>
     <message>
-        <source>%1: "%2" is not a whole number.</source>
+        <source>%1: &quot;%2&quot; is not a whole number.</source>
         <translation>%1：“%2”不是整数。</translation>
     </message>
     <message>
@@ -3136,34 +3732,6 @@ Probe T%1 instead.</source>
     <message>
         <source>%1 (stale)</source>
         <translation>%1（已过期）</translation>
-    </message>
-    <message>
-        <source>just now</source>
-        <translation>刚刚</translation>
-    </message>
-    <message>
-        <source>%1 min ago</source>
-        <translation>%1 分钟前</translation>
-    </message>
-    <message>
-        <source>%1 h ago</source>
-        <translation>%1 小时前</translation>
-    </message>
-    <message>
-        <source>%1 days ago</source>
-        <translation>%1 天前</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 秒</translation>
-    </message>
-    <message>
-        <source>%1 min</source>
-        <translation>%1 分钟</translation>
-    </message>
-    <message>
-        <source>%1 h %2 min</source>
-        <translation>%1 小时 %2 分钟</translation>
     </message>
     <message>
         <source>Last measured</source>
@@ -3237,6 +3805,10 @@ Probe T%1 instead.</source>
     <message>
         <source>The history library: an SQLite file (or sqlite:PATH).</source>
         <translation>历史库：一个 SQLite 文件（或 sqlite:路径）。</translation>
+    </message>
+    <message>
+        <source>Check the G-code PROGRAM against the table once the window is open.</source>
+        <translation>窗口打开后，对照刀具表检查 G 代码程序 PROGRAM。</translation>
     </message>
 </context>
 </TS>
