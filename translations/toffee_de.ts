@@ -2113,10 +2113,6 @@
         <translation>%1 Toffee bereitet nur ein Programm vor, das die Steuerung ausführt: Prüfen Sie zuerst den Job.</translation>
     </message>
     <message>
-        <source>no G43 for T%1 after its change at line %2</source>
-        <translation>kein G43 für T%1 nach seinem Wechsel in Zeile %2</translation>
-    </message>
-    <message>
         <source>the line Toffee would insert here, &quot;%1&quot;, is refused: %2 Nothing was written.</source>
         <translation>Die Zeile, die Toffee hier einfügen würde, „%1“, wird abgelehnt: %2 Es wurde nichts geschrieben.</translation>
     </message>
@@ -2141,14 +2137,6 @@
         <translation>T%1 ist das Referenzwerkzeug (TLO 0): Die Community-Firmware macht damit keinen Bruchtest (sie bricht mit „No previous TLO included“ ab), daher wird kein Test eingefügt.</translation>
     </message>
     <message>
-        <source>the spindle stops for T%1&apos;s break test</source>
-        <translation>die Spindel stoppt für den Bruchtest von T%1</translation>
-    </message>
-    <message>
-        <source>break test of T%1 after its last cut at original line %2, tolerance %3 mm</source>
-        <translation>Bruchtest von T%1 nach seinem letzten Schnitt in Originalzeile %2, Toleranz %3 mm</translation>
-    </message>
-    <message>
         <source>T%1 is in the rack: the Carvera measures a rack tool at every change.</source>
         <translation>T%1 ist im Magazin: Die Carvera vermisst ein Magazinwerkzeug bei jedem Wechsel.</translation>
     </message>
@@ -2171,30 +2159,6 @@
     <message>
         <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
         <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die der Maschine ist aber %3: T%1 wird beim Wechsel vermessen.</translation>
-    </message>
-    <message>
-        <source>was &quot;%1&quot;: T%2 takes its stored TLO instead of a probe</source>
-        <translation>war „%1“: T%2 nimmt seine gespeicherte TLO statt einer Messung</translation>
-    </message>
-    <message>
-        <source>set by hand %1</source>
-        <translation>von Hand gesetzt am %1</translation>
-    </message>
-    <message>
-        <source>measured %1</source>
-        <translation>gemessen am %1</translation>
-    </message>
-    <message>
-        <source> against reference MCS Z %1</source>
-        <translation> gegen Referenz-MCS-Z %1</translation>
-    </message>
-    <message>
-        <source>T%1 is the tool in the spindle</source>
-        <translation>T%1 ist das Werkzeug in der Spindel</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s stored TLO, %2</source>
-        <translation>gespeicherte TLO von T%1, %2</translation>
     </message>
     <message>
         <source>the prepared program would put the machine elsewhere than the original with the table&apos;s offsets. Nothing was written.</source>

@@ -2113,10 +2113,6 @@
         <translation>%1 Toffee 只准备控制器能运行的程序：请先检查作业。</translation>
     </message>
     <message>
-        <source>no G43 for T%1 after its change at line %2</source>
-        <translation>T%1 在第 %2 行换刀后没有 G43</translation>
-    </message>
-    <message>
         <source>the line Toffee would insert here, &quot;%1&quot;, is refused: %2 Nothing was written.</source>
         <translation>Toffee 要在此处插入的行“%1”被拒绝：%2 未写入任何内容。</translation>
     </message>
@@ -2141,14 +2137,6 @@
         <translation>T%1 是基准刀具（TLO 0）：社区固件不对其进行断刀检测（会以“No previous TLO included”中止），因此不插入检测。</translation>
     </message>
     <message>
-        <source>the spindle stops for T%1&apos;s break test</source>
-        <translation>主轴停止，以便对 T%1 进行断刀检测</translation>
-    </message>
-    <message>
-        <source>break test of T%1 after its last cut at original line %2, tolerance %3 mm</source>
-        <translation>T%1 在原程序第 %2 行最后一次切削后的断刀检测，公差 %3 mm</translation>
-    </message>
-    <message>
         <source>T%1 is in the rack: the Carvera measures a rack tool at every change.</source>
         <translation>T%1 在刀库中：Carvera 每次换刀都会测量刀库中的刀具。</translation>
     </message>
@@ -2171,30 +2159,6 @@
     <message>
         <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
         <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，但机床的基准为 %3：换刀时将对其对刀。</translation>
-    </message>
-    <message>
-        <source>was &quot;%1&quot;: T%2 takes its stored TLO instead of a probe</source>
-        <translation>原为“%1”：T%2 使用其已存 TLO，而不对刀</translation>
-    </message>
-    <message>
-        <source>set by hand %1</source>
-        <translation>于 %1 手动设置</translation>
-    </message>
-    <message>
-        <source>measured %1</source>
-        <translation>于 %1 测量</translation>
-    </message>
-    <message>
-        <source> against reference MCS Z %1</source>
-        <translation>，基准 MCS Z %1</translation>
-    </message>
-    <message>
-        <source>T%1 is the tool in the spindle</source>
-        <translation>T%1 是主轴上的刀具</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s stored TLO, %2</source>
-        <translation>T%1 的已存 TLO，%2</translation>
     </message>
     <message>
         <source>the prepared program would put the machine elsewhere than the original with the table&apos;s offsets. Nothing was written.</source>

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QPointer>
 
 #include "model/library/historyevent.h"
 #include "model/library/librarylocation.h"
@@ -115,7 +116,7 @@ private:
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;
-    JobCheckDialog *m_jobDialog = nullptr;
+    QPointer<JobCheckDialog> m_jobDialog; // it deletes itself on closing
 };
 
 } // namespace Toffee

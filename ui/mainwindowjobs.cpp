@@ -57,7 +57,6 @@ JobCheckDialog *MainWindow::openJobCheck(const QString &path)
     if (!m_jobDialog) {
         m_jobDialog = new JobCheckDialog(std::move(sources), this);
         m_jobDialog->setAttribute(Qt::WA_DeleteOnClose);
-        connect(m_jobDialog, &QObject::destroyed, this, [this] { m_jobDialog = nullptr; });
     } else {
         m_jobDialog->setSources(std::move(sources));
     }

@@ -52,6 +52,8 @@ Result<void> JobPreparer::check(const PrepareOptions &options)
     return {};
 }
 
+// A comment in the program for the controller: in English and ASCII whatever the window's language, since
+// controllers take little else in a program (FANUC, for one, refuses most other characters).
 QString JobPreparer::comment(const QString &why) const
 {
     if (m_options.dialect == Dialect::Aerotech)
@@ -90,8 +92,8 @@ Result<void> JobPreparer::feed(QByteArrayView line, int lineNumber, const LineSi
             const QString letter = m_options.dialect == Dialect::Fagor8055M ? u"D"_s : u"H"_s;
             const QString call = u"G43 "_s + letter + QString::number(m_tool);
             if (auto r = insertLine(call + u' '
-                        + comment(
-                            tr("no G43 for T%1 after its change at line %2").arg(m_tool).arg(m_toolLine)),
+                        + comment(u"no G43 for T%1 after its change at original line %2"_s.arg(m_tool).arg(
+                            m_toolLine)),
                     sink, true);
                 !r)
                 return r;

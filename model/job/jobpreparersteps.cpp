@@ -104,13 +104,12 @@ Result<void> JobPreparer::breakTest(const LineSink &sink)
     }
     if (m_prepared.spindleOn()) {
         if (auto r = insertLine(
-                u"M5 "_s + comment(tr("the spindle stops for T%1's break test").arg(tool)), sink, true);
+                u"M5 "_s + comment(u"the spindle stops for T%1's break test"_s.arg(tool)), sink, true);
             !r)
             return r;
     }
     return insertLine(u"M491.1 H"_s + command(m_options.tolerance) + u' '
-            + comment(tr("break test of T%1 after its last cut at original line %2, tolerance %3 mm")
-                          .arg(tool)
+            + comment(u"break test of T%1 after its last cut at original line %2, tolerance %3 mm"_s.arg(tool)
                           .arg(lastCut)
                           .arg(command(m_options.tolerance))),
         sink, true);
@@ -161,7 +160,7 @@ QString JobPreparer::carveraChange(QByteArrayView line, int tool)
     const QString before = QString::fromUtf8(line.first(cut)).trimmed();
     const QString own = QString::fromUtf8(line.sliced(cut)).trimmed(); // the program's own comment stays
     return before + u" H"_s + command(*tlo) + u' '
-        + comment(tr("was \"%1\": T%2 takes its stored TLO instead of a probe").arg(before).arg(tool))
+        + comment(u"was \"%1\": T%2 takes its stored TLO instead of a probe"_s.arg(before).arg(tool))
         + (own.isEmpty() ? QString() : u' ' + own);
 }
 
@@ -176,16 +175,16 @@ Result<void> JobPreparer::restoreAfterChange(int tool, const LineSink &sink)
     // A date, not an age: the program is kept and run later.
     const QString when = facts.measuredAt.toUTC().toString(u"yyyy-MM-dd HH:mm"_s) + u" UTC"_s;
     QString measured
-        = facts.source == TloSource::Manual ? tr("set by hand %1").arg(when) : tr("measured %1").arg(when);
+        = facts.source == TloSource::Manual ? u"set by hand %1"_s.arg(when) : u"measured %1"_s.arg(when);
     if (facts.referenceMz)
-        measured += tr(" against reference MCS Z %1").arg(command(*facts.referenceMz));
+        measured += u" against reference MCS Z %1"_s.arg(command(*facts.referenceMz));
     if (auto r = insertLine(u"M493.2 T"_s + QString::number(tool) + u' '
-                + comment(tr("T%1 is the tool in the spindle").arg(tool)),
+                + comment(u"T%1 is the tool in the spindle"_s.arg(tool)),
             sink, true);
         !r)
         return r;
     return insertLine(
-        u"M493.3 Z"_s + command(tlo) + u' ' + comment(tr("T%1's stored TLO, %2").arg(tool).arg(measured)),
+        u"M493.3 Z"_s + command(tlo) + u' ' + comment(u"T%1's stored TLO, %2"_s.arg(tool).arg(measured)),
         sink, true);
 }
 

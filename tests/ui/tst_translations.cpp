@@ -21,6 +21,8 @@
 
 #include "model/document/tooldocument.h"
 #include "model/gcode/gcodeinterpreter.h"
+#include "model/job/jobchecker.h"
+#include "model/job/jobpreparer.h"
 #include "ui/appearance.h"
 #include "ui/mainwindow.h"
 #include "ui/translations.h"
@@ -192,6 +194,33 @@ private Q_SLOTS:
             const auto notANumber = fanuc.runLine("G0 X1..2", 2);
             QVERIFY(!notANumber);
             QCOMPARE(notANumber.error().message, u"„1..2“ ist keine Zahl."_s);
+            // The job check speaks German; the comments a preparation writes into a program stay English and
+            // ASCII, for the controller.
+            JobCheckSetup setup;
+            JobChecker checker(setup);
+            checker.feed("G20", 1);
+            QVERIFY(checker.finish(u"de.nc"_s, false).findings.front().message.contains(u"Zoll"_s));
+            const ToolTable table = ToolTable::fromTools(
+                { Tool { 2, 2, {}, 40, 0, 3, 0, -33.388, QDateTime::currentDateTimeUtc(), {}, {} } },
+                Units::Millimetre)
+                                        .value();
+            PrepareOptions options;
+            options.breakTest = true;
+            options.useStoredTlo = true;
+            options.rack = {};
+            JobPreparer preparer(table, options);
+            QByteArray program;
+            const auto sink = [&program](QByteArrayView line) {
+                program += line.toByteArray() + '\n';
+                return true;
+            };
+            for (const QByteArray &line :
+                { QByteArray("M6 T2"), QByteArray("M3 S1000"), QByteArray("G1 Z-1 F100") })
+                QVERIFY(preparer.feed(line, 1, sink).ok());
+            QVERIFY(preparer.finish(sink).ok());
+            QVERIFY2(program.contains("(Toffee: break test of T2"), program.constData());
+            for (char c : program)
+                QVERIFY2(c > 0 && c < 0x7f, program.constData());
         }
         QCoreApplication::removeTranslator(&german);
     }

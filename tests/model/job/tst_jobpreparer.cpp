@@ -275,18 +275,18 @@ private Q_SLOTS:
                                       "G21 G90 G17\nT1 M6\nG43 H1 G0 Z50\nG1 Z-1 F100\nG28 G91 Z0\nG90\n"
                                       "T2 M6\nG0 X5 Y5\nG0 Z10\nG1 Z-3 F200\nT7 M6\nG43 H7 Z5\nG1 Z-1\nG55\n"
                                              "G98 G83 X10 Y10 Z-5 R2 Q1 F100\nX20\nG80\nM30\n")
-                               << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at line 7)");
+                               << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at original line 7)");
         QTest::newRow("Allen-Bradley 9")
             << int(Dialect::AllenBradley9) << QByteArray("G90\nT2 M6\nG0 X1\nG1 Z-1 F100\nG1 X3\nM30\n")
-            << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at line 2)");
+            << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at original line 2)");
         QTest::newRow("FAGOR 8055M") << int(Dialect::Fagor8055M)
                                      << QByteArray("G90\nT7 M6\nG1 Z-1 F100\nG1 X3\nM30\n")
                                      << QByteArray(
-                                            "G43 D7 (Toffee: no G43 for T7 after its change at line 2)");
+                                            "G43 D7 (Toffee: no G43 for T7 after its change at original line 2)");
         QTest::newRow("LinuxCNC") << int(Dialect::LinuxCnc)
                                   << QByteArray("G21 G90\nT1 M6\nG43\nG1 Z-1 F100\nT2 M6\nG53 G0 Z0\nG0 X10\n"
                                                 "G0 Z5\nG1 Z-2 F100\nM2\n")
-                                  << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at line 5)");
+                                  << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at original line 5)");
     }
 
     void theG43ControllersGetTheMissingG43AndNothingElse()
