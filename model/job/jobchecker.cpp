@@ -207,7 +207,7 @@ void JobChecker::unitsChanged(int line)
                       "the program in millimetres.");
         });
     } else if (m_setup.hasTable && units != m_setup.tableUnits) {
-        note(FindingKind::UnitsMismatch, -1, line, [this, units] {
+        note(FindingKind::UnitsMismatch, -1, line, [units] {
             return units == Units::Inch
                 ? tr("The program is in inches (G20) but the tool table is in millimetres.")
                 : tr("The program is in millimetres (G21) but the tool table is in inches.");
