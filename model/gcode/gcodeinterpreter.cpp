@@ -118,9 +118,12 @@ Result<void> GCodeInterpreter::runLine(QByteArrayView text, int line)
     // Block delete ("/" first): the switch is off, so the block runs, as on a controller at its default. The
     // Carvera has none.
     if (m_dialect != Dialect::Carvera) {
-        const QByteArrayView trimmed = text.trimmed();
-        if (trimmed.startsWith('/') && !trimmed.startsWith("//"))
-            text = trimmed.sliced(trimmed.size() > 1 && trimmed.at(1) >= '1' && trimmed.at(1) <= '9' ? 2 : 1);
+        qsizetype at = 0;
+        while (at < text.size() && (text.at(at) == ' ' || text.at(at) == '\t'))
+            ++at;
+        if (at < text.size() && text.at(at) == '/' && (at + 1 == text.size() || text.at(at + 1) != '/'))
+            text = text.sliced(
+                at + 1 + (at + 1 < text.size() && text.at(at + 1) >= '1' && text.at(at + 1) <= '9'));
     }
     GCodeLexer lexer(text);
     for (;;) {
@@ -206,8 +209,8 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
     if (auto r = modalWords(w, line); !r)
         return r;
     // FAGOR latches the offset of the tool a T selects (or of its D).
-    if (w.hasG(43) || w.hasG(44) || w.hasG(49) || w.hasG(43.1) || w.hasG(43.2) || w.word('H')
-        || (m_dialect == Dialect::Fagor8055M && (w.word('D') || w.word('T'))))
+    if ((w.gCount > 0 && (w.hasG(43) || w.hasG(44) || w.hasG(49) || w.hasG(43.1) || w.hasG(43.2)))
+        || w.word('H') || (m_dialect == Dialect::Fagor8055M && (w.word('D') || w.word('T'))))
         ++m_lengthCalls;
     if (m_dialect == Dialect::Aerotech && w.hasG(44))
         return aerotechWords(w, line); // G44 X Y Z names the axes: nothing moves

@@ -49,24 +49,26 @@ Result<void> GCodeInterpreter::modalWords(const Words &w, int line)
             return tool.error();
         m_selectedTool = tool.value();
     }
-    if (w.hasG(20) || w.hasG(21)) {
+    if (w.gCount > 0 && (w.hasG(20) || w.hasG(21))) {
         m_units = w.hasG(20) ? Units::Inch : Units::Millimetre;
         m_effect.unitsWord = true;
     }
     if (w.word('S') && w.get('S') >= 0)
         m_spindleSpeed = w.get('S');
-    if (w.hasM(98) || w.hasM(99))
-        return error(line,
-            tr("M%1 calls or ends a subprogram, which the check does not follow: what it cuts is "
-               "not checked.")
-                .arg(w.hasM(98) ? 98 : 99));
-    if (w.hasM(3) || w.hasM(4))
-        m_spindleOn = true;
-    if (w.hasM(5) || w.hasM(6) || w.hasM(2) || w.hasM(30))
-        m_spindleOn = false; // a tool change stops the spindle, and so does the end
-    if (w.hasM(6)) {
-        m_cuttingTool = m_selectedTool;
-        m_effect.toolChange = true;
+    if (w.mCount > 0) { // most blocks have no M code: nothing below to look at
+        if (w.hasM(98) || w.hasM(99))
+            return error(line,
+                tr("M%1 calls or ends a subprogram, which the check does not follow: what it cuts is "
+                   "not checked.")
+                    .arg(w.hasM(98) ? 98 : 99));
+        if (w.hasM(3) || w.hasM(4))
+            m_spindleOn = true;
+        if (w.hasM(5) || w.hasM(6) || w.hasM(2) || w.hasM(30))
+            m_spindleOn = false; // a tool change stops the spindle, and so does the end
+        if (w.hasM(6)) {
+            m_cuttingTool = m_selectedTool;
+            m_effect.toolChange = true;
+        }
     }
     if (w.hasM(61) && w.word('Q')) {
         const auto tool = wholeWord(w, 'Q', Limits::kMinToolNumber, Limits::kMaxToolNumber, line);
