@@ -11,21 +11,6 @@ using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-namespace {
-
-QString lineList(const QList<int> &lines, qint64 count)
-{
-    QStringList numbers;
-    for (int line : lines)
-        numbers << QString::number(line);
-    QString text = numbers.join(u", "_s);
-    if (count > lines.size())
-        text += u", …"_s;
-    return text;
-}
-
-} // namespace
-
 JobToolsModel::JobToolsModel(QObject *parent)
     : QAbstractTableModel(parent)
 { }
@@ -54,7 +39,7 @@ QString JobToolsModel::text(const JobTool &tool, int column) const
     case NumberColumn:
         return u"T"_s + QString::number(tool.number);
     case LoadedColumn:
-        return lineList(tool.loadLines, tool.loads);
+        return linesListed(tool.loadLines, tool.loads);
     case TloColumn:
         if (!tool.inTable)
             return tr("not in the table");
@@ -148,9 +133,8 @@ QVariant JobFindingsModel::data(const QModelIndex &index, int role) const
         case ToolColumn:
             return f.tool >= 0 ? u"T"_s + QString::number(f.tool) : QString();
         case MessageColumn:
-            return f.count > 1
-                ? tr("%1 (%2 times: lines %3)").arg(f.message).arg(f.count).arg(lineList(f.lines, f.count))
-                : f.message;
+            return f.count > 1 ? tr("%1 (%2 times: lines %3)").arg(f.message).arg(f.count).arg(f.linesText())
+                               : f.message;
         }
     }
     if (role == Qt::ToolTipRole && index.column() == MessageColumn)

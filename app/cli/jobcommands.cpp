@@ -65,13 +65,8 @@ QString mm(double v)
 
 QString lineList(const Finding &f)
 {
-    QStringList lines;
-    for (int line : f.lines)
-        lines << QString::number(line);
-    QString text = lines.join(u", "_s);
-    if (f.count > f.lines.size())
-        text += u", … ("_s + QString::number(f.count) + u" in all)"_s;
-    return text;
+    return f.count > f.lines.size() ? f.linesText() + u" ("_s + QString::number(f.count) + u" in all)"_s
+                                    : f.linesText();
 }
 
 void printTool(Invocation &call, const JobTool &t, const QDateTime &now)

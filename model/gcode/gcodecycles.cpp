@@ -73,13 +73,7 @@ void GCodeInterpreter::cycleMove(const Position &target, bool feed, int line)
     length = std::sqrt(length);
     if (length == 0.0)
         return;
-    if (feed) {
-        ToolUsage &usage = m_usage[activeTool()];
-        usage.feedPathMm += length;
-        usage.cuttingSeconds += feedSeconds(length);
-    } else {
-        m_rapid += length;
-    }
+    tally(length, feed);
     recordStraight(line, start);
 }
 

@@ -178,7 +178,10 @@ private:
     };
     [[nodiscard]] Result<MoveGeometry> measureMove(
         const Words &w, const Position &programStart, int line) const;
+    // A move's length to the block's effect and the tally: the rapid distance, or the tool's feed path and
+    // time.
     void account(double length);
+    void tally(double length, bool feed);
     [[nodiscard]] double feedSeconds(double length) const;
     void home(const QList<int> &axes, int line);
     // G28: through the point the axis words give to the machine's home on those axes, at rapid.

@@ -201,7 +201,12 @@ double GCodeInterpreter::feedSeconds(double length) const
 void GCodeInterpreter::account(double length)
 {
     m_effect.motion = m_motionMode == 0 ? BlockEffect::Motion::Rapid : BlockEffect::Motion::Feed;
-    if (m_motionMode == 0) {
+    tally(length, m_motionMode != 0);
+}
+
+void GCodeInterpreter::tally(double length, bool feed)
+{
+    if (!feed) {
         m_rapid += length;
         return;
     }

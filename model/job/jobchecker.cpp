@@ -22,11 +22,6 @@ quint64 aggregateKey(FindingKind kind, int tool)
     return (quint64(kind) << 32) | quint32(tool);
 }
 
-QString mm(double value)
-{
-    return formatNumber(value, NumberFormat::fixed(3));
-}
-
 } // namespace
 
 void JobCheckSetup::useTable(const ToolTable &table)
@@ -143,11 +138,11 @@ void JobChecker::feedMove(int line, const BlockEffect &effect)
         const int tool = m_interpreter.loadedTool();
         const double z = effect.lowestZ;
         note(FindingKind::BelowFloor, tool, line, [this, tool, z] {
-            return tool >= 0
-                ? tr("T%1 feeds to work Z %2, below the floor of %3.")
-                      .arg(tool)
-                      .arg(mm(z), mm(*m_setup.zFloor))
-                : tr("A feed move to work Z %1, below the floor of %2.").arg(mm(z), mm(*m_setup.zFloor));
+            return tool >= 0 ? tr("T%1 feeds to work Z %2, below the floor of %3.")
+                                   .arg(tool)
+                                   .arg(millimetres(z, false), millimetres(*m_setup.zFloor, false))
+                             : tr("A feed move to work Z %1, below the floor of %2.")
+                                   .arg(millimetres(z, false), millimetres(*m_setup.zFloor, false));
         });
     }
     if (usesG43(m_setup.dialect) && m_current >= 0)
@@ -194,7 +189,7 @@ void JobChecker::tloSet(int line)
     note(FindingKind::ProgramSetsTlo, tool, line, [tool, set, &facts] {
         return tr("The program sets T%1's TLO to %2 itself; the table holds %3 for it.")
             .arg(tool)
-            .arg(mm(set), mm(*facts.measuredTlo));
+            .arg(millimetres(set, false), millimetres(*facts.measuredTlo, false));
     });
 }
 

@@ -10,15 +10,6 @@ using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-namespace {
-
-QString command(double value)
-{
-    return formatNumber(value, NumberFormat::command());
-}
-
-} // namespace
-
 JobPreparer::JobPreparer(const ToolTable &table, PrepareOptions options)
     : m_options(std::move(options))
     , m_offsets(offsetTableFor(table, m_options.dialect))
@@ -45,11 +36,17 @@ Result<void> JobPreparer::check(const PrepareOptions &options)
     if (options.breakTest
         && (!std::isfinite(options.tolerance) || options.tolerance < Limits::kMinBreakTolerance
             || options.tolerance > kMaxPrepareTolerance))
-        return Error { tr(
-            "The break-test tolerance must be from %1 mm (the Carvera halts below it) to %2 mm (a "
-            "looser test would miss a broken tool).")
-                           .arg(command(Limits::kMinBreakTolerance), command(kMaxPrepareTolerance)) };
+        return Error {
+            tr("The break-test tolerance must be from %1 mm (the Carvera halts below it) to %2 mm (a "
+               "looser test would miss a broken tool).")
+                .arg(commandNumber(Limits::kMinBreakTolerance), commandNumber(kMaxPrepareTolerance))
+        };
     return {};
+}
+
+QString JobPreparer::commandNumber(double value)
+{
+    return formatNumber(value, NumberFormat::command());
 }
 
 // A comment in the program for the controller: in English and ASCII whatever the window's language, since

@@ -104,6 +104,8 @@ private:
     // tool's own length offset where the original had none.
     [[nodiscard]] Result<void> compare(int lineNumber);
     [[nodiscard]] QString comment(const QString &why) const;
+    // A number as a command to the machine writes it (NumberFormat::command()).
+    [[nodiscard]] static QString commandNumber(double value);
     void addRow(const PrepareRow &row, bool changed);
     void closeHunk();
     void noteOnce(int tool, const QString &note);

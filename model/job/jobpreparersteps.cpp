@@ -15,11 +15,6 @@ namespace Toffee {
 
 namespace {
 
-QString command(double value)
-{
-    return formatNumber(value, NumberFormat::command());
-}
-
 bool near(const Position &a, const Position &b)
 {
     for (size_t i = 0; i < 3; ++i) {
@@ -108,10 +103,10 @@ Result<void> JobPreparer::breakTest(const LineSink &sink)
             !r)
             return r;
     }
-    return insertLine(u"M491.1 H"_s + command(m_options.tolerance) + u' '
+    return insertLine(u"M491.1 H"_s + commandNumber(m_options.tolerance) + u' '
             + comment(u"break test of T%1 after its last cut at original line %2, tolerance %3 mm"_s.arg(tool)
                           .arg(lastCut)
-                          .arg(command(m_options.tolerance))),
+                          .arg(commandNumber(m_options.tolerance))),
         sink, true);
 }
 
@@ -140,7 +135,7 @@ std::optional<double> JobPreparer::restorable(int tool)
         why = tr("T%1's stored TLO was measured against reference MCS Z %2, but the machine's is %3: it is "
                  "measured at its change.")
                   .arg(tool)
-                  .arg(command(*facts.referenceMz), command(*m_options.machineReferenceMz));
+                  .arg(commandNumber(*facts.referenceMz), commandNumber(*m_options.machineReferenceMz));
     if (!why.isEmpty()) {
         noteOnce(tool, why);
         return std::nullopt;
@@ -159,7 +154,7 @@ QString JobPreparer::carveraChange(QByteArrayView line, int tool)
     const qsizetype cut = commentStart(line);
     const QString before = QString::fromUtf8(line.first(cut)).trimmed();
     const QString own = QString::fromUtf8(line.sliced(cut)).trimmed(); // the program's own comment stays
-    return before + u" H"_s + command(*tlo) + u' '
+    return before + u" H"_s + commandNumber(*tlo) + u' '
         + comment(u"was \"%1\": T%2 takes its stored TLO instead of a probe"_s.arg(before).arg(tool))
         + (own.isEmpty() ? QString() : u' ' + own);
 }
@@ -177,14 +172,14 @@ Result<void> JobPreparer::restoreAfterChange(int tool, const LineSink &sink)
     QString measured
         = facts.source == TloSource::Manual ? u"set by hand %1"_s.arg(when) : u"measured %1"_s.arg(when);
     if (facts.referenceMz)
-        measured += u" against reference MCS Z %1"_s.arg(command(*facts.referenceMz));
+        measured += u" against reference MCS Z %1"_s.arg(commandNumber(*facts.referenceMz));
     if (auto r = insertLine(u"M493.2 T"_s + QString::number(tool) + u' '
                 + comment(u"T%1 is the tool in the spindle"_s.arg(tool)),
             sink, true);
         !r)
         return r;
-    return insertLine(
-        u"M493.3 Z"_s + command(tlo) + u' ' + comment(u"T%1's stored TLO, %2"_s.arg(tool).arg(measured)),
+    return insertLine(u"M493.3 Z"_s + commandNumber(tlo) + u' '
+            + comment(u"T%1's stored TLO, %2"_s.arg(tool).arg(measured)),
         sink, true);
 }
 
@@ -262,16 +257,16 @@ Result<void> JobPreparer::sameReference(int tool, const ToolFacts &facts)
             "has one reference, so at most one is right. Probe one of them again, or prepare without "
             "stored TLOs. Nothing was written.")
                            .arg(tool)
-                           .arg(command(*facts.referenceMz))
+                           .arg(commandNumber(*facts.referenceMz))
                            .arg(m_restoredTool)
-                           .arg(command(*m_restoredReference)) };
+                           .arg(commandNumber(*m_restoredReference)) };
     if (!m_restoredReference) {
         m_restoredReference = facts.referenceMz;
         m_restoredTool = tool;
         m_summary.notes.append(
             tr("The stored TLOs hold only while the machine's reference MCS Z is %1 (where its "
                "reference tool was probed): check it before running the program.")
-                .arg(command(*facts.referenceMz)));
+                .arg(commandNumber(*facts.referenceMz)));
     }
     return {};
 }

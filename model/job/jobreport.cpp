@@ -67,6 +67,17 @@ QString severityName(Severity severity)
     return severity == Severity::Error ? u"error"_s : u"warning"_s;
 }
 
+QString linesListed(const QList<int> &lines, qint64 count)
+{
+    QStringList numbers;
+    for (int at : lines)
+        numbers << QString::number(at);
+    QString text = numbers.join(u", "_s);
+    if (count > lines.size())
+        text += u", …"_s;
+    return text;
+}
+
 int JobReport::errors() const
 {
     return int(std::count_if(findings.cbegin(), findings.cend(),

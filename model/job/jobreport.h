@@ -37,6 +37,9 @@ enum class FindingKind : quint8 {
 [[nodiscard]] QString findingKey(FindingKind kind);
 [[nodiscard]] QString severityName(Severity severity); // "error", "warning"
 
+// The first lines of something that happened `count` times: "12, 14, 19", and ", …" when there were more.
+[[nodiscard]] QString linesListed(const QList<int> &lines, qint64 count);
+
 // One finding: where (the first line it happened on), which tool (-1: none), what, and, for one that repeats
 // (a feed below the floor on every pass), the first lines and how often in all.
 struct Finding
@@ -49,6 +52,8 @@ struct Finding
     qint64 count = 1;
 
     [[nodiscard]] Severity severity() const { return findingSeverity(kind); }
+    // "12, 14, 19", with ", …" when it happened on more lines than are kept.
+    [[nodiscard]] QString linesText() const { return linesListed(lines, count); }
     friend bool operator==(const Finding &, const Finding &) = default;
 };
 

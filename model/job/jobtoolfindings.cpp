@@ -9,15 +9,6 @@
 
 namespace Toffee {
 
-namespace {
-
-QString length(double value, Units units)
-{
-    return formatNumber(value, NumberFormat::fixed(resolutionDecimals(units))) + u' ' + unitsSymbol(units);
-}
-
-} // namespace
-
 JobReport JobChecker::finish(const QString &program, bool cancelled)
 {
     JobReport report;
@@ -111,7 +102,8 @@ void JobChecker::toolFindings(const JobTool &tool)
                "saved "
                "after it.")
                 .arg(n)
-                .arg(length(*facts.libraryTlo, m_setup.tableUnits),
+                .arg(displayNumber(*facts.libraryTlo, m_setup.tableUnits) + u' '
+                        + unitsSymbol(m_setup.tableUnits),
                     ageText(facts.libraryMeasuredAt, m_setup.now)));
 }
 
