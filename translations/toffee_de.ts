@@ -1853,10 +1853,6 @@
         <translation>Steuerung:</translation>
     </message>
     <message>
-        <source>&amp;Rack:</source>
-        <translation>&amp;Magazin:</translation>
-    </message>
-    <message>
         <source>&amp;Tools, in order of use</source>
         <translation>&amp;Werkzeuge in Reihenfolge der Verwendung</translation>
     </message>
@@ -1887,6 +1883,14 @@
     <message>
         <source>The check found errors: fix them before preparing the program.</source>
         <translation>Die Prüfung hat Fehler gefunden: Beheben Sie sie, bevor Sie das Programm vorbereiten.</translation>
+    </message>
+    <message>
+        <source>1-6, or none</source>
+        <translation>1-6 oder none</translation>
+    </message>
+    <message>
+        <source>&amp;Rack holds:</source>
+        <translation>&amp;Magazin enthält:</translation>
     </message>
 </context>
 <context>
@@ -1966,6 +1970,10 @@
     <message>
         <source>The history has a newer measurement of T%1 (%2, %3) than the table&apos;s: the table was not saved after it.</source>
         <translation>Der Verlauf hat eine neuere Messung von T%1 (%2, %3) als die Tabelle: Die Tabelle wurde danach nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was set by hand, not measured on the tool setter: probe it before the job.</source>
+        <translation>Die TLO von T%1 wurde von Hand gesetzt, nicht am Werkzeugtaster gemessen: vor dem Job antasten.</translation>
     </message>
 </context>
 <context>
@@ -2184,6 +2192,10 @@
         <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
         <translation>Die gespeicherten TLOs gelten nur, solange die Referenz-MCS-Z der Maschine %1 ist (wo ihr Referenzwerkzeug vermessen wurde): Prüfen Sie das, bevor Sie das Programm starten.</translation>
     </message>
+    <message>
+        <source>T%1&apos;s TLO was set by hand, not measured: it is measured at its change.</source>
+        <translation>Die TLO von T%1 wurde von Hand gesetzt, nicht gemessen: Es wird beim Wechsel vermessen.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::JobReport</name>
@@ -2249,6 +2261,14 @@
     <message>
         <source>Lowest cut Z (mm)</source>
         <translation>Tiefstes Schnitt-Z (mm)</translation>
+    </message>
+    <message>
+        <source>%1 (by hand)</source>
+        <translation>%1 (von Hand)</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>gesetzt %1</translation>
     </message>
 </context>
 <context>

@@ -1853,10 +1853,6 @@
         <translation>控制器：</translation>
     </message>
     <message>
-        <source>&amp;Rack:</source>
-        <translation>刀库(&amp;R)：</translation>
-    </message>
-    <message>
         <source>&amp;Tools, in order of use</source>
         <translation>刀具（按使用顺序）(&amp;T)</translation>
     </message>
@@ -1887,6 +1883,14 @@
     <message>
         <source>The check found errors: fix them before preparing the program.</source>
         <translation>检查发现了错误：请先修正，再准备程序。</translation>
+    </message>
+    <message>
+        <source>1-6, or none</source>
+        <translation>1-6 或 none</translation>
+    </message>
+    <message>
+        <source>&amp;Rack holds:</source>
+        <translation>刀库包含(&amp;R)：</translation>
     </message>
 </context>
 <context>
@@ -1966,6 +1970,10 @@
     <message>
         <source>The history has a newer measurement of T%1 (%2, %3) than the table&apos;s: the table was not saved after it.</source>
         <translation>历史中有比刀具表更新的 T%1 测量记录（%2，%3）：此后刀具表未保存。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was set by hand, not measured on the tool setter: probe it before the job.</source>
+        <translation>T%1 的 TLO 是手动设置的，并非在对刀仪上测得：请在作业前对刀。</translation>
     </message>
 </context>
 <context>
@@ -2184,6 +2192,10 @@
         <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
         <translation>只有当机床的基准 MCS Z 为 %1（其基准刀具对刀处）时，已存 TLO 才有效：运行程序前请检查。</translation>
     </message>
+    <message>
+        <source>T%1&apos;s TLO was set by hand, not measured: it is measured at its change.</source>
+        <translation>T%1 的 TLO 是手动设置的，并非测得：将在换刀时测量。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::JobReport</name>
@@ -2249,6 +2261,14 @@
     <message>
         <source>Lowest cut Z (mm)</source>
         <translation>最低切削 Z（mm）</translation>
+    </message>
+    <message>
+        <source>%1 (by hand)</source>
+        <translation>%1（手动）</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>设置于 %1</translation>
     </message>
 </context>
 <context>

@@ -152,6 +152,7 @@ void JobCheckDialog::buildControls()
            "list such as 1-4,8. Every other tool is a manual change."));
     m_rack->setText(AppSettings().jobRack());
     m_rack->setMaximumWidth(120);
+    m_rack->setPlaceholderText(tr("1-6, or none"));
     // Another controller, floor or rack is another check: it runs again, so that what is shown is what they
     // find.
     connect(m_dialect, &QComboBox::currentIndexChanged, this, &JobCheckDialog::optionsChanged);
@@ -183,7 +184,7 @@ void JobCheckDialog::buildControls()
     options->addWidget(m_useFloor);
     options->addWidget(m_floor);
     options->addSpacing(12);
-    auto *rackLabel = new QLabel(tr("&Rack:"), this);
+    auto *rackLabel = new QLabel(tr("&Rack holds:"), this);
     rackLabel->setBuddy(m_rack);
     options->addWidget(rackLabel);
     options->addWidget(m_rack);

@@ -244,7 +244,7 @@ void JobPrepareDialog::showPreview()
     int lastPrepared = 0;
     for (const PrepareHunk &hunk : s.hunks) {
         // "⋯" between two pieces only where lines were left out between them.
-        if (m_preview->rowCount() > 0 && !hunk.isEmpty() && hunk.front().preparedLine != lastPrepared + 1) {
+        if (!hunk.isEmpty() && hunk.front().preparedLine != lastPrepared + 1) {
             m_preview->insertRow(m_preview->rowCount());
             m_preview->setItem(m_preview->rowCount() - 1, OriginalColumn, cell(u"⋯"_s));
         }

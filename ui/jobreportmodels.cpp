@@ -43,9 +43,15 @@ QString JobToolsModel::text(const JobTool &tool, int column) const
     case TloColumn:
         if (!tool.inTable)
             return tr("not in the table");
-        return tool.tlo ? millimetres(*tool.tlo, false) : tr("not measured");
+        if (!tool.tlo)
+            return tr("not measured");
+        return tool.setByHand ? tr("%1 (by hand)").arg(millimetres(*tool.tlo, false))
+                              : millimetres(*tool.tlo, false);
     case MeasuredColumn:
-        return tool.measuredAt.isValid() ? ageText(tool.measuredAt, m_now) : QString();
+        if (!tool.measuredAt.isValid())
+            return QString();
+        return tool.setByHand ? tr("set %1").arg(ageText(tool.measuredAt, m_now))
+                              : ageText(tool.measuredAt, m_now);
     case CuttingColumn:
         return durationText(tool.cuttingSeconds);
     case PathColumn:
@@ -67,7 +73,8 @@ QVariant JobToolsModel::data(const QModelIndex &index, int role) const
         return QLocale().toString(tool.measuredAt.toLocalTime(), QLocale::LongFormat);
     if (role == Qt::TextAlignmentRole && index.column() != NumberColumn && index.column() != LoadedColumn)
         return QVariant(Qt::AlignRight | Qt::AlignVCenter);
-    if (role == Qt::ForegroundRole && index.column() == TloColumn && (!tool.inTable || !tool.tlo))
+    if (role == Qt::ForegroundRole && index.column() == TloColumn
+        && (!tool.inTable || !tool.tlo || tool.setByHand))
         return QBrush(QColor(0xd3, 0x2f, 0x2f));
     return {};
 }

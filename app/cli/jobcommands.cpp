@@ -44,7 +44,7 @@ QJsonObject reportJson(const JobReport &report)
                 t.measuredAt.isValid() ? QJsonValue(t.measuredAt.toString(Qt::ISODateWithMs))
                                        : QJsonValue() },
             { u"cutting_seconds"_s, t.cuttingSeconds }, { u"feed_path_mm"_s, t.feedPathMm },
-            { u"lowest_z"_s, optionalNumber(t.lowestZ) } });
+            { u"lowest_z"_s, optionalNumber(t.lowestZ) }, { u"set_by_hand"_s, t.setByHand } });
     QJsonArray findings;
     for (const Finding &f : report.findings)
         findings.append(
@@ -77,7 +77,7 @@ void printTool(Invocation &call, const JobTool &t, const QDateTime &now)
     if (!t.inTable)
         call.out << "  not in the table";
     else if (t.tlo)
-        call.out << "  TLO " << mm(*t.tlo);
+        call.out << "  TLO " << mm(*t.tlo) << (t.setByHand ? " set by hand" : "");
     else
         call.out << "  not measured";
     if (t.measuredAt.isValid())

@@ -124,6 +124,8 @@ std::optional<double> JobPreparer::restorable(int tool)
         why = tr("T%1 is not in the table: it is measured at its change.").arg(tool);
     else if (!facts.measuredTlo)
         why = tr("T%1 has no stored TLO: it is measured at its change.").arg(tool);
+    else if (facts.source == TloSource::Manual)
+        why = tr("T%1's TLO was set by hand, not measured: it is measured at its change.").arg(tool);
     else if (facts.broken)
         why = tr("T%1 failed its last break test: it is measured at its change.").arg(tool);
     else if (!facts.isFresh(m_options.now, m_options.staleDays))

@@ -66,6 +66,7 @@ struct JobTool
     bool inTable = false;
     std::optional<double> tlo; // the table's (Carvera: measured; others: total length)
     QDateTime measuredAt; // of the TLO, from the table or the library, whichever is newer
+    bool setByHand = false; // the TLO was set on the machine by hand, not measured on the setter
     double cuttingSeconds = 0.0; // feed moves at their F; no override assumed
     double feedPathMm = 0.0;
     std::optional<double> lowestZ; // the lowest work Z of its feed moves

@@ -28,6 +28,7 @@ JobReport JobChecker::finish(const QString &program, bool cancelled)
             : facts.inTable                            ? std::optional(facts.length)
                                                        : std::nullopt;
         tool.measuredAt = facts.measuredAt;
+        tool.setByHand = facts.measuredTlo && facts.source == TloSource::Manual;
         report.tools.append(tool);
         toolFindings(tool);
     }
@@ -82,6 +83,10 @@ void JobChecker::toolFindings(const JobTool &tool)
         noteForTool(FindingKind::NotMeasured, tool,
             carvera ? tr("T%1 has no measured TLO.").arg(n)
                     : tr("T%1 has no length in the table: G43 would apply 0.").arg(n));
+    } else if (carvera && facts.source == TloSource::Manual) {
+        noteForTool(FindingKind::NotMeasured, tool,
+            tr("T%1's TLO was set by hand, not measured on the tool setter: probe it before the job.")
+                .arg(n));
     } else if (facts.measuredAt.isValid()
         && facts.measuredAt.secsTo(m_setup.now) < -ToolFacts::kClockSkewSeconds) {
         noteForTool(FindingKind::StaleTlo, tool,

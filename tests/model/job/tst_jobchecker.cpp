@@ -124,6 +124,19 @@ private Q_SLOTS:
             QVERIFY(r.findings.at(i - 1).line <= r.findings.at(i).line);
     }
 
+    void aTloSetByHandIsNotShownAsMeasured()
+    {
+        QList<Tool> tools { cutter(2, -30.488, 0) };
+        tools[0].tloSource = TloSource::Manual;
+        const JobReport r = check("M6 T2\nG1 Z-1 F100\nM30\n", Dialect::Carvera,
+            ToolTable::fromTools(tools, Units::Millimetre).value());
+        QVERIFY(r.tools.front().setByHand);
+        const Finding *f = find(r, FindingKind::NotMeasured, 2);
+        QVERIFY(f);
+        QCOMPARE(f->line, 1);
+        QVERIFY2(f->message.contains(u"set by hand"_s), qPrintable(f->message));
+    }
+
     void aToolLoadedTwiceIsOneToolWithBothLines()
     {
         const JobReport r

@@ -181,6 +181,22 @@ private Q_SLOTS:
         QVERIFY(std::any_of(hunk.cbegin(), hunk.cend(), [](const PrepareRow &r) {
             return r.originalLine == 0 && r.prepared.startsWith(u"M493.2 T7"_s);
         }));
+        // A TLO set by hand is not a measurement: its tool is measured at its change, not restored.
+        ToolTable byHand = table();
+        Tool handSet = *byHand.find(7);
+        handSet.tloSource = TloSource::Manual;
+        QVERIFY(byHand.replace(7, handSet).ok());
+        QTemporaryDir dir;
+        const QString in = dir.filePath(u"job.nc"_s);
+        QFile file(in);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(kCarveraJob);
+        file.close();
+        o.now = kNow;
+        const auto manual = prepareJobFile(in, byHand, o, dir.filePath(u"out.nc"_s));
+        QVERIFY(manual);
+        QCOMPARE(manual.value().inserted, 0);
+        QVERIFY(manual.value().notes.join(u'\n').contains(u"T7's TLO was set by hand"_s));
     }
 
     void theCarveraBreakTestsEachToolAfterItsLastCut()
@@ -243,8 +259,9 @@ private Q_SLOTS:
         const auto prepared = prepareJobFile(in, mixed, o, dir.filePath(u"out.nc"_s));
         QVERIFY(prepared);
         QCOMPARE(prepared.value().inserted, 2);
-        QVERIFY(prepared.value().notes.join(u'\n').contains(u"T8's stored TLO was measured against reference MCS "
-                                                             "Z -80, but the machine's is -72.3"_s));
+        QVERIFY(
+            prepared.value().notes.join(u'\n').contains(u"T8's stored TLO was measured against reference MCS "
+                                                        "Z -80, but the machine's is -72.3"_s));
         // T1 is the reference tool: the community firmware does not break-test a TLO of 0.
         PrepareOptions test;
         test.breakTest = true;
@@ -274,19 +291,20 @@ private Q_SLOTS:
                                << QByteArray(
                                       "G21 G90 G17\nT1 M6\nG43 H1 G0 Z50\nG1 Z-1 F100\nG28 G91 Z0\nG90\n"
                                       "T2 M6\nG0 X5 Y5\nG0 Z10\nG1 Z-3 F200\nT7 M6\nG43 H7 Z5\nG1 Z-1\nG55\n"
-                                             "G98 G83 X10 Y10 Z-5 R2 Q1 F100\nX20\nG80\nM30\n")
-                               << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at original line 7)");
+                                      "G98 G83 X10 Y10 Z-5 R2 Q1 F100\nX20\nG80\nM30\n")
+                               << QByteArray(
+                                      "G43 H2 (Toffee: no G43 for T2 after its change at original line 7)");
         QTest::newRow("Allen-Bradley 9")
             << int(Dialect::AllenBradley9) << QByteArray("G90\nT2 M6\nG0 X1\nG1 Z-1 F100\nG1 X3\nM30\n")
             << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at original line 2)");
-        QTest::newRow("FAGOR 8055M") << int(Dialect::Fagor8055M)
-                                     << QByteArray("G90\nT7 M6\nG1 Z-1 F100\nG1 X3\nM30\n")
-                                     << QByteArray(
-                                            "G43 D7 (Toffee: no G43 for T7 after its change at original line 2)");
-        QTest::newRow("LinuxCNC") << int(Dialect::LinuxCnc)
-                                  << QByteArray("G21 G90\nT1 M6\nG43\nG1 Z-1 F100\nT2 M6\nG53 G0 Z0\nG0 X10\n"
-                                                "G0 Z5\nG1 Z-2 F100\nM2\n")
-                                  << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at original line 5)");
+        QTest::newRow("FAGOR 8055M")
+            << int(Dialect::Fagor8055M) << QByteArray("G90\nT7 M6\nG1 Z-1 F100\nG1 X3\nM30\n")
+            << QByteArray("G43 D7 (Toffee: no G43 for T7 after its change at original line 2)");
+        QTest::newRow("LinuxCNC")
+            << int(Dialect::LinuxCnc)
+            << QByteArray("G21 G90\nT1 M6\nG43\nG1 Z-1 F100\nT2 M6\nG53 G0 Z0\nG0 X10\n"
+                          "G0 Z5\nG1 Z-2 F100\nM2\n")
+            << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at original line 5)");
     }
 
     void theG43ControllersGetTheMissingG43AndNothingElse()
