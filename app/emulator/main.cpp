@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // toffee-emulator: a Carvera on a pseudo-terminal, for QSerialPort, toffee-cli --port, or a terminal program.
 #include <cstdio>
+#include <limits>
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFile>
 #include <QTextStream>
 
 #include "model/textparsing.h"
@@ -56,13 +58,26 @@ int usageError(const QString &message)
 // The command line's options, each once.
 struct Options
 {
+    static constexpr int kProbeMs = CarveraEmulator::realisticTiming().probeMs;
+    static constexpr int kChangeMs = CarveraEmulator::realisticTiming().changeMs;
+
     QCommandLineOption link { u"link"_s, u"Also make a symbolic link to the device at PATH."_s, u"PATH"_s };
     QCommandLineOption tool { u"tool"_s, u"The physical length of tool N in mm (repeatable)."_s,
         u"N=LENGTH"_s };
     QCommandLineOption broken { u"break-tool"_s, u"Tool N is MM shorter than its length (repeatable)."_s,
         u"N=MM"_s };
-    QCommandLineOption probeMs { u"probe-ms"_s, u"How long a probing cycle takes (default 2000)."_s, u"MS"_s,
-        u"2000"_s };
+    QCommandLineOption probeMs { u"probe-ms"_s,
+        u"How long a probing cycle takes (default %1)."_s.arg(kProbeMs), u"MS"_s, QString::number(kProbeMs) };
+    QCommandLineOption changeMs { u"change-ms"_s,
+        u"How long a rack change takes before the new tool is measured (default %1)."_s.arg(kChangeMs),
+        u"MS"_s, QString::number(kChangeMs) };
+    QCommandLineOption firmware { u"firmware"_s,
+        u"The firmware to answer as: community or stock (default community)."_s, u"NAME"_s, u"community"_s };
+    QCommandLineOption slotFile { u"slots"_s,
+        u"The rack's slots from a custom_tool_slots.txt (`number x y [z]` a line) instead of the C1's T1-T6."_s,
+        u"FILE"_s };
+    QCommandLineOption repeatability { u"repeatability"_s,
+        u"How far apart repeated measurements of a tool trigger, in mm (default 0)."_s, u"MM"_s, u"0"_s };
     QCommandLineOption moveMs { u"move-ms"_s, u"How long any other command takes (default 0)."_s, u"MS"_s,
         u"0"_s };
     QCommandLineOption fixedReference { u"fixed-reference"_s,
@@ -76,7 +91,8 @@ struct Options
 
     void addTo(QCommandLineParser &parser) const
     {
-        parser.addOptions({ link, tool, broken, probeMs, moveMs, fixedReference, notHomed, halted, fault });
+        parser.addOptions({ link, tool, broken, probeMs, changeMs, moveMs, firmware, slotFile, repeatability,
+            fixedReference, notHomed, halted, fault });
     }
 };
 
@@ -104,9 +120,13 @@ Problem configureMachine(CarveraEmulator &emulator, const QCommandLineParser &pa
 {
     const auto probe = Toffee::parseInteger(parser.value(o.probeMs).toUtf8());
     const auto move = Toffee::parseInteger(parser.value(o.moveMs).toUtf8());
-    if (!probe || !move || *probe < 0 || *move < 0)
-        return u"--probe-ms and --move-ms take milliseconds."_s;
-    emulator.setTiming({ int(*probe), int(*move) });
+    const auto change = Toffee::parseInteger(parser.value(o.changeMs).toUtf8());
+    constexpr qint64 kMaxMs = std::numeric_limits<int>::max();
+    for (const auto &ms : { probe, move, change }) {
+        if (!ms || *ms < 0 || *ms > kMaxMs)
+            return u"--probe-ms, --move-ms and --change-ms take milliseconds."_s;
+    }
+    emulator.setTiming({ int(*probe), int(*move), int(*change) });
     if (parser.isSet(o.fixedReference)) {
         const auto mz = Toffee::parseDecimal(parser.value(o.fixedReference).toUtf8());
         if (!mz)
@@ -120,6 +140,33 @@ Problem configureMachine(CarveraEmulator &emulator, const QCommandLineParser &pa
             return u"--halted takes a halt reason, e.g. 3."_s;
         emulator.halt(int(*reason));
     }
+    return std::nullopt;
+}
+
+Problem configureFirmware(CarveraEmulator &emulator, const QCommandLineParser &parser, const Options &o)
+{
+    const QString firmware = parser.value(o.firmware);
+    if (firmware != u"community" && firmware != u"stock")
+        return u"--firmware %1: use community or stock."_s.arg(firmware);
+    emulator.setFirmware(
+        firmware == u"stock" ? CarveraEmulator::Firmware::Stock : CarveraEmulator::Firmware::Community);
+    const auto repeatability = Toffee::parseDecimal(parser.value(o.repeatability).toUtf8());
+    if (!repeatability || *repeatability < 0 || *repeatability > 1.0)
+        return u"--repeatability takes millimetres, 0 to 1."_s;
+    emulator.setRepeatability(*repeatability);
+    if (!parser.isSet(o.slotFile))
+        return std::nullopt;
+    const QString path = parser.value(o.slotFile);
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return u"--slots %1: %2"_s.arg(path, file.errorString());
+    auto rack = CarveraEmulator::parseToolSlots(file.readAll());
+    if (!rack) {
+        Toffee::Error error = rack.error();
+        error.file = path;
+        return u"--slots "_s + error.text();
+    }
+    emulator.setRack(rack.takeValue());
     return std::nullopt;
 }
 
@@ -156,7 +203,7 @@ int main(int argc, char *argv[])
     parser.process(app);
 
     CarveraEmulator emulator;
-    for (auto configure : { configureTools, configureMachine, configureFaults }) {
+    for (auto configure : { configureTools, configureMachine, configureFirmware, configureFaults }) {
         if (const Problem problem = configure(emulator, parser, options))
             return usageError(*problem);
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Carvera's commands as the firmware answers them: a table keyed by M-code, the system commands ($X, $H),
-// motion through the shared interpreter, and the probing cycle behind M491, M491.1 and M6.
+// motion through the shared interpreter, and the probing cycle behind M491, M491.1 and M6 (their firmware
+// differences, the tool change and the rack are in carverarack.cpp).
 #include "serial/emulator/carveraemulator.h"
 
 #include <cmath>
@@ -18,18 +19,6 @@ QByteArray fixed(double v, int decimals = 3)
     return numberBytes(v, NumberFormat::fixed(decimals));
 }
 
-// An offset or height no machine has (1e308 would make the next sum infinite) is refused, not taken.
-bool plausible(std::optional<double> millimetres)
-{
-    return !millimetres || std::fabs(*millimetres) <= kMaxMachineMillimetres;
-}
-
-// Checked before it becomes an int: T1e308 would not fit one.
-bool isToolNumber(double t)
-{
-    return t >= Limits::kEmptySpindle && t < Limits::kMaxToolNumber + 1;
-}
-
 // A command quoted back in a reply: printable ASCII only, and short enough that the reply is one line a
 // link takes whole.
 QByteArray quoted(const QByteArray &line)
@@ -43,6 +32,18 @@ QByteArray quoted(const QByteArray &line)
 }
 
 } // namespace
+
+// An offset or height no machine has (1e308 would make the next sum infinite) is refused, not taken.
+bool CarveraEmulator::plausible(std::optional<double> millimetres)
+{
+    return !millimetres || std::fabs(*millimetres) <= kMaxMachineMillimetres;
+}
+
+// Checked before it becomes an int: T1e308 would not fit one, and T2.5 is no tool.
+bool CarveraEmulator::isToolNumber(double t)
+{
+    return t >= Limits::kEmptySpindle && t < Limits::kMaxToolNumber + 1 && t == std::floor(t);
+}
 
 // The M-codes the emulator runs, each with its handler; the first the block has wins.
 const std::array<CarveraEmulator::MCommand, 8> CarveraEmulator::kMCommands { {
@@ -58,12 +59,10 @@ const std::array<CarveraEmulator::MCommand, 8> CarveraEmulator::kMCommands { {
 
 void CarveraEmulator::execute(const QByteArray &line)
 {
+    if (shellCommand(line))
+        return;
     if (line.isEmpty() || line.startsWith(';')) {
         finish();
-        return;
-    }
-    if (line.startsWith('$')) {
-        systemCommand(line.toUpper());
         return;
     }
     const auto read = GCodeBlock::read(line);
@@ -78,6 +77,9 @@ void CarveraEmulator::execute(const QByteArray &line)
         return;
     }
     const GCodeBlock &block = read.value();
+    // Both firmwares alarm; the halt reason is Toffee's assumption (the sources name none).
+    if (block.has('G', 20))
+        return haltWith("ALARM: Imperial Units are unsupported", HaltReason::Manual);
     for (const auto &[code, run] : kMCommands) {
         if (block.has('M', code)) {
             (this->*run)(block, line);
@@ -99,25 +101,6 @@ void CarveraEmulator::execute(const QByteArray &line)
     }
 }
 
-void CarveraEmulator::systemCommand(const QByteArray &upper)
-{
-    if (upper == "$X") {
-        m_haltReason = 0;
-        say("[Caution: Unlocked]");
-        finish();
-    } else if (isHalted()) {
-        say("error:Alarm lock");
-        m_busy = m_dropOk = m_garble = false;
-        QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
-    } else if (upper == "$H") {
-        m_homed = true;
-        m_mpos = { 0.0, 0.0, 0.0 };
-        finish();
-    } else {
-        refuse(upper);
-    }
-}
-
 void CarveraEmulator::refuse(const QByteArray &line, const QByteArray &why)
 {
     say(why.isEmpty() ? "error:Unsupported command - " + quoted(line) : why);
@@ -131,22 +114,6 @@ void CarveraEmulator::haltWith(const QByteArray &message, HaltReason reason)
     say(message);
     halt(int(reason));
     finish();
-}
-
-void CarveraEmulator::probeTool(const GCodeBlock &, const QByteArray &)
-{
-    calibrate(false, 0.0);
-}
-
-void CarveraEmulator::breakTest(const GCodeBlock &block, const QByteArray &line)
-{
-    const GCodeWord *h = block.find('H');
-    if (h && h->bare)
-        return refuse(line);
-    const double tolerance = h ? h->value : Limits::kDefaultBreakTolerance;
-    if (tolerance < Limits::kMinBreakTolerance)
-        return haltWith("ERROR: Tool Break Check - tolerance set too small", HaltReason::CalibrateFail);
-    calibrate(true, tolerance);
 }
 
 // M493 (and .0, .1): the last probe becomes the current tool's, and the reference's if there is none.
@@ -177,6 +144,8 @@ void CarveraEmulator::selectTool(const GCodeBlock &block, const QByteArray &)
 
 void CarveraEmulator::setTlo(const GCodeBlock &block, const QByteArray &line)
 {
+    if (m_firmware == Firmware::Stock)
+        return finish(); // the stock firmware ignores M493.3 without a word
     const auto z = block.value('Z');
     const auto h = block.value('H');
     if (!plausible(z) || !plausible(h))
@@ -195,34 +164,10 @@ void CarveraEmulator::setTlo(const GCodeBlock &block, const QByteArray &line)
 
 void CarveraEmulator::showOffsets(const GCodeBlock &, const QByteArray &)
 {
+    if (m_firmware == Firmware::Stock)
+        return finish(); // as M493.3
     reportOffsets();
     finish();
-}
-
-void CarveraEmulator::changeTool(const GCodeBlock &block, const QByteArray &line)
-{
-    const auto t = block.value('T');
-    const auto h = block.value('H');
-    if (!t || !plausible(h))
-        return refuse(line);
-    if (!isToolNumber(*t))
-        return invalidTool(*t);
-    const int n = int(*t);
-    m_tool = n;
-    m_calibrated = false;
-    if (h) {
-        m_curMz = m_refMz + *h;
-        m_calibrated = true;
-        finish();
-        return;
-    }
-    say("Start manually picking new tool: T" + QByteArray::number(n));
-    calibrate(false, 0.0);
-}
-
-void CarveraEmulator::invalidTool(double tool)
-{
-    haltWith("ALARM: Invalid tool: T" + numberBytes(tool), HaltReason::AtcToolInvalid);
 }
 
 // G-code moves and work offsets: the shared interpreter, in step with the machine's own moves and TLO.
@@ -253,7 +198,7 @@ void CarveraEmulator::reportOffsets()
         + fixed(m_setter[2]) + ']');
 }
 
-void CarveraEmulator::calibrate(bool breakTest, double tolerance)
+void CarveraEmulator::calibrate(bool breakTest, double tolerance, int repeats)
 {
     if (!m_homed) {
         return haltWith("Machine has not been homed", HaltReason::HomeFail);
@@ -272,24 +217,16 @@ void CarveraEmulator::calibrate(bool breakTest, double tolerance)
     say("G38.6 Z" + fixed(kZTravelLimit) + " F500");
     m_mpos = { m_setter[0], m_setter[1], kClearanceZ };
 
-    bool fail = std::exchange(m_failThisProbe, false);
-    for (qsizetype i = 0; !fail && i < m_faults.size(); ++i) {
-        if (m_faults.at(i).fault == Fault::FailProbe && m_faults.at(i).prefix.isEmpty()) {
-            m_faults.removeAt(i);
-            fail = true;
-            break;
-        }
-    }
     const double trigger = kNoseTriggerZ + toolLength(m_tool);
-    fail = fail || trigger < kZTravelLimit;
-
+    const bool fail = probeFails(trigger);
+    if (repeats > 0) {
+        if (fail)
+            return later(m_timing.probeMs, [this] { failProbe(); });
+        return measureRepeatedly({ repeats, trigger, startX, startY, {} });
+    }
     later(m_timing.probeMs, [=, this] {
-        if (fail) {
-            m_mpos[2] = kZTravelLimit;
-            return haltWith("ALARM: Probe failed to trigger within safety margin ("
-                    + fixed(kClearanceZ - kZTravelLimit, 2) + "mm)",
-                HaltReason::ProbeFail);
-        }
+        if (fail)
+            return failProbe();
         say("[PRB:" + fixed(m_setter[0]) + ',' + fixed(m_setter[1]) + ',' + fixed(trigger) + ":1]");
         m_lastProbeZ = trigger;
         const double oldTlo = m_curMz - m_refMz;
@@ -309,11 +246,38 @@ void CarveraEmulator::calibrate(bool breakTest, double tolerance)
         }
         m_curMz = trigger;
         m_calibrated = true;
-        m_mpos = { startX, startY, kClearanceZ };
-        say("Return to XY position: X" + fixed(startX) + " Y" + fixed(startY));
-        say("Done ATC");
-        finish();
+        returnTo(startX, startY);
     });
+}
+
+// Whether the coming probe fails: a fault aimed at it, or a tool too short to reach the setter.
+bool CarveraEmulator::probeFails(double trigger)
+{
+    bool fail = std::exchange(m_failThisProbe, false);
+    for (qsizetype i = 0; !fail && i < m_faults.size(); ++i) {
+        if (m_faults.at(i).fault == Fault::FailProbe && m_faults.at(i).prefix.isEmpty()) {
+            m_faults.removeAt(i);
+            fail = true;
+            break;
+        }
+    }
+    return fail || trigger < kZTravelLimit;
+}
+
+void CarveraEmulator::failProbe()
+{
+    m_mpos[2] = kZTravelLimit;
+    haltWith("ALARM: Probe failed to trigger within safety margin (" + fixed(kClearanceZ - kZTravelLimit, 2)
+            + "mm)",
+        HaltReason::ProbeFail);
+}
+
+void CarveraEmulator::returnTo(double x, double y)
+{
+    m_mpos = { x, y, kClearanceZ };
+    say("Return to XY position: X" + fixed(x) + " Y" + fixed(y));
+    say("Done ATC");
+    finish();
 }
 
 } // namespace Toffee

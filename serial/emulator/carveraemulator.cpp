@@ -68,8 +68,7 @@ QByteArray CarveraEmulator::statusReport() const
     const double tloNow = m_curMz - m_refMz;
     QByteArray report = '<' + state + "|MPos:" + axes(m_mpos[0], m_mpos[1], m_mpos[2])
         + "|WPos:" + axes(m_mpos[0] - m_wcs[0], m_mpos[1] - m_wcs[1], m_mpos[2] - m_wcs[2] - tloNow)
-        + "|R:0.0000|G:0|F:0.0,3000.0,100.0|S:0.0,0.0,100.0,0,23.5,24.1|T:" + QByteArray::number(m_tool) + ','
-        + fixed(tloNow) + ",-1,0|W:0.00|C:1,0,0,1";
+        + "|R:0.0000|G:0|F:0.0,3000.0,100.0|S:0.0,0.0,100.0,0,23.5,24.1" + toolField() + "|W:0.00|C:1,0,0,1";
     if (isHalted())
         report += "|H:" + QByteArray::number(m_haltReason);
     return report + '>';

@@ -11,6 +11,7 @@
 
 #include "model/gcode/gcodeinterpreter.h"
 #include "model/gcode/gcodewords.h"
+#include "model/result.h"
 
 namespace Toffee {
 
@@ -36,10 +37,20 @@ public:
         Delay, // the command is answered `amount` milliseconds late
         BreakTool, // the tool in the spindle loses `amount` mm as the command arrives
     };
+    // The two firmwares differ in what they answer (docs/CARVERA.md § 7).
+    enum class Firmware { Community, Stock };
     struct Timing
     {
         int probeMs = 0; // how long a probing cycle takes
         int moveMs = 0; // how long any other command takes
+        int changeMs = 0; // how long a rack change takes before the new tool is measured
+    };
+    struct RackSlot
+    {
+        int tool = 0;
+        double x = 0.0;
+        double y = 0.0;
+        double z = 0.0;
     };
 
     // The MCS Z at which the spindle nose itself would touch the setter; a tool of length L triggers L
@@ -48,11 +59,28 @@ public:
     static constexpr double kZTravelLimit = -145.0; // the probe gives up here
     static constexpr double kClearanceZ = -10.0;
     static constexpr qsizetype kMaxLineBytes = 4096;
+    // What `version` answers (`version = %s`).
+    static constexpr char kCommunityVersion[] = "2.1.0c";
+    static constexpr char kStockVersion[] = "1.0.1";
+    static constexpr int kMaxRepeats = 10; // M491 R<n>
 
     explicit CarveraEmulator(QObject *parent = nullptr);
 
     void setProfile(Profile profile, double fixedReferenceMz = -72.3);
     void setTiming(Timing timing) { m_timing = timing; }
+    // About as long as a C1 takes: a probing cycle 8 s, a rack change 15 s (Toffee's estimate).
+    [[nodiscard]] static constexpr Timing realisticTiming() { return { 8000, 0, 15000 }; }
+    void setFirmware(Firmware firmware) { m_firmware = firmware; }
+    [[nodiscard]] Firmware firmware() const { return m_firmware; }
+    // How far apart repeated measurements of one tool trigger (M491 R<n>); 0 measures the same every time.
+    void setRepeatability(double millimetres) { m_repeatability = millimetres; }
+    // The C1's six slots, T1-T6; the rack at start.
+    [[nodiscard]] static QList<RackSlot> defaultRack();
+    void setRack(QList<RackSlot> rack) { m_rack = std::move(rack); }
+    [[nodiscard]] const QList<RackSlot> &rack() const { return m_rack; }
+    [[nodiscard]] bool inRack(int tool) const;
+    // The community firmware's custom_tool_slots.txt: `number x y [z]` a line, `#` comments.
+    [[nodiscard]] static Result<QList<RackSlot>> parseToolSlots(const QByteArray &text);
     void setToolLength(int tool, double millimetres) { m_lengths.insert(tool, millimetres); }
     [[nodiscard]] double toolLength(int tool) const;
     void breakTool(int tool, double millimetres) { m_lengths.insert(tool, toolLength(tool) - millimetres); }
@@ -115,6 +143,7 @@ private:
 
     void processNext();
     void execute(const QByteArray &line);
+    bool shellCommand(const QByteArray &line);
     void systemCommand(const QByteArray &upper);
     void say(const QByteArray &line);
     void finish();
@@ -130,14 +159,34 @@ private:
     void showOffsets(const GCodeBlock &block, const QByteArray &line);
     void changeTool(const GCodeBlock &block, const QByteArray &line);
     void invalidTool(double tool);
+    [[nodiscard]] static bool plausible(std::optional<double> millimetres);
+    [[nodiscard]] static bool isToolNumber(double t);
+    void announceChange(int newTool);
+    [[nodiscard]] QByteArray toolField() const;
     void move(const QByteArray &line);
 
-    void calibrate(bool breakTest, double tolerance);
+    void calibrate(bool breakTest, double tolerance, int repeats = 0);
+    [[nodiscard]] bool probeFails(double trigger);
+    void failProbe();
+    // M491 R<n>: each measurement's trigger, and where the spindle returns after the last.
+    struct Repeats
+    {
+        int count = 0;
+        double trigger = 0.0;
+        double startX = 0.0;
+        double startY = 0.0;
+        QList<double> triggers;
+    };
+    void measureRepeatedly(Repeats repeats);
+    void returnTo(double x, double y);
     void reportOffsets();
     void reportTlo();
 
     Profile m_profile = Profile::Seed;
+    Firmware m_firmware = Firmware::Community;
     Timing m_timing;
+    double m_repeatability = 0.0;
+    QList<RackSlot> m_rack = defaultRack();
     QHash<int, double> m_lengths;
     QList<PendingFault> m_faults;
     QList<QByteArray> m_queue;

@@ -5,40 +5,11 @@
 #include "model/gcode/gcodeinterpreter.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/machinereplies.h"
+#include "tests/support/emulatorlines.h"
 
 using namespace Toffee;
+using namespace Toffee::Test;
 using namespace Qt::StringLiterals;
-
-namespace {
-
-// Sends one line and returns everything up to and including its terminator (or what came in 2 s).
-QList<QByteArray> command(CarveraEmulator &emulator, const QByteArray &line, int ms = 2000)
-{
-    QList<QByteArray> out;
-    bool done = false;
-    auto c = QObject::connect(&emulator, &CarveraEmulator::lineSent, &emulator, [&](const QByteArray &l) {
-        out.append(l);
-        const ReplyKind kind = classifyReply(l);
-        done = done || kind == ReplyKind::Ok || kind == ReplyKind::Error;
-    });
-    emulator.receiveLine(line);
-    if (!QTest::qWaitFor([&] { return done; }, ms))
-        out.append("TEST: no terminator");
-    QObject::disconnect(c);
-    return out;
-}
-
-QByteArray status(CarveraEmulator &emulator)
-{
-    QByteArray report;
-    auto c = QObject::connect(
-        &emulator, &CarveraEmulator::lineSent, &emulator, [&](const QByteArray &l) { report = l; });
-    emulator.receiveRealtime('?');
-    QObject::disconnect(c);
-    return report;
-}
-
-} // namespace
 
 class TestCarveraEmulator : public QObject
 {
@@ -144,12 +115,16 @@ private Q_SLOTS:
     {
         CarveraEmulator emulator;
         command(emulator, "M491");
-        QList<QByteArray> out = command(emulator, "M6 T2");
-        QCOMPARE(out.front(), QByteArray("Start manually picking new tool: T2"));
+        emulator.setToolLength(7, 44.312); // a tool with no rack slot: changed by hand
+        QList<QByteArray> out = command(emulator, "M6 T7");
+        QCOMPARE(out.at(0), QByteArray("Start dropping current tool: T1"));
+        QCOMPARE(out.at(1), QByteArray("Start manually picking new tool: T7"));
         QVERIFY(qFuzzyCompare(emulator.tlo(), -33.388));
-        out = command(emulator, "M6 T3 H-12.5");
-        QCOMPARE(out, QList<QByteArray> { "ok" });
-        QCOMPARE(emulator.tool(), 3);
+        out = command(emulator, "M6 T8 H-12.5");
+        const QList<QByteArray> byHand { "Start dropping current tool: T7",
+            "Start manually picking new tool: T8", "ok" };
+        QCOMPARE(out, byHand);
+        QCOMPARE(emulator.tool(), 8);
         QCOMPARE(emulator.tlo(), -12.5);
         out = command(emulator, "M6 T-5");
         QCOMPARE(out.front(), QByteArray("ALARM: Invalid tool: T-5"));

@@ -90,6 +90,8 @@ public:
         arguments << QStringLiteral("--link") << link;
         if (!arguments.contains(QStringLiteral("--probe-ms")))
             arguments << QStringLiteral("--probe-ms") << QStringLiteral("0");
+        if (!arguments.contains(QStringLiteral("--change-ms")))
+            arguments << QStringLiteral("--change-ms") << QStringLiteral("0");
         m_process.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-emulator"), arguments);
         if (m_process.waitForReadyRead(10000))
             m_device = QString::fromUtf8(m_process.readLine()).trimmed();

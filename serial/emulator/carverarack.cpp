@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Where the two firmwares part (docs/CARVERA.md § 7): the shell commands, M491's repeats and subcode, the
+// status report's T field, and the tool change with its rack.
+#include "serial/emulator/carveraemulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "model/limits.h"
+#include "model/numberformat.h"
+#include "model/textparsing.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QByteArray fixed(double v, int decimals = 3)
+{
+    return numberBytes(v, NumberFormat::fixed(decimals));
+}
+
+constexpr int kMaxSlotTool = Limits::kMaxToolNumber - 10; // T999990 on are the 3-axis probes
+
+// Where repeat i of M491 R<n> triggers, in units of the repeatability: the same every run, so tests can
+// check the spread and the mean.
+constexpr std::array<double, 5> kRepeatSpread { 0.0, 1.0, -1.0, 0.5, -0.5 };
+
+} // namespace
+
+// Toffee's assumption: a row along the back, 30 mm apart, at MCS Z -105. Nothing prints the coordinates.
+QList<CarveraEmulator::RackSlot> CarveraEmulator::defaultRack()
+{
+    QList<RackSlot> rack;
+    for (int n = 1; n <= 6; ++n)
+        rack.append({ n, -15.0 - 30.0 * (n - 1), -7.0, -105.0 });
+    return rack;
+}
+
+bool CarveraEmulator::inRack(int tool) const
+{
+    return std::any_of(m_rack.cbegin(), m_rack.cend(), [tool](const RackSlot &s) { return s.tool == tool; });
+}
+
+Result<QList<CarveraEmulator::RackSlot>> CarveraEmulator::parseToolSlots(const QByteArray &text)
+{
+    QList<RackSlot> rack;
+    const QList<QByteArray> lines = text.split('\n');
+    for (qsizetype i = 0; i < lines.size(); ++i) {
+        const int lineNumber = int(i + 1);
+        const qsizetype hash = lines.at(i).indexOf('#');
+        const QByteArray content = (hash < 0 ? lines.at(i) : lines.at(i).left(hash)).simplified();
+        if (content.isEmpty())
+            continue;
+        const QList<QByteArray> fields = content.split(' ');
+        const bool counted = fields.size() == 3 || fields.size() == 4;
+        const auto tool = counted ? parseInteger(fields.at(0)) : std::nullopt;
+        std::array<std::optional<double>, 3> xyz;
+        for (qsizetype k = 1; counted && k < fields.size(); ++k) {
+            xyz[size_t(k - 1)] = parseDecimal(fields.at(k));
+            if (!plausible(xyz[size_t(k - 1)]))
+                xyz[size_t(k - 1)].reset();
+        }
+        if (!tool || !xyz[0] || !xyz[1] || (fields.size() == 4 && !xyz[2])) {
+            return Error(
+                u"\"%1\" is not \"number x y [z]\""_s.arg(QString::fromUtf8(content.left(80))), lineNumber);
+        }
+        if (*tool < 1 || *tool > kMaxSlotTool)
+            return Error(u"tool %1 is not 1-%2"_s.arg(*tool).arg(kMaxSlotTool), lineNumber);
+        if (std::any_of(rack.cbegin(), rack.cend(), [&](const RackSlot &s) { return s.tool == *tool; }))
+            return Error(u"tool %1 has a slot already"_s.arg(*tool), lineNumber);
+        if (!xyz[2] && rack.isEmpty())
+            return Error(u"the first slot needs a z"_s, lineNumber);
+        rack.append({ int(*tool), *xyz[0], *xyz[1], xyz[2] ? *xyz[2] : rack.last().z });
+    }
+    if (rack.isEmpty())
+        return Error(u"no tool slots"_s);
+    return rack;
+}
+
+QByteArray CarveraEmulator::toolField() const
+{
+    const bool empty = m_tool == Limits::kEmptySpindle;
+    if (m_firmware == Firmware::Stock)
+        return empty ? QByteArray() : "|T:" + QByteArray::number(m_tool) + ',' + fixed(tlo());
+    return "|T:" + QByteArray::number(m_tool) + ',' + fixed(empty ? 0.0 : tlo()) + ",-1,0";
+}
+
+// The firmware's shell: its commands are not G-code, so they run while halted too.
+bool CarveraEmulator::shellCommand(const QByteArray &line)
+{
+    if (line == "version") {
+        say(QByteArray("version = ") + (m_firmware == Firmware::Stock ? kStockVersion : kCommunityVersion));
+        finish();
+        return true;
+    }
+    if (line.startsWith('$')) {
+        systemCommand(line.toUpper());
+        return true;
+    }
+    return false;
+}
+
+void CarveraEmulator::systemCommand(const QByteArray &upper)
+{
+    if (upper == "$X") {
+        m_haltReason = 0;
+        say("[Caution: Unlocked]");
+        finish();
+    } else if (isHalted()) {
+        say("error:Alarm lock");
+        m_busy = m_dropOk = m_garble = false;
+        QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
+    } else if (upper == "$H") {
+        m_homed = true;
+        m_mpos = { 0.0, 0.0, 0.0 };
+        finish();
+    } else {
+        refuse(upper);
+    }
+}
+
+void CarveraEmulator::probeTool(const GCodeBlock &block, const QByteArray &line)
+{
+    const GCodeWord *r = block.find('R');
+    if (!r || m_firmware == Firmware::Stock)
+        return calibrate(false, 0.0); // the stock firmware has no repeats and ignores R
+    if (r->bare || r->value != std::floor(r->value) || r->value < 1 || r->value > kMaxRepeats)
+        return refuse(line);
+    calibrate(false, 0.0, int(r->value));
+}
+
+void CarveraEmulator::breakTest(const GCodeBlock &block, const QByteArray &line)
+{
+    if (m_firmware == Firmware::Stock)
+        return calibrate(false, 0.0); // the subcode is ignored: a plain M491, whatever H says
+    const GCodeWord *h = block.find('H');
+    if (h && h->bare)
+        return refuse(line);
+    const double tolerance = h ? h->value : Limits::kDefaultBreakTolerance;
+    if (tolerance < Limits::kMinBreakTolerance)
+        return haltWith("ERROR: Tool Break Check - tolerance set too small", HaltReason::CalibrateFail);
+    calibrate(true, tolerance);
+}
+
+// One measurement of M491 R<n> per probing cycle; after the last, the mean becomes the tool's. The lines'
+// wording is Toffee's assumption: the source only says it prints each value, the spread and the value used.
+void CarveraEmulator::measureRepeatedly(Repeats repeats)
+{
+    later(m_timing.probeMs, [this, r = std::move(repeats)]() mutable {
+        const qsizetype i = r.triggers.size();
+        const double trigger = r.trigger + m_repeatability * kRepeatSpread[size_t(i) % kRepeatSpread.size()];
+        say("[PRB:" + fixed(m_setter[0]) + ',' + fixed(m_setter[1]) + ',' + fixed(trigger) + ":1]");
+        m_lastProbeZ = trigger;
+        if (!m_hasReference) {
+            m_refMz = trigger;
+            m_hasReference = true;
+        }
+        r.triggers.append(trigger);
+        say("TLO measurement " + QByteArray::number(i + 1) + " of " + QByteArray::number(r.count) + ": "
+            + fixed(trigger - m_refMz));
+        if (r.triggers.size() < r.count)
+            return measureRepeatedly(std::move(r));
+        const auto [low, high] = std::minmax_element(r.triggers.cbegin(), r.triggers.cend());
+        const double mean = std::accumulate(r.triggers.cbegin(), r.triggers.cend(), 0.0) / r.count;
+        say("Max delta: " + fixed(*high - *low));
+        say("Using TLO: " + fixed(mean - m_refMz));
+        m_curMz = mean;
+        m_calibrated = true;
+        returnTo(r.startX, r.startY);
+    });
+}
+
+// M6 T<n>: the firmware changes only to another tool. A rack tool is put back or picked and always
+// measured (H is for manual changes only); a tool with no slot is changed by hand.
+void CarveraEmulator::changeTool(const GCodeBlock &block, const QByteArray &line)
+{
+    const auto t = block.value('T');
+    const auto h = block.value('H');
+    if (!t || !plausible(h))
+        return refuse(line);
+    if (!isToolNumber(*t))
+        return invalidTool(*t);
+    const int n = int(*t);
+    if (n == m_tool)
+        return finish();
+    const bool atTheRack = inRack(n) || (n == Limits::kEmptySpindle && inRack(m_tool));
+    announceChange(n);
+    m_tool = n;
+    m_calibrated = false;
+    if (n == Limits::kEmptySpindle) {
+        if (atTheRack && m_timing.changeMs > 0)
+            return later(m_timing.changeMs, [this] { finish(); });
+        return finish();
+    }
+    if (atTheRack) {
+        if (m_timing.changeMs > 0)
+            return later(m_timing.changeMs, [this] { calibrate(false, 0.0); });
+        return calibrate(false, 0.0);
+    }
+    if (h) {
+        m_curMz = m_refMz + *h;
+        m_calibrated = true;
+        return finish();
+    }
+    calibrate(false, 0.0);
+}
+
+// The stock firmware says one line for a drop and a pick; the community firmware one for each.
+void CarveraEmulator::announceChange(int newTool)
+{
+    const QByteArray oldT = 'T' + QByteArray::number(m_tool);
+    const QByteArray newT = 'T' + QByteArray::number(newTool);
+    const bool dropping = m_tool != Limits::kEmptySpindle;
+    if (m_firmware == Firmware::Stock && dropping && newTool != Limits::kEmptySpindle)
+        return say("Start atc, old tool: " + oldT + ", new tool: " + newT);
+    if (dropping)
+        say("Start dropping current tool: " + oldT);
+    if (newTool == Limits::kEmptySpindle)
+        return;
+    say((inRack(newTool) ? "Start picking new tool: " : "Start manually picking new tool: ") + newT);
+}
+
+void CarveraEmulator::invalidTool(double tool)
+{
+    haltWith("ALARM: Invalid tool: T" + numberBytes(tool), HaltReason::AtcToolInvalid);
+}
+
+} // namespace Toffee
