@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "serial/machineconnection.h"
 
+#include "serial/emulator/carveraemulator.h"
 #include "serial/emulatortransport.h"
 #include "serial/serialporttransport.h"
 
@@ -70,8 +71,15 @@ void MachineConnection::teardown()
 
 std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target)
 {
-    if (target.emulator)
-        return std::make_unique<EmulatorTransport>();
+    if (target.emulator) {
+        auto transport = std::make_unique<EmulatorTransport>();
+        CarveraEmulator *machine = transport->emulator();
+        if (target.emulatorStock)
+            machine->setFirmware(CarveraEmulator::Firmware::Stock);
+        if (target.emulatorPaced)
+            machine->setTiming(CarveraEmulator::realisticTiming());
+        return transport;
+    }
     return std::make_unique<SerialPortTransport>(target.port, target.baud);
 }
 
@@ -183,11 +191,17 @@ bool MachineConnection::selectTool(int tool, Done done)
         [tool](MachineSession *s, Done d) { s->selectTool(tool, std::move(d)); }, std::move(done));
 }
 
-bool MachineConnection::changeTool(int tool, Done done)
+bool MachineConnection::changeTool(int tool, Done done, std::optional<double> storedTlo)
 {
     return perform(
-        tr("Changing to T%1…").arg(tool), false,
-        [tool](MachineSession *s, Done d) { s->changeTool(tool, std::move(d)); }, std::move(done));
+        tool == Limits::kEmptySpindle ? tr("Emptying the spindle…") : tr("Changing to T%1…").arg(tool), false,
+        [tool, storedTlo](MachineSession *s, Done d) { s->changeTool(tool, std::move(d), storedTlo); },
+        std::move(done));
+}
+
+FirmwareInfo MachineConnection::firmware() const
+{
+    return m_session ? m_session->firmware() : FirmwareInfo {};
 }
 
 QString MachineConnection::haltedMessage() const
@@ -279,12 +293,25 @@ bool MachineConnection::beginOperation(const QString &what)
     return true;
 }
 
-void MachineConnection::endOperation(const SessionResult &result)
+void MachineConnection::announce(const SessionResult &result)
 {
     if (result.tlo) {
         m_offsets = result.tlo;
         Q_EMIT offsetsChanged(*result.tlo, result.tool.value_or(-1));
     }
+}
+
+void MachineConnection::updateOperation(const QString &what)
+{
+    if (m_operation.isEmpty())
+        return;
+    m_operation = what;
+    Q_EMIT busyChanged(true, what);
+}
+
+void MachineConnection::endOperation(const SessionResult &result)
+{
+    announce(result);
     m_operation.clear();
     Q_EMIT busyChanged(false, {});
 }

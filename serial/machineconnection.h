@@ -19,6 +19,10 @@ struct ConnectionTarget
     QString port;
     int baud = 115200;
     int timeoutMs = 0; // every command's limit, connecting included; 0: each command's own
+    // The built-in emulator: Makera's stock firmware instead of the community's, and a real machine's pace
+    // (toffee --emulator, for a person watching) instead of none (tests).
+    bool emulatorStock = false;
+    bool emulatorPaced = false;
 };
 
 // The transport a target names: a serial port at its baud rate, or a new built-in emulator. The window's
@@ -60,7 +64,8 @@ public:
     bool status(Done done); // also while halted: it only reads
     bool report(Done done);
     bool selectTool(int tool, Done done);
-    bool changeTool(int tool, Done done);
+    // With `storedTlo`, a manual change takes it instead of probing (MachineSession::changeTool).
+    bool changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt);
     bool probe(Done done);
     bool breakTest(double tolerance, Done done);
     bool setTlo(double tlo, Done done);
@@ -75,6 +80,8 @@ public:
         const QByteArray &line, std::function<void(const CommandReply &, const SessionResult &)> done);
     // Stops whatever the machine does now (Ctrl-X); it halts, and Unlock follows.
     void stop();
+    // What the machine said it runs on connecting; Unknown while disconnected.
+    [[nodiscard]] FirmwareInfo firmware() const;
     // The tool the machine reports in the spindle, if known.
     [[nodiscard]] std::optional<int> activeTool() const;
     // "T2", or "the current tool" when the machine has not said.
@@ -85,6 +92,10 @@ public:
     // Reads the offsets again (M493.4) when nothing else runs, so that every panel shows them as they are.
     void refreshOffsets();
     void endOperation(const SessionResult &result);
+    // A sequence of operations held as one (the rack's): what it does now, for the busy text.
+    void updateOperation(const QString &what);
+    // Offsets a result reports become the machine's (what endOperation does for one operation).
+    void announce(const SessionResult &result);
     [[nodiscard]] bool isBusy() const { return !m_operation.isEmpty(); }
     // Halted (Alarm): the controller refuses every motion and offset command until Unlock.
     [[nodiscard]] bool isHalted() const { return m_halted; }

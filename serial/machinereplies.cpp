@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "serial/machinereplies.h"
 
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -264,6 +265,46 @@ QString haltRecovery(int reason)
     if (reason == 41)
         return tr("This halt needs the machine switched off and on again.");
     return tr("Check the machine, then Unlock ($X).");
+}
+
+std::optional<FirmwareInfo> parseVersion(QByteArrayView line)
+{
+    line = line.trimmed();
+    constexpr QByteArrayView kPrefix = "version = ";
+    if (!line.startsWith(kPrefix))
+        return std::nullopt;
+    const QByteArrayView version = line.sliced(kPrefix.size()).trimmed();
+    if (version.isEmpty() || version.size() > 64)
+        return std::nullopt;
+    for (char c : version) {
+        if (c < 0x21 || c > 0x7e)
+            return std::nullopt;
+    }
+    FirmwareInfo info;
+    info.version = QString::fromLatin1(version);
+    // The community builds' version is `git describe`: "2.1.0c", "v2.1.0c-3-gabc"; the "c" follows the
+    // numbers.
+    const qsizetype dash = version.indexOf('-');
+    const QByteArrayView release = dash < 0 ? version : version.first(dash);
+    const bool numeric = !release.isEmpty() && std::isdigit(static_cast<unsigned char>(release.back()));
+    info.kind = release.endsWith('c') || release.endsWith('C') ? FirmwareInfo::Kind::Community
+        : numeric                                              ? FirmwareInfo::Kind::Stock
+                                                               : FirmwareInfo::Kind::Unknown;
+    return info;
+}
+
+QString FirmwareInfo::description() const
+{
+    switch (kind) {
+    case Kind::Community:
+        return tr("Community firmware %1").arg(version);
+    case Kind::Stock:
+        return tr("Makera stock firmware %1").arg(version);
+    case Kind::Unknown:
+        break;
+    }
+    return version.isEmpty() ? tr("Unknown firmware (it did not answer \"version\")")
+                             : tr("Unknown firmware %1").arg(version);
 }
 
 } // namespace Toffee

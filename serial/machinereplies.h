@@ -31,6 +31,9 @@ struct TloReading
 {
     double currentMz = 0.0;
     double referenceMz = 0.0;
+    // Makera's stock firmware prints no M493.4 report: its TLO comes from the status report's T: field alone,
+    // and then currentMz holds the TLO, referenceMz is 0 and neither MCS Z is known.
+    bool onlyTlo = false;
     // At the machine's resolution (it reports 0.001 mm): -105.688 - -72.3 is -33.388, not
     // -33.388000000000005.
     [[nodiscard]] double tlo() const { return std::round((currentMz - referenceMz) * 1000.0) / 1000.0; }
@@ -49,6 +52,25 @@ struct BreakTestReading
     double oldTlo = 0.0;
     double newTlo = 0.0;
 };
+
+// Which firmware the controller runs, from its answer to `version` ("version = %s"): the community
+// firmware's versions end in "c" (2.1.0c), Makera's stock firmware's do not (1.0.1). What each can do
+// differs (docs/CARVERA.md § 7); an unknown firmware is offered only what both do.
+struct FirmwareInfo
+{
+    enum class Kind { Unknown, Community, Stock };
+    Kind kind = Kind::Unknown;
+    QString version; // as the machine printed it; empty when it did not say
+
+    // M491.1 compares and halts (stock: a plain calibration that adopts whatever it measures).
+    [[nodiscard]] bool hasBreakTest() const { return kind == Kind::Community; }
+    // M493.3 sets the TLO and M493.4 reports it (stock: both ignored without a word).
+    [[nodiscard]] bool hasManualOffset() const { return kind != Kind::Stock; }
+    // "Makera stock firmware 1.0.1", for people.
+    [[nodiscard]] QString description() const;
+};
+
+[[nodiscard]] std::optional<FirmwareInfo> parseVersion(QByteArrayView line);
 
 // What kind of line the controller sent.
 enum class ReplyKind {

@@ -58,6 +58,8 @@ MachineSession::MachineSession(MachineLink *link, QObject *parent)
     connect(m_link, &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
         if (status.tool)
             m_tool = status.tool;
+        else if (m_firmware.kind == FirmwareInfo::Kind::Stock)
+            m_tool = Limits::kEmptySpindle; // the stock firmware leaves T: out for an empty spindle
     });
 }
 
@@ -138,6 +140,8 @@ void MachineSession::run(
 
 void MachineSession::readOffsets(Done done, SessionResult result)
 {
+    if (m_firmware.kind == FirmwareInfo::Kind::Stock)
+        return readStatusTlo(std::move(done), std::move(result)); // M493.4 says nothing there
     run("M493.4", MachineLink::kDefaultTimeoutMs, done,
         [this, done, result](const CommandReply &reply) mutable {
             for (const QByteArray &line : reply.lines) {
@@ -196,8 +200,11 @@ MachineSession::Done MachineSession::recording(Done done, RecordingKind kind)
             return done(r);
         SessionResult recorded = r;
         const TloSource source = kind == RecordingKind::Probe ? TloSource::Probe : TloSource::Manual;
-        recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, r.tlo->referenceMz, std::nullopt,
-            QDateTime::currentDateTimeUtc(), kind, r.tlo->currentMz };
+        const auto mcs = [&r](double z) {
+            return r.tlo->onlyTlo ? std::nullopt : std::optional<double>(z);
+        };
+        recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, mcs(r.tlo->referenceMz), std::nullopt,
+            QDateTime::currentDateTimeUtc(), kind, mcs(r.tlo->currentMz) };
         done(recorded);
     };
 }
@@ -238,6 +245,8 @@ void MachineSession::probe(Done done)
 void MachineSession::breakTest(double tolerance, Done done)
 {
     done = recordingVerdict(std::move(done));
+    if (auto why = unsupported(true))
+        return refuse(done, *why);
     if (auto r = validateTolerance(tolerance); !r)
         return refuse(done, r.error().message);
     const QByteArray command = "M491.1 H" + number(tolerance);
@@ -319,6 +328,8 @@ void MachineSession::finishWithReport(const QList<QByteArray> &lines, Done done,
 void MachineSession::setTlo(double tlo, Done done)
 {
     done = recording(std::move(done), RecordingKind::ManualSet);
+    if (auto why = unsupported(false))
+        return refuse(done, *why);
     if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
         return refuse(done, r.error().message);
     run("M493.3 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done,
@@ -345,6 +356,8 @@ void MachineSession::setTlo(double tlo, Done done)
 void MachineSession::setTloAboveZ0(double height, Done done)
 {
     done = recording(std::move(done), RecordingKind::ManualSet);
+    if (auto why = unsupported(false))
+        return refuse(done, *why);
     if (auto r = validateOffset(tr("The height above Z0"), height); !r)
         return refuse(done, r.error().message);
     run("M493.3 H" + number(height), MachineLink::kDefaultTimeoutMs, done,
@@ -364,14 +377,23 @@ void MachineSession::selectTool(int tool, Done done)
         });
 }
 
-void MachineSession::changeTool(int tool, Done done)
+void MachineSession::changeTool(int tool, Done done, std::optional<double> storedTlo)
 {
-    done = recording(std::move(done), RecordingKind::Probe); // M6 probes the new tool
     if (auto r = validateToolNumber(tool); !r)
         return refuse(done, r.error().message);
+    if (storedTlo) {
+        if (auto r = validateOffset(tr("The tool length offset"), *storedTlo); !r)
+            return refuse(done, r.error().message);
+        return changeToStoredTlo(tool, *storedTlo, std::move(done));
+    }
+    if (m_tool == tool && tool >= 0)
+        return probe(std::move(done)); // the firmware ignores M6 to the tool it holds
+    done = recording(std::move(done), RecordingKind::Probe); // M6 probes the new tool
     run("M6 T" + QByteArray::number(tool), MachineLink::kMotionTimeoutMs, done,
         [this, done, tool](const CommandReply &reply) {
             m_tool = tool;
+            if (tool == Limits::kEmptySpindle)
+                return confirmEmptySpindle(done); // nothing to measure
             const bool probed
                 = std::any_of(reply.lines.cbegin(), reply.lines.cend(), [](const QByteArray &l) {
                       const auto p = parseProbeResult(l);
@@ -389,6 +411,40 @@ void MachineSession::changeTool(int tool, Done done)
                 return;
             }
             readOffsets(done, SessionResult {});
+        });
+}
+
+// M6 T H: a manual change that takes the table's TLO; the machine's report must then show it.
+void MachineSession::changeToStoredTlo(int tool, double tlo, Done done)
+{
+    run("M6 T" + QByteArray::number(tool) + " H" + number(tlo), MachineLink::kMotionTimeoutMs, done,
+        [this, done, tool, tlo](const CommandReply &) {
+            m_tool = tool;
+            SessionResult changed;
+            changed.tool = tool;
+            readOffsets(
+                [done, tool, tlo](const SessionResult &r) {
+                    if (r.ok() && (!r.tlo || std::fabs(r.tlo->tlo() - tlo) > 0.0005)) {
+                        SessionResult bad = r;
+                        bad.outcome = SessionResult::Outcome::MachineError;
+                        bad.message
+                            = tr("T%1 is in the spindle, but the machine reports TLO %2 mm where it was "
+                                 "told %3 mm. Probe T%1 before you cut.")
+                                  .arg(tool)
+                                  .arg(r.tlo ? millimetres(r.tlo->tlo(), false) : tr("none"))
+                                  .arg(millimetres(tlo, false));
+                        done(bad);
+                        return;
+                    }
+                    SessionResult restored = r;
+                    restored.tool = tool;
+                    if (r.tlo)
+                        restored.recording = Recording { tool, r.tlo->tlo(), TloSource::Probe,
+                            r.tlo->onlyTlo ? std::nullopt : std::optional<double>(r.tlo->referenceMz),
+                            std::nullopt, QDateTime::currentDateTimeUtc(), RecordingKind::Restore };
+                    done(restored);
+                },
+                changed);
         });
 }
 
@@ -419,7 +475,8 @@ void MachineSession::restoreTlo(int tool, double tlo, Done done)
             done(selected);
             return;
         }
-        // The table already holds this TLO: a restore changes no tool, and goes into the history as a restore.
+        // The table already holds this TLO: a restore changes no tool, and goes into the history as a
+        // restore.
         setTlo(tlo, [done](const SessionResult &r) {
             SessionResult restored = r;
             if (restored.recording)

@@ -57,6 +57,8 @@ public:
 
     [[nodiscard]] MachineLink *link() const { return m_link; }
     [[nodiscard]] std::optional<int> activeTool() const { return m_tool; }
+    // What the machine said it runs when it connected (`version`); Unknown before.
+    [[nodiscard]] const FirmwareInfo &firmware() const { return m_firmware; }
 
     // Opens the link, flushes the controller's buffer, reads the status and, unless halted, the offsets.
     void connectToMachine(Done done);
@@ -67,7 +69,10 @@ public:
     void setTlo(double tlo, Done done);
     void setTloAboveZ0(double height, Done done);
     void selectTool(int tool, Done done);
-    void changeTool(int tool, Done done);
+    // M6 T: the machine changes and measures the tool. With `storedTlo` (a manual change only: the firmware
+    // always measures a rack tool), M6 T H takes that TLO instead of probing. The tool already in the spindle
+    // is measured where it is (M491): the firmware ignores a change to it.
+    void changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt);
     void unlock(Done done);
     // Makes `tool` active with a TLO already known (from the table), without probing.
     void restoreTlo(int tool, double tlo, Done done);
@@ -83,6 +88,15 @@ private:
         const QByteArray &command, int timeoutMs, Done done, std::function<void(const CommandReply &)> next);
     void finishWithReport(const QList<QByteArray> &lines, Done done, const QString &what);
     void readOffsets(Done done, SessionResult result);
+    // The stock firmware's only TLO report: the status's T: field.
+    void readStatusTlo(Done done, SessionResult result);
+    void readVersion(Done done, std::function<void()> next);
+    void readStatusAfterConnect(Done done);
+    void changeToStoredTlo(int tool, double tlo, Done done);
+    // After M6 T-1: the status must show the spindle empty.
+    void confirmEmptySpindle(Done done);
+    // Why an operation this firmware does not have is refused, or nothing.
+    [[nodiscard]] std::optional<QString> unsupported(bool breakTest) const;
     void awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next);
     // Polls until the machine is no longer running a command (a late answer of a timed-out command would
     // otherwise be taken for the next command's), then lets stray output settle. `next` gets false on
@@ -101,6 +115,7 @@ private:
 
     MachineLink *m_link;
     std::optional<int> m_tool;
+    FirmwareInfo m_firmware;
 };
 
 } // namespace Toffee

@@ -83,26 +83,7 @@ void MachineSession::connectToMachine(Done done)
             // half-received.
             run("", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
                 run(";", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
-                    awaitStatus(2000, [this, done](std::optional<MachineStatus> status) {
-                        if (!status) {
-                            SessionResult result;
-                            result.outcome = SessionResult::Outcome::LinkFailure;
-                            result.message
-                                = tr("The machine answered but sent no status report; is this a Carvera?");
-                            done(result);
-                            return;
-                        }
-                        SessionResult result;
-                        result.status = status;
-                        result.tool = status->tool;
-                        if (status->isAlarm()) {
-                            // Reachable while halted, so that it can be unlocked; M493.4 would get "Alarm
-                            // lock".
-                            done(result);
-                            return;
-                        }
-                        readOffsets(done, result);
-                    });
+                    readVersion(done, [this, done] { readStatusAfterConnect(done); });
                 });
             });
         });
@@ -137,6 +118,28 @@ void MachineSession::connectToMachine(Done done)
     guard->setTimerType(Qt::PreciseTimer);
     guard->start(5000);
     m_link->open();
+}
+
+void MachineSession::readStatusAfterConnect(Done done)
+{
+    awaitStatus(2000, [this, done](std::optional<MachineStatus> status) {
+        if (!status) {
+            SessionResult result;
+            result.outcome = SessionResult::Outcome::LinkFailure;
+            result.message = tr("The machine answered but sent no status report; is this a Carvera?");
+            done(result);
+            return;
+        }
+        SessionResult result;
+        result.status = status;
+        result.tool = status->tool;
+        if (status->isAlarm()) {
+            // Reachable while halted, so that it can be unlocked; M493.4 would get "Alarm lock".
+            done(result);
+            return;
+        }
+        readOffsets(done, result);
+    });
 }
 
 MachineSession::Done MachineSession::withDeadline(int limitMs, Done done)

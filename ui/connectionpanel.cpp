@@ -82,12 +82,18 @@ ConnectionTarget ConnectionPanel::target() const
     QString port = m_port->currentData().toString();
     if (m_port->currentText() != m_port->itemText(m_port->currentIndex()) || port.isEmpty())
         port = m_port->currentText().trimmed(); // typed in
-    return { port == kEmulator, port == kEmulator ? QString() : port, m_baud->currentData().toInt() };
+    ConnectionTarget t { port == kEmulator, port == kEmulator ? QString() : port,
+        m_baud->currentData().toInt() };
+    t.emulatorStock = m_emulatorStock;
+    t.emulatorPaced = m_emulatorPaced;
+    return t;
 }
 
 void ConnectionPanel::setTarget(const ConnectionTarget &target)
 {
     const QString port = target.emulator ? kEmulator : target.port;
+    m_emulatorStock = target.emulatorStock;
+    m_emulatorPaced = target.emulatorPaced;
     int index = m_port->findData(port);
     if (index < 0) {
         m_port->addItem(port, port);

@@ -32,6 +32,9 @@ private:
     MachineConnection *m_connection;
     QComboBox *m_port;
     QComboBox *m_baud;
+    // How the built-in emulator was asked for (toffee --emulator-firmware, --emulator): kept for a reconnect.
+    bool m_emulatorStock = false;
+    bool m_emulatorPaced = false;
     QPushButton *m_refresh;
     QPushButton *m_connect;
 };

@@ -26,7 +26,13 @@ namespace {
 struct Options
 {
     QCommandLineOption emulator { u"emulator"_s,
-        QApplication::translate("main", "Connect to the built-in emulator.") };
+        QApplication::translate("main",
+            "Connect to the built-in emulator, which takes a real machine's time for a tool change and a "
+            "probe.") };
+    QCommandLineOption emulatorFirmware { u"emulator-firmware"_s,
+        QApplication::translate(
+            "main", "The firmware the built-in emulator plays: community (default) or stock."),
+        u"FIRMWARE"_s, u"community"_s };
     QCommandLineOption port { u"port"_s, QApplication::translate("main", "Connect to the machine on PORT."),
         u"PORT"_s };
     QCommandLineOption baud { u"baud"_s, QApplication::translate("main", "Baud rate (default 115200)."),
@@ -53,7 +59,8 @@ struct Options
         parser.setApplicationDescription(QApplication::translate("main", "Toffee, the tool offset manager."));
         parser.addHelpOption();
         parser.addVersionOption();
-        parser.addOptions({ emulator, port, baud, selfTest, dark, lang, library, checkJob });
+        parser.addOptions(
+            { emulator, emulatorFirmware, port, baud, selfTest, dark, lang, library, checkJob });
         parser.addPositionalArgument(
             u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
     }
@@ -105,6 +112,12 @@ int main(int argc, char *argv[])
     const Options options;
     options.describe(parser);
     parser.process(app);
+    const QString firmware = parser.value(options.emulatorFirmware);
+    if (firmware != u"community" && firmware != u"stock") {
+        std::fprintf(stderr, "toffee: --emulator-firmware takes community or stock, not \"%s\".\n",
+            qPrintable(firmware));
+        return 2;
+    }
     if (parser.value(options.lang) != u"en")
         Toffee::installTranslations(&app, parser.value(options.lang));
 
@@ -137,8 +150,10 @@ int main(int argc, char *argv[])
     if (!Toffee::offerRecovery(&window) && !parser.positionalArguments().isEmpty())
         window.openFile(parser.positionalArguments().constFirst());
     if (parser.isSet(options.emulator) || parser.isSet(options.port)) {
-        const Toffee::ConnectionTarget target { parser.isSet(options.emulator), parser.value(options.port),
+        Toffee::ConnectionTarget target { parser.isSet(options.emulator), parser.value(options.port),
             parser.value(options.baud).toInt() };
+        target.emulatorStock = firmware == u"stock";
+        target.emulatorPaced = true;
         window.machineDock()->connectionPanel()->setTarget(target);
         window.connection()->connectTo(target);
     }

@@ -118,31 +118,13 @@ std::optional<double> JobPreparer::restorable(int tool)
         noteOnce(tool, tr("T%1 is in the rack: the Carvera measures a rack tool at every change.").arg(tool));
         return std::nullopt;
     }
-    const ToolFacts facts = m_facts.value(tool);
-    QString why;
-    if (!facts.inTable)
-        why = tr("T%1 is not in the table: it is measured at its change.").arg(tool);
-    else if (!facts.measuredTlo)
-        why = tr("T%1 has no stored TLO: it is measured at its change.").arg(tool);
-    else if (facts.source == TloSource::Manual)
-        why = tr("T%1's TLO was set by hand, not measured: it is measured at its change.").arg(tool);
-    else if (facts.broken)
-        why = tr("T%1 failed its last break test: it is measured at its change.").arg(tool);
-    else if (!facts.isFresh(m_options.now, m_options.staleDays))
-        why = tr("T%1's stored TLO is older than the stale limit (%2 d): it is measured at its change.")
-                  .arg(tool)
-                  .arg(m_options.staleDays);
-    else if (m_options.machineReferenceMz && facts.referenceMz
-        && std::fabs(*facts.referenceMz - *m_options.machineReferenceMz) > 0.0005)
-        why = tr("T%1's stored TLO was measured against reference MCS Z %2, but the machine's is %3: it is "
-                 "measured at its change.")
-                  .arg(tool)
-                  .arg(commandNumber(*facts.referenceMz), commandNumber(*m_options.machineReferenceMz));
-    if (!why.isEmpty()) {
-        noteOnce(tool, why);
+    const auto tlo = restorableTlo(
+        tool, m_facts.value(tool), m_options.now, m_options.staleDays, m_options.machineReferenceMz);
+    if (!tlo) {
+        noteOnce(tool, tlo.error().message);
         return std::nullopt;
     }
-    return facts.measuredTlo;
+    return tlo.value();
 }
 
 QString JobPreparer::carveraChange(QByteArrayView line, int tool)

@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "model/library/library.h"
+#include "model/numberformat.h"
 #include "model/tooltable.h"
+#include "model/translate.h"
 
 namespace Toffee {
 
@@ -13,6 +15,35 @@ bool ToolFacts::isFresh(const QDateTime &now, int staleDays) const
     // A measurement from the future (a clock set wrong) is not fresh: nothing says when it was taken.
     const qint64 age = measuredAt.isValid() ? measuredAt.secsTo(now) : -1;
     return age >= -kClockSkewSeconds && age <= qint64(staleDays) * 24 * 3600;
+}
+
+Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &now, int staleDays,
+    std::optional<double> machineReferenceMz)
+{
+    if (!facts.inTable)
+        return Error { tr("T%1 is not in the table: it is measured at its change.").arg(tool) };
+    if (!facts.measuredTlo)
+        return Error { tr("T%1 has no stored TLO: it is measured at its change.").arg(tool) };
+    if (facts.source == TloSource::Manual)
+        return Error {
+            tr("T%1's TLO was set by hand, not measured: it is measured at its change.").arg(tool)
+        };
+    if (facts.broken)
+        return Error { tr("T%1 failed its last break test: it is measured at its change.").arg(tool) };
+    if (!facts.isFresh(now, staleDays))
+        return Error { tr(
+            "T%1's stored TLO is older than the stale limit (%2 d): it is measured at its change.")
+                           .arg(tool)
+                           .arg(staleDays) };
+    if (machineReferenceMz && facts.referenceMz
+        && std::fabs(*facts.referenceMz - *machineReferenceMz) > 0.0005)
+        return Error { tr(
+            "T%1's stored TLO was measured against reference MCS Z %2, but the machine's is %3: it "
+            "is measured at its change.")
+                           .arg(tool)
+                           .arg(formatNumber(*facts.referenceMz, NumberFormat::command()),
+                               formatNumber(*machineReferenceMz, NumberFormat::command())) };
+    return *facts.measuredTlo;
 }
 
 QHash<int, ToolFacts> factsFromTable(const ToolTable &table)

@@ -38,6 +38,12 @@ struct ToolFacts
     static constexpr qint64 kClockSkewSeconds = 300;
 };
 
+// The TLO a change to `tool` may take instead of a probe: stored, measured (not set by hand), not failed in a
+// break test, fresh, and measured against the machine's reference when both are known. Else why not, in words
+// ("… it is measured at its change.").
+[[nodiscard]] Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &now,
+    int staleDays, std::optional<double> machineReferenceMz);
+
 // Each tool of the table.
 [[nodiscard]] QHash<int, ToolFacts> factsFromTable(const ToolTable &table);
 // What the library holds for `machine`, as the job check asks for it; nothing without a library. The library

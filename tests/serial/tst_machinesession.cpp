@@ -22,7 +22,9 @@ private Q_SLOTS:
         SessionHarness h;
         const SessionResult r = h.connect();
         QVERIFY2(r.ok(), qPrintable(r.message));
-        QCOMPARE(h.sent.mid(0, 3), (QList<QByteArray> { "", ";", "M493.4" }));
+        QCOMPARE(h.sent.mid(0, 4), (QList<QByteArray> { "", ";", "version", "M493.4" }));
+        QCOMPARE(h.session.firmware().kind, FirmwareInfo::Kind::Community);
+        QCOMPARE(h.session.firmware().version, u"2.1.0c"_s);
         QVERIFY(r.status.has_value());
         QCOMPARE(r.tool.value_or(-2), 1);
         QVERIFY(r.tlo.has_value());

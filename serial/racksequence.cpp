@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "serial/racksequence.h"
+
+#include <cmath>
+
+#include <QPointer>
+#include <QStringList>
+
+#include "model/numberformat.h"
+#include "model/tooltable.h"
+#include "serial/machineconnection.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString toolList(const QList<int> &tools)
+{
+    QStringList names;
+    for (int t : tools)
+        names << u"T"_s + QString::number(t);
+    return names.join(u", "_s);
+}
+
+} // namespace
+
+RackSequence::Plan RackSequence::plan(
+    Mode mode, const QList<int> &rack, const ToolTable &table, double tolerance)
+{
+    Plan p;
+    p.mode = mode;
+    p.tolerance = tolerance;
+    for (int tool : rack) {
+        RackStep step;
+        step.tool = tool;
+        if (const Tool *t = table.find(tool)) {
+            step.storedTlo = t->measuredTlo;
+            step.storedReferenceMz = t->referenceMz;
+        }
+        p.steps.append(step);
+    }
+    return p;
+}
+
+std::optional<QString> RackSequence::refusal(const Plan &plan, const FirmwareInfo &firmware)
+{
+    if (plan.steps.isEmpty())
+        return tr("The rack holds no tools: say which tools it holds (1-6 on a C1) first.");
+    if (plan.mode == Mode::Measure)
+        return std::nullopt;
+    if (!firmware.hasBreakTest()) {
+        return firmware.kind == FirmwareInfo::Kind::Stock
+            ? tr("The machine runs %1, whose M491.1 only measures a tool again without comparing: a rack "
+                 "check there would pass a broken tool. Install the community firmware to check the rack.")
+                  .arg(firmware.description())
+            : tr("The machine did not say which firmware it runs, so Toffee cannot tell whether its M491.1 "
+                 "compares a tool with its TLO. The rack was not checked.");
+    }
+    if (auto r = MachineSession::validateTolerance(plan.tolerance); !r)
+        return r.error().message;
+    QList<int> unmeasured;
+    for (const RackStep &step : plan.steps) {
+        if (!step.storedTlo)
+            unmeasured.append(step.tool);
+    }
+    if (!unmeasured.isEmpty())
+        return tr("%1 have no stored TLO to compare with. Measure them first (Measure Rack); nothing moved.")
+            .arg(toolList(unmeasured));
+    return std::nullopt;
+}
+
+RackSequence::RackSequence(MachineConnection *connection, Plan plan, QObject *parent)
+    : QObject(parent)
+    , m_connection(connection)
+    , m_plan(std::move(plan))
+{ }
+
+bool RackSequence::start()
+{
+    m_outcome = SessionResult {};
+    if (auto why = refusal(m_plan, m_connection->firmware())) {
+        m_outcome.outcome = SessionResult::Outcome::Refused;
+        m_outcome.message = *why;
+        return false;
+    }
+    const QString what = m_plan.mode == Mode::Measure ? tr("Measuring the rack…") : tr("Checking the rack…");
+    if (!m_connection->canOperate() || !m_connection->beginOperation(what)) {
+        m_outcome.outcome = SessionResult::Outcome::MachineError;
+        m_outcome.message = m_connection->isHalted() ? m_connection->haltedMessage()
+                                                     : tr("The machine is busy or not connected.");
+        return false;
+    }
+    m_running = true;
+    m_current = -1;
+    next();
+    return true;
+}
+
+void RackSequence::cancel()
+{
+    m_cancelled = m_running;
+}
+
+QString RackSequence::progressText(int index) const
+{
+    const int tool = m_plan.steps.at(index).tool;
+    const int of = int(m_plan.steps.size());
+    return m_plan.mode == Mode::Measure ? tr("Measuring T%1 (%2 of %3)…").arg(tool).arg(index + 1).arg(of)
+                                        : tr("Checking T%1 (%2 of %3)…").arg(tool).arg(index + 1).arg(of);
+}
+
+void RackSequence::next()
+{
+    ++m_current;
+    if (m_cancelled) {
+        SessionResult stopped;
+        stopped.message = tr("Cancelled: the rack was stopped after T%1, which is in the spindle.")
+                              .arg(m_plan.steps.at(m_current - 1).tool);
+        return finish(stopped);
+    }
+    if (m_current == m_plan.steps.size())
+        return m_plan.mode == Mode::Check ? putBack() : finish(SessionResult {});
+    m_plan.steps[m_current].state = RackStep::State::Running;
+    m_connection->updateOperation(progressText(m_current));
+    Q_EMIT stepChanged(m_current);
+    if (m_plan.mode == Mode::Measure)
+        measure(m_current);
+    else
+        check(m_current);
+}
+
+void RackSequence::measure(int index)
+{
+    QPointer<RackSequence> self(this);
+    m_connection->session()->changeTool(m_plan.steps.at(index).tool, [self, index](const SessionResult &r) {
+        if (!self)
+            return;
+        self->m_connection->announce(r);
+        if (!r.ok() || !r.recording)
+            return self->settle(index, RackStep::State::Failed, r);
+        self->m_plan.steps[index].measuredTlo = r.recording->tlo;
+        Q_EMIT self->recorded(r);
+        self->settle(index, RackStep::State::Measured, r);
+    });
+}
+
+void RackSequence::check(int index)
+{
+    const int tool = m_plan.steps.at(index).tool;
+    const auto &offsets = m_connection->lastOffsets();
+    const bool hasReference = offsets && (offsets->onlyTlo || offsets->referenceMz != 0.0);
+    if (m_connection->activeTool() == tool && hasReference)
+        return testInSpindle(index);
+    QPointer<RackSequence> self(this);
+    // The change measures the tool too (and a tool already in the spindle is measured where it is, so that a
+    // machine just switched on has its reference again); that measurement is not stored: a broken tool's
+    // would replace the TLO it is about to be compared with.
+    m_connection->session()->changeTool(tool, [self, index](const SessionResult &r) {
+        if (!self)
+            return;
+        self->m_connection->announce(r);
+        if (!r.ok())
+            return self->settle(index, RackStep::State::Failed, r);
+        self->testInSpindle(index);
+    });
+}
+
+void RackSequence::testInSpindle(int index)
+{
+    const RackStep &step = m_plan.steps.at(index);
+    const auto machineReference = m_connection->lastOffsets();
+    if (step.storedReferenceMz && machineReference && !machineReference->onlyTlo
+        && std::fabs(*step.storedReferenceMz - machineReference->referenceMz) > 0.0005) {
+        SessionResult refused;
+        refused.outcome = SessionResult::Outcome::MachineError;
+        refused.message = tr("T%1's stored TLO was measured against reference MCS Z %2, but the machine's "
+                             "reference is %3 now: the comparison would mean nothing. Measure the rack again "
+                             "(Measure Rack).")
+                              .arg(step.tool)
+                              .arg(millimetres(*step.storedReferenceMz, false))
+                              .arg(millimetres(machineReference->referenceMz, false));
+        return settle(index, RackStep::State::Failed, refused);
+    }
+    QPointer<RackSequence> self(this);
+    const double tolerance = m_plan.tolerance;
+    MachineSession *session = m_connection->session();
+    // The machine keeps one TLO, the spindle tool's: the stored one goes in, and M491.1 compares with it.
+    session->setTlo(*step.storedTlo, [self, index, tolerance, session](const SessionResult &set) {
+        if (!self)
+            return;
+        self->m_connection->announce(set);
+        if (!set.ok())
+            return self->settle(index, RackStep::State::Failed, set);
+        session->breakTest(tolerance, [self, index](const SessionResult &r) {
+            if (!self)
+                return;
+            self->m_connection->announce(r);
+            if (r.breakTest)
+                self->m_plan.steps[index].measuredTlo = r.breakTest->newTlo;
+            if (r.recording)
+                Q_EMIT self->recorded(r);
+            const bool broken = r.outcome == SessionResult::Outcome::ToolBroken;
+            self->settle(index,
+                r.ok()       ? RackStep::State::Passed
+                    : broken ? RackStep::State::Broken
+                             : RackStep::State::Failed,
+                r);
+        });
+    });
+}
+
+void RackSequence::putBack()
+{
+    m_connection->updateOperation(tr("Putting T%1 back in the rack…").arg(m_plan.steps.last().tool));
+    QPointer<RackSequence> self(this);
+    m_connection->session()->changeTool(Limits::kEmptySpindle, [self](const SessionResult &r) {
+        if (!self)
+            return;
+        self->m_connection->announce(r);
+        if (!r.ok()) {
+            SessionResult failed = r;
+            failed.message
+                = tr("Every tool passed, but the last one could not be put back: %1").arg(r.message);
+            return self->finish(failed);
+        }
+        self->finish(SessionResult {});
+    });
+}
+
+void RackSequence::settle(int index, RackStep::State state, const SessionResult &result)
+{
+    RackStep &step = m_plan.steps[index];
+    step.state = state;
+    if (!result.ok())
+        step.message = result.message;
+    Q_EMIT stepChanged(index);
+    if (!result.ok())
+        return finish(result);
+    next();
+}
+
+void RackSequence::finish(const SessionResult &result)
+{
+    for (qsizetype i = 0; i < m_plan.steps.size(); ++i) {
+        if (m_plan.steps.at(i).state == RackStep::State::Waiting) {
+            m_plan.steps[i].state = RackStep::State::NotRun;
+            Q_EMIT stepChanged(int(i));
+        }
+    }
+    m_outcome = result;
+    m_running = false;
+    m_connection->endOperation(result);
+    Q_EMIT finished(m_outcome);
+}
+
+} // namespace Toffee
