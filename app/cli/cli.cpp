@@ -37,13 +37,23 @@ The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMM
   set-tlo --z V              set the TLO directly (M493.3 Z)
   set-tlo --above-z0 H       set the TLO from the current position, the tip H above work Z0 (M493.3 H)
   select-tool N              make tool N active without a change (M493.2 T)
-  change-tool N              change to tool N and measure it (M6 T); the machine moves
+  change-tool N [--use-stored-tlo [--stale-days D]]
+                             change to tool N and measure it (M6 T); the machine moves. With
+                             --use-stored-tlo and --table, a manual change (N not in --rack) takes N's fresh
+                             measured TLO instead of a probe (M6 T H)
+  rack --table FILE          the rack (--rack, default 1-6): each slot's tool with its stored TLO and its age,
+                             the tool in the spindle, and the firmware the machine runs
+  measure-rack --table FILE  change to each rack tool in turn and store its TLO (first setup); the machine moves
+  check-rack --table FILE [--tolerance H]
+                             change to each rack tool, give it its stored TLO and break-test it (M6 T,
+                             M493.3 Z, M491.1 H), then put the last one back (M6 T-1); a broken tool stops it
+                             (the machine halts; exit 3, the tool named). The community firmware only
   restore N --table FILE     set the TLO the table holds for tool N on the machine (M493.2 T, M493.3 Z),
                              when it was measured against the machine's reference
   unlock                     clear a halt ($X)
   link-test --count N        N round trips; median, p99 and max in milliseconds
-  probe, break-test, set-tlo, change-tool and restore record every measurement in the history library
-  (--machine NAME, default Carvera), and warn when a probe is off its tool's wear trend
+  probe, break-test, set-tlo, change-tool, restore, measure-rack and check-rack record every measurement in the
+  history library (--machine NAME, default Carvera), and warn when a probe is off its tool's wear trend
 
 Jobs: toffee-cli job check PROGRAM [--table FILE] [--machine NAME] [--dialect D] [--z-floor Z]
                              [--stale-days N] [--rack LIST]

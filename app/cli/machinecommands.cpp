@@ -25,7 +25,8 @@ namespace Toffee::Cli {
 namespace {
 
 const QStringList kMachineCommands = { u"status"_s, u"report"_s, u"probe"_s, u"break-test"_s, u"set-tlo"_s,
-    u"select-tool"_s, u"change-tool"_s, u"restore"_s, u"unlock"_s, u"link-test"_s };
+    u"select-tool"_s, u"change-tool"_s, u"restore"_s, u"unlock"_s, u"link-test"_s, u"rack"_s,
+    u"measure-rack"_s, u"check-rack"_s };
 
 ExitCode exitCodeFor(SessionResult::Outcome outcome)
 {
@@ -57,16 +58,23 @@ QJsonArray axes(const std::array<double, 3> &a)
 void printTlo(Invocation &call, const SessionResult &r, const QString &trendWarning = {})
 {
     const int tool = r.tool.value_or(-1);
+    // The stock firmware reports the TLO alone, not the MCS Zs it comes from.
+    const bool mcs = !r.tlo->onlyTlo;
     if (call.json) {
-        QJsonObject o { { u"tool"_s, tool }, { u"reference_mz"_s, r.tlo->referenceMz },
-            { u"current_mz"_s, r.tlo->currentMz }, { u"tlo"_s, r.tlo->tlo() } };
+        QJsonObject o { { u"tool"_s, tool },
+            { u"reference_mz"_s, mcs ? QJsonValue(r.tlo->referenceMz) : QJsonValue() },
+            { u"current_mz"_s, mcs ? QJsonValue(r.tlo->currentMz) : QJsonValue() },
+            { u"tlo"_s, r.tlo->tlo() } };
         if (!trendWarning.isEmpty())
             o.insert(u"trend_warning"_s, trendWarning);
         printJson(call, o);
         return;
     }
-    call.out << "T" << tool << ": TLO " << mm(r.tlo->tlo()) << " mm (current tool MCS Z "
-             << mm(r.tlo->currentMz) << ", reference MCS Z " << mm(r.tlo->referenceMz) << ")" << Qt::endl;
+    call.out << "T" << tool << ": TLO " << mm(r.tlo->tlo()) << " mm";
+    if (mcs)
+        call.out << " (current tool MCS Z " << mm(r.tlo->currentMz) << ", reference MCS Z "
+                 << mm(r.tlo->referenceMz) << ")";
+    call.out << Qt::endl;
 }
 
 void printStatus(Invocation &call, const MachineStatus &s)
@@ -168,7 +176,8 @@ private:
     // reference.
     bool restore();
     void roundTrip();
-    void finishWith(const SessionResult &r);
+    // `reported`: the command printed the failure itself (a rack's summary holds it).
+    void finishWith(const SessionResult &r, bool reported = false);
     [[nodiscard]] bool record(const SessionResult &r);
     void recordHistory(const SessionResult &r);
     // A result printed by `print` when the operation got that far (a broken tool's verdict included).
@@ -188,11 +197,11 @@ private:
     bool m_recordFailed = false; // then the exit code says so (unless the tool is broken, which says more)
 };
 
-void MachineRun::finishWith(const SessionResult &r)
+void MachineRun::finishWith(const SessionResult &r, bool reported)
 {
     if (!m_recordFailed || r.outcome == SessionResult::Outcome::ToolBroken)
         m_exitCode = exitCodeFor(r.outcome);
-    if (!r.ok() && !(r.outcome == SessionResult::Outcome::ToolBroken && r.breakTest))
+    if (!reported && !r.ok() && !(r.outcome == SessionResult::Outcome::ToolBroken && r.breakTest))
         fail(m_call, r.message, ExitCode(m_exitCode));
     m_loop.quit();
 }
@@ -280,7 +289,11 @@ void MachineRun::operate()
     else if (command == u"probe")
         started = c.probe(recorded());
     else if (command == u"change-tool")
-        started = c.changeTool(m_options.tool, recorded());
+        started = c.changeTool(m_options.tool, recorded(), storedTloForChange(m_call, m_options, c));
+    else if (isRackCommand(command))
+        started = startRackCommand(
+            m_call, m_options, c, [this](const SessionResult &r) { return record(r); },
+            [this](const SessionResult &r) { finishWith(r, true); });
     else if (command == u"set-tlo")
         started = m_options.z ? c.setTlo(*m_options.z, recorded())
                               : c.setTloAboveZ0(*m_options.aboveZ0, recorded());

@@ -7,6 +7,7 @@
 #include <QFileInfo>
 
 #include "model/formats/tablefile.h"
+#include "model/job/jobchecker.h"
 #include "model/textparsing.h"
 #include "serial/machinesession.h"
 #include "serial/serialporttransport.h"
@@ -74,7 +75,7 @@ Result<void> readTool(const Invocation &call, MachineOptions &o)
 Result<void> readCommandOptions(const Invocation &call, MachineOptions &o)
 {
     o.tolerance = MachineSession::kDefaultTolerance;
-    if (call.command == u"break-test" && call.has(u"tolerance"_s)) {
+    if ((call.command == u"break-test" || call.command == u"check-rack") && call.has(u"tolerance"_s)) {
         const auto t = decimalOption(call, u"tolerance"_s);
         if (!t)
             return Error { u"--tolerance must be a number of millimetres, such as 0.05."_s };
@@ -121,6 +122,30 @@ Result<void> openTable(const Invocation &call, MachineOptions &o)
     return {};
 }
 
+// The rack commands and a change that takes a stored TLO read the table; --rack says what the rack holds.
+Result<void> readRack(const Invocation &call, MachineOptions &o)
+{
+    o.rack = carveraRack();
+    if (call.has(u"rack"_s)) {
+        auto rack = parseRack(call.option(u"rack"_s));
+        if (!rack)
+            return rack.error();
+        o.rack = rack.value();
+    }
+    o.useStoredTlo = call.has(u"use-stored-tlo"_s);
+    if (call.has(u"stale-days"_s)) {
+        const auto days = parseInteger(call.option(u"stale-days"_s).toUtf8());
+        if (!days || *days < 0 || *days > 3650)
+            return Error { u"--stale-days must be a whole number of days from 0 to 3650."_s };
+        o.staleDays = int(*days);
+    }
+    const bool needsTable = isRackCommand(call.command) || (call.command == u"change-tool" && o.useStoredTlo);
+    if (needsTable && !o.table)
+        return Error { u"%1 reads the stored TLOs from the table: name it with --table FILE."_s.arg(
+            call.command == u"change-tool" ? u"change-tool --use-stored-tlo"_s : call.command) };
+    return {};
+}
+
 // restore N sets the TLO the table holds for N: the table must have one.
 Result<void> checkRestore(const Invocation &call, MachineOptions &o)
 {
@@ -138,8 +163,8 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
 {
     // Only what records needs the library: status, report, select-tool, unlock and link-test work without
     // one.
-    static const QStringList kRecording
-        = { u"probe"_s, u"break-test"_s, u"set-tlo"_s, u"change-tool"_s, u"restore"_s };
+    static const QStringList kRecording = { u"probe"_s, u"break-test"_s, u"set-tlo"_s, u"change-tool"_s,
+        u"restore"_s, u"measure-rack"_s, u"check-rack"_s };
     if (!kRecording.contains(call.command))
         return {};
     o.machine = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
@@ -203,7 +228,7 @@ Result<MachineOptions> readMachineOptions(const Invocation &call)
 {
     MachineOptions o;
     for (auto read : { countArguments, choosePort, readTool, readTarget, readCommandOptions, openTable,
-             checkRestore, openHistory }) {
+             readRack, checkRestore, openHistory }) {
         if (auto r = read(call, o); !r)
             return r.error();
     }

@@ -28,7 +28,20 @@ struct MachineOptions
     // machine moves; and the machine's name in it (--machine).
     std::unique_ptr<Library> library;
     QString machine;
+    QList<int> rack; // --rack: the tools the machine's rack holds (1-6, a C1's, by default)
+    bool useStoredTlo = false; // change-tool: a manual change takes the tool's fresh stored TLO
+    int staleDays = 7; // --stale-days: what "fresh" means
 };
+
+// The rack commands (rack, measure-rack, check-rack) on a connected machine. `record` keeps a measurement or
+// a verdict as every machine command does (false when it could not, which stops the sequence); `finish` ends
+// the run with the whole result. False when the command did not start.
+bool startRackCommand(Invocation &call, MachineOptions &options, MachineConnection &connection,
+    std::function<bool(const SessionResult &)> record, std::function<void(const SessionResult &)> finish);
+// change-tool --use-stored-tlo: the TLO the change takes, or nothing (a probe) with the reason on stderr.
+[[nodiscard]] std::optional<double> storedTloForChange(
+    Invocation &call, const MachineOptions &options, const MachineConnection &connection);
+[[nodiscard]] bool isRackCommand(const QString &command);
 
 // The library --library names (or the standard one), opened; nothing with --no-history.
 [[nodiscard]] Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call);

@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The rack from toffee-cli, through a real QSerialPort, against toffee-emulator on a pseudo-terminal: measure
+// it, check it with one tool broken, load a manual tool with its stored TLO, and the stock firmware's limits.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "model/library/library.h"
+#include "tests/support/processes.h"
+
+using namespace Qt::StringLiterals;
+using Toffee::Test::cli;
+using Toffee::Test::Emulator;
+using Toffee::Test::Run;
+
+namespace {
+
+QJsonObject json(const Run &run)
+{
+    return QJsonDocument::fromJson(run.out).object();
+}
+
+QStringList states(const QJsonObject &o)
+{
+    QStringList out;
+    for (const QJsonValue &t : o.value(u"tools"_s).toArray())
+        out << t.toObject().value(u"state"_s).toString();
+    return out;
+}
+
+} // namespace
+
+class TestRackEndToEnd : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    QString tty() const { return m_dir.filePath(u"ttyCARVERA"_s); }
+    QString library() const { return m_dir.filePath(u"library.sqlite"_s); }
+    QString table() const { return m_dir.filePath(u"rack.json"_s); }
+    Run machine(const QStringList &arguments, bool asJson = true)
+    {
+        QStringList args { u"--library"_s, library(), u"--port"_s, tty(), u"--table"_s, table() };
+        if (asJson)
+            args.prepend(u"--json"_s);
+        return cli(args + arguments);
+    }
+    int historyCount(const QString &kind)
+    {
+        const Run run = cli({ u"--json"_s, u"--library"_s, library(), u"history"_s });
+        int n = 0;
+        for (const QJsonValue &e : json(run).value(u"events"_s).toArray())
+            n += e.toObject().value(u"kind"_s).toString() == kind;
+        return n;
+    }
+
+private Q_SLOTS:
+    void init()
+    {
+        QFile::remove(table());
+        QFile::remove(library());
+        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table()));
+        QFile(table()).setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+    }
+
+    void checksSixToolsAndNamesTheBrokenOne()
+    {
+        {
+            Emulator emulator(tty(), {});
+            QVERIFY(emulator.started());
+            Run run = machine({ u"measure-rack"_s });
+            QVERIFY2(run.exitCode == 0, run.err.constData());
+            QCOMPARE(states(json(run)), QStringList(6, u"measured"_s));
+            run = machine({ u"rack"_s });
+            QCOMPARE(run.exitCode, 0);
+            const QJsonArray rackSlots = json(run).value(u"slots"_s).toArray();
+            QCOMPARE(rackSlots.size(), 6);
+            QCOMPARE(
+                QString::number(rackSlots.at(1).toObject().value(u"tlo"_s).toDouble(), 'f', 3), u"-33.388"_s);
+            QCOMPARE(json(run).value(u"spindle"_s).toInt(), 6);
+            QCOMPARE(json(run)[u"firmware"_s][u"kind"_s].toString(), u"community"_s);
+        }
+        // The next morning: T3 chipped overnight.
+        Emulator emulator(tty(), { u"--break-tool"_s, u"3=0.5"_s });
+        QVERIFY(emulator.started());
+        Run run = machine({ u"check-rack"_s, u"--tolerance"_s, u"0.1"_s });
+        QCOMPARE(run.exitCode, 3);
+        const QJsonObject o = json(run);
+        QCOMPARE(states(o),
+            (QStringList {
+                u"passed"_s, u"passed"_s, u"broken"_s, u"not_run"_s, u"not_run"_s, u"not_run"_s }));
+        QCOMPARE(o.value(u"broken"_s).toArray(), QJsonArray { 3 });
+        QVERIFY2(
+            o.value(u"error"_s).toString().contains(u"T3"_s), qPrintable(o.value(u"error"_s).toString()));
+        // The table marks T3, and keeps its TLO as measured; the history has six probes and three verdicts.
+        const Run shown = cli({ u"--json"_s, u"show"_s, table() });
+        for (const QJsonValue &t : json(shown).value(u"tools"_s).toArray()) {
+            if (t.toObject().value(u"number"_s).toInt() == 3)
+                QVERIFY(t.toObject().value(u"break_test_failed"_s).toBool());
+        }
+        QCOMPARE(historyCount(u"probe"_s), 6);
+        QCOMPARE(historyCount(u"break_test"_s), 3);
+        // The machine halted, as the firmware does; in words, the broken tool is named.
+        QCOMPARE(json(machine({ u"status"_s })).value(u"halt_reason"_s).toInt(), 4);
+        run = machine({ u"unlock"_s });
+        QCOMPARE(run.exitCode, 0);
+        run = machine({ u"check-rack"_s }, false);
+        QCOMPARE(run.exitCode, 3);
+        QVERIFY2(run.out.contains("T3: broken"), run.out.constData());
+        QVERIFY2(run.err.contains("T3 may be broken"), run.err.constData());
+    }
+
+    void aManualChangeTakesTheStoredTlo()
+    {
+        Emulator emulator(tty(), {});
+        QVERIFY(emulator.started());
+        QCOMPARE(machine({ u"measure-rack"_s }).exitCode, 0);
+        QCOMPARE(machine({ u"change-tool"_s, u"8"_s }).exitCode, 0); // measured: a TLO for T8 in the table
+        QCOMPARE(machine({ u"change-tool"_s, u"2"_s }).exitCode, 0);
+        const int probes = historyCount(u"probe"_s);
+        Run run = machine({ u"change-tool"_s, u"8"_s, u"--use-stored-tlo"_s });
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(historyCount(u"probe"_s), probes); // no probe
+        QCOMPARE(historyCount(u"restore"_s), 1);
+        // A rack tool is always measured by the machine: the option says so, and it probes.
+        run = machine({ u"change-tool"_s, u"3"_s, u"--use-stored-tlo"_s });
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(run.err.contains("T3 is in the rack"));
+        QCOMPARE(historyCount(u"probe"_s), probes + 1);
+    }
+
+    void theStockFirmwareHasNoRackCheck()
+    {
+        Emulator emulator(tty(), { u"--firmware"_s, u"stock"_s });
+        QVERIFY(emulator.started());
+        Run run = machine({ u"measure-rack"_s });
+        QCOMPARE(run.exitCode, 0);
+        run = machine({ u"check-rack"_s });
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(json(run).value(u"error"_s).toString().contains(u"stock firmware"_s));
+        run = machine({ u"rack"_s });
+        QCOMPARE(json(run)[u"firmware"_s][u"break_test"_s].toBool(), false);
+        run = machine({ u"break-test"_s });
+        QCOMPARE(run.exitCode, 2);
+        run = machine({ u"set-tlo"_s, u"--z"_s, u"-3"_s });
+        QCOMPARE(run.exitCode, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRackEndToEnd)
+#include "tst_rackendtoend.moc"
