@@ -79,11 +79,12 @@ void showRack(Invocation &call, const MachineOptions &o, const MachineConnection
         const bool broken = t && t->breakTestFailed;
         const QDateTime at = t && tlo ? t->measuredAt : QDateTime();
         if (call.json) {
-            rackSlots.append(QJsonObject { { u"slot"_s, tool }, { u"tool"_s, tool }, { u"tlo"_s, number(tlo) },
-                { u"measured_at"_s, at.isValid() ? QJsonValue(at.toString(Qt::ISODate)) : QJsonValue() },
-                { u"reference_mz"_s, number(t ? t->referenceMz : std::nullopt) },
-                { u"set_by_hand"_s, byHand }, { u"broken"_s, broken },
-                { u"in_spindle"_s, spindle == tool } });
+            rackSlots.append(
+                QJsonObject { { u"slot"_s, tool }, { u"tool"_s, tool }, { u"tlo"_s, number(tlo) },
+                    { u"measured_at"_s, at.isValid() ? QJsonValue(at.toString(Qt::ISODate)) : QJsonValue() },
+                    { u"reference_mz"_s, number(t ? t->referenceMz : std::nullopt) },
+                    { u"set_by_hand"_s, byHand }, { u"broken"_s, broken },
+                    { u"in_spindle"_s, spindle == tool } });
             continue;
         }
         call.out << "  slot " << tool << "  T" << tool << "  "
@@ -99,7 +100,7 @@ void showRack(Invocation &call, const MachineOptions &o, const MachineConnection
                 { u"spindle"_s, spindle ? QJsonValue(*spindle) : QJsonValue() }, { u"slots"_s, rackSlots } });
 }
 
-void printStep(Invocation &call, const RackStep &step)
+void printStep(Invocation &call, const RackStep &step, RackSequence::Mode mode)
 {
     if (call.json || step.state == RackStep::State::Running || step.state == RackStep::State::Waiting)
         return;
@@ -107,7 +108,8 @@ void printStep(Invocation &call, const RackStep &step)
     if (step.measuredTlo)
         call.out << ", TLO " << mm(*step.measuredTlo);
     if (step.storedTlo && step.state != RackStep::State::NotRun)
-        call.out << " (stored " << mm(*step.storedTlo) << ")";
+        call.out << (mode == RackSequence::Mode::Check ? " (stored " : " (was ") << mm(*step.storedTlo)
+                 << ")";
     call.out << Qt::endl;
 }
 
@@ -156,7 +158,7 @@ bool startRackCommand(Invocation &call, MachineOptions &options, MachineConnecti
             sequence->cancel(); // a measurement that cannot be kept: no more are taken
     });
     QObject::connect(sequence, &RackSequence::stepChanged, sequence,
-        [&call, sequence](int index) { printStep(call, sequence->steps().at(index)); });
+        [&call, sequence](int index) { printStep(call, sequence->steps().at(index), sequence->mode()); });
     QObject::connect(
         sequence, &RackSequence::finished, sequence, [&call, sequence, finish](const SessionResult &r) {
             printSummary(call, *sequence, r);
