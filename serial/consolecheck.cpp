@@ -155,17 +155,21 @@ std::optional<ConsoleCheck> ConsoleCheck::checkToolChange(const GCodeBlock &bloc
             : tr("M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.")
                   .arg(int(t->value)));
     c.tool = int(t->value);
+    c.measures = !select && !block.find('H') && *c.tool >= 0;
     return c;
 }
 
 // Probing, the spindle, and any axis word: a question first.
 ConsoleCheck ConsoleCheck::checkMotion(const GCodeBlock &block, const QString &trimmed)
 {
-    if (block.has('M', 491) || block.has('M', 491.2))
-        return confirm(
-            tr("%1 probes the tool: the machine moves to the tool setter. Use Machine ▸ Probe to have "
-               "the result recorded in the table.")
-                .arg(trimmed));
+    if (block.has('M', 491) || block.has('M', 491.2)) {
+        ConsoleCheck c
+            = confirm(tr("%1 probes the tool: the machine moves to the tool setter, and the TLO it "
+                         "measures is recorded in the table.")
+                          .arg(trimmed));
+        c.measures = block.has('M', 491);
+        return c;
+    }
     if (block.has('M', 3) || block.has('M', 4))
         return confirm(tr("%1 starts the spindle.").arg(trimmed));
     const auto &ws = block.words;

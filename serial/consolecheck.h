@@ -25,6 +25,9 @@ public:
 
     // Whether the line is M493.3, which sets the TLO: the console records what the machine then holds.
     bool setsTlo = false;
+    // Whether the line measures the tool on the setter (M491, or M6 without H): the console records the
+    // probe, as the panels do.
+    bool measures = false;
     // The tool an M6 or M493.2 names.
     std::optional<int> tool;
 

@@ -265,10 +265,17 @@ bool MachineConnection::sendLine(
             if (auto tlo = parseTloReport(l))
                 result.tlo = tlo;
         }
-        result.tool = activeTool();
-        endOperation(result);
-        if (done)
-            done(reply, result);
+        auto finish = [this, done, reply](SessionResult result) {
+            result.tool = activeTool();
+            endOperation(result);
+            if (done)
+                done(reply, result);
+        };
+        if (!reply.ok() || !m_session)
+            return finish(result);
+        // A typed M6 or M493.2 changed the tool: the operation ends when a fresh status says which tool is in
+        // the spindle, so that a probe started right after cannot be recorded for the tool before.
+        m_session->status([finish, result](const SessionResult &) { finish(result); });
     });
     return true;
 }

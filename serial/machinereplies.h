@@ -34,6 +34,15 @@ struct TloReading
     // Makera's stock firmware prints no M493.4 report: its TLO comes from the status report's T: field alone,
     // and then currentMz holds the TLO, referenceMz is 0 and neither MCS Z is known.
     bool onlyTlo = false;
+    // The MCS Zs, when the machine reported them.
+    [[nodiscard]] std::optional<double> knownReferenceMz() const
+    {
+        return onlyTlo ? std::nullopt : std::optional<double>(referenceMz);
+    }
+    [[nodiscard]] std::optional<double> knownCurrentMz() const
+    {
+        return onlyTlo ? std::nullopt : std::optional<double>(currentMz);
+    }
     // At the machine's resolution (it reports 0.001 mm): -105.688 - -72.3 is -33.388, not
     // -33.388000000000005.
     [[nodiscard]] double tlo() const { return std::round((currentMz - referenceMz) * 1000.0) / 1000.0; }

@@ -200,11 +200,8 @@ MachineSession::Done MachineSession::recording(Done done, RecordingKind kind)
             return done(r);
         SessionResult recorded = r;
         const TloSource source = kind == RecordingKind::Probe ? TloSource::Probe : TloSource::Manual;
-        const auto mcs = [&r](double z) {
-            return r.tlo->onlyTlo ? std::nullopt : std::optional<double>(z);
-        };
-        recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, mcs(r.tlo->referenceMz), std::nullopt,
-            QDateTime::currentDateTimeUtc(), kind, mcs(r.tlo->currentMz) };
+        recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, r.tlo->knownReferenceMz(),
+            std::nullopt, QDateTime::currentDateTimeUtc(), kind, r.tlo->knownCurrentMz() };
         done(recorded);
     };
 }
@@ -439,9 +436,9 @@ void MachineSession::changeToStoredTlo(int tool, double tlo, Done done)
                     SessionResult restored = r;
                     restored.tool = tool;
                     if (r.tlo)
-                        restored.recording = Recording { tool, r.tlo->tlo(), TloSource::Probe,
-                            r.tlo->onlyTlo ? std::nullopt : std::optional<double>(r.tlo->referenceMz),
-                            std::nullopt, QDateTime::currentDateTimeUtc(), RecordingKind::Restore };
+                        restored.recording
+                            = Recording { tool, r.tlo->tlo(), TloSource::Probe, r.tlo->knownReferenceMz(),
+                                  std::nullopt, QDateTime::currentDateTimeUtc(), RecordingKind::Restore };
                     done(restored);
                 },
                 changed);

@@ -141,20 +141,24 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
         }
     }
     const bool setsTlo = check.setsTlo;
-    const bool sent = m_connection->sendLine(
-        command.toUtf8(), [this, setsTlo](const CommandReply &reply, const SessionResult &result) {
+    const bool measures = check.measures;
+    const auto changedTo = check.tool; // M6 T: the status may still show the tool before
+    const bool sent = m_connection->sendLine(command.toUtf8(),
+        [this, setsTlo, measures, changedTo](const CommandReply &reply, const SessionResult &result) {
             if (!reply.ok()) {
                 note(reply.message);
                 m_connection->refreshOffsets();
                 return;
             }
+            if (measures && probed(reply))
+                return recordProbe(changedTo ? changedTo : m_connection->activeTool());
             // An offset set here is recorded like one set in the panel: by hand, for the tool in the spindle.
             const auto &tool = result.tool;
             const auto &tlo = result.tlo; // read from the reply once, by the connection
             if (setsTlo && tlo && tool && *tool >= 0) {
-                auto recorded = m_document->record(Recording { *tool, tlo->tlo(), TloSource::Manual,
-                    tlo->referenceMz, std::nullopt, QDateTime::currentDateTimeUtc(), RecordingKind::ManualSet,
-                    tlo->currentMz });
+                auto recorded = m_document->record(
+                    Recording { *tool, tlo->tlo(), TloSource::Manual, tlo->referenceMz, std::nullopt,
+                        QDateTime::currentDateTimeUtc(), RecordingKind::ManualSet, tlo->currentMz });
                 note(recorded ? tr("recorded in the table: T%1 TLO %2, set by hand")
                                     .arg(*tool)
                                     .arg(millimetres(tlo->tlo()))
@@ -168,6 +172,33 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
         });
     if (!sent)
         note(tr("the machine is busy with %1; wait for it").arg(m_connection->operation()));
+}
+
+bool ConsoleDock::probed(const CommandReply &reply)
+{
+    return std::any_of(reply.lines.cbegin(), reply.lines.cend(), [](const QByteArray &l) {
+        const auto p = parseProbeResult(l);
+        return p && p->triggered;
+    });
+}
+
+// A probe typed here (M491, M6 T) is recorded like one from the panel: the offsets it left, for the tool in
+// the spindle.
+void ConsoleDock::recordProbe(std::optional<int> tool)
+{
+    m_connection->report([this, tool](const SessionResult &r) {
+        if (!r.ok() || !r.tlo || !tool || *tool < 0) {
+            note(tr("the tool was probed, but its TLO could not be read, so nothing was recorded: %1")
+                     .arg(r.message));
+            return;
+        }
+        auto recorded = m_document->record(
+            Recording { *tool, r.tlo->tlo(), TloSource::Probe, r.tlo->knownReferenceMz(), std::nullopt,
+                QDateTime::currentDateTimeUtc(), RecordingKind::Probe, r.tlo->knownCurrentMz() });
+        note(recorded
+                ? tr("recorded in the table: T%1 TLO %2, probed").arg(*tool).arg(millimetres(r.tlo->tlo()))
+                : tr("T%1 was probed but not recorded: %2").arg(*tool).arg(recorded.error().message));
+    });
 }
 
 bool ConsoleDock::eventFilter(QObject *watched, QEvent *event)

@@ -4,11 +4,14 @@
 #include <QDockWidget>
 #include <QStringList>
 
+#include <optional>
+
 class QLineEdit;
 class QListWidget;
 
 namespace Toffee {
 
+struct CommandReply;
 class MachineConnection;
 class ToolDocument;
 
@@ -34,6 +37,8 @@ private:
     void append(const QByteArray &line, bool outgoing);
     void note(const QString &text);
     void applyFilter();
+    [[nodiscard]] static bool probed(const CommandReply &reply);
+    void recordProbe(std::optional<int> tool);
 
     static constexpr int kMaxLines = 5000;
     static constexpr qsizetype kMaxLineChars = 500;

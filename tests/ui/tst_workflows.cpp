@@ -98,13 +98,15 @@ void changeToT2FromTheConsole(Station &s)
     QTest::keyClick(console, Qt::Key_Return);
     QVERIFY(QTest::qWaitFor([&s] { return s.idle() && s.sent.contains("M6 T2"); }, 10000));
     QCOMPARE(s.machine()->tool(), 2);
-    // The console's tool change measured T2 on the machine, but only a probe from Toffee records it; the
-    // strip shows the machine as it is after the command, not as it was before.
-    QTRY_VERIFY(s.text(u"tloNoteLabel"_s).contains(u"T2 has no TLO in the table"_s));
-    QCOMPARE(s.text(u"currentMzLabel"_s), u"-105.688 mm"_s);
+    // The console's tool change measured T2 on the machine, and it is recorded like a probe from the panel;
+    // the strip shows the machine as it is after the command, not as it was before.
+    QTRY_VERIFY(s.table().find(2) && s.table().find(2)->measuredTlo);
+    QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
+    QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
+    QTRY_COMPARE(s.text(u"currentMzLabel"_s), u"-105.688 mm"_s);
     QCOMPARE(s.text(u"tloLabel"_s), u"-33.388 mm"_s);
 
-    // Probe T2: -33.388 mm, at the machine's resolution.
+    // Probe T2 again from the panel: -33.388 mm, at the machine's resolution.
     s.probe();
     QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
     QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
