@@ -24,6 +24,7 @@ enum Operation {
     SetAboveZ0,
     SelectTool,
     ChangeTool,
+    ChangeToStoredTlo,
     Unlock,
     RestoreTlo,
     OperationCount
@@ -31,13 +32,14 @@ enum Operation {
 enum Injected { DropOk, NoAnswer, Garble, CloseLink, Alarm, LateAnswer, ToolBroken, InjectedCount };
 
 // Sized by the enums, with a check that every entry is filled: a name left out fails to compile.
-constexpr std::array<const char *, OperationCount> kOperationNames = { "report", "probe", "break-test",
-    "set-tlo", "set-above-z0", "select-tool", "change-tool", "unlock", "restore-tlo" };
+constexpr std::array<const char *, OperationCount> kOperationNames
+    = { "report", "probe", "break-test", "set-tlo", "set-above-z0", "select-tool", "change-tool",
+          "change-to-stored-tlo", "unlock", "restore-tlo" };
 constexpr std::array<const char *, InjectedCount> kFaultNames
     = { "dropped ok", "no answer", "garbled reply", "link closed", "alarm", "late answer", "tool broken" };
 // The first command each operation sends, which the fault is aimed at.
 constexpr std::array<const char *, OperationCount> kFirstCommand
-    = { "M493.4", "M491", "M491.1", "M493.3", "M493.3", "M493.2", "M6", "$X", "M493.2" };
+    = { "M493.4", "M491", "M491.1", "M493.3", "M493.3", "M493.2", "M6", "M6", "$X", "M493.2" };
 static_assert(kOperationNames.back() && kFaultNames.back() && kFirstCommand.back(), "every entry named");
 
 void start(MachineSession &session, int operation, MachineSession::Done done)
@@ -57,6 +59,8 @@ void start(MachineSession &session, int operation, MachineSession::Done done)
         return session.selectTool(2, done);
     case ChangeTool:
         return session.changeTool(2, done);
+    case ChangeToStoredTlo: // a manual tool, with the TLO the table holds: no probe
+        return session.changeTool(8, done, -12.3);
     case Unlock:
         return session.unlock(done);
     default:
@@ -144,6 +148,11 @@ private Q_SLOTS:
 
         if (operation == Unlock && fault == Alarm) {
             QVERIFY2(r.ok(), qPrintable(r.message)); // unlocking a halted machine is what unlock is for
+        } else if (operation == ChangeToStoredTlo && fault == Garble) {
+            // Only the change's own lines ("Start manually picking new tool") were garbled: the offsets read
+            // after it show the TLO it was given, which is what counts.
+            QVERIFY2(r.ok(), qPrintable(r.message));
+            QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-12.300"_s);
         } else if (fault == ToolBroken) {
             // Only the break test can tell a broken tool: it must say so and write nothing. A probe measures
             // the tool as it now is (T1, the reference, 0.5 mm short); the other operations do not look at
