@@ -77,14 +77,15 @@ void printTlo(Invocation &call, const SessionResult &r, const QString &trendWarn
     call.out << Qt::endl;
 }
 
-void printStatus(Invocation &call, const MachineStatus &s)
+void printStatus(Invocation &call, const MachineStatus &s, const FirmwareInfo &firmware)
 {
     if (call.json) {
         printJson(call,
             QJsonObject { { u"state"_s, s.state }, { u"tool"_s, s.tool ? QJsonValue(*s.tool) : QJsonValue() },
                 { u"tlo"_s, s.tlo ? QJsonValue(*s.tlo) : QJsonValue() }, { u"mpos"_s, axes(s.mpos) },
                 { u"wpos"_s, axes(s.wpos) },
-                { u"halt_reason"_s, s.haltReason ? QJsonValue(*s.haltReason) : QJsonValue() } });
+                { u"halt_reason"_s, s.haltReason ? QJsonValue(*s.haltReason) : QJsonValue() },
+                { u"firmware"_s, firmwareJson(firmware) } });
         return;
     }
     call.out << s.state;
@@ -95,6 +96,10 @@ void printStatus(Invocation &call, const MachineStatus &s)
         call.out << "  T" << *s.tool << "  TLO " << mm(s.tlo.value_or(0));
     call.out << "  MPos " << mm(s.mpos[0]) << ' ' << mm(s.mpos[1]) << ' ' << mm(s.mpos[2]) << "  WPos "
              << mm(s.wpos[0]) << ' ' << mm(s.wpos[1]) << ' ' << mm(s.wpos[2]) << Qt::endl;
+    call.out << firmware.description();
+    if (!firmware.hasBreakTest())
+        call.out << ": no break test" << (firmware.hasManualOffset() ? "" : ", no manual offset");
+    call.out << Qt::endl;
 }
 
 void printBreakTest(Invocation &call, const SessionResult &r)
@@ -280,7 +285,8 @@ void MachineRun::operate()
 {
     const QString &command = m_call.command;
     MachineConnection &c = m_connection;
-    const auto status = printed([this](const SessionResult &r) { printStatus(m_call, *r.status); });
+    const auto status = printed(
+        [this](const SessionResult &r) { printStatus(m_call, *r.status, m_connection.firmware()); });
     bool started = true;
     if (command == u"status")
         started = c.status(status);

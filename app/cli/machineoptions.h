@@ -3,6 +3,8 @@
 
 #include <optional>
 
+#include <QJsonObject>
+
 #include "app/cli/cli.h"
 #include "model/gcode/dialect.h"
 #include "model/library/library.h"
@@ -42,6 +44,9 @@ bool startRackCommand(Invocation &call, MachineOptions &options, MachineConnecti
 [[nodiscard]] std::optional<double> storedTloForChange(
     Invocation &call, const MachineOptions &options, const MachineConnection &connection);
 [[nodiscard]] bool isRackCommand(const QString &command);
+// What the machine said it runs, and what that firmware can do: {"kind", "version", "break_test",
+// "manual_offset"}.
+[[nodiscard]] QJsonObject firmwareJson(const FirmwareInfo &firmware);
 
 // The library --library names (or the standard one), opened; nothing with --no-history.
 [[nodiscard]] Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call);

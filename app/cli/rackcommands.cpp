@@ -49,13 +49,6 @@ QString stateKey(RackStep::State state)
     return {};
 }
 
-QJsonObject firmwareJson(const FirmwareInfo &f)
-{
-    static const char *const kKinds[] = { "unknown", "community", "stock" };
-    return { { u"kind"_s, QString::fromLatin1(kKinds[int(f.kind)]) }, { u"version"_s, f.version },
-        { u"break_test"_s, f.hasBreakTest() }, { u"manual_offset"_s, f.hasManualOffset() } };
-}
-
 void showRack(Invocation &call, const MachineOptions &o, const MachineConnection &connection)
 {
     const FirmwareInfo firmware = connection.firmware();
@@ -136,6 +129,13 @@ void printSummary(Invocation &call, const RackSequence &sequence, const SessionR
 }
 
 } // namespace
+
+QJsonObject firmwareJson(const FirmwareInfo &f)
+{
+    static const char *const kKinds[] = { "unknown", "community", "stock" };
+    return { { u"kind"_s, QString::fromLatin1(kKinds[int(f.kind)]) }, { u"version"_s, f.version },
+        { u"break_test"_s, f.hasBreakTest() }, { u"manual_offset"_s, f.hasManualOffset() } };
+}
 
 bool isRackCommand(const QString &command)
 {

@@ -143,6 +143,13 @@ private Q_SLOTS:
         QVERIFY(json(run).value(u"error"_s).toString().contains(u"stock firmware"_s));
         run = machine({ u"rack"_s });
         QCOMPARE(json(run)[u"firmware"_s][u"break_test"_s].toBool(), false);
+        run = machine({ u"status"_s });
+        QCOMPARE(json(run)[u"firmware"_s][u"kind"_s].toString(), u"stock"_s);
+        QCOMPARE(json(run)[u"firmware"_s][u"version"_s].toString(), u"1.0.1"_s);
+        QCOMPARE(json(run)[u"firmware"_s][u"manual_offset"_s].toBool(), false);
+        run = machine({ u"status"_s }, false);
+        QVERIFY2(run.out.contains("Makera stock firmware 1.0.1: no break test, no manual offset"),
+            run.out.constData());
         run = machine({ u"break-test"_s });
         QCOMPARE(run.exitCode, 2);
         run = machine({ u"set-tlo"_s, u"--z"_s, u"-3"_s });
