@@ -7,6 +7,7 @@
 #include <QDir>
 
 #include "model/library/historyevent.h"
+#include "model/limits.h"
 
 using namespace Qt::StringLiterals;
 
@@ -31,6 +32,8 @@ const auto JobZFloor = u"jobs/zFloor"_s;
 const auto PrepareStoredTlo = u"jobs/prepareUsesStoredTlo"_s;
 const auto JobRack = u"jobs/rack"_s;
 const auto PrepareBreakTests = u"jobs/prepareBreakTests"_s;
+const auto RackTolerance = u"rack/tolerance"_s;
+const auto RackStoredTlo = u"rack/useStoredTlo"_s;
 } // namespace Key
 } // namespace
 
@@ -203,6 +206,26 @@ bool AppSettings::prepareUsesStoredTlo() const
 void AppSettings::setPrepareUsesStoredTlo(bool use)
 {
     m_settings.setValue(Key::PrepareStoredTlo, use);
+}
+
+double AppSettings::rackTolerance() const
+{
+    return m_settings.value(Key::RackTolerance, Limits::kDefaultBreakTolerance).toDouble();
+}
+
+void AppSettings::setRackTolerance(double millimetres)
+{
+    m_settings.setValue(Key::RackTolerance, millimetres);
+}
+
+bool AppSettings::rackUsesStoredTlo() const
+{
+    return m_settings.value(Key::RackStoredTlo, false).toBool();
+}
+
+void AppSettings::setRackUsesStoredTlo(bool use)
+{
+    m_settings.setValue(Key::RackStoredTlo, use);
 }
 
 bool AppSettings::prepareBreakTests() const

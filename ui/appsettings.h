@@ -55,6 +55,12 @@ public:
     void setPrepareUsesStoredTlo(bool use);
     [[nodiscard]] bool prepareBreakTests() const;
     void setPrepareBreakTests(bool test);
+    // The Rack panel: Check Rack's tolerance, and whether a manual change takes a fresh stored TLO instead of
+    // a probe (its rack is jobRack(), so that the panel and the job check agree).
+    [[nodiscard]] double rackTolerance() const;
+    void setRackTolerance(double millimetres);
+    [[nodiscard]] bool rackUsesStoredTlo() const;
+    void setRackUsesStoredTlo(bool use);
     [[nodiscard]] bool darkPalette() const;
     void setDarkPalette(bool dark);
 

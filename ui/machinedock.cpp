@@ -2,10 +2,12 @@
 #include "ui/machinedock.h"
 
 #include <QGroupBox>
+#include <QLabel>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QVBoxLayout>
 
+#include "serial/machineconnection.h"
 #include "serial/machinesession.h"
 #include "ui/breaktestpanel.h"
 #include "ui/connectionpanel.h"
@@ -31,19 +33,29 @@ QGroupBox *group(const QString &title, QWidget *content)
 
 MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, QWidget *parent)
     : QDockWidget(tr("Machine"), parent)
+    , m_machine(connection)
     , m_connection(new ConnectionPanel(connection))
     , m_tlo(new TloPanel(connection, document))
     , m_probe(new ProbePanel(connection, document))
     , m_offsets(new OffsetEditor(connection, document))
     , m_breakTest(new BreakTestPanel(connection, document))
+    , m_limits(new QLabel)
 {
     setObjectName(u"machineDock"_s);
     auto *body = new QWidget;
     auto *layout = new QVBoxLayout(body);
+    m_limits->setObjectName(u"firmwareLimitsLabel"_s);
+    m_limits->setAccessibleName(tr("What the machine's firmware cannot do"));
+    m_limits->setWordWrap(true);
+    m_offsetsGroup = group(tr("Set the offset by hand"), m_offsets);
+    m_breakTestGroup = group(tr("Tool break test"), m_breakTest);
+    m_offsetsGroup->setObjectName(u"offsetsGroup"_s);
+    m_breakTestGroup->setObjectName(u"breakTestGroup"_s);
     layout->addWidget(group(tr("Connection"), m_connection));
+    layout->addWidget(m_limits);
     layout->addWidget(group(tr("Probe"), m_probe));
-    layout->addWidget(group(tr("Set the offset by hand"), m_offsets));
-    layout->addWidget(group(tr("Tool break test"), m_breakTest));
+    layout->addWidget(m_offsetsGroup);
+    layout->addWidget(m_breakTestGroup);
     layout->addStretch(1);
     connect(m_breakTest, &BreakTestPanel::unlockRequested, m_tlo, &TloPanel::unlock);
     // A probe measures the tool again: the last break test's verdict no longer holds.
@@ -59,6 +71,31 @@ MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, 
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     setWidget(scroll);
+    connect(connection, &MachineConnection::stateChanged, this, &MachineDock::showFirmwareLimits);
+    showFirmwareLimits();
+}
+
+void MachineDock::showFirmwareLimits()
+{
+    // Disconnected, nothing is known of the firmware: every panel shows, disabled.
+    const bool connected = m_machine->state() == MachineConnection::State::Connected;
+    const FirmwareInfo firmware = m_machine->firmware();
+    const bool breakTest = !connected || firmware.hasBreakTest();
+    const bool manualOffset = !connected || firmware.hasManualOffset();
+    m_breakTestGroup->setVisible(breakTest);
+    m_offsetsGroup->setVisible(manualOffset);
+    if (!breakTest && !manualOffset)
+        m_limits->setText(
+            tr("%1: no break test (its M491.1 only re-measures) and no manual offset (it ignores "
+               "M493.3).")
+                .arg(firmware.description()));
+    else if (!breakTest)
+        m_limits->setText(tr("%1: no break test (Toffee cannot tell whether its M491.1 compares a tool with "
+                             "its TLO).")
+                              .arg(firmware.description()));
+    else
+        m_limits->clear();
+    m_limits->setVisible(!breakTest || !manualOffset);
 }
 
 } // namespace Toffee

@@ -3,6 +3,9 @@
 
 #include <QDockWidget>
 
+class QGroupBox;
+class QLabel;
+
 namespace Toffee {
 
 class BreakTestPanel;
@@ -13,8 +16,9 @@ class ProbePanel;
 class TloPanel;
 class ToolDocument;
 
-// The machine side of the window: connection, probing, manual offsets and the break test. The live state
-// (TloPanel) is made here but shown by the window in its always-visible strip.
+// The machine side of the window: connection, probing, manual offsets and the break test (the last two only
+// where the machine's firmware has them). The live state (TloPanel) is made here but shown by the window in
+// its always-visible strip.
 class MachineDock final : public QDockWidget
 {
     Q_OBJECT
@@ -30,11 +34,18 @@ public:
     [[nodiscard]] BreakTestPanel *breakTestPanel() const { return m_breakTest; }
 
 private:
+    // What the connected machine's firmware cannot do is hidden, with a line that says why.
+    void showFirmwareLimits();
+
+    MachineConnection *m_machine;
     ConnectionPanel *m_connection;
     TloPanel *m_tlo;
     ProbePanel *m_probe;
     OffsetEditor *m_offsets;
     BreakTestPanel *m_breakTest;
+    QGroupBox *m_offsetsGroup = nullptr;
+    QGroupBox *m_breakTestGroup = nullptr;
+    QLabel *m_limits;
 };
 
 } // namespace Toffee

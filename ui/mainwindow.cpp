@@ -4,6 +4,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHash>
@@ -31,6 +32,7 @@
 #include "ui/historydock.h"
 #include "ui/machinedock.h"
 #include "ui/probepanel.h"
+#include "ui/rackpanel.h"
 #include "ui/tlopanel.h"
 #include "ui/tooltablepanel.h"
 
@@ -71,6 +73,8 @@ MainWindow::MainWindow(QWidget *parent)
     , m_autoSave(new AutoSave(m_document, AutoSave::defaultDirectory(), this))
     , m_history(new HistoryRecorder(this))
     , m_historyDock(new HistoryDock(m_history, this))
+    , m_rackPanel(new RackPanel(m_connection, m_document))
+    , m_rackDock(new QDockWidget(tr("Rack"), this))
 {
     setObjectName(u"mainWindow"_s);
     setWindowIcon(themeIcon(u"toffee"_s));
@@ -81,6 +85,7 @@ MainWindow::MainWindow(QWidget *parent)
     addDockWidget(Qt::BottomDockWidgetArea, m_historyDock);
     tabifyDockWidget(m_consoleDock, m_historyDock);
     m_consoleDock->raise();
+    createRackDock();
     // The machine panel runs the full height beside the table and the console: at 1280×720 it then needs no
     // scrolling to reach the break test.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
@@ -107,6 +112,16 @@ void MainWindow::createMachineStrip()
     strip->addWidget(m_machineDock->tloPanel());
     addToolBarBreak();
     addToolBar(Qt::TopToolBarArea, strip);
+}
+
+// The tool changer beside the machine panel, a tab of its own: the two are used one after the other.
+void MainWindow::createRackDock()
+{
+    m_rackDock->setObjectName(u"rackDock"_s);
+    m_rackDock->setWidget(m_rackPanel);
+    addDockWidget(Qt::RightDockWidgetArea, m_rackDock);
+    tabifyDockWidget(m_machineDock, m_rackDock);
+    m_machineDock->raise();
 }
 
 // The status bar follows the connection; its failures become messages.
@@ -300,6 +315,10 @@ void MainWindow::createMachineActions()
     historyView->setObjectName(u"actionShowHistory"_s);
     historyView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_3));
     view->addAction(historyView);
+    QAction *rackView = m_rackDock->toggleViewAction();
+    rackView->setObjectName(u"actionShowRack"_s);
+    rackView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_4));
+    view->addAction(rackView);
     view->addSeparator();
     auto *dark = new QAction(tr("&Dark Palette"), this);
     dark->setObjectName(u"actionDarkPalette"_s);
@@ -338,10 +357,11 @@ void MainWindow::updateMachineStatus()
     const bool ready
         = m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy();
     // Motion waits for Unlock while halted; Unlock itself is what a halted machine needs.
-    for (const char *name : { "actionProbe", "actionBreakTest" }) {
-        if (auto *action = findChild<QAction *>(QString::fromLatin1(name)))
-            action->setEnabled(m_connection->canOperate());
-    }
+    if (auto *probe = findChild<QAction *>(u"actionProbe"_s))
+        probe->setEnabled(m_connection->canOperate());
+    // The stock firmware's M491.1 would only measure again: its panel is hidden, and F6 goes with it.
+    if (auto *breakTest = findChild<QAction *>(u"actionBreakTest"_s))
+        breakTest->setEnabled(m_connection->canOperate() && m_connection->firmware().hasBreakTest());
     if (auto *unlock = findChild<QAction *>(u"actionUnlock"_s))
         unlock->setEnabled(ready);
     if (auto *stop = findChild<QAction *>(u"actionStop"_s))

@@ -8,6 +8,7 @@
 #include "model/library/librarylocation.h"
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QDragEnterEvent;
@@ -23,6 +24,7 @@ class HistoryRecorder;
 class JobCheckDialog;
 class MachineConnection;
 class MachineDock;
+class RackPanel;
 class ToolDocument;
 class ToolTablePanel;
 
@@ -44,6 +46,7 @@ public:
     [[nodiscard]] AutoSave *autoSave() const { return m_autoSave; }
     [[nodiscard]] HistoryRecorder *history() const { return m_history; }
     [[nodiscard]] HistoryDock *historyDock() const { return m_historyDock; }
+    [[nodiscard]] RackPanel *rackPanel() const { return m_rackPanel; }
     // The program's use of each tool, recorded (what Record a Program Run does once a file is chosen).
     Result<int> recordProgramRun(const QString &path);
     // The history library every measurement goes into (--library, or the setting, or the standard one).
@@ -68,6 +71,7 @@ private:
     void createActions();
     void createMachineActions();
     void createMachineStrip();
+    void createRackDock();
     void connectMachine();
     void connectDocument();
     void updateMachineStatus();
@@ -113,6 +117,8 @@ private:
     AutoSave *m_autoSave;
     HistoryRecorder *m_history;
     HistoryDock *m_historyDock;
+    RackPanel *m_rackPanel;
+    QDockWidget *m_rackDock;
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;
