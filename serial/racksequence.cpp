@@ -114,13 +114,24 @@ QString RackSequence::progressText(int index) const
 void RackSequence::next()
 {
     ++m_current;
+    if (!m_connection->session()) {
+        SessionResult lost;
+        lost.outcome = SessionResult::Outcome::LinkFailure;
+        lost.message = tr("The connection to the machine was closed; the rack was not finished.");
+        return finish(lost);
+    }
+    const bool done = m_current == m_plan.steps.size();
     if (m_cancelled) {
         SessionResult stopped;
-        stopped.message = tr("Cancelled: the rack was stopped after T%1, which is in the spindle.")
-                              .arg(m_plan.steps.at(m_current - 1).tool);
+        stopped.message = done
+            ? tr("Cancelled after the last tool: every tool was done, and T%1 stays in the "
+                 "spindle.")
+                  .arg(m_plan.steps.last().tool)
+            : tr("Cancelled: the rack was stopped after T%1, which is in the spindle.")
+                  .arg(m_plan.steps.at(m_current - 1).tool);
         return finish(stopped);
     }
-    if (m_current == m_plan.steps.size())
+    if (done)
         return m_plan.mode == Mode::Check ? putBack() : finish(SessionResult {});
     m_plan.steps[m_current].state = RackStep::State::Running;
     m_connection->updateOperation(progressText(m_current));

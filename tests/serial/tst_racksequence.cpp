@@ -256,6 +256,25 @@ private Q_SLOTS:
         QVERIFY(!s.machine().isHalted()); // finished, not stopped
     }
 
+    void cancelOnTheLastToolLeavesItInTheSpindle()
+    {
+        Station s;
+        s.measureAll();
+        s.sent.clear();
+        RackSequence check(&s.connection, RackSequence::plan(Mode::Check, kRack, s.table, 0.1));
+        QObject::connect(&check, &RackSequence::stepChanged, &check, [&check](int index) {
+            if (index == 5 && check.steps().at(5).state == State::Running)
+                check.cancel();
+        });
+        QVERIFY(s.run(check));
+        QVERIFY2(check.outcome().ok(), qPrintable(check.outcome().message));
+        QCOMPARE(s.states(check), QList<State>(6, State::Passed));
+        QVERIFY2(
+            check.outcome().message.contains(u"every tool was done"_s), qPrintable(check.outcome().message));
+        QVERIFY(!s.sent.contains("M6 T-1")); // cancelled: nothing more moves
+        QCOMPARE(s.machine().tool(), 6);
+    }
+
     void refusesWhatCannotRunBeforeAnythingMoves()
     {
         Station s;
