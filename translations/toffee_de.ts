@@ -763,6 +763,30 @@
         <source>%1 is the tool table: the prepared program must go to another file.</source>
         <translation>%1 ist die Werkzeugtabelle: Das vorbereitete Programm muss in eine andere Datei.</translation>
     </message>
+    <message>
+        <source>T%1 is not in the table: it is measured at its change.</source>
+        <translation>T%1 steht nicht in der Tabelle: Es wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1 has no stored TLO: it is measured at its change.</source>
+        <translation>T%1 hat keine gespeicherte TLO: Es wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was set by hand, not measured: it is measured at its change.</source>
+        <translation>Die TLO von T%1 wurde von Hand gesetzt, nicht gemessen: Es wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test: it is measured at its change.</source>
+        <translation>T%1 hat seinen letzten Bruchtest nicht bestanden: Es wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO is older than the stale limit (%2 d): it is measured at its change.</source>
+        <translation>Die gespeicherte TLO von T%1 ist veraltet (Grenze %2 d): T%1 wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
+        <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die der Maschine ist aber %3: T%1 wird beim Wechsel vermessen.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -987,10 +1011,6 @@
         <translation>M6 T%1 wechselt das Werkzeug: Die Maschine fährt und vermisst dann T%1 am Werkzeugtaster.</translation>
     </message>
     <message>
-        <source>%1 probes the tool: the machine moves to the tool setter. Use Machine ▸ Probe to have the result recorded in the table.</source>
-        <translation>%1 vermisst das Werkzeug: Die Maschine fährt zum Werkzeugtaster. Verwenden Sie Maschine ▸ Aktuelles Werkzeug vermessen, damit das Ergebnis in der Tabelle gespeichert wird.</translation>
-    </message>
-    <message>
         <source>%1 starts the spindle.</source>
         <translation>%1 startet die Spindel.</translation>
     </message>
@@ -1009,6 +1029,10 @@
     <message>
         <source>&quot;%1&quot; is not a G-code line Toffee can read: %2</source>
         <translation>„%1“ ist keine G-Code-Zeile, die Toffee lesen kann: %2</translation>
+    </message>
+    <message>
+        <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
+        <translation>%1 vermisst das Werkzeug: Die Maschine fährt zum Werkzeugtaster, und die gemessene TLO wird in der Tabelle gespeichert.</translation>
     </message>
 </context>
 <context>
@@ -1080,6 +1104,18 @@
     <message>
         <source>T%1 is not in the tool table.</source>
         <translation>T%1 steht nicht in der Werkzeugtabelle.</translation>
+    </message>
+    <message>
+        <source>the tool was probed, but its TLO could not be read, so nothing was recorded: %1</source>
+        <translation>das Werkzeug wurde vermessen, aber seine TLO war nicht lesbar, daher wurde nichts gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>recorded in the table: T%1 TLO %2, probed</source>
+        <translation>in der Tabelle gespeichert: T%1 TLO %2, vermessen</translation>
+    </message>
+    <message>
+        <source>T%1 was probed but not recorded: %2</source>
+        <translation>T%1 wurde vermessen, aber nicht gespeichert: %2</translation>
     </message>
 </context>
 <context>
@@ -1160,6 +1196,25 @@
     <message>
         <source>G-code programs (*.nc *.ngc *.gcode *.pgm);;All files (*)</source>
         <translation>G-Code-Programme (*.nc *.ngc *.gcode *.pgm);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::FirmwareInfo</name>
+    <message>
+        <source>Community firmware %1</source>
+        <translation>Community-Firmware %1</translation>
+    </message>
+    <message>
+        <source>Makera stock firmware %1</source>
+        <translation>Makera-Originalfirmware %1</translation>
+    </message>
+    <message>
+        <source>Unknown firmware (it did not answer &quot;version&quot;)</source>
+        <translation>Unbekannte Firmware (sie hat auf „version“ nicht geantwortet)</translation>
+    </message>
+    <message>
+        <source>Unknown firmware %1</source>
+        <translation>Unbekannte Firmware %1</translation>
     </message>
 </context>
 <context>
@@ -2149,26 +2204,6 @@
         <translation>T%1 ist im Magazin: Die Carvera vermisst ein Magazinwerkzeug bei jedem Wechsel.</translation>
     </message>
     <message>
-        <source>T%1 is not in the table: it is measured at its change.</source>
-        <translation>T%1 steht nicht in der Tabelle: Es wird beim Wechsel vermessen.</translation>
-    </message>
-    <message>
-        <source>T%1 has no stored TLO: it is measured at its change.</source>
-        <translation>T%1 hat keine gespeicherte TLO: Es wird beim Wechsel vermessen.</translation>
-    </message>
-    <message>
-        <source>T%1 failed its last break test: it is measured at its change.</source>
-        <translation>T%1 hat seinen letzten Bruchtest nicht bestanden: Es wird beim Wechsel vermessen.</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s stored TLO is older than the stale limit (%2 d): it is measured at its change.</source>
-        <translation>Die gespeicherte TLO von T%1 ist veraltet (Grenze %2 d): T%1 wird beim Wechsel vermessen.</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
-        <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die der Maschine ist aber %3: T%1 wird beim Wechsel vermessen.</translation>
-    </message>
-    <message>
         <source>the prepared program would put the machine elsewhere than the original with the table&apos;s offsets. Nothing was written.</source>
         <translation>Das vorbereitete Programm würde die Maschine mit den Korrekturen der Tabelle an eine andere Stelle bringen als das Original. Es wurde nichts geschrieben.</translation>
     </message>
@@ -2191,10 +2226,6 @@
     <message>
         <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
         <translation>Die gespeicherten TLOs gelten nur, solange die Referenz-MCS-Z der Maschine %1 ist (wo ihr Referenzwerkzeug vermessen wurde): Prüfen Sie das, bevor Sie das Programm starten.</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s TLO was set by hand, not measured: it is measured at its change.</source>
-        <translation>Die TLO von T%1 wurde von Hand gesetzt, nicht gemessen: Es wird beim Wechsel vermessen.</translation>
     </message>
 </context>
 <context>
@@ -2485,6 +2516,10 @@
         <source>The machine is halted (Alarm lock) and takes no command but Unlock. %1</source>
         <translation>Die Maschine ist angehalten (Alarm lock) und nimmt keinen Befehl außer Entsperren an. %1</translation>
     </message>
+    <message>
+        <source>Emptying the spindle…</source>
+        <translation>Spindel wird geleert …</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -2507,6 +2542,18 @@
     <message>
         <source>Tool break test</source>
         <translation>Werkzeugbruchtest</translation>
+    </message>
+    <message>
+        <source>What the machine&apos;s firmware cannot do</source>
+        <translation>Was die Firmware der Maschine nicht kann</translation>
+    </message>
+    <message>
+        <source>%1: no break test (its M491.1 only re-measures) and no manual offset (it ignores M493.3).</source>
+        <translation>%1: kein Bruchtest (ihr M491.1 misst nur neu) und keine manuelle Korrektur (sie ignoriert M493.3).</translation>
+    </message>
+    <message>
+        <source>%1: no break test (Toffee cannot tell whether its M491.1 compares a tool with its TLO).</source>
+        <translation>%1: kein Bruchtest (Toffee kann nicht erkennen, ob ihr M491.1 ein Werkzeug mit seiner TLO vergleicht).</translation>
     </message>
 </context>
 <context>
@@ -2645,6 +2692,38 @@
     <message>
         <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
         <translation>Werkzeug %1 ist keine Werkzeugnummer; verwenden Sie %2 bis %3 (%4 für eine leere Spindel).</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle, but the machine reports TLO %2 mm where it was told %3 mm. Probe T%1 before you cut.</source>
+        <translation>T%1 ist in der Spindel, aber die Maschine meldet TLO %2 mm, obwohl ihr %3 mm gesendet wurde. Vermessen Sie T%1, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s, and this firmware reports its TLO nowhere else. Nothing was recorded; check the cable and try again.</source>
+        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet, und diese Firmware meldet die TLO nirgends sonst. Nichts wurde gespeichert; prüfen Sie das Kabel und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The machine was told to put its tool back, but it reports T%1 in the spindle. Check the spindle and the rack before you go on.</source>
+        <translation>Die Maschine sollte ihr Werkzeug zurücklegen, meldet aber T%1 in der Spindel. Prüfen Sie Spindel und Magazin, bevor Sie fortfahren.</translation>
+    </message>
+    <message>
+        <source>The machine was told to put its tool back but did not report an empty spindle. Check the spindle and the rack before you go on.</source>
+        <translation>Die Maschine sollte ihr Werkzeug zurücklegen, hat aber keine leere Spindel gemeldet. Prüfen Sie Spindel und Magazin, bevor Sie fortfahren.</translation>
+    </message>
+    <message>
+        <source>The machine runs %1: its M491.1 only measures the tool again and takes the new length without comparing, so a broken tool would pass. Probe the tool and compare its TLO with the table, or install the community firmware for break tests.</source>
+        <translation>Auf der Maschine läuft %1: Ihr M491.1 vermisst das Werkzeug nur erneut und übernimmt die neue Länge ohne Vergleich, ein gebrochenes Werkzeug würde also bestehen. Vermessen Sie das Werkzeug und vergleichen Sie seine TLO mit der Tabelle, oder installieren Sie die Community-Firmware für Bruchtests.</translation>
+    </message>
+    <message>
+        <source>The machine did not say which firmware it runs (%1), so Toffee cannot tell whether its M491.1 compares the tool or only measures it again. No break test was run; probe the tool and compare its TLO with the table.</source>
+        <translation>Die Maschine hat nicht angegeben, welche Firmware sie verwendet (%1), daher kann Toffee nicht erkennen, ob ihr M491.1 das Werkzeug vergleicht oder nur erneut vermisst. Es wurde kein Bruchtest ausgeführt; vermessen Sie das Werkzeug und vergleichen Sie seine TLO mit der Tabelle.</translation>
+    </message>
+    <message>
+        <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
+        <translation>Auf der Maschine läuft %1, die M493.3 stillschweigend ignoriert: Eine von Hand gesetzte TLO würde nicht verwendet. Vermessen Sie stattdessen das Werkzeug, oder wechseln Sie mit seiner TLO zu ihm (ein manueller Wechsel).</translation>
     </message>
 </context>
 <context>
@@ -3047,6 +3126,10 @@ Trotzdem speichern?</translation>
         <source>G-code programs (*.nc *.gcode *.ngc *.tap *.cnc *.gc *.g *.pgm *.mpf);;All files (*)</source>
         <translation>G-Code-Programme (*.nc *.gcode *.ngc *.tap *.cnc *.gc *.g *.pgm *.mpf);;Alle Dateien (*)</translation>
     </message>
+    <message>
+        <source>Rack</source>
+        <translation>Magazin</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -3304,6 +3387,458 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>cannot make the link %1</source>
         <translation>Der Link %1 lässt sich nicht anlegen</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::RackPanel</name>
+    <message>
+        <source>Measure Rack…</source>
+        <translation>Magazin vermessen …</translation>
+    </message>
+    <message>
+        <source>Check Rack…</source>
+        <translation>Magazin prüfen …</translation>
+    </message>
+    <message>
+        <source>After a manual change, use the tool&apos;s stored TLO
+when it is fresh (no probe)</source>
+        <translation>Nach einem manuellen Wechsel die gespeicherte TLO
+verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>The tool in the spindle</source>
+        <translation>Das Werkzeug in der Spindel</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s firmware</source>
+        <translation>Die Firmware der Maschine</translation>
+    </message>
+    <message>
+        <source>The tools the rack holds</source>
+        <translation>Die Werkzeuge im Magazin</translation>
+    </message>
+    <message>
+        <source>Why the rack is not understood</source>
+        <translation>Warum das Magazin nicht verstanden wird</translation>
+    </message>
+    <message>
+        <source>The rack&apos;s tools</source>
+        <translation>Die Werkzeuge des Magazins</translation>
+    </message>
+    <message>
+        <source>The tool to load</source>
+        <translation>Das einzuwechselnde Werkzeug</translation>
+    </message>
+    <message>
+        <source>Load the tool</source>
+        <translation>Das Werkzeug einwechseln</translation>
+    </message>
+    <message>
+        <source>Measure every rack tool</source>
+        <translation>Jedes Magazinwerkzeug vermessen</translation>
+    </message>
+    <message>
+        <source>Break-test every rack tool</source>
+        <translation>Bruchtest für jedes Magazinwerkzeug</translation>
+    </message>
+    <message>
+        <source>Rack check tolerance in millimetres</source>
+        <translation>Toleranz der Magazinprüfung in Millimetern</translation>
+    </message>
+    <message>
+        <source>Use a fresh stored TLO after a manual change</source>
+        <translation>Nach einem manuellen Wechsel eine nicht veraltete gespeicherte TLO verwenden</translation>
+    </message>
+    <message>
+        <source>Rack progress</source>
+        <translation>Fortschritt des Magazinvorgangs</translation>
+    </message>
+    <message>
+        <source>What the machine does now</source>
+        <translation>Was die Maschine gerade tut</translation>
+    </message>
+    <message>
+        <source>Cancel the rack operation</source>
+        <translation>Den Magazinvorgang abbrechen</translation>
+    </message>
+    <message>
+        <source>The last rack operation&apos;s result</source>
+        <translation>Das Ergebnis des letzten Magazinvorgangs</translation>
+    </message>
+    <message>
+        <source>1-6 on a Carvera C1, or tool numbers and ranges (1,2,5-8); the job check uses the same rack.</source>
+        <translation>1-6 bei einer Carvera C1 oder Werkzeugnummern und Bereiche (1,2,5-8); die Jobprüfung verwendet dasselbe Magazin.</translation>
+    </message>
+    <message>
+        <source>1-6, or none</source>
+        <translation>1-6 oder none</translation>
+    </message>
+    <message>
+        <source>Any tool: one outside the rack is a manual change</source>
+        <translation>Beliebiges Werkzeug: Eines außerhalb des Magazins ist ein manueller Wechsel</translation>
+    </message>
+    <message>
+        <source>A rack tool is always measured by the machine at its change.</source>
+        <translation>Ein Magazinwerkzeug wird von der Maschine bei seinem Wechsel immer vermessen.</translation>
+    </message>
+    <message>
+        <source>%v of %m</source>
+        <translation>%v von %m</translation>
+    </message>
+    <message>
+        <source>&amp;Rack holds:</source>
+        <translation>&amp;Magazin enthält:</translation>
+    </message>
+    <message>
+        <source>Connect to the machine first.</source>
+        <translation>Zuerst mit der Maschine verbinden.</translation>
+    </message>
+    <message>
+        <source>Load T%1…</source>
+        <translation>T%1 einwechseln …</translation>
+    </message>
+    <message>
+        <source>Break-test every rack tool against its stored TLO; the machine halts on a broken one.</source>
+        <translation>Bruchtest für jedes Magazinwerkzeug gegen seine gespeicherte TLO; bei einem gebrochenen hält die Maschine an.</translation>
+    </message>
+    <message>
+        <source>Change to every rack tool in turn and measure it on the tool setter.</source>
+        <translation>Nacheinander zu jedem Magazinwerkzeug wechseln und es am Werkzeugtaster vermessen.</translation>
+    </message>
+    <message>
+        <source>Change to the tool: the machine puts the one in the spindle back first.</source>
+        <translation>Zu dem Werkzeug wechseln: Die Maschine legt zuerst das Werkzeug aus der Spindel zurück.</translation>
+    </message>
+    <message>
+        <source>Spindle: unknown</source>
+        <translation>Spindel: unbekannt</translation>
+    </message>
+    <message>
+        <source>Spindle: empty</source>
+        <translation>Spindel: leer</translation>
+    </message>
+    <message>
+        <source>Spindle: T%1</source>
+        <translation>Spindel: T%1</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Nicht verbunden</translation>
+    </message>
+    <message>
+        <source>%1 — no break test</source>
+        <translation>%1 — kein Bruchtest</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle already: the machine measures it again on the tool setter.</source>
+        <translation>T%1 ist bereits in der Spindel: Die Maschine vermisst es erneut am Werkzeugtaster.</translation>
+    </message>
+    <message>
+        <source>The machine puts T%1 back in the rack, picks T%2 and measures it on the tool setter.</source>
+        <translation>Die Maschine legt T%1 ins Magazin zurück, nimmt T%2 auf und vermisst es am Werkzeugtaster.</translation>
+    </message>
+    <message>
+        <source>The machine puts T%1 back in the rack.</source>
+        <translation>Die Maschine legt T%1 ins Magazin zurück.</translation>
+    </message>
+    <message>
+        <source>T%1 has no slot in the rack: take it out of the spindle when the machine asks.</source>
+        <translation>T%1 hat keinen Platz im Magazin: Nehmen Sie es aus der Spindel, wenn die Maschine dazu auffordert.</translation>
+    </message>
+    <message>
+        <source>The machine picks T%1 from the rack and measures it on the tool setter.</source>
+        <translation>Die Maschine nimmt T%1 aus dem Magazin und vermisst es am Werkzeugtaster.</translation>
+    </message>
+    <message>
+        <source>T%1 has no slot in the rack: put it in the spindle when the machine asks. The machine then takes its stored TLO %2 (measured %3) and does not probe it.</source>
+        <translation>T%1 hat keinen Platz im Magazin: Setzen Sie es in die Spindel, wenn die Maschine dazu auffordert. Die Maschine übernimmt dann seine gespeicherte TLO %2 (gemessen %3) und vermisst es nicht.</translation>
+    </message>
+    <message>
+        <source>T%1 has no slot in the rack: put it in the spindle when the machine asks. The machine then measures it on the tool setter.</source>
+        <translation>T%1 hat keinen Platz im Magazin: Setzen Sie es in die Spindel, wenn die Maschine dazu auffordert. Die Maschine vermisst es dann am Werkzeugtaster.</translation>
+    </message>
+    <message>
+        <source>The stored TLO is not used: %1</source>
+        <translation>Die gespeicherte TLO wird nicht verwendet: %1</translation>
+    </message>
+    <message>
+        <source>Keep clear of the machine.</source>
+        <translation>Halten Sie Abstand zur Maschine.</translation>
+    </message>
+    <message>
+        <source>Load T%1?</source>
+        <translation>T%1 einwechseln?</translation>
+    </message>
+    <message>
+        <source>Loading T%1 failed</source>
+        <translation>Einwechseln von T%1 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the tool table.</source>
+        <translation>In die Werkzeugtabelle wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle with TLO %2, but it could not be recorded: %3</source>
+        <translation>T%1 ist mit TLO %2 in der Spindel, konnte aber nicht gespeichert werden: %3</translation>
+    </message>
+    <message>
+        <source>T%1 takes its stored TLO %2 (measured %3); not probed.</source>
+        <translation>T%1 übernimmt seine gespeicherte TLO %2 (gemessen %3); nicht vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1 measured: TLO %2, recorded in the table.</source>
+        <translation>T%1 gemessen: TLO %2, in der Tabelle gespeichert.</translation>
+    </message>
+    <message>
+        <source>Stopping after this tool…</source>
+        <translation>Halt nach diesem Werkzeug …</translation>
+    </message>
+    <message>
+        <source>Stop the machine?</source>
+        <translation>Maschine anhalten?</translation>
+    </message>
+    <message>
+        <source>Stop the machine now? It halts; Unlock afterwards.</source>
+        <translation>Die Maschine jetzt anhalten? Sie hält an; danach Entsperren.</translation>
+    </message>
+    <message>
+        <source>Check the rack?</source>
+        <translation>Das Magazin prüfen?</translation>
+    </message>
+    <message>
+        <source>Measure the rack?</source>
+        <translation>Das Magazin vermessen?</translation>
+    </message>
+    <message>
+        <source>The machine changes to %1 in turn and break-tests each against its stored TLO (tolerance %2). A broken tool halts the machine and stops the check. After the last, T%3 goes back in the rack.</source>
+        <translation>Die Maschine wechselt nacheinander zu %1 und prüft jedes per Bruchtest gegen seine gespeicherte TLO (Toleranz %2). Ein gebrochenes Werkzeug hält die Maschine an und beendet die Prüfung. Nach dem letzten kommt T%3 zurück ins Magazin.</translation>
+    </message>
+    <message>
+        <source>The machine changes to %1 in turn, putting the tool in the spindle back in the rack first, and measures each on the tool setter; each TLO is recorded in the table. T%2 stays in the spindle.</source>
+        <translation>Die Maschine wechselt nacheinander zu %1, legt dabei zuerst das Werkzeug aus der Spindel ins Magazin zurück und vermisst jedes am Werkzeugtaster; jede TLO wird in der Tabelle gespeichert. T%2 bleibt in der Spindel.</translation>
+    </message>
+    <message>
+        <source>T%1: %2</source>
+        <translation>T%1: %2</translation>
+    </message>
+    <message>
+        <source>Not run: %1.</source>
+        <translation>Nicht ausgeführt: %1.</translation>
+    </message>
+    <message>
+        <source>A measurement could not be stored in the table, so the rack was stopped: %1</source>
+        <translation>Eine Messung konnte nicht in der Tabelle gespeichert werden, daher wurde der Magazinvorgang angehalten: %1</translation>
+    </message>
+    <message>
+        <source>The rack was stopped</source>
+        <translation>Der Magazinvorgang wurde angehalten</translation>
+    </message>
+    <message>
+        <source>The rack check failed</source>
+        <translation>Die Magazinprüfung ist fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Measuring the rack failed</source>
+        <translation>Das Vermessen des Magazins ist fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Rack checked: 1 tool passed.</source>
+        <translation>Magazin geprüft: 1 Werkzeug bestanden.</translation>
+    </message>
+    <message>
+        <source>Rack checked: %1 tools passed.</source>
+        <translation>Magazin geprüft: %1 Werkzeuge bestanden.</translation>
+    </message>
+    <message>
+        <source>Rack measured: 1 tool, its TLO recorded in the table.</source>
+        <translation>Magazin vermessen: 1 Werkzeug, seine TLO in der Tabelle gespeichert.</translation>
+    </message>
+    <message>
+        <source>Rack measured: %1 tools, each TLO recorded in the table.</source>
+        <translation>Magazin vermessen: %1 Werkzeuge, jede TLO in der Tabelle gespeichert.</translation>
+    </message>
+    <message>
+        <source>The tool</source>
+        <translation>Das Werkzeug</translation>
+    </message>
+    <message>
+        <source>%1 may be broken: the check stopped and the machine halted.</source>
+        <translation>%1 ist möglicherweise gebrochen: Die Prüfung wurde beendet, und die Maschine hat angehalten.</translation>
+    </message>
+    <message>
+        <source>%1 may be broken</source>
+        <translation>%1 ist möglicherweise gebrochen</translation>
+    </message>
+    <message>
+        <source>%1 may be broken. The rack check stopped there, and the machine has halted.</source>
+        <translation>%1 ist möglicherweise gebrochen. Die Magazinprüfung wurde dort beendet, und die Maschine hat angehalten.</translation>
+    </message>
+    <message>
+        <source>The table marks %1 until it is measured again: once it is checked or replaced and the machine unlocked (the strip&apos;s Unlock, Ctrl+Shift+U), measure it with Load Tool or Measure Rack.</source>
+        <translation>Die Tabelle markiert %1, bis es erneut vermessen wird: Sobald es geprüft oder ersetzt und die Maschine entsperrt ist (Entsperren in der Leiste, Strg+Umschalt+U), vermessen Sie es mit „Einwechseln“ oder „Magazin vermessen“.</translation>
+    </message>
+    <message>
+        <source>Slot</source>
+        <translation>Platz</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Stored TLO</source>
+        <translation>Gespeicherte TLO</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Gemessen</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>In millimetres</source>
+        <translation>In Millimetern</translation>
+    </message>
+    <message>
+        <source>This session&apos;s Measure Rack or Check Rack, with the TLO measured (mm)</source>
+        <translation>„Magazin vermessen“ oder „Magazin prüfen“ dieser Sitzung, mit der gemessenen TLO (mm)</translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation>nie</translation>
+    </message>
+    <message>
+        <source>failed break test</source>
+        <translation>Bruchtest nicht bestanden</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>von Hand gesetzt</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <source>T%1 · in spindle</source>
+        <translation>T%1 · in der Spindel</translation>
+    </message>
+    <message>
+        <source>Not in the table</source>
+        <translation>Nicht in der Tabelle</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>Wartet</translation>
+    </message>
+    <message>
+        <source>Checking…</source>
+        <translation>Wird geprüft …</translation>
+    </message>
+    <message>
+        <source>Measuring…</source>
+        <translation>Wird vermessen …</translation>
+    </message>
+    <message>
+        <source>Measured: %1</source>
+        <translation>Gemessen: %1</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>Bestanden</translation>
+    </message>
+    <message>
+        <source>Passed: %1</source>
+        <translation>Bestanden: %1</translation>
+    </message>
+    <message>
+        <source>BROKEN</source>
+        <translation>GEBROCHEN</translation>
+    </message>
+    <message>
+        <source>BROKEN: %1</source>
+        <translation>GEBROCHEN: %1</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Not run</source>
+        <translation>Nicht ausgeführt</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::RackSequence</name>
+    <message>
+        <source>The rack holds no tools: say which tools it holds (1-6 on a C1) first.</source>
+        <translation>Das Magazin enthält keine Werkzeuge: Geben Sie zuerst an, welche Werkzeuge es enthält (1-6 bei einer C1).</translation>
+    </message>
+    <message>
+        <source>The machine runs %1, whose M491.1 only measures a tool again without comparing: a rack check there would pass a broken tool. Install the community firmware to check the rack.</source>
+        <translation>Auf der Maschine läuft %1, deren M491.1 ein Werkzeug nur erneut vermisst, ohne zu vergleichen: Eine Magazinprüfung würde dort ein gebrochenes Werkzeug bestehen lassen. Installieren Sie die Community-Firmware, um das Magazin zu prüfen.</translation>
+    </message>
+    <message>
+        <source>The machine did not say which firmware it runs, so Toffee cannot tell whether its M491.1 compares a tool with its TLO. The rack was not checked.</source>
+        <translation>Die Maschine hat nicht angegeben, welche Firmware sie verwendet, daher kann Toffee nicht erkennen, ob ihr M491.1 ein Werkzeug mit seiner TLO vergleicht. Das Magazin wurde nicht geprüft.</translation>
+    </message>
+    <message>
+        <source>%1 have no stored TLO to compare with. Measure them first (Measure Rack); nothing moved.</source>
+        <translation>%1 haben keine gespeicherte TLO zum Vergleichen. Vermessen Sie sie zuerst (Magazin vermessen); nichts hat sich bewegt.</translation>
+    </message>
+    <message>
+        <source>Measuring the rack…</source>
+        <translation>Magazin wird vermessen …</translation>
+    </message>
+    <message>
+        <source>Checking the rack…</source>
+        <translation>Magazin wird geprüft …</translation>
+    </message>
+    <message>
+        <source>The machine is busy or not connected.</source>
+        <translation>Die Maschine ist beschäftigt oder nicht verbunden.</translation>
+    </message>
+    <message>
+        <source>Measuring T%1 (%2 of %3)…</source>
+        <translation>Vermesse T%1 (%2 von %3) …</translation>
+    </message>
+    <message>
+        <source>Checking T%1 (%2 of %3)…</source>
+        <translation>Prüfe T%1 (%2 von %3) …</translation>
+    </message>
+    <message>
+        <source>The connection to the machine was closed; the rack was not finished.</source>
+        <translation>Die Verbindung zur Maschine wurde geschlossen; der Magazinvorgang wurde nicht abgeschlossen.</translation>
+    </message>
+    <message>
+        <source>Cancelled after the last tool: every tool was done, and T%1 stays in the spindle.</source>
+        <translation>Nach dem letzten Werkzeug abgebrochen: Alle Werkzeuge sind erledigt, und T%1 bleibt in der Spindel.</translation>
+    </message>
+    <message>
+        <source>Cancelled: the rack was stopped after T%1, which is in the spindle.</source>
+        <translation>Abgebrochen: Der Magazinvorgang wurde nach T%1 angehalten, das in der Spindel ist.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference is %3 now: the comparison would mean nothing. Measure the rack again (Measure Rack).</source>
+        <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die Referenz der Maschine ist jetzt aber %3: Der Vergleich wäre bedeutungslos. Vermessen Sie das Magazin erneut (Magazin vermessen).</translation>
+    </message>
+    <message>
+        <source>Putting T%1 back in the rack…</source>
+        <translation>T%1 wird ins Magazin zurückgelegt …</translation>
+    </message>
+    <message>
+        <source>Every tool passed, but the last one could not be put back: %1</source>
+        <translation>Alle Werkzeuge haben bestanden, aber das letzte konnte nicht zurückgelegt werden: %1</translation>
     </message>
 </context>
 <context>
@@ -3759,10 +4294,6 @@ Vermessen Sie T%1 stattdessen.</translation>
         <translation>Toffee, die Verwaltung für Werkzeugkorrekturen.</translation>
     </message>
     <message>
-        <source>Connect to the built-in emulator.</source>
-        <translation>Mit dem eingebauten Emulator verbinden.</translation>
-    </message>
-    <message>
         <source>Connect to the machine on PORT.</source>
         <translation>Mit der Maschine an PORT verbinden.</translation>
     </message>
@@ -3793,6 +4324,14 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>Check the G-code PROGRAM against the table once the window is open.</source>
         <translation>Das G-Code-Programm PROGRAM gegen die Tabelle prüfen, sobald das Fenster offen ist.</translation>
+    </message>
+    <message>
+        <source>Connect to the built-in emulator, which takes a real machine&apos;s time for a tool change and a probe.</source>
+        <translation>Mit dem eingebauten Emulator verbinden, der für einen Werkzeugwechsel und eine Messung so lange braucht wie eine echte Maschine.</translation>
+    </message>
+    <message>
+        <source>The firmware the built-in emulator plays: community (default) or stock.</source>
+        <translation>Die Firmware, die der eingebaute Emulator nachbildet: community (Standard) oder stock.</translation>
     </message>
 </context>
 </TS>

@@ -763,6 +763,30 @@
         <source>%1 is the tool table: the prepared program must go to another file.</source>
         <translation>%1 是刀具表：准备好的程序必须保存到其他文件。</translation>
     </message>
+    <message>
+        <source>T%1 is not in the table: it is measured at its change.</source>
+        <translation>T%1 不在刀具表中：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1 has no stored TLO: it is measured at its change.</source>
+        <translation>T%1 没有已存 TLO：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was set by hand, not measured: it is measured at its change.</source>
+        <translation>T%1 的 TLO 是手动设置的，并非测得：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1 failed its last break test: it is measured at its change.</source>
+        <translation>T%1 未通过上次断刀检测：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO is older than the stale limit (%2 d): it is measured at its change.</source>
+        <translation>T%1 的已存 TLO 已超过过期期限（%2 天）：换刀时将对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
+        <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，但机床的基准为 %3：换刀时将对其对刀。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -987,10 +1011,6 @@
         <translation>M6 T%1 会换刀：机床会移动，然后在对刀仪上对 T%1 对刀。</translation>
     </message>
     <message>
-        <source>%1 probes the tool: the machine moves to the tool setter. Use Machine ▸ Probe to have the result recorded in the table.</source>
-        <translation>%1 会对刀：机床移动到对刀仪。请使用“机床 ▸ 对当前刀具对刀”，以便将结果记录到刀具表中。</translation>
-    </message>
-    <message>
         <source>%1 starts the spindle.</source>
         <translation>%1 会启动主轴。</translation>
     </message>
@@ -1009,6 +1029,10 @@
     <message>
         <source>&quot;%1&quot; is not a G-code line Toffee can read: %2</source>
         <translation>“%1”不是 Toffee 能读取的 G 代码行：%2</translation>
+    </message>
+    <message>
+        <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
+        <translation>%1 会对刀：机床移动到对刀仪，测得的 TLO 将记录到刀具表中。</translation>
     </message>
 </context>
 <context>
@@ -1080,6 +1104,18 @@
     <message>
         <source>T%1 is not in the tool table.</source>
         <translation>T%1 不在刀具表中。</translation>
+    </message>
+    <message>
+        <source>the tool was probed, but its TLO could not be read, so nothing was recorded: %1</source>
+        <translation>刀具已对刀，但无法读取其 TLO，因此未记录任何内容：%1</translation>
+    </message>
+    <message>
+        <source>recorded in the table: T%1 TLO %2, probed</source>
+        <translation>已记录到刀具表：T%1 TLO %2，已对刀</translation>
+    </message>
+    <message>
+        <source>T%1 was probed but not recorded: %2</source>
+        <translation>T%1 已对刀，但未记录：%2</translation>
     </message>
 </context>
 <context>
@@ -1160,6 +1196,25 @@
     <message>
         <source>G-code programs (*.nc *.ngc *.gcode *.pgm);;All files (*)</source>
         <translation>G 代码程序 (*.nc *.ngc *.gcode *.pgm);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::FirmwareInfo</name>
+    <message>
+        <source>Community firmware %1</source>
+        <translation>社区固件 %1</translation>
+    </message>
+    <message>
+        <source>Makera stock firmware %1</source>
+        <translation>Makera 原厂固件 %1</translation>
+    </message>
+    <message>
+        <source>Unknown firmware (it did not answer &quot;version&quot;)</source>
+        <translation>未知固件（未响应“version”）</translation>
+    </message>
+    <message>
+        <source>Unknown firmware %1</source>
+        <translation>未知固件 %1</translation>
     </message>
 </context>
 <context>
@@ -2149,26 +2204,6 @@
         <translation>T%1 在刀库中：Carvera 每次换刀都会测量刀库中的刀具。</translation>
     </message>
     <message>
-        <source>T%1 is not in the table: it is measured at its change.</source>
-        <translation>T%1 不在刀具表中：换刀时将对其对刀。</translation>
-    </message>
-    <message>
-        <source>T%1 has no stored TLO: it is measured at its change.</source>
-        <translation>T%1 没有已存 TLO：换刀时将对其对刀。</translation>
-    </message>
-    <message>
-        <source>T%1 failed its last break test: it is measured at its change.</source>
-        <translation>T%1 未通过上次断刀检测：换刀时将对其对刀。</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s stored TLO is older than the stale limit (%2 d): it is measured at its change.</source>
-        <translation>T%1 的已存 TLO 已超过过期期限（%2 天）：换刀时将对其对刀。</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
-        <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，但机床的基准为 %3：换刀时将对其对刀。</translation>
-    </message>
-    <message>
         <source>the prepared program would put the machine elsewhere than the original with the table&apos;s offsets. Nothing was written.</source>
         <translation>使用刀具表中的补偿时，准备好的程序会使机床到达与原程序不同的位置。未写入任何内容。</translation>
     </message>
@@ -2191,10 +2226,6 @@
     <message>
         <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
         <translation>只有当机床的基准 MCS Z 为 %1（其基准刀具对刀处）时，已存 TLO 才有效：运行程序前请检查。</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s TLO was set by hand, not measured: it is measured at its change.</source>
-        <translation>T%1 的 TLO 是手动设置的，并非测得：将在换刀时测量。</translation>
     </message>
 </context>
 <context>
@@ -2485,6 +2516,10 @@
         <source>The machine is halted (Alarm lock) and takes no command but Unlock. %1</source>
         <translation>机器已停机（Alarm lock），除解锁外不接受任何命令。%1</translation>
     </message>
+    <message>
+        <source>Emptying the spindle…</source>
+        <translation>正在清空主轴…</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -2507,6 +2542,18 @@
     <message>
         <source>Tool break test</source>
         <translation>断刀检测</translation>
+    </message>
+    <message>
+        <source>What the machine&apos;s firmware cannot do</source>
+        <translation>机床固件不支持的功能</translation>
+    </message>
+    <message>
+        <source>%1: no break test (its M491.1 only re-measures) and no manual offset (it ignores M493.3).</source>
+        <translation>%1：无断刀检测（其 M491.1 只会重新测量），也无手动补偿（它会忽略 M493.3）。</translation>
+    </message>
+    <message>
+        <source>%1: no break test (Toffee cannot tell whether its M491.1 compares a tool with its TLO).</source>
+        <translation>%1：无断刀检测（Toffee 无法判断其 M491.1 是否将刀具与其 TLO 比较）。</translation>
     </message>
 </context>
 <context>
@@ -2645,6 +2692,38 @@
     <message>
         <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
         <translation>刀具 %1 不是刀具号；请使用 %2 到 %3（%4 表示主轴为空）。</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle, but the machine reports TLO %2 mm where it was told %3 mm. Probe T%1 before you cut.</source>
+        <translation>T%1 在主轴上，但机床报告的 TLO 为 %2 mm，而设置给它的是 %3 mm。切削前请对 T%1 对刀。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s, and this firmware reports its TLO nowhere else. Nothing was recorded; check the cable and try again.</source>
+        <translation>机床在 2 秒内未发送状态报告，而此固件不会在其他地方报告 TLO。未记录任何内容；请检查电缆后重试。</translation>
+    </message>
+    <message>
+        <source>The machine was told to put its tool back, but it reports T%1 in the spindle. Check the spindle and the rack before you go on.</source>
+        <translation>已让机床放回刀具，但它报告主轴上是 T%1。继续之前请检查主轴和刀库。</translation>
+    </message>
+    <message>
+        <source>The machine was told to put its tool back but did not report an empty spindle. Check the spindle and the rack before you go on.</source>
+        <translation>已让机床放回刀具，但它没有报告主轴为空。继续之前请检查主轴和刀库。</translation>
+    </message>
+    <message>
+        <source>The machine runs %1: its M491.1 only measures the tool again and takes the new length without comparing, so a broken tool would pass. Probe the tool and compare its TLO with the table, or install the community firmware for break tests.</source>
+        <translation>机床运行的是 %1：其 M491.1 只会重新测量刀具并直接采用新长度而不作比较，因此断刀也会通过。请对刀并将其 TLO 与刀具表比较，或安装社区固件以进行断刀检测。</translation>
+    </message>
+    <message>
+        <source>The machine did not say which firmware it runs (%1), so Toffee cannot tell whether its M491.1 compares the tool or only measures it again. No break test was run; probe the tool and compare its TLO with the table.</source>
+        <translation>机床未说明其运行的固件（%1），因此 Toffee 无法判断其 M491.1 是会比较刀具，还是只会重新测量。未执行断刀检测；请对刀并将其 TLO 与刀具表比较。</translation>
+    </message>
+    <message>
+        <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
+        <translation>机床运行的是 %1，它会不加提示地忽略 M493.3：手动设置的 TLO 不会被使用。请改为对刀，或带着其 TLO 换到该刀具（手动换刀）。</translation>
     </message>
 </context>
 <context>
@@ -3047,6 +3126,10 @@ Save anyway?</source>
         <source>G-code programs (*.nc *.gcode *.ngc *.tap *.cnc *.gc *.g *.pgm *.mpf);;All files (*)</source>
         <translation>G 代码程序 (*.nc *.gcode *.ngc *.tap *.cnc *.gc *.g *.pgm *.mpf);;所有文件 (*)</translation>
     </message>
+    <message>
+        <source>Rack</source>
+        <translation>刀库</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -3304,6 +3387,458 @@ Probe T%1 instead.</source>
     <message>
         <source>cannot make the link %1</source>
         <translation>无法创建链接 %1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::RackPanel</name>
+    <message>
+        <source>Measure Rack…</source>
+        <translation>测量刀库…</translation>
+    </message>
+    <message>
+        <source>Check Rack…</source>
+        <translation>检查刀库…</translation>
+    </message>
+    <message>
+        <source>After a manual change, use the tool&apos;s stored TLO
+when it is fresh (no probe)</source>
+        <translation>手动换刀后，如果刀具的已存 TLO 未过期，
+则直接使用（不对刀）</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>The tool in the spindle</source>
+        <translation>主轴中的刀具</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s firmware</source>
+        <translation>机床的固件</translation>
+    </message>
+    <message>
+        <source>The tools the rack holds</source>
+        <translation>刀库中的刀具</translation>
+    </message>
+    <message>
+        <source>Why the rack is not understood</source>
+        <translation>无法识别刀库设置的原因</translation>
+    </message>
+    <message>
+        <source>The rack&apos;s tools</source>
+        <translation>刀库的刀具</translation>
+    </message>
+    <message>
+        <source>The tool to load</source>
+        <translation>要装入的刀具</translation>
+    </message>
+    <message>
+        <source>Load the tool</source>
+        <translation>装入刀具</translation>
+    </message>
+    <message>
+        <source>Measure every rack tool</source>
+        <translation>测量刀库中的每把刀具</translation>
+    </message>
+    <message>
+        <source>Break-test every rack tool</source>
+        <translation>对刀库中的每把刀具进行断刀检测</translation>
+    </message>
+    <message>
+        <source>Rack check tolerance in millimetres</source>
+        <translation>刀库检查公差（毫米）</translation>
+    </message>
+    <message>
+        <source>Use a fresh stored TLO after a manual change</source>
+        <translation>手动换刀后使用未过期的已存 TLO</translation>
+    </message>
+    <message>
+        <source>Rack progress</source>
+        <translation>刀库操作进度</translation>
+    </message>
+    <message>
+        <source>What the machine does now</source>
+        <translation>机床当前的动作</translation>
+    </message>
+    <message>
+        <source>Cancel the rack operation</source>
+        <translation>取消刀库操作</translation>
+    </message>
+    <message>
+        <source>The last rack operation&apos;s result</source>
+        <translation>上次刀库操作的结果</translation>
+    </message>
+    <message>
+        <source>1-6 on a Carvera C1, or tool numbers and ranges (1,2,5-8); the job check uses the same rack.</source>
+        <translation>Carvera C1 为 1-6，或刀具号及范围（1,2,5-8）；作业检查使用同一刀库。</translation>
+    </message>
+    <message>
+        <source>1-6, or none</source>
+        <translation>1-6 或 none</translation>
+    </message>
+    <message>
+        <source>Any tool: one outside the rack is a manual change</source>
+        <translation>任意刀具：不在刀库中的刀具需手动换刀</translation>
+    </message>
+    <message>
+        <source>A rack tool is always measured by the machine at its change.</source>
+        <translation>刀库中的刀具在换刀时总是由机床测量。</translation>
+    </message>
+    <message>
+        <source>%v of %m</source>
+        <translation>%v / %m</translation>
+    </message>
+    <message>
+        <source>&amp;Rack holds:</source>
+        <translation>刀库包含(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>Connect to the machine first.</source>
+        <translation>请先连接机床。</translation>
+    </message>
+    <message>
+        <source>Load T%1…</source>
+        <translation>装入 T%1…</translation>
+    </message>
+    <message>
+        <source>Break-test every rack tool against its stored TLO; the machine halts on a broken one.</source>
+        <translation>将刀库中的每把刀具与其已存 TLO 比较，进行断刀检测；遇到断刀时机床会停机。</translation>
+    </message>
+    <message>
+        <source>Change to every rack tool in turn and measure it on the tool setter.</source>
+        <translation>依次换到刀库中的每把刀具，并在对刀仪上测量。</translation>
+    </message>
+    <message>
+        <source>Change to the tool: the machine puts the one in the spindle back first.</source>
+        <translation>换到该刀具：机床会先放回主轴中的刀具。</translation>
+    </message>
+    <message>
+        <source>Spindle: unknown</source>
+        <translation>主轴：未知</translation>
+    </message>
+    <message>
+        <source>Spindle: empty</source>
+        <translation>主轴：空</translation>
+    </message>
+    <message>
+        <source>Spindle: T%1</source>
+        <translation>主轴：T%1</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>%1 — no break test</source>
+        <translation>%1 — 无断刀检测</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle already: the machine measures it again on the tool setter.</source>
+        <translation>T%1 已在主轴上：机床会在对刀仪上重新测量它。</translation>
+    </message>
+    <message>
+        <source>The machine puts T%1 back in the rack, picks T%2 and measures it on the tool setter.</source>
+        <translation>机床将 T%1 放回刀库，取出 T%2 并在对刀仪上测量。</translation>
+    </message>
+    <message>
+        <source>The machine puts T%1 back in the rack.</source>
+        <translation>机床将 T%1 放回刀库。</translation>
+    </message>
+    <message>
+        <source>T%1 has no slot in the rack: take it out of the spindle when the machine asks.</source>
+        <translation>T%1 在刀库中没有刀位：机床提示时请将其从主轴上取下。</translation>
+    </message>
+    <message>
+        <source>The machine picks T%1 from the rack and measures it on the tool setter.</source>
+        <translation>机床从刀库取出 T%1 并在对刀仪上测量。</translation>
+    </message>
+    <message>
+        <source>T%1 has no slot in the rack: put it in the spindle when the machine asks. The machine then takes its stored TLO %2 (measured %3) and does not probe it.</source>
+        <translation>T%1 在刀库中没有刀位：机床提示时请将其装入主轴。机床随后采用其已存 TLO %2（测量于 %3），不对其对刀。</translation>
+    </message>
+    <message>
+        <source>T%1 has no slot in the rack: put it in the spindle when the machine asks. The machine then measures it on the tool setter.</source>
+        <translation>T%1 在刀库中没有刀位：机床提示时请将其装入主轴。机床随后在对刀仪上测量它。</translation>
+    </message>
+    <message>
+        <source>The stored TLO is not used: %1</source>
+        <translation>不使用已存 TLO：%1</translation>
+    </message>
+    <message>
+        <source>Keep clear of the machine.</source>
+        <translation>请远离机床。</translation>
+    </message>
+    <message>
+        <source>Load T%1?</source>
+        <translation>装入 T%1？</translation>
+    </message>
+    <message>
+        <source>Loading T%1 failed</source>
+        <translation>装入 T%1 失败</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the tool table.</source>
+        <translation>刀具表中未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle with TLO %2, but it could not be recorded: %3</source>
+        <translation>T%1 已在主轴上，TLO 为 %2，但无法记录：%3</translation>
+    </message>
+    <message>
+        <source>T%1 takes its stored TLO %2 (measured %3); not probed.</source>
+        <translation>T%1 采用其已存 TLO %2（测量于 %3）；未对刀。</translation>
+    </message>
+    <message>
+        <source>T%1 measured: TLO %2, recorded in the table.</source>
+        <translation>T%1 已测量：TLO %2，已记录到刀具表。</translation>
+    </message>
+    <message>
+        <source>Stopping after this tool…</source>
+        <translation>将在此刀具后停止…</translation>
+    </message>
+    <message>
+        <source>Stop the machine?</source>
+        <translation>停止机床？</translation>
+    </message>
+    <message>
+        <source>Stop the machine now? It halts; Unlock afterwards.</source>
+        <translation>立即停止机床？机床将停机；之后请解锁。</translation>
+    </message>
+    <message>
+        <source>Check the rack?</source>
+        <translation>检查刀库？</translation>
+    </message>
+    <message>
+        <source>Measure the rack?</source>
+        <translation>测量刀库？</translation>
+    </message>
+    <message>
+        <source>The machine changes to %1 in turn and break-tests each against its stored TLO (tolerance %2). A broken tool halts the machine and stops the check. After the last, T%3 goes back in the rack.</source>
+        <translation>机床将依次换到 %1，并将每把刀具与其已存 TLO 比较，进行断刀检测（公差 %2）。遇到断刀时机床会停机并终止检查。最后一把完成后，T%3 会放回刀库。</translation>
+    </message>
+    <message>
+        <source>The machine changes to %1 in turn, putting the tool in the spindle back in the rack first, and measures each on the tool setter; each TLO is recorded in the table. T%2 stays in the spindle.</source>
+        <translation>机床将依次换到 %1（先将主轴中的刀具放回刀库），并在对刀仪上逐一测量；每个 TLO 都会记录到刀具表中。T%2 将留在主轴上。</translation>
+    </message>
+    <message>
+        <source>T%1: %2</source>
+        <translation>T%1：%2</translation>
+    </message>
+    <message>
+        <source>Not run: %1.</source>
+        <translation>未执行：%1。</translation>
+    </message>
+    <message>
+        <source>A measurement could not be stored in the table, so the rack was stopped: %1</source>
+        <translation>有一次测量无法保存到刀具表中，因此刀库操作已停止：%1</translation>
+    </message>
+    <message>
+        <source>The rack was stopped</source>
+        <translation>刀库操作已停止</translation>
+    </message>
+    <message>
+        <source>The rack check failed</source>
+        <translation>刀库检查失败</translation>
+    </message>
+    <message>
+        <source>Measuring the rack failed</source>
+        <translation>测量刀库失败</translation>
+    </message>
+    <message>
+        <source>Rack checked: 1 tool passed.</source>
+        <translation>刀库已检查：1 把刀具通过。</translation>
+    </message>
+    <message>
+        <source>Rack checked: %1 tools passed.</source>
+        <translation>刀库已检查：%1 把刀具通过。</translation>
+    </message>
+    <message>
+        <source>Rack measured: 1 tool, its TLO recorded in the table.</source>
+        <translation>刀库已测量：1 把刀具，其 TLO 已记录到刀具表。</translation>
+    </message>
+    <message>
+        <source>Rack measured: %1 tools, each TLO recorded in the table.</source>
+        <translation>刀库已测量：%1 把刀具，每个 TLO 都已记录到刀具表。</translation>
+    </message>
+    <message>
+        <source>The tool</source>
+        <translation>该刀具</translation>
+    </message>
+    <message>
+        <source>%1 may be broken: the check stopped and the machine halted.</source>
+        <translation>%1 可能已断：检查已停止，机床已停机。</translation>
+    </message>
+    <message>
+        <source>%1 may be broken</source>
+        <translation>%1 可能已断</translation>
+    </message>
+    <message>
+        <source>%1 may be broken. The rack check stopped there, and the machine has halted.</source>
+        <translation>%1 可能已断。刀库检查在此停止，机床已停机。</translation>
+    </message>
+    <message>
+        <source>The table marks %1 until it is measured again: once it is checked or replaced and the machine unlocked (the strip&apos;s Unlock, Ctrl+Shift+U), measure it with Load Tool or Measure Rack.</source>
+        <translation>刀具表会一直标记 %1，直到重新测量：检查或更换刀具并解锁机床（状态栏的“解锁”，Ctrl+Shift+U）后，请用“装入”或“测量刀库”测量它。</translation>
+    </message>
+    <message>
+        <source>Slot</source>
+        <translation>刀位</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>刀具</translation>
+    </message>
+    <message>
+        <source>Stored TLO</source>
+        <translation>已存 TLO</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>测量时间</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>In millimetres</source>
+        <translation>单位：毫米</translation>
+    </message>
+    <message>
+        <source>This session&apos;s Measure Rack or Check Rack, with the TLO measured (mm)</source>
+        <translation>本次会话中“测量刀库”或“检查刀库”的结果，附测得的 TLO（mm）</translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation>从未</translation>
+    </message>
+    <message>
+        <source>failed break test</source>
+        <translation>断刀检测未通过</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>手动设置</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>已测量</translation>
+    </message>
+    <message>
+        <source>T%1 · in spindle</source>
+        <translation>T%1 · 在主轴上</translation>
+    </message>
+    <message>
+        <source>Not in the table</source>
+        <translation>不在刀具表中</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>等待中</translation>
+    </message>
+    <message>
+        <source>Checking…</source>
+        <translation>正在检查…</translation>
+    </message>
+    <message>
+        <source>Measuring…</source>
+        <translation>正在测量…</translation>
+    </message>
+    <message>
+        <source>Measured: %1</source>
+        <translation>已测量：%1</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <source>Passed: %1</source>
+        <translation>通过：%1</translation>
+    </message>
+    <message>
+        <source>BROKEN</source>
+        <translation>断刀</translation>
+    </message>
+    <message>
+        <source>BROKEN: %1</source>
+        <translation>断刀：%1</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>Not run</source>
+        <translation>未执行</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::RackSequence</name>
+    <message>
+        <source>The rack holds no tools: say which tools it holds (1-6 on a C1) first.</source>
+        <translation>刀库中没有刀具：请先说明刀库中有哪些刀具（C1 为 1-6）。</translation>
+    </message>
+    <message>
+        <source>The machine runs %1, whose M491.1 only measures a tool again without comparing: a rack check there would pass a broken tool. Install the community firmware to check the rack.</source>
+        <translation>机床运行的是 %1，其 M491.1 只会重新测量刀具而不作比较：在此进行刀库检查会让断刀通过。请安装社区固件以检查刀库。</translation>
+    </message>
+    <message>
+        <source>The machine did not say which firmware it runs, so Toffee cannot tell whether its M491.1 compares a tool with its TLO. The rack was not checked.</source>
+        <translation>机床未说明其运行的固件，因此 Toffee 无法判断其 M491.1 是否将刀具与其 TLO 比较。未检查刀库。</translation>
+    </message>
+    <message>
+        <source>%1 have no stored TLO to compare with. Measure them first (Measure Rack); nothing moved.</source>
+        <translation>%1 没有可供比较的已存 TLO。请先测量它们（测量刀库）；机床未移动。</translation>
+    </message>
+    <message>
+        <source>Measuring the rack…</source>
+        <translation>正在测量刀库…</translation>
+    </message>
+    <message>
+        <source>Checking the rack…</source>
+        <translation>正在检查刀库…</translation>
+    </message>
+    <message>
+        <source>The machine is busy or not connected.</source>
+        <translation>机床正忙或未连接。</translation>
+    </message>
+    <message>
+        <source>Measuring T%1 (%2 of %3)…</source>
+        <translation>正在测量 T%1（第 %2 把，共 %3 把）…</translation>
+    </message>
+    <message>
+        <source>Checking T%1 (%2 of %3)…</source>
+        <translation>正在检查 T%1（第 %2 把，共 %3 把）…</translation>
+    </message>
+    <message>
+        <source>The connection to the machine was closed; the rack was not finished.</source>
+        <translation>与机床的连接已关闭；刀库操作未完成。</translation>
+    </message>
+    <message>
+        <source>Cancelled after the last tool: every tool was done, and T%1 stays in the spindle.</source>
+        <translation>在最后一把刀具后取消：所有刀具均已完成，T%1 留在主轴上。</translation>
+    </message>
+    <message>
+        <source>Cancelled: the rack was stopped after T%1, which is in the spindle.</source>
+        <translation>已取消：刀库操作在 T%1 之后停止，T%1 在主轴上。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference is %3 now: the comparison would mean nothing. Measure the rack again (Measure Rack).</source>
+        <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，但机床的基准现在为 %3：比较将毫无意义。请重新测量刀库（测量刀库）。</translation>
+    </message>
+    <message>
+        <source>Putting T%1 back in the rack…</source>
+        <translation>正在将 T%1 放回刀库…</translation>
+    </message>
+    <message>
+        <source>Every tool passed, but the last one could not be put back: %1</source>
+        <translation>所有刀具均已通过，但最后一把无法放回：%1</translation>
     </message>
 </context>
 <context>
@@ -3759,10 +4294,6 @@ Probe T%1 instead.</source>
         <translation>Toffee，刀具偏置管理器。</translation>
     </message>
     <message>
-        <source>Connect to the built-in emulator.</source>
-        <translation>连接到内置模拟器。</translation>
-    </message>
-    <message>
         <source>Connect to the machine on PORT.</source>
         <translation>连接到 PORT 上的机床。</translation>
     </message>
@@ -3793,6 +4324,14 @@ Probe T%1 instead.</source>
     <message>
         <source>Check the G-code PROGRAM against the table once the window is open.</source>
         <translation>窗口打开后，对照刀具表检查 G 代码程序 PROGRAM。</translation>
+    </message>
+    <message>
+        <source>Connect to the built-in emulator, which takes a real machine&apos;s time for a tool change and a probe.</source>
+        <translation>连接到内置模拟器，其换刀和对刀所需时间与真实机床相同。</translation>
+    </message>
+    <message>
+        <source>The firmware the built-in emulator plays: community (default) or stock.</source>
+        <translation>内置模拟器模拟的固件：community（默认）或 stock。</translation>
     </message>
 </context>
 </TS>
