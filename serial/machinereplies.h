@@ -6,6 +6,7 @@
 #include <optional>
 
 #include <QByteArrayView>
+#include <QCoreApplication>
 #include <QString>
 
 #include "model/limits.h"
@@ -67,6 +68,9 @@ struct BreakTestReading
 // differs (docs/CARVERA.md § 7); an unknown firmware is offered only what both do.
 struct FirmwareInfo
 {
+    Q_DECLARE_TR_FUNCTIONS(Toffee::FirmwareInfo)
+
+public:
     enum class Kind { Unknown, Community, Stock };
     Kind kind = Kind::Unknown;
     QString version; // as the machine printed it; empty when it did not say

@@ -92,6 +92,7 @@ private Q_SLOTS:
     void checksAProgramAndShowsItsToolsAndFindings()
     {
         MainWindow window;
+        window.setLibrary({ m_dir.filePath(u"library.sqlite"_s) }); // this test's history only
         QVERIFY(window.openFile(kExample));
         window.show();
         QVERIFY(window.findChild<QAction *>(u"actionCheckJob"_s));
@@ -141,6 +142,7 @@ private Q_SLOTS:
     void aLongCheckShowsProgressKeepsTheWindowAnsweringAndCancels()
     {
         MainWindow window;
+        window.setLibrary({ m_dir.filePath(u"library.sqlite"_s) }); // this test's history only
         QVERIFY(window.openFile(kExample));
         window.show();
         const QString big = m_dir.filePath(u"big.nc"_s);
@@ -178,6 +180,7 @@ private Q_SLOTS:
     void preparesTheProgramWithASideBySidePreview()
     {
         MainWindow window;
+        window.setLibrary({ m_dir.filePath(u"library.sqlite"_s) }); // this test's history only
         QVERIFY(window.openFile(kExample));
         window.show();
         const QString program = write(m_dir, u"two.nc"_s, kProgram.left(kProgram.indexOf("M6 T9")) + "M30\n");
@@ -235,6 +238,7 @@ private Q_SLOTS:
     void aMachineWithoutARackMakesEveryChangeManual()
     {
         MainWindow window;
+        window.setLibrary({ m_dir.filePath(u"library.sqlite"_s) }); // this test's history only
         QVERIFY(window.openFile(kExample));
         window.show();
         JobCheckDialog *dialog = window.openJobCheck(write(m_dir, u"rack.nc"_s, "M6 T2\nG1 Z-1 F100\nM30\n"));
@@ -256,6 +260,7 @@ private Q_SLOTS:
     void aProgramDroppedOnTheWindowIsChecked()
     {
         MainWindow window;
+        window.setLibrary({ m_dir.filePath(u"library.sqlite"_s) }); // this test's history only
         QVERIFY(window.openFile(kExample));
         window.show();
         QVERIFY(window.acceptDrops());
@@ -283,6 +288,7 @@ private Q_SLOTS:
     void anotherControllerIsCheckedByItsOwnRules()
     {
         MainWindow window;
+        window.setLibrary({ m_dir.filePath(u"library.sqlite"_s) }); // this test's history only
         QVERIFY(window.openFile(kExample));
         window.show();
         JobCheckDialog *dialog = window.openJobCheck(
