@@ -3777,6 +3777,30 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <source>Not run</source>
         <translation>Nicht ausgeführt</translation>
     </message>
+    <message>
+        <source>Empty</source>
+        <translation>Leer</translation>
+    </message>
+    <message>
+        <source>Empty the Spindle…</source>
+        <translation>Spindel leeren …</translation>
+    </message>
+    <message>
+        <source>The machine puts T%1 back in the rack; the spindle stays empty.</source>
+        <translation>Die Maschine legt T%1 ins Magazin zurück; die Spindel bleibt leer.</translation>
+    </message>
+    <message>
+        <source>Take the tool out of the spindle when the machine asks; the spindle stays empty.</source>
+        <translation>Nehmen Sie das Werkzeug aus der Spindel, wenn die Maschine dazu auffordert; die Spindel bleibt leer.</translation>
+    </message>
+    <message>
+        <source>Empty the spindle?</source>
+        <translation>Spindel leeren?</translation>
+    </message>
+    <message>
+        <source>The spindle is empty.</source>
+        <translation>Die Spindel ist leer.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::RackSequence</name>

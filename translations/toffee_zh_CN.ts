@@ -3777,6 +3777,30 @@ when it is fresh (no probe)</source>
         <source>Not run</source>
         <translation>未执行</translation>
     </message>
+    <message>
+        <source>Empty</source>
+        <translation>空</translation>
+    </message>
+    <message>
+        <source>Empty the Spindle…</source>
+        <translation>清空主轴…</translation>
+    </message>
+    <message>
+        <source>The machine puts T%1 back in the rack; the spindle stays empty.</source>
+        <translation>机床将 T%1 放回刀库；主轴保持为空。</translation>
+    </message>
+    <message>
+        <source>Take the tool out of the spindle when the machine asks; the spindle stays empty.</source>
+        <translation>机床提示时，从主轴上取下刀具；主轴保持为空。</translation>
+    </message>
+    <message>
+        <source>Empty the spindle?</source>
+        <translation>清空主轴？</translation>
+    </message>
+    <message>
+        <source>The spindle is empty.</source>
+        <translation>主轴已空。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::RackSequence</name>

@@ -78,7 +78,9 @@ void RackPanel::buildLayout()
     m_holdsError->setWordWrap(true);
     m_holdsError->setStyleSheet(u"color: #c01c28;"_s);
     setupTable();
-    m_toolSpin->setRange(1, Limits::kMaxToolNumber);
+    // T-1 empties the spindle: the tool in it goes back to the rack (or out, by hand).
+    m_toolSpin->setRange(Limits::kEmptySpindle, Limits::kMaxToolNumber);
+    m_toolSpin->setSpecialValueText(tr("Empty"));
     m_toolSpin->setPrefix(u"T"_s);
     m_toolSpin->setToolTip(tr("Any tool: one outside the rack is a manual change"));
     takeWheelOnlyWhenFocused(m_toolSpin);
@@ -187,7 +189,8 @@ void RackPanel::updateState()
 {
     const bool ours = m_sequence || m_loading;
     const bool ready = m_connection->canOperate() && m_rack && !ours;
-    m_load->setText(tr("Load T%1…").arg(m_toolSpin->value()));
+    m_load->setText(m_toolSpin->value() == Limits::kEmptySpindle ? tr("Empty the Spindle…")
+                                                                 : tr("Load T%1…").arg(m_toolSpin->value()));
     m_load->setEnabled(ready);
     m_measure->setEnabled(ready && !m_rack->isEmpty());
     const auto refusal = checkRefusal();

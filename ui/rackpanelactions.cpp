@@ -35,7 +35,12 @@ QString RackPanel::loadQuestion(int tool, const std::optional<double> &stored, c
     const bool fromRack = spindle && *spindle >= 0 && m_rack->contains(*spindle);
     const bool toRack = m_rack->contains(tool);
     QStringList text;
-    if (spindle == tool) {
+    if (tool == Limits::kEmptySpindle) {
+        text << (fromRack
+                ? tr("The machine puts T%1 back in the rack; the spindle stays empty.").arg(*spindle)
+                : tr("Take the tool out of the spindle when the machine asks; the spindle stays "
+                     "empty."));
+    } else if (spindle == tool) {
         text << tr("T%1 is in the spindle already: the machine measures it again on the tool setter.")
                     .arg(tool);
     } else if (fromRack && toRack) {
@@ -75,7 +80,8 @@ void RackPanel::loadTool(int tool, bool confirm)
     std::optional<double> stored;
     QString why;
     // A rack tool is always measured: the firmware calibrates it at every change, whatever it is told.
-    if (m_useStored->isChecked() && !m_rack->contains(tool) && m_connection->activeTool() != tool) {
+    if (tool >= 0 && m_useStored->isChecked() && !m_rack->contains(tool)
+        && m_connection->activeTool() != tool) {
         const auto facts = factsFromTable(m_document->table());
         const auto restorable = restorableTlo(tool, facts.value(tool), QDateTime::currentDateTimeUtc(),
             AppSettings().staleAfterDays(), machineReference());
@@ -84,8 +90,10 @@ void RackPanel::loadTool(int tool, bool confirm)
         else
             why = restorable.error().message;
     }
+    const QString title
+        = tool == Limits::kEmptySpindle ? tr("Empty the spindle?") : tr("Load T%1?").arg(tool);
     if (confirm
-        && QMessageBox::question(this, tr("Load T%1?").arg(tool), loadQuestion(tool, stored, why),
+        && QMessageBox::question(this, title, loadQuestion(tool, stored, why),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
@@ -125,6 +133,8 @@ void RackPanel::loadFinished(const SessionResult &r, int tool, const std::option
         m_result->setText(tr("T%1 is in the spindle with TLO %2, but it could not be recorded: %3")
                               .arg(tool)
                               .arg(tlo, recorded.error().message));
+    else if (tool == Limits::kEmptySpindle)
+        m_result->setText(tr("The spindle is empty."));
     else if (storedAge)
         m_result->setText(
             tr("T%1 takes its stored TLO %2 (measured %3); not probed.").arg(tool).arg(tlo, *storedAge));

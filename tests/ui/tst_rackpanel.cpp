@@ -65,7 +65,7 @@ private Q_SLOTS:
         // Each step asserts what the operator sees; a failed one ends the story there.
         for (auto step : { &TestRackPanel::measureTheRack, &TestRackPanel::checkTheRackWithABrokenTool,
                  &TestRackPanel::replaceTheBrokenToolAndLoadIt,
-                 &TestRackPanel::loadAManualToolWithItsStoredTlo }) {
+                 &TestRackPanel::loadAManualToolWithItsStoredTlo, &TestRackPanel::emptyTheSpindle }) {
             (this->*step)(s);
             if (QTest::currentTestFailed())
                 return;
@@ -270,6 +270,26 @@ private:
         QCOMPARE(s.text(u"rackSpindleLabel"_s), u"Spindle: T8"_s);
         QCOMPARE(*s.table().find(8)->measuredTlo, -5.25);
         QCOMPARE(s.events(EventKind::Restore).size(), 1);
+    }
+
+    void emptyTheSpindle(RackStation &s)
+    {
+        // The end of the day: T8, a manual tool, comes out; nothing is probed or recorded.
+        auto *spin = s.find<QSpinBox>(u"rackToolSpin"_s);
+        spin->setValue(spin->minimum());
+        QCOMPARE(spin->text(), u"Empty"_s);
+        QCOMPARE(s.find<QPushButton>(u"rackLoadButton"_s)->text(), u"Empty the Spindle…"_s);
+        const int probes = int(s.events(EventKind::Probe).size());
+        QString question;
+        answerNextBox(QMessageBox::Yes, &question);
+        s.click(u"rackLoadButton"_s);
+        QVERIFY2(question.contains(u"Take the tool out of the spindle"_s), qPrintable(question));
+        QVERIFY(QTest::qWaitFor([&s] { return s.idle(); }, kLongWaitMs));
+        QVERIFY(s.sent.contains("M6 T-1"));
+        QCOMPARE(s.machine()->tool(), -1);
+        QCOMPARE(s.text(u"rackResultLabel"_s), u"The spindle is empty."_s);
+        QTRY_COMPARE(s.text(u"rackSpindleLabel"_s), u"Spindle: empty"_s);
+        QCOMPARE(int(s.events(EventKind::Probe).size()), probes);
     }
 };
 
