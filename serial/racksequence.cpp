@@ -14,17 +14,13 @@ using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-namespace {
-
-QString toolList(const QList<int> &tools)
+QString RackSequence::toolNames(const QList<int> &tools)
 {
     QStringList names;
     for (int t : tools)
         names << u"T"_s + QString::number(t);
     return names.join(u", "_s);
 }
-
-} // namespace
 
 RackSequence::Plan RackSequence::plan(
     Mode mode, const QList<int> &rack, const ToolTable &table, double tolerance)
@@ -67,7 +63,7 @@ std::optional<QString> RackSequence::refusal(const Plan &plan, const FirmwareInf
     }
     if (!unmeasured.isEmpty())
         return tr("%1 have no stored TLO to compare with. Measure them first (Measure Rack); nothing moved.")
-            .arg(toolList(unmeasured));
+            .arg(toolNames(unmeasured));
     return std::nullopt;
 }
 

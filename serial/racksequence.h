@@ -61,6 +61,9 @@ public:
     // Why `plan` cannot run on a machine with this firmware, or nothing: checked before anything moves.
     [[nodiscard]] static std::optional<QString> refusal(const Plan &plan, const FirmwareInfo &firmware);
 
+    // "T1, T2, T5", for messages.
+    [[nodiscard]] static QString toolNames(const QList<int> &tools);
+
     RackSequence(MachineConnection *connection, Plan plan, QObject *parent = nullptr);
 
     // False (with the reason in outcome()) when it cannot start: refused, or the machine is busy or halted.

@@ -20,14 +20,6 @@ namespace Toffee {
 
 namespace {
 
-QString toolList(const QList<int> &tools)
-{
-    QStringList names;
-    for (int t : tools)
-        names << u"T"_s + QString::number(t);
-    return names.join(u", "_s);
-}
-
 QList<int> toolsIn(const QList<RackStep> &steps, RackStep::State state)
 {
     QList<int> tools;
@@ -62,7 +54,7 @@ void RackPanel::runSequence(RackSequence::Mode mode, bool confirm)
         QMessageBox::warning(this, title, *why);
         return;
     }
-    const QString tools = toolList(*m_rack);
+    const QString tools = RackSequence::toolNames(*m_rack);
     const QString question = check
         ? tr(
             "The machine changes to %1 in turn and break-tests each against its stored TLO (tolerance %2). A "
@@ -137,7 +129,8 @@ void RackPanel::sequenceFinished(const SessionResult &outcome)
     refreshTable();
     const QList<RackStep> &steps = sequence->steps();
     const QList<int> notRun = toolsIn(steps, RackStep::State::NotRun);
-    const QString notDone = notRun.isEmpty() ? QString() : u" "_s + tr("Not run: %1.").arg(toolList(notRun));
+    const QString notDone
+        = notRun.isEmpty() ? QString() : u" "_s + tr("Not run: %1.").arg(RackSequence::toolNames(notRun));
     const bool check = sequence->mode() == RackSequence::Mode::Check;
     if (!m_recordFailure.isEmpty()) {
         const QString text = tr("A measurement could not be stored in the table, so the rack was stopped: %1")
