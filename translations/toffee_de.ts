@@ -4127,6 +4127,10 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <source>Check the machine, then Unlock ($X).</source>
         <translation>Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
     </message>
+    <message>
+        <source>not reported</source>
+        <translation>nicht gemeldet</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolDocument</name>

@@ -4127,6 +4127,10 @@ when it is fresh (no probe)</source>
         <source>Check the machine, then Unlock ($X).</source>
         <translation>检查机床，然后解锁（$X）。</translation>
     </message>
+    <message>
+        <source>not reported</source>
+        <translation>未报告</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolDocument</name>

@@ -223,14 +223,19 @@ void TloPanel::updateTlo()
         return;
     m_tool->setText(
         m_activeTool ? (*m_activeTool < 0 ? tr("none") : u"T"_s + QString::number(*m_activeTool)) : u"—"_s);
-    if (m_offsets) {
+    if (m_offsets && m_offsets->onlyTlo) {
+        // The stock firmware reports the TLO alone: the MCS Zs behind it are not known, not zero.
+        m_reference->setText(tr("not reported"));
+        m_current->setText(tr("not reported"));
+    } else if (m_offsets) {
         // The firmware starts with both at zero; no tool setter is at MCS Z 0, so zero means never probed.
         m_reference->setText(
             m_offsets->referenceMz == 0.0 ? tr("not measured") : millimetres(m_offsets->referenceMz));
         m_current->setText(
             m_offsets->currentMz == 0.0 ? tr("not measured") : millimetres(m_offsets->currentMz));
     }
-    const bool neverMeasured = m_offsets && m_offsets->referenceMz == 0.0 && m_offsets->currentMz == 0.0;
+    const bool neverMeasured
+        = m_offsets && !m_offsets->onlyTlo && m_offsets->referenceMz == 0.0 && m_offsets->currentMz == 0.0;
     if (!m_machineTlo) {
         m_tlo->setText(u"—"_s);
         m_tloNote->clear();

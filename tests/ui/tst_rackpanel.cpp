@@ -139,6 +139,15 @@ private Q_SLOTS:
         QVERIFY(!check->isEnabled());
         QVERIFY2(check->toolTip().contains(u"would pass a broken tool"_s), qPrintable(check->toolTip()));
         QVERIFY(s.find<QPushButton>(u"rackMeasureButton"_s)->isEnabled()); // measuring is the same on both
+        // Measured there, the TLO comes from the status report alone: the strip claims no MCS Z.
+        answerNextBox(QMessageBox::Yes);
+        s.click(u"rackMeasureButton"_s);
+        QVERIFY(QTest::qWaitFor([&s] { return s.idle(); }, kLongWaitMs));
+        QCOMPARE(s.rackCell(1, RackPanel::StoredColumn), u"-33.388"_s);
+        QVERIFY(!s.table().find(2)->referenceMz);
+        QCOMPARE(s.text(u"referenceMzLabel"_s), u"not reported"_s);
+        QCOMPARE(s.text(u"currentMzLabel"_s), u"not reported"_s);
+        QCOMPARE(s.text(u"tloLabel"_s), u"-22.700 mm"_s); // T6's, the last measured
 
         s.window.connection()->disconnectFromMachine();
         QVERIFY(!s.find<QGroupBox>(u"breakTestGroup"_s)->isHidden());
