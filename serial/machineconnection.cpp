@@ -120,15 +120,17 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
             Q_EMIT connectFailed(result.message);
             return;
         }
+        // The offsets connecting read are the machine's before anyone is told it is connected: a caller that
+        // starts an operation on stateChanged (toffee-cli) checks a stored TLO against them.
+        if (result.tlo)
+            m_offsets = result.tlo;
         setState(State::Connected);
         if (result.status) {
             setHalt(result.status->isAlarm(), result.status->haltReason);
             Q_EMIT statusChanged(*result.status);
         }
-        if (result.tlo) {
-            m_offsets = result.tlo;
+        if (result.tlo)
             Q_EMIT offsetsChanged(*result.tlo, result.tool.value_or(-1));
-        }
     });
 }
 

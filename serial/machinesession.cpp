@@ -386,7 +386,7 @@ void MachineSession::changeTool(int tool, Done done, std::optional<double> store
     if (m_tool == tool && tool >= 0)
         return probe(std::move(done)); // the firmware ignores M6 to the tool it holds
     done = recording(std::move(done), RecordingKind::Probe); // M6 probes the new tool
-    run("M6 T" + QByteArray::number(tool), MachineLink::kMotionTimeoutMs, done,
+    run("M6 T" + QByteArray::number(tool), kToolChangeTimeoutMs, done,
         [this, done, tool](const CommandReply &reply) {
             m_tool = tool;
             if (tool == Limits::kEmptySpindle)
@@ -414,7 +414,7 @@ void MachineSession::changeTool(int tool, Done done, std::optional<double> store
 // M6 T H: a manual change that takes the table's TLO; the machine's report must then show it.
 void MachineSession::changeToStoredTlo(int tool, double tlo, Done done)
 {
-    run("M6 T" + QByteArray::number(tool) + " H" + number(tlo), MachineLink::kMotionTimeoutMs, done,
+    run("M6 T" + QByteArray::number(tool) + " H" + number(tlo), kToolChangeTimeoutMs, done,
         [this, done, tool, tlo](const CommandReply &) {
             m_tool = tool;
             SessionResult changed;

@@ -52,6 +52,9 @@ public:
     static constexpr double kMinTolerance = Limits::kMinBreakTolerance; // the firmware halts below this
     static constexpr double kDefaultTolerance = Limits::kDefaultBreakTolerance;
     static constexpr double kMaxOffset = Limits::kMaxMachineOffsetMm;
+    // M6: a manual change waits for the operator to take one tool out and put the next in, and a rack change
+    // drops, picks and measures; either may take minutes.
+    static constexpr int kToolChangeTimeoutMs = 600000;
 
     explicit MachineSession(MachineLink *link, QObject *parent = nullptr);
 

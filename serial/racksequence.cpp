@@ -178,16 +178,23 @@ void RackSequence::testInSpindle(int index)
 {
     const RackStep &step = m_plan.steps.at(index);
     const auto machineReference = m_connection->lastOffsets();
-    if (step.storedReferenceMz && machineReference && !machineReference->onlyTlo
-        && std::fabs(*step.storedReferenceMz - machineReference->referenceMz) > 0.0005) {
+    // A tool setter scatters by a few micrometres from one start to the next: a reference that moved by less
+    // than a quarter of the tolerance shifts every comparison by that little, and the check goes on.
+    const double moved = step.storedReferenceMz && machineReference && !machineReference->onlyTlo
+        ? std::fabs(*step.storedReferenceMz - machineReference->referenceMz)
+        : 0.0;
+    if (moved > m_plan.tolerance / 4) {
         SessionResult refused;
         refused.outcome = SessionResult::Outcome::MachineError;
-        refused.message = tr("T%1's stored TLO was measured against reference MCS Z %2, but the machine's "
-                             "reference is %3 now: the comparison would mean nothing. Measure the rack again "
-                             "(Measure Rack).")
-                              .arg(step.tool)
-                              .arg(millimetres(*step.storedReferenceMz, false))
-                              .arg(millimetres(machineReference->referenceMz, false));
+        refused.message
+            = tr("T%1's stored TLO was measured against reference MCS Z %2, but the machine's reference (the "
+                 "first tool it measured since it started) is at %3 now, %4 away: every comparison would be "
+                 "off by that much. Check the reference tool and the tool setter: a damaged or changed "
+                 "reference tool moves it. If they are sound, measure the rack again (Measure Rack).")
+                  .arg(step.tool)
+                  .arg(millimetres(*step.storedReferenceMz, false))
+                  .arg(millimetres(machineReference->referenceMz, false))
+                  .arg(millimetres(moved));
         return settle(index, RackStep::State::Failed, refused);
     }
     QPointer<RackSequence> self(this);

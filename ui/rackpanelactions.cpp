@@ -84,7 +84,7 @@ void RackPanel::loadTool(int tool, bool confirm)
         && m_connection->activeTool() != tool) {
         const auto facts = factsFromTable(m_document->table());
         const auto restorable = restorableTlo(tool, facts.value(tool), QDateTime::currentDateTimeUtc(),
-            AppSettings().staleAfterDays(), machineReference());
+            AppSettings().staleAfterDays(), machineReference(), ReferenceCheck::Required);
         if (restorable)
             stored = restorable.value();
         else

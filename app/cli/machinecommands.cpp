@@ -14,6 +14,7 @@
 #include "app/cli/machineoptions.h"
 #include "model/formats/tablefile.h"
 #include "model/library/weartrend.h"
+#include "model/limits.h"
 #include "model/numberformat.h"
 #include "serial/machineconnection.h"
 #include "serial/machinesession.h"
@@ -275,6 +276,15 @@ MachineRun::Done MachineRun::recorded()
     return [this](const SessionResult &r) {
         if (!r.ok())
             return finishWith(r);
+        if (m_call.command == u"change-tool" && r.tool == Limits::kEmptySpindle) {
+            // change-tool -1: the spindle was emptied, and there is nothing to measure or record.
+            if (m_call.json)
+                printJson(
+                    m_call, QJsonObject { { u"tool"_s, Limits::kEmptySpindle }, { u"tlo"_s, QJsonValue() } });
+            else
+                m_call.out << "The spindle is empty." << Qt::endl;
+            return finishWith(r);
+        }
         if (record(r))
             printTlo(m_call, r, m_trendWarning);
         finishWith(r);
@@ -337,7 +347,11 @@ bool MachineRun::restore()
         refusal
             = u"the machine has no reference tool measured since it started, and a stored TLO is only right "
               "against its own reference: probe the reference tool first."_s;
-    else if (tool->referenceMz && std::fabs(*tool->referenceMz - machineReference) > 0.0005)
+    else if (!tool->referenceMz)
+        refusal
+            = u"T%1's TLO in the table does not say which reference it was measured against, so it cannot be "
+              "checked against the machine's: probe T%1 instead."_s.arg(m_options.tool);
+    else if (std::fabs(*tool->referenceMz - machineReference) > 0.0005)
         refusal = u"T%1's TLO %2 mm was measured against reference MCS Z %3, but the machine's reference is "
                   u"%4 now "
                   "(%5 mm apart): probe T%1 instead."_s.arg(m_options.tool)

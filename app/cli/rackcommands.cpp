@@ -187,16 +187,13 @@ std::optional<double> storedTloForChange(
         if (auto added = addLibraryFacts(facts, *o.library, o.machine, { o.tool }); !added)
             return note(added.error().message);
     }
+    // 0: the machine has measured no reference since it started; the stock firmware reports none.
     const auto &offsets = connection.lastOffsets();
-    std::optional<double> reference;
-    if (offsets && !offsets->onlyTlo) {
-        if (offsets->referenceMz == 0.0)
-            return note(u"the machine has no reference tool measured since it started, and a stored TLO is "
-                        "only right against its own reference: T%1 is measured at its change."_s.arg(o.tool));
-        reference = offsets->referenceMz;
-    }
-    auto tlo
-        = restorableTlo(o.tool, facts.value(o.tool), QDateTime::currentDateTimeUtc(), o.staleDays, reference);
+    const std::optional<double> reference = offsets && !offsets->onlyTlo && offsets->referenceMz != 0.0
+        ? std::optional<double>(offsets->referenceMz)
+        : std::nullopt;
+    auto tlo = restorableTlo(o.tool, facts.value(o.tool), QDateTime::currentDateTimeUtc(), o.staleDays,
+        reference, ReferenceCheck::Required);
     if (!tlo)
         return note(tlo.error().message);
     return tlo.value();

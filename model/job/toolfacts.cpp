@@ -18,7 +18,7 @@ bool ToolFacts::isFresh(const QDateTime &now, int staleDays) const
 }
 
 Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &now, int staleDays,
-    std::optional<double> machineReferenceMz)
+    std::optional<double> machineReferenceMz, ReferenceCheck check)
 {
     if (!facts.inTable)
         return Error { tr("T%1 is not in the table: it is measured at its change.").arg(tool) };
@@ -35,6 +35,15 @@ Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &
             "T%1's stored TLO is older than the stale limit (%2 d): it is measured at its change.")
                            .arg(tool)
                            .arg(staleDays) };
+    if (check == ReferenceCheck::Required && !machineReferenceMz)
+        return Error { tr("the machine reports no reference (none measured since it started, or a firmware "
+                          "that does not say), so T%1's stored TLO cannot be checked against it: it is "
+                          "measured at its change.")
+                           .arg(tool) };
+    if (check == ReferenceCheck::Required && !facts.referenceMz)
+        return Error { tr("T%1's stored TLO does not say which reference it was measured against: it is "
+                          "measured at its change.")
+                           .arg(tool) };
     if (machineReferenceMz && facts.referenceMz
         && std::fabs(*facts.referenceMz - *machineReferenceMz) > 0.0005)
         return Error { tr(

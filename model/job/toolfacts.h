@@ -38,11 +38,15 @@ struct ToolFacts
     static constexpr qint64 kClockSkewSeconds = 300;
 };
 
+// How a stored TLO's reference is checked: against the machine's when both are known (a program prepared at a
+// desk), or required to be known on both sides and equal (a change made now, on the machine).
+enum class ReferenceCheck { IfKnown, Required };
+
 // The TLO a change to `tool` may take instead of a probe: stored, measured (not set by hand), not failed in a
-// break test, fresh, and measured against the machine's reference when both are known. Else why not, in words
+// break test, fresh, and measured against the machine's reference (as `check` says). Else why not, in words
 // ("… it is measured at its change.").
 [[nodiscard]] Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &now,
-    int staleDays, std::optional<double> machineReferenceMz);
+    int staleDays, std::optional<double> machineReferenceMz, ReferenceCheck check = ReferenceCheck::IfKnown);
 
 // Each tool of the table.
 [[nodiscard]] QHash<int, ToolFacts> factsFromTable(const ToolTable &table);

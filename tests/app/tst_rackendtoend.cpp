@@ -130,6 +130,34 @@ private Q_SLOTS:
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.err.contains("T3 is in the rack"));
         QCOMPARE(historyCount(u"probe"_s), probes + 1);
+        // The end of the day: the spindle emptied, nothing measured.
+        run = machine({ u"change-tool"_s, u"-1"_s }, false);
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(run.out, QByteArray("The spindle is empty.\n"));
+        QCOMPARE(json(machine({ u"status"_s })).value(u"tool"_s).toInt(), -1);
+        QCOMPARE(historyCount(u"probe"_s), probes + 1);
+    }
+
+    void aStoredTloIsTakenOnlyAgainstItsOwnReference()
+    {
+        {
+            Emulator emulator(tty(), {});
+            QVERIFY(emulator.started());
+            QCOMPARE(machine({ u"measure-rack"_s }).exitCode, 0);
+            QCOMPARE(machine({ u"change-tool"_s, u"8"_s }).exitCode, 0); // T8 against T1's reference
+        }
+        // Switched off and on: T3 is measured first and becomes the reference. T8's stored TLO is against T1.
+        Emulator emulator(tty(), {});
+        QVERIFY(emulator.started());
+        QCOMPARE(machine({ u"change-tool"_s, u"3"_s }).exitCode, 0);
+        const int probes = historyCount(u"probe"_s);
+        const Run run = machine({ u"change-tool"_s, u"8"_s, u"--use-stored-tlo"_s });
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.err.contains("reference MCS Z"), run.err.constData());
+        QCOMPARE(historyCount(u"probe"_s), probes + 1); // probed, not restored
+        QCOMPARE(historyCount(u"restore"_s), 0);
+        // A table row that does not say its reference cannot be restored either.
+        QCOMPARE(machine({ u"restore"_s, u"1"_s }).exitCode, 2); // the example's T1: no reference in the file
     }
 
     void theStockFirmwareHasNoRackCheck()
@@ -150,6 +178,13 @@ private Q_SLOTS:
         run = machine({ u"status"_s }, false);
         QVERIFY2(run.out.contains("Makera stock firmware 1.0.1: no break test, no manual offset"),
             run.out.constData());
+        // It reports no reference: a stored TLO cannot be checked against it, so a manual change probes.
+        QCOMPARE(machine({ u"change-tool"_s, u"8"_s }).exitCode, 0);
+        QCOMPARE(machine({ u"change-tool"_s, u"2"_s }).exitCode, 0);
+        run = machine({ u"change-tool"_s, u"8"_s, u"--use-stored-tlo"_s });
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.err.contains("reports no reference"), run.err.constData());
+        QCOMPARE(historyCount(u"restore"_s), 0);
         run = machine({ u"break-test"_s });
         QCOMPARE(run.exitCode, 2);
         run = machine({ u"set-tlo"_s, u"--z"_s, u"-3"_s });

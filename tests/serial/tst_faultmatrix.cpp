@@ -97,7 +97,9 @@ void injectFault(CarveraEmulator &emulator, int operation, int fault)
             emulator.halt(3); // already halted: every command gets "Alarm lock"
         break;
     case LateAnswer:
-        emulator.injectFault(Fault::Delay, target, 800); // beyond any limit the test set
+        // Beyond any limit the test set: 600 ms for a probe, 3 s for a tool change (a manual one waits for
+        // the operator).
+        emulator.injectFault(Fault::Delay, target, target == QByteArray("M6") ? 3500 : 800);
         break;
     case ToolBroken:
         emulator.injectFault(Fault::BreakTool, target, 0.5); // the tool in the spindle loses 0.5 mm

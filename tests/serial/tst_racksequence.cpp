@@ -235,6 +235,47 @@ private Q_SLOTS:
                 before.find(t) ? before.find(t)->measuredTlo : std::nullopt);
     }
 
+    void aReferenceAFewMicronsOffStillChecks()
+    {
+        ToolTable measured;
+        {
+            Station yesterday;
+            yesterday.measureAll();
+            measured = yesterday.table;
+        }
+        // Switched off and on: T1, the reference, measures 2 um shorter (the setter's scatter).
+        Station today;
+        today.machine().setToolLength(1, 77.698);
+        today.table = measured;
+        RackSequence check(&today.connection, RackSequence::plan(Mode::Check, kRack, today.table, 0.1));
+        QVERIFY(today.run(check));
+        QVERIFY2(check.outcome().ok(), qPrintable(check.outcome().message));
+        QCOMPARE(today.states(check), QList<State>(6, State::Passed));
+    }
+
+    void aMovedReferenceStopsTheCheck()
+    {
+        ToolTable measured;
+        {
+            Station yesterday;
+            yesterday.measureAll();
+            measured = yesterday.table;
+        }
+        // Overnight the reference tool T1 lost 0.5 mm: every stored TLO is off by that much now.
+        Station today;
+        today.machine().breakTool(1, 0.5);
+        today.table = measured;
+        RackSequence check(&today.connection, RackSequence::plan(Mode::Check, kRack, today.table, 0.1));
+        QVERIFY(today.run(check));
+        QCOMPARE(check.outcome().outcome, Outcome::MachineError);
+        QVERIFY2(check.outcome().message.contains(u"Check the reference tool"_s),
+            qPrintable(check.outcome().message));
+        QVERIFY(check.outcome().message.contains(u"0.500 mm away"_s));
+        QCOMPARE(today.states(check).first(), State::Failed);
+        QVERIFY(today.recordings.isEmpty());
+        QVERIFY(!today.sent.contains("M491.1 H0.1")); // nothing compared against the wrong reference
+    }
+
     void cancelFinishesTheCurrentToolAndStops()
     {
         Station s;
