@@ -787,6 +787,14 @@
         <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
         <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die der Maschine ist aber %3: T%1 wird beim Wechsel vermessen.</translation>
     </message>
+    <message>
+        <source>the machine reports no reference (none measured since it started, or a firmware that does not say), so T%1&apos;s stored TLO cannot be checked against it: it is measured at its change.</source>
+        <translation>die Maschine meldet keine Referenz (seit dem Start keine vermessen, oder eine Firmware, die sie nicht angibt), daher kann die gespeicherte TLO von T%1 nicht gegen sie geprüft werden: T%1 wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO does not say which reference it was measured against: it is measured at its change.</source>
+        <translation>Bei der gespeicherten TLO von T%1 ist nicht vermerkt, gegen welche Referenz sie gemessen wurde: T%1 wird beim Wechsel vermessen.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -911,6 +919,10 @@
     <message>
         <source>The TLO it was compared against was set by hand, not measured: if that value was not the tool&apos;s real length, the tool may be whole. Look at the tool before you replace it, then probe it.</source>
         <translation>Die TLO, mit der verglichen wurde, war von Hand gesetzt, nicht gemessen: Entsprach dieser Wert nicht der wirklichen Länge des Werkzeugs, ist das Werkzeug womöglich heil. Sehen Sie sich das Werkzeug an, bevor Sie es ersetzen, und vermessen Sie es dann.</translation>
+    </message>
+    <message>
+        <source>The spindle is empty: load a tool first (Rack ▸ Load).</source>
+        <translation>Die Spindel ist leer: Wechseln Sie zuerst ein Werkzeug ein (Magazin ▸ Einwechseln).</translation>
     </message>
 </context>
 <context>
@@ -3370,6 +3382,10 @@ Vermessen Sie T%1 stattdessen.</translation>
         <source>The table does not say which reference tool T%1&apos;s TLO was measured against: make sure it is the reference the machine has now.</source>
         <translation>Die Tabelle sagt nicht, gegen welches Referenzwerkzeug die TLO von T%1 gemessen wurde: Stellen Sie sicher, dass es die Referenz ist, die die Maschine jetzt hat.</translation>
     </message>
+    <message>
+        <source>The spindle is empty: load a tool first (Rack ▸ Load).</source>
+        <translation>Die Spindel ist leer: Wechseln Sie zuerst ein Werkzeug ein (Magazin ▸ Einwechseln).</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ProgramUse</name>
@@ -3853,16 +3869,16 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation>Abgebrochen: Der Magazinvorgang wurde nach T%1 angehalten, das in der Spindel ist.</translation>
     </message>
     <message>
-        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference is %3 now: the comparison would mean nothing. Measure the rack again (Measure Rack).</source>
-        <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die Referenz der Maschine ist jetzt aber %3: Der Vergleich wäre bedeutungslos. Vermessen Sie das Magazin erneut (Magazin vermessen).</translation>
-    </message>
-    <message>
         <source>Putting T%1 back in the rack…</source>
         <translation>T%1 wird ins Magazin zurückgelegt …</translation>
     </message>
     <message>
         <source>Every tool passed, but the last one could not be put back: %1</source>
         <translation>Alle Werkzeuge haben bestanden, aber das letzte konnte nicht zurückgelegt werden: %1</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference (the first tool it measured since it started) is at %3 now, %4 away: every comparison would be off by that much. Check the reference tool and the tool setter: a damaged or changed reference tool moves it. If they are sound, measure the rack again (Measure Rack).</source>
+        <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die Referenz der Maschine (das erste seit dem Start vermessene Werkzeug) liegt jetzt aber bei %3, %4 entfernt: Jeder Vergleich wäre um so viel verschoben. Prüfen Sie das Referenzwerkzeug und den Werkzeugtaster: Ein beschädigtes oder gewechseltes Referenzwerkzeug verschiebt sie. Sind beide in Ordnung, vermessen Sie das Magazin neu (Magazin vermessen).</translation>
     </message>
 </context>
 <context>

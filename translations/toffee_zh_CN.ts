@@ -787,6 +787,14 @@
         <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s is %3: it is measured at its change.</source>
         <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，但机床的基准为 %3：换刀时将对其对刀。</translation>
     </message>
+    <message>
+        <source>the machine reports no reference (none measured since it started, or a firmware that does not say), so T%1&apos;s stored TLO cannot be checked against it: it is measured at its change.</source>
+        <translation>机床未报告基准（开机以来尚未测量，或固件不报告），因此无法核对 T%1 的已存 TLO：换刀时将重新对刀。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO does not say which reference it was measured against: it is measured at its change.</source>
+        <translation>T%1 的已存 TLO 未注明是相对哪个基准测量的：换刀时将重新对刀。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::AddToolCommand</name>
@@ -911,6 +919,10 @@
     <message>
         <source>The TLO it was compared against was set by hand, not measured: if that value was not the tool&apos;s real length, the tool may be whole. Look at the tool before you replace it, then probe it.</source>
         <translation>用于比较的 TLO 是手动设置的，而非测量所得：如果该值不是刀具的真实长度，刀具可能完好。更换前请先检查刀具，然后对刀。</translation>
+    </message>
+    <message>
+        <source>The spindle is empty: load a tool first (Rack ▸ Load).</source>
+        <translation>主轴为空：请先装入刀具（刀库 ▸ 装入）。</translation>
     </message>
 </context>
 <context>
@@ -3370,6 +3382,10 @@ Probe T%1 instead.</source>
         <source>The table does not say which reference tool T%1&apos;s TLO was measured against: make sure it is the reference the machine has now.</source>
         <translation>刀具表未记录 T%1 的 TLO 是相对于哪把基准刀具测得的：请确认它就是机床当前的基准。</translation>
     </message>
+    <message>
+        <source>The spindle is empty: load a tool first (Rack ▸ Load).</source>
+        <translation>主轴为空：请先装入刀具（刀库 ▸ 装入）。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ProgramUse</name>
@@ -3853,16 +3869,16 @@ when it is fresh (no probe)</source>
         <translation>已取消：刀库操作在 T%1 之后停止，T%1 在主轴上。</translation>
     </message>
     <message>
-        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference is %3 now: the comparison would mean nothing. Measure the rack again (Measure Rack).</source>
-        <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，但机床的基准现在为 %3：比较将毫无意义。请重新测量刀库（测量刀库）。</translation>
-    </message>
-    <message>
         <source>Putting T%1 back in the rack…</source>
         <translation>正在将 T%1 放回刀库…</translation>
     </message>
     <message>
         <source>Every tool passed, but the last one could not be put back: %1</source>
         <translation>所有刀具均已通过，但最后一把无法放回：%1</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference (the first tool it measured since it started) is at %3 now, %4 away: every comparison would be off by that much. Check the reference tool and the tool setter: a damaged or changed reference tool moves it. If they are sound, measure the rack again (Measure Rack).</source>
+        <translation>T%1 的已存 TLO 是相对基准 MCS Z %2 测量的，但机床当前的基准（开机以来测量的第一把刀）位于 %3，相差 %4：每次比较都会偏差这么多。请检查基准刀和对刀仪：基准刀损坏或被更换都会使基准移动。若两者完好，请重新测量刀库（测量刀库）。</translation>
     </message>
 </context>
 <context>

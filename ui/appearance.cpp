@@ -94,4 +94,12 @@ QColor alarmColor(const QPalette &palette)
                                                              : QColor(0xc0, 0x1c, 0x28);
 }
 
+void explainDisabled(QWidget *widget, const QString &why)
+{
+    static const char *const kOwn = "toffeeOwnToolTip";
+    if (!widget->property(kOwn).isValid())
+        widget->setProperty(kOwn, widget->toolTip());
+    widget->setToolTip(why.isEmpty() ? widget->property(kOwn).toString() : why);
+}
+
 } // namespace Toffee

@@ -20,6 +20,8 @@ void useMonospace(QWidget *widget);
 // Scrolling a panel must never change a value under the pointer: `field` (a spin box, a combo box) takes the
 // mouse wheel only once it has focus (clicked or tabbed into).
 void takeWheelOnlyWhenFocused(QWidget *field);
+// Shows `why` as the tooltip of a widget that cannot act now, and its own tooltip again once it can.
+void explainDisabled(QWidget *widget, const QString &why);
 // The red that reads as an alarm on this palette, light or dark.
 [[nodiscard]] QColor alarmColor(const QPalette &palette);
 

@@ -77,6 +77,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, ToolDocument *docu
     connect(m_connection, &MachineConnection::stateChanged, this, &BreakTestPanel::updateState);
     connect(m_connection, &MachineConnection::busyChanged, this, &BreakTestPanel::updateState);
     connect(m_connection, &MachineConnection::haltedChanged, this, &BreakTestPanel::updateState);
+    connect(m_connection, &MachineConnection::statusChanged, this, &BreakTestPanel::updateState);
     // A verdict is about one tool: it goes when another is in the spindle or the tool is measured again.
     connect(m_connection, &MachineConnection::statusChanged, this, [this](const MachineStatus &status) {
         if (status.tool && m_testedTool >= 0 && *status.tool != m_testedTool)
@@ -100,7 +101,9 @@ double BreakTestPanel::tolerance() const
 
 void BreakTestPanel::updateState()
 {
-    m_run->setEnabled(m_connection->canOperate());
+    const bool empty = m_connection->activeTool() == Limits::kEmptySpindle;
+    m_run->setEnabled(m_connection->canOperate() && !empty);
+    explainDisabled(m_run, empty ? tr("The spindle is empty: load a tool first (Rack ▸ Load).") : QString());
 }
 
 QString BreakTestPanel::referenceWarning() const
@@ -132,7 +135,7 @@ QString BreakTestPanel::referenceWarning() const
 
 void BreakTestPanel::run(bool confirm)
 {
-    if (!m_connection->canOperate())
+    if (!m_connection->canOperate() || m_connection->activeTool() == Limits::kEmptySpindle)
         return;
     m_tolerance->interpretText(); // what is typed counts
     const double tolerance = m_tolerance->value();

@@ -64,6 +64,7 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     connect(m_connection, &MachineConnection::stateChanged, this, &ProbePanel::updateState);
     connect(m_connection, &MachineConnection::busyChanged, this, &ProbePanel::updateState);
     connect(m_connection, &MachineConnection::haltedChanged, this, &ProbePanel::updateState);
+    connect(m_connection, &MachineConnection::statusChanged, this, &ProbePanel::updateState);
     // The last probe's line is only true until the next operation changes the offsets.
     connect(m_connection, &MachineConnection::busyChanged, this, [this](bool busy) {
         if (busy)
@@ -81,10 +82,17 @@ void ProbePanel::setSelectedTool(int number)
 
 void ProbePanel::updateState()
 {
-    const bool ready = m_connection->canOperate();
+    // An empty spindle: a probe would drive the spindle nose at the setter, and a restore would tell a tool
+    // changer that a tool sitting in its slot is in the spindle.
+    const bool empty = m_connection->activeTool() == Limits::kEmptySpindle;
+    const bool ready = m_connection->canOperate() && !empty;
     m_probe->setEnabled(ready);
     const Tool *tool = m_document->table().find(m_selectedTool);
     m_restore->setEnabled(ready && tool && tool->measuredTlo);
+    const QString emptyNote
+        = empty ? tr("The spindle is empty: load a tool first (Rack ▸ Load).") : QString();
+    explainDisabled(m_probe, emptyNote);
+    explainDisabled(m_restore, emptyNote);
     m_restore->setText(
         tool && tool->measuredTlo ? tr("Restore T%1 TLO").arg(m_selectedTool) : tr("Restore Known TLO"));
     // A button's setText() replaces its shortcut with the text's mnemonic (none here): Ctrl+R goes back on.
@@ -107,7 +115,7 @@ void ProbePanel::report(const SessionResult &result, const QString &title)
 
 void ProbePanel::probe(bool confirm)
 {
-    if (!m_connection->canOperate())
+    if (!m_connection->canOperate() || m_connection->activeTool() == Limits::kEmptySpindle)
         return;
     const QString name = m_connection->activeToolName();
     if (confirm
@@ -144,7 +152,7 @@ void ProbePanel::probe(bool confirm)
 
 void ProbePanel::restore(bool confirm)
 {
-    if (!m_connection->canOperate())
+    if (!m_connection->canOperate() || m_connection->activeTool() == Limits::kEmptySpindle)
         return;
     const Tool *tool = m_document->table().find(m_selectedTool);
     if (!tool || !tool->measuredTlo)

@@ -81,6 +81,7 @@ void RackPanel::buildLayout()
     // T-1 empties the spindle: the tool in it goes back to the rack (or out, by hand).
     m_toolSpin->setRange(Limits::kEmptySpindle, Limits::kMaxToolNumber);
     m_toolSpin->setSpecialValueText(tr("Empty"));
+    m_toolSpin->setValue(1); // not T0, the Carvera's probe
     m_toolSpin->setPrefix(u"T"_s);
     m_toolSpin->setToolTip(tr("Any tool: one outside the rack is a manual change"));
     takeWheelOnlyWhenFocused(m_toolSpin);

@@ -127,6 +127,9 @@ void RackPanel::loadFinished(const SessionResult &r, int tool, const std::option
             r.message + u"\n\n"_s + tr("Nothing was written to the tool table."));
         return;
     }
+    // The last sequence's word on this tool no longer holds: it was changed to and measured (or given a TLO).
+    m_results.remove(tool);
+    refreshTable();
     const auto recorded = r.recording ? m_document->record(*r.recording) : Result<void> {};
     const QString tlo = r.tlo ? millimetres(r.tlo->tlo()) : tr("unknown");
     if (!recorded)

@@ -20,6 +20,12 @@ namespace Toffee {
 
 namespace {
 
+// A machine's message ends without a full stop ("The machine halted: Abort during cycle"); more follows it.
+QString sentence(const QString &message)
+{
+    return message.isEmpty() || message.endsWith(u'.') || message.endsWith(u'!') ? message : message + u'.';
+}
+
 QList<int> toolsIn(const QList<RackStep> &steps, RackStep::State state)
 {
     QList<int> tools;
@@ -141,11 +147,11 @@ void RackPanel::sequenceFinished(const SessionResult &outcome)
     } else if (outcome.outcome == SessionResult::Outcome::ToolBroken) {
         warnBroken(outcome, notDone);
     } else if (!outcome.ok()) {
-        m_result->setText(outcome.message + notDone);
+        m_result->setText(sentence(outcome.message) + notDone);
         QMessageBox::warning(this, check ? tr("The rack check failed") : tr("Measuring the rack failed"),
-            outcome.message + notDone);
+            sentence(outcome.message) + notDone);
     } else if (sequence->isCancelled()) {
-        m_result->setText(outcome.message + notDone);
+        m_result->setText(sentence(outcome.message) + notDone);
     } else {
         const auto done = toolsIn(steps, check ? RackStep::State::Passed : RackStep::State::Measured).size();
         m_result->setText(check ? (done == 1 ? tr("Rack checked: 1 tool passed.")

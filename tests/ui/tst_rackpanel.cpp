@@ -246,6 +246,7 @@ private:
             qPrintable(s.text(u"rackResultLabel"_s)));
         QVERIFY(!s.table().find(3)->breakTestFailed); // measured again: the mark goes
         QCOMPARE(s.rackCell(2, RackPanel::MeasuredColumn), u"just now"_s);
+        QCOMPARE(s.rackCell(2, RackPanel::ResultColumn), QString()); // the check's BROKEN no longer holds
         QCOMPARE(s.events(EventKind::Probe).size(), 7);
     }
 
@@ -299,6 +300,11 @@ private:
         QCOMPARE(s.text(u"rackResultLabel"_s), u"The spindle is empty."_s);
         QTRY_COMPARE(s.text(u"rackSpindleLabel"_s), u"Spindle: empty"_s);
         QCOMPARE(int(s.events(EventKind::Probe).size()), probes);
+        // Nothing to probe, restore or break-test in an empty spindle: the Machine dock says so.
+        for (const QString &button : { u"probeButton"_s, u"restoreButton"_s, u"runBreakTestButton"_s }) {
+            QVERIFY2(!s.find<QPushButton>(button)->isEnabled(), qPrintable(button));
+            QVERIFY(s.find<QPushButton>(button)->toolTip().startsWith(u"The spindle is empty"_s));
+        }
     }
 };
 
