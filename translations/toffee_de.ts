@@ -3817,6 +3817,10 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <source>The spindle is empty.</source>
         <translation>Die Spindel ist leer.</translation>
     </message>
+    <message>
+        <source>The machine has no reference tool yet: T%1, measured first, becomes it, and every TLO is measured against it.</source>
+        <translation>Die Maschine hat noch kein Referenzwerkzeug: T%1, das zuerst vermessen wird, wird es, und jede TLO wird gegen es gemessen.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::RackSequence</name>

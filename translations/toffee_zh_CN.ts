@@ -3817,6 +3817,10 @@ when it is fresh (no probe)</source>
         <source>The spindle is empty.</source>
         <translation>主轴已空。</translation>
     </message>
+    <message>
+        <source>The machine has no reference tool yet: T%1, measured first, becomes it, and every TLO is measured against it.</source>
+        <translation>机床尚无基准刀：最先测量的 T%1 将成为基准刀，所有 TLO 都相对它测量。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::RackSequence</name>

@@ -164,6 +164,8 @@ private:
         s.click(u"rackMeasureButton"_s);
         QVERIFY2(question.contains(u"T1, T2, T3, T4, T5, T6"_s) && question.contains(u"Keep clear"_s),
             qPrintable(question));
+        // A machine just started: the first tool measured becomes its reference, and the question says so.
+        QVERIFY2(question.contains(u"T1, measured first, becomes it"_s), qPrintable(question));
         QVERIFY(s.find<QProgressBar>(u"rackProgress"_s)->isVisible());
         QCOMPARE(s.find<QProgressBar>(u"rackProgress"_s)->maximum(), 6);
         QVERIFY(s.find<QPushButton>(u"rackCancelButton"_s)->isVisible());
