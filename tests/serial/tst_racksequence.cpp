@@ -77,6 +77,14 @@ struct Station
     }
 };
 
+// The rack as a station measured it yesterday, on a machine switched off since.
+ToolTable measuredYesterday()
+{
+    Station yesterday;
+    yesterday.measureAll();
+    return yesterday.table;
+}
+
 } // namespace
 
 class TestRackSequence : public QObject
@@ -237,12 +245,7 @@ private Q_SLOTS:
 
     void aReferenceAFewMicronsOffStillChecks()
     {
-        ToolTable measured;
-        {
-            Station yesterday;
-            yesterday.measureAll();
-            measured = yesterday.table;
-        }
+        const ToolTable measured = measuredYesterday();
         // Switched off and on: T1, the reference, measures 2 um shorter (the setter's scatter).
         Station today;
         today.machine().setToolLength(1, 77.698);
@@ -255,12 +258,7 @@ private Q_SLOTS:
 
     void aMovedReferenceStopsTheCheck()
     {
-        ToolTable measured;
-        {
-            Station yesterday;
-            yesterday.measureAll();
-            measured = yesterday.table;
-        }
+        const ToolTable measured = measuredYesterday();
         // Overnight the reference tool T1 lost 0.5 mm: every stored TLO is off by that much now.
         Station today;
         today.machine().breakTool(1, 0.5);
