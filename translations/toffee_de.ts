@@ -3821,6 +3821,10 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <source>The machine has no reference tool yet: T%1, measured first, becomes it, and every TLO is measured against it.</source>
         <translation>Die Maschine hat noch kein Referenzwerkzeug: T%1, das zuerst vermessen wird, wird es, und jede TLO wird gegen es gemessen.</translation>
     </message>
+    <message>
+        <source>The machine stopped during T%1&apos;s step: look which tool is in the spindle and that the rack holds the others before you Unlock, then measure the tool in the spindle.</source>
+        <translation>Die Maschine hat während des Schritts von T%1 angehalten: Sehen Sie nach, welches Werkzeug in der Spindel steckt und ob das Magazin die übrigen hält, bevor Sie entsperren; vermessen Sie dann das Werkzeug in der Spindel.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::RackSequence</name>

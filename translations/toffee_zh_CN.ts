@@ -3821,6 +3821,10 @@ when it is fresh (no probe)</source>
         <source>The machine has no reference tool yet: T%1, measured first, becomes it, and every TLO is measured against it.</source>
         <translation>机床尚无基准刀：最先测量的 T%1 将成为基准刀，所有 TLO 都相对它测量。</translation>
     </message>
+    <message>
+        <source>The machine stopped during T%1&apos;s step: look which tool is in the spindle and that the rack holds the others before you Unlock, then measure the tool in the spindle.</source>
+        <translation>机床在 T%1 的步骤中停止：解锁前请目视检查主轴上是哪把刀、刀库是否装有其余刀具，然后对主轴上的刀具对刀。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::RackSequence</name>

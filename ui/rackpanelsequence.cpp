@@ -156,9 +156,18 @@ void RackPanel::sequenceFinished(const SessionResult &outcome)
     } else if (outcome.outcome == SessionResult::Outcome::ToolBroken) {
         warnBroken(outcome, notDone);
     } else if (!outcome.ok()) {
+        // Stopped or failed in the middle of a tool's step, a change may be half done: the machine's word on
+        // which tool it holds is not enough.
+        const QList<int> failed = toolsIn(steps, RackStep::State::Failed);
+        const QString look = failed.isEmpty() || !m_connection->isHalted() ? QString()
+                                                                           : u"\n\n"_s
+                + tr("The machine stopped during T%1's step: look which tool is in the spindle and that the "
+                     "rack "
+                     "holds the others before you Unlock, then measure the tool in the spindle.")
+                      .arg(failed.first());
         m_result->setText(sentence(outcome.message) + notDone);
         QMessageBox::warning(this, check ? tr("The rack check failed") : tr("Measuring the rack failed"),
-            sentence(outcome.message) + notDone);
+            sentence(outcome.message) + notDone + look);
     } else if (sequence->isCancelled()) {
         m_result->setText(sentence(outcome.message) + notDone);
     } else {

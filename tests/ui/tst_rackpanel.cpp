@@ -72,31 +72,6 @@ private Q_SLOTS:
         }
     }
 
-    void cancelLetsTheCurrentToolFinishThenStops()
-    {
-        RackStation s;
-        s.connect();
-        s.machine()->setTiming({ 300, 0, 300 });
-        answerNextBox(QMessageBox::Yes);
-        s.click(u"rackMeasureButton"_s);
-        QVERIFY(QTest::qWaitFor(
-            [&s] { return s.rackCell(1, RackPanel::ResultColumn) == u"Measuring…"_s; }, kLongWaitMs));
-        s.click(u"rackCancelButton"_s);
-        QCOMPARE(s.find<QPushButton>(u"rackCancelButton"_s)->text(), u"Stopping after this tool…"_s);
-        QVERIFY(s.window.connection()->isBusy()); // T2 is still being measured
-        QVERIFY(QTest::qWaitFor([&s] { return s.idle(); }, kLongWaitMs));
-        QCOMPARE(s.column(RackPanel::ResultColumn).mid(2), QStringList(4, u"Not run"_s));
-        QVERIFY(s.rackCell(0, RackPanel::ResultColumn).startsWith(u"Measured: "_s));
-        QVERIFY(s.rackCell(1, RackPanel::ResultColumn).startsWith(u"Measured: "_s));
-        QVERIFY2(s.text(u"rackResultLabel"_s).contains(u"Not run: T3, T4, T5, T6."_s),
-            qPrintable(s.text(u"rackResultLabel"_s)));
-        QVERIFY(s.table().find(2) && s.table().find(2)->measuredTlo);
-        QVERIFY(!s.table().find(3));
-        QVERIFY(!s.machine()->isHalted());
-        QVERIFY(!s.find<QProgressBar>(u"rackProgress"_s)->isVisible());
-        QVERIFY(s.find<QPushButton>(u"rackMeasureButton"_s)->isEnabled()); // nothing hangs
-    }
-
     void aRackThatDoesNotParseSaysWhyAndOffersNothing()
     {
         RackStation s;
