@@ -138,19 +138,28 @@ void RackSequence::next()
         check(m_current);
 }
 
-void RackSequence::measure(int index)
+// A step's callback: nothing once the sequence is gone; the offsets a result reports are announced first.
+template<typename Next> MachineSession::Done RackSequence::step(Next next)
 {
     QPointer<RackSequence> self(this);
-    m_connection->session()->changeTool(m_plan.steps.at(index).tool, [self, index](const SessionResult &r) {
+    return [self, next](const SessionResult &r) {
         if (!self)
             return;
         self->m_connection->announce(r);
-        if (!r.ok() || !r.recording)
-            return self->settle(index, RackStep::State::Failed, r);
-        self->m_plan.steps[index].measuredTlo = r.recording->tlo;
-        Q_EMIT self->recorded(r);
-        self->settle(index, RackStep::State::Measured, r);
-    });
+        next(r);
+    };
+}
+
+void RackSequence::measure(int index)
+{
+    m_connection->session()->changeTool(
+        m_plan.steps.at(index).tool, step([this, index](const SessionResult &r) {
+            if (!r.ok() || !r.recording)
+                return settle(index, RackStep::State::Failed, r);
+            m_plan.steps[index].measuredTlo = r.recording->tlo;
+            Q_EMIT recorded(r);
+            settle(index, RackStep::State::Measured, r);
+        }));
 }
 
 void RackSequence::check(int index)
@@ -160,28 +169,24 @@ void RackSequence::check(int index)
     const bool hasReference = offsets && (offsets->onlyTlo || offsets->referenceMz != 0.0);
     if (m_connection->activeTool() == tool && hasReference)
         return testInSpindle(index);
-    QPointer<RackSequence> self(this);
     // The change measures the tool too (and a tool already in the spindle is measured where it is, so that a
     // machine just switched on has its reference again); that measurement is not stored: a broken tool's
     // would replace the TLO it is about to be compared with.
-    m_connection->session()->changeTool(tool, [self, index](const SessionResult &r) {
-        if (!self)
-            return;
-        self->m_connection->announce(r);
+    m_connection->session()->changeTool(tool, step([this, index](const SessionResult &r) {
         if (!r.ok())
-            return self->settle(index, RackStep::State::Failed, r);
-        self->testInSpindle(index);
-    });
+            return settle(index, RackStep::State::Failed, r);
+        testInSpindle(index);
+    }));
 }
 
 void RackSequence::testInSpindle(int index)
 {
-    const RackStep &step = m_plan.steps.at(index);
+    const RackStep &current = m_plan.steps.at(index);
     const auto machineReference = m_connection->lastOffsets();
     // A tool setter scatters by a few micrometres from one start to the next: a reference that moved by less
     // than a quarter of the tolerance shifts every comparison by that little, and the check goes on.
-    const double moved = step.storedReferenceMz && machineReference && !machineReference->onlyTlo
-        ? std::fabs(*step.storedReferenceMz - machineReference->referenceMz)
+    const double moved = current.storedReferenceMz && machineReference && !machineReference->onlyTlo
+        ? std::fabs(*current.storedReferenceMz - machineReference->referenceMz)
         : 0.0;
     if (moved > m_plan.tolerance / 4) {
         SessionResult refused;
@@ -191,56 +196,43 @@ void RackSequence::testInSpindle(int index)
                  "first tool it measured since it started) is at %3 now, %4 away: every comparison would be "
                  "off by that much. Check the reference tool and the tool setter: a damaged or changed "
                  "reference tool moves it. If they are sound, measure the rack again (Measure Rack).")
-                  .arg(step.tool)
-                  .arg(millimetres(*step.storedReferenceMz, false))
+                  .arg(current.tool)
+                  .arg(millimetres(*current.storedReferenceMz, false))
                   .arg(millimetres(machineReference->referenceMz, false))
                   .arg(millimetres(moved));
         return settle(index, RackStep::State::Failed, refused);
     }
-    QPointer<RackSequence> self(this);
-    const double tolerance = m_plan.tolerance;
-    MachineSession *session = m_connection->session();
     // The machine keeps one TLO, the spindle tool's: the stored one goes in, and M491.1 compares with it.
-    session->setTlo(*step.storedTlo, [self, index, tolerance, session](const SessionResult &set) {
-        if (!self)
-            return;
-        self->m_connection->announce(set);
-        if (!set.ok())
-            return self->settle(index, RackStep::State::Failed, set);
-        session->breakTest(tolerance, [self, index](const SessionResult &r) {
-            if (!self)
-                return;
-            self->m_connection->announce(r);
+    m_connection->session()->setTlo(*current.storedTlo, step([this, index](const SessionResult &set) {
+        if (!set.ok() || !m_connection->session())
+            return settle(index, RackStep::State::Failed, set);
+        m_connection->session()->breakTest(m_plan.tolerance, step([this, index](const SessionResult &r) {
             if (r.breakTest)
-                self->m_plan.steps[index].measuredTlo = r.breakTest->newTlo;
+                m_plan.steps[index].measuredTlo = r.breakTest->newTlo;
             if (r.recording)
-                Q_EMIT self->recorded(r);
+                Q_EMIT recorded(r);
             const bool broken = r.outcome == SessionResult::Outcome::ToolBroken;
-            self->settle(index,
+            settle(index,
                 r.ok()       ? RackStep::State::Passed
                     : broken ? RackStep::State::Broken
                              : RackStep::State::Failed,
                 r);
-        });
-    });
+        }));
+    }));
 }
 
 void RackSequence::putBack()
 {
     m_connection->updateOperation(tr("Putting T%1 back in the rack…").arg(m_plan.steps.last().tool));
-    QPointer<RackSequence> self(this);
-    m_connection->session()->changeTool(Limits::kEmptySpindle, [self](const SessionResult &r) {
-        if (!self)
-            return;
-        self->m_connection->announce(r);
+    m_connection->session()->changeTool(Limits::kEmptySpindle, step([this](const SessionResult &r) {
         if (!r.ok()) {
             SessionResult failed = r;
             failed.message
                 = tr("Every tool passed, but the last one could not be put back: %1").arg(r.message);
-            return self->finish(failed);
+            return finish(failed);
         }
-        self->finish(SessionResult {});
-    });
+        finish(SessionResult {});
+    }));
 }
 
 void RackSequence::settle(int index, RackStep::State state, const SessionResult &result)
