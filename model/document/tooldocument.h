@@ -6,6 +6,7 @@
 
 #include "model/document/tooltablemodel.h"
 #include "model/formats/tablefile.h"
+#include "model/library/outboxpayload.h"
 
 namespace Toffee {
 
@@ -62,6 +63,22 @@ public:
     // A new tool with the next free number and its default pocket.
     [[nodiscard]] Tool newTool() const;
 
+    // A machine's table kept in a library (librarydocument.cpp). Save writes the tools that changed since
+    // they were read, each over the version read, so that nothing another station wrote is overwritten.
+    [[nodiscard]] bool isLibraryTable() const { return !m_base.machine.isEmpty(); }
+    [[nodiscard]] QString libraryMachine() const { return m_base.machine; }
+    void openLibraryTable(const StoredTable &stored);
+    // The tools that differ from what the library held when they were read.
+    [[nodiscard]] ToolWrites libraryWrites() const;
+    // After a write: each written tool is what the library holds now; with nothing left to write the table
+    // is saved. Writes kept in the outbox count as saved here; the library checks them when they are sent.
+    void markWritten(const ToolWrites &writes, const WriteOutcome &outcome);
+    // Another station's change. A tool not edited here takes theirs, as one undoable step; one edited here is
+    // merged field by field. Returns the tools that cannot be merged: the operator chooses (resolveConflict).
+    QList<ToolConflict> takeRemote(const StoredTable &latest);
+    // Theirs replaces the tool here (one undoable step); mine stays, to be written over theirs at Save.
+    void resolveConflict(const ToolConflict &conflict, bool keepMine);
+
 Q_SIGNALS:
     void modifiedChanged(bool modified);
     void filePathChanged(const QString &path);
@@ -72,11 +89,14 @@ private:
     // `changed` replaces the tool with its number, or is added, as one undoable step named `text`.
     void pushChange(const Tool &changed, const QString &text);
     void setFile(const QString &path, TableFormat format);
+    void setBaseRow(int number, const std::optional<Tool> &tool, qint64 version);
+    void cleanWhenWritten();
 
     ToolTableModel m_model;
     QUndoStack m_undoStack;
     QString m_filePath;
     TableFormat m_fileFormat = TableFormat::Json;
+    StoredTable m_base; // a library table's tools as last read or written
 };
 
 } // namespace Toffee

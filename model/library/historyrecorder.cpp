@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/library/historyrecorder.h"
 
+#include "model/library/librarywatcher.h"
+
+using namespace Qt::StringLiterals;
+
 namespace Toffee {
 
 HistoryRecorder::HistoryRecorder(QObject *parent)
@@ -8,24 +12,75 @@ HistoryRecorder::HistoryRecorder(QObject *parent)
 {
     m_retry.setInterval(kRetryMs);
     connect(&m_retry, &QTimer::timeout, this, &HistoryRecorder::flush);
+    // A shared library's server can go away between writes: the station says so before the operator's next
+    // measurement finds out.
+    m_health.setInterval(kRetryMs);
+    connect(&m_health, &QTimer::timeout, this, &HistoryRecorder::checkConnection);
 }
 
-HistoryRecorder::~HistoryRecorder() = default;
+HistoryRecorder::~HistoryRecorder()
+{
+    delete m_watcher;
+}
+
+void HistoryRecorder::closeLibrary()
+{
+    delete std::exchange(m_watcher, nullptr);
+    m_library.reset();
+    m_health.stop();
+}
 
 Result<void> HistoryRecorder::setLocation(const LibraryLocation &location, Library::Options options)
 {
-    m_library.reset();
+    closeLibrary();
     m_location = location;
     m_options = options;
+    countOutbox();
     auto opened = Library::open(location, options);
     if (!opened) {
         fail(opened.error().message);
         return opened.error();
     }
-    m_library = opened.takeValue();
+    attach(opened.takeValue());
     flush();
     Q_EMIT usesChanged();
     return {};
+}
+
+void HistoryRecorder::setOutboxLocation(const LibraryLocation &location)
+{
+    m_outbox.reset();
+    m_outboxLocation = location;
+    countOutbox();
+}
+
+LibraryLocation HistoryRecorder::outboxLocation() const
+{
+    return m_outboxLocation.isSet() ? m_outboxLocation : LibraryLocation::standard();
+}
+
+void HistoryRecorder::attach(std::unique_ptr<Library> library)
+{
+    m_library = std::move(library);
+    m_watcher = new LibraryWatcher(m_library.get(), this);
+    connect(m_watcher, &LibraryWatcher::changed, this, &HistoryRecorder::libraryChanged);
+    if (m_location.isShared())
+        m_health.start();
+}
+
+bool HistoryRecorder::ensureOpen()
+{
+    if (m_library)
+        return true;
+    if (!m_location.isSet())
+        return false; // no library chosen: the events wait for one
+    auto opened = Library::open(m_location, m_options);
+    if (!opened) {
+        fail(opened.error().message);
+        return false;
+    }
+    attach(opened.takeValue());
+    return true;
 }
 
 // While the library is down, an event only joins the queue: the retry writes it, and the window does not wait
@@ -35,6 +90,9 @@ void HistoryRecorder::record(const HistoryEvent &event)
     m_pending.append(event);
     if (!m_down)
         flush();
+    else if (m_location.isShared())
+        lose(m_lastError); // into the outbox at once: a crash now loses nothing
+    Q_EMIT pendingChanged(pendingCount());
 }
 
 void HistoryRecorder::recordUse(const QList<ToolUse> &uses)
@@ -46,22 +104,24 @@ void HistoryRecorder::recordUse(const QList<ToolUse> &uses)
 
 bool HistoryRecorder::flush()
 {
-    if (m_pending.isEmpty() && m_pendingUse.isEmpty()) {
+    const bool waiting = !m_pending.isEmpty() || !m_pendingUse.isEmpty() || m_outboxCount > 0;
+    if (!waiting && (m_library || !m_location.isSet())) {
         m_retry.stop();
         return true;
     }
-    if (!m_library) {
-        if (m_location.path.isEmpty())
-            return false; // no library chosen: the events wait for one
-        auto opened = Library::open(m_location, m_options);
-        if (!opened) {
-            fail(opened.error().message);
+    if (!ensureOpen()) {
+        if (m_location.isShared() && !m_pending.isEmpty())
+            lose(m_lastError);
+        return false;
+    }
+    if (m_location.isShared() && m_outboxCount > 0) {
+        if (auto replayed = replayOutbox(); !replayed) {
+            lose(replayed.error().message);
             return false;
         }
-        m_library = opened.takeValue();
     }
     if (auto written = m_library->append(m_pending); !written) {
-        fail(written.error().message);
+        m_location.isShared() ? lose(written.error().message) : fail(written.error().message);
         return false;
     }
     const QList<HistoryEvent> done = std::exchange(m_pending, {});
@@ -78,12 +138,56 @@ bool HistoryRecorder::flush()
         Q_EMIT usesChanged();
     if (!done.isEmpty())
         Q_EMIT recorded(done);
+    Q_EMIT pendingChanged(pendingCount());
     if (m_down) {
         m_down = false;
         m_lastError.clear();
         Q_EMIT available();
     }
     return true;
+}
+
+Result<WriteOutcome> HistoryRecorder::writeTools(const ToolWrites &writes)
+{
+    if (!m_location.isShared()) {
+        if (!ensureOpen())
+            return Error { m_lastError };
+        return m_library->writeTools(writes.machine, writes.writes);
+    }
+    if (m_outboxCount > 0 || !m_library)
+        flush(); // what waits goes first, in the order it was made
+    if (m_library && m_outboxCount == 0) {
+        auto written = m_library->writeTools(writes.machine, writes.writes);
+        if (written || !m_library->isConnectionLost())
+            return written;
+        lose(written.error().message);
+    }
+    if (auto kept = keepInOutbox(u"tools"_s, toolsPayload(writes)); !kept)
+        return kept.error();
+    WriteOutcome queued;
+    queued.queued = true;
+    return queued;
+}
+
+// A shared library's write failed: when the server is gone the link is dropped (the retry opens a new one),
+// and the events that wait go to the outbox, where a crash of the station cannot take them.
+void HistoryRecorder::lose(const QString &message)
+{
+    if (m_library && m_library->isConnectionLost())
+        closeLibrary();
+    if (!m_pending.isEmpty() && keepInOutbox(u"events"_s, eventsPayload(m_pending)))
+        m_pending.clear();
+    fail(message);
+}
+
+void HistoryRecorder::checkConnection()
+{
+    if (!m_library || !m_library->isConnectionLost())
+        return;
+    closeLibrary();
+    fail(tr("The library (%1) cannot be reached: its server stopped answering. Toffee keeps what you record "
+            "and writes it when the server is back.")
+             .arg(m_location.displayName()));
 }
 
 void HistoryRecorder::fail(const QString &message)

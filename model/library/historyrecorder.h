@@ -8,12 +8,18 @@
 
 #include "model/library/historyevent.h"
 #include "model/library/library.h"
+#include "model/library/outboxpayload.h"
 
 namespace Toffee {
 
-// Writes measurement events to the library without ever holding up the table: an event the library cannot
-// take now (locked for too long, a full disk, a read-only file, a library that would not open) waits in
-// memory and is written when the library takes writes again. It says so once per outage, not once per event.
+class LibraryWatcher;
+
+// A station's link to its library. It writes measurement events without ever holding up the table: an event
+// the library cannot take now (locked for too long, a full disk, a read-only file, a library that would not
+// open) waits and is written when the library takes writes again, and it says so once per outage, not once
+// per event. For a shared library what waits is kept in the station's own SQLite library (the outbox), so it
+// outlives a crash; each event's id makes a replay write it once. It also writes machine tables, and says
+// when another station changed the library.
 class HistoryRecorder final : public QObject
 {
     Q_OBJECT
@@ -29,14 +35,23 @@ public:
     // again.
     Result<void> setLocation(const LibraryLocation &location, Library::Options options = {});
     [[nodiscard]] const LibraryLocation &location() const { return m_location; }
+    // Where a shared library's outbox is kept: the standard SQLite library unless set.
+    void setOutboxLocation(const LibraryLocation &location);
+    [[nodiscard]] LibraryLocation outboxLocation() const;
     // Null while the library is not open.
     [[nodiscard]] Library *library() const { return m_library.get(); }
 
     void record(const HistoryEvent &event);
     void recordUse(const QList<ToolUse> &uses);
+    // Writes a machine table's tools, or, with a shared library out of reach, keeps them in the outbox (the
+    // outcome says queued): they are written when it returns, and their conflicts then come as replayed().
+    [[nodiscard]] Result<WriteOutcome> writeTools(const ToolWrites &writes);
     // Tries to write what waits, now; true when nothing waits any more.
     bool flush();
-    [[nodiscard]] qsizetype pendingCount() const { return m_pending.size() + m_pendingUse.size(); }
+    [[nodiscard]] qsizetype pendingCount() const
+    {
+        return m_pending.size() + m_pendingUse.size() + m_outboxCount;
+    }
     [[nodiscard]] bool isAvailable() const { return !m_down; }
     [[nodiscard]] QString lastError() const { return m_lastError; }
 
@@ -48,16 +63,35 @@ Q_SIGNALS:
     void unavailable(const QString &message);
     // Everything that waited is written.
     void available();
+    // How many changes wait for the library changed.
+    void pendingChanged(qsizetype count);
+    // Another station (or program) changed the machine's table or history; empty: any machine.
+    void libraryChanged(const QString &machine);
+    // Tool writes that waited in the outbox were written now: what was written, and the conflicts.
+    void replayed(const QString &machine, const Toffee::WriteOutcome &outcome);
 
 private:
+    [[nodiscard]] bool ensureOpen();
+    void attach(std::unique_ptr<Library> library);
+    void closeLibrary();
+    [[nodiscard]] Result<void> keepInOutbox(const QString &kind, const QByteArray &payload);
+    [[nodiscard]] Result<void> replayOutbox();
+    void lose(const QString &message);
     void fail(const QString &message);
+    void countOutbox();
+    void checkConnection();
 
     LibraryLocation m_location;
+    LibraryLocation m_outboxLocation;
     Library::Options m_options;
     std::unique_ptr<Library> m_library;
+    std::unique_ptr<Library> m_outbox; // the station's own SQLite library, for a shared one
+    LibraryWatcher *m_watcher = nullptr;
     QList<HistoryEvent> m_pending;
     QList<ToolUse> m_pendingUse;
+    qsizetype m_outboxCount = 0;
     QTimer m_retry;
+    QTimer m_health;
     bool m_down = false;
     QString m_lastError;
 };

@@ -82,33 +82,38 @@ Result<void> Library::ensureMachines(const QStringList &names)
 
 // The rows of one batch, in one transaction with their machines: all of them or none.
 Result<int> Library::insertAll(const QString &sql, const QStringList &machines, qsizetype count,
-    const std::function<QString(QSqlQuery &, qsizetype)> &bind)
+    const std::function<QString(QSqlQuery &, qsizetype)> &bind,
+    const std::function<Result<void>(const QList<qsizetype> &)> &after)
 {
-    QSqlDatabase db = database();
-    if (!db.transaction())
-        return Error { tr("%1 cannot be written: %2").arg(m_location.path, db.lastError().text()) };
-    if (auto added = ensureMachines(machines); !added) {
-        db.rollback();
-        return added.error();
-    }
-    QSqlQuery query(db);
+    if (auto writable = checkWritable(); !writable)
+        return writable.error();
+    if (auto begun = begin(); !begun)
+        return begun.error();
+    auto fail = [this](const Error &error) {
+        rollback();
+        return error;
+    };
+    if (auto added = ensureMachines(machines); !added)
+        return fail(added.error());
+    QSqlQuery query(database());
     query.prepare(sql);
-    int written = 0;
+    QList<qsizetype> inserted;
     for (qsizetype i = 0; i < count; ++i) {
         const QString what = bind(query, i);
-        if (!query.exec()) {
-            const Error error = failure(what, query);
-            db.rollback();
-            return error;
-        }
-        written += std::max(0, query.numRowsAffected());
+        if (!query.exec())
+            return fail(failure(what, query));
+        if (query.numRowsAffected() > 0)
+            inserted.append(i);
     }
-    if (!db.commit()) {
-        const QString why = db.lastError().text();
-        db.rollback();
-        return Error { tr("%1 cannot be written: %2").arg(m_location.path, why) };
+    if (auto done = after(inserted); !done)
+        return fail(done.error());
+    if (!inserted.isEmpty()) {
+        if (auto said = announce(machines); !said)
+            return fail(said.error());
     }
-    return written;
+    if (auto done = commit(); !done)
+        return done.error();
+    return int(inserted.size());
 }
 
 Result<int> Library::append(const QList<HistoryEvent> &events)
@@ -122,18 +127,26 @@ Result<int> Library::append(const QList<HistoryEvent> &events)
     }
     const QString sql = u"INSERT INTO events ("_s + kEventColumns
         + u") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (id) DO NOTHING"_s;
-    return insertAll(sql, machines, events.size(), [&events](QSqlQuery &query, qsizetype i) {
-        const HistoryEvent &e = events.at(i);
-        query.addBindValue(e.id);
-        query.addBindValue(e.machine);
-        query.addBindValue(e.tool);
-        query.addBindValue(timeText(e.at));
-        query.addBindValue(eventKindName(e.kind));
-        for (const auto &value : { e.tlo, e.referenceMz, e.currentMz, e.tolerance, e.oldTlo, e.newTlo })
-            query.addBindValue(nullable(value));
-        query.addBindValue(e.failed ? QVariant(int(*e.failed)) : QVariant(QMetaType::fromType<int>()));
-        return tr("Recording T%1's %2").arg(e.tool).arg(eventKindName(e.kind));
-    });
+    return insertAll(
+        sql, machines, events.size(),
+        [&events](QSqlQuery &query, qsizetype i) {
+            const HistoryEvent &e = events.at(i);
+            query.addBindValue(e.id);
+            query.addBindValue(e.machine);
+            query.addBindValue(e.tool);
+            query.addBindValue(timeText(e.at));
+            query.addBindValue(eventKindName(e.kind));
+            for (const auto &value : { e.tlo, e.referenceMz, e.currentMz, e.tolerance, e.oldTlo, e.newTlo })
+                query.addBindValue(nullable(value));
+            query.addBindValue(e.failed ? QVariant(int(*e.failed)) : QVariant(QMetaType::fromType<int>()));
+            return tr("Recording T%1's %2").arg(e.tool).arg(eventKindName(e.kind));
+        },
+        [this, &events](const QList<qsizetype> &inserted) {
+            QList<HistoryEvent> fresh;
+            for (qsizetype i : inserted)
+                fresh.append(events.at(i));
+            return applyToTables(fresh);
+        });
 }
 
 Result<int> Library::appendUse(const QList<ToolUse> &uses)
@@ -147,14 +160,17 @@ Result<int> Library::appendUse(const QList<ToolUse> &uses)
     }
     const QString sql = u"INSERT INTO tool_use (id, machine, tool, recorded_at, program, cutting_seconds, "
                         "feed_path_mm) VALUES (?, ?, ?, ?, ?, ?, ?) ON CONFLICT (id) DO NOTHING"_s;
-    return insertAll(sql, machines, uses.size(), [&uses](QSqlQuery &query, qsizetype i) {
-        const ToolUse &u = uses.at(i);
-        for (const QVariant &v :
-            { QVariant(u.id), QVariant(u.machine), QVariant(u.tool), QVariant(timeText(u.at)),
-                QVariant(u.program), QVariant(u.cuttingSeconds), QVariant(u.feedPathMm) })
-            query.addBindValue(v);
-        return tr("Recording T%1's use").arg(u.tool);
-    });
+    return insertAll(
+        sql, machines, uses.size(),
+        [&uses](QSqlQuery &query, qsizetype i) {
+            const ToolUse &u = uses.at(i);
+            for (const QVariant &v :
+                { QVariant(u.id), QVariant(u.machine), QVariant(u.tool), QVariant(timeText(u.at)),
+                    QVariant(u.program), QVariant(u.cuttingSeconds), QVariant(u.feedPathMm) })
+                query.addBindValue(v);
+            return tr("Recording T%1's use").arg(u.tool);
+        },
+        [](const QList<qsizetype> &) { return Result<void>(); });
 }
 
 Result<QList<HistoryEvent>> Library::history(const HistoryQuery &q) const

@@ -11,17 +11,19 @@
 
 #include "model/library/historyevent.h"
 #include "model/library/librarylocation.h"
+#include "model/library/storedtable.h"
 #include "model/result.h"
 
 class QSqlDatabase;
+class QSqlDriver;
 class QSqlQuery;
 
 namespace Toffee {
 
-// The history library: machines, every measurement event, and what each tool cut, in an SQLite file through
-// Qt SQL (docs/LIBRARY.md has every table and column). The SQL is what PostgreSQL runs too. One Library is
-// one connection, for the thread that opened it; the window and toffee-cli can each hold one on the same file
-// at once (WAL, and a busy timeout).
+// The library: machines, their tool tables, every measurement event, and what each tool cut, in an SQLite
+// file or a shared PostgreSQL database through Qt SQL (docs/LIBRARY.md has every table and column). Both run
+// the same SQL, every statement prepared. One Library is one connection, for the thread that opened it; the
+// window and toffee-cli can each hold one on the same library at once.
 class Library
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::Library)
@@ -29,10 +31,15 @@ class Library
 
 public:
     // The schema this Toffee writes. A library with a higher version is refused, never altered.
-    static constexpr int kSchemaVersion = 1;
+    static constexpr int kSchemaVersion = 2;
+    // The channel a shared library's changes are announced on; the payload names the machine.
+    static constexpr QLatin1StringView kChannel { "toffee_library" };
     struct Options
     {
-        int busyTimeoutMs = 5000; // how long a write waits for another program's to finish
+        int busyTimeoutMs = 5000; // SQLite: how long a write waits for another program's to finish
+        int connectTimeoutS = 5; // PostgreSQL: how long to wait for the server
+        int oldestServerVersion = 0; // PostgreSQL: raises the oldest server taken (as server_version_num)
+        QString station = {}; // who writes, for updated_by: the computer's name when empty
     };
 
     // Opens the library, creating it (and its folder) when it does not exist, and brings its schema up to
@@ -43,13 +50,23 @@ public:
     ~Library();
 
     [[nodiscard]] const LibraryLocation &location() const { return m_location; }
+    // The file cannot be written, or the server's role has only read rights: every write is refused.
+    [[nodiscard]] bool isReadOnly() const { return m_readOnly; }
+    [[nodiscard]] QString station() const;
+    // Qt's driver, for its notifications (LibraryWatcher).
+    [[nodiscard]] QSqlDriver *driver() const;
+    // What the server said when it could not be reached, made into what to fix.
+    [[nodiscard]] static QString explainConnectFailure(const LibraryLocation &location, const QString &why);
+    // True when the last failure was the connection itself (the server gone), not the statement.
+    [[nodiscard]] bool isConnectionLost() const;
 
     // Adds the machine, or updates its dialect and connection.
     [[nodiscard]] Result<void> addMachine(const MachineRecord &machine);
     [[nodiscard]] Result<QList<MachineRecord>> machines() const;
     // Appends the events in one transaction (their machines added as needed): all or none. An event whose id
     // is already there is skipped, so writing a batch again after an unclear failure duplicates nothing.
-    // Returns how many were new.
+    // Each new event also updates its tool in the machine's table, when the library holds one. Returns how
+    // many were new.
     [[nodiscard]] Result<int> append(const QList<HistoryEvent> &events);
     [[nodiscard]] Result<int> appendUse(const QList<ToolUse> &uses);
     // Oldest first.
@@ -58,19 +75,52 @@ public:
     // Each tool's total cutting time on the machine, in seconds.
     [[nodiscard]] Result<QHash<int, double>> cuttingTotals(const QString &machine) const;
 
+    // Machine tables (librarytables.cpp). The machines that have one, by name.
+    [[nodiscard]] Result<QStringList> tableMachines() const;
+    [[nodiscard]] Result<StoredTable> readTable(const QString &machine) const;
+    // Puts a new table for the machine in the library; refused when it has one.
+    [[nodiscard]] Result<StoredTable> createTable(const QString &machine, const ToolTable &table);
+    // Writes the tools in one transaction. A tool whose row changed since `baseVersion` is not written but
+    // returned as a conflict with both sides; everything else is.
+    [[nodiscard]] Result<WriteOutcome> writeTools(const QString &machine, const QList<ToolWrite> &writes);
+
+    // The outbox of a station's own SQLite library: what waits for a shared library (libraryoutbox.cpp).
+    [[nodiscard]] Result<void> outboxAdd(const OutboxEntry &entry);
+    [[nodiscard]] Result<QList<OutboxEntry>> outbox(const QString &library) const;
+    [[nodiscard]] Result<void> outboxRemove(const QString &id);
+
 private:
     Library(LibraryLocation location, QString connection);
     [[nodiscard]] QSqlDatabase database() const;
-    [[nodiscard]] Result<void> prepare();
-    [[nodiscard]] Result<void> migrate(int version);
+    [[nodiscard]] Result<void> prepareSqlite();
+    [[nodiscard]] Result<void> preparePostgres();
+    [[nodiscard]] Result<void> checkNotNewer(int version) const;
+    [[nodiscard]] Result<void> migrate();
+    [[nodiscard]] Result<void> begin();
+    [[nodiscard]] Result<void> commit();
+    void rollback();
+    [[nodiscard]] Result<void> checkWritable() const;
+    [[nodiscard]] Result<void> announce(const QStringList &machines);
+    [[nodiscard]] Result<void> applyToTables(const QList<HistoryEvent> &events);
+    [[nodiscard]] Result<std::optional<StoredTool>> readRow(const QString &machine, int number) const;
+    [[nodiscard]] Result<std::optional<Units>> tableUnits(const QString &machine) const;
+    [[nodiscard]] Result<bool> putRow(
+        const QString &machine, Units units, const ToolWrite &write, qint64 currentVersion, bool exists);
     [[nodiscard]] Result<int> schemaVersion() const;
     [[nodiscard]] Error failure(const QString &what, const QSqlQuery &query) const;
     [[nodiscard]] Result<void> ensureMachines(const QStringList &names);
+    // Rows that are new (not already there by id) are passed to `after`, in the same transaction.
     [[nodiscard]] Result<int> insertAll(const QString &sql, const QStringList &machines, qsizetype count,
-        const std::function<QString(QSqlQuery &, qsizetype)> &bind);
+        const std::function<QString(QSqlQuery &, qsizetype)> &bind,
+        const std::function<Result<void>(const QList<qsizetype> &)> &after);
+
+    // A row lost to another station's write between reading it and writing it is read again, a few times.
+    static constexpr int kRaceRetries = 5;
 
     LibraryLocation m_location;
     QString m_connection;
+    Options m_options;
+    bool m_readOnly = false;
 };
 
 } // namespace Toffee

@@ -1,13 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Opening a library: what is refused before a byte is written, and the schema brought up to date.
+// A library's schema: checked before a byte is written, and brought up to date in one transaction.
 #include "model/library/library.h"
 
-#include <QAtomicInt>
-#include <QDir>
-#include <QFile>
 #include <QFileInfo>
 #include <QSqlDatabase>
-#include <QSqlDriver>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QVariant>
@@ -36,88 +32,60 @@ const QList<QStringList> kMigrations = {
         "cutting_seconds DOUBLE PRECISION NOT NULL, feed_path_mm DOUBLE PRECISION NOT NULL)"_s,
         u"CREATE INDEX tool_use_by_tool ON tool_use (machine, tool, recorded_at)"_s,
     },
+    {
+        // Machine tables: a row per tool with a version, so that a save never overwrites a change it has not
+        // seen. A removed tool stays as a row marked deleted, so that its removal has a version too.
+        u"CREATE TABLE machine_tables (machine TEXT PRIMARY KEY REFERENCES machines (name), units TEXT NOT "
+        "NULL CHECK (units IN ('mm', 'in')), created_at TEXT NOT NULL)"_s,
+        u"CREATE TABLE tools (machine TEXT NOT NULL REFERENCES machine_tables (machine), number INTEGER NOT "
+        "NULL, version INTEGER NOT NULL, deleted INTEGER NOT NULL DEFAULT 0 CHECK (deleted IN (0, 1)), "
+        "data TEXT NOT NULL, tlo DOUBLE PRECISION, updated_at TEXT NOT NULL, updated_by TEXT NOT NULL "
+        "DEFAULT '', PRIMARY KEY (machine, number))"_s,
+        // What a station could not write to a shared library yet, kept in its own SQLite library.
+        u"CREATE TABLE outbox (id TEXT PRIMARY KEY, library TEXT NOT NULL, kind TEXT NOT NULL CHECK (kind IN "
+        "('events', 'tools')), payload TEXT NOT NULL, created_at TEXT NOT NULL)"_s,
+    },
 };
 
-// An SQLite file begins with these 16 bytes; anything else at that path is not a library.
-bool looksLikeSqlite(const QString &path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return true; // let SQLite say why it cannot open it
-    return file.read(16) == QByteArrayView("SQLite format 3\0", 16);
-}
-
-QAtomicInt connectionCount;
+// PostgreSQL before 14 is past its end of life; ON CONFLICT and pg_notify are older than that.
+constexpr int kOldestServer = 140000;
 
 } // namespace
 
-Library::Library(LibraryLocation location, QString connection)
-    : m_location(std::move(location))
-    , m_connection(std::move(connection))
-{ }
-
-Library::~Library()
+Result<void> Library::begin()
 {
-    {
-        QSqlDatabase db = QSqlDatabase::database(m_connection, false);
-        db.close();
+    QSqlDatabase db = database();
+    // SQLite's IMMEDIATE takes the write lock at once: a read then a write in one transaction is then never
+    // refused for another writer's commit in between.
+    if (!m_location.isShared()) {
+        QSqlQuery query(db);
+        if (query.exec(u"BEGIN IMMEDIATE"_s))
+            return {};
+        return Error {
+            tr("%1 cannot be written: %2").arg(m_location.displayName(), query.lastError().text())
+        };
     }
-    QSqlDatabase::removeDatabase(m_connection);
+    if (!db.transaction())
+        return Error { tr("%1 cannot be written: %2").arg(m_location.displayName(), db.lastError().text()) };
+    return {};
 }
 
-QSqlDatabase Library::database() const
+Result<void> Library::commit()
 {
-    return QSqlDatabase::database(m_connection, false);
+    QSqlDatabase db = database();
+    if (db.commit())
+        return {};
+    const QString why = db.lastError().text();
+    db.rollback();
+    return Error { tr("%1 cannot be written: %2").arg(m_location.displayName(), why) };
 }
 
-Result<std::unique_ptr<Library>> Library::open(const LibraryLocation &location)
+void Library::rollback()
 {
-    return open(location, Options {});
+    database().rollback();
 }
 
-Result<std::unique_ptr<Library>> Library::open(const LibraryLocation &location, Options options)
-{
-    const QString &path = location.path;
-    const QFileInfo info(path);
-    if (info.isDir())
-        return Error { tr("%1 is a folder, not a library file. Choose a file in it, such as %2.")
-                           .arg(path, QDir(path).filePath(u"library.sqlite"_s)) };
-    if (info.exists() && !info.isFile())
-        return Error { tr("%1 is not a regular file: a library is an SQLite file.").arg(path) };
-    if (info.exists() && info.size() > 0 && !looksLikeSqlite(path))
-        return Error { tr(
-            "%1 is not a Toffee library: it is not an SQLite database. Choose another file, or move "
-            "this one away.")
-                           .arg(path) };
-    if (!info.exists() && !QDir().mkpath(info.absolutePath()))
-        return Error { tr("The folder of %1 cannot be created.").arg(path) };
-    if (!QSqlDatabase::isDriverAvailable(u"QSQLITE"_s))
-        return Error { tr("Qt's SQLite driver is missing: install libqt6sql6-sqlite.") };
-
-    const QString name = u"toffee-library-"_s + QString::number(connectionCount.fetchAndAddRelaxed(1) + 1);
-    {
-        QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, name);
-        db.setDatabaseName(path);
-        db.setConnectOptions(u"QSQLITE_BUSY_TIMEOUT="_s + QString::number(options.busyTimeoutMs));
-        if (!db.open()) {
-            const QString why = db.lastError().text();
-            db = QSqlDatabase();
-            QSqlDatabase::removeDatabase(name);
-            return Error { tr("%1 cannot be opened: %2").arg(path, why) };
-        }
-    }
-    std::unique_ptr<Library> library(new Library(location, name));
-    if (auto prepared = library->prepare(); !prepared)
-        return prepared.error();
-    return library;
-}
-
-Error Library::failure(const QString &what, const QSqlQuery &query) const
-{
-    return Error { tr("%1: %2 failed: %3").arg(m_location.path, what, query.lastError().text()) };
-}
-
-Result<void> Library::prepare()
+Result<void> Library::prepareSqlite()
 {
     QSqlQuery query(database());
     // Read first, write nothing: a damaged file, another program's database or a newer library must be left
@@ -130,13 +98,8 @@ Result<void> Library::prepare()
     auto version = schemaVersion();
     if (!version)
         return version.error();
-    if (version.value() > kSchemaVersion)
-        return Error { tr(
-            "%1 was written by a newer Toffee (library version %2; this Toffee knows up to %3). It was "
-            "not changed: use a newer Toffee with it, or choose another library.")
-                           .arg(m_location.path)
-                           .arg(version.value())
-                           .arg(kSchemaVersion) };
+    if (auto checked = checkNotNewer(version.value()); !checked)
+        return checked;
     // WAL lets the window read while toffee-cli writes, and the other way round; a read-only file stays in
     // the mode it has, and is still read.
     (void)query.exec(u"PRAGMA journal_mode = WAL"_s);
@@ -145,7 +108,51 @@ Result<void> Library::prepare()
     (void)query.exec(u"PRAGMA synchronous = NORMAL"_s);
     if (!query.exec(u"PRAGMA foreign_keys = ON"_s))
         return failure(tr("Reading the library"), query);
-    return migrate(version.value());
+    const QFileInfo info(m_location.path);
+    m_readOnly = info.exists() && !info.isWritable();
+    return m_readOnly && version.value() == kSchemaVersion ? Result<void>() : migrate();
+}
+
+Result<void> Library::preparePostgres()
+{
+    QSqlQuery query(database());
+    if (!query.exec(
+            u"SELECT current_setting('server_version_num')::integer, current_setting('server_version')"_s)
+        || !query.next())
+        return failure(tr("Reading the server's version"), query);
+    const int oldest = std::max(kOldestServer, m_options.oldestServerVersion);
+    if (query.value(0).toInt() < oldest)
+        return Error {
+            tr("The library (%1) is on PostgreSQL %2, which this Toffee does not support: it needs %3 or "
+               "newer. Upgrade the server, or use another one.")
+                .arg(m_location.displayName(), query.value(1).toString(), QString::number(oldest / 10000))
+        };
+    auto version = schemaVersion();
+    if (!version)
+        return version.error();
+    if (auto checked = checkNotNewer(version.value()); !checked)
+        return checked;
+    if (version.value() == kSchemaVersion) {
+        // A role that can read the tools but not change them gets a read-only library, and says so.
+        if (!query.exec(u"SELECT has_table_privilege('tools', 'UPDATE') AND has_table_privilege('events', "
+                        "'INSERT')"_s)
+            || !query.next())
+            return failure(tr("Reading your rights in the library"), query);
+        m_readOnly = !query.value(0).toBool();
+        return {};
+    }
+    return migrate();
+}
+
+Result<void> Library::checkNotNewer(int version) const
+{
+    if (version <= kSchemaVersion)
+        return {};
+    return Error { tr("%1 was written by a newer Toffee (library version %2; this Toffee knows up to %3). It "
+                      "was not changed: use a newer Toffee with it, or choose another library.")
+                       .arg(m_location.displayName())
+                       .arg(version)
+                       .arg(kSchemaVersion) };
 }
 
 Result<int> Library::schemaVersion() const
@@ -153,10 +160,9 @@ Result<int> Library::schemaVersion() const
     const QStringList tables = database().tables();
     if (!tables.contains(u"toffee_schema"_s)) {
         if (!tables.isEmpty())
-            return Error { tr(
-                "%1 is an SQLite database, but not a Toffee library (it has tables of its own). "
-                "Choose another file.")
-                               .arg(m_location.path) };
+            return Error { tr("%1 is a database, but not a Toffee library (it has tables of its own). Choose "
+                              "another one.")
+                               .arg(m_location.displayName()) };
         return 0;
     }
     QSqlQuery query(database());
@@ -165,24 +171,30 @@ Result<int> Library::schemaVersion() const
     return query.value(0).toInt();
 }
 
-Result<void> Library::migrate(int version)
+Result<void> Library::migrate()
 {
-    if (version == kSchemaVersion)
-        return {};
-    QSqlDatabase db = database();
-    if (!db.transaction())
-        return Error { tr("%1 cannot be written: %2").arg(m_location.path, db.lastError().text()) };
-    QSqlQuery query(db);
+    if (auto begun = begin(); !begun)
+        return begun;
+    QSqlQuery query(database());
     auto fail = [&](const QString &what) {
         const Error error = failure(what, query);
-        db.rollback();
+        rollback();
         return error;
     };
-    if (version == 0
+    // Stations that open a new shared library at once: one brings it up to date, the others wait for it and
+    // then find it done. (SQLite's IMMEDIATE transaction already does this.)
+    if (m_location.isShared() && !query.exec(u"SELECT pg_advisory_xact_lock(7406113)"_s))
+        return fail(tr("Bringing the library up to date"));
+    auto version = schemaVersion();
+    if (!version) {
+        rollback();
+        return version.error();
+    }
+    if (version.value() == 0
         && (!query.exec(u"CREATE TABLE toffee_schema (version INTEGER NOT NULL)"_s)
             || !query.exec(u"INSERT INTO toffee_schema (version) VALUES (0)"_s)))
         return fail(tr("Creating the library"));
-    for (int next = version + 1; next <= kSchemaVersion; ++next) {
+    for (int next = version.value() + 1; next <= kSchemaVersion; ++next) {
         for (const QString &statement : kMigrations.at(next - 1)) {
             if (!query.exec(statement))
                 return fail(tr("Bringing the library to version %1").arg(next));
@@ -192,9 +204,7 @@ Result<void> Library::migrate(int version)
     query.addBindValue(kSchemaVersion);
     if (!query.exec())
         return fail(tr("Bringing the library up to date"));
-    if (!db.commit())
-        return Error { tr("%1 cannot be written: %2").arg(m_location.path, db.lastError().text()) };
-    return {};
+    return commit();
 }
 
 } // namespace Toffee

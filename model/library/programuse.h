@@ -18,9 +18,10 @@ public:
     QList<ToolUse> uses; // one per tool that cut, for `machine`, now
     double rapidMm = 0.0;
 
-    // Reads the program at `path` and runs it as a `dialect` controller would. Refused, with the line, when the
-    // interpreter refuses it; nothing is to be recorded then.
-    [[nodiscard]] static Result<ProgramUse> read(const QString &path, Dialect dialect, const QString &machine);
+    // Reads the program at `path` and runs it as a `dialect` controller would. Refused, with the line, when
+    // the interpreter refuses it; nothing is to be recorded then.
+    [[nodiscard]] static Result<ProgramUse> read(
+        const QString &path, Dialect dialect, const QString &machine);
 };
 
 } // namespace Toffee

@@ -200,7 +200,7 @@ private Q_SLOTS:
         QTest::newRow("a text file") << u"text"_s << u"not an SQLite database"_s;
         QTest::newRow("a damaged SQLite file") << u"corrupt"_s << u"is damaged"_s;
         QTest::newRow("another program's database") << u"foreign"_s << u"not a Toffee library"_s;
-        QTest::newRow("a PostgreSQL URL") << u"postgresql"_s << u"PostgreSQL"_s;
+        QTest::newRow("a PostgreSQL URL with a password") << u"postgresql"_s << u"PostgreSQL password file"_s;
     }
     void refusesWhatIsNotALibraryByName()
     {
@@ -223,7 +223,7 @@ private Q_SLOTS:
             QVERIFY(raw.exec(u"CREATE TABLE recipes (name TEXT)"_s));
         }
         const QByteArray before = digest(path);
-        auto location = kind == u"postgresql" ? LibraryLocation::parse(u"postgresql://shop@server/tools"_s)
+        auto location = kind == u"postgresql" ? LibraryLocation::parse(u"postgresql://shop:secret@server/tools"_s)
                                               : Result<LibraryLocation>(LibraryLocation { path });
         QString error = location ? QString() : location.error().message;
         if (location) {

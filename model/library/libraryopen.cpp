@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Opening a library, an SQLite file or a PostgreSQL database: what is refused before a byte is written, and
+// what a failed connection tells the operator to fix.
+#include "model/library/library.h"
+
+#include <QAtomicInt>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+// An SQLite file begins with these 16 bytes; anything else at that path is not a library.
+bool looksLikeSqlite(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return true; // let SQLite say why it cannot open it
+    return file.read(16) == QByteArrayView("SQLite format 3\0", 16);
+}
+
+QAtomicInt connectionCount;
+
+QString nextConnectionName()
+{
+    return u"toffee-library-"_s + QString::number(connectionCount.fetchAndAddRelaxed(1) + 1);
+}
+
+Result<void> checkSqlitePath(const QString &path)
+{
+    const QFileInfo info(path);
+    if (info.isDir())
+        return Error { Library::tr("%1 is a folder, not a library file. Choose a file in it, such as %2.")
+                           .arg(path, QDir(path).filePath(u"library.sqlite"_s)) };
+    if (info.exists() && !info.isFile())
+        return Error { Library::tr("%1 is not a regular file: a library is an SQLite file.").arg(path) };
+    if (info.exists() && info.size() > 0 && !looksLikeSqlite(path))
+        return Error { Library::tr(
+            "%1 is not a Toffee library: it is not an SQLite database. Choose another file, or move "
+            "this one away.")
+                           .arg(path) };
+    if (!info.exists() && !QDir().mkpath(info.absolutePath()))
+        return Error { Library::tr("The folder of %1 cannot be created.").arg(path) };
+    if (!QSqlDatabase::isDriverAvailable(u"QSQLITE"_s))
+        return Error { Library::tr("Qt's SQLite driver is missing: install libqt6sql6-sqlite.") };
+    return {};
+}
+
+} // namespace
+
+// What libpq said, turned into what to fix. The server's own words stay at the end, for whoever runs it.
+QString Library::explainConnectFailure(const LibraryLocation &location, const QString &why)
+{
+    const QString where = location.displayName();
+    const QString user = location.user.isEmpty() ? tr("your login name") : location.user;
+    QString what;
+    if (why.contains(u"password authentication failed"_s) || why.contains(u"no password supplied"_s))
+        what = tr("The server refused %1's password. Put the right one in the PostgreSQL password file "
+                  "(~/.pgpass, or the file PGPASSFILE names): Toffee never stores one.")
+                   .arg(user);
+    else if (why.contains(u"does not exist"_s) && why.contains(u"database"_s))
+        what = tr("The server has no database \"%1\". Check the name in the URL, or have it created "
+                  "(createdb %1; docs/LIBRARY.md).")
+                   .arg(location.database);
+    else if (why.contains(u"role"_s) && why.contains(u"does not exist"_s))
+        what = tr("The server has no user \"%1\". Check the user in the URL, or have the role created "
+                  "(docs/LIBRARY.md).")
+                   .arg(user);
+    else if (why.contains(u"translate host name"_s))
+        what
+            = tr("The server's name \"%1\" is not known here. Check the host in the URL.").arg(location.host);
+    else if (why.contains(u"SSL"_s, Qt::CaseInsensitive))
+        what = tr("The connection's encryption failed. Check sslmode in the URL against the server's "
+                  "settings.");
+    else
+        what = tr("The server cannot be reached. Check that it is running and that the host and port in the "
+                  "URL are right.");
+    return tr("The library (%1) cannot be opened. %2 (The server said: %3)").arg(where, what, why.trimmed());
+}
+
+Result<std::unique_ptr<Library>> Library::open(const LibraryLocation &location)
+{
+    return open(location, Options {});
+}
+
+Result<std::unique_ptr<Library>> Library::open(const LibraryLocation &location, Options options)
+{
+    const bool shared = location.isShared();
+    if (!shared) {
+        if (auto checked = checkSqlitePath(location.path); !checked)
+            return checked.error();
+    } else if (!QSqlDatabase::isDriverAvailable(u"QPSQL"_s)) {
+        return Error { tr("Qt's PostgreSQL driver is missing: install libqt6sql6-psql to use %1.")
+                           .arg(location.displayName()) };
+    }
+    const QString name = nextConnectionName();
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(shared ? u"QPSQL"_s : u"QSQLITE"_s, name);
+        if (shared) {
+            db.setHostName(location.host);
+            if (location.port > 0)
+                db.setPort(location.port);
+            db.setUserName(location.user);
+            db.setDatabaseName(location.database);
+            QStringList connect = location.options.split(u';', Qt::SkipEmptyParts);
+            connect << u"connect_timeout="_s + QString::number(std::max(1, options.connectTimeoutS));
+            db.setConnectOptions(connect.join(u';'));
+        } else {
+            db.setDatabaseName(location.path);
+            db.setConnectOptions(u"QSQLITE_BUSY_TIMEOUT="_s + QString::number(options.busyTimeoutMs));
+        }
+        if (!db.open()) {
+            const QString why = db.lastError().text();
+            db = QSqlDatabase();
+            QSqlDatabase::removeDatabase(name);
+            return Error { shared ? explainConnectFailure(location, why)
+                                  : tr("%1 cannot be opened: %2").arg(location.path, why) };
+        }
+    }
+    std::unique_ptr<Library> library(new Library(location, name));
+    library->m_options = options;
+    if (auto prepared = shared ? library->preparePostgres() : library->prepareSqlite(); !prepared)
+        return prepared.error();
+    return library;
+}
+
+Library::Library(LibraryLocation location, QString connection)
+    : m_location(std::move(location))
+    , m_connection(std::move(connection))
+{ }
+
+Library::~Library()
+{
+    {
+        QSqlDatabase db = QSqlDatabase::database(m_connection, false);
+        db.close();
+    }
+    QSqlDatabase::removeDatabase(m_connection);
+}
+
+QSqlDatabase Library::database() const
+{
+    return QSqlDatabase::database(m_connection, false);
+}
+
+Error Library::failure(const QString &what, const QSqlQuery &query) const
+{
+    return Error { tr("%1: %2 failed: %3").arg(m_location.displayName(), what, query.lastError().text()) };
+}
+
+} // namespace Toffee

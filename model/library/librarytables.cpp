@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Machine tables in the library: read, created, written tool by tool against each row's version, and kept up
+// to date by every new measurement event.
+#include <QMap>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QSysInfo>
+#include <QVariant>
+
+#include "model/library/library.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QString timeText(const QDateTime &at)
+{
+    return at.toUTC().toString(Qt::ISODateWithMs);
+}
+
+QVariant tloOf(const std::optional<Tool> &tool)
+{
+    return tool && tool->measuredTlo ? QVariant(*tool->measuredTlo) : QVariant(QMetaType::fromType<double>());
+}
+
+} // namespace
+
+QString Library::station() const
+{
+    return m_options.station.isEmpty() ? QSysInfo::machineHostName() : m_options.station;
+}
+
+QSqlDriver *Library::driver() const
+{
+    return database().driver();
+}
+
+bool Library::isConnectionLost() const
+{
+    QSqlQuery probe(database());
+    return !probe.exec(u"SELECT 1"_s);
+}
+
+Result<void> Library::checkWritable() const
+{
+    if (!m_readOnly)
+        return {};
+    return Error { m_location.isShared()
+            ? tr("The library (%1) is read-only for %2: this role may read the tools but not change them. "
+                 "Ask whoever runs the server for write rights (docs/LIBRARY.md).")
+                  .arg(m_location.displayName(), m_location.user.isEmpty() ? tr("you") : m_location.user)
+            : tr("%1 is read-only: it cannot be written.").arg(m_location.path) };
+}
+
+Result<void> Library::announce(const QStringList &machines)
+{
+    if (!m_location.isShared())
+        return {}; // SQLite readers see the file's data_version change (LibraryWatcher)
+    QSqlQuery query(database());
+    query.prepare(u"SELECT pg_notify(?, ?)"_s);
+    for (const QString &machine : machines) {
+        query.addBindValue(QString(kChannel));
+        query.addBindValue(machine);
+        if (!query.exec())
+            return failure(tr("Announcing the change"), query);
+    }
+    return {};
+}
+
+Result<QStringList> Library::tableMachines() const
+{
+    QSqlQuery query(database());
+    if (!query.exec(u"SELECT machine FROM machine_tables ORDER BY machine"_s))
+        return failure(tr("Reading the machine tables"), query);
+    QStringList out;
+    while (query.next())
+        out << query.value(0).toString();
+    return out;
+}
+
+Result<std::optional<Units>> Library::tableUnits(const QString &machine) const
+{
+    QSqlQuery query(database());
+    query.prepare(u"SELECT units FROM machine_tables WHERE machine = ?"_s);
+    query.addBindValue(machine);
+    if (!query.exec())
+        return failure(tr("Reading %1's table").arg(machine), query);
+    if (!query.next())
+        return std::optional<Units>();
+    return unitsFromSymbol(query.value(0).toString());
+}
+
+Result<StoredTable> Library::readTable(const QString &machine) const
+{
+    auto units = tableUnits(machine);
+    if (!units)
+        return units.error();
+    if (!units.value())
+        return Error { tr("The library has no tool table for %1.").arg(machine) };
+    StoredTable out { machine, *units.value(), {} };
+    QSqlQuery query(database());
+    query.setForwardOnly(true);
+    query.prepare(
+        u"SELECT number, version, deleted, data, updated_by, updated_at FROM tools WHERE machine = ? "
+        "ORDER BY number"_s);
+    query.addBindValue(machine);
+    if (!query.exec())
+        return failure(tr("Reading %1's table").arg(machine), query);
+    while (query.next()) {
+        StoredTool row { query.value(0).toInt(), std::nullopt, query.value(1).toLongLong(),
+            query.value(4).toString(), QDateTime::fromString(query.value(5).toString(), Qt::ISODateWithMs) };
+        if (query.value(2).toInt() == 0) {
+            auto tool = toolFromData(query.value(3).toByteArray(), out.units);
+            if (!tool)
+                return Error { tr("%1: T%2 of %3's table cannot be read: %4")
+                                   .arg(m_location.displayName())
+                                   .arg(row.number)
+                                   .arg(machine, tool.error().message) };
+            row.tool = tool.value();
+        }
+        out.rows.append(std::move(row));
+    }
+    return out;
+}
+
+Result<std::optional<StoredTool>> Library::readRow(const QString &machine, int number) const
+{
+    QSqlQuery query(database());
+    query.prepare(u"SELECT version, deleted, data, updated_by, units FROM tools JOIN machine_tables USING "
+                  "(machine) WHERE machine = ? AND number = ?"_s);
+    query.addBindValue(machine);
+    query.addBindValue(number);
+    if (!query.exec())
+        return failure(tr("Reading T%1 of %2").arg(number).arg(machine), query);
+    if (!query.next())
+        return std::optional<StoredTool>();
+    StoredTool row { number, std::nullopt, query.value(0).toLongLong(), query.value(3).toString(), {} };
+    if (query.value(1).toInt() == 0) {
+        auto tool = toolFromData(query.value(2).toByteArray(),
+            unitsFromSymbol(query.value(4).toString()).value_or(Units::Millimetre));
+        if (!tool)
+            return tool.error();
+        row.tool = tool.value();
+    }
+    return std::optional(row);
+}
+
+// True when the row was written; false when another station's write got there first.
+Result<bool> Library::putRow(
+    const QString &machine, Units units, const ToolWrite &write, qint64 currentVersion, bool exists)
+{
+    QSqlQuery query(database());
+    query.prepare(exists
+            ? u"UPDATE tools SET version = ?, deleted = ?, data = ?, tlo = ?, updated_at = ?, "
+              "updated_by = ? WHERE machine = ? AND number = ? AND version = ?"_s
+            : u"INSERT INTO tools (version, deleted, data, tlo, updated_at, updated_by, machine, "
+              "number) VALUES (?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (machine, number) DO NOTHING"_s);
+    for (const QVariant &v : { QVariant(currentVersion + 1), QVariant(write.tool ? 0 : 1),
+             QVariant(write.tool ? QString::fromUtf8(toolData(*write.tool, units)) : QString()),
+             tloOf(write.tool), QVariant(timeText(QDateTime::currentDateTimeUtc())), QVariant(station()),
+             QVariant(machine), QVariant(write.number) })
+        query.addBindValue(v);
+    if (exists)
+        query.addBindValue(currentVersion);
+    if (!query.exec())
+        return failure(tr("Writing T%1 of %2").arg(write.number).arg(machine), query);
+    return query.numRowsAffected() == 1;
+}
+
+Result<StoredTable> Library::createTable(const QString &machine, const ToolTable &table)
+{
+    if (auto writable = checkWritable(); !writable)
+        return writable.error();
+    if (auto begun = begin(); !begun)
+        return begun.error();
+    auto fail = [this](const Error &error) {
+        rollback();
+        return error;
+    };
+    QSqlQuery query(database());
+    query.prepare(u"INSERT INTO machines (name) VALUES (?) ON CONFLICT (name) DO NOTHING"_s);
+    query.addBindValue(machine);
+    if (!query.exec())
+        return fail(failure(tr("Adding the machine %1").arg(machine), query));
+    query.prepare(u"INSERT INTO machine_tables (machine, units, created_at) VALUES (?, ?, ?) ON CONFLICT "
+                  "(machine) DO NOTHING"_s);
+    query.addBindValue(machine);
+    query.addBindValue(unitsSymbol(table.units()));
+    query.addBindValue(timeText(QDateTime::currentDateTimeUtc()));
+    if (!query.exec())
+        return fail(failure(tr("Adding %1's table").arg(machine), query));
+    if (query.numRowsAffected() != 1)
+        return fail(Error { tr("The library already has a tool table for %1: open it, or choose another "
+                               "name.")
+                                .arg(machine) });
+    for (const Tool &tool : table.tools()) {
+        auto put = putRow(machine, table.units(), { tool.number, tool, 0 }, 0, false);
+        if (!put)
+            return fail(put.error());
+    }
+    if (auto said = announce({ machine }); !said)
+        return fail(said.error());
+    if (auto done = commit(); !done)
+        return done.error();
+    return readTable(machine);
+}
+
+} // namespace Toffee

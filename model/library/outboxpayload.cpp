@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "model/library/outboxpayload.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+QJsonValue number(std::optional<double> value)
+{
+    return value ? QJsonValue(*value) : QJsonValue();
+}
+
+std::optional<double> numberFrom(const QJsonValue &value)
+{
+    return value.isDouble() ? std::optional(value.toDouble()) : std::nullopt;
+}
+
+Error unreadable()
+{
+    return Error { QCoreApplication::translate("Toffee::Library",
+        "An outbox entry cannot be read; it is kept "
+        "as it is.") };
+}
+
+} // namespace
+
+QByteArray eventsPayload(const QList<HistoryEvent> &events)
+{
+    QJsonArray list;
+    for (const HistoryEvent &e : events)
+        list.append(QJsonObject { { u"id"_s, e.id }, { u"machine"_s, e.machine }, { u"tool"_s, e.tool },
+            { u"at"_s, e.at.toUTC().toString(Qt::ISODateWithMs) }, { u"kind"_s, eventKindName(e.kind) },
+            { u"tlo"_s, number(e.tlo) }, { u"reference_mz"_s, number(e.referenceMz) },
+            { u"current_mz"_s, number(e.currentMz) }, { u"tolerance"_s, number(e.tolerance) },
+            { u"old_tlo"_s, number(e.oldTlo) }, { u"new_tlo"_s, number(e.newTlo) },
+            { u"failed"_s, e.failed ? QJsonValue(*e.failed) : QJsonValue() } });
+    return QJsonDocument(list).toJson(QJsonDocument::Compact);
+}
+
+Result<QList<HistoryEvent>> eventsFromPayload(const QByteArray &payload)
+{
+    const QJsonDocument doc = QJsonDocument::fromJson(payload);
+    if (!doc.isArray())
+        return unreadable();
+    QList<HistoryEvent> out;
+    for (const QJsonValue &v : doc.array()) {
+        const QJsonObject o = v.toObject();
+        HistoryEvent e;
+        e.id = o.value(u"id"_s).toString();
+        e.machine = o.value(u"machine"_s).toString();
+        e.tool = o.value(u"tool"_s).toInt();
+        e.at = QDateTime::fromString(o.value(u"at"_s).toString(), Qt::ISODateWithMs).toUTC();
+        const auto kind = eventKindFromName(o.value(u"kind"_s).toString());
+        if (e.id.isEmpty() || e.machine.isEmpty() || !e.at.isValid() || !kind)
+            return unreadable();
+        e.kind = *kind;
+        e.tlo = numberFrom(o.value(u"tlo"_s));
+        e.referenceMz = numberFrom(o.value(u"reference_mz"_s));
+        e.currentMz = numberFrom(o.value(u"current_mz"_s));
+        e.tolerance = numberFrom(o.value(u"tolerance"_s));
+        e.oldTlo = numberFrom(o.value(u"old_tlo"_s));
+        e.newTlo = numberFrom(o.value(u"new_tlo"_s));
+        if (o.value(u"failed"_s).isBool())
+            e.failed = o.value(u"failed"_s).toBool();
+        out.append(std::move(e));
+    }
+    return out;
+}
+
+QByteArray toolsPayload(const ToolWrites &writes)
+{
+    QJsonArray list;
+    for (const ToolWrite &w : writes.writes)
+        list.append(QJsonObject { { u"number"_s, w.number }, { u"base_version"_s, w.baseVersion },
+            { u"tool"_s,
+                w.tool ? QJsonValue(QString::fromUtf8(toolData(*w.tool, writes.units))) : QJsonValue() } });
+    return QJsonDocument(QJsonObject { { u"machine"_s, writes.machine },
+                             { u"units"_s, unitsSymbol(writes.units) }, { u"writes"_s, list } })
+        .toJson(QJsonDocument::Compact);
+}
+
+Result<ToolWrites> toolsFromPayload(const QByteArray &payload)
+{
+    const QJsonObject o = QJsonDocument::fromJson(payload).object();
+    const auto units = unitsFromSymbol(o.value(u"units"_s).toString());
+    if (!units || o.value(u"machine"_s).toString().isEmpty())
+        return unreadable();
+    ToolWrites out { o.value(u"machine"_s).toString(), *units, {} };
+    for (const QJsonValue &v : o.value(u"writes"_s).toArray()) {
+        const QJsonObject w = v.toObject();
+        ToolWrite write { w.value(u"number"_s).toInt(), std::nullopt,
+            qint64(w.value(u"base_version"_s).toDouble()) };
+        if (w.value(u"tool"_s).isString()) {
+            auto tool = toolFromData(w.value(u"tool"_s).toString().toUtf8(), out.units);
+            if (!tool)
+                return unreadable();
+            write.tool = tool.value();
+        }
+        out.writes.append(std::move(write));
+    }
+    return out;
+}
+
+} // namespace Toffee
