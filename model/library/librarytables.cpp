@@ -159,7 +159,7 @@ Result<bool> Library::putRow(
             : u"INSERT INTO tools (version, deleted, data, tlo, updated_at, updated_by, machine, "
               "number) VALUES (?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (machine, number) DO NOTHING"_s);
     for (const QVariant &v : { QVariant(currentVersion + 1), QVariant(write.tool ? 0 : 1),
-             QVariant(write.tool ? QString::fromUtf8(toolData(*write.tool, units)) : QString()),
+             QVariant(write.tool ? QString::fromUtf8(toolData(*write.tool, units)) : u""_s),
              tloOf(write.tool), QVariant(timeText(QDateTime::currentDateTimeUtc())), QVariant(station()),
              QVariant(machine), QVariant(write.number) })
         query.addBindValue(v);
