@@ -71,6 +71,7 @@ Result<void> HistoryRecorder::replayOutbox()
         }
         countOutbox();
     }
+    countOutbox(); // another recorder on the same outbox may have sent what this one counted
     return {};
 }
 

@@ -33,7 +33,7 @@ LibraryWatcher::LibraryWatcher(Library *library, QObject *parent)
 
 LibraryWatcher::~LibraryWatcher()
 {
-    if (m_library->location().isShared())
+    if (m_library->location().isShared() && m_library->driver()->isOpen())
         m_library->driver()->unsubscribeFromNotification(QString(Library::kChannel));
 }
 
