@@ -32,7 +32,8 @@ class Library
 public:
     // The schema this Toffee writes. A library with a higher version is refused, never altered.
     static constexpr int kSchemaVersion = 2;
-    // The channel a shared library's changes are announced on; the payload names the machine.
+    // The channel a shared library's changes are announced on; the payload names the machine, the station and
+    // the time (LibraryWatcher::announced).
     static constexpr QLatin1StringView kChannel { "toffee_library" };
     struct Options
     {

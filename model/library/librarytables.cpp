@@ -61,9 +61,11 @@ Result<void> Library::announce(const QStringList &machines)
         return {}; // SQLite readers see the file's data_version change (LibraryWatcher)
     QSqlQuery query(database());
     query.prepare(u"SELECT pg_notify(?, ?)"_s);
+    // "machine<TAB>station<TAB>ms since the epoch": who changed which machine's table, and when it was said.
+    const QString tail = u'\t' + station() + u'\t' + QString::number(QDateTime::currentMSecsSinceEpoch());
     for (const QString &machine : machines) {
         query.addBindValue(QString(kChannel));
-        query.addBindValue(machine);
+        query.addBindValue(QString(machine + tail));
         if (!query.exec())
             return failure(tr("Announcing the change"), query);
     }

@@ -19,8 +19,11 @@ LibraryWatcher::LibraryWatcher(Library *library, QObject *parent)
     if (library->location().isShared() && driver->hasFeature(QSqlDriver::EventNotifications)) {
         connect(driver, &QSqlDriver::notification, this,
             [this](const QString &name, QSqlDriver::NotificationSource, const QVariant &payload) {
-                if (name == QString(Library::kChannel))
-                    Q_EMIT changed(payload.toString());
+                if (name != QString(Library::kChannel))
+                    return;
+                const QStringList parts = payload.toString().split(u'\t');
+                Q_EMIT changed(parts.value(0));
+                Q_EMIT announced(parts.value(0), parts.value(1), parts.value(2).toLongLong());
             });
         driver->subscribeToNotification(QString(Library::kChannel));
         return;

@@ -26,6 +26,9 @@ public:
 Q_SIGNALS:
     // The machine whose table or history changed; empty when the library cannot say which.
     void changed(const QString &machine);
+    // A shared library's announcement: which machine, the station that changed it, and when that station
+    // said so (its clock, ms since the epoch; 0 when unknown).
+    void announced(const QString &machine, const QString &station, qint64 saidAtMs);
 
 private:
     void poll();
