@@ -72,6 +72,13 @@ The history: toffee-cli history [--machine NAME] [--tool N] [--since DATE] [--js
   history add-use --machine NAME --program FILE [--dialect D]
                              the program ran: record each tool's cutting time and feed path
 
+Machine tables in the library (docs/LIBRARY.md): toffee-cli library tables | put | get [--library URL]
+  library tables             the machines whose tool table the library holds
+  library put --machine NAME TABLE
+                             put TABLE in the library as NAME's table (refused when it has one)
+  library get --machine NAME -o OUT
+                             write NAME's table from the library to OUT (.json, .tbl or .csv)
+
 Options:
   --json                     print one JSON object on stdout (errors too: {"error": message})
   --to FORMAT                convert: the output format (json, tbl, csv)
@@ -81,8 +88,10 @@ Options:
   --table FILE               probe, change-tool, set-tlo, break-test: record in FILE the measured TLO,
                              the TLO set by hand (marked so), or a failed break test (the tool stays marked
                              until it is probed again); FILE must be writable before the machine moves
-  --library PATH             the history library (an SQLite file, or sqlite:PATH; default
-                             ~/.local/share/Toffee/Toffee/library.sqlite)
+  --library PATH|URL         the library: an SQLite file (or sqlite:PATH; default
+                             ~/.local/share/Toffee/Toffee/library.sqlite), or a shared one on PostgreSQL,
+                             postgresql://USER@HOST[:PORT]/DB[?sslmode=require] (the password comes from
+                             ~/.pgpass or PGPASSFILE, never from Toffee)
   --no-history               record nothing in the history library
   --timeout S                give up on connecting, or on any command, after S seconds (default: 5, 120 for motion)
   --help                     this text
@@ -172,6 +181,7 @@ const std::pair<QStringView, Command> kTableCommands[] = {
     { u"simulate", simulateProgram },
     { u"import", importTools },
     { u"history", showHistory },
+    { u"library", runLibrary },
     { u"job", runJob },
 };
 

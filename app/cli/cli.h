@@ -36,6 +36,7 @@ int importTools(Invocation &call);
 int exportOffsets(Invocation &call);
 int simulateProgram(Invocation &call);
 int showHistory(Invocation &call);
+int runLibrary(Invocation &call);
 int runJob(Invocation &call);
 [[nodiscard]] bool isMachineCommand(const QString &command);
 int runMachineCommand(Invocation &call);

@@ -117,7 +117,7 @@ int addUse(Invocation &call)
         call.out << "T" << u.tool << ": " << formatNumber(u.cuttingSeconds / 60.0, NumberFormat::fixed(1))
                  << " min cutting, " << formatNumber(u.feedPathMm / 1000.0, NumberFormat::fixed(2))
                  << " m of feed\n";
-    call.out << "recorded for " << machine << " in " << library.value()->location().path << Qt::endl;
+    call.out << "recorded for " << machine << " in " << library.value()->location().displayName() << Qt::endl;
     return Success;
 }
 
@@ -146,7 +146,7 @@ int showHistory(Invocation &call)
         for (const HistoryEvent &e : events.value())
             list.append(eventJson(e));
         printJson(
-            call, QJsonObject { { u"library"_s, library.value()->location().path }, { u"events"_s, list } });
+            call, QJsonObject { { u"library"_s, library.value()->location().displayName() }, { u"events"_s, list } });
     } else if (call.has(u"csv"_s)) {
         call.out << QString::fromUtf8(eventsAsCsv(events.value()));
         call.out.flush();
