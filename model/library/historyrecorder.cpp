@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/library/historyrecorder.h"
 
+#include <QThread>
+
 #include "model/library/librarywatcher.h"
 
 using namespace Qt::StringLiterals;
@@ -21,6 +23,27 @@ HistoryRecorder::HistoryRecorder(QObject *parent)
 HistoryRecorder::~HistoryRecorder()
 {
     delete m_watcher;
+    if (m_probe)
+        m_probe->wait(); // at most the connect timeout
+}
+
+void HistoryRecorder::startProbe()
+{
+    if (m_probe && m_probe->isRunning())
+        return;
+    m_probe.reset(QThread::create([this, location = m_location, options = m_options] {
+        auto opened = Library::open(location, options); // this thread's connection, closed here
+        m_probeError = opened ? QString() : opened.error().message;
+    }));
+    connect(m_probe.get(), &QThread::finished, this, [this] {
+        if (!m_probeError.isEmpty()) {
+            fail(m_probeError);
+            return;
+        }
+        m_reachable = true;
+        flush();
+    });
+    m_probe->start();
 }
 
 void HistoryRecorder::closeLibrary()
@@ -74,6 +97,12 @@ bool HistoryRecorder::ensureOpen()
         return true;
     if (!m_location.isSet())
         return false; // no library chosen: the events wait for one
+    // A server that is down may take its whole connect timeout to say so: while it is, a thread of its own
+    // asks, and the window waits for nothing.
+    if (m_location.isShared() && m_down && !std::exchange(m_reachable, false)) {
+        startProbe();
+        return false;
+    }
     auto opened = Library::open(m_location, m_options);
     if (!opened) {
         fail(opened.error().message);
@@ -107,6 +136,10 @@ bool HistoryRecorder::flush()
     const bool waiting = !m_pending.isEmpty() || !m_pendingUse.isEmpty() || m_outboxCount > 0;
     if (!waiting && (m_library || !m_location.isSet())) {
         m_retry.stop();
+        if (m_library && std::exchange(m_down, false)) {
+            m_lastError.clear();
+            Q_EMIT available();
+        }
         return true;
     }
     if (!ensureOpen()) {

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include <QObject>
+#include <QThread>
 #include <QTimer>
 
 #include "model/library/historyevent.h"
@@ -80,6 +81,7 @@ private:
     void fail(const QString &message);
     void countOutbox();
     void checkConnection();
+    void startProbe();
 
     LibraryLocation m_location;
     LibraryLocation m_outboxLocation;
@@ -94,6 +96,9 @@ private:
     QTimer m_health;
     bool m_down = false;
     QString m_lastError;
+    std::unique_ptr<QThread> m_probe; // asks a shared library that was down whether it is back
+    QString m_probeError; // written by the probe's thread, read once it has finished
+    bool m_reachable = false; // the probe found it back: the next open is quick
 };
 
 } // namespace Toffee

@@ -111,6 +111,9 @@ Result<std::unique_ptr<Library>> Library::open(const LibraryLocation &location, 
             db.setDatabaseName(location.database);
             QStringList connect = location.options.split(u';', Qt::SkipEmptyParts);
             connect << u"connect_timeout="_s + QString::number(std::max(1, options.connectTimeoutS));
+            // A server whose network went away is noticed in seconds, not at TCP's own timeout (minutes).
+            connect << u"keepalives_idle=10"_s << u"keepalives_interval=3"_s << u"keepalives_count=3"_s
+                    << u"tcp_user_timeout=10000"_s;
             db.setConnectOptions(connect.join(u';'));
         } else {
             db.setDatabaseName(location.path);

@@ -223,8 +223,9 @@ private Q_SLOTS:
             QVERIFY(raw.exec(u"CREATE TABLE recipes (name TEXT)"_s));
         }
         const QByteArray before = digest(path);
-        auto location = kind == u"postgresql" ? LibraryLocation::parse(u"postgresql://shop:secret@server/tools"_s)
-                                              : Result<LibraryLocation>(LibraryLocation { path });
+        auto location = kind == u"postgresql"
+            ? LibraryLocation::parse(u"postgresql://shop:secret@server/tools"_s)
+            : Result<LibraryLocation>(LibraryLocation { path });
         QString error = location ? QString() : location.error().message;
         if (location) {
             auto library = Library::open(location.value());

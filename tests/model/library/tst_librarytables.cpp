@@ -39,6 +39,27 @@ private Q_SLOTS:
             std::optional<std::optional<Tool>>(std::in_place, std::nullopt));
     }
 
+    void readsAPostgresqlUrlAndWritesItBack()
+    {
+        const auto remote = LibraryLocation::parse(u"postgresql://shop@server:5433/tools?sslmode=require"_s);
+        QVERIFY(remote && remote.value().isShared());
+        QCOMPARE(remote.value().host, u"server"_s);
+        QCOMPARE(remote.value().port, 5433);
+        QCOMPARE(remote.value().user, u"shop"_s);
+        QCOMPARE(remote.value().database, u"tools"_s);
+        QCOMPARE(remote.value().options, u"sslmode=require"_s);
+        QCOMPARE(remote.value().text(), u"postgresql://shop@server:5433/tools?sslmode=require"_s);
+        // A Unix socket's folder goes in the query, and comes back from it.
+        const auto local = LibraryLocation::parse(u"postgres://shop@/tools?host=/run/pg&port=5444"_s);
+        QCOMPARE(local.value().host, u"/run/pg"_s);
+        QCOMPARE(LibraryLocation::parse(local.value().text()).value(), local.value());
+        QCOMPARE(remote.value().displayName(), u"database tools on server"_s);
+        for (const QString &bad :
+            { u"postgresql://shop:pw@server/tools"_s, u"postgresql://server"_s, u"postgresql://server/a/b"_s,
+                u"postgresql://server/t?colour=red"_s, u"postgresql://server:99999/t"_s })
+            QVERIFY2(!LibraryLocation::parse(bad), qPrintable(bad));
+    }
+
     void outboxEntriesReadBackWhole()
     {
         HistoryEvent e = probe(u"C1"_s, 7, -18.125);

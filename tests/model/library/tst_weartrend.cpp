@@ -27,8 +27,8 @@ HistoryEvent probe(int hours, double tlo, EventKind kind = EventKind::Probe)
 
 ToolUse use(int hours, double cuttingSeconds)
 {
-    return { HistoryEvent::newId(), u"Carvera"_s, 3, kStart.addSecs(hours * 3600), u"job.nc"_s, cuttingSeconds,
-        1000.0 };
+    return { HistoryEvent::newId(), u"Carvera"_s, 3, kStart.addSecs(hours * 3600), u"job.nc"_s,
+        cuttingSeconds, 1000.0 };
 }
 
 } // namespace
@@ -40,7 +40,8 @@ class TestWearTrend : public QObject
 private Q_SLOTS:
     void fitsAStraightLineExactly()
     {
-        const auto t = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.01 }, { 7200, -10.02 }, { 10800, -10.03 } });
+        const auto t
+            = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.01 }, { 7200, -10.02 }, { 10800, -10.03 } });
         QVERIFY(t);
         QCOMPARE(t->points, 4);
         QVERIFY(std::fabs(t->slope * 3600 + 0.01) < 1e-12); // -0.01 mm an hour
@@ -51,9 +52,10 @@ private Q_SLOTS:
     void fitsNoisyProbesAsComputedByHand()
     {
         // By hand: mean x 5400, mean TLO -10.015, Sxy -172.8, Sxx 64,800,000: slope -2.6667e-6 mm/s
-        // (-0.0096 mm an hour), intercept -10.0006; residuals 0.0006, -0.0018, 0.0018, -0.0006: SS 7.2e-6 over
-        // 2 degrees of freedom, spread sqrt(3.6e-6) = 0.0018974.
-        const auto t = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.012 }, { 7200, -10.018 }, { 10800, -10.03 } });
+        // (-0.0096 mm an hour), intercept -10.0006; residuals 0.0006, -0.0018, 0.0018, -0.0006: SS 7.2e-6
+        // over 2 degrees of freedom, spread sqrt(3.6e-6) = 0.0018974.
+        const auto t
+            = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.012 }, { 7200, -10.018 }, { 10800, -10.03 } });
         QVERIFY(t);
         QVERIFY(std::fabs(t->slope * 3600 + 0.0096) < 1e-9);
         QVERIFY(std::fabs(t->intercept + 10.0006) < 1e-9);
@@ -72,7 +74,8 @@ private Q_SLOTS:
 
     void warnsWithNumbersWhenAProbeIsOffTheTrend()
     {
-        const auto t = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.012 }, { 7200, -10.018 }, { 10800, -10.03 } });
+        const auto t
+            = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.012 }, { 7200, -10.018 }, { 10800, -10.03 } });
         const auto shorter = t->check(3, 14400, -10.22, 0.05);
         QVERIFY(shorter);
         QCOMPARE(*shorter, u"T3 measured 0.181 mm shorter than its trend predicts (±0.05): check the tip."_s);
@@ -114,7 +117,8 @@ private Q_SLOTS:
         HistoryEvent fine = probe(45, -10.04); // 0.001 off the trend's -10.039
         QVERIFY(!checkProbeAgainstTrend(*library.value(), fine, 0.05));
         HistoryEvent broken = probe(45, -10.22);
-        QVERIFY(library.value()->append({ broken })); // recorded first, as the window does: it is not its own trend
+        QVERIFY(library.value()->append(
+            { broken })); // recorded first, as the window does: it is not its own trend
         const auto warning = checkProbeAgainstTrend(*library.value(), broken, 0.05);
         QVERIFY(warning);
         QCOMPARE(*warning, u"T3 measured 0.181 mm shorter than its trend predicts (±0.05): check the tip."_s);
