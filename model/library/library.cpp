@@ -201,8 +201,9 @@ Result<QList<HistoryEvent>> Library::history(const HistoryQuery &q) const
     if (!where.isEmpty())
         sql += u" WHERE "_s + where.join(u" AND "_s);
     // The newest `limit`, read newest first and turned round.
-    sql += q.limit > 0 ? u" ORDER BY measured_at DESC, id DESC LIMIT "_s + QString::number(q.limit)
-                       : u" ORDER BY measured_at, id"_s;
+    sql += q.limit > 0 ? u" ORDER BY measured_at DESC, id DESC LIMIT ?"_s : u" ORDER BY measured_at, id"_s;
+    if (q.limit > 0)
+        values << q.limit;
     QSqlQuery query(database());
     query.setForwardOnly(true);
     query.prepare(sql);

@@ -100,6 +100,8 @@ void SharedTableCases::aMeasurementUpdatesItsToolOnceHoweverOftenItIsWritten()
     broken.failed = true;
     QVERIFY(a->append({ broken }));
     QVERIFY(a->readTable(u"C1"_s).value().row(2)->tool->breakTestFailed);
+    const auto newest = a->history({ u"C1"_s, std::nullopt, {}, 1 }); // LIMIT is bound, as every value
+    QVERIFY(newest && newest.value().size() == 1 && newest.value().first().kind == EventKind::BreakTest);
     // A machine whose table is a file only gets the event.
     QCOMPARE(a->append({ probe(u"Mill"_s, 1, -5.0) }).value(), 1);
     QVERIFY(!a->readTable(u"Mill"_s));
