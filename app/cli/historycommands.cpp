@@ -145,8 +145,9 @@ int showHistory(Invocation &call)
         QJsonArray list;
         for (const HistoryEvent &e : events.value())
             list.append(eventJson(e));
-        printJson(
-            call, QJsonObject { { u"library"_s, library.value()->location().displayName() }, { u"events"_s, list } });
+        printJson(call,
+            QJsonObject {
+                { u"library"_s, library.value()->location().displayName() }, { u"events"_s, list } });
     } else if (call.has(u"csv"_s)) {
         call.out << QString::fromUtf8(eventsAsCsv(events.value()));
         call.out.flush();

@@ -221,6 +221,14 @@ void MachineRun::recordHistory(const SessionResult &r)
     if (auto written = m_options.library->append({ event }); !written) {
         m_call.err << "toffee-cli: T" << event.tool << "'s " << eventKindName(event.kind)
                    << " is not in the history library: " << written.error().message << Qt::endl;
+        if (m_options.library->location().isShared()) {
+            const auto kept = keepForLater(*m_options.library, event);
+            m_call.err << "toffee-cli: "
+                       << (kept ? u"it is kept in %1 and written the next time the library answers."_s.arg(
+                               kept.value())
+                                : u"it could not be kept either: %1"_s.arg(kept.error().message))
+                       << Qt::endl;
+        }
         return;
     }
     if (auto warning = checkProbeAgainstTrend(*m_options.library, event, m_options.tolerance)) {

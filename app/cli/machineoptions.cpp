@@ -196,7 +196,10 @@ Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call)
                                            : Result<LibraryLocation>(LibraryLocation::standard());
     if (!location)
         return location.error();
-    return Library::open(location.value());
+    auto library = Library::open(location.value());
+    if (library)
+        sendWaiting(*library.value(), call.err);
+    return library;
 }
 
 Result<std::unique_ptr<Library>> openExistingLibrary(const Invocation &call)

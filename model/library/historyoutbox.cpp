@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The outbox of a station whose shared library is out of reach: kept in its own SQLite library, written back
-// in the order it was made when the server returns.
+// The outbox of a station whose shared library is out of reach (outbox.h), as the window's recorder keeps it.
 #include "model/library/historyrecorder.h"
+#include "model/library/outbox.h"
 
 using namespace Qt::StringLiterals;
 
@@ -15,10 +15,8 @@ Result<void> HistoryRecorder::keepInOutbox(const QString &kind, const QByteArray
             return opened.error();
         m_outbox = opened.takeValue();
     }
-    if (auto added = m_outbox->outboxAdd(
-            { HistoryEvent::newId(), m_location.text(), kind, payload, QDateTime::currentDateTimeUtc() });
-        !added)
-        return added;
+    if (auto kept = Outbox::keep(*m_outbox, m_location, kind, payload); !kept)
+        return kept;
     countOutbox();
     return {};
 }
@@ -33,46 +31,28 @@ void HistoryRecorder::countOutbox()
                 m_outbox = opened.takeValue();
         }
         if (m_outbox) {
-            if (auto entries = m_outbox->outbox(m_location.text()))
-                m_outboxCount = entries.value().size();
+            if (auto counted = Outbox::count(*m_outbox, m_location))
+                m_outboxCount = counted.value();
         }
     }
     if (m_outboxCount != before)
         Q_EMIT pendingChanged(pendingCount());
 }
 
-// Each entry is removed once written. A crash in between writes it again: its events are skipped by their
-// ids, and its tools are found already so.
 Result<void> HistoryRecorder::replayOutbox()
 {
-    auto entries = m_outbox->outbox(m_location.text());
-    if (!entries)
-        return entries.error();
-    for (const OutboxEntry &entry : entries.value()) {
-        if (entry.kind == u"events"_s) {
-            auto events = eventsFromPayload(entry.payload);
-            if (!events)
-                return events.error();
-            if (auto written = m_library->append(events.value()); !written)
-                return written.error();
-            if (auto removed = m_outbox->outboxRemove(entry.id); !removed)
-                return removed;
-            Q_EMIT recorded(events.value());
-        } else {
-            auto writes = toolsFromPayload(entry.payload);
-            if (!writes)
-                return writes.error();
-            auto written = m_library->writeTools(writes.value().machine, writes.value().writes);
-            if (!written)
-                return written.error();
-            if (auto removed = m_outbox->outboxRemove(entry.id); !removed)
-                return removed;
-            Q_EMIT replayed(writes.value().machine, written.value());
-        }
-        countOutbox();
-    }
+    auto sent = Outbox::send(
+        *m_outbox, *m_library,
+        [this](const QList<HistoryEvent> &events) {
+            countOutbox();
+            Q_EMIT recorded(events);
+        },
+        [this](const QString &machine, const WriteOutcome &outcome) {
+            countOutbox();
+            Q_EMIT replayed(machine, outcome);
+        });
     countOutbox(); // another recorder on the same outbox may have sent what this one counted
-    return {};
+    return sent;
 }
 
 } // namespace Toffee

@@ -46,6 +46,8 @@ private Q_SLOTS:
         QVERIFY(m_cluster.writePassFile(m_dir.filePath(u"pgpass"_s),
             { { u"*"_s, u"shop"_s, u"Sh0p-pw"_s }, { u"*"_s, u"viewer"_s, u"V1ew-pw"_s } }, &error));
         qputenv("PGPASSFILE", m_dir.filePath(u"pgpass"_s).toLocal8Bit()); // the children's libpq reads it
+        // The children's own SQLite library (their outbox) is the test's, not the user's.
+        qputenv("XDG_DATA_HOME", m_dir.filePath(u"data"_s).toLocal8Bit());
     }
 
     void putsATableRecordsAProbeIntoItAndReadsItBack()
@@ -79,6 +81,30 @@ private Q_SLOTS:
         QCOMPARE(t1.value(u"measured_tlo"_s).toDouble(), tlo); // the probe reached the machine's table
         run = toffee({ u"history"_s, u"--machine"_s, u"C1"_s });
         QCOMPARE(json(run).value(u"events"_s).toArray().size(), 1);
+    }
+
+    void aProbeWhoseServerDiesIsKeptAndSentOnceItIsBack()
+    {
+        Emulator emulator(m_dir.filePath(u"tty"_s), { u"--probe-ms"_s, u"1500"_s });
+        QVERIFY(emulator.started());
+        QProcess probe;
+        probe.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"),
+            { u"--json"_s, u"--library"_s, url(), u"--machine"_s, u"C1"_s, u"--port"_s,
+                m_dir.filePath(u"tty"_s), u"probe"_s });
+        QTest::qWait(700); // the library is open and the tool is on the setter
+        QString error;
+        QVERIFY2(m_cluster.kill9(&error), qPrintable(error));
+        QVERIFY(probe.waitForFinished(30000));
+        const QString err = QString::fromUtf8(probe.readAllStandardError());
+        QCOMPARE(probe.exitCode(), 0); // the machine measured: the probe itself succeeded
+        QVERIFY2(err.contains(u"is kept in"_s) && err.contains(u"written the next time"_s), qPrintable(err));
+        QVERIFY2(m_cluster.restart(&error), qPrintable(error));
+        for (int i = 0; i < 2; ++i) { // the first sends what waits; the second finds nothing more to send
+            const Run run = toffee({ u"history"_s, u"--machine"_s, u"C1"_s, u"--tool"_s, u"1"_s });
+            QCOMPARE(run.exitCode, 0);
+            QCOMPARE(json(run).value(u"events"_s).toArray().size(), 2); // the earlier probe, and this one
+            QCOMPARE(run.err.contains("sent 1 measurement kept in"), i == 0);
+        }
     }
 
     void aReadOnlyRoleReadsAndIsRefusedAWrite()
