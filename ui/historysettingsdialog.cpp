@@ -27,9 +27,14 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent)
     setObjectName(u"historySettingsDialog"_s);
     const AppSettings settings;
     const auto chosen = LibraryLocation::parse(settings.libraryLocation());
-    m_path->setText(chosen ? chosen.value().path : LibraryLocation::standard().path);
+    const LibraryLocation shown = chosen ? chosen.value() : LibraryLocation::standard();
+    m_path->setText(shown.isShared() ? shown.text() : shown.path);
     m_path->setObjectName(u"libraryPathEdit"_s);
-    m_path->setAccessibleName(tr("Library file"));
+    m_path->setAccessibleName(tr("Library file or URL"));
+    m_path->setPlaceholderText(tr("A file, or postgresql://user@server/database"));
+    m_path->setToolTip(tr("An SQLite file for this computer, or a shared PostgreSQL database as "
+                          "postgresql://user@host:port/dbname?sslmode=require. The password goes in the "
+                          "PostgreSQL password file (~/.pgpass), never in the URL."));
     m_path->setMinimumWidth(420);
     m_machine->setText(settings.machineName());
     m_machine->setObjectName(u"machineNameEdit"_s);
@@ -41,12 +46,14 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent)
     m_stale->setAccessibleName(tr("Stale after"));
 
     auto *browse = new QPushButton(tr("Browse…"), this);
+    browse->setObjectName(u"libraryBrowseButton"_s);
+    browse->setAccessibleName(tr("Choose a library file"));
     connect(browse, &QPushButton::clicked, this, &HistorySettingsDialog::browse);
     auto *pathRow = new QHBoxLayout;
     pathRow->addWidget(m_path, 1);
     pathRow->addWidget(browse);
     auto *form = new QFormLayout;
-    form->addRow(tr("Library file:"), pathRow);
+    form->addRow(tr("Library file or URL:"), pathRow);
     form->addRow(tr("This machine's name:"), m_machine);
     form->addRow(tr("A measurement is stale after:"), m_stale);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
@@ -59,7 +66,8 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent)
 
 QString HistorySettingsDialog::location() const
 {
-    return LibraryLocation { m_path->text().trimmed() }.text();
+    const auto location = LibraryLocation::parse(m_path->text());
+    return location ? location.value().text() : m_path->text().trimmed();
 }
 
 QString HistorySettingsDialog::machineName() const

@@ -8,8 +8,9 @@ class QSpinBox;
 
 namespace Toffee {
 
-// Machine ▸ History Library…: which library the window records into, this machine's name in it, and after how
-// many days a measurement is stale. A library that does not open is said so, and the dialog stays.
+// Machine ▸ History Library…: which library the window records into (a file, or a shared PostgreSQL URL),
+// this machine's name in it, and after how many days a measurement is stale. A library that does not open is
+// said so, and the dialog stays.
 class HistorySettingsDialog final : public QDialog
 {
     Q_OBJECT
@@ -18,7 +19,7 @@ class HistorySettingsDialog final : public QDialog
 public:
     explicit HistorySettingsDialog(QWidget *parent = nullptr);
 
-    [[nodiscard]] QString location() const; // "sqlite:PATH"
+    [[nodiscard]] QString location() const; // "sqlite:PATH" or "postgresql://…"
     [[nodiscard]] QString machineName() const;
     [[nodiscard]] int staleAfterDays() const;
 

@@ -95,6 +95,7 @@ MainWindow::MainWindow(QWidget *parent)
     connectMachine();
     connectDocument();
     connectHistory();
+    connectLibrary();
     updateTitle();
     readSettings();
 }
@@ -195,7 +196,7 @@ MainWindow::~MainWindow()
     // Children outlive this class's part of the object: whatever they say while they are destroyed must not
     // reach MainWindow's slots (UBSan's "downcast of address ... not an object of type MainWindow").
     for (QObject *sender : std::initializer_list<QObject *> {
-             m_document, m_document->model(), m_connection, m_fileWatcher, m_autoSave })
+             m_document, m_document->model(), m_connection, m_fileWatcher, m_autoSave, m_history })
         sender->disconnect(this);
 }
 
@@ -229,6 +230,7 @@ void MainWindow::createActions()
     toolBar->addAction(add(file, u"actionSave"_s, tr("&Save"), QKeySequence::Save, [this] { save(); }));
     add(file, u"actionSaveAs"_s, tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
         [this] { saveAs(); });
+    createLibraryActions(file);
     file->addSeparator();
     add(file, u"actionImport"_s, tr("Import &Tools…"), QKeySequence(Qt::CTRL | Qt::Key_I),
         &MainWindow::importTable);
@@ -370,11 +372,13 @@ void MainWindow::updateMachineStatus()
 
 void MainWindow::updateTitle()
 {
-    const QString name
-        = m_document->filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document->filePath()).fileName();
+    const QString name = m_document->isLibraryTable() ? libraryTableTitle()
+        : m_document->filePath().isEmpty()            ? tr("Untitled")
+                                                      : QFileInfo(m_document->filePath()).fileName();
     setWindowFilePath(m_document->filePath());
     setWindowTitle(name + u"[*] — Toffee"_s);
-    setWindowModified(m_document->isModified());
+    setWindowModified(hasUnsavedEdits());
+    updateLibraryState();
 }
 
 void MainWindow::addTool()

@@ -6,11 +6,13 @@
 
 #include "model/library/historyevent.h"
 #include "model/library/librarylocation.h"
+#include "model/library/storedtable.h"
 
 class QAction;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QTimer;
 class QDragEnterEvent;
 class QDropEvent;
 
@@ -22,6 +24,7 @@ class FileWatcher;
 class HistoryDock;
 class HistoryRecorder;
 class JobCheckDialog;
+class LibraryStatusLabel;
 class MachineConnection;
 class MachineDock;
 class RackPanel;
@@ -49,8 +52,14 @@ public:
     [[nodiscard]] RackPanel *rackPanel() const { return m_rackPanel; }
     // The program's use of each tool, recorded (what Record a Program Run does once a file is chosen).
     Result<int> recordProgramRun(const QString &path);
-    // The history library every measurement goes into (--library, or the setting, or the standard one).
-    void setLibrary(const LibraryLocation &location);
+    // The history library every measurement goes into (--library, or the setting, or the standard one),
+    // written as `station` (the computer's name when empty). A shared library that cannot be used as it is
+    // set (a wrong URL, password, database or server) is said so, and the station's own library is used.
+    void setLibrary(const LibraryLocation &location, const QString &station = {});
+    // File ▸ Open Machine Table… once the machine is chosen: false, with a message box, when it fails.
+    bool openMachineTable(const QString &machine);
+    // File ▸ Save to Library… once the name is given: the table becomes that machine's table in the library.
+    bool saveToLibrary(const QString &machine);
     // Opens a table, reporting a failure in a message box; the current table stays if it fails.
     bool openFile(const QString &path);
     // File ▸ Check Job… once a program is chosen (or dropped on the window): the check starts at once.
@@ -106,6 +115,23 @@ private:
     [[nodiscard]] std::optional<double> machineReference() const;
     void readSettings();
     void writeSettings();
+    // Machine tables in the library (librarytables.cpp, libraryupdates.cpp).
+    void createLibraryActions(QMenu *file);
+    void connectLibrary();
+    void chooseMachineTable();
+    void askSaveToLibrary();
+    bool saveLibraryTable();
+    [[nodiscard]] QString libraryTableTitle() const;
+    [[nodiscard]] bool showsLibraryTable(const QString &machine) const;
+    [[nodiscard]] bool hasUnsavedEdits() const;
+    void updateLibraryState();
+    void takeLibraryChange(const QString &machine);
+    void refreshLibraryTable(const QString &machine);
+    void adoptReplayed(const QString &machine, const WriteOutcome &outcome);
+    void chooseReplayed(const QString &machine, QList<ToolConflict> conflicts);
+    // The operator chooses per tool; theirs are taken, mine saved again. True when all is saved.
+    bool chooseConflicts(const QList<ToolConflict> &conflicts);
+    void useOwnLibrary(const LibraryLocation &refused, const QString &message);
 
     ToolDocument *m_document;
     ToolTablePanel *m_tablePanel;
@@ -122,6 +148,11 @@ private:
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;
+    LibraryStatusLabel *m_libraryLabel = nullptr;
+    QTimer *m_remoteRetry = nullptr; // takes another station's change once a cell is no longer edited
+    QString m_station; // who this window writes as in the library; empty: the computer's name
+    LibraryLocation m_tableLibrary; // where the open machine table came from
+    bool m_tableReadOnly = false; // and whether that library may be written
     QPointer<JobCheckDialog> m_jobDialog; // it deletes itself on closing
 };
 

@@ -104,6 +104,7 @@ void MainWindow::newTable()
     if (maybeSave()) {
         m_document->newTable();
         m_fileWatcher->watch({});
+        updateTitle(); // from a machine's table the path stays empty: nothing else says it changed
     }
 }
 
@@ -135,6 +136,8 @@ bool MainWindow::confirmLossySave(const QString &path)
 
 bool MainWindow::save()
 {
+    if (m_document->isLibraryTable())
+        return saveLibraryTable();
     if (m_document->filePath().isEmpty())
         return saveAs();
     if (!confirmLossySave(m_document->filePath()))
@@ -223,7 +226,7 @@ void MainWindow::exportTable()
 
 bool MainWindow::maybeSave()
 {
-    if (!m_document->isModified())
+    if (!hasUnsavedEdits())
         return true;
     const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
         tr("The tool table has changes that are not saved.\nSave them first?"),

@@ -7,6 +7,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QItemSelectionModel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QStatusBar>
 #include <QTableView>
@@ -23,6 +24,7 @@
 #include "ui/appsettings.h"
 #include "ui/historydock.h"
 #include "ui/historysettingsdialog.h"
+#include "ui/librarystatuslabel.h"
 #include "ui/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
@@ -34,6 +36,15 @@ namespace {
 // A write waits this long for toffee-cli's to finish, then the event waits in memory: the window never stalls
 // for the library.
 constexpr int kWindowBusyTimeoutMs = 250;
+
+// Library::explainConnectFailure's words for a server that did not answer: the one failure that waiting mends
+// (the station works offline, its changes in the outbox). Any other needs the URL, the password file or the
+// server fixed first.
+bool serverDidNotAnswer(const QString &message)
+{
+    return message.contains(Library::tr("The server cannot be reached. Check that it is running and that the "
+                                        "host and port in the URL are right."));
+}
 
 } // namespace
 
@@ -48,6 +59,8 @@ void MainWindow::connectHistory()
                 .arg(message));
     });
     connect(m_history, &HistoryRecorder::available, this, [this] {
+        if (m_history->location().isShared())
+            return; // the library's status label says it, with how many changes were written
         statusBar()->showMessage(
             tr("The history library is written again: every waiting measurement is in it."), 10000);
     });
@@ -71,15 +84,41 @@ void MainWindow::connectHistory()
                                      : LibraryLocation::parse(chosen);
     // Opened once the event loop runs, not on the way to the window; unless --library chose one before.
     QTimer::singleShot(0, this, [this, location] {
-        if (m_history->location().path.isEmpty())
+        if (!m_history->location().isSet())
             setLibrary(location ? location.value() : LibraryLocation::standard());
     });
 }
 
-void MainWindow::setLibrary(const LibraryLocation &location)
+void MainWindow::setLibrary(const LibraryLocation &location, const QString &station)
 {
-    // A failure is told by the recorder's unavailable(); the measurements wait for a library that opens.
-    (void)m_history->setLocation(location, Library::Options { kWindowBusyTimeoutMs });
+    if (!station.isEmpty())
+        m_station = station;
+    const Library::Options options { .busyTimeoutMs = kWindowBusyTimeoutMs, .station = m_station };
+    // A failure is told by the recorder's unavailable(); the measurements wait for a library that opens, and
+    // a shared one's wait in the station's own library (the outbox).
+    auto opened = m_history->setLocation(location, options);
+    if (!opened && location.isShared() && !serverDidNotAnswer(opened.error().message)) {
+        (void)m_history->setLocation(LibraryLocation::standard(), options);
+        useOwnLibrary(location, opened.error().text());
+    }
+    m_libraryLabel->refresh();
+    updateTitle();
+}
+
+// Told without stopping the window (a startup with --library must not wait for a click), and kept in the
+// status bar.
+void MainWindow::useOwnLibrary(const LibraryLocation &refused, const QString &message)
+{
+    const QString own = tr("Toffee records into this station's own library (%1) until the shared one is "
+                           "fixed in Machine ▸ History Library….")
+                            .arg(m_history->location().displayName());
+    auto *box = new QMessageBox(QMessageBox::Warning, tr("The shared library cannot be used"),
+        message + u"\n\n"_s + own, QMessageBox::Ok, this);
+    box->setObjectName(u"libraryFailureBox"_s);
+    box->setAccessibleName(tr("The shared library cannot be used"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+    statusBar()->showMessage(tr("%1 cannot be used: %2").arg(refused.displayName(), own));
 }
 
 void MainWindow::recordHistory(const Recording &recording)

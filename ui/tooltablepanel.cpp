@@ -3,7 +3,9 @@
 
 #include <algorithm>
 
+#include <QApplication>
 #include <QHeaderView>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSortFilterProxyModel>
 #include <QTableView>
@@ -22,6 +24,7 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
     : QWidget(parent)
     , m_model(model)
     , m_proxy(new QSortFilterProxyModel(this))
+    , m_banner(new QLabel(this))
     , m_filter(new QLineEdit(this))
     , m_view(new QTableView(this))
 {
@@ -44,8 +47,14 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
     m_view->sortByColumn(ToolTableModel::NumberColumn, Qt::AscendingOrder);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setAlternatingRowColors(true);
-    m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
-        | QAbstractItemView::AnyKeyPressed);
+    m_banner->setObjectName(u"readOnlyBanner"_s);
+    m_banner->setAccessibleName(tr("Read-only"));
+    m_banner->setTextFormat(Qt::PlainText);
+    m_banner->setWordWrap(true);
+    // A strip in the palette's tooltip colours: seen at a glance, and readable in the dark palette too.
+    m_banner->setStyleSheet(u"QLabel { background: palette(tooltip-base); color: palette(tooltip-text); "
+                            "padding: 6px; border-bottom: 1px solid palette(mid); }"_s);
+    setReadOnly({});
     m_view->setWordWrap(false);
     m_view->setTabKeyNavigation(false); // Tab moves on to the next control, not through every cell
     m_view->setTextElideMode(Qt::ElideRight);
@@ -67,8 +76,30 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_banner);
     layout->addWidget(m_filter);
     layout->addWidget(m_view);
+}
+
+void ToolTablePanel::setReadOnly(const QString &banner)
+{
+    m_banner->setText(banner);
+    m_banner->setVisible(!banner.isEmpty());
+    m_view->setEditTriggers(banner.isEmpty() ? QAbstractItemView::DoubleClicked
+                | QAbstractItemView::EditKeyPressed | QAbstractItemView::AnyKeyPressed
+                                             : QAbstractItemView::NoEditTriggers);
+}
+
+bool ToolTablePanel::isReadOnly() const
+{
+    return !m_banner->text().isEmpty();
+}
+
+bool ToolTablePanel::isEditing() const
+{
+    // An editor is a child of the view's viewport with the focus; the view's own focus is not editing.
+    const QWidget *focus = QApplication::focusWidget();
+    return focus && focus != m_view && m_view->isAncestorOf(focus);
 }
 
 void ToolTablePanel::fitColumns()

@@ -3,6 +3,7 @@
 
 #include <QWidget>
 
+class QLabel;
 class QLineEdit;
 class QSortFilterProxyModel;
 class QTableView;
@@ -25,12 +26,19 @@ public:
     // Tool numbers of the selected rows, whatever the sort and filter.
     [[nodiscard]] QList<int> selectedToolNumbers() const;
     void selectTool(int number);
+    // A table that may be read but not changed: no editing in the view, and `banner` above it says why.
+    // Empty: editable again.
+    void setReadOnly(const QString &banner);
+    [[nodiscard]] bool isReadOnly() const;
+    // A cell's editor is open (a reset of the model would close it, and lose what is typed).
+    [[nodiscard]] bool isEditing() const;
 
 private:
     void fitColumns();
 
     ToolTableModel *m_model;
     QSortFilterProxyModel *m_proxy;
+    QLabel *m_banner;
     QLineEdit *m_filter;
     QTableView *m_view;
 };

@@ -47,7 +47,10 @@ struct Options
         u"LANGUAGE"_s };
 
     const QCommandLineOption library { u"library"_s,
-        QApplication::translate("main", "The history library: an SQLite file (or sqlite:PATH)."), u"PATH"_s };
+        QApplication::translate("main",
+            "The history library: an SQLite file (or sqlite:PATH), or a shared one on PostgreSQL "
+            "(postgresql://user@host:port/dbname; the password in ~/.pgpass)."),
+        u"LIBRARY"_s };
 
     const QCommandLineOption checkJob { u"check-job"_s,
         QApplication::translate(

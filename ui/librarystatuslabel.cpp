@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/librarystatuslabel.h"
+
+#include "model/library/historyrecorder.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+LibraryStatusLabel::LibraryStatusLabel(HistoryRecorder *recorder, QWidget *parent)
+    : QLabel(parent)
+    , m_recorder(recorder)
+{
+    setObjectName(u"libraryStatusLabel"_s);
+    setAccessibleName(tr("Library status"));
+    setTextFormat(Qt::PlainText);
+    connect(recorder, &HistoryRecorder::unavailable, this, &LibraryStatusLabel::refresh);
+    connect(recorder, &HistoryRecorder::pendingChanged, this, &LibraryStatusLabel::refresh);
+    connect(recorder, &HistoryRecorder::usesChanged, this, &LibraryStatusLabel::refresh);
+    connect(recorder, &HistoryRecorder::available, this, &LibraryStatusLabel::back);
+    refresh();
+}
+
+void LibraryStatusLabel::refresh()
+{
+    const qsizetype waiting = m_recorder->pendingCount();
+    const bool shared = m_recorder->location().isShared();
+    if (!m_recorder->isAvailable()) {
+        m_waitedMost = std::max(m_waitedMost, waiting);
+        setText(shared ? tr("Library offline — %n change(s) waiting", nullptr, int(waiting))
+                       : tr("Library cannot be written — %n change(s) waiting", nullptr, int(waiting)));
+        setToolTip(m_recorder->lastError());
+        // The one state in the status bar that asks for attention: written in the palette's warning colour.
+        setStyleSheet(u"QLabel { color: palette(bright-text); background: #b3261e; padding: 0 6px; }"_s);
+        show();
+        return;
+    }
+    setStyleSheet({});
+    setToolTip({});
+    if (!shared) {
+        hide();
+        return;
+    }
+    const Library *library = m_recorder->library();
+    const QString name = m_recorder->location().displayName();
+    setText(library && library->isReadOnly() ? tr("Library: %1 (read-only)").arg(name)
+                                             : tr("Library: %1").arg(name));
+    show();
+}
+
+void LibraryStatusLabel::back()
+{
+    const qsizetype written = std::exchange(m_waitedMost, 0);
+    refresh();
+    if (!m_recorder->location().isShared())
+        return; // the window says it of its own file, in its words for measurements
+    Q_EMIT announced(written > 0 ? tr("Library back: %n change(s) written", nullptr, int(written))
+                                 : tr("Library back: nothing was waiting"));
+}
+
+} // namespace Toffee
