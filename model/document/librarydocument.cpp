@@ -66,7 +66,7 @@ ToolWrites ToolDocument::libraryWrites() const
         const std::optional<Tool> mine = toolIn(table(), number);
         const std::optional<Tool> base = row ? row->tool : std::nullopt;
         if (mine != base)
-            out.writes.append({ number, mine, row ? row->version : 0 });
+            out.writes.append({ number, mine, row ? row->version : 0, base });
     }
     return out;
 }
@@ -79,12 +79,22 @@ void ToolDocument::cleanWhenWritten()
 
 void ToolDocument::markWritten(const ToolWrites &writes, const WriteOutcome &outcome)
 {
+    ToolTable next = table();
     for (const ToolWrite &write : writes.writes) {
-        if (outcome.queued)
+        if (outcome.queued) {
             setBaseRow(write.number, write.tool, write.baseVersion); // checked against the library when sent
-        else if (outcome.written.contains(write.number))
+        } else if (outcome.merged.contains(write.number)) {
+            // Another station's change to other fields was merged in: the table shows what was written.
+            const std::optional<Tool> merged = outcome.merged.value(write.number);
+            setBaseRow(write.number, merged, outcome.written.value(write.number));
+            if (toolIn(next, write.number) == write.tool)
+                put(next, write.number, merged);
+        } else if (outcome.written.contains(write.number)) {
             setBaseRow(write.number, write.tool, outcome.written.value(write.number));
+        }
     }
+    if (!(next == table()))
+        m_undoStack.push(new ReplaceTableCommand(&m_model, table(), next, tr("Update from the library")));
     cleanWhenWritten();
 }
 

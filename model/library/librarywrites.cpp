@@ -42,16 +42,27 @@ Result<WriteOutcome> Library::writeTools(const QString &machine, const QList<Too
                 outcome.written.insert(write.number, current); // already so: nothing to write
                 break;
             }
+            ToolWrite next = write;
             if (current != write.baseVersion) {
-                outcome.conflicts.append({ write.number, theirs, write.tool, current,
-                    row.value() ? row.value()->updatedBy : QString() });
-                break;
+                // Changed meanwhile: written only when the changes touch different fields. A write that does
+                // not say what it was made over (no base, over a row that was there) cannot be merged.
+                const bool baseKnown = write.base || write.baseVersion == 0;
+                const auto merged = baseKnown ? mergeTool(write.base, theirs, write.tool)
+                                              : std::optional<std::optional<Tool>>();
+                if (!merged) {
+                    outcome.conflicts.append({ write.number, theirs, write.tool, current,
+                        row.value() ? row.value()->updatedBy : QString() });
+                    break;
+                }
+                next.tool = *merged;
             }
-            auto put = putRow(machine, *units.value(), write, current, row.value().has_value());
+            auto put = putRow(machine, *units.value(), next, current, row.value().has_value());
             if (!put)
                 return fail(put.error());
             if (put.value()) {
                 outcome.written.insert(write.number, current + 1);
+                if (next.tool != write.tool)
+                    outcome.merged.insert(write.number, next.tool);
                 break;
             }
             if (attempt == kRaceRetries)

@@ -77,10 +77,13 @@ Result<QList<HistoryEvent>> eventsFromPayload(const QByteArray &payload)
 QByteArray toolsPayload(const ToolWrites &writes)
 {
     QJsonArray list;
-    for (const ToolWrite &w : writes.writes)
+    for (const ToolWrite &w : writes.writes) {
+        const auto data = [&writes](const std::optional<Tool> &tool) {
+            return tool ? QJsonValue(QString::fromUtf8(toolData(*tool, writes.units))) : QJsonValue();
+        };
         list.append(QJsonObject { { u"number"_s, w.number }, { u"base_version"_s, w.baseVersion },
-            { u"tool"_s,
-                w.tool ? QJsonValue(QString::fromUtf8(toolData(*w.tool, writes.units))) : QJsonValue() } });
+            { u"tool"_s, data(w.tool) }, { u"base"_s, data(w.base) } });
+    }
     return QJsonDocument(QJsonObject { { u"machine"_s, writes.machine },
                              { u"units"_s, unitsSymbol(writes.units) }, { u"writes"_s, list } })
         .toJson(QJsonDocument::Compact);
@@ -97,11 +100,14 @@ Result<ToolWrites> toolsFromPayload(const QByteArray &payload)
         const QJsonObject w = v.toObject();
         ToolWrite write { w.value(u"number"_s).toInt(), std::nullopt,
             qint64(w.value(u"base_version"_s).toDouble()) };
-        if (w.value(u"tool"_s).isString()) {
-            auto tool = toolFromData(w.value(u"tool"_s).toString().toUtf8(), out.units);
+        for (const auto &[key, into] :
+            { std::pair(u"tool"_s, &write.tool), std::pair(u"base"_s, &write.base) }) {
+            if (!w.value(key).isString())
+                continue;
+            auto tool = toolFromData(w.value(key).toString().toUtf8(), out.units);
             if (!tool)
                 return unreadable();
-            write.tool = tool.value();
+            *into = tool.value();
         }
         out.writes.append(std::move(write));
     }

@@ -40,13 +40,15 @@ struct StoredTable
     [[nodiscard]] const StoredTool *row(int number) const;
 };
 
-// One tool to write: the tool (or its removal) and the version of the row the station last read; 0 when it
-// read none (a new tool).
+// One tool to write: the tool (or its removal), and the row the station last read: its version (0 when it
+// read none, a new tool) and what it held, so that a change made meanwhile to other fields merges. Without
+// `base`, a tool changed meanwhile is always a conflict.
 struct ToolWrite
 {
     int number = 0;
     std::optional<Tool> tool;
     qint64 baseVersion = 0;
+    std::optional<Tool> base = std::nullopt;
     friend bool operator==(const ToolWrite &, const ToolWrite &) = default;
 };
 
@@ -63,6 +65,8 @@ struct ToolConflict
 struct WriteOutcome
 {
     QHash<int, qint64> written; // each written tool's new version
+    // The tools another station had changed in other fields: what was written, theirs and mine merged.
+    QHash<int, std::optional<Tool>> merged;
     QList<ToolConflict> conflicts;
     bool queued = false; // the shared library was out of reach: the writes wait in the outbox
 };

@@ -52,11 +52,25 @@ void SharedTableCases::twoStationsEditingTheSameToolConflictAndDifferentToolsBot
     const StoredTable now = a->readTable(u"C1"_s).value();
     QCOMPARE(now.row(1)->tool->lengthGeometry, 29.5); // A's change was not lost
     QCOMPARE(now.row(2)->tool->lengthGeometry, 24.0);
+    // A change to other fields than A's, made over the same version, merges in the library itself (an outbox
+    // replayed long after it was made).
+    Tool worn = tool(1, u"6 mm flat"_s, 30);
+    worn.lengthWear = -0.03;
+    auto merged = b->writeTools(u"C1"_s, { { 1, worn, 1, tool(1, u"6 mm flat"_s, 30) } });
+    QVERIFY(merged && merged.value().conflicts.isEmpty());
+    QCOMPARE(merged.value().merged.value(1)->lengthGeometry, 29.5); // A's
+    QCOMPARE(merged.value().merged.value(1)->lengthWear, -0.03); // B's
+    QCOMPARE(merged.value().written.value(1), 3);
+    const ToolConflict again
+        = b->writeTools(u"C1"_s, { { 1, conflict.mine, 1, tool(1, u"6 mm flat"_s, 30) } })
+              .value()
+              .conflicts.value(0);
+    QCOMPARE(again.theirVersion, 3);
     // B keeps its own after seeing theirs: written over the version it saw.
-    auto mine = b->writeTools(u"C1"_s, { { 1, conflict.mine, conflict.theirVersion } });
+    auto mine = b->writeTools(u"C1"_s, { { 1, conflict.mine, again.theirVersion } });
     QVERIFY(mine && mine.value().conflicts.isEmpty());
     QCOMPARE(a->readTable(u"C1"_s).value().row(1)->tool->lengthGeometry, 31.0);
-    QCOMPARE(a->readTable(u"C1"_s).value().row(1)->version, 3);
+    QCOMPARE(a->readTable(u"C1"_s).value().row(1)->version, 4);
 }
 
 void SharedTableCases::aRemovalAndATwiceAddedToolConflictToo()
@@ -154,6 +168,22 @@ void SharedTableCases::documentsMergeFieldsAndAskOnlyForTheSameField()
     auto kept = b->writeTools(u"C1"_s, docB.libraryWrites().writes);
     QVERIFY(kept && kept.value().conflicts.isEmpty());
     QCOMPARE(a->readTable(u"C1"_s).value().row(3)->tool->lengthGeometry, 42.0);
+    // B saves before it heard of A's change to another field of T2: the library merges, and B's table shows
+    // what was written, saved.
+    Tool t2 = *docA.table().find(2);
+    t2.radiusWear = 0.01;
+    QVERIFY(docA.editTool(2, t2));
+    QVERIFY(a->writeTools(u"C1"_s, docA.libraryWrites().writes));
+    Tool t2b = *docB.table().find(2);
+    t2b.notes = u"for aluminium"_s;
+    QVERIFY(docB.editTool(2, t2b));
+    const ToolWrites late = docB.libraryWrites();
+    auto written = b->writeTools(late.machine, late.writes);
+    QVERIFY(written && written.value().merged.contains(2));
+    docB.markWritten(late, written.value());
+    QCOMPARE(docB.table().find(2)->radiusWear, 0.01);
+    QCOMPARE(docB.table().find(2)->notes, u"for aluminium"_s);
+    QVERIFY(!docB.isModified());
 }
 
 void SharedTableCases::anotherStationsWriteIsSeenByTheWatcher()

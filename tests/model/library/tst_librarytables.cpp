@@ -66,7 +66,7 @@ private Q_SLOTS:
         e.currentMz = -90.625;
         QCOMPARE(eventsFromPayload(eventsPayload({ e })).value(), QList<HistoryEvent> { e });
         const ToolWrites writes { u"C1"_s, Units::Millimetre,
-            { { 7, tool(7, u"x"_s, 1), 4 }, { 8, std::nullopt, 2 } } };
+            { { 7, tool(7, u"x"_s, 1), 4, tool(7, u"y"_s, 2) }, { 8, std::nullopt, 2 } } };
         const auto back = toolsFromPayload(toolsPayload(writes));
         QVERIFY(back);
         QCOMPARE(back.value().writes, writes.writes);
