@@ -27,8 +27,12 @@ void LibraryStatusLabel::refresh()
     const bool shared = m_recorder->location().isShared();
     if (!m_recorder->isAvailable()) {
         m_waitedMost = std::max(m_waitedMost, waiting);
-        setText(shared ? tr("Library offline — %n change(s) waiting", nullptr, int(waiting))
-                       : tr("Library cannot be written — %n change(s) waiting", nullptr, int(waiting)));
+        if (shared)
+            setText(waiting == 1 ? tr("Library offline — 1 change waiting")
+                                 : tr("Library offline — %1 changes waiting").arg(waiting));
+        else
+            setText(waiting == 1 ? tr("Library cannot be written — 1 change waiting")
+                                 : tr("Library cannot be written — %1 changes waiting").arg(waiting));
         setToolTip(m_recorder->lastError());
         // The one state in the status bar that asks for attention: written in the palette's warning colour.
         setStyleSheet(u"QLabel { color: palette(bright-text); background: #b3261e; padding: 0 6px; }"_s);
@@ -54,8 +58,9 @@ void LibraryStatusLabel::back()
     refresh();
     if (!m_recorder->location().isShared())
         return; // the window says it of its own file, in its words for measurements
-    Q_EMIT announced(written > 0 ? tr("Library back: %n change(s) written", nullptr, int(written))
-                                 : tr("Library back: nothing was waiting"));
+    Q_EMIT announced(written == 0 ? tr("Library back: nothing was waiting")
+            : written == 1        ? tr("Library back: 1 change written")
+                                  : tr("Library back: %1 changes written").arg(written));
 }
 
 } // namespace Toffee

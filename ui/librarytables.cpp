@@ -188,9 +188,11 @@ bool MainWindow::saveLibraryTable()
     }
     if (!outcome.value().conflicts.isEmpty())
         return chooseConflicts(outcome.value().conflicts);
-    statusBar()->showMessage(
-        tr("Saved %n tool(s) to %1's table in %2", nullptr, int(outcome.value().written.size()))
-            .arg(writes.machine, m_tableLibrary.displayName()),
+    const auto count = outcome.value().written.size();
+    const QString where = m_tableLibrary.displayName();
+    statusBar()->showMessage(count == 1
+            ? tr("Saved 1 tool to %1's table in %2").arg(writes.machine, where)
+            : tr("Saved %1 tools to %2's table in %3").arg(count).arg(writes.machine, where),
         5000);
     return true;
 }

@@ -32,7 +32,8 @@ QString conflictNotice(const QList<ToolConflict> &conflicts)
     for (const ToolConflict &c : conflicts)
         parts << MainWindow::tr("T%1 was changed on %2").arg(c.number).arg(stationOf(c));
     return parts.join(u"; "_s) + u"; "_s
-        + MainWindow::tr("your edit is kept — Save to choose.", nullptr, int(conflicts.size()));
+        + (conflicts.size() == 1 ? MainWindow::tr("your edit is kept — Save to choose.")
+                                 : MainWindow::tr("your edits are kept — Save to choose."));
 }
 
 std::optional<Tool> toolIn(const ToolTable &table, int number)

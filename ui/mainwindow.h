@@ -131,7 +131,8 @@ private:
     void chooseReplayed(const QString &machine, QList<ToolConflict> conflicts);
     // The operator chooses per tool; theirs are taken, mine saved again. True when all is saved.
     bool chooseConflicts(const QList<ToolConflict> &conflicts);
-    void useOwnLibrary(const LibraryLocation &refused, const QString &message);
+    // The shared library cannot be used as set: said, and the station's own library is used.
+    void useOwnLibrary(const QString &message);
 
     ToolDocument *m_document;
     ToolTablePanel *m_tablePanel;

@@ -84,8 +84,11 @@ void MainWindow::connectHistory()
                                      : LibraryLocation::parse(chosen);
     // Opened once the event loop runs, not on the way to the window; unless --library chose one before.
     QTimer::singleShot(0, this, [this, location] {
-        if (!m_history->location().isSet())
-            setLibrary(location ? location.value() : LibraryLocation::standard());
+        if (m_history->location().isSet())
+            return;
+        setLibrary(location ? location.value() : LibraryLocation::standard());
+        if (!location)
+            useOwnLibrary(location.error().text()); // a setting this Toffee cannot read
     });
 }
 
@@ -98,8 +101,9 @@ void MainWindow::setLibrary(const LibraryLocation &location, const QString &stat
     // a shared one's wait in the station's own library (the outbox).
     auto opened = m_history->setLocation(location, options);
     if (!opened && location.isShared() && !serverDidNotAnswer(opened.error().message)) {
-        (void)m_history->setLocation(LibraryLocation::standard(), options);
-        useOwnLibrary(location, opened.error().text());
+        // The station's own library, where a shared one's changes wait too: LibraryLocation::standard().
+        (void)m_history->setLocation(m_history->outboxLocation(), options);
+        useOwnLibrary(opened.error().text());
     }
     m_libraryLabel->refresh();
     updateTitle();
@@ -107,7 +111,7 @@ void MainWindow::setLibrary(const LibraryLocation &location, const QString &stat
 
 // Told without stopping the window (a startup with --library must not wait for a click), and kept in the
 // status bar.
-void MainWindow::useOwnLibrary(const LibraryLocation &refused, const QString &message)
+void MainWindow::useOwnLibrary(const QString &message)
 {
     const QString own = tr("Toffee records into this station's own library (%1) until the shared one is "
                            "fixed in Machine ▸ History Library….")
@@ -118,7 +122,7 @@ void MainWindow::useOwnLibrary(const LibraryLocation &refused, const QString &me
     box->setAccessibleName(tr("The shared library cannot be used"));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
-    statusBar()->showMessage(tr("%1 cannot be used: %2").arg(refused.displayName(), own));
+    statusBar()->showMessage(message + u' ' + own);
 }
 
 void MainWindow::recordHistory(const Recording &recording)

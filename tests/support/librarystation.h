@@ -14,6 +14,7 @@
 #include <QListWidget>
 #include <QStatusBar>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
@@ -53,10 +54,12 @@ template<typename T> void answering(const std::function<void(T *)> &answer, cons
 
 struct LibraryStation
 {
+    QTemporaryDir own; // the station's own library, where a shared one's changes wait: one per computer
     MainWindow window;
 
     LibraryStation(const LibraryLocation &location, const QString &station)
     {
+        window.history()->setOutboxLocation({ .path = own.filePath(QStringLiteral("own.sqlite")) });
         window.setLibrary(location, station);
         window.show();
     }
