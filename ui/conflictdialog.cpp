@@ -9,6 +9,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
+#include <QScreen>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -122,7 +123,23 @@ ConflictDialog::ConflictDialog(const QList<ToolConflict> &conflicts, Units units
     layout->addWidget(intro);
     layout->addWidget(m_table, 1);
     layout->addWidget(buttons);
-    resize(760, std::min(560, 160 + m_table->verticalHeader()->length()));
+    // Wrapped text is as tall as its column is narrow: the rows follow the columns' widths.
+    connect(m_table->horizontalHeader(), &QHeaderView::sectionResized, m_table,
+        &QTableWidget::resizeRowsToContents);
+    if (!m_choices.isEmpty())
+        m_choices.front()->setFocus();
+    resize(800, 400);
+}
+
+// As tall as the rows need once they are laid out at the dialog's width, within the screen.
+void ConflictDialog::showEvent(QShowEvent *event)
+{
+    QDialog::showEvent(event);
+    m_table->resizeRowsToContents();
+    const int rows = m_table->verticalHeader()->length() + m_table->horizontalHeader()->height()
+        + 2 * m_table->frameWidth();
+    const int available = screen() ? screen()->availableGeometry().height() * 4 / 5 : 600;
+    resize(width(), std::min(available, height() - m_table->height() + rows));
 }
 
 void ConflictDialog::fill(Units units)
@@ -138,15 +155,22 @@ void ConflictDialog::fill(Units units)
             = new QTableWidgetItem(tr("From %1:").arg(station) + u'\n' + describe(c.theirs, c.mine, units));
         theirs->setTextAlignment(Qt::AlignLeft | Qt::AlignTop);
         m_table->setItem(row, TheirsColumn, theirs);
-        auto *mine = new QTableWidgetItem(tr("Yours:") + u'\n' + describe(c.mine, c.theirs, units));
+        auto *mine
+            = new QTableWidgetItem(tr("From this station:") + u'\n' + describe(c.mine, c.theirs, units));
         mine->setTextAlignment(Qt::AlignLeft | Qt::AlignTop);
         m_table->setItem(row, MineColumn, mine);
-        auto *choice = new QComboBox(m_table);
+        // At the top of its cell, beside the tool's first line, not stretched over the row's height.
+        auto *cell = new QWidget(m_table);
+        auto *choice = new QComboBox(cell);
+        auto *top = new QVBoxLayout(cell);
+        top->setContentsMargins(4, 2, 4, 2);
+        top->addWidget(choice);
+        top->addStretch(1);
         choice->setObjectName(u"conflictChoice%1"_s.arg(c.number));
         choice->setAccessibleName(tr("Version of T%1 to keep").arg(c.number));
         choice->addItem(tr("Keep mine"));
         choice->addItem(tr("Take theirs (%1)").arg(station));
-        m_table->setCellWidget(row, ChoiceColumn, choice);
+        m_table->setCellWidget(row, ChoiceColumn, cell);
         m_choices.append(choice);
     }
     m_table->resizeRowsToContents();

@@ -33,6 +33,9 @@ public:
     [[nodiscard]] static QString describe(
         const std::optional<Tool> &tool, const std::optional<Tool> &other, Units units);
 
+protected:
+    void showEvent(QShowEvent *event) override;
+
 private:
     void fill(Units units);
 

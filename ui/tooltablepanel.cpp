@@ -51,9 +51,9 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
     m_banner->setAccessibleName(tr("Read-only"));
     m_banner->setTextFormat(Qt::PlainText);
     m_banner->setWordWrap(true);
-    // A strip in the palette's tooltip colours: seen at a glance, and readable in the dark palette too.
-    m_banner->setStyleSheet(u"QLabel { background: palette(tooltip-base); color: palette(tooltip-text); "
-                            "padding: 6px; border-bottom: 1px solid palette(mid); }"_s);
+    // An amber strip with its own text colour: seen at a glance, and as readable in the dark palette.
+    m_banner->setStyleSheet(u"QLabel { background: #fff1c2; color: #3d2e00; padding: 6px; "
+                            "border: 1px solid #d9b44a; }"_s);
     setReadOnly({});
     m_view->setWordWrap(false);
     m_view->setTabKeyNavigation(false); // Tab moves on to the next control, not through every cell
