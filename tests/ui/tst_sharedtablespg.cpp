@@ -3,6 +3,7 @@
 // tst_sharedtables with LISTEN/NOTIFY instead of polling, a role that may only read (a read-only window that
 // still follows the others), and each wrong setting named while the station records into its own library.
 #include <QAbstractItemView>
+#include <QLineEdit>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -11,6 +12,7 @@
 #include "tests/support/pgcluster.h"
 #include "tests/ui/sharedtablestories.h"
 #include "ui/appsettings.h"
+#include "ui/historysettingsdialog.h"
 #include "ui/librarystatuslabel.h"
 
 using namespace Toffee;
@@ -116,6 +118,58 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(r.tool(5).description, u"1/8\" O-flute, acrylic only"_s, kLiveMs);
         QVERIFY(!r.document()->isModified());
         QVERIFY(!r.document()->undoStack()->canUndo());
+    }
+
+    // The server refuses the save (the role lost its rights since the table was opened): the operator reads
+    // why, the library holds none of the edits, and the table on screen keeps them all.
+    void aSaveTheServerRefusesIsSaidAndWritesNothing()
+    {
+        const LibraryLocation at = freshLibrary();
+        LibraryStation a(at, u"Station A"_s);
+        QVERIFY(a.window.openFile(kExampleTable));
+        a.saveToLibrary(kMachine);
+        a.edit(3, [](Tool &t) { t.notes = u"first"_s; });
+        a.edit(6, [](Tool &t) { t.notes = u"second"_s; });
+        QString error;
+        QVERIFY2(
+            m_cluster.exec(u"REVOKE UPDATE ON tools FROM toffee"_s, &error, at.database), qPrintable(error));
+        QString said;
+        answerNextBox(QMessageBox::Ok, &said);
+        QVERIFY(!a.save().shown);
+        QVERIFY2(said.contains(u"permission denied"_s), qPrintable(said));
+        QVERIFY(said.contains(u"Nothing was written"_s));
+        QVERIFY(a.document()->isModified());
+        QCOMPARE(a.tool(3).notes, u"first"_s);
+        QCOMPARE(a.tool(6).notes, u"second"_s);
+        const ToolTable stored = libraryTable(at);
+        QVERIFY(stored.find(3)->notes.isEmpty());
+        QVERIFY(stored.find(6)->notes.isEmpty());
+        QVERIFY2(
+            m_cluster.exec(u"GRANT UPDATE ON tools TO toffee"_s, &error, at.database), qPrintable(error));
+        QVERIFY(!a.save().shown);
+        QVERIFY(!a.document()->isModified());
+        QCOMPARE(libraryTable(at), a.table());
+    }
+
+    // Machine ▸ History Library… takes a URL as well as a file, and the window goes over to it.
+    void theSettingsTakeAPostgresqlUrl()
+    {
+        const LibraryLocation at = freshLibrary();
+        QTemporaryDir own;
+        LibraryStation a(LibraryLocation { .path = own.filePath(u"l.sqlite"_s) }, u"Station A"_s);
+        answering<HistorySettingsDialog>(
+            [&](HistorySettingsDialog *dialog) {
+                dialog->findChild<QLineEdit *>(u"libraryPathEdit"_s)
+                    ->setText(m_cluster.url(u"toffee"_s, at.database));
+                dialog->accept();
+            },
+            [&] { a.action(u"actionHistorySettings"_s)->trigger(); });
+        QCOMPARE(AppSettings().libraryLocation(), at.text());
+        QCOMPARE(a.window.history()->location(), at);
+        QVERIFY(a.window.history()->library());
+        QCOMPARE(
+            a.window.findChild<QLabel *>(u"libraryStatusLabel"_s)->text(), u"Library: "_s + at.displayName());
+        AppSettings().setLibraryLocation({});
     }
 
     void eachWrongSettingIsNamedAndTheOwnLibraryRecords_data()
