@@ -73,6 +73,7 @@ bench: build
 	$(BUILD_DIR)/bin/toffee-bench-table
 	$(BUILD_DIR)/bin/toffee-bench-interpreter 1000000
 	$(BUILD_DIR)/bin/toffee-bench-library 1000000
+	$(BUILD_DIR)/bin/toffee-bench-sharedlibrary
 	QT_QPA_PLATFORM=offscreen $(BUILD_DIR)/bin/toffee-bench-historychart 10000
 	$(BUILD_DIR)/bin/toffee-bench-jobcheck 5000000
 	$(BUILD_DIR)/bin/toffee-cli --emulator link-test --count 10000
