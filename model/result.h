@@ -21,6 +21,8 @@ struct Error
     QString message;
     int line = 0; // 1-based; 0 when the error belongs to no line
     QString file; // the file it is in, when there is one
+    // What kind of failure, for the caller that acts on it (Library::kUnreachable); empty for most.
+    QString code = {};
 
     // "file: line 3: message", leaving out what is not known.
     [[nodiscard]] QString text() const;

@@ -37,15 +37,6 @@ namespace {
 // for the library.
 constexpr int kWindowBusyTimeoutMs = 250;
 
-// Library::explainConnectFailure's words for a server that did not answer: the one failure that waiting mends
-// (the station works offline, its changes in the outbox). Any other needs the URL, the password file or the
-// server fixed first.
-bool serverDidNotAnswer(const QString &message)
-{
-    return message.contains(Library::tr("The server cannot be reached. Check that it is running and that the "
-                                        "host and port in the URL are right."));
-}
-
 } // namespace
 
 void MainWindow::connectHistory()
@@ -96,11 +87,17 @@ void MainWindow::setLibrary(const LibraryLocation &location, const QString &stat
 {
     if (!station.isEmpty())
         m_station = station;
-    const Library::Options options { .busyTimeoutMs = kWindowBusyTimeoutMs, .station = m_station };
+    // The window opens a shared library on its own thread: a server that does not answer holds it up for the
+    // connect timeout, so that is short. (Reconnecting is asked from another thread: HistoryRecorder.)
+    const Library::Options options {
+        .busyTimeoutMs = kWindowBusyTimeoutMs, .connectTimeoutS = 2, .station = m_station
+    };
     // A failure is told by the recorder's unavailable(); the measurements wait for a library that opens, and
     // a shared one's wait in the station's own library (the outbox).
     auto opened = m_history->setLocation(location, options);
-    if (!opened && location.isShared() && !serverDidNotAnswer(opened.error().message)) {
+    // A server that did not answer is waited for (the station works offline, its changes in the outbox); any
+    // other failure needs the URL, the password file or the server fixed first.
+    if (!opened && location.isShared() && opened.error().code != Library::kUnreachable) {
         // The station's own library, where a shared one's changes wait too: LibraryLocation::standard().
         (void)m_history->setLocation(m_history->outboxLocation(), options);
         useOwnLibrary(opened.error().text());

@@ -65,16 +65,48 @@ ToolWrites ToolDocument::libraryWrites() const
         const StoredTool *row = m_base.row(number);
         const std::optional<Tool> mine = toolIn(table(), number);
         const std::optional<Tool> base = row ? row->tool : std::nullopt;
-        if (mine != base)
-            out.writes.append({ number, mine, row ? row->version : 0, base });
+        if (mine == base || (m_queued.contains(number) && m_queued.value(number) == mine))
+            continue; // as read, or waiting in the outbox
+        out.writes.append({ number, mine, row ? row->version : 0, base });
     }
     return out;
 }
 
+// Saved when the library holds (or the outbox will send) every tool as shown; otherwise modified, even when
+// the undo stack is at its clean index (a conflict resolved as mine, after a save).
 void ToolDocument::cleanWhenWritten()
 {
     if (libraryWrites().writes.isEmpty())
         m_undoStack.setClean();
+    else if (m_undoStack.isClean())
+        m_undoStack.resetClean();
+}
+
+// The table becomes `next` as one undoable step, tool by tool: the rows that did not change keep their
+// selection, the cell being looked at and the column widths (a reset would lose them).
+void ToolDocument::applyTable(const ToolTable &next, const QString &text)
+{
+    QList<QUndoCommand *> steps;
+    QList<Tool> removed;
+    for (const Tool &before : table().tools()) {
+        const Tool *after = next.find(before.number);
+        if (!after)
+            removed.append(before);
+        else if (!(*after == before))
+            steps.append(new EditToolCommand(&m_model, before, *after));
+    }
+    for (const Tool &after : next.tools()) {
+        if (!table().contains(after.number))
+            steps.append(new AddToolCommand(&m_model, after));
+    }
+    if (!removed.isEmpty())
+        steps.append(new RemoveToolsCommand(&m_model, removed));
+    if (steps.isEmpty())
+        return;
+    m_undoStack.beginMacro(text);
+    for (QUndoCommand *step : steps)
+        m_undoStack.push(step);
+    m_undoStack.endMacro();
 }
 
 void ToolDocument::markWritten(const ToolWrites &writes, const WriteOutcome &outcome)
@@ -82,7 +114,9 @@ void ToolDocument::markWritten(const ToolWrites &writes, const WriteOutcome &out
     ToolTable next = table();
     for (const ToolWrite &write : writes.writes) {
         if (outcome.queued) {
-            setBaseRow(write.number, write.tool, write.baseVersion); // checked against the library when sent
+            // Sent when the library is back, and checked then against what it holds: until then the tool is
+            // neither written (its row stays as read) nor to be written again.
+            m_queued.insert(write.number, write.tool);
         } else if (outcome.merged.contains(write.number)) {
             // Another station's change to other fields was merged in: the table shows what was written.
             const std::optional<Tool> merged = outcome.merged.value(write.number);
@@ -93,8 +127,7 @@ void ToolDocument::markWritten(const ToolWrites &writes, const WriteOutcome &out
             setBaseRow(write.number, write.tool, outcome.written.value(write.number));
         }
     }
-    if (!(next == table()))
-        m_undoStack.push(new ReplaceTableCommand(&m_model, table(), next, tr("Update from the library")));
+    applyTable(next, tr("Update from the library"));
     cleanWhenWritten();
 }
 
@@ -102,7 +135,6 @@ QList<ToolConflict> ToolDocument::takeRemote(const StoredTable &latest)
 {
     if (latest.machine != m_base.machine)
         return {};
-    const bool wasClean = m_undoStack.isClean();
     ToolTable next = table();
     QList<ToolConflict> conflicts;
     for (const StoredTool &theirs : latest.rows) {
@@ -118,22 +150,22 @@ QList<ToolConflict> ToolDocument::takeRemote(const StoredTable &latest)
         }
         put(next, theirs.number, *merged);
         setBaseRow(theirs.number, theirs.tool, theirs.version);
+        // A queued write is in `merged` now, or was what the library took: either way written from here.
+        m_queued.remove(theirs.number);
     }
-    if (!(next == table()))
-        m_undoStack.push(new ReplaceTableCommand(&m_model, table(), next, tr("Update from the library")));
-    if (wasClean)
-        cleanWhenWritten();
+    applyTable(next, tr("Update from the library"));
+    cleanWhenWritten();
     return conflicts;
 }
 
 void ToolDocument::resolveConflict(const ToolConflict &conflict, bool keepMine)
 {
     setBaseRow(conflict.number, conflict.theirs, conflict.theirVersion);
+    m_queued.remove(conflict.number); // mine is written at the next Save, over theirs
     if (!keepMine && toolIn(table(), conflict.number) != conflict.theirs) {
         ToolTable next = table();
         put(next, conflict.number, conflict.theirs);
-        m_undoStack.push(new ReplaceTableCommand(
-            &m_model, table(), next, tr("Take T%1 from %2").arg(conflict.number).arg(conflict.theirStation)));
+        applyTable(next, tr("Take T%1 from %2").arg(conflict.number).arg(conflict.theirStation));
     }
     cleanWhenWritten();
 }

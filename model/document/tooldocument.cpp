@@ -28,6 +28,7 @@ ToolDocument::~ToolDocument()
 void ToolDocument::setFile(const QString &path, TableFormat format)
 {
     m_base = {}; // a file, not a library's table
+    m_queued.clear();
     m_fileFormat = format;
     if (m_filePath != path) {
         m_filePath = path;

@@ -91,12 +91,14 @@ private:
     void setFile(const QString &path, TableFormat format);
     void setBaseRow(int number, const std::optional<Tool> &tool, qint64 version);
     void cleanWhenWritten();
+    void applyTable(const ToolTable &next, const QString &text);
 
     ToolTableModel m_model;
     QUndoStack m_undoStack;
     QString m_filePath;
     TableFormat m_fileFormat = TableFormat::Json;
     StoredTable m_base; // a library table's tools as last read or written
+    QHash<int, std::optional<Tool>> m_queued; // tools saved into the outbox, not yet sent
 };
 
 } // namespace Toffee

@@ -58,6 +58,10 @@ public:
     [[nodiscard]] QSqlDriver *driver() const;
     // What the server said when it could not be reached, made into what to fix.
     [[nodiscard]] static QString explainConnectFailure(const LibraryLocation &location, const QString &why);
+    // Error::code of a shared library whose server did not answer: the one failure that waiting mends (the
+    // station works offline meanwhile). Any other needs the URL, the password file or the server fixed.
+    static constexpr QLatin1StringView kUnreachable { "library-unreachable" };
+    [[nodiscard]] static bool isUnreachable(const QString &why);
     // True when the last failure was the connection itself (the server gone), not the statement.
     [[nodiscard]] bool isConnectionLost() const;
 

@@ -55,6 +55,19 @@ Result<void> checkSqlitePath(const QString &path)
 
 } // namespace
 
+bool Library::isUnreachable(const QString &why)
+{
+    // libpq's words for a server that is not there (a socket without a server, a refused or timed-out
+    // connection, one closed under it); a wrong password, role, database or encryption is something else.
+    static const QStringList kGone = { u"could not connect"_s, u"Connection refused"_s,
+        u"No such file or directory"_s, u"timeout expired"_s, u"server closed the connection"_s,
+        u"Is the server running"_s, u"the database system is starting up"_s,
+        u"the database system is shutting down"_s, u"the database system is in recovery mode"_s,
+        u"No route to host"_s, u"Network is unreachable"_s };
+    return std::any_of(
+        kGone.cbegin(), kGone.cend(), [&why](const QString &gone) { return why.contains(gone); });
+}
+
 // What libpq said, turned into what to fix. The server's own words stay at the end, for whoever runs it.
 QString Library::explainConnectFailure(const LibraryLocation &location, const QString &why)
 {
@@ -123,8 +136,11 @@ Result<std::unique_ptr<Library>> Library::open(const LibraryLocation &location, 
             const QString why = db.lastError().text();
             db = QSqlDatabase();
             QSqlDatabase::removeDatabase(name);
-            return Error { shared ? explainConnectFailure(location, why)
-                                  : tr("%1 cannot be opened: %2").arg(location.path, why) };
+            Error error { shared ? explainConnectFailure(location, why)
+                                 : tr("%1 cannot be opened: %2").arg(location.path, why) };
+            if (shared && isUnreachable(why))
+                error.code = QString(kUnreachable);
+            return error;
         }
     }
     std::unique_ptr<Library> library(new Library(location, name));

@@ -131,8 +131,14 @@ Result<StoredTable> Library::readTable(const QString &machine) const
 Result<std::optional<StoredTool>> Library::readRow(const QString &machine, int number) const
 {
     QSqlQuery query(database());
+    // Read to be written, inside the writer's transaction: on PostgreSQL the row is locked until the commit,
+    // so the version read is still the row's when it is written (without the lock, stations saving the same
+    // tool at full speed could keep overtaking each other). SQLite's IMMEDIATE transaction already excludes
+    // every other writer.
+    const QString lock = m_location.isShared() ? u" FOR UPDATE OF tools"_s : QString();
     query.prepare(u"SELECT version, deleted, data, updated_by, units FROM tools JOIN machine_tables USING "
-                  "(machine) WHERE machine = ? AND number = ?"_s);
+                  "(machine) WHERE machine = ? AND number = ?"_s
+        + lock);
     query.addBindValue(machine);
     query.addBindValue(number);
     if (!query.exec())
