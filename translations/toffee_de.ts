@@ -2,6 +2,69 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name></name>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>Platz</translation>
+    </message>
+    <message>
+        <source>TLO</source>
+        <translation>TLO</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Length wear</source>
+        <translation>Längenverschleiß</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source>Radius wear</source>
+        <translation>Radiusverschleiß</translation>
+    </message>
+    <message>
+        <source>Break test</source>
+        <translation>Bruchtest</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>passed or not run</source>
+        <translation>bestanden oder nicht ausgeführt</translation>
+    </message>
+    <message>
+        <source>Reference MCS Z</source>
+        <translation>Referenz-MCS-Z</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notizen</translation>
+    </message>
+    <message>
+        <source>LinuxCNC fields</source>
+        <translation>LinuxCNC-Felder</translation>
+    </message>
+</context>
+<context>
     <name>Toffee</name>
     <message>
         <source>tool number %1 is out of range; use %2 to %3.</source>
@@ -926,6 +989,117 @@
     </message>
 </context>
 <context>
+    <name>Toffee::ConflictDialog</name>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>von Hand gesetzt</translation>
+    </message>
+    <message>
+        <source>probed</source>
+        <translation>vermessen</translation>
+    </message>
+    <message>
+        <source>time unknown</source>
+        <translation>Zeit unbekannt</translation>
+    </message>
+    <message>
+        <source>%1 (%2, %3)</source>
+        <translation>%1 (%2, %3)</translation>
+    </message>
+    <message>
+        <source>Removed from the table</source>
+        <translation>Aus der Tabelle entfernt</translation>
+    </message>
+    <message>
+        <source>Tools changed on another station</source>
+        <translation>Auf einer anderen Station geänderte Werkzeuge</translation>
+    </message>
+    <message>
+        <source>Changed on Another Station</source>
+        <translation>Auf einer anderen Station geändert</translation>
+    </message>
+    <message>
+        <source>What happened</source>
+        <translation>Was passiert ist</translation>
+    </message>
+    <message>
+        <source>Another station changed this tool since you opened the table, and so did you. Choose which version the library keeps. Everything else is saved.</source>
+        <translation>Eine andere Station hat dieses Werkzeug geändert, seit Sie die Tabelle geöffnet haben, und Sie ebenfalls. Wählen Sie, welche Version die Bibliothek behält. Alles andere ist gespeichert.</translation>
+    </message>
+    <message>
+        <source>Another station changed these %1 tools since you opened the table, and so did you. Choose, for each, which version the library keeps. Everything else is saved.</source>
+        <translation>Eine andere Station hat diese %1 Werkzeuge geändert, seit Sie die Tabelle geöffnet haben, und Sie ebenfalls. Wählen Sie für jedes, welche Version die Bibliothek behält. Alles andere ist gespeichert.</translation>
+    </message>
+    <message>
+        <source>Their version and yours, per tool</source>
+        <translation>Die Version der anderen Station und Ihre, je Werkzeug</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>Theirs</source>
+        <translation>Ihre</translation>
+    </message>
+    <message>
+        <source>Mine</source>
+        <translation>Meine</translation>
+    </message>
+    <message>
+        <source>Keep</source>
+        <translation>Behalten</translation>
+    </message>
+    <message>
+        <source>Apply the choices or decide later</source>
+        <translation>Die Auswahl anwenden oder später entscheiden</translation>
+    </message>
+    <message>
+        <source>&amp;Apply Choices</source>
+        <translation>Auswahl &amp;anwenden</translation>
+    </message>
+    <message>
+        <source>Apply the choices</source>
+        <translation>Die Auswahl anwenden</translation>
+    </message>
+    <message>
+        <source>Decide &amp;Later</source>
+        <translation>&amp;Später entscheiden</translation>
+    </message>
+    <message>
+        <source>Decide later; your edits stay unsaved</source>
+        <translation>Später entscheiden; Ihre Änderungen bleiben ungespeichert</translation>
+    </message>
+    <message>
+        <source>another station</source>
+        <translation>einer anderen Station</translation>
+    </message>
+    <message>
+        <source>From %1:</source>
+        <translation>Von %1:</translation>
+    </message>
+    <message>
+        <source>From this station:</source>
+        <translation>Von dieser Station:</translation>
+    </message>
+    <message>
+        <source>Version of T%1 to keep</source>
+        <translation>Zu behaltende Version von T%1</translation>
+    </message>
+    <message>
+        <source>Keep mine</source>
+        <translation>Meine behalten</translation>
+    </message>
+    <message>
+        <source>Take theirs (%1)</source>
+        <translation>Ihre übernehmen (von %1)</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::ConnectionPanel</name>
     <message>
         <source>Refresh</source>
@@ -1622,14 +1796,17 @@
     </message>
 </context>
 <context>
+    <name>Toffee::HistoryRecorder</name>
+    <message>
+        <source>The library (%1) cannot be reached: its server stopped answering. Toffee keeps what you record and writes it when the server is back.</source>
+        <translation>Die Bibliothek (%1) ist nicht erreichbar: Der Server antwortet nicht mehr. Toffee behält, was Sie aufzeichnen, und schreibt es, sobald der Server wieder da ist.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::HistorySettingsDialog</name>
     <message>
         <source>History Library</source>
         <translation>Verlaufsbibliothek</translation>
-    </message>
-    <message>
-        <source>Library file</source>
-        <translation>Bibliotheksdatei</translation>
     </message>
     <message>
         <source>Machine name</source>
@@ -1646,10 +1823,6 @@
     <message>
         <source>Browse…</source>
         <translation>Durchsuchen…</translation>
-    </message>
-    <message>
-        <source>Library file:</source>
-        <translation>Bibliotheksdatei:</translation>
     </message>
     <message>
         <source>This machine&apos;s name:</source>
@@ -1670,6 +1843,26 @@
     <message>
         <source>This library cannot be used: %1</source>
         <translation>Diese Bibliothek lässt sich nicht verwenden: %1</translation>
+    </message>
+    <message>
+        <source>Library file or URL</source>
+        <translation>Bibliotheksdatei oder URL</translation>
+    </message>
+    <message>
+        <source>A file, or postgresql://user@server/database</source>
+        <translation>Eine Datei oder postgresql://user@server/database</translation>
+    </message>
+    <message>
+        <source>An SQLite file for this computer, or a shared PostgreSQL database as postgresql://user@host:port/dbname?sslmode=require. The password goes in the PostgreSQL password file (~/.pgpass), never in the URL.</source>
+        <translation>Eine SQLite-Datei für diesen Computer oder eine gemeinsame PostgreSQL-Datenbank als postgresql://user@host:port/dbname?sslmode=require. Das Passwort gehört in die PostgreSQL-Passwortdatei (~/.pgpass), nie in die URL.</translation>
+    </message>
+    <message>
+        <source>Choose a library file</source>
+        <translation>Bibliotheksdatei wählen</translation>
+    </message>
+    <message>
+        <source>Library file or URL:</source>
+        <translation>Bibliotheksdatei oder URL:</translation>
     </message>
 </context>
 <context>
@@ -2428,10 +2621,6 @@
         <translation>Das Lesen der Bibliothek</translation>
     </message>
     <message>
-        <source>%1 is an SQLite database, but not a Toffee library (it has tables of its own). Choose another file.</source>
-        <translation>%1 ist eine SQLite-Datenbank, aber keine Toffee-Bibliothek (sie hat eigene Tabellen). Wählen Sie eine andere Datei.</translation>
-    </message>
-    <message>
         <source>Reading the library&apos;s version</source>
         <translation>Das Lesen der Bibliotheksversion</translation>
     </message>
@@ -2447,20 +2636,215 @@
         <source>Bringing the library up to date</source>
         <translation>Das Aktualisieren der Bibliothek</translation>
     </message>
+    <message>
+        <source>your login name</source>
+        <translation>Ihr Anmeldename</translation>
+    </message>
+    <message>
+        <source>The server refused %1&apos;s password. Put the right one in the PostgreSQL password file (~/.pgpass, or the file PGPASSFILE names): Toffee never stores one.</source>
+        <translation>Der Server hat das Passwort abgelehnt (Benutzer: %1). Tragen Sie das richtige in die PostgreSQL-Passwortdatei ein (~/.pgpass oder die Datei, die PGPASSFILE nennt): Toffee speichert nie ein Passwort.</translation>
+    </message>
+    <message>
+        <source>The server has no database &quot;%1&quot;. Check the name in the URL, or have it created (createdb %1; docs/LIBRARY.md).</source>
+        <translation>Der Server hat keine Datenbank „%1“. Prüfen Sie den Namen in der URL oder lassen Sie sie anlegen (createdb %1; docs/LIBRARY.md).</translation>
+    </message>
+    <message>
+        <source>The server has no user &quot;%1&quot;. Check the user in the URL, or have the role created (docs/LIBRARY.md).</source>
+        <translation>Der Server hat keinen Benutzer „%1“. Prüfen Sie den Benutzer in der URL oder lassen Sie die Rolle anlegen (docs/LIBRARY.md).</translation>
+    </message>
+    <message>
+        <source>The server&apos;s name &quot;%1&quot; is not known here. Check the host in the URL.</source>
+        <translation>Der Servername „%1“ ist hier nicht bekannt. Prüfen Sie den Host in der URL.</translation>
+    </message>
+    <message>
+        <source>The connection&apos;s encryption failed. Check sslmode in the URL against the server&apos;s settings.</source>
+        <translation>Die Verschlüsselung der Verbindung ist fehlgeschlagen. Gleichen Sie sslmode in der URL mit den Einstellungen des Servers ab.</translation>
+    </message>
+    <message>
+        <source>The server cannot be reached. Check that it is running and that the host and port in the URL are right.</source>
+        <translation>Der Server ist nicht erreichbar. Prüfen Sie, ob er läuft und ob Host und Port in der URL stimmen.</translation>
+    </message>
+    <message>
+        <source>The library (%1) cannot be opened. %2 (The server said: %3)</source>
+        <translation>Die Bibliothek (%1) lässt sich nicht öffnen. %2 (Der Server meldete: %3)</translation>
+    </message>
+    <message>
+        <source>Qt&apos;s PostgreSQL driver is missing: install libqt6sql6-psql to use %1.</source>
+        <translation>Qts PostgreSQL-Treiber fehlt: Installieren Sie libqt6sql6-psql, um %1 zu verwenden.</translation>
+    </message>
+    <message>
+        <source>Reading the server&apos;s version</source>
+        <translation>Das Lesen der Serverversion</translation>
+    </message>
+    <message>
+        <source>The library (%1) is on PostgreSQL %2, which this Toffee does not support: it needs %3 or newer. Upgrade the server, or use another one.</source>
+        <translation>Die Bibliothek (%1) liegt auf PostgreSQL %2, das dieses Toffee nicht unterstützt: Es braucht %3 oder neuer. Aktualisieren Sie den Server oder verwenden Sie einen anderen.</translation>
+    </message>
+    <message>
+        <source>Reading your rights in the library</source>
+        <translation>Das Lesen Ihrer Rechte in der Bibliothek</translation>
+    </message>
+    <message>
+        <source>%1 is a database, but not a Toffee library (it has tables of its own). Choose another one.</source>
+        <translation>%1 ist eine Datenbank, aber keine Toffee-Bibliothek (sie hat eigene Tabellen). Wählen Sie eine andere.</translation>
+    </message>
+    <message>
+        <source>The library (%1) is read-only for %2: this role may read the tools but not change them. Ask whoever runs the server for write rights (docs/LIBRARY.md).</source>
+        <translation>Die Bibliothek (%1) ist für %2 schreibgeschützt: Diese Rolle darf die Werkzeuge lesen, aber nicht ändern. Bitten Sie den Betreiber des Servers um Schreibrechte (docs/LIBRARY.md).</translation>
+    </message>
+    <message>
+        <source>you</source>
+        <translation>Sie</translation>
+    </message>
+    <message>
+        <source>%1 is read-only: it cannot be written.</source>
+        <translation>%1 ist schreibgeschützt und lässt sich nicht schreiben.</translation>
+    </message>
+    <message>
+        <source>Announcing the change</source>
+        <translation>Das Ankündigen der Änderung</translation>
+    </message>
+    <message>
+        <source>Reading the machine tables</source>
+        <translation>Das Lesen der Maschinentabellen</translation>
+    </message>
+    <message>
+        <source>Reading %1&apos;s table</source>
+        <translation>Das Lesen der Tabelle von %1</translation>
+    </message>
+    <message>
+        <source>The library has no tool table for %1.</source>
+        <translation>Die Bibliothek hat keine Werkzeugtabelle für %1.</translation>
+    </message>
+    <message>
+        <source>%1: T%2 of %3&apos;s table cannot be read: %4</source>
+        <translation>%1: T%2 der Tabelle von %3 lässt sich nicht lesen: %4</translation>
+    </message>
+    <message>
+        <source>Reading T%1 of %2</source>
+        <translation>Das Lesen von T%1 aus der Tabelle von %2</translation>
+    </message>
+    <message>
+        <source>Writing T%1 of %2</source>
+        <translation>Das Schreiben von T%1 in die Tabelle von %2</translation>
+    </message>
+    <message>
+        <source>Adding %1&apos;s table</source>
+        <translation>Das Hinzufügen der Tabelle von %1</translation>
+    </message>
+    <message>
+        <source>The library already has a tool table for %1: open it, or choose another name.</source>
+        <translation>Die Bibliothek hat bereits eine Werkzeugtabelle für %1: Öffnen Sie sie oder wählen Sie einen anderen Namen.</translation>
+    </message>
+    <message>
+        <source>T%1 of %2 kept changing while it was written.</source>
+        <translation>T%1 der Tabelle von %2 hat sich beim Schreiben immer wieder geändert.</translation>
+    </message>
+    <message>
+        <source>Keeping a change for later</source>
+        <translation>Das Aufbewahren einer Änderung für später</translation>
+    </message>
+    <message>
+        <source>Reading the changes kept for later</source>
+        <translation>Das Lesen der für später aufbewahrten Änderungen</translation>
+    </message>
+    <message>
+        <source>Clearing a change written</source>
+        <translation>Das Löschen einer geschriebenen Änderung</translation>
+    </message>
+    <message>
+        <source>A tool&apos;s row does not hold one tool in its table&apos;s units.</source>
+        <translation>Die Zeile eines Werkzeugs enthält nicht genau ein Werkzeug in den Einheiten seiner Tabelle.</translation>
+    </message>
+    <message>
+        <source>An outbox entry cannot be read; it is kept as it is.</source>
+        <translation>Ein Eintrag im Postausgang lässt sich nicht lesen; er bleibt unverändert erhalten.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
     <message>
-        <source>%1: a shared library on PostgreSQL is not supported by this version of Toffee; use an SQLite file (a path, or sqlite:PATH).</source>
-        <translation>%1: Eine gemeinsame Bibliothek auf PostgreSQL unterstützt diese Toffee-Version nicht; verwenden Sie eine SQLite-Datei (einen Pfad oder sqlite:PFAD).</translation>
+        <source>%1 is not a valid PostgreSQL URL (%2). Write it as postgresql://user@host:port/dbname.</source>
+        <translation>%1 ist keine gültige PostgreSQL-URL (%2). Schreiben Sie sie als postgresql://user@host:port/dbname.</translation>
     </message>
     <message>
-        <source>No library file was given: name an SQLite file, such as sqlite:library.sqlite.</source>
-        <translation>Es wurde keine Bibliotheksdatei angegeben: Nennen Sie eine SQLite-Datei, etwa sqlite:library.sqlite.</translation>
+        <source>%1 holds a password. Toffee never stores one: take it out of the URL and put it in the PostgreSQL password file (~/.pgpass, or the file PGPASSFILE names).</source>
+        <translation>%1 enthält ein Passwort. Toffee speichert nie eines: Nehmen Sie es aus der URL heraus und tragen Sie es in die PostgreSQL-Passwortdatei ein (~/.pgpass oder die Datei, die PGPASSFILE nennt).</translation>
     </message>
     <message>
-        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH), not from &quot;%2&quot;.</source>
-        <translation>%1: Toffee liest eine Bibliothek aus einer SQLite-Datei (einem Pfad oder sqlite:PFAD), nicht aus „%2“.</translation>
+        <source>%1 names no database: write it after the host, as in postgresql://toffee@server/tools.</source>
+        <translation>%1 nennt keine Datenbank: Schreiben Sie sie nach dem Host, wie in postgresql://toffee@server/tools.</translation>
+    </message>
+    <message>
+        <source>%1: the database is named by one path part, as in postgresql://host/dbname.</source>
+        <translation>%1: Die Datenbank wird mit genau einem Pfadteil benannt, wie in postgresql://host/dbname.</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a connection setting Toffee passes on (it takes %3).</source>
+        <translation>%1: „%2“ ist keine Verbindungseinstellung, die Toffee weitergibt (es nimmt %3).</translation>
+    </message>
+    <message>
+        <source>%1: the port must be between 1 and 65535.</source>
+        <translation>%1: Der Port muss zwischen 1 und 65535 liegen.</translation>
+    </message>
+    <message>
+        <source>No library was given: name an SQLite file, such as sqlite:library.sqlite, or a PostgreSQL database, such as postgresql://toffee@server/tools.</source>
+        <translation>Es wurde keine Bibliothek angegeben: Nennen Sie eine SQLite-Datei, etwa sqlite:library.sqlite, oder eine PostgreSQL-Datenbank, etwa postgresql://toffee@server/tools.</translation>
+    </message>
+    <message>
+        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH) or from PostgreSQL (postgresql://…), not from &quot;%2&quot;.</source>
+        <translation>%1: Toffee liest eine Bibliothek aus einer SQLite-Datei (einem Pfad oder sqlite:PFAD) oder aus PostgreSQL (postgresql://…), nicht aus „%2“.</translation>
+    </message>
+    <message>
+        <source>database %1 on %2</source>
+        <translation>Datenbank %1 auf %2</translation>
+    </message>
+    <message>
+        <source>the local server</source>
+        <translation>dem lokalen Server</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::LibraryStatusLabel</name>
+    <message>
+        <source>Library status</source>
+        <translation>Bibliotheksstatus</translation>
+    </message>
+    <message>
+        <source>Library offline — 1 change waiting</source>
+        <translation>Bibliothek offline — 1 Änderung wartet</translation>
+    </message>
+    <message>
+        <source>Library offline — %1 changes waiting</source>
+        <translation>Bibliothek offline — %1 Änderungen warten</translation>
+    </message>
+    <message>
+        <source>Library cannot be written — 1 change waiting</source>
+        <translation>Bibliothek nicht beschreibbar — 1 Änderung wartet</translation>
+    </message>
+    <message>
+        <source>Library cannot be written — %1 changes waiting</source>
+        <translation>Bibliothek nicht beschreibbar — %1 Änderungen warten</translation>
+    </message>
+    <message>
+        <source>Library: %1 (read-only)</source>
+        <translation>Bibliothek: %1 (schreibgeschützt)</translation>
+    </message>
+    <message>
+        <source>Library: %1</source>
+        <translation>Bibliothek: %1</translation>
+    </message>
+    <message>
+        <source>Library back: nothing was waiting</source>
+        <translation>Bibliothek wieder da: Nichts hat gewartet</translation>
+    </message>
+    <message>
+        <source>Library back: 1 change written</source>
+        <translation>Bibliothek wieder da: 1 Änderung geschrieben</translation>
+    </message>
+    <message>
+        <source>Library back: %1 changes written</source>
+        <translation>Bibliothek wieder da: %1 Änderungen geschrieben</translation>
     </message>
 </context>
 <context>
@@ -2736,6 +3120,41 @@
     <message>
         <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
         <translation>Auf der Maschine läuft %1, die M493.3 stillschweigend ignoriert: Eine von Hand gesetzte TLO würde nicht verwendet. Vermessen Sie stattdessen das Werkzeug, oder wechseln Sie mit seiner TLO zu ihm (ein manueller Wechsel).</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineTableDialog</name>
+    <message>
+        <source>Open a machine&apos;s table</source>
+        <translation>Die Tabelle einer Maschine öffnen</translation>
+    </message>
+    <message>
+        <source>Open Machine Table</source>
+        <translation>Maschinentabelle öffnen</translation>
+    </message>
+    <message>
+        <source>Machine tables in %1:</source>
+        <translation>Maschinentabellen in %1:</translation>
+    </message>
+    <message>
+        <source>Library</source>
+        <translation>Bibliothek</translation>
+    </message>
+    <message>
+        <source>Machines</source>
+        <translation>Maschinen</translation>
+    </message>
+    <message>
+        <source>Open or cancel</source>
+        <translation>Öffnen oder abbrechen</translation>
+    </message>
+    <message>
+        <source>Open the machine&apos;s table</source>
+        <translation>Die Tabelle der Maschine öffnen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
     </message>
 </context>
 <context>
@@ -3141,6 +3560,134 @@ Trotzdem speichern?</translation>
     <message>
         <source>Rack</source>
         <translation>Magazin</translation>
+    </message>
+    <message>
+        <source>Toffee records into this station&apos;s own library (%1) until the shared one is fixed in Machine ▸ History Library….</source>
+        <translation>Toffee zeichnet in die eigene Bibliothek dieser Station (%1) auf, bis die gemeinsame unter Maschine ▸ Verlaufsbibliothek… in Ordnung gebracht ist.</translation>
+    </message>
+    <message>
+        <source>The shared library cannot be used</source>
+        <translation>Die gemeinsame Bibliothek lässt sich nicht verwenden</translation>
+    </message>
+    <message>
+        <source>Open &amp;Machine Table…</source>
+        <translation>&amp;Maschinentabelle öffnen …</translation>
+    </message>
+    <message>
+        <source>Save to &amp;Library…</source>
+        <translation>&amp;In Bibliothek speichern …</translation>
+    </message>
+    <message>
+        <source>Open Machine Table</source>
+        <translation>Maschinentabelle öffnen</translation>
+    </message>
+    <message>
+        <source>The library (%1) is not open, so its machine tables cannot be listed: %2</source>
+        <translation>Die Bibliothek (%1) ist nicht geöffnet, daher lassen sich ihre Maschinentabellen nicht auflisten: %2</translation>
+    </message>
+    <message>
+        <source>The library (%1) holds no machine tables yet. File ▸ Save to Library… puts the open table there as a machine&apos;s table.</source>
+        <translation>Die Bibliothek (%1) enthält noch keine Maschinentabellen. Datei ▸ In Bibliothek speichern … legt die geöffnete Tabelle dort als Tabelle einer Maschine ab.</translation>
+    </message>
+    <message>
+        <source>The library (%1) is not open: %2</source>
+        <translation>Die Bibliothek (%1) ist nicht geöffnet: %2</translation>
+    </message>
+    <message>
+        <source>Cannot open the machine&apos;s table</source>
+        <translation>Die Tabelle der Maschine lässt sich nicht öffnen</translation>
+    </message>
+    <message>
+        <source>Opened %1&apos;s table from %2</source>
+        <translation>Tabelle von %1 aus %2 geöffnet</translation>
+    </message>
+    <message>
+        <source>Cannot save to the library</source>
+        <translation>Speichern in der Bibliothek nicht möglich</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s name in the library</source>
+        <translation>Der Name der Maschine in der Bibliothek</translation>
+    </message>
+    <message>
+        <source>Save to Library</source>
+        <translation>In Bibliothek speichern</translation>
+    </message>
+    <message>
+        <source>Save this table in %1 as the table of the machine:</source>
+        <translation>Diese Tabelle in %1 als Tabelle der Maschine speichern:</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the library.</source>
+        <translation>In die Bibliothek wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>Saved as %1&apos;s table in %2</source>
+        <translation>Als Tabelle von %1 in %2 gespeichert</translation>
+    </message>
+    <message>
+        <source>This table came from %1, and the window now works with %2. Use Save As to keep it in a file, or choose %1 again in Machine ▸ History Library….</source>
+        <translation>Diese Tabelle stammt aus %1, und das Fenster arbeitet jetzt mit %2. Verwenden Sie „Speichern unter“, um sie in einer Datei zu behalten, oder wählen Sie %1 wieder unter Maschine ▸ Verlaufsbibliothek….</translation>
+    </message>
+    <message>
+        <source>Nothing was written: the table on screen keeps your changes.</source>
+        <translation>Es wurde nichts geschrieben: Die Tabelle auf dem Bildschirm behält Ihre Änderungen.</translation>
+    </message>
+    <message>
+        <source>The library cannot be reached: your changes are kept on this station and written when it is back.</source>
+        <translation>Die Bibliothek ist nicht erreichbar: Ihre Änderungen werden auf dieser Station aufbewahrt und geschrieben, sobald sie wieder da ist.</translation>
+    </message>
+    <message>
+        <source>Saved 1 tool to %1&apos;s table in %2</source>
+        <translation>1 Werkzeug in der Tabelle von %1 in %2 gespeichert</translation>
+    </message>
+    <message>
+        <source>Saved %1 tools to %2&apos;s table in %3</source>
+        <translation>%1 Werkzeuge in der Tabelle von %2 in %3 gespeichert</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>%1 (read-only)</source>
+        <translation>%1 (schreibgeschützt)</translation>
+    </message>
+    <message>
+        <source>Read-only: your role may read this library but not change it. Whoever runs the server can give it write rights.</source>
+        <translation>Schreibgeschützt: Ihre Rolle darf diese Bibliothek lesen, aber nicht ändern. Der Betreiber des Servers kann ihr Schreibrechte geben.</translation>
+    </message>
+    <message>
+        <source>Read-only: the library file %1 cannot be written, so this table can be read but not changed.</source>
+        <translation>Schreibgeschützt: Die Bibliotheksdatei %1 lässt sich nicht schreiben, daher kann diese Tabelle gelesen, aber nicht geändert werden.</translation>
+    </message>
+    <message>
+        <source>another station</source>
+        <translation>einer anderen Station</translation>
+    </message>
+    <message>
+        <source>T%1 was changed on %2</source>
+        <translation>T%1 wurde auf %2 geändert</translation>
+    </message>
+    <message>
+        <source>your edit is kept — Save to choose.</source>
+        <translation>Ihre Änderung bleibt erhalten — zum Auswählen speichern.</translation>
+    </message>
+    <message>
+        <source>your edits are kept — Save to choose.</source>
+        <translation>Ihre Änderungen bleiben erhalten — zum Auswählen speichern.</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>Nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>Changed on Another Station While the Library Was Offline</source>
+        <translation>Auf einer anderen Station geändert, während die Bibliothek offline war</translation>
+    </message>
+    <message>
+        <source>%1&apos;s table keeps the other station&apos;s tools.</source>
+        <translation>Die Tabelle von %1 behält die Werkzeuge der anderen Station.</translation>
     </message>
 </context>
 <context>
@@ -4202,6 +4749,14 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <source>T%1 passed its break test</source>
         <translation>T%1 hat den Bruchtest bestanden</translation>
     </message>
+    <message>
+        <source>Update from the library</source>
+        <translation>Aus der Bibliothek aktualisieren</translation>
+    </message>
+    <message>
+        <source>Take T%1 from %2</source>
+        <translation>T%1 von %2 übernehmen</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolTable</name>
@@ -4327,6 +4882,10 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <source>Tool table</source>
         <translation>Werkzeugtabelle</translation>
     </message>
+    <message>
+        <source>Read-only</source>
+        <translation>Schreibgeschützt</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::WearTrend</name>
@@ -4370,10 +4929,6 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation>Eine Werkzeugtabelle zum Öffnen.</translation>
     </message>
     <message>
-        <source>The history library: an SQLite file (or sqlite:PATH).</source>
-        <translation>Die Verlaufsbibliothek: eine SQLite-Datei (oder sqlite:PFAD).</translation>
-    </message>
-    <message>
         <source>Check the G-code PROGRAM against the table once the window is open.</source>
         <translation>Das G-Code-Programm PROGRAM gegen die Tabelle prüfen, sobald das Fenster offen ist.</translation>
     </message>
@@ -4384,6 +4939,10 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     <message>
         <source>The firmware the built-in emulator plays: community (default) or stock.</source>
         <translation>Die Firmware, die der eingebaute Emulator nachbildet: community (Standard) oder stock.</translation>
+    </message>
+    <message>
+        <source>The history library: an SQLite file (or sqlite:PATH), or a shared one on PostgreSQL (postgresql://user@host:port/dbname; the password in ~/.pgpass).</source>
+        <translation>Die Verlaufsbibliothek: eine SQLite-Datei (oder sqlite:PFAD) oder eine gemeinsame auf PostgreSQL (postgresql://user@host:port/dbname; das Passwort in ~/.pgpass).</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,69 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name></name>
+    <message>
+        <source>Description</source>
+        <translation>描述</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>刀位</translation>
+    </message>
+    <message>
+        <source>TLO</source>
+        <translation>TLO</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>长度</translation>
+    </message>
+    <message>
+        <source>Length wear</source>
+        <translation>长度磨损</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>半径</translation>
+    </message>
+    <message>
+        <source>Radius wear</source>
+        <translation>半径磨损</translation>
+    </message>
+    <message>
+        <source>Break test</source>
+        <translation>断刀检测</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>passed or not run</source>
+        <translation>通过或未执行</translation>
+    </message>
+    <message>
+        <source>Reference MCS Z</source>
+        <translation>基准 MCS Z</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>LinuxCNC fields</source>
+        <translation>LinuxCNC 字段</translation>
+    </message>
+</context>
+<context>
     <name>Toffee</name>
     <message>
         <source>tool number %1 is out of range; use %2 to %3.</source>
@@ -926,6 +989,117 @@
     </message>
 </context>
 <context>
+    <name>Toffee::ConflictDialog</name>
+    <message>
+        <source>not measured</source>
+        <translation>未测量</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>手动设置</translation>
+    </message>
+    <message>
+        <source>probed</source>
+        <translation>对刀测得</translation>
+    </message>
+    <message>
+        <source>time unknown</source>
+        <translation>时间未知</translation>
+    </message>
+    <message>
+        <source>%1 (%2, %3)</source>
+        <translation>%1（%2，%3）</translation>
+    </message>
+    <message>
+        <source>Removed from the table</source>
+        <translation>已从刀具表中删除</translation>
+    </message>
+    <message>
+        <source>Tools changed on another station</source>
+        <translation>在另一工作站上被更改的刀具</translation>
+    </message>
+    <message>
+        <source>Changed on Another Station</source>
+        <translation>已在另一工作站上更改</translation>
+    </message>
+    <message>
+        <source>What happened</source>
+        <translation>发生了什么</translation>
+    </message>
+    <message>
+        <source>Another station changed this tool since you opened the table, and so did you. Choose which version the library keeps. Everything else is saved.</source>
+        <translation>自您打开刀具表以来，另一工作站更改了这把刀具，您也更改了它。请选择刀具库保留哪个版本。其他内容均已保存。</translation>
+    </message>
+    <message>
+        <source>Another station changed these %1 tools since you opened the table, and so did you. Choose, for each, which version the library keeps. Everything else is saved.</source>
+        <translation>自您打开刀具表以来，另一工作站更改了这 %1 把刀具，您也更改了它们。请为每把刀具选择刀具库保留哪个版本。其他内容均已保存。</translation>
+    </message>
+    <message>
+        <source>Their version and yours, per tool</source>
+        <translation>每把刀具的对方版本和您的版本</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>刀具</translation>
+    </message>
+    <message>
+        <source>Theirs</source>
+        <translation>对方的</translation>
+    </message>
+    <message>
+        <source>Mine</source>
+        <translation>我的</translation>
+    </message>
+    <message>
+        <source>Keep</source>
+        <translation>保留</translation>
+    </message>
+    <message>
+        <source>Apply the choices or decide later</source>
+        <translation>应用所做的选择，或稍后决定</translation>
+    </message>
+    <message>
+        <source>&amp;Apply Choices</source>
+        <translation>应用选择(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Apply the choices</source>
+        <translation>应用所做的选择</translation>
+    </message>
+    <message>
+        <source>Decide &amp;Later</source>
+        <translation>稍后决定(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Decide later; your edits stay unsaved</source>
+        <translation>稍后决定；您的修改保持未保存</translation>
+    </message>
+    <message>
+        <source>another station</source>
+        <translation>另一工作站</translation>
+    </message>
+    <message>
+        <source>From %1:</source>
+        <translation>来自 %1：</translation>
+    </message>
+    <message>
+        <source>From this station:</source>
+        <translation>来自本工作站：</translation>
+    </message>
+    <message>
+        <source>Version of T%1 to keep</source>
+        <translation>要保留的 T%1 版本</translation>
+    </message>
+    <message>
+        <source>Keep mine</source>
+        <translation>保留我的</translation>
+    </message>
+    <message>
+        <source>Take theirs (%1)</source>
+        <translation>采用对方的（%1）</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::ConnectionPanel</name>
     <message>
         <source>Refresh</source>
@@ -1622,14 +1796,17 @@
     </message>
 </context>
 <context>
+    <name>Toffee::HistoryRecorder</name>
+    <message>
+        <source>The library (%1) cannot be reached: its server stopped answering. Toffee keeps what you record and writes it when the server is back.</source>
+        <translation>无法连接刀具库（%1）：其服务器已停止响应。Toffee 会保留您记录的内容，待服务器恢复后再写入。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::HistorySettingsDialog</name>
     <message>
         <source>History Library</source>
         <translation>历史库</translation>
-    </message>
-    <message>
-        <source>Library file</source>
-        <translation>库文件</translation>
     </message>
     <message>
         <source>Machine name</source>
@@ -1646,10 +1823,6 @@
     <message>
         <source>Browse…</source>
         <translation>浏览…</translation>
-    </message>
-    <message>
-        <source>Library file:</source>
-        <translation>库文件：</translation>
     </message>
     <message>
         <source>This machine&apos;s name:</source>
@@ -1670,6 +1843,26 @@
     <message>
         <source>This library cannot be used: %1</source>
         <translation>无法使用此库：%1</translation>
+    </message>
+    <message>
+        <source>Library file or URL</source>
+        <translation>库文件或 URL</translation>
+    </message>
+    <message>
+        <source>A file, or postgresql://user@server/database</source>
+        <translation>文件，或 postgresql://user@server/database</translation>
+    </message>
+    <message>
+        <source>An SQLite file for this computer, or a shared PostgreSQL database as postgresql://user@host:port/dbname?sslmode=require. The password goes in the PostgreSQL password file (~/.pgpass), never in the URL.</source>
+        <translation>本机使用的 SQLite 文件，或共享的 PostgreSQL 数据库，写作 postgresql://user@host:port/dbname?sslmode=require。密码放在 PostgreSQL 密码文件（~/.pgpass）中，绝不写在 URL 里。</translation>
+    </message>
+    <message>
+        <source>Choose a library file</source>
+        <translation>选择库文件</translation>
+    </message>
+    <message>
+        <source>Library file or URL:</source>
+        <translation>库文件或 URL：</translation>
     </message>
 </context>
 <context>
@@ -2428,10 +2621,6 @@
         <translation>读取库</translation>
     </message>
     <message>
-        <source>%1 is an SQLite database, but not a Toffee library (it has tables of its own). Choose another file.</source>
-        <translation>%1 是 SQLite 数据库，但不是 Toffee 库（它有自己的表）。请选择另一个文件。</translation>
-    </message>
-    <message>
         <source>Reading the library&apos;s version</source>
         <translation>读取库的版本</translation>
     </message>
@@ -2447,20 +2636,215 @@
         <source>Bringing the library up to date</source>
         <translation>更新库</translation>
     </message>
+    <message>
+        <source>your login name</source>
+        <translation>您的登录名</translation>
+    </message>
+    <message>
+        <source>The server refused %1&apos;s password. Put the right one in the PostgreSQL password file (~/.pgpass, or the file PGPASSFILE names): Toffee never stores one.</source>
+        <translation>服务器拒绝了 %1 的密码。请将正确的密码写入 PostgreSQL 密码文件（~/.pgpass，或 PGPASSFILE 指定的文件）：Toffee 从不保存密码。</translation>
+    </message>
+    <message>
+        <source>The server has no database &quot;%1&quot;. Check the name in the URL, or have it created (createdb %1; docs/LIBRARY.md).</source>
+        <translation>服务器上没有数据库“%1”。请检查 URL 中的名称，或请人创建该数据库（createdb %1；docs/LIBRARY.md）。</translation>
+    </message>
+    <message>
+        <source>The server has no user &quot;%1&quot;. Check the user in the URL, or have the role created (docs/LIBRARY.md).</source>
+        <translation>服务器上没有用户“%1”。请检查 URL 中的用户，或请人创建该角色（docs/LIBRARY.md）。</translation>
+    </message>
+    <message>
+        <source>The server&apos;s name &quot;%1&quot; is not known here. Check the host in the URL.</source>
+        <translation>此处无法识别服务器名“%1”。请检查 URL 中的主机。</translation>
+    </message>
+    <message>
+        <source>The connection&apos;s encryption failed. Check sslmode in the URL against the server&apos;s settings.</source>
+        <translation>连接加密失败。请对照服务器的设置检查 URL 中的 sslmode。</translation>
+    </message>
+    <message>
+        <source>The server cannot be reached. Check that it is running and that the host and port in the URL are right.</source>
+        <translation>无法连接服务器。请检查它是否正在运行，以及 URL 中的主机和端口是否正确。</translation>
+    </message>
+    <message>
+        <source>The library (%1) cannot be opened. %2 (The server said: %3)</source>
+        <translation>无法打开刀具库（%1）。%2（服务器返回：%3）</translation>
+    </message>
+    <message>
+        <source>Qt&apos;s PostgreSQL driver is missing: install libqt6sql6-psql to use %1.</source>
+        <translation>缺少 Qt 的 PostgreSQL 驱动：请安装 libqt6sql6-psql 以使用 %1。</translation>
+    </message>
+    <message>
+        <source>Reading the server&apos;s version</source>
+        <translation>读取服务器版本</translation>
+    </message>
+    <message>
+        <source>The library (%1) is on PostgreSQL %2, which this Toffee does not support: it needs %3 or newer. Upgrade the server, or use another one.</source>
+        <translation>刀具库（%1）位于 PostgreSQL %2 上，此 Toffee 不支持该版本：需要 %3 或更新版本。请升级服务器，或使用其他服务器。</translation>
+    </message>
+    <message>
+        <source>Reading your rights in the library</source>
+        <translation>读取您在刀具库中的权限</translation>
+    </message>
+    <message>
+        <source>%1 is a database, but not a Toffee library (it has tables of its own). Choose another one.</source>
+        <translation>%1 是数据库，但不是 Toffee 库（它有自己的表）。请选择另一个。</translation>
+    </message>
+    <message>
+        <source>The library (%1) is read-only for %2: this role may read the tools but not change them. Ask whoever runs the server for write rights (docs/LIBRARY.md).</source>
+        <translation>刀具库（%1）对 %2 是只读的：此角色可以读取刀具，但不能更改。请向服务器的管理员申请写入权限（docs/LIBRARY.md）。</translation>
+    </message>
+    <message>
+        <source>you</source>
+        <translation>您</translation>
+    </message>
+    <message>
+        <source>%1 is read-only: it cannot be written.</source>
+        <translation>%1 是只读的：无法写入。</translation>
+    </message>
+    <message>
+        <source>Announcing the change</source>
+        <translation>通告更改</translation>
+    </message>
+    <message>
+        <source>Reading the machine tables</source>
+        <translation>读取机床刀具表</translation>
+    </message>
+    <message>
+        <source>Reading %1&apos;s table</source>
+        <translation>读取 %1 的刀具表</translation>
+    </message>
+    <message>
+        <source>The library has no tool table for %1.</source>
+        <translation>刀具库中没有 %1 的刀具表。</translation>
+    </message>
+    <message>
+        <source>%1: T%2 of %3&apos;s table cannot be read: %4</source>
+        <translation>%1：无法读取 %3 的刀具表中的 T%2：%4</translation>
+    </message>
+    <message>
+        <source>Reading T%1 of %2</source>
+        <translation>读取 %2 的 T%1</translation>
+    </message>
+    <message>
+        <source>Writing T%1 of %2</source>
+        <translation>写入 %2 的 T%1</translation>
+    </message>
+    <message>
+        <source>Adding %1&apos;s table</source>
+        <translation>添加 %1 的刀具表</translation>
+    </message>
+    <message>
+        <source>The library already has a tool table for %1: open it, or choose another name.</source>
+        <translation>刀具库中已有 %1 的刀具表：请打开它，或选择其他名称。</translation>
+    </message>
+    <message>
+        <source>T%1 of %2 kept changing while it was written.</source>
+        <translation>写入期间，%2 的 T%1 一直在被更改。</translation>
+    </message>
+    <message>
+        <source>Keeping a change for later</source>
+        <translation>暂存一项更改以便稍后写入</translation>
+    </message>
+    <message>
+        <source>Reading the changes kept for later</source>
+        <translation>读取暂存的更改</translation>
+    </message>
+    <message>
+        <source>Clearing a change written</source>
+        <translation>清除已写入的更改</translation>
+    </message>
+    <message>
+        <source>A tool&apos;s row does not hold one tool in its table&apos;s units.</source>
+        <translation>某把刀具的行中并不是一把以其刀具表单位表示的刀具。</translation>
+    </message>
+    <message>
+        <source>An outbox entry cannot be read; it is kept as it is.</source>
+        <translation>无法读取发件箱中的一个条目；它将保持原样。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
     <message>
-        <source>%1: a shared library on PostgreSQL is not supported by this version of Toffee; use an SQLite file (a path, or sqlite:PATH).</source>
-        <translation>%1：此版本的 Toffee 不支持 PostgreSQL 上的共享库；请使用 SQLite 文件（路径或 sqlite:路径）。</translation>
+        <source>%1 is not a valid PostgreSQL URL (%2). Write it as postgresql://user@host:port/dbname.</source>
+        <translation>%1 不是有效的 PostgreSQL URL（%2）。请写成 postgresql://user@host:port/dbname。</translation>
     </message>
     <message>
-        <source>No library file was given: name an SQLite file, such as sqlite:library.sqlite.</source>
-        <translation>未给出库文件：请指定一个 SQLite 文件，例如 sqlite:library.sqlite。</translation>
+        <source>%1 holds a password. Toffee never stores one: take it out of the URL and put it in the PostgreSQL password file (~/.pgpass, or the file PGPASSFILE names).</source>
+        <translation>%1 中含有密码。Toffee 从不保存密码：请将其从 URL 中删除，并写入 PostgreSQL 密码文件（~/.pgpass，或 PGPASSFILE 指定的文件）。</translation>
     </message>
     <message>
-        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH), not from &quot;%2&quot;.</source>
-        <translation>%1：Toffee 从 SQLite 文件（路径或 sqlite:路径）读取库，而不是从“%2”。</translation>
+        <source>%1 names no database: write it after the host, as in postgresql://toffee@server/tools.</source>
+        <translation>%1 未指定数据库：请将其写在主机之后，例如 postgresql://toffee@server/tools。</translation>
+    </message>
+    <message>
+        <source>%1: the database is named by one path part, as in postgresql://host/dbname.</source>
+        <translation>%1：数据库名只能是一段路径，例如 postgresql://host/dbname。</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a connection setting Toffee passes on (it takes %3).</source>
+        <translation>%1：“%2”不是 Toffee 会传递的连接设置（它接受 %3）。</translation>
+    </message>
+    <message>
+        <source>%1: the port must be between 1 and 65535.</source>
+        <translation>%1：端口必须在 1 到 65535 之间。</translation>
+    </message>
+    <message>
+        <source>No library was given: name an SQLite file, such as sqlite:library.sqlite, or a PostgreSQL database, such as postgresql://toffee@server/tools.</source>
+        <translation>未给出库：请指定一个 SQLite 文件，例如 sqlite:library.sqlite，或一个 PostgreSQL 数据库，例如 postgresql://toffee@server/tools。</translation>
+    </message>
+    <message>
+        <source>%1: Toffee reads a library from an SQLite file (a path, or sqlite:PATH) or from PostgreSQL (postgresql://…), not from &quot;%2&quot;.</source>
+        <translation>%1：Toffee 从 SQLite 文件（路径或 sqlite:路径）或 PostgreSQL（postgresql://…）读取库，而不是从“%2”。</translation>
+    </message>
+    <message>
+        <source>database %1 on %2</source>
+        <translation>%2 上的数据库 %1</translation>
+    </message>
+    <message>
+        <source>the local server</source>
+        <translation>本地服务器</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::LibraryStatusLabel</name>
+    <message>
+        <source>Library status</source>
+        <translation>刀具库状态</translation>
+    </message>
+    <message>
+        <source>Library offline — 1 change waiting</source>
+        <translation>刀具库离线 — 1 项更改等待写入</translation>
+    </message>
+    <message>
+        <source>Library offline — %1 changes waiting</source>
+        <translation>刀具库离线 — %1 项更改等待写入</translation>
+    </message>
+    <message>
+        <source>Library cannot be written — 1 change waiting</source>
+        <translation>刀具库无法写入 — 1 项更改等待写入</translation>
+    </message>
+    <message>
+        <source>Library cannot be written — %1 changes waiting</source>
+        <translation>刀具库无法写入 — %1 项更改等待写入</translation>
+    </message>
+    <message>
+        <source>Library: %1 (read-only)</source>
+        <translation>刀具库：%1（只读）</translation>
+    </message>
+    <message>
+        <source>Library: %1</source>
+        <translation>刀具库：%1</translation>
+    </message>
+    <message>
+        <source>Library back: nothing was waiting</source>
+        <translation>刀具库已恢复：没有等待写入的更改</translation>
+    </message>
+    <message>
+        <source>Library back: 1 change written</source>
+        <translation>刀具库已恢复：已写入 1 项更改</translation>
+    </message>
+    <message>
+        <source>Library back: %1 changes written</source>
+        <translation>刀具库已恢复：已写入 %1 项更改</translation>
     </message>
 </context>
 <context>
@@ -2736,6 +3120,41 @@
     <message>
         <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
         <translation>机床运行的是 %1，它会不加提示地忽略 M493.3：手动设置的 TLO 不会被使用。请改为对刀，或带着其 TLO 换到该刀具（手动换刀）。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineTableDialog</name>
+    <message>
+        <source>Open a machine&apos;s table</source>
+        <translation>打开某台机床的刀具表</translation>
+    </message>
+    <message>
+        <source>Open Machine Table</source>
+        <translation>打开机床刀具表</translation>
+    </message>
+    <message>
+        <source>Machine tables in %1:</source>
+        <translation>%1 中的机床刀具表：</translation>
+    </message>
+    <message>
+        <source>Library</source>
+        <translation>刀具库</translation>
+    </message>
+    <message>
+        <source>Machines</source>
+        <translation>机床</translation>
+    </message>
+    <message>
+        <source>Open or cancel</source>
+        <translation>打开或取消</translation>
+    </message>
+    <message>
+        <source>Open the machine&apos;s table</source>
+        <translation>打开该机床的刀具表</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
     </message>
 </context>
 <context>
@@ -3141,6 +3560,134 @@ Save anyway?</source>
     <message>
         <source>Rack</source>
         <translation>刀库</translation>
+    </message>
+    <message>
+        <source>Toffee records into this station&apos;s own library (%1) until the shared one is fixed in Machine ▸ History Library….</source>
+        <translation>在“机床 ▸ 历史库…”中修复共享刀具库之前，Toffee 会记录到本工作站自己的库（%1）中。</translation>
+    </message>
+    <message>
+        <source>The shared library cannot be used</source>
+        <translation>无法使用共享刀具库</translation>
+    </message>
+    <message>
+        <source>Open &amp;Machine Table…</source>
+        <translation>打开机床刀具表(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>Save to &amp;Library…</source>
+        <translation>保存到刀具库(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>Open Machine Table</source>
+        <translation>打开机床刀具表</translation>
+    </message>
+    <message>
+        <source>The library (%1) is not open, so its machine tables cannot be listed: %2</source>
+        <translation>刀具库（%1）未打开，因此无法列出其中的机床刀具表：%2</translation>
+    </message>
+    <message>
+        <source>The library (%1) holds no machine tables yet. File ▸ Save to Library… puts the open table there as a machine&apos;s table.</source>
+        <translation>刀具库（%1）中还没有机床刀具表。“文件 ▸ 保存到刀具库…”会将当前打开的刀具表作为某台机床的刀具表存入其中。</translation>
+    </message>
+    <message>
+        <source>The library (%1) is not open: %2</source>
+        <translation>刀具库（%1）未打开：%2</translation>
+    </message>
+    <message>
+        <source>Cannot open the machine&apos;s table</source>
+        <translation>无法打开该机床的刀具表</translation>
+    </message>
+    <message>
+        <source>Opened %1&apos;s table from %2</source>
+        <translation>已从 %2 打开 %1 的刀具表</translation>
+    </message>
+    <message>
+        <source>Cannot save to the library</source>
+        <translation>无法保存到刀具库</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s name in the library</source>
+        <translation>机床在刀具库中的名称</translation>
+    </message>
+    <message>
+        <source>Save to Library</source>
+        <translation>保存到刀具库</translation>
+    </message>
+    <message>
+        <source>Save this table in %1 as the table of the machine:</source>
+        <translation>将此刀具表保存到 %1，作为以下机床的刀具表：</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the library.</source>
+        <translation>未向刀具库写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Saved as %1&apos;s table in %2</source>
+        <translation>已作为 %1 的刀具表保存到 %2</translation>
+    </message>
+    <message>
+        <source>This table came from %1, and the window now works with %2. Use Save As to keep it in a file, or choose %1 again in Machine ▸ History Library….</source>
+        <translation>此刀具表来自 %1，而窗口现在使用的是 %2。请用“另存为”将其保存到文件中，或在“机床 ▸ 历史库…”中重新选择 %1。</translation>
+    </message>
+    <message>
+        <source>Nothing was written: the table on screen keeps your changes.</source>
+        <translation>未写入任何内容：屏幕上的刀具表保留您的修改。</translation>
+    </message>
+    <message>
+        <source>The library cannot be reached: your changes are kept on this station and written when it is back.</source>
+        <translation>无法连接刀具库：您的修改保存在本工作站上，待刀具库恢复后再写入。</translation>
+    </message>
+    <message>
+        <source>Saved 1 tool to %1&apos;s table in %2</source>
+        <translation>已将 1 把刀具保存到 %2 中 %1 的刀具表</translation>
+    </message>
+    <message>
+        <source>Saved %1 tools to %2&apos;s table in %3</source>
+        <translation>已将 %1 把刀具保存到 %3 中 %2 的刀具表</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>%1 (read-only)</source>
+        <translation>%1（只读）</translation>
+    </message>
+    <message>
+        <source>Read-only: your role may read this library but not change it. Whoever runs the server can give it write rights.</source>
+        <translation>只读：您的角色可以读取此刀具库，但不能更改。服务器的管理员可以为其授予写入权限。</translation>
+    </message>
+    <message>
+        <source>Read-only: the library file %1 cannot be written, so this table can be read but not changed.</source>
+        <translation>只读：库文件 %1 无法写入，因此此刀具表只能读取，不能更改。</translation>
+    </message>
+    <message>
+        <source>another station</source>
+        <translation>另一工作站</translation>
+    </message>
+    <message>
+        <source>T%1 was changed on %2</source>
+        <translation>T%1 已在 %2 上被更改</translation>
+    </message>
+    <message>
+        <source>your edit is kept — Save to choose.</source>
+        <translation>您的修改已保留 — 保存时再作选择。</translation>
+    </message>
+    <message>
+        <source>your edits are kept — Save to choose.</source>
+        <translation>您的修改已保留 — 保存时再作选择。</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>未保存：%1</translation>
+    </message>
+    <message>
+        <source>Changed on Another Station While the Library Was Offline</source>
+        <translation>刀具库离线期间在另一工作站上被更改</translation>
+    </message>
+    <message>
+        <source>%1&apos;s table keeps the other station&apos;s tools.</source>
+        <translation>%1 的刀具表保留另一工作站的刀具。</translation>
     </message>
 </context>
 <context>
@@ -4202,6 +4749,14 @@ when it is fresh (no probe)</source>
         <source>T%1 passed its break test</source>
         <translation>T%1 通过了断刀检测</translation>
     </message>
+    <message>
+        <source>Update from the library</source>
+        <translation>从刀具库更新</translation>
+    </message>
+    <message>
+        <source>Take T%1 from %2</source>
+        <translation>采用 %2 的 T%1</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolTable</name>
@@ -4327,6 +4882,10 @@ when it is fresh (no probe)</source>
         <source>Tool table</source>
         <translation>刀具表</translation>
     </message>
+    <message>
+        <source>Read-only</source>
+        <translation>只读</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::WearTrend</name>
@@ -4370,10 +4929,6 @@ when it is fresh (no probe)</source>
         <translation>要打开的刀具表。</translation>
     </message>
     <message>
-        <source>The history library: an SQLite file (or sqlite:PATH).</source>
-        <translation>历史库：一个 SQLite 文件（或 sqlite:路径）。</translation>
-    </message>
-    <message>
         <source>Check the G-code PROGRAM against the table once the window is open.</source>
         <translation>窗口打开后，对照刀具表检查 G 代码程序 PROGRAM。</translation>
     </message>
@@ -4384,6 +4939,10 @@ when it is fresh (no probe)</source>
     <message>
         <source>The firmware the built-in emulator plays: community (default) or stock.</source>
         <translation>内置模拟器模拟的固件：community（默认）或 stock。</translation>
+    </message>
+    <message>
+        <source>The history library: an SQLite file (or sqlite:PATH), or a shared one on PostgreSQL (postgresql://user@host:port/dbname; the password in ~/.pgpass).</source>
+        <translation>历史库：一个 SQLite 文件（或 sqlite:路径），或 PostgreSQL 上的共享库（postgresql://user@host:port/dbname；密码放在 ~/.pgpass 中）。</translation>
     </message>
 </context>
 </TS>
