@@ -2,69 +2,6 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
-    <name></name>
-    <message>
-        <source>Description</source>
-        <translation>Beschreibung</translation>
-    </message>
-    <message>
-        <source>(none)</source>
-        <translation>(keine)</translation>
-    </message>
-    <message>
-        <source>Pocket</source>
-        <translation>Platz</translation>
-    </message>
-    <message>
-        <source>TLO</source>
-        <translation>TLO</translation>
-    </message>
-    <message>
-        <source>Length</source>
-        <translation>Länge</translation>
-    </message>
-    <message>
-        <source>Length wear</source>
-        <translation>Längenverschleiß</translation>
-    </message>
-    <message>
-        <source>Radius</source>
-        <translation>Radius</translation>
-    </message>
-    <message>
-        <source>Radius wear</source>
-        <translation>Radiusverschleiß</translation>
-    </message>
-    <message>
-        <source>Break test</source>
-        <translation>Bruchtest</translation>
-    </message>
-    <message>
-        <source>failed</source>
-        <translation>fehlgeschlagen</translation>
-    </message>
-    <message>
-        <source>passed or not run</source>
-        <translation>bestanden oder nicht ausgeführt</translation>
-    </message>
-    <message>
-        <source>Reference MCS Z</source>
-        <translation>Referenz-MCS-Z</translation>
-    </message>
-    <message>
-        <source>unknown</source>
-        <translation>unbekannt</translation>
-    </message>
-    <message>
-        <source>Notes</source>
-        <translation>Notizen</translation>
-    </message>
-    <message>
-        <source>LinuxCNC fields</source>
-        <translation>LinuxCNC-Felder</translation>
-    </message>
-</context>
-<context>
     <name>Toffee</name>
     <message>
         <source>tool number %1 is out of range; use %2 to %3.</source>
@@ -1097,6 +1034,66 @@
     <message>
         <source>Take theirs (%1)</source>
         <translation>Ihre übernehmen (von %1)</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>Platz</translation>
+    </message>
+    <message>
+        <source>TLO</source>
+        <translation>TLO</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Length wear</source>
+        <translation>Längenverschleiß</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source>Radius wear</source>
+        <translation>Radiusverschleiß</translation>
+    </message>
+    <message>
+        <source>Break test</source>
+        <translation>Bruchtest</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>passed or not run</source>
+        <translation>bestanden oder nicht ausgeführt</translation>
+    </message>
+    <message>
+        <source>Reference MCS Z</source>
+        <translation>Referenz-MCS-Z</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notizen</translation>
+    </message>
+    <message>
+        <source>LinuxCNC fields</source>
+        <translation>LinuxCNC-Felder</translation>
     </message>
 </context>
 <context>

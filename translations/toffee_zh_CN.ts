@@ -2,69 +2,6 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
-    <name></name>
-    <message>
-        <source>Description</source>
-        <translation>描述</translation>
-    </message>
-    <message>
-        <source>(none)</source>
-        <translation>（无）</translation>
-    </message>
-    <message>
-        <source>Pocket</source>
-        <translation>刀位</translation>
-    </message>
-    <message>
-        <source>TLO</source>
-        <translation>TLO</translation>
-    </message>
-    <message>
-        <source>Length</source>
-        <translation>长度</translation>
-    </message>
-    <message>
-        <source>Length wear</source>
-        <translation>长度磨损</translation>
-    </message>
-    <message>
-        <source>Radius</source>
-        <translation>半径</translation>
-    </message>
-    <message>
-        <source>Radius wear</source>
-        <translation>半径磨损</translation>
-    </message>
-    <message>
-        <source>Break test</source>
-        <translation>断刀检测</translation>
-    </message>
-    <message>
-        <source>failed</source>
-        <translation>失败</translation>
-    </message>
-    <message>
-        <source>passed or not run</source>
-        <translation>通过或未执行</translation>
-    </message>
-    <message>
-        <source>Reference MCS Z</source>
-        <translation>基准 MCS Z</translation>
-    </message>
-    <message>
-        <source>unknown</source>
-        <translation>未知</translation>
-    </message>
-    <message>
-        <source>Notes</source>
-        <translation>备注</translation>
-    </message>
-    <message>
-        <source>LinuxCNC fields</source>
-        <translation>LinuxCNC 字段</translation>
-    </message>
-</context>
-<context>
     <name>Toffee</name>
     <message>
         <source>tool number %1 is out of range; use %2 to %3.</source>
@@ -1097,6 +1034,66 @@
     <message>
         <source>Take theirs (%1)</source>
         <translation>采用对方的（%1）</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>描述</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>刀位</translation>
+    </message>
+    <message>
+        <source>TLO</source>
+        <translation>TLO</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>长度</translation>
+    </message>
+    <message>
+        <source>Length wear</source>
+        <translation>长度磨损</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>半径</translation>
+    </message>
+    <message>
+        <source>Radius wear</source>
+        <translation>半径磨损</translation>
+    </message>
+    <message>
+        <source>Break test</source>
+        <translation>断刀检测</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>passed or not run</source>
+        <translation>通过或未执行</translation>
+    </message>
+    <message>
+        <source>Reference MCS Z</source>
+        <translation>基准 MCS Z</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>LinuxCNC fields</source>
+        <translation>LinuxCNC 字段</translation>
     </message>
 </context>
 <context>

@@ -41,19 +41,18 @@ QString tloText(const Tool &tool, Units units)
 // Each field as "name: value", in the order the table shows them.
 QList<std::pair<QString, QString>> fields(const Tool &tool, Units units)
 {
-    using D = ConflictDialog;
     return {
-        { D::tr("Description"), tool.description.isEmpty() ? D::tr("(none)") : tool.description },
-        { D::tr("Pocket"), QString::number(tool.pocket) },
-        { D::tr("TLO"), tloText(tool, units) },
-        { D::tr("Length"), length(tool.lengthGeometry, units) },
-        { D::tr("Length wear"), length(tool.lengthWear, units) },
-        { D::tr("Radius"), length(tool.radiusGeometry, units) },
-        { D::tr("Radius wear"), length(tool.radiusWear, units) },
-        { D::tr("Break test"), tool.breakTestFailed ? D::tr("failed") : D::tr("passed or not run") },
-        { D::tr("Reference MCS Z"), tool.referenceMz ? length(*tool.referenceMz, units) : D::tr("unknown") },
-        { D::tr("Notes"), tool.notes.isEmpty() ? D::tr("(none)") : tool.notes },
-        { D::tr("LinuxCNC fields"), tool.linuxCncExtra.isEmpty() ? D::tr("(none)") : tool.linuxCncExtra },
+        { ConflictDialog::tr("Description"), tool.description.isEmpty() ? ConflictDialog::tr("(none)") : tool.description },
+        { ConflictDialog::tr("Pocket"), QString::number(tool.pocket) },
+        { ConflictDialog::tr("TLO"), tloText(tool, units) },
+        { ConflictDialog::tr("Length"), length(tool.lengthGeometry, units) },
+        { ConflictDialog::tr("Length wear"), length(tool.lengthWear, units) },
+        { ConflictDialog::tr("Radius"), length(tool.radiusGeometry, units) },
+        { ConflictDialog::tr("Radius wear"), length(tool.radiusWear, units) },
+        { ConflictDialog::tr("Break test"), tool.breakTestFailed ? ConflictDialog::tr("failed") : ConflictDialog::tr("passed or not run") },
+        { ConflictDialog::tr("Reference MCS Z"), tool.referenceMz ? length(*tool.referenceMz, units) : ConflictDialog::tr("unknown") },
+        { ConflictDialog::tr("Notes"), tool.notes.isEmpty() ? ConflictDialog::tr("(none)") : tool.notes },
+        { ConflictDialog::tr("LinuxCNC fields"), tool.linuxCncExtra.isEmpty() ? ConflictDialog::tr("(none)") : tool.linuxCncExtra },
     };
 }
 

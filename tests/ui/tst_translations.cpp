@@ -143,6 +143,10 @@ private Q_SLOTS:
                 continue;
             const QString context = xml.readElementText();
             ++contexts;
+            if (context.isEmpty()) { // lupdate could not tell whose tr() it was (an alias, D::tr): none at run time
+                wrong << u"(a context without a name)"_s;
+                continue;
+            }
             if (context == u"Toffee" || context == u"main")
                 continue; // the free tr() of model/translate.h, and the programs' main()
             const QString name = context.section(u"::"_s, -1);
