@@ -110,14 +110,20 @@ bool MainWindow::openMachineTable(const QString &machine)
             stored.error().text() + u"\n\n"_s + tr("The table on screen has not been changed."));
         return false;
     }
-    m_tableLibrary = library->location();
-    m_tableReadOnly = library->isReadOnly();
-    m_document->openLibraryTable(stored.value());
-    m_fileWatcher->watch({});
-    updateTitle();
+    showLibraryTable(*library, stored.value());
     statusBar()->showMessage(
         tr("Opened %1's table from %2").arg(machine, m_tableLibrary.displayName()), 5000);
     return true;
+}
+
+// The document becomes the library's table, no file behind it.
+void MainWindow::showLibraryTable(const Library &library, const StoredTable &stored)
+{
+    m_tableLibrary = library.location();
+    m_tableReadOnly = library.isReadOnly();
+    m_document->openLibraryTable(stored);
+    m_fileWatcher->watch({});
+    updateTitle();
 }
 
 void MainWindow::askSaveToLibrary()
@@ -148,11 +154,7 @@ bool MainWindow::saveToLibrary(const QString &machine)
             stored.error().text() + u"\n\n"_s + tr("Nothing was written to the library."));
         return false;
     }
-    m_tableLibrary = library->location();
-    m_tableReadOnly = library->isReadOnly();
-    m_document->openLibraryTable(stored.value());
-    m_fileWatcher->watch({});
-    updateTitle();
+    showLibraryTable(*library, stored.value());
     statusBar()->showMessage(
         tr("Saved as %1's table in %2").arg(machine, m_tableLibrary.displayName()), 5000);
     return true;

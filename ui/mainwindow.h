@@ -24,6 +24,7 @@ class FileWatcher;
 class HistoryDock;
 class HistoryRecorder;
 class JobCheckDialog;
+class Library;
 class LibraryStatusLabel;
 class MachineConnection;
 class MachineDock;
@@ -121,6 +122,7 @@ private:
     void chooseMachineTable();
     void askSaveToLibrary();
     bool saveLibraryTable();
+    void showLibraryTable(const Library &library, const StoredTable &stored);
     [[nodiscard]] QString libraryTableTitle() const;
     [[nodiscard]] bool showsLibraryTable(const QString &machine) const;
     [[nodiscard]] bool hasUnsavedEdits() const;

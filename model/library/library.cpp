@@ -85,9 +85,7 @@ Result<int> Library::insertAll(const QString &sql, const QStringList &machines, 
     const std::function<QString(QSqlQuery &, qsizetype)> &bind,
     const std::function<Result<void>(const QList<qsizetype> &)> &after)
 {
-    if (auto writable = checkWritable(); !writable)
-        return writable.error();
-    if (auto begun = begin(); !begun)
+    if (auto begun = beginWrite(); !begun)
         return begun.error();
     auto fail = [this](const Error &error) {
         rollback();

@@ -102,6 +102,8 @@ private:
     [[nodiscard]] Result<void> checkNotNewer(int version) const;
     [[nodiscard]] Result<void> migrate();
     [[nodiscard]] Result<void> begin();
+    // A transaction that writes: refused first when the library is read-only.
+    [[nodiscard]] Result<void> beginWrite();
     [[nodiscard]] Result<void> commit();
     void rollback();
     [[nodiscard]] Result<void> checkWritable() const;

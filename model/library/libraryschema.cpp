@@ -70,6 +70,13 @@ Result<void> Library::begin()
     return {};
 }
 
+Result<void> Library::beginWrite()
+{
+    if (auto writable = checkWritable(); !writable)
+        return writable;
+    return begin();
+}
+
 Result<void> Library::commit()
 {
     QSqlDatabase db = database();

@@ -180,9 +180,7 @@ Result<bool> Library::putRow(
 
 Result<StoredTable> Library::createTable(const QString &machine, const ToolTable &table)
 {
-    if (auto writable = checkWritable(); !writable)
-        return writable.error();
-    if (auto begun = begin(); !begun)
+    if (auto begun = beginWrite(); !begun)
         return begun.error();
     auto fail = [this](const Error &error) {
         rollback();

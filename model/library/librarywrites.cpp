@@ -12,14 +12,12 @@ namespace Toffee {
 
 Result<WriteOutcome> Library::writeTools(const QString &machine, const QList<ToolWrite> &writes)
 {
-    if (auto writable = checkWritable(); !writable)
-        return writable.error();
     // In the order of their numbers, as every writer takes them: two saves never wait for each other's rows
     // in opposite orders (a deadlock).
     QList<ToolWrite> ordered = writes;
     std::sort(
         ordered.begin(), ordered.end(), [](const auto &a, const auto &b) { return a.number < b.number; });
-    if (auto begun = begin(); !begun)
+    if (auto begun = beginWrite(); !begun)
         return begun.error();
     auto fail = [this](const Error &error) {
         rollback();
