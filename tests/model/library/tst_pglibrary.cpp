@@ -66,6 +66,16 @@ protected:
         }
     };
 
+    // A library with C1's table, and station A's recorder on it with its outbox in `own`.
+    bool stationA(HistoryRecorder &recorder, const LibraryLocation &where, const QTemporaryDir &own)
+    {
+        if (!station(where, u"setup"_s)->createTable(u"C1"_s, threeTools()))
+            return false;
+        recorder.setOutboxLocation({ own.filePath(u"outbox.sqlite"_s) });
+        return bool(
+            recorder.setLocation(where, Library::Options { .connectTimeoutS = 1, .station = u"A"_s }));
+    }
+
     // SIGKILL to the postmaster in `ms`, from a process of its own: the test's thread is then waiting in a
     // write.
     void killServerIn(int ms)
@@ -148,11 +158,9 @@ private Q_SLOTS:
     void theServerKilledMidSaveAndMidMeasurementLosesAndDuplicatesNothing()
     {
         const LibraryLocation where = freshLocation();
-        QVERIFY(station(where, u"setup"_s)->createTable(u"C1"_s, threeTools()));
         QTemporaryDir own;
         HistoryRecorder recorder;
-        recorder.setOutboxLocation({ own.filePath(u"outbox.sqlite"_s) });
-        QVERIFY(recorder.setLocation(where, Library::Options { .connectTimeoutS = 1, .station = u"A"_s }));
+        QVERIFY(stationA(recorder, where, own));
         QSignalSpy down(&recorder, &HistoryRecorder::unavailable);
         const HistoryEvent measured = probe(u"C1"_s, 1, -30.5);
         {
@@ -186,11 +194,9 @@ private Q_SLOTS:
     void aMeasurementKilledMidWriteIsWrittenOnceWhenTheServerReturns()
     {
         const LibraryLocation where = freshLocation();
-        QVERIFY(station(where, u"setup"_s)->createTable(u"C1"_s, threeTools()));
         QTemporaryDir own;
         HistoryRecorder recorder;
-        recorder.setOutboxLocation({ own.filePath(u"outbox.sqlite"_s) });
-        QVERIFY(recorder.setLocation(where, Library::Options { .connectTimeoutS = 1, .station = u"A"_s }));
+        QVERIFY(stationA(recorder, where, own));
         const HistoryEvent measured = probe(u"C1"_s, 1, -29.75);
         {
             RowLock lock(m_cluster, where.database); // the event's row update waits on T1 ...
