@@ -112,6 +112,7 @@ void SharedTableCases::aMeasurementUpdatesItsToolOnceHoweverOftenItIsWritten()
     HistoryEvent broken = probe(u"C1"_s, 2, -31.25);
     broken.kind = EventKind::BreakTest;
     broken.failed = true;
+    broken.at = measured.at.addSecs(1); // the newest, whatever the clock's resolution
     QVERIFY(a->append({ broken }));
     QVERIFY(a->readTable(u"C1"_s).value().row(2)->tool->breakTestFailed);
     const auto newest = a->history({ u"C1"_s, std::nullopt, {}, 1 }); // LIMIT is bound, as every value
