@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QHeaderView>
@@ -99,6 +100,9 @@ ConflictDialog::ConflictDialog(const QList<ToolConflict> &conflicts, Units units
     m_table->verticalHeader()->hide();
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
+    // Tab goes from one tool's choice to the next and on to the buttons: the table's own Tab would move
+    // its (invisible) current cell instead, and the keyboard would never leave the first choice.
+    m_table->setTabKeyNavigation(false);
     m_table->setWordWrap(true);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setSectionResizeMode(TheirsColumn, QHeaderView::Stretch);
@@ -125,9 +129,20 @@ ConflictDialog::ConflictDialog(const QList<ToolConflict> &conflicts, Units units
     // Wrapped text is as tall as its column is narrow: the rows follow the columns' widths.
     connect(m_table->horizontalHeader(), &QHeaderView::sectionResized, m_table,
         &QTableWidget::resizeRowsToContents);
+    // A choice reached with Tab is scrolled into view, however many tools there are.
+    m_scrollToFocus = connect(qApp, &QApplication::focusChanged, this, [this](QWidget *, QWidget *now) {
+        if (const auto row = m_choices.indexOf(now); row >= 0)
+            m_table->scrollTo(m_table->model()->index(int(row), ChoiceColumn));
+    });
     if (!m_choices.isEmpty())
         m_choices.front()->setFocus();
     resize(800, 400);
+}
+
+// Its widgets lose their focus as they go: the rows are not scrolled to then.
+ConflictDialog::~ConflictDialog()
+{
+    disconnect(m_scrollToFocus);
 }
 
 // As tall as the rows need once they are laid out at the dialog's width, within the screen.

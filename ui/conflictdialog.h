@@ -23,6 +23,7 @@ public:
     enum Column { ToolColumn, TheirsColumn, MineColumn, ChoiceColumn, ColumnCount };
 
     ConflictDialog(const QList<ToolConflict> &conflicts, Units units, QWidget *parent = nullptr);
+    ~ConflictDialog() override;
 
     [[nodiscard]] const QList<ToolConflict> &conflicts() const { return m_conflicts; }
     // The operator's choice for tool `number`: true keeps this station's version.
@@ -42,6 +43,7 @@ private:
     QList<ToolConflict> m_conflicts;
     QTableWidget *m_table;
     QList<QComboBox *> m_choices; // one per conflict, in the same order
+    QMetaObject::Connection m_scrollToFocus; // a choice reached with Tab is scrolled into view
 };
 
 } // namespace Toffee

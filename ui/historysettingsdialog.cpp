@@ -17,7 +17,7 @@ using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-HistorySettingsDialog::HistorySettingsDialog(QWidget *parent)
+HistorySettingsDialog::HistorySettingsDialog(QWidget *parent, const LibraryLocation &current)
     : QDialog(parent)
     , m_path(new QLineEdit(this))
     , m_machine(new QLineEdit(this))
@@ -26,7 +26,10 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent)
     setWindowTitle(tr("History Library"));
     setObjectName(u"historySettingsDialog"_s);
     const AppSettings settings;
-    const auto chosen = LibraryLocation::parse(settings.libraryLocation());
+    // The library the window was asked to use (--library, or a shared one it could not open and says so)
+    // comes first: OK with it unchanged keeps the window where it is.
+    const auto chosen = current.isSet() ? Result<LibraryLocation>(current)
+                                        : LibraryLocation::parse(settings.libraryLocation());
     const LibraryLocation shown = chosen ? chosen.value() : LibraryLocation::standard();
     m_path->setText(shown.isShared() ? shown.text() : shown.path);
     m_path->setObjectName(u"libraryPathEdit"_s);
@@ -62,6 +65,10 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addWidget(buttons);
+    // Tab follows the rows: Browse… beside the library, before the machine's name.
+    setTabOrder(m_path, browse);
+    setTabOrder(browse, m_machine);
+    setTabOrder(m_machine, m_stale);
 }
 
 QString HistorySettingsDialog::location() const

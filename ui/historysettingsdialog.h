@@ -3,6 +3,8 @@
 
 #include <QDialog>
 
+#include "model/library/librarylocation.h"
+
 class QLineEdit;
 class QSpinBox;
 
@@ -17,7 +19,8 @@ class HistorySettingsDialog final : public QDialog
     Q_DISABLE_COPY_MOVE(HistorySettingsDialog)
 
 public:
-    explicit HistorySettingsDialog(QWidget *parent = nullptr);
+    // Shows `current`, the library the window was asked to use, when set; else the one in the settings.
+    explicit HistorySettingsDialog(QWidget *parent = nullptr, const LibraryLocation &current = {});
 
     [[nodiscard]] QString location() const; // "sqlite:PATH" or "postgresql://…"
     [[nodiscard]] QString machineName() const;

@@ -156,6 +156,7 @@ private:
     QString m_station; // who this window writes as in the library; empty: the computer's name
     LibraryLocation m_tableLibrary; // where the open machine table came from
     bool m_tableReadOnly = false; // and whether that library may be written
+    LibraryLocation m_askedLibrary; // what setLibrary was given, also when the window fell back to its own
     QPointer<JobCheckDialog> m_jobDialog; // it deletes itself on closing
 };
 

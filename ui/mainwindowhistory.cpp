@@ -87,6 +87,7 @@ void MainWindow::setLibrary(const LibraryLocation &location, const QString &stat
 {
     if (!station.isEmpty())
         m_station = station;
+    m_askedLibrary = location;
     // The window opens a shared library on its own thread: a server that does not answer holds it up for the
     // connect timeout, so that is short. (Reconnecting is asked from another thread: HistoryRecorder.)
     const Library::Options options {
@@ -161,7 +162,7 @@ void MainWindow::recordProgramRun()
 
 void MainWindow::editHistorySettings()
 {
-    HistorySettingsDialog dialog(this);
+    HistorySettingsDialog dialog(this, m_askedLibrary);
     if (dialog.exec() != QDialog::Accepted)
         return;
     AppSettings settings;
