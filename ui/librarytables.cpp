@@ -91,11 +91,15 @@ void MainWindow::chooseMachineTable()
         return;
     }
     MachineTableDialog dialog(machines.value(), library->location().displayName(), this);
-    dialog.setMachine(
-        m_document->isLibraryTable() ? m_document->libraryMachine() : AppSettings().machineName());
+    dialog.setMachine(machineName());
     if (dialog.exec() != QDialog::Accepted || dialog.machine().isEmpty() || !maybeSave())
         return;
     openMachineTable(dialog.machine());
+}
+
+QString MainWindow::machineName() const
+{
+    return m_document->isLibraryTable() ? m_document->libraryMachine() : AppSettings().machineName();
 }
 
 bool MainWindow::openMachineTable(const QString &machine)
@@ -124,6 +128,8 @@ void MainWindow::showLibraryTable(const Library &library, const StoredTable &sto
     m_document->openLibraryTable(stored);
     m_fileWatcher->watch({});
     updateTitle();
+    showSelectedHistory(); // the table's machine's history now
+    refreshToolLife();
 }
 
 void MainWindow::askSaveToLibrary()

@@ -46,7 +46,7 @@ std::optional<Tool> toolIn(const ToolTable &table, int number)
 
 void MainWindow::takeLibraryChange(const QString &machine)
 {
-    if (machine.isEmpty() || machine == AppSettings().machineName()) {
+    if (machine.isEmpty() || machine == machineName()) {
         showSelectedHistory(); // another station's measurements of this machine's tools
         refreshToolLife();
     }

@@ -125,6 +125,9 @@ private:
     void showLibraryTable(const Library &library, const StoredTable &stored);
     [[nodiscard]] QString libraryTableTitle() const;
     [[nodiscard]] bool showsLibraryTable(const QString &machine) const;
+    // The machine the table on screen belongs to: a library table's own, else the setting's (History
+    // Library…). Measurements are recorded, and the history read, under it.
+    [[nodiscard]] QString machineName() const;
     [[nodiscard]] bool hasUnsavedEdits() const;
     void updateLibraryState();
     void takeLibraryChange(const QString &machine);

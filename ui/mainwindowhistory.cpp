@@ -63,7 +63,7 @@ void MainWindow::connectHistory()
     connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State state) {
         if (state == MachineConnection::State::Connected && m_history->library())
             (void)m_history->library()->addMachine(
-                { AppSettings().machineName(), u"carvera"_s, m_connection->description() });
+                { machineName(), u"carvera"_s, m_connection->description() });
     });
     // Ages move on while the window is open: "3 h ago" becomes "4 h ago", and a tool turns stale.
     m_document->model()->setStaleAfterDays(AppSettings().staleAfterDays());
@@ -125,20 +125,20 @@ void MainWindow::useOwnLibrary(const QString &message)
 
 void MainWindow::recordHistory(const Recording &recording)
 {
-    m_history->record(historyEvent(recording, AppSettings().machineName()));
+    m_history->record(historyEvent(recording, machineName()));
 }
 
 void MainWindow::refreshToolLife()
 {
     if (!m_history->library())
         return;
-    if (auto totals = m_history->library()->cuttingTotals(AppSettings().machineName()))
+    if (auto totals = m_history->library()->cuttingTotals(machineName()))
         m_document->model()->setCuttingTimes(totals.value());
 }
 
 Result<int> MainWindow::recordProgramRun(const QString &path)
 {
-    auto program = ProgramUse::read(path, Dialect::Carvera, AppSettings().machineName());
+    auto program = ProgramUse::read(path, Dialect::Carvera, machineName());
     if (!program)
         return program.error();
     m_history->recordUse(program.value().uses);
@@ -179,9 +179,8 @@ void MainWindow::editHistorySettings()
 void MainWindow::showSelectedHistory()
 {
     const QList<int> selected = m_tablePanel->selectedToolNumbers();
-    const AppSettings settings;
     m_historyDock->showTool(
-        selected.size() == 1 ? selected.front() : -1, settings.machineName(), settings.breakTestTolerance());
+        selected.size() == 1 ? selected.front() : -1, machineName(), AppSettings().breakTestTolerance());
 }
 
 void MainWindow::exportHistory()

@@ -50,9 +50,9 @@ void MainWindow::checkJob()
 JobCheckDialog *MainWindow::openJobCheck(const QString &path)
 {
     AppSettings settings;
-    JobSources sources { m_document->table(), m_document->filePath(), m_history->location(),
-        settings.machineName(), settings.staleAfterDays(), machineReference() };
-    if (sources.library->path.isEmpty())
+    JobSources sources { m_document->table(), m_document->filePath(), m_history->location(), machineName(),
+        settings.staleAfterDays(), machineReference() };
+    if (!sources.library->isSet())
         sources.library.reset();
     if (!m_jobDialog) {
         m_jobDialog = new JobCheckDialog(std::move(sources), this);

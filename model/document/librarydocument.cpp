@@ -127,8 +127,18 @@ void ToolDocument::markWritten(const ToolWrites &writes, const WriteOutcome &out
             setBaseRow(write.number, write.tool, outcome.written.value(write.number));
         }
     }
-    applyTable(next, tr("Update from the library"));
+    forgetUndoPast(next);
     cleanWhenWritten();
+}
+
+// Another station's change is shown, and Undo stops there: undoing it, or an older edit of the same tool,
+// would put their old values back, and the next Save would write them over theirs without a question.
+void ToolDocument::forgetUndoPast(const ToolTable &next)
+{
+    if (next == table())
+        return;
+    applyTable(next, tr("Update from the library"));
+    m_undoStack.clear();
 }
 
 QList<ToolConflict> ToolDocument::takeRemote(const StoredTable &latest)
@@ -153,7 +163,7 @@ QList<ToolConflict> ToolDocument::takeRemote(const StoredTable &latest)
         // A queued write is in `merged` now, or was what the library took: either way written from here.
         m_queued.remove(theirs.number);
     }
-    applyTable(next, tr("Update from the library"));
+    forgetUndoPast(next);
     cleanWhenWritten();
     return conflicts;
 }

@@ -73,8 +73,9 @@ public:
     // After a write: each written tool is what the library holds now; with nothing left to write the table
     // is saved. Writes kept in the outbox count as saved here; the library checks them when they are sent.
     void markWritten(const ToolWrites &writes, const WriteOutcome &outcome);
-    // Another station's change. A tool not edited here takes theirs, as one undoable step; one edited here is
-    // merged field by field. Returns the tools that cannot be merged: the operator chooses (resolveConflict).
+    // Another station's change. A tool not edited here takes theirs; one edited here is merged field by
+    // field. Undo then starts from there (it would put their old values back). Returns the tools that cannot
+    // be merged: the operator chooses (resolveConflict).
     QList<ToolConflict> takeRemote(const StoredTable &latest);
     // Theirs replaces the tool here (one undoable step); mine stays, to be written over theirs at Save.
     void resolveConflict(const ToolConflict &conflict, bool keepMine);
@@ -92,6 +93,7 @@ private:
     void setBaseRow(int number, const std::optional<Tool> &tool, qint64 version);
     void cleanWhenWritten();
     void applyTable(const ToolTable &next, const QString &text);
+    void forgetUndoPast(const ToolTable &next);
 
     ToolTableModel m_model;
     QUndoStack m_undoStack;

@@ -80,10 +80,22 @@ inline void editShowsOnTheOtherStation(const LibraryLocation &at)
     QVERIFY(!a.document()->isModified());
     QTRY_COMPARE_WITH_TIMEOUT(b.tool(1).description, u"Reference, reground"_s, kLiveMs);
     qInfo("station to station: %lld ms", qint64(latency.elapsed()));
-    // No question, nothing unsaved: B had no edit to T1. Undo takes back the update, as any step.
+    // No question, nothing unsaved: B had no edit to T1. Undo stops at the update: undoing it would put A's
+    // old description back, and B's next Save would write it over A's without a question.
     QVERIFY(!QApplication::activeModalWidget());
     QVERIFY(!b.document()->isModified());
-    QCOMPARE(b.document()->undoStack()->undoText(), u"Update from the library"_s);
+    QVERIFY(!b.document()->undoStack()->canUndo());
+    // The same with an edit of B's waiting: it stays, to be saved, and Undo cannot reach past A's change.
+    b.edit(1, [](Tool &t) { t.notes = u"B's note"_s; });
+    a.edit(1, [](Tool &t) { t.description = u"Reference, reground twice"_s; });
+    QVERIFY(!a.save().shown);
+    QTRY_COMPARE_WITH_TIMEOUT(b.tool(1).description, u"Reference, reground twice"_s, kLiveMs);
+    QCOMPARE(b.tool(1).notes, u"B's note"_s);
+    QVERIFY(b.document()->isModified());
+    QVERIFY(!b.document()->undoStack()->canUndo());
+    QVERIFY(!b.save().shown);
+    QCOMPARE(libraryTable(at).find(1)->description, u"Reference, reground twice"_s);
+    QCOMPARE(libraryTable(at).find(1)->notes, u"B's note"_s);
 }
 
 inline void sameToolEditedOnBoth(const LibraryLocation &at, bool keepMine)

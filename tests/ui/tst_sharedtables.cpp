@@ -54,7 +54,9 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true);
         QApplication::setOrganizationName(u"ToffeeTest"_s);
         QApplication::setApplicationName(u"tst_sharedtables"_s);
-        AppSettings().setMachineName(kMachine);
+        // The setting names another machine: a library table's measurements and history are its own machine's
+        // (Mill 1), whatever History Library… says for tables in files.
+        AppSettings().setMachineName(u"Carvera"_s);
     }
     void init() { m_folder = std::make_unique<QTemporaryDir>(); }
 
@@ -109,8 +111,7 @@ private Q_SLOTS:
             // put on a read-only share would be.
             leaveWalMode(library().path);
             QCOMPARE(QProcess::execute(u"mount"_s, { u"-o"_s, u"remount,ro"_s, m_folder->path() }), 0);
-        }
-        else
+        } else
             QVERIFY(QFile::setPermissions(library().path, QFileDevice::ReadOwner | QFileDevice::ReadOther));
 
         LibraryStation r(library(), u"Station R"_s);
