@@ -2843,6 +2843,14 @@
         <source>Library back: %1 changes written</source>
         <translation>Bibliothek wieder da: %1 Änderungen geschrieben</translation>
     </message>
+    <message>
+        <source>Library read-only — 1 change kept on this station</source>
+        <translation>Bibliothek schreibgeschützt — 1 Änderung auf dieser Station aufbewahrt</translation>
+    </message>
+    <message>
+        <source>Library read-only — %1 changes kept on this station</source>
+        <translation>Bibliothek schreibgeschützt — %1 Änderungen auf dieser Station aufbewahrt</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LineReader</name>
@@ -3559,10 +3567,6 @@ Trotzdem speichern?</translation>
         <translation>Magazin</translation>
     </message>
     <message>
-        <source>Toffee records into this station&apos;s own library (%1) until the shared one is fixed in Machine ▸ History Library….</source>
-        <translation>Toffee zeichnet in die eigene Bibliothek dieser Station (%1) auf, bis die gemeinsame unter Maschine ▸ Verlaufsbibliothek… in Ordnung gebracht ist.</translation>
-    </message>
-    <message>
         <source>The shared library cannot be used</source>
         <translation>Die gemeinsame Bibliothek lässt sich nicht verwenden</translation>
     </message>
@@ -3685,6 +3689,10 @@ Trotzdem speichern?</translation>
     <message>
         <source>%1&apos;s table keeps the other station&apos;s tools.</source>
         <translation>Die Tabelle von %1 behält die Werkzeuge der anderen Station.</translation>
+    </message>
+    <message>
+        <source>Toffee records into this station&apos;s own library (%1) until the shared one is fixed (Machine ▸ History Library…).</source>
+        <translation>Toffee zeichnet in die eigene Bibliothek dieser Station (%1) auf, bis die gemeinsame in Ordnung gebracht ist (Maschine ▸ Verlaufsbibliothek…).</translation>
     </message>
 </context>
 <context>

@@ -2843,6 +2843,14 @@
         <source>Library back: %1 changes written</source>
         <translation>刀具库已恢复：已写入 %1 项更改</translation>
     </message>
+    <message>
+        <source>Library read-only — 1 change kept on this station</source>
+        <translation>刀具库只读 — 1 项更改保存在本工作站</translation>
+    </message>
+    <message>
+        <source>Library read-only — %1 changes kept on this station</source>
+        <translation>刀具库只读 — %1 项更改保存在本工作站</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LineReader</name>
@@ -3559,10 +3567,6 @@ Save anyway?</source>
         <translation>刀库</translation>
     </message>
     <message>
-        <source>Toffee records into this station&apos;s own library (%1) until the shared one is fixed in Machine ▸ History Library….</source>
-        <translation>在“机床 ▸ 历史库…”中修复共享刀具库之前，Toffee 会记录到本工作站自己的库（%1）中。</translation>
-    </message>
-    <message>
         <source>The shared library cannot be used</source>
         <translation>无法使用共享刀具库</translation>
     </message>
@@ -3685,6 +3689,10 @@ Save anyway?</source>
     <message>
         <source>%1&apos;s table keeps the other station&apos;s tools.</source>
         <translation>%1 的刀具表保留另一工作站的刀具。</translation>
+    </message>
+    <message>
+        <source>Toffee records into this station&apos;s own library (%1) until the shared one is fixed (Machine ▸ History Library…).</source>
+        <translation>在共享刀具库修复之前（机床 ▸ 历史库…），Toffee 会记录到本工作站自己的库（%1）中。</translation>
     </message>
 </context>
 <context>

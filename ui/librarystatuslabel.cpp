@@ -27,7 +27,11 @@ void LibraryStatusLabel::refresh()
     const bool shared = m_recorder->location().isShared();
     if (!m_recorder->isAvailable()) {
         m_waitedMost = std::max(m_waitedMost, waiting);
-        if (shared)
+        const Library *library = m_recorder->library();
+        if (shared && library && library->isReadOnly()) // up, but this role may not write
+            setText(waiting == 1 ? tr("Library read-only — 1 change kept on this station")
+                                 : tr("Library read-only — %1 changes kept on this station").arg(waiting));
+        else if (shared)
             setText(waiting == 1 ? tr("Library offline — 1 change waiting")
                                  : tr("Library offline — %1 changes waiting").arg(waiting));
         else

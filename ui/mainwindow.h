@@ -57,6 +57,9 @@ public:
     // written as `station` (the computer's name when empty). A shared library that cannot be used as it is
     // set (a wrong URL, password, database or server) is said so, and the station's own library is used.
     void setLibrary(const LibraryLocation &location, const QString &station = {});
+    // A library named as Toffee cannot read it (--library with a password, an unknown setting): said, and
+    // the station's own library is used.
+    void refuseLibrary(const QString &message);
     // File ▸ Open Machine Table… once the machine is chosen: false, with a message box, when it fails.
     bool openMachineTable(const QString &machine);
     // File ▸ Save to Library… once the name is given: the table becomes that machine's table in the library.

@@ -77,10 +77,17 @@ void MainWindow::connectHistory()
     QTimer::singleShot(0, this, [this, location] {
         if (m_history->location().isSet())
             return;
-        setLibrary(location ? location.value() : LibraryLocation::standard());
-        if (!location)
-            useOwnLibrary(location.error().text()); // a setting this Toffee cannot read
+        if (location)
+            setLibrary(location.value());
+        else
+            refuseLibrary(location.error().text()); // a setting this Toffee cannot read
     });
+}
+
+void MainWindow::refuseLibrary(const QString &message)
+{
+    setLibrary(LibraryLocation::standard());
+    useOwnLibrary(message);
 }
 
 void MainWindow::setLibrary(const LibraryLocation &location, const QString &station)
@@ -112,7 +119,7 @@ void MainWindow::setLibrary(const LibraryLocation &location, const QString &stat
 void MainWindow::useOwnLibrary(const QString &message)
 {
     const QString own = tr("Toffee records into this station's own library (%1) until the shared one is "
-                           "fixed in Machine ▸ History Library….")
+                           "fixed (Machine ▸ History Library…).")
                             .arg(m_history->location().displayName());
     auto *box = new QMessageBox(QMessageBox::Warning, tr("The shared library cannot be used"),
         message + u"\n\n"_s + own, QMessageBox::Ok, this);

@@ -141,12 +141,13 @@ int main(int argc, char *argv[])
         return QApplication::exec();
     }
     if (parser.isSet(options.library)) {
+        // A library named wrongly is said in the window (started from a desktop menu, nobody reads stderr),
+        // which goes on with the station's own library.
         const auto location = Toffee::LibraryLocation::parse(parser.value(options.library));
-        if (!location) {
-            std::fprintf(stderr, "toffee: %s\n", qPrintable(location.error().message));
-            return 2;
-        }
-        window.setLibrary(location.value());
+        if (location)
+            window.setLibrary(location.value());
+        else
+            window.refuseLibrary(location.error().message);
     }
     window.show();
     // Edits a crash would have lost come first; the table asked for opens when none are recovered.

@@ -208,8 +208,11 @@ void HistoryRecorder::lose(const QString &message)
 {
     if (m_library && m_library->isConnectionLost())
         closeLibrary();
-    if (!m_pending.isEmpty() && keepInOutbox(u"events"_s, eventsPayload(m_pending)))
-        m_pending.clear();
+    // Out of memory before they are counted in the outbox: a count never has them twice.
+    if (const QList<HistoryEvent> events = std::exchange(m_pending, {}); !events.isEmpty()) {
+        if (!keepInOutbox(u"events"_s, eventsPayload(events)))
+            m_pending = events;
+    }
     fail(message);
 }
 

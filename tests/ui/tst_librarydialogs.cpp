@@ -5,6 +5,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -139,6 +140,24 @@ private Q_SLOTS:
         QCOMPARE(plain.findChild<QLineEdit *>(u"libraryPathEdit"_s)->text(), given.path);
         AppSettings().setLibraryLocation({});
         AppSettings().setMachineName({});
+    }
+
+    // toffee --library with a URL Toffee refuses: the window says so (nobody reads a desktop launcher's
+    // stderr) and records into the station's own library.
+    void aLibraryThatDoesNotParseIsSaidInTheWindow()
+    {
+        MainWindow window;
+        window.show();
+        const auto refused = LibraryLocation::parse(u"postgresql://shop:secret@server/tools"_s);
+        QVERIFY(!refused);
+        window.refuseLibrary(refused.error().message);
+        QCOMPARE(window.history()->location(), LibraryLocation::standard());
+        auto *box = window.findChild<QMessageBox *>(u"libraryFailureBox"_s);
+        QVERIFY(box && box->isVisible());
+        QVERIFY(box->text().contains(u"password file"_s));
+        QVERIFY(!box->text().contains(u"secret"_s));
+        QVERIFY(box->text().contains(u"own library"_s));
+        box->close();
     }
 };
 
