@@ -123,7 +123,10 @@ QString LibraryLocation::displayName() const
 {
     if (kind == Kind::Sqlite)
         return path;
-    return tr("database %1 on %2").arg(database, host.isEmpty() ? tr("the local server") : host);
+    QString server = host.isEmpty() ? tr("the local server") : host;
+    if (port > 0)
+        server += u':' + QString::number(port); // a server on another port is another server
+    return tr("database %1 on %2").arg(database, server);
 }
 
 } // namespace Toffee

@@ -53,7 +53,7 @@ private Q_SLOTS:
         const auto local = LibraryLocation::parse(u"postgres://shop@/tools?host=/run/pg&port=5444"_s);
         QCOMPARE(local.value().host, u"/run/pg"_s);
         QCOMPARE(LibraryLocation::parse(local.value().text()).value(), local.value());
-        QCOMPARE(remote.value().displayName(), u"database tools on server"_s);
+        QCOMPARE(remote.value().displayName(), u"database tools on server:5433"_s);
         for (const QString &bad :
             { u"postgresql://shop:pw@server/tools"_s, u"postgresql://server"_s, u"postgresql://server/a/b"_s,
                 u"postgresql://server/t?colour=red"_s, u"postgresql://server:99999/t"_s })
