@@ -44,6 +44,8 @@ MachineTableDialog::MachineTableDialog(
     layout->addWidget(where);
     layout->addWidget(m_list, 1);
     layout->addWidget(buttons);
+    // Wide enough for its title and a library's name on a line (a socket's folder has no space to wrap at).
+    setMinimumWidth(std::max(420, fontMetrics().horizontalAdvance(where->text()) / 2 + 60));
 }
 
 QString MachineTableDialog::machine() const
