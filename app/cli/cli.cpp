@@ -95,6 +95,7 @@ Options:
   --no-history               record nothing in the history library
   --timeout S                give up on connecting, or on any command, after S seconds (default: 5, 120 for motion)
   --help                     this text
+  --version                  the version
 
 Exit codes: 0 success, 2 bad input or usage, 3 broken tool detected, 4 machine error, alarm or program error,
 5 link failure or timeout.
@@ -109,8 +110,8 @@ QString usage()
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
     u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s, u"library"_s,
     u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s };
-const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"emulator"_s, u"no-history"_s, u"csv"_s,
-    u"use-stored-tlo"_s, u"break-test"_s };
+const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"version"_s, u"emulator"_s, u"no-history"_s,
+    u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s };
 
 // toffee-cli import's own options.
 const QSet<QString> kImportValueOptions = { u"into"_s };
@@ -197,6 +198,10 @@ int run(const QStringList &arguments, QTextStream &out, QTextStream &err)
     call.json = call.has(u"json"_s);
     if (call.has(u"help"_s)) {
         out << usage();
+        return Success;
+    }
+    if (call.has(u"version"_s)) {
+        out << "toffee-cli " << TOFFEE_VERSION << Qt::endl;
         return Success;
     }
     if (call.command.isEmpty())

@@ -193,11 +193,13 @@ int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(u"toffee-emulator"_s);
+    QCoreApplication::setApplicationVersion(QStringLiteral(TOFFEE_VERSION));
     QCommandLineParser parser;
     parser.setApplicationDescription(
         u"A Carvera controller on a pseudo-terminal. Prints the device path, then "
         u"serves until stopped."_s);
     parser.addHelpOption();
+    parser.addVersionOption();
     const Options options;
     options.addTo(parser);
     parser.process(app);
