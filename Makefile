@@ -8,14 +8,14 @@ PRESET    := default
 
 # The Debian packages the build, the tests and `make run` need (bookworm; Qt 6.4.2). On the last two lines: the
 # shared library's driver and the throwaway server the suite starts for itself (tests/support/pgcluster.h), and the
-# validators of the desktop entry and the AppStream metainfo.
+# validators of the desktop entry, the AppStream metainfo and the package.
 DEB_PACKAGES := cmake ninja-build g++ make \
 	qt6-base-dev qt6-base-dev-tools qt6-qpa-plugins qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev \
 	qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools \
 	libqt6svg6 libqt6sql6-sqlite libgl-dev fonts-dejavu-core xvfb xauth qt6-translations-l10n \
 	pkg-config libzip-dev \
 	postgresql libqt6sql6-psql \
-	desktop-file-utils appstream
+	desktop-file-utils appstream lintian
 
 # `make bench` also runs LinuxCNC's own interpreter (rs274) on the job check's program, as its yardstick.
 BENCH_PACKAGES := linuxcnc-uspace
@@ -26,7 +26,7 @@ FUZZ_SECONDS ?= 600
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build run test bench fuzz format clean
+.PHONY: all deps configure build run test bench fuzz format clean package
 
 all: build
 
@@ -65,6 +65,10 @@ run: build
 
 test: build
 	ctest --preset $(PRESET) --output-on-failure
+
+# A .deb of the installed layout (CPack; its dependencies from dpkg-shlibdeps), in build/.
+package: build
+	cd $(BUILD_DIR) && cpack
 
 bench: build
 	$(call install_missing,$(BENCH_PACKAGES))
