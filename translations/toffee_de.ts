@@ -797,6 +797,25 @@
     </message>
 </context>
 <context>
+    <name>Toffee::About</name>
+    <message>
+        <source>About Toffee</source>
+        <translation>Über Toffee</translation>
+    </message>
+    <message>
+        <source>Toffee %1</source>
+        <translation>Toffee %1</translation>
+    </message>
+    <message>
+        <source>The tool offset manager: a CNC machine&apos;s tool table and tool length offsets, kept right.
+
+Licensed under the GNU General Public License, version 3 or later.</source>
+        <translation>Der Werkzeugkorrektur-Verwalter: Werkzeugtabelle und Werkzeuglängenkorrekturen einer CNC-Maschine, richtig gehalten.
+
+Lizenziert unter der GNU General Public License, Version 3 oder später.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::AddToolCommand</name>
     <message>
         <source>Add tool T%1</source>
@@ -3693,6 +3712,14 @@ Trotzdem speichern?</translation>
     <message>
         <source>Toffee records into this station&apos;s own library (%1) until the shared one is fixed (Machine ▸ History Library…).</source>
         <translation>Toffee zeichnet in die eigene Bibliothek dieser Station (%1) auf, bis die gemeinsame in Ordnung gebracht ist (Maschine ▸ Verlaufsbibliothek…).</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;About Toffee</source>
+        <translation>Ü&amp;ber Toffee</translation>
     </message>
 </context>
 <context>

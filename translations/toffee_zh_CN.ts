@@ -797,6 +797,25 @@
     </message>
 </context>
 <context>
+    <name>Toffee::About</name>
+    <message>
+        <source>About Toffee</source>
+        <translation>关于 Toffee</translation>
+    </message>
+    <message>
+        <source>Toffee %1</source>
+        <translation>Toffee %1</translation>
+    </message>
+    <message>
+        <source>The tool offset manager: a CNC machine&apos;s tool table and tool length offsets, kept right.
+
+Licensed under the GNU General Public License, version 3 or later.</source>
+        <translation>刀具偏置管理器：让 CNC 机床的刀具表和刀具长度补偿保持正确。
+
+依据 GNU 通用公共许可证第 3 版或（由您选择）任何更新版本授权。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::AddToolCommand</name>
     <message>
         <source>Add tool T%1</source>
@@ -3693,6 +3712,14 @@ Save anyway?</source>
     <message>
         <source>Toffee records into this station&apos;s own library (%1) until the shared one is fixed (Machine ▸ History Library…).</source>
         <translation>在共享刀具库修复之前（机床 ▸ 历史库…），Toffee 会记录到本工作站自己的库（%1）中。</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;About Toffee</source>
+        <translation>关于 Toffee(&amp;A)</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/mainwindow.h"
+#include "ui/aboutbox.h"
 
 #include <QAction>
 #include <QApplication>
@@ -332,6 +333,11 @@ void MainWindow::createMachineActions()
         applyPalette(on);
     });
     view->addAction(dark);
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *about = help->addAction(tr("&About Toffee"), this, [this] { showAbout(this); });
+    about->setObjectName(u"actionAbout"_s);
+    about->setShortcut(QKeySequence(Qt::Key_F1)); // the one help there is
+    about->setMenuRole(QAction::AboutRole);
 }
 
 void MainWindow::updateMachineStatus()

@@ -70,6 +70,21 @@ private Q_SLOTS:
         QCOMPARE(window.findChild<QLabel *>(u"toolCountLabel"_s)->text(), u"6 tools"_s);
     }
 
+    // Help ▸ About Toffee says the project's version, the one --version and the package say.
+    void theAboutBoxSaysTheVersion()
+    {
+        MainWindow window;
+        QString text;
+        QTimer::singleShot(0, &window, [&text] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            QVERIFY(box && box->objectName() == u"aboutBox"_s);
+            text = box->text();
+            box->accept();
+        });
+        window.findChild<QAction *>(u"actionAbout"_s)->trigger();
+        QCOMPARE(text, u"Toffee "_s + QStringLiteral(TOFFEE_VERSION));
+    }
+
     void editsACellByKeyboardAndUndoes()
     {
         MainWindow window;
