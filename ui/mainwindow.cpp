@@ -64,20 +64,44 @@ QString iconFor(const QString &action)
 } // namespace
 
 MainWindow::MainWindow(QWidget *parent)
+    : MainWindow(Build::Now, parent)
+{ }
+
+// The frame alone is cheap: its size, its name. What fills it is built by build(), which start-up calls once
+// the window is on the screen (main.cpp).
+MainWindow::MainWindow(Build when, QWidget *parent)
     : QMainWindow(parent)
-    , m_document(new ToolDocument(this))
-    , m_tablePanel(new ToolTablePanel(m_document->model(), this))
-    , m_connection(new MachineConnection(this))
-    , m_machineDock(new MachineDock(m_connection, m_document, this))
-    , m_consoleDock(new ConsoleDock(m_connection, m_document, this))
-    , m_fileWatcher(new FileWatcher(this))
-    , m_autoSave(new AutoSave(m_document, AutoSave::defaultDirectory(), this))
-    , m_history(new HistoryRecorder(this))
-    , m_historyDock(new HistoryDock(m_history, this))
-    , m_rackPanel(new RackPanel(m_connection, m_document))
-    , m_rackDock(new QDockWidget(tr("Rack"), this))
 {
     setObjectName(u"mainWindow"_s);
+    restoreWindowGeometry();
+    if (when == Build::Now)
+        build();
+}
+
+// Start-up's order: the frame goes to the screen first (Qt's show() sends the map request to the X server at
+// once), then what fills it is built, before the event loop paints it for the first time. The window so
+// appears as soon as a bare one would, and its first picture is already the whole window.
+void MainWindow::showThenBuild()
+{
+    show();
+    build();
+}
+
+void MainWindow::build()
+{
+    if (m_document)
+        return;
+    m_document = new ToolDocument(this);
+    m_tablePanel = new ToolTablePanel(m_document->model(), this);
+    m_connection = new MachineConnection(this);
+    m_machineDock = new MachineDock(m_connection, m_document, this);
+    m_consoleDock = new ConsoleDock(m_connection, m_document, this);
+    m_fileWatcher = new FileWatcher(this);
+    m_autoSave = new AutoSave(m_document, AutoSave::defaultDirectory(), this);
+    m_history = new HistoryRecorder(this);
+    m_historyDock = new HistoryDock(m_history, this);
+    m_rackPanel = new RackPanel(m_connection, m_document);
+    m_rackDock = new QDockWidget(tr("Rack"), this);
     setWindowIcon(themeIcon(u"toffee"_s));
     setCentralWidget(m_tablePanel);
     setAcceptDrops(true);
@@ -98,7 +122,7 @@ MainWindow::MainWindow(QWidget *parent)
     connectHistory();
     connectLibrary();
     updateTitle();
-    readSettings();
+    restoreDockState();
 }
 
 // The machine's state, tool and TLO in a strip that no scrolling, dock or window size hides (and that the
@@ -196,6 +220,8 @@ MainWindow::~MainWindow()
 {
     // Children outlive this class's part of the object: whatever they say while they are destroyed must not
     // reach MainWindow's slots (UBSan's "downcast of address ... not an object of type MainWindow").
+    if (!m_document)
+        return; // never built
     for (QObject *sender : std::initializer_list<QObject *> {
              m_document, m_document->model(), m_connection, m_fileWatcher, m_autoSave, m_history })
         sender->disconnect(this);
@@ -427,15 +453,18 @@ void MainWindow::closeEvent(QCloseEvent *event)
     }
 }
 
-void MainWindow::readSettings()
+void MainWindow::restoreWindowGeometry()
 {
-    AppSettings settings;
-    if (!restoreGeometry(settings.windowGeometry())) {
+    if (!restoreGeometry(AppSettings().windowGeometry())) {
         // 1280×720 is the smallest workshop screen Toffee is laid out for; never more than the screen has.
         const QSize available = screen() ? screen()->availableGeometry().size() : QSize(1280, 720);
         resize(QSize(1280, 720).boundedTo(available));
     }
-    if (!restoreState(settings.windowState())) {
+}
+
+void MainWindow::restoreDockState()
+{
+    if (!restoreState(AppSettings().windowState())) {
         resizeDocks({ m_consoleDock }, { 110 }, Qt::Vertical);
         resizeDocks({ m_machineDock }, { 400 }, Qt::Horizontal);
     }

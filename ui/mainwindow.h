@@ -39,7 +39,12 @@ class MainWindow final : public QMainWindow
     Q_DISABLE_COPY_MOVE(MainWindow)
 
 public:
+    // Build::AfterShow makes only the frame, for start-up to show it first; build() then fills it.
+    enum class Build { Now, AfterShow };
     explicit MainWindow(QWidget *parent = nullptr);
+    explicit MainWindow(Build when, QWidget *parent = nullptr);
+    void build(); // once; the panels, docks, menus and connections
+    void showThenBuild();
     ~MainWindow() override;
 
     [[nodiscard]] ToolDocument *document() const { return m_document; }
@@ -117,7 +122,8 @@ private:
     void exportHistory();
     void checkJob();
     [[nodiscard]] std::optional<double> machineReference() const;
-    void readSettings();
+    void restoreWindowGeometry();
+    void restoreDockState();
     void writeSettings();
     // Machine tables in the library (librarytables.cpp, libraryupdates.cpp).
     void createLibraryActions(QMenu *file);
@@ -142,18 +148,18 @@ private:
     // The shared library cannot be used as set: said, and the station's own library is used.
     void useOwnLibrary(const QString &message);
 
-    ToolDocument *m_document;
-    ToolTablePanel *m_tablePanel;
-    MachineConnection *m_connection;
-    MachineDock *m_machineDock;
-    ConsoleDock *m_consoleDock;
+    ToolDocument *m_document = nullptr;
+    ToolTablePanel *m_tablePanel = nullptr;
+    MachineConnection *m_connection = nullptr;
+    MachineDock *m_machineDock = nullptr;
+    ConsoleDock *m_consoleDock = nullptr;
     QLabel *m_machineLabel = nullptr;
-    FileWatcher *m_fileWatcher;
-    AutoSave *m_autoSave;
-    HistoryRecorder *m_history;
-    HistoryDock *m_historyDock;
-    RackPanel *m_rackPanel;
-    QDockWidget *m_rackDock;
+    FileWatcher *m_fileWatcher = nullptr;
+    AutoSave *m_autoSave = nullptr;
+    HistoryRecorder *m_history = nullptr;
+    HistoryDock *m_historyDock = nullptr;
+    RackPanel *m_rackPanel = nullptr;
+    QDockWidget *m_rackDock = nullptr;
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;

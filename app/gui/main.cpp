@@ -127,7 +127,10 @@ int main(int argc, char *argv[])
     if (parser.isSet(options.selfTest))
         QStandardPaths::setTestModeEnabled(true); // a smoke test leaves the user's settings alone
     Toffee::applyPalette(parser.isSet(options.dark) || Toffee::AppSettings().darkPalette());
-    Toffee::MainWindow window;
+    // An operator's start shows the frame first and builds what fills it after (see below); the self-test and
+    // the tests build it whole, at once.
+    Toffee::MainWindow window(parser.isSet(options.selfTest) ? Toffee::MainWindow::Build::Now
+                                                             : Toffee::MainWindow::Build::AfterShow);
     if (parser.isSet(options.selfTest)) {
         Toffee::SelfTest test(&window, [](int code, const QString &message) {
             std::fprintf(code == 0 ? stdout : stderr, "toffee: %s\n", qPrintable(message));
@@ -140,6 +143,7 @@ int main(int argc, char *argv[])
         QTimer::singleShot(0, &window, [&test, &sinceLaunch] { test.start(sinceLaunch); });
         return QApplication::exec();
     }
+    window.showThenBuild();
     if (parser.isSet(options.library)) {
         // A library named wrongly is said in the window (started from a desktop menu, nobody reads stderr),
         // which goes on with the station's own library.
@@ -149,7 +153,6 @@ int main(int argc, char *argv[])
         else
             window.refuseLibrary(location.error().message);
     }
-    window.show();
     // Edits a crash would have lost come first; the table asked for opens when none are recovered.
     if (!Toffee::offerRecovery(&window) && !parser.positionalArguments().isEmpty())
         window.openFile(parser.positionalArguments().constFirst());

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Start-up's order (issue 16): the frame is shown before it is built, and its first picture is the whole
+// window.
+#include <QApplication>
+#include <QDockWidget>
+#include <QMenuBar>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTableView>
+#include <QTest>
+
+#include "ui/consoledock.h"
+#include "ui/machinedock.h"
+#include "ui/mainwindow.h"
+#include "ui/tooltablepanel.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// What the window held when it was painted for the first time.
+class FirstPaint final : public QObject
+{
+public:
+    explicit FirstPaint(MainWindow *window)
+        : m_window(window)
+    {
+        window->installEventFilter(this);
+    }
+
+    bool painted = false;
+    bool tableShown = false;
+    bool machineDockShown = false;
+    bool consoleShown = false;
+    int menus = 0;
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override
+    {
+        if (watched == m_window && event->type() == QEvent::Paint && !painted) {
+            painted = true;
+            tableShown = m_window->toolTablePanel() && m_window->toolTablePanel()->isVisible();
+            machineDockShown = m_window->machineDock() && m_window->machineDock()->isVisible();
+            consoleShown = m_window->consoleDock() && m_window->consoleDock()->isVisible();
+            menus = int(m_window->menuBar()->actions().size());
+        }
+        return false;
+    }
+
+private:
+    MainWindow *m_window;
+};
+
+} // namespace
+
+class TestMainWindowStartup : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QApplication::setOrganizationName(u"ToffeeTest"_s);
+        QApplication::setApplicationName(u"tst_mainwindowstartup"_s);
+    }
+
+    void theFrameComesFirstAndHoldsNothingYet()
+    {
+        MainWindow window(MainWindow::Build::AfterShow);
+        QVERIFY(!window.document());
+        QVERIFY(!window.toolTablePanel());
+        QVERIFY(!window.machineDock());
+        // Its size is known before it is built, and building it changes nothing: no jump on the screen.
+        const QSize framed = window.size();
+        window.build();
+        QCOMPARE(window.size(), framed);
+        QCOMPARE(framed, MainWindow().size());
+    }
+
+    void theFirstPictureIsTheWholeWindow()
+    {
+        MainWindow window(MainWindow::Build::AfterShow);
+        FirstPaint first(&window);
+        window.showThenBuild();
+        QVERIFY(window.isVisible());
+        QVERIFY(window.document());
+        QTRY_VERIFY(first.painted);
+        QVERIFY(first.tableShown);
+        QVERIFY(first.machineDockShown);
+        QVERIFY(first.consoleShown);
+        QVERIFY(first.menus >= 4);
+    }
+
+    void buildingTwiceBuildsOnce()
+    {
+        MainWindow window(MainWindow::Build::AfterShow);
+        window.build();
+        ToolTablePanel *panel = window.toolTablePanel();
+        window.build();
+        QCOMPARE(window.toolTablePanel(), panel);
+        QCOMPARE(window.findChildren<ToolTablePanel *>().size(), 1);
+    }
+};
+
+QTEST_MAIN(TestMainWindowStartup)
+#include "tst_mainwindowstartup.moc"
