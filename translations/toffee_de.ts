@@ -795,6 +795,14 @@
         <source>T%1&apos;s stored TLO does not say which reference it was measured against: it is measured at its change.</source>
         <translation>Bei der gespeicherten TLO von T%1 ist nicht vermerkt, gegen welche Referenz sie gemessen wurde: T%1 wird beim Wechsel vermessen.</translation>
     </message>
+    <message>
+        <source>Toffee&apos;s zip reader %1 is missing, so .tools archives cannot be read; reinstall Toffee.</source>
+        <translation>Toffees Zip-Leser %1 fehlt, deshalb können .tools-Archive nicht gelesen werden; installieren Sie Toffee neu.</translation>
+    </message>
+    <message>
+        <source>Toffee&apos;s zip reader %1 cannot be loaded (%2); reinstall Toffee.</source>
+        <translation>Toffees Zip-Leser %1 kann nicht geladen werden (%2); installieren Sie Toffee neu.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::About</name>

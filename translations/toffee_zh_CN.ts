@@ -795,6 +795,14 @@
         <source>T%1&apos;s stored TLO does not say which reference it was measured against: it is measured at its change.</source>
         <translation>T%1 的已存 TLO 未注明是相对哪个基准测量的：换刀时将重新对刀。</translation>
     </message>
+    <message>
+        <source>Toffee&apos;s zip reader %1 is missing, so .tools archives cannot be read; reinstall Toffee.</source>
+        <translation>Toffee 的 zip 读取模块 %1 缺失，因此无法读取 .tools 归档；请重新安装 Toffee。</translation>
+    </message>
+    <message>
+        <source>Toffee&apos;s zip reader %1 cannot be loaded (%2); reinstall Toffee.</source>
+        <translation>无法加载 Toffee 的 zip 读取模块 %1（%2）；请重新安装 Toffee。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::About</name>

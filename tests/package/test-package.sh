@@ -3,10 +3,12 @@
 # The .deb `make package` builds, as a user's computer gets it: built (CPack, dependencies from dpkg-shlibdeps),
 # its metadata and file list read (dpkg-deb), lintian's verdict, then unpacked into a fresh root, where the
 # installed programs run from their installed paths: toffee --version, toffee-cli --help, the window's
-# --self-test. test-package.sh BUILD_DIR VERSION
+# --self-test, and toffee-cli importing a .tools archive through the zip reader module (and saying what to do
+# when that module is gone). test-package.sh BUILD_DIR VERSION SOURCE_DIR
 set -eu
 build=$1
 version=$2
+source=$3
 work=$(mktemp -d "${TMPDIR:-/tmp}/toffee-package.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 fail() { echo "package: $*" >&2; exit 1; }
@@ -29,7 +31,8 @@ for path in usr/bin/toffee usr/bin/toffee-cli usr/bin/toffee-emulator \
     usr/share/icons/hicolor/48x48/apps/org.toffee.Toffee.png \
     usr/share/icons/hicolor/256x256/apps/org.toffee.Toffee.png \
     usr/share/man/man1/toffee.1.gz usr/share/man/man1/toffee-cli.1.gz usr/share/man/man1/toffee-emulator.1.gz \
-    usr/share/bash-completion/completions/toffee-cli usr/share/doc/toffee/copyright; do
+    usr/share/bash-completion/completions/toffee-cli usr/share/doc/toffee/copyright \
+    usr/lib/x86_64-linux-gnu/toffee/toffee_zipreader.so; do
     echo "$files" | grep -q " \./$path\$" || fail "the package has no /$path"
 done
 
@@ -49,5 +52,15 @@ out=$("$root/usr/bin/toffee" --version)
 HOME="$work/home" XDG_DATA_HOME="$work/home/data" XDG_CONFIG_HOME="$work/home/config" QT_QPA_PLATFORM=offscreen \
     "$root/usr/bin/toffee" --self-test > "$work/selftest.log" 2>&1 || { cat "$work/selftest.log"; fail "installed toffee --self-test failed"; }
 grep -q "self-test passed" "$work/selftest.log" || fail "installed toffee --self-test did not pass"
+# The zip reader is loaded from the installed lib/toffee when a .tools archive is read; without it, the reason.
+tools="$source/tests/data/cam/two-tools.tools"
+"$root/usr/bin/toffee-cli" import "$tools" --into "$work/imported.tbl" > "$work/import.log" 2>&1 || { cat "$work/import.log"; fail "installed toffee-cli import of a .tools archive failed"; }
+grep -q "^T7 " "$work/imported.tbl" || fail "installed toffee-cli import wrote no T7"
+rm "$root/usr/lib/x86_64-linux-gnu/toffee/toffee_zipreader.so"
+if "$root/usr/bin/toffee-cli" import "$tools" --into "$work/again.tbl" > "$work/missing.log" 2>&1; then
+    fail "toffee-cli imported a .tools archive without its zip reader"
+fi
+grep -q "zip reader .*toffee_zipreader.so is missing.*reinstall Toffee" "$work/missing.log" || { cat "$work/missing.log"; fail "no clear message when the zip reader is missing"; }
+[ ! -e "$work/again.tbl" ] || fail "a failed import wrote a table"
 man -l "$root/usr/share/man/man1/toffee-cli.1.gz" > /dev/null 2>&1 || zcat "$root/usr/share/man/man1/toffee-cli.1.gz" | grep -q "^.TH TOFFEE" || fail "the manual page does not read"
 echo "package: $(basename "$deb") builds, passes lintian, and its installed programs run"
