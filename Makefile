@@ -13,7 +13,7 @@ DEB_PACKAGES := cmake ninja-build g++ make \
 	qt6-base-dev qt6-base-dev-tools qt6-qpa-plugins qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev \
 	qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools \
 	libqt6svg6 libqt6sql6-sqlite libgl-dev fonts-dejavu-core xvfb xauth qt6-translations-l10n \
-	pkg-config libzip-dev \
+	pkg-config libzip-dev libxcb1-dev \
 	postgresql libqt6sql6-psql \
 	desktop-file-utils appstream lintian
 
@@ -76,6 +76,8 @@ bench: build
 		QT_QPA_PLATFORM=offscreen $(BUILD_DIR)/bin/toffee --lang en --self-test 2>/dev/null \
 			| sed -n 's/.*first frame after \([0-9]*\) ms.*/\1/p'; \
 	done | sort -n | awk '{ t[NR] = $$1 } END { print "window to first frame (toffee --self-test, offscreen), median of 5: " t[3] " ms" }'
+	@# Start-up beside a bare Qt 6 window of the same size, on a display of its own (issue 16).
+	xvfb-run -a -s "-screen 0 1920x1080x24" $(BUILD_DIR)/bin/toffee-bench-startup --runs 9
 	$(BUILD_DIR)/bin/toffee-bench-table
 	$(BUILD_DIR)/bin/toffee-bench-interpreter 1000000
 	$(BUILD_DIR)/bin/toffee-bench-library 1000000

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Start-up, side by side: Toffee's window against a bare Qt 6 QMainWindow (toffee-bench-barewindow), started
-// in turn on the same X display. A run's time is from fork() to the X server's MapNotify of the program's
+// Start-up, side by side: Toffee's window against a bare Qt 6 QMainWindow of the same size
+// (toffee-bench-barewindow), started in turn on the same X display, and the bare window with one label (the
+// floor of any window that draws text). A run's time is from fork() to the X server's MapNotify of the program's
 // first top-level window, read by this process from the server itself; its peak is the process's VmHWM once
 // the program has settled after the map (deferred start-up work included), before it is stopped.
 //   toffee-bench-startup [--runs N] [--settle MS] [--verbose] [-- TOFFEE_ARGS...]
@@ -167,23 +168,34 @@ Settings parse(int argc, char *argv[])
     return s;
 }
 
-void report(const Settings &s, const std::vector<Run> &bare, const std::vector<Run> &toffee)
+// The three programs' figures, side by side; the ratio is taken run by run (each toffee run against the bare
+// run just before it), and its median told.
+void report(const Settings &s, const std::vector<Run> &bare, const std::vector<Run> &label,
+    const std::vector<Run> &toffee)
 {
-    std::vector<double> bareMs, toffeeMs, ratios, barePeak, toffeePeak;
-    for (size_t i = 0; i < bare.size(); ++i) {
-        bareMs.push_back(bare[i].mapMs);
-        toffeeMs.push_back(toffee[i].mapMs);
+    std::vector<double> ratios;
+    for (size_t i = 0; i < bare.size(); ++i)
         ratios.push_back(toffee[i].mapMs / bare[i].mapMs);
-        barePeak.push_back(bare[i].peakMb);
-        toffeePeak.push_back(toffee[i].peakMb);
-    }
+    const auto ms = [](const std::vector<Run> &runs) {
+        std::vector<double> v;
+        for (const Run &r : runs)
+            v.push_back(r.mapMs);
+        return median(v);
+    };
+    const auto mb = [](const std::vector<Run> &runs) {
+        std::vector<double> v;
+        for (const Run &r : runs)
+            v.push_back(r.peakMb);
+        return median(v);
+    };
     std::printf(
-        "start-up to the X server's map, %d alternating runs: toffee %.1f ms, bare QMainWindow %.1f ms "
-        "(medians); ratio %.2fx (median of the %d paired ratios)\n",
-        s.runs, median(toffeeMs), median(bareMs), median(ratios), s.runs);
+        "start-up to the X server's map, %d alternating runs (medians): toffee %.1f ms, bare QMainWindow "
+        "%.1f ms; ratio %.2fx (median of the %d paired ratios); the bare window with one label %.1f ms\n",
+        s.runs, ms(toffee), ms(bare), median(ratios), s.runs, ms(label));
     std::printf(
-        "peak memory (VmHWM, %d ms after the map): toffee %.1f MB, bare QMainWindow %.1f MB (medians)\n",
-        s.settleMs, median(toffeePeak), median(barePeak));
+        "peak memory (VmHWM, %d ms after the map; medians): toffee %.1f MB, bare QMainWindow %.1f MB; "
+        "the bare window with one label %.1f MB\n",
+        s.settleMs, mb(toffee), mb(bare), mb(label));
 }
 
 } // namespace
@@ -211,25 +223,28 @@ int main(int argc, char *argv[])
         return 2;
     const std::string dir = binDir(argv[0]);
     std::vector<std::string> bareArgs { dir + "/toffee-bench-barewindow" };
+    std::vector<std::string> labelArgs { dir + "/toffee-bench-barewindow", "--label" };
     std::vector<std::string> toffeeArgs { dir + "/toffee" };
     toffeeArgs.insert(toffeeArgs.end(), settings.toffeeArgs.begin(), settings.toffeeArgs.end());
 
     // One start of each first, not counted: the libraries, fonts and plugins come into the page cache.
-    if (!runOnce(x, bareArgs, 200) || !runOnce(x, toffeeArgs, 200))
+    if (!runOnce(x, bareArgs, 200) || !runOnce(x, labelArgs, 200) || !runOnce(x, toffeeArgs, 200))
         return 1;
-    std::vector<Run> bare, toffee;
+    std::vector<Run> bare, label, toffee;
     for (int i = 0; i < settings.runs; ++i) {
         const auto b = runOnce(x, bareArgs, settings.settleMs);
         const auto t = runOnce(x, toffeeArgs, settings.settleMs);
-        if (!b || !t)
+        const auto l = runOnce(x, labelArgs, settings.settleMs);
+        if (!b || !t || !l)
             return 1;
         bare.push_back(*b);
+        label.push_back(*l);
         toffee.push_back(*t);
         if (settings.verbose)
             std::printf("run %d: bare %.1f ms %.1f MB, toffee %.1f ms %.1f MB\n", i + 1, b->mapMs, b->peakMb,
                 t->mapMs, t->peakMb);
     }
-    report(settings, bare, toffee);
+    report(settings, bare, label, toffee);
     xcb_disconnect(x);
     std::error_code ignored;
     std::filesystem::remove_all(folders, ignored);
