@@ -1818,6 +1818,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>passed</source>
         <translation>bestanden</translation>
     </message>
+    <message>
+        <source>The chart cannot be drawn: Toffee&apos;s chart module %1 is missing. Reinstall Toffee; the measurements are in the table below.</source>
+        <translation>Das Diagramm kann nicht gezeichnet werden: Toffees Diagrammmodul %1 fehlt. Installieren Sie Toffee neu; die Messungen stehen in der Tabelle darunter.</translation>
+    </message>
+    <message>
+        <source>The chart cannot be drawn: Toffee&apos;s chart module %1 cannot be loaded (%2). Reinstall Toffee; the measurements are in the table below.</source>
+        <translation>Das Diagramm kann nicht gezeichnet werden: Toffees Diagrammmodul %1 kann nicht geladen werden (%2). Installieren Sie Toffee neu; die Messungen stehen in der Tabelle darunter.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryRecorder</name>

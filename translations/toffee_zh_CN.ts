@@ -1818,6 +1818,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>passed</source>
         <translation>通过</translation>
     </message>
+    <message>
+        <source>The chart cannot be drawn: Toffee&apos;s chart module %1 is missing. Reinstall Toffee; the measurements are in the table below.</source>
+        <translation>无法绘制图表：Toffee 的图表模块 %1 缺失。请重新安装 Toffee；测量值见下方表格。</translation>
+    </message>
+    <message>
+        <source>The chart cannot be drawn: Toffee&apos;s chart module %1 cannot be loaded (%2). Reinstall Toffee; the measurements are in the table below.</source>
+        <translation>无法绘制图表：无法加载 Toffee 的图表模块 %1（%2）。请重新安装 Toffee；测量值见下方表格。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryRecorder</name>

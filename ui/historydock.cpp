@@ -4,29 +4,24 @@
 #include <algorithm>
 
 #include <QAbstractTableModel>
-#include <QAreaSeries>
-#include <QChart>
-#include <QChartView>
 #include <QClipboard>
-#include <QDateTimeAxis>
 #include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLineSeries>
 #include <QLocale>
-#include <QPainter>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableView>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <QValueAxis>
 
 #include "model/formats/fileio.h"
 #include "model/library/historyrecorder.h"
+#include "model/modules.h"
 #include "model/numberformat.h"
 #include "ui/appearance.h"
+#include "ui/historychart/historychart.h"
 
 using namespace Qt::StringLiterals;
 
@@ -34,35 +29,36 @@ namespace Toffee {
 
 namespace {
 
-enum class MarkerShape { Circle, Triangle, Square };
-
-// Points drawn as light markers on an invisible line: one chart item for the whole series, so ten thousand
-// measurements draw in milliseconds (a QScatterSeries makes an item per point).
-QLineSeries *markers(const QString &name, MarkerShape shape, const QColor &color, int size)
+// The chart module's two functions, loaded the first time a chart is drawn; a failure is not kept, so that a
+// module put back is found without a restart.
+struct ChartModule
 {
-    QImage image(size, size, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::transparent);
-    QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing);
-    painter.setPen(QPen(color.darker(140), 1));
-    painter.setBrush(color);
-    const QRectF box(0.5, 0.5, size - 1.0, size - 1.0);
-    if (shape == MarkerShape::Circle) {
-        painter.drawEllipse(box);
-    } else if (shape == MarkerShape::Square) {
-        painter.drawRect(box.adjusted(1, 1, -1, -1));
-    } else {
-        painter.drawPolygon(
-            QPolygonF({ QPointF(box.center().x(), box.top()), box.bottomRight(), box.bottomLeft() }));
+    MakeHistoryChartView make = nullptr;
+    FillHistoryChart fill = nullptr;
+};
+
+Result<ChartModule> chartModule()
+{
+    static ChartModule loaded;
+    if (loaded.make)
+        return loaded;
+    const QLatin1StringView file(kHistoryChartModule);
+    const auto make = resolveInModule(file, kMakeHistoryChartViewSymbol);
+    const auto fill = make ? resolveInModule(file, kFillHistoryChartSymbol) : make;
+    if (!fill) {
+        const Error &e = fill.error();
+        return Error { e.code == kModuleMissing
+                ? HistoryDock::tr("The chart cannot be drawn: Toffee's chart module %1 is missing. Reinstall "
+                                  "Toffee; the measurements are in the table below.")
+                      .arg(e.file)
+                : HistoryDock::tr(
+                    "The chart cannot be drawn: Toffee's chart module %1 cannot be loaded (%2). "
+                    "Reinstall Toffee; the measurements are in the table below.")
+                      .arg(e.file, e.message) };
     }
-    painter.end();
-    auto *series = new QLineSeries;
-    series->setName(name);
-    series->setPen(Qt::NoPen);
-    series->setColor(color);
-    series->setLightMarker(image);
-    series->setMarkerSize(size);
-    return series;
+    loaded = { reinterpret_cast<MakeHistoryChartView>(make.value()),
+        reinterpret_cast<FillHistoryChart>(fill.value()) };
+    return loaded;
 }
 
 QString kindText(EventKind kind)
@@ -208,6 +204,13 @@ HistoryDock::HistoryDock(HistoryRecorder *recorder, QWidget *parent)
                 [this](const HistoryEvent &e) { return e.tool == m_tool && e.machine == m_machine; }))
             reload();
     });
+    // Seen or not, as Qt tells it: a panel behind another's tab is "visible" to isVisible(), only moved out of
+    // sight, so that isVisible() had the chart built at every start.
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool seen) {
+        m_seen = seen;
+        if (seen && m_stale)
+            QTimer::singleShot(0, this, &HistoryDock::reload);
+    });
     showTool(-1, {}, m_tolerance);
 }
 
@@ -216,17 +219,11 @@ QPushButton *HistoryDock::exportButton() const
     return m_export;
 }
 
-QChart *HistoryDock::chart() const
+QWidget *HistoryDock::chartView() const
 {
-    return m_view ? m_view->chart() : nullptr;
+    return m_view;
 }
 
-void HistoryDock::showEvent(QShowEvent *event)
-{
-    QDockWidget::showEvent(event);
-    if (m_stale)
-        QTimer::singleShot(0, this, &HistoryDock::reload);
-}
 
 void HistoryDock::showTool(int tool, const QString &machine, double tolerance)
 {
@@ -238,8 +235,9 @@ void HistoryDock::showTool(int tool, const QString &machine, double tolerance)
 
 void HistoryDock::reload()
 {
-    // Drawn when seen: a panel behind the console's tab builds no chart (Qt Charts is slow to start).
-    if (!isVisible()) {
+    // Drawn when seen: a panel behind the console's tab builds no chart (Qt Charts is slow to start, and its
+    // module is loaded then).
+    if (!m_seen) {
         m_stale = true;
         return;
     }
@@ -271,127 +269,38 @@ void HistoryDock::reload()
 
 void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<TrendPoint> &points)
 {
-    auto *chart = new QChart;
-    chart->setMargins(QMargins(4, 4, 4, 4));
-    chart->legend()->setAlignment(Qt::AlignBottom);
-    const QColor alarm = alarmColor(palette());
-    const QColor text = palette().color(QPalette::Text);
-    chart->setBackgroundBrush(palette().brush(QPalette::Base));
-    // The axis labels in the user's decimal mark ("-33,400" in German), like every other number in the
-    // window.
-    chart->setLocalizeNumbers(true);
-    chart->setLocale(QLocale());
-    chart->setTitleBrush(text);
-    chart->legend()->setLabelColor(text);
-    auto *probes = markers(tr("Probes"), MarkerShape::Circle, palette().color(QPalette::Highlight), 8);
-    auto *passed = markers(tr("Break test passed"), MarkerShape::Triangle, QColor(0x26, 0xa2, 0x69), 11);
-    auto *failed = markers(tr("Break test failed"), MarkerShape::Triangle, alarm, 13);
-    auto *manual = markers(tr("Set by hand"), MarkerShape::Square, QColor(0x98, 0x6a, 0x44), 9);
-    QList<QPointF> probeTimes;
-    for (const HistoryEvent &e : m_events) {
-        const qreal t = qreal(e.at.toMSecsSinceEpoch());
-        if (e.kind == EventKind::BreakTest && (e.newTlo || e.tlo))
-            (e.failed.value_or(false) ? failed : passed)->append(t, e.newTlo.value_or(*e.tlo));
-        else if (e.kind == EventKind::Probe && e.tlo)
-            probeTimes.append({ t, *e.tlo });
-        else if (e.tlo)
-            manual->append(t, *e.tlo);
-    }
-    probes->replace(probeTimes);
-    QList<QAbstractSeries *> all { probes, passed, failed, manual };
-    if (trend && trend->points >= 2 && probeTimes.size() == points.size()) {
-        // The trend at each probe's place in the tool's life, drawn at the probe's time, with ± the
-        // tolerance.
-        auto *line = new QLineSeries;
-        auto *upper = new QLineSeries;
-        auto *lower = new QLineSeries;
-        line->setName(tr("Wear trend"));
-        for (qsizetype i = 0; i < points.size(); ++i) {
-            const qreal y = trend->predict(points.at(i).x);
-            line->append(probeTimes.at(i).x(), y);
-            upper->append(probeTimes.at(i).x(), y + m_tolerance);
-            lower->append(probeTimes.at(i).x(), y - m_tolerance);
+    const auto module = chartModule();
+    if (!module) {
+        if (!m_chartProblem) {
+            m_chartProblem = new QLabel(this);
+            m_chartProblem->setObjectName(u"historyChartProblem"_s);
+            m_chartProblem->setWordWrap(true);
+            m_chartProblem->setTextFormat(Qt::PlainText);
+            m_split->insertWidget(0, m_chartProblem);
         }
-        auto *band = new QAreaSeries(upper, lower);
-        band->setName(tr("± %1 mm").arg(formatNumber(m_tolerance, NumberFormat::upTo(3).inLocale())));
-        QColor fill = palette().color(QPalette::Highlight);
-        fill.setAlpha(40);
-        band->setBrush(fill);
-        band->setPen(Qt::NoPen);
-        line->setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
-        all.prepend(line);
-        all.prepend(band);
+        m_chartProblem->setText(module.error().message);
+        return;
     }
-    for (QAbstractSeries *s : all)
-        chart->addSeries(s);
-    if (m_events.isEmpty())
-        chart->setTitle(m_tool < 0 ? QString() : tr("No measurements of T%1 yet").arg(m_tool));
-    auto *time = new QDateTimeAxis;
-    time->setFormat(QLocale().dateFormat(QLocale::ShortFormat));
-    time->setLabelsBrush(text);
-    auto *tlo = new QValueAxis;
-    tlo->setTitleText(tr("TLO (mm)"));
-    tlo->setTitleBrush(text);
-    tlo->setLabelsBrush(text);
-    tlo->setLabelFormat(u"%.3f"_s);
-    chart->addAxis(time, Qt::AlignBottom);
-    chart->addAxis(tlo, Qt::AlignLeft);
-    // Set once the chart's theme has dressed the axes: grid lines that stay in the background on the light
-    // and the dark palette alike.
-    const QColor grid = palette().color(QPalette::Text).lightness() > 128 ? QColor(0x55, 0x55, 0x55)
-                                                                          : QColor(0xd0, 0xd0, 0xd0);
-    for (QAbstractAxis *axis : { static_cast<QAbstractAxis *>(time), static_cast<QAbstractAxis *>(tlo) }) {
-        axis->setGridLineColor(grid);
-        axis->setLinePenColor(grid);
-        axis->setLabelsBrush(palette().color(QPalette::Text));
+    if (m_chartProblem) {
+        delete m_chartProblem;
+        m_chartProblem = nullptr;
     }
-    qreal x0 = std::numeric_limits<qreal>::max();
-    qreal x1 = std::numeric_limits<qreal>::lowest();
-    qreal y0 = x0;
-    qreal y1 = x1;
-    for (QAbstractSeries *s : all) {
-        s->attachAxis(time);
-        s->attachAxis(tlo);
-        if (auto *xy = qobject_cast<QXYSeries *>(s)) {
-            for (const QPointF &p : xy->points()) {
-                x0 = std::min(x0, p.x());
-                x1 = std::max(x1, p.x());
-                y0 = std::min(y0, p.y());
-                y1 = std::max(y1, p.y());
-            }
-        }
-    }
-    if (x0 > x1) { // nothing to draw: today, around zero
-        x0 = qreal(QDateTime::currentMSecsSinceEpoch());
-        x1 = x0;
-        y0 = y1 = 0.0;
-    }
-    const qreal hour = 3600.0 * 1000.0;
-    const qreal xPad = std::max(hour, (x1 - x0) * 0.03);
-    const qreal yPad = std::max(0.05, (y1 - y0) * 0.1);
-    time->setRange(
-        QDateTime::fromMSecsSinceEpoch(qint64(x0 - xPad)), QDateTime::fromMSecsSinceEpoch(qint64(x1 + xPad)));
-    tlo->setRange(y0 - yPad, y1 + yPad);
-    tlo->applyNiceNumbers(); // ticks at round millimetres, not at the data's own edges
-    // Within a few days the dates repeat: show the times. With nothing to draw, no axes at all.
-    if (x1 + xPad - (x0 - xPad) < 3 * 24 * hour)
-        time->setFormat(QLocale().timeFormat(QLocale::ShortFormat));
-    time->setVisible(!m_events.isEmpty());
-    tlo->setVisible(!m_events.isEmpty());
     if (!m_view) {
         // Made when first seen: a chart view costs the window's first frame several milliseconds.
-        m_view = new QChartView(this);
+        m_view = module.value().make(this);
         m_view->setObjectName(u"historyChart"_s);
-        m_view->setRenderHint(QPainter::Antialiasing);
         m_view->setMinimumHeight(180);
         m_view->setAccessibleName(tr("TLO over time"));
         m_split->insertWidget(0, m_view);
         m_split->setStretchFactor(0, 3);
         m_split->setStretchFactor(1, 2);
     }
-    QChart *old = m_view->chart();
-    m_view->setChart(chart);
-    delete old;
+    HistoryChartInput input { &m_events, trend, points, m_tolerance, palette(), alarmColor(palette()),
+        { tr("Probes"), tr("Break test passed"), tr("Break test failed"), tr("Set by hand"), tr("Wear trend"),
+            tr("± %1 mm").arg(formatNumber(m_tolerance, NumberFormat::upTo(3).inLocale())),
+            m_events.isEmpty() && m_tool >= 0 ? tr("No measurements of T%1 yet").arg(m_tool) : QString(),
+            tr("TLO (mm)") } };
+    module.value().fill(m_view, input);
 }
 
 void HistoryDock::fillTable()

@@ -7,8 +7,6 @@
 #include "model/library/weartrend.h"
 #include "model/result.h"
 
-class QChart;
-class QChartView;
 class QLabel;
 class QPushButton;
 class QSplitter;
@@ -34,15 +32,14 @@ public:
     void showTool(int tool, const QString &machine, double tolerance);
     [[nodiscard]] int tool() const { return m_tool; }
     [[nodiscard]] const QList<HistoryEvent> &events() const { return m_events; }
-    [[nodiscard]] QChart *chart() const;
+    // The chart (a QChartView of the chart module) once the panel has been seen; null before, or without
+    // the module.
+    [[nodiscard]] QWidget *chartView() const;
     // The CSV Export writes: the events as the library holds them.
     [[nodiscard]] QByteArray csv() const;
     [[nodiscard]] Result<void> exportCsv(const QString &path) const;
     [[nodiscard]] QPushButton *exportButton() const;
     void copyChart();
-
-protected:
-    void showEvent(QShowEvent *event) override;
 
 private:
     void reload();
@@ -51,7 +48,8 @@ private:
 
     HistoryRecorder *m_recorder;
     QLabel *m_title;
-    QChartView *m_view = nullptr;
+    QWidget *m_view = nullptr;
+    QLabel *m_chartProblem = nullptr; // says why there is no chart
     QSplitter *m_split;
     QTableView *m_table;
     HistoryTableModel *m_model;
@@ -62,6 +60,7 @@ private:
     double m_tolerance = 0.1;
     QList<HistoryEvent> m_events;
     bool m_stale = true; // the tool changed while the panel was not seen
+    bool m_seen = false; // QDockWidget::visibilityChanged: shown, and not behind another panel's tab
 };
 
 } // namespace Toffee

@@ -20,7 +20,9 @@ deb=$(ls "$work"/out/toffee_*.deb)
 info=$(dpkg-deb --info "$deb")
 echo "$info" | grep -q "^ Version: $version\$" || fail "dpkg-deb --info: no Version $version"
 # Computed from the binaries by dpkg-shlibdeps: Qt's libraries with their versions, libc.
-for lib in "libqt6core6 (>=" "libqt6widgets6 (>=" "libqt6sql6 (>=" "libqt6serialport6 (>=" "libc6 (>="; do
+# The modules' too: Qt Charts for the chart, libzip for the zip reader.
+for lib in "libqt6core6 (>=" "libqt6widgets6 (>=" "libqt6sql6 (>=" "libqt6serialport6 (>=" "libc6 (>=" \
+    "libqt6charts6 (>=" "libzip4 (>="; do
     echo "$info" | grep "^ Depends:" | grep -qF "$lib" || fail "Depends lacks $lib"
 done
 
@@ -32,7 +34,7 @@ for path in usr/bin/toffee usr/bin/toffee-cli usr/bin/toffee-emulator \
     usr/share/icons/hicolor/256x256/apps/org.toffee.Toffee.png \
     usr/share/man/man1/toffee.1.gz usr/share/man/man1/toffee-cli.1.gz usr/share/man/man1/toffee-emulator.1.gz \
     usr/share/bash-completion/completions/toffee-cli usr/share/doc/toffee/copyright \
-    usr/lib/x86_64-linux-gnu/toffee/toffee_zipreader.so; do
+    usr/lib/x86_64-linux-gnu/toffee/toffee_zipreader.so usr/lib/x86_64-linux-gnu/toffee/toffee_historychart.so; do
     echo "$files" | grep -q " \./$path\$" || fail "the package has no /$path"
 done
 

@@ -3,6 +3,7 @@
 // the trend and its band, the table, and the CSV export.
 #include <QAreaSeries>
 #include <QChart>
+#include <QChartView>
 #include <QClipboard>
 #include <QFile>
 #include <QGuiApplication>
@@ -16,6 +17,7 @@
 #include <QXYSeries>
 
 #include "model/library/historyrecorder.h"
+#include "model/modules.h"
 #include "ui/appearance.h"
 #include "ui/historydock.h"
 
@@ -53,6 +55,13 @@ QXYSeries *series(QChart *chart, const QString &name)
     qFatal("no series named %s", qPrintable(name));
 }
 
+// The chart the module drew in the panel, or null.
+QChart *chartOf(const HistoryDock &dock)
+{
+    auto *view = qobject_cast<QChartView *>(dock.chartView());
+    return view ? view->chart() : nullptr;
+}
+
 } // namespace
 
 class TestHistoryDock : public QObject
@@ -80,6 +89,29 @@ private Q_SLOTS:
         QCOMPARE(m_recorder.library()->append(events).value(), 10010);
     }
 
+    // First, before the chart module is loaded by any other test: without it, the panel says what is wrong
+    // and what to do, the measurements are still listed, and the chart comes once the module is back.
+    void withoutTheChartModuleSaysSoAndStillListsTheMeasurements()
+    {
+        QTemporaryDir empty;
+        setModuleDirectory(empty.path());
+        HistoryDock dock(&m_recorder);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
+        dock.showTool(2, u"Carvera"_s, 0.1);
+        auto *problem = dock.findChild<QLabel *>(u"historyChartProblem"_s);
+        QVERIFY(problem);
+        QVERIFY2(problem->text().contains(u"toffee_historychart.so is missing. Reinstall Toffee"_s),
+            qPrintable(problem->text()));
+        QVERIFY(!dock.chartView());
+        QCOMPARE(dock.findChild<QTableView *>(u"historyTable"_s)->model()->rowCount(), 9);
+        setModuleDirectory({});
+        dock.showTool(1, u"Carvera"_s, 0.1);
+        QVERIFY(!dock.findChild<QLabel *>(u"historyChartProblem"_s));
+        QVERIFY(chartOf(dock));
+        QCOMPARE(series(chartOf(dock), u"Probes"_s)->points().size(), 1);
+    }
+
     void saysWhatToDoWithNoToolAndWithNoMeasurement()
     {
         HistoryDock dock(&m_recorder);
@@ -89,8 +121,8 @@ private Q_SLOTS:
             dock.findChild<QLabel *>(u"historyTitle"_s)->text(), u"Select one tool to see its history."_s);
         dock.showTool(9, u"Carvera"_s, 0.1);
         QCOMPARE(dock.findChild<QLabel *>(u"historyTitle"_s)->text(), u"T9 on Carvera: 0 measurements"_s);
-        QCOMPARE(dock.chart()->title(), u"No measurements of T9 yet"_s);
-        QVERIFY(series(dock.chart(), u"Probes"_s)->points().isEmpty());
+        QCOMPARE(chartOf(dock)->title(), u"No measurements of T9 yet"_s);
+        QVERIFY(series(chartOf(dock), u"Probes"_s)->points().isEmpty());
         QVERIFY(!dock.findChild<QWidget *>(u"historyExportButton"_s)->isEnabled());
         QVERIFY(!dock.grab().isNull());
     }
@@ -101,8 +133,8 @@ private Q_SLOTS:
         dock.show();
         QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.showTool(1, u"Carvera"_s, 0.1);
-        QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 1);
-        auto *axis = qobject_cast<QValueAxis *>(dock.chart()->axes(Qt::Vertical).front());
+        QCOMPARE(series(chartOf(dock), u"Probes"_s)->points().size(), 1);
+        auto *axis = qobject_cast<QValueAxis *>(chartOf(dock)->axes(Qt::Vertical).front());
         QVERIFY(axis->min() < -10.0 && axis->max() > -10.0);
         QCOMPARE(dock.findChild<QTableView *>(u"historyTable"_s)->model()->rowCount(), 1);
         QVERIFY(!dock.grab().isNull());
@@ -116,17 +148,17 @@ private Q_SLOTS:
         dock.resize(900, 500);
         dock.showTool(2, u"Carvera"_s, 0.1);
         QCOMPARE(dock.findChild<QLabel *>(u"historyTitle"_s)->text(), u"T2 on Carvera: 9 measurements"_s);
-        QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 6);
-        QCOMPARE(series(dock.chart(), u"Break test passed"_s)->points().size(), 1);
-        QXYSeries *failed = series(dock.chart(), u"Break test failed"_s);
+        QCOMPARE(series(chartOf(dock), u"Probes"_s)->points().size(), 6);
+        QCOMPARE(series(chartOf(dock), u"Break test passed"_s)->points().size(), 1);
+        QXYSeries *failed = series(chartOf(dock), u"Break test failed"_s);
         QCOMPARE(failed->points().size(), 1);
         QCOMPARE(failed->points().front().y(), -33.91); // drawn at what it measured
         QCOMPARE(failed->color(), alarmColor(dock.palette())); // in red
-        QCOMPARE(series(dock.chart(), u"Set by hand"_s)->points().size(), 1);
-        QVERIFY(dock.chart()->localizeNumbers()); // "-33,400" in German, like the rest of the window
+        QCOMPARE(series(chartOf(dock), u"Set by hand"_s)->points().size(), 1);
+        QVERIFY(chartOf(dock)->localizeNumbers()); // "-33,400" in German, like the rest of the window
         QLineSeries *trend = nullptr;
         QAreaSeries *band = nullptr;
-        for (QAbstractSeries *s : dock.chart()->series()) {
+        for (QAbstractSeries *s : chartOf(dock)->series()) {
             if (s->name() == u"Wear trend")
                 trend = qobject_cast<QLineSeries *>(s);
             if (s->name().startsWith(u"± 0.1"))
@@ -153,7 +185,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.resize(900, 500);
         dock.showTool(3, u"Carvera"_s, 0.1);
-        QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 10000);
+        QCOMPARE(series(chartOf(dock), u"Probes"_s)->points().size(), 10000);
         const QPixmap drawn = dock.grab();
         QVERIFY(!drawn.isNull());
         QCOMPARE(drawn.size(), QSize(900, 500));
@@ -201,7 +233,7 @@ private Q_SLOTS:
         dock.show();
         QVERIFY(QTest::qWaitForWindowExposed(&dock));
         QTRY_COMPARE(dock.events().size(), 9);
-        QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 6);
+        QCOMPARE(series(chartOf(dock), u"Probes"_s)->points().size(), 6);
     }
 
     void followsWhatIsRecordedForItsTool()
@@ -211,7 +243,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.showTool(1, u"Carvera"_s, 0.1);
         m_recorder.record(makeEvent(1, 5, EventKind::Probe, -10.002));
-        QCOMPARE(series(dock.chart(), u"Probes"_s)->points().size(), 2);
+        QCOMPARE(series(chartOf(dock), u"Probes"_s)->points().size(), 2);
         m_recorder.record(makeEvent(7, 5, EventKind::Probe, -1.0)); // another tool's: no reload needed
         QCOMPARE(dock.events().size(), 2);
     }

@@ -10,6 +10,7 @@
 #include <QTest>
 
 #include "ui/consoledock.h"
+#include "ui/historydock.h"
 #include "ui/machinedock.h"
 #include "ui/mainwindow.h"
 #include "ui/tooltablepanel.h"
@@ -91,6 +92,21 @@ private Q_SLOTS:
         QVERIFY(first.machineDockShown);
         QVERIFY(first.consoleShown);
         QVERIFY(first.menus >= 4);
+    }
+
+    // The History panel starts behind the console's tab: its chart (and the module with Qt Charts) waits until
+    // the panel is brought forward.
+    void theHistoryChartWaitsUntilItsTabIsSeen()
+    {
+        MainWindow window(MainWindow::Build::AfterShow);
+        window.showThenBuild();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTest::qWait(200);
+        QVERIFY(window.historyDock()->isVisible()); // Qt's word for it, although it is behind the console
+        QVERIFY(!window.historyDock()->chartView());
+        window.historyDock()->raise();
+        QTRY_VERIFY(window.historyDock()->chartView());
+        QVERIFY(window.historyDock()->chartView()->isVisible());
     }
 
     void buildingTwiceBuildsOnce()
