@@ -204,8 +204,8 @@ HistoryDock::HistoryDock(HistoryRecorder *recorder, QWidget *parent)
                 [this](const HistoryEvent &e) { return e.tool == m_tool && e.machine == m_machine; }))
             reload();
     });
-    // Seen or not, as Qt tells it: a panel behind another's tab is "visible" to isVisible(), only moved out of
-    // sight, so that isVisible() had the chart built at every start.
+    // Seen or not, as Qt tells it: a panel behind another's tab is "visible" to isVisible(), only moved out
+    // of sight, so that isVisible() had the chart built at every start.
     connect(this, &QDockWidget::visibilityChanged, this, [this](bool seen) {
         m_seen = seen;
         if (seen && m_stale)
@@ -223,7 +223,6 @@ QWidget *HistoryDock::chartView() const
 {
     return m_view;
 }
-
 
 void HistoryDock::showTool(int tool, const QString &machine, double tolerance)
 {

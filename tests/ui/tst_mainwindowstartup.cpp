@@ -94,8 +94,8 @@ private Q_SLOTS:
         QVERIFY(first.menus >= 4);
     }
 
-    // The History panel starts behind the console's tab: its chart (and the module with Qt Charts) waits until
-    // the panel is brought forward.
+    // The History panel starts behind the console's tab: its chart (and the module with Qt Charts) waits
+    // until the panel is brought forward.
     void theHistoryChartWaitsUntilItsTabIsSeen()
     {
         MainWindow window(MainWindow::Build::AfterShow);

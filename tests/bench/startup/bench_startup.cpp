@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Start-up, side by side: Toffee's window against a bare Qt 6 QMainWindow of the same size
 // (toffee-bench-barewindow), started in turn on the same X display, and the bare window with one label (the
-// floor of any window that draws text). A run's time is from fork() to the X server's MapNotify of the program's
-// first top-level window, read by this process from the server itself; its peak is the process's VmHWM once
-// the program has settled after the map (deferred start-up work included), before it is stopped.
+// floor of any window that draws text). A run's time is from fork() to the X server's MapNotify of the
+// program's first top-level window, read by this process from the server itself; its peak is the process's
+// VmHWM once the program has settled after the map (deferred start-up work included), before it is stopped.
 //   toffee-bench-startup [--runs N] [--settle MS] [--verbose] [-- TOFFEE_ARGS...]
 // Needs an X display (make bench starts Xvfb when there is none). Each program gets fresh, empty settings,
 // data and cache folders, so neither reads what the person running the benchmark has.
