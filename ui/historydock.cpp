@@ -29,6 +29,8 @@ namespace Toffee {
 
 namespace {
 
+constexpr int kChartHeight = 180; // the chart's least height, and its place's before it is made
+
 // The chart module's two functions, loaded the first time a chart is drawn; a failure is not kept, so that a
 // module put back is found without a restart.
 struct ChartModule
@@ -185,6 +187,16 @@ HistoryDock::HistoryDock(HistoryRecorder *recorder, QWidget *parent)
 
     m_split = new QSplitter(Qt::Vertical, this);
     auto *split = m_split;
+    // The chart's place, as tall as the chart will be: the panel keeps its size when the chart is made, the
+    // first time the panel is seen, and says here why when it cannot be.
+    m_chartPlace = new QLabel(this);
+    m_chartPlace->setObjectName(u"historyChartPlace"_s);
+    m_chartPlace->setMinimumHeight(kChartHeight);
+    m_chartPlace->setWordWrap(true);
+    m_chartPlace->setTextFormat(Qt::PlainText);
+    m_chartPlace->setAlignment(Qt::AlignCenter);
+    m_chartPlace->setMargin(12);
+    split->addWidget(m_chartPlace);
     split->addWidget(m_table);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
@@ -263,36 +275,25 @@ void HistoryDock::reload()
     fillChart(WearTrend::fit(points), points);
     fillTable();
     m_export->setEnabled(!m_events.isEmpty());
-    m_copy->setEnabled(m_tool >= 0);
+    m_copy->setEnabled(m_tool >= 0 && m_view);
 }
 
 void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<TrendPoint> &points)
 {
     const auto module = chartModule();
     if (!module) {
-        if (!m_chartProblem) {
-            m_chartProblem = new QLabel(this);
-            m_chartProblem->setObjectName(u"historyChartProblem"_s);
-            m_chartProblem->setWordWrap(true);
-            m_chartProblem->setTextFormat(Qt::PlainText);
-            m_split->insertWidget(0, m_chartProblem);
-        }
-        m_chartProblem->setText(module.error().message);
+        if (m_chartPlace)
+            m_chartPlace->setText(module.error().message);
         return;
-    }
-    if (m_chartProblem) {
-        delete m_chartProblem;
-        m_chartProblem = nullptr;
     }
     if (!m_view) {
         // Made when first seen: a chart view costs the window's first frame several milliseconds.
         m_view = module.value().make(this);
         m_view->setObjectName(u"historyChart"_s);
-        m_view->setMinimumHeight(180);
+        m_view->setMinimumHeight(kChartHeight);
         m_view->setAccessibleName(tr("TLO over time"));
-        m_split->insertWidget(0, m_view);
-        m_split->setStretchFactor(0, 3);
-        m_split->setStretchFactor(1, 2);
+        delete m_split->replaceWidget(0, m_view);
+        m_chartPlace = nullptr;
     }
     HistoryChartInput input { &m_events, trend, points, m_tolerance, palette(), alarmColor(palette()),
         { tr("Probes"), tr("Break test passed"), tr("Break test failed"), tr("Set by hand"), tr("Wear trend"),

@@ -49,7 +49,7 @@ private:
     HistoryRecorder *m_recorder;
     QLabel *m_title;
     QWidget *m_view = nullptr;
-    QLabel *m_chartProblem = nullptr; // says why there is no chart
+    QLabel *m_chartPlace = nullptr; // where the chart goes, until it is made; says why it cannot be
     QSplitter *m_split;
     QTableView *m_table;
     HistoryTableModel *m_model;

@@ -9,6 +9,7 @@
 #include <QGuiApplication>
 #include <QLabel>
 #include <QLineSeries>
+#include <QPushButton>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -99,15 +100,20 @@ private Q_SLOTS:
         dock.show();
         QVERIFY(QTest::qWaitForWindowExposed(&dock));
         dock.showTool(2, u"Carvera"_s, 0.1);
-        auto *problem = dock.findChild<QLabel *>(u"historyChartProblem"_s);
+        auto *problem = dock.findChild<QLabel *>(u"historyChartPlace"_s);
         QVERIFY(problem);
         QVERIFY2(problem->text().contains(u"toffee_historychart.so is missing. Reinstall Toffee"_s),
             qPrintable(problem->text()));
+        QVERIFY(problem->isVisible());
+        // Readable whole: the place is tall enough for the message's lines at its width.
+        QVERIFY(problem->height() >= problem->heightForWidth(problem->width()));
         QVERIFY(!dock.chartView());
+        QVERIFY(!dock.findChild<QPushButton *>(u"historyCopyButton"_s)->isEnabled()); // no chart to copy
         QCOMPARE(dock.findChild<QTableView *>(u"historyTable"_s)->model()->rowCount(), 9);
         setModuleDirectory({});
         dock.showTool(1, u"Carvera"_s, 0.1);
-        QVERIFY(!dock.findChild<QLabel *>(u"historyChartProblem"_s));
+        QVERIFY(!dock.findChild<QLabel *>(u"historyChartPlace"_s));
+        QVERIFY(dock.findChild<QPushButton *>(u"historyCopyButton"_s)->isEnabled());
         QVERIFY(chartOf(dock));
         QCOMPARE(series(chartOf(dock), u"Probes"_s)->points().size(), 1);
     }

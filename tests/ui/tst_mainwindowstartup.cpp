@@ -104,9 +104,13 @@ private Q_SLOTS:
         QTest::qWait(200);
         QVERIFY(window.historyDock()->isVisible()); // Qt's word for it, although it is behind the console
         QVERIFY(!window.historyDock()->chartView());
+        const int tableHeight = window.toolTablePanel()->height();
         window.historyDock()->raise();
         QTRY_VERIFY(window.historyDock()->chartView());
         QVERIFY(window.historyDock()->chartView()->isVisible());
+        // Its place was kept for it: nothing in the window moves when it comes.
+        QTest::qWait(200);
+        QCOMPARE(window.toolTablePanel()->height(), tableHeight);
     }
 
     void buildingTwiceBuildsOnce()
