@@ -31,8 +31,8 @@ namespace {
 
 constexpr int kChartHeight = 180; // the chart's least height, and its place's before it is made
 
-// The chart module's two functions, loaded the first time a chart is drawn; a failure is not kept, so that a
-// module put back is found without a restart.
+// The chart module's two functions, resolved each time a chart is drawn (microseconds once it is loaded), so
+// a module put back is found without a restart.
 struct ChartModule
 {
     MakeHistoryChartView make = nullptr;
@@ -41,9 +41,6 @@ struct ChartModule
 
 Result<ChartModule> chartModule()
 {
-    static ChartModule loaded;
-    if (loaded.make)
-        return loaded;
     const QLatin1StringView file(kHistoryChartModule);
     const auto make = resolveInModule(file, kMakeHistoryChartViewSymbol);
     const auto fill = make ? resolveInModule(file, kFillHistoryChartSymbol) : make;
@@ -58,9 +55,8 @@ Result<ChartModule> chartModule()
                     "Reinstall Toffee; the measurements are in the table below.")
                       .arg(e.file, e.message) };
     }
-    loaded = { reinterpret_cast<MakeHistoryChartView>(make.value()),
+    return ChartModule { reinterpret_cast<MakeHistoryChartView>(make.value()),
         reinterpret_cast<FillHistoryChart>(fill.value()) };
-    return loaded;
 }
 
 QString kindText(EventKind kind)

@@ -12,7 +12,9 @@ namespace Toffee {
 
 namespace {
 
-Result<ReadZipEntry> loadZipReader()
+// The module's function; resolved at each read, which costs microseconds against the archive's unpacking, so
+// a module put back is found without a restart.
+Result<ReadZipEntry> zipReader()
 {
     const auto function = resolveInModule(QLatin1StringView(kZipReaderModule), kReadZipEntrySymbol);
     if (function)
@@ -26,12 +28,6 @@ Result<ReadZipEntry> loadZipReader()
 }
 
 } // namespace
-
-Result<ReadZipEntry> zipReader()
-{
-    static const Result<ReadZipEntry> reader = loadZipReader(); // once, also when asked from two threads
-    return reader;
-}
 
 Result<QList<CamTool>> readFusionArchive(QByteArrayView zip)
 {

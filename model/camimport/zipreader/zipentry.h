@@ -25,10 +25,7 @@ using ReadZipEntry
     = void (*)(QByteArrayView zip, QLatin1StringView wanted, qint64 limit, Result<ZipEntry> *out);
 inline constexpr char kReadZipEntrySymbol[] = "toffee_read_zip_entry";
 
-// The module's file name; fusionarchive.cpp says where it is looked for.
+// The module's file name; model/modules.h says where it is looked for.
 inline constexpr char kZipReaderModule[] = "toffee_zipreader.so";
-
-// The module's function, loaded once; an error says the module is missing or broken and what to do.
-[[nodiscard]] Result<ReadZipEntry> zipReader();
 
 } // namespace Toffee
