@@ -122,6 +122,10 @@ void MainWindow::build()
     connectHistory();
     connectLibrary();
     updateTitle();
+    // Built into a window already shown, the panels are shown by posted events: the saved layout is laid onto
+    // them once they are, or the docks come back at sizes the panels did not yet have (a squeezed table).
+    if (isVisible())
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::MetaCall);
     restoreDockState();
 }
 

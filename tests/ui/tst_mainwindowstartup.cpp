@@ -113,6 +113,30 @@ private Q_SLOTS:
         QCOMPARE(window.toolTablePanel()->height(), tableHeight);
     }
 
+    // A layout saved on quitting comes back on the next start as it does for a window built whole: the docks
+    // are laid out once the panels built into the shown frame are shown.
+    void aSavedLayoutComesBackAsSaved()
+    {
+        {
+            MainWindow first;
+            first.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&first));
+            first.resizeDocks({ first.consoleDock() }, { 300 }, Qt::Vertical);
+            QTest::qWait(50);
+            QVERIFY(first.close()); // saves the window's layout
+        }
+        MainWindow whole;
+        whole.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&whole));
+        QTest::qWait(100);
+        MainWindow framed(MainWindow::Build::AfterShow);
+        framed.showThenBuild();
+        QVERIFY(QTest::qWaitForWindowExposed(&framed));
+        QTest::qWait(100);
+        QCOMPARE(framed.toolTablePanel()->height(), whole.toolTablePanel()->height());
+        QCOMPARE(framed.consoleDock()->height(), whole.consoleDock()->height());
+    }
+
     void buildingTwiceBuildsOnce()
     {
         MainWindow window(MainWindow::Build::AfterShow);
