@@ -4947,6 +4947,33 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     </message>
 </context>
 <context>
+    <name>Toffee::XmlText</name>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: it has a document type declaration (&lt;!DOCTYPE&gt;), which no HSM library has and whose declarations can make reading take hours.</source>
+        <translation>das ist keine HSM-Werkzeugbibliothek, die Toffee liest: sie hat eine Dokumenttyp-Deklaration (&lt;!DOCTYPE&gt;), die keine HSM-Bibliothek hat und deren Deklarationen das Lesen stundenlang dauern lassen können.</translation>
+    </message>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: &lt;%1&gt; has more than %2 attributes; an element of an HSM library has a few dozen at most.</source>
+        <translation>das ist keine HSM-Werkzeugbibliothek, die Toffee liest: &lt;%1&gt; hat mehr als %2 Attribute; ein Element einer HSM-Bibliothek hat höchstens einige Dutzend.</translation>
+    </message>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: &lt;%1&gt; brings the XML namespaces declared to %2; an HSM library declares one, and Toffee reads up to %3.</source>
+        <translation>das ist keine HSM-Werkzeugbibliothek, die Toffee liest: mit &lt;%1&gt; sind %2 XML-Namensräume deklariert; eine HSM-Bibliothek deklariert einen, und Toffee liest bis zu %3.</translation>
+    </message>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: &lt;%1&gt; is nested %2 elements deep; an HSM library nests a few, and Toffee reads up to %3.</source>
+        <translation>das ist keine HSM-Werkzeugbibliothek, die Toffee liest: &lt;%1&gt; ist %2 Elemente tief verschachtelt; eine HSM-Bibliothek verschachtelt wenige, und Toffee liest bis zu %3.</translation>
+    </message>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: it is in &quot;%1&quot;, an encoding Toffee does not know; save it as UTF-16 or UTF-8.</source>
+        <translation>das ist keine HSM-Werkzeugbibliothek, die Toffee liest: sie ist in „%1“ kodiert, einer Kodierung, die Toffee nicht kennt; speichern Sie sie als UTF-16 oder UTF-8.</translation>
+    </message>
+    <message>
+        <source>this is not well-formed XML: it is not valid %1 text.</source>
+        <translation>das ist kein wohlgeformtes XML: es ist kein gültiger %1-Text.</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Toffee, the tool offset manager.</source>

@@ -4947,6 +4947,33 @@ when it is fresh (no probe)</source>
     </message>
 </context>
 <context>
+    <name>Toffee::XmlText</name>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: it has a document type declaration (&lt;!DOCTYPE&gt;), which no HSM library has and whose declarations can make reading take hours.</source>
+        <translation>这不是 Toffee 可读取的 HSM 刀具库：它含有文档类型声明（&lt;!DOCTYPE&gt;），HSM 刀具库从不含有，而其中的声明可能使读取耗时数小时。</translation>
+    </message>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: &lt;%1&gt; has more than %2 attributes; an element of an HSM library has a few dozen at most.</source>
+        <translation>这不是 Toffee 可读取的 HSM 刀具库：&lt;%1&gt; 的属性超过 %2 个；HSM 刀具库的元素最多只有几十个属性。</translation>
+    </message>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: &lt;%1&gt; brings the XML namespaces declared to %2; an HSM library declares one, and Toffee reads up to %3.</source>
+        <translation>这不是 Toffee 可读取的 HSM 刀具库：到 &lt;%1&gt; 为止声明的 XML 命名空间达到 %2 个；HSM 刀具库只声明一个，Toffee 最多读取 %3 个。</translation>
+    </message>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: &lt;%1&gt; is nested %2 elements deep; an HSM library nests a few, and Toffee reads up to %3.</source>
+        <translation>这不是 Toffee 可读取的 HSM 刀具库：&lt;%1&gt; 嵌套了 %2 层元素；HSM 刀具库只嵌套几层，Toffee 最多读取 %3 层。</translation>
+    </message>
+    <message>
+        <source>this is not an HSM tool library Toffee reads: it is in &quot;%1&quot;, an encoding Toffee does not know; save it as UTF-16 or UTF-8.</source>
+        <translation>这不是 Toffee 可读取的 HSM 刀具库：它的编码为“%1”，Toffee 不认识该编码；请将其另存为 UTF-16 或 UTF-8。</translation>
+    </message>
+    <message>
+        <source>this is not well-formed XML: it is not valid %1 text.</source>
+        <translation>这不是格式正确的 XML：它不是有效的 %1 文本。</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Toffee, the tool offset manager.</source>

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// HSMWorks / Fusion .hsmlib tool libraries (FORMATS.md): XML, usually UTF-16 with a byte-order mark, which
-// QXmlStreamReader decodes from the BOM or the declaration. Only tool/@unit, @type, description, nc/@number
+// HSMWorks / Fusion .hsmlib tool libraries (FORMATS.md): XML, usually UTF-16 with a byte-order mark, decoded
+// and checked against the reader's bounds by XmlText first. Only tool/@unit, @type, description, nc/@number
 // and @length-offset (for a note), body/@diameter, @flute-length, @overall-length are read; motion, coolant
 // and the holder are not offsets.
+#include <memory>
+
 #include <QCoreApplication>
 #include <QHash>
 #include <QXmlStreamReader>
 
 #include "model/camimport/camreaders.h"
+#include "model/camimport/xmltext.h"
 #include "model/textparsing.h"
 #include "model/translate.h"
 
@@ -25,8 +28,8 @@ class HsmReader
     Q_DECLARE_TR_FUNCTIONS(Toffee::HsmReader)
 
 public:
-    explicit HsmReader(QByteArrayView xml)
-        : m_xml(QByteArray::fromRawData(xml.data(), xml.size()))
+    explicit HsmReader(std::unique_ptr<QXmlStreamReader> reader)
+        : m_reader(std::move(reader))
     { }
 
     Result<QList<CamTool>> read()
@@ -169,7 +172,8 @@ private:
         return out.has_value();
     }
 
-    QXmlStreamReader m_xml;
+    std::unique_ptr<QXmlStreamReader> m_reader;
+    QXmlStreamReader &m_xml = *m_reader;
     QString m_why;
     bool m_hasNumber = false;
 };
@@ -178,7 +182,10 @@ private:
 
 Result<QList<CamTool>> readHsmLibrary(QByteArrayView xml)
 {
-    return HsmReader(xml).read();
+    auto text = XmlText::read(xml);
+    if (!text)
+        return text.error();
+    return HsmReader(std::move(text.value()).reader()).read();
 }
 
 } // namespace Toffee
