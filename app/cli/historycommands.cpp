@@ -138,16 +138,21 @@ int showHistory(Invocation &call)
     auto library = openLibraryOption(call);
     if (!library)
         return fail(call, library.error().message, BadInput);
-    const auto events = library.value()->history(query.value());
+    QStringList unreadable;
+    const auto events = library.value()->history(query.value(), &unreadable);
     if (!events)
         return fail(call, events.error().message, MachineError);
+    // Rows another program or a hand wrote wrong are named, not printed as if they were measurements.
+    for (const QString &row : std::as_const(unreadable))
+        call.err << "toffee-cli: left out of the history, as it is not a measurement Toffee wrote: " << row
+                 << Qt::endl;
     if (call.json) {
         QJsonArray list;
         for (const HistoryEvent &e : events.value())
             list.append(eventJson(e));
         printJson(call,
-            QJsonObject {
-                { u"library"_s, library.value()->location().displayName() }, { u"events"_s, list } });
+            QJsonObject { { u"library"_s, library.value()->location().displayName() }, { u"events"_s, list },
+                { u"unreadable"_s, QJsonArray::fromStringList(unreadable) } });
     } else if (call.has(u"csv"_s)) {
         call.out << QString::fromUtf8(eventsAsCsv(events.value()));
         call.out.flush();

@@ -22,9 +22,15 @@ int listTables(Invocation &call, Library &library)
         return fail(call, machines.error().message, MachineError);
     QJsonArray list;
     for (const QString &machine : machines.value()) {
+        // A table that cannot be read is listed as such; the machines after it are still listed.
         auto table = library.readTable(machine);
-        if (!table)
-            return fail(call, table.error().message, MachineError);
+        if (!table) {
+            list.append(QJsonObject { { u"machine"_s, machine }, { u"error"_s, table.error().message } });
+            call.err << "toffee-cli: " << table.error().message << Qt::endl;
+            if (!call.json)
+                call.out << machine << ": cannot be read (see above)\n";
+            continue;
+        }
         const qsizetype tools = table.value().table().size();
         list.append(QJsonObject { { u"machine"_s, machine }, { u"tools"_s, tools },
             { u"units"_s, unitsSymbol(table.value().units) } });

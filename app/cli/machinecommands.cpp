@@ -11,8 +11,10 @@
 #include <QTimer>
 
 #include "app/cli/cli.h"
+#include "app/cli/interrupt.h"
 #include "app/cli/machineoptions.h"
 #include "model/formats/tablefile.h"
+#include "model/library/spool.h"
 #include "model/library/weartrend.h"
 #include "model/limits.h"
 #include "model/numberformat.h"
@@ -56,7 +58,8 @@ QJsonArray axes(const std::array<double, 3> &a)
     return { a[0], a[1], a[2] };
 }
 
-void printTlo(Invocation &call, const SessionResult &r, const QString &trendWarning = {})
+void printTlo(
+    Invocation &call, const SessionResult &r, const QString &trendWarning = {}, const QString &history = {})
 {
     const int tool = r.tool.value_or(-1);
     // The stock firmware reports the TLO alone, not the MCS Zs it comes from.
@@ -68,6 +71,8 @@ void printTlo(Invocation &call, const SessionResult &r, const QString &trendWarn
             { u"tlo"_s, r.tlo->tlo() } };
         if (!trendWarning.isEmpty())
             o.insert(u"trend_warning"_s, trendWarning);
+        if (!history.isEmpty())
+            o.insert(u"history"_s, history);
         printJson(call, o);
         return;
     }
@@ -185,7 +190,8 @@ private:
     // `reported`: the command printed the failure itself (a rack's summary holds it).
     void finishWith(const SessionResult &r, bool reported = false);
     [[nodiscard]] bool record(const SessionResult &r);
-    void recordHistory(const SessionResult &r);
+    [[nodiscard]] bool recordTable(const SessionResult &r);
+    void recordHistory(const HistoryEvent &event, const Result<QString> &kept);
     // A result printed by `print` when the operation got that far (a broken tool's verdict included).
     [[nodiscard]] Done printed(std::function<void(const SessionResult &)> print);
     // A probe or a manual offset: recorded, then printed.
@@ -198,6 +204,7 @@ private:
     int m_exitCode = Success;
     bool m_started = false;
     QString m_trendWarning; // a probe off its tool's wear trend
+    QString m_history; // what became of the event: recorded, kept (on this computer), not_recorded
     QList<double> m_times; // link-test: each round trip's milliseconds
     QElapsedTimer m_clock;
     bool m_recordFailed = false; // then the exit code says so (unless the tool is broken, which says more)
@@ -212,35 +219,59 @@ void MachineRun::finishWith(const SessionResult &r, bool reported)
     m_loop.quit();
 }
 
-// Every recording goes into the history library, table or not; a probe is checked against its tool's trend.
-void MachineRun::recordHistory(const SessionResult &r)
+// What a successful probe, a manual offset or a break test means for the table, saved at once, and for the
+// history library, table or not. The event is kept on this computer before the library is asked: a library
+// that is busy, locked, damaged or out of reach leaves it there, to be sent the next time the library opens.
+// Ctrl-C or SIGTERM waits until the table is saved and the event kept, not for the library.
+bool MachineRun::record(const SessionResult &r)
 {
-    if (!m_options.library || !r.recording)
-        return;
-    const HistoryEvent event = historyEvent(*r.recording, m_options.machine);
-    if (auto written = m_options.library->append({ event }); !written) {
-        m_call.err << "toffee-cli: T" << event.tool << "'s " << eventKindName(event.kind)
-                   << " is not in the history library: " << written.error().message << Qt::endl;
-        if (m_options.library->location().isShared()) {
-            const auto kept = keepForLater(*m_options.library, event);
-            m_call.err << "toffee-cli: "
-                       << (kept ? u"it is kept in %1 and written the next time the library answers."_s.arg(
-                               kept.value())
-                                : u"it could not be kept either: %1"_s.arg(kept.error().message))
+    std::optional<HistoryEvent> event;
+    Result<QString> kept = QString();
+    bool saved = false;
+    {
+        const CriticalSection critical;
+        saved = recordTable(r);
+        if (m_options.library && r.recording) {
+            event = historyEvent(*r.recording, m_options.machine);
+            kept = Spool().keep(m_options.library->location(), { *event });
+        }
+    }
+    if (event)
+        recordHistory(*event, kept);
+    return saved;
+}
+
+void MachineRun::recordHistory(const HistoryEvent &event, const Result<QString> &kept)
+{
+    Library &library = *m_options.library;
+    const QString what = u"T%1's %2"_s.arg(event.tool).arg(eventKindName(event.kind).replace(u'_', u' '));
+    if (auto written = library.append({ event }); !written) {
+        m_call.err << "toffee-cli: " << written.error().message << Qt::endl;
+        if (kept) {
+            m_history = u"kept"_s;
+            m_call.err << "toffee-cli: " << what << " is kept on this computer (" << kept.value()
+                       << ") and will be sent the next time toffee-cli or the window opens the library."
                        << Qt::endl;
+        } else {
+            m_history = u"not_recorded"_s;
+            m_call.err << "toffee-cli: " << what << " could not be kept on this computer either ("
+                       << kept.error().message << "): it is not in the history." << Qt::endl;
         }
         return;
     }
-    if (auto warning = checkProbeAgainstTrend(*m_options.library, event, m_options.tolerance)) {
+    m_history = u"recorded"_s;
+    if (kept) {
+        if (auto removed = Spool().remove(kept.value()); !removed)
+            m_call.err << "toffee-cli: " << removed.error().message << Qt::endl;
+    }
+    if (auto warning = checkProbeAgainstTrend(library, event, m_options.tolerance)) {
         m_trendWarning = *warning;
         m_call.err << "toffee-cli: warning: " << *warning << Qt::endl;
     }
 }
 
-// What a successful probe, a manual offset or a break test means for the table, saved at once.
-bool MachineRun::record(const SessionResult &r)
+bool MachineRun::recordTable(const SessionResult &r)
 {
-    recordHistory(r);
     if (!m_options.table)
         return true;
     const int measured = r.tool.value_or(-1);
@@ -294,7 +325,7 @@ MachineRun::Done MachineRun::recorded()
             return finishWith(r);
         }
         if (record(r))
-            printTlo(m_call, r, m_trendWarning);
+            printTlo(m_call, r, m_trendWarning, m_history);
         finishWith(r);
     };
 }

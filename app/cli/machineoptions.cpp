@@ -3,6 +3,7 @@
 #include "app/cli/machineoptions.h"
 
 #include <climits>
+#include <cmath>
 
 #include <QFileInfo>
 
@@ -178,12 +179,25 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
     o.library = library.takeValue();
     // The machine as the library knows it: a Carvera, and how it was reached this time.
     if (o.library) {
+
         const QString connection
             = o.target.emulator ? u"emulator"_s : o.target.port + u' ' + QString::number(o.target.baud);
         if (auto added = o.library->addMachine({ o.machine, u"carvera"_s, connection }); !added)
             return Error { added.error().message + u" Nothing was sent to the machine."_s };
     }
     return {};
+}
+
+// No wait on the library outlasts the command's own limit (--timeout; 5 s when it says none).
+Library::Options libraryOptions(const Invocation &call)
+{
+    Library::Options options;
+    const auto seconds = decimalOption(call, u"timeout"_s);
+    if (seconds && *seconds > 0 && *seconds <= 3600) {
+        options.busyTimeoutMs = std::max(1, int(*seconds * 1000));
+        options.connectTimeoutS = std::max(1, int(std::ceil(*seconds)));
+    }
+    return options;
 }
 
 } // namespace
@@ -196,7 +210,7 @@ Result<std::unique_ptr<Library>> openLibraryOption(const Invocation &call)
                                            : Result<LibraryLocation>(LibraryLocation::standard());
     if (!location)
         return location.error();
-    auto library = Library::open(location.value());
+    auto library = Library::open(location.value(), libraryOptions(call));
     if (library)
         sendWaiting(*library.value(), call.err);
     return library;
@@ -211,7 +225,10 @@ Result<std::unique_ptr<Library>> openExistingLibrary(const Invocation &call)
     const LibraryLocation standard = LibraryLocation::standard();
     if (!QFileInfo::exists(standard.path))
         return std::unique_ptr<Library> {};
-    return Library::open(standard);
+    auto library = Library::open(standard, libraryOptions(call));
+    if (library)
+        sendWaiting(*library.value(), call.err);
+    return library;
 }
 
 std::optional<Dialect> programDialect(const Invocation &call, const Library *library, const QString &machine)

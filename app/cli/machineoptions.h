@@ -54,10 +54,9 @@ bool startRackCommand(Invocation &call, MachineOptions &options, MachineConnecti
 // For commands that only read the history: --library's (which must open), else the standard library when one
 // exists (a check creates no library); nothing with --no-history or when there is none.
 [[nodiscard]] Result<std::unique_ptr<Library>> openExistingLibrary(const Invocation &call);
-// A shared library (sharedoutbox.cpp): what this computer kept for it is sent, and a measurement it could not
-// take is kept (the path of the outbox returned).
+// What this computer kept for the library (its outbox folder, and a shared library's outbox table) is sent
+// (sharedoutbox.cpp), and what happened is said on `err`.
 void sendWaiting(Library &library, QTextStream &err);
-[[nodiscard]] Result<QString> keepForLater(const Library &library, const HistoryEvent &event);
 
 // The machine's dialect as the library knows it, unless --dialect says otherwise; the Carvera by default.
 // Nothing when --dialect names no dialect.

@@ -2,6 +2,9 @@
 // Reading and writing a library: machines, events, tool use.
 #include "model/library/library.h"
 
+#include "model/library/rowreader.h"
+#include "model/limits.h"
+
 #include <QAtomicInt>
 #include <QDir>
 #include <QFile>
@@ -26,26 +29,17 @@ QString timeText(const QDateTime &at)
     return at.toUTC().toString(Qt::ISODateWithMs);
 }
 
-QDateTime timeFrom(const QVariant &text)
-{
-    QDateTime at = QDateTime::fromString(text.toString(), Qt::ISODateWithMs);
-    return at.toUTC();
-}
-
 QVariant nullable(std::optional<double> value)
 {
     return value ? QVariant(*value) : QVariant(QMetaType::fromType<double>());
-}
-
-std::optional<double> optionalDouble(const QVariant &value)
-{
-    return value.isNull() ? std::nullopt : std::optional(value.toDouble());
 }
 
 } // namespace
 
 Result<void> Library::addMachine(const MachineRecord &machine)
 {
+    if (auto writable = checkWritable(); !writable)
+        return writable;
     QSqlQuery query(database());
     query.prepare(u"INSERT INTO machines (name, dialect, connection) VALUES (?, ?, ?) ON CONFLICT (name) DO "
                   "UPDATE SET dialect = excluded.dialect, connection = excluded.connection"_s);
@@ -171,7 +165,7 @@ Result<int> Library::appendUse(const QList<ToolUse> &uses)
         [](const QList<qsizetype> &) { return Result<void>(); });
 }
 
-Result<QList<HistoryEvent>> Library::history(const HistoryQuery &q) const
+Result<QList<HistoryEvent>> Library::history(const HistoryQuery &q, QStringList *unreadable) const
 {
     QStringList where;
     QVariantList values;
@@ -211,21 +205,17 @@ Result<QList<HistoryEvent>> Library::history(const HistoryQuery &q) const
         return failure(tr("Reading the history"), query);
     QList<HistoryEvent> out;
     while (query.next()) {
-        HistoryEvent e;
-        e.id = query.value(0).toString();
-        e.machine = query.value(1).toString();
-        e.tool = query.value(2).toInt();
-        e.at = timeFrom(query.value(3));
-        e.kind = eventKindFromName(query.value(4).toString()).value_or(EventKind::Import);
-        e.tlo = optionalDouble(query.value(5));
-        e.referenceMz = optionalDouble(query.value(6));
-        e.currentMz = optionalDouble(query.value(7));
-        e.tolerance = optionalDouble(query.value(8));
-        e.oldTlo = optionalDouble(query.value(9));
-        e.newTlo = optionalDouble(query.value(10));
-        if (!query.value(11).isNull())
-            e.failed = query.value(11).toInt() != 0;
-        out.append(std::move(e));
+        QVariantList row;
+        for (int i = 0; i < RowReader::kEventColumns; ++i)
+            row.append(query.value(i));
+        auto e = RowReader::event(row);
+        if (!e) {
+            // One row written wrong (by another program, by hand) is named and left out; the rest is read.
+            if (unreadable && unreadable->size() < kMaxUnreadableNamed)
+                unreadable->append(e.error().message);
+            continue;
+        }
+        out.append(e.takeValue());
     }
     if (q.limit > 0)
         std::reverse(out.begin(), out.end());
@@ -249,10 +239,13 @@ Result<QList<ToolUse>> Library::uses(const QString &machine, std::optional<int> 
     if (!query.exec())
         return failure(tr("Reading the tools' use"), query);
     QList<ToolUse> out;
-    while (query.next())
-        out.append({ query.value(0).toString(), query.value(1).toString(), query.value(2).toInt(),
-            timeFrom(query.value(3)), query.value(4).toString(), query.value(5).toDouble(),
-            query.value(6).toDouble() });
+    while (query.next()) {
+        QVariantList row;
+        for (int i = 0; i < 7; ++i)
+            row.append(query.value(i));
+        if (auto use = RowReader::use(row))
+            out.append(use.takeValue());
+    }
     return out;
 }
 
@@ -260,13 +253,22 @@ Result<QHash<int, double>> Library::cuttingTotals(const QString &machine) const
 {
     QSqlQuery query(database());
     query.setForwardOnly(true);
-    query.prepare(u"SELECT tool, SUM(cutting_seconds) FROM tool_use WHERE machine = ? GROUP BY tool"_s);
+    // Only times a program could take (text, infinities and NaN sort above 1e9 in both databases).
+    query.prepare(
+        u"SELECT tool, SUM(cutting_seconds) FROM tool_use WHERE machine = ? AND cutting_seconds >= 0 "
+        "AND cutting_seconds <= 1e9 GROUP BY tool"_s);
     query.addBindValue(machine);
     if (!query.exec())
         return failure(tr("Reading the tools' use"), query);
     QHash<int, double> out;
-    while (query.next())
-        out.insert(query.value(0).toInt(), query.value(1).toDouble());
+    while (query.next()) {
+        // A sum over rows someone else wrote: a tool or a total that is not one is left out.
+        const auto tool = RowReader::wholeNumber(query.value(0));
+        const auto seconds = RowReader::finiteNumber(query.value(1));
+        if (tool && *tool >= Limits::kMinToolNumber && *tool <= Limits::kMaxToolNumber && seconds
+            && *seconds >= 0)
+            out.insert(int(*tool), *seconds);
+    }
     return out;
 }
 

@@ -16,6 +16,7 @@
 
 class QSqlDatabase;
 class QSqlDriver;
+class QSqlError;
 class QSqlQuery;
 
 namespace Toffee {
@@ -37,7 +38,13 @@ public:
     static constexpr QLatin1StringView kChannel { "toffee_library" };
     struct Options
     {
-        int busyTimeoutMs = 5000; // SQLite: how long a write waits for another program's to finish
+        // How long a statement may wait for another program's lock or run: SQLite's busy timeout, and
+        // PostgreSQL's lock_timeout and statement_timeout. An operation's own limit (toffee-cli --timeout,
+        // the window's) bounds it; setWaitLimit() changes it on an open library.
+        int busyTimeoutMs = 5000;
+        // PostgreSQL's statement_timeout when it is to be longer than the lock wait (the window reads its
+        // history for longer than it waits for a lock); 0: busyTimeoutMs.
+        int statementTimeoutMs = 0;
         int connectTimeoutS = 5; // PostgreSQL: how long to wait for the server
         int oldestServerVersion = 0; // PostgreSQL: raises the oldest server taken (as server_version_num)
         QString station = {}; // who writes, for updated_by: the computer's name when empty
@@ -54,6 +61,9 @@ public:
     // The file cannot be written, or the server's role has only read rights: every write is refused.
     [[nodiscard]] bool isReadOnly() const { return m_readOnly; }
     [[nodiscard]] QString station() const;
+    // The wait limit of Options::busyTimeoutMs, for what this library does from now on.
+    [[nodiscard]] Result<void> setWaitLimit(int milliseconds);
+    [[nodiscard]] int waitLimitMs() const { return m_options.busyTimeoutMs; }
     // Qt's driver, for its notifications (LibraryWatcher).
     [[nodiscard]] QSqlDriver *driver() const;
     // What the server said when it could not be reached, made into what to fix.
@@ -62,6 +72,9 @@ public:
     // station works offline meanwhile). Any other needs the URL, the password file or the server fixed.
     static constexpr QLatin1StringView kUnreachable { "library-unreachable" };
     [[nodiscard]] static bool isUnreachable(const QString &why);
+    // Error::code of a write or read that waited its whole limit for another station's or program's lock:
+    // what the library could not take now is kept on this computer and sent later.
+    static constexpr QLatin1StringView kBusy { "library-busy" };
     // True when the last failure was the connection itself (the server gone), not the statement.
     [[nodiscard]] bool isConnectionLost() const;
 
@@ -74,8 +87,11 @@ public:
     // many were new.
     [[nodiscard]] Result<int> append(const QList<HistoryEvent> &events);
     [[nodiscard]] Result<int> appendUse(const QList<ToolUse> &uses);
-    // Oldest first.
-    [[nodiscard]] Result<QList<HistoryEvent>> history(const HistoryQuery &query) const;
+    // Oldest first. A row that is not an event Toffee would write (another program's, a hand's) is left out
+    // and, with `unreadable`, named there (the first kMaxUnreadableNamed).
+    [[nodiscard]] Result<QList<HistoryEvent>> history(
+        const HistoryQuery &query, QStringList *unreadable = nullptr) const;
+    static constexpr qsizetype kMaxUnreadableNamed = 20;
     [[nodiscard]] Result<QList<ToolUse>> uses(const QString &machine, std::optional<int> tool) const;
     // Each tool's total cutting time on the machine, in seconds.
     [[nodiscard]] Result<QHash<int, double>> cuttingTotals(const QString &machine) const;
@@ -102,6 +118,7 @@ private:
     [[nodiscard]] Result<void> checkNotNewer(int version) const;
     [[nodiscard]] Result<void> migrate();
     [[nodiscard]] Result<void> begin();
+    [[nodiscard]] Result<void> applyWaitLimit(bool local);
     // A transaction that writes: refused first when the library is read-only.
     [[nodiscard]] Result<void> beginWrite();
     [[nodiscard]] Result<void> commit();
@@ -114,7 +131,13 @@ private:
     [[nodiscard]] Result<bool> putRow(
         const QString &machine, Units units, const ToolWrite &write, qint64 currentVersion, bool exists);
     [[nodiscard]] Result<int> schemaVersion() const;
+    // Every table and column this Toffee reads and writes is there.
+    [[nodiscard]] Result<void> checkTables() const;
+    [[nodiscard]] Error damaged(const QString &why) const;
     [[nodiscard]] Error failure(const QString &what, const QSqlQuery &query) const;
+    [[nodiscard]] Error failure(const QString &what, const QSqlError &error) const;
+    // The read-only refusal, for a library already known to be read-only or found so by a refused write.
+    [[nodiscard]] Result<void> checkWritableFor(bool readOnly) const;
     [[nodiscard]] Result<void> ensureMachines(const QStringList &names);
     // Rows that are new (not already there by id) are passed to `after`, in the same transaction.
     [[nodiscard]] Result<int> insertAll(const QString &sql, const QStringList &machines, qsizetype count,

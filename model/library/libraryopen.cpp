@@ -171,7 +171,44 @@ QSqlDatabase Library::database() const
 
 Error Library::failure(const QString &what, const QSqlQuery &query) const
 {
-    return Error { tr("%1: %2 failed: %3").arg(m_location.displayName(), what, query.lastError().text()) };
+    return failure(what, query.lastError());
+}
+
+// What a failed statement means, in Toffee's words first; the driver's own text follows for whoever runs the
+// database, and never stands alone.
+Error Library::failure(const QString &what, const QSqlError &error) const
+{
+    const QString code = error.nativeErrorCode();
+    const QString text = error.text().trimmed();
+    const bool shared = m_location.isShared();
+    // SQLite: SQLITE_BUSY, SQLITE_LOCKED. PostgreSQL: lock_timeout, statement_timeout, a deadlock given up.
+    const bool busy = shared ? (code == u"55P03"_s || code == u"57014"_s || code == u"40P01"_s)
+                             : (code == u"5"_s || code == u"6"_s || text.contains(u"database is locked"_s));
+    if (busy) {
+        Error e { tr("The library (%1) was busy: another station or program held what Toffee needed (%2) for "
+                     "more than %3 s, Toffee's limit.")
+                      .arg(m_location.displayName(), what.toLower(),
+                          QString::number(double(m_options.busyTimeoutMs) / 1000.0, 'g', 3)) };
+        e.code = QString(kBusy);
+        return e;
+    }
+    if (shared && code == u"42501"_s && m_location.isShared())
+        return checkWritableFor(true).error();
+    const bool schemaGone = shared
+        ? (code == u"42P01"_s || code == u"42703"_s)
+        : (text.contains(u"no such table"_s) || text.contains(u"no such column"_s)
+            || text.contains(u"has no column named"_s) || text.contains(u"Parameter count mismatch"_s));
+    if (schemaGone) {
+        // SQLite can look now; PostgreSQL's transaction is aborted, so its own words say which.
+        if (!shared) {
+            if (auto checked = checkTables(); !checked)
+                return checked.error();
+        }
+        return damaged(tr("a table or column Toffee needs is missing (%1)").arg(text));
+    }
+    return Error { tr("%1: %2 failed: %3")
+                       .arg(m_location.displayName(), what,
+                           text.isEmpty() ? tr("the database gave no reason") : text) };
 }
 
 } // namespace Toffee

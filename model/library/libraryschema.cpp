@@ -6,7 +6,10 @@
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QSqlRecord>
 #include <QVariant>
+
+#include "model/textparsing.h"
 
 using namespace Qt::StringLiterals;
 
@@ -50,23 +53,46 @@ const QList<QStringList> kMigrations = {
 // PostgreSQL before 14 is past its end of life; ON CONFLICT and pg_notify are older than that.
 constexpr int kOldestServer = 140000;
 
+// Every table of the schema this Toffee writes, with the columns it reads and writes: a library that lacks
+// one was damaged, or altered by another program, and is not written into.
+const QList<std::pair<QString, QStringList>> kTables = {
+    { u"machines"_s, { u"name"_s, u"dialect"_s, u"connection"_s } },
+    { u"events"_s,
+        { u"id"_s, u"machine"_s, u"tool"_s, u"measured_at"_s, u"kind"_s, u"tlo"_s, u"reference_mz"_s,
+            u"current_mz"_s, u"tolerance"_s, u"old_tlo"_s, u"new_tlo"_s, u"failed"_s } },
+    { u"tool_use"_s,
+        { u"id"_s, u"machine"_s, u"tool"_s, u"recorded_at"_s, u"program"_s, u"cutting_seconds"_s,
+            u"feed_path_mm"_s } },
+    { u"machine_tables"_s, { u"machine"_s, u"units"_s, u"created_at"_s } },
+    { u"tools"_s,
+        { u"machine"_s, u"number"_s, u"version"_s, u"deleted"_s, u"data"_s, u"tlo"_s, u"updated_at"_s,
+            u"updated_by"_s } },
+    { u"outbox"_s, { u"id"_s, u"library"_s, u"kind"_s, u"payload"_s, u"created_at"_s } },
+};
+
+// No Toffee will write a schema version anywhere near this: a larger one is damage, not the future.
+constexpr qint64 kLargestPlausibleVersion = 1000;
+
 } // namespace
 
 Result<void> Library::begin()
 {
     QSqlDatabase db = database();
+    QSqlQuery query(db);
     // SQLite's IMMEDIATE takes the write lock at once: a read then a write in one transaction is then never
     // refused for another writer's commit in between.
     if (!m_location.isShared()) {
-        QSqlQuery query(db);
         if (query.exec(u"BEGIN IMMEDIATE"_s))
             return {};
-        return Error {
-            tr("%1 cannot be written: %2").arg(m_location.displayName(), query.lastError().text())
-        };
+        return failure(tr("Starting a write"), query);
     }
     if (!db.transaction())
-        return Error { tr("%1 cannot be written: %2").arg(m_location.displayName(), db.lastError().text()) };
+        return failure(tr("Starting a write"), db.lastError());
+    // The limits again for this transaction alone, whatever the session was set to meanwhile.
+    if (auto limited = applyWaitLimit(true); !limited) {
+        db.rollback();
+        return limited;
+    }
     return {};
 }
 
@@ -77,14 +103,42 @@ Result<void> Library::beginWrite()
     return begin();
 }
 
+Result<void> Library::setWaitLimit(int milliseconds)
+{
+    m_options.busyTimeoutMs = std::max(1, milliseconds);
+    return applyWaitLimit(false);
+}
+
+// SQLite waits for a lock at most its busy timeout; PostgreSQL at most lock_timeout for a lock and
+// statement_timeout for a statement, for the session or (`local`) the transaction.
+Result<void> Library::applyWaitLimit(bool local)
+{
+    QSqlQuery query(database());
+    if (!m_location.isShared()) {
+        if (!query.exec(u"PRAGMA busy_timeout = "_s + QString::number(m_options.busyTimeoutMs)))
+            return failure(tr("Setting how long to wait"), query);
+        return {};
+    }
+    const int statementMs
+        = m_options.statementTimeoutMs > 0 ? m_options.statementTimeoutMs : m_options.busyTimeoutMs;
+    query.prepare(u"SELECT set_config('lock_timeout', ?, ?), set_config('statement_timeout', ?, ?)"_s);
+    query.addBindValue(QString(QString::number(m_options.busyTimeoutMs) + u"ms"_s));
+    query.addBindValue(local);
+    query.addBindValue(QString(QString::number(statementMs) + u"ms"_s));
+    query.addBindValue(local);
+    if (!query.exec())
+        return failure(tr("Setting how long to wait"), query);
+    return {};
+}
+
 Result<void> Library::commit()
 {
     QSqlDatabase db = database();
     if (db.commit())
         return {};
-    const QString why = db.lastError().text();
+    const QSqlError error = db.lastError();
     db.rollback();
-    return Error { tr("%1 cannot be written: %2").arg(m_location.displayName(), why) };
+    return failure(tr("Writing"), error);
 }
 
 void Library::rollback()
@@ -117,11 +171,19 @@ Result<void> Library::prepareSqlite()
         return failure(tr("Reading the library"), query);
     const QFileInfo info(m_location.path);
     m_readOnly = info.exists() && !info.isWritable();
-    return m_readOnly && version.value() == kSchemaVersion ? Result<void>() : migrate();
+    // A library that is up to date is only read here: opening it to read the history takes no write lock,
+    // so another program's long write does not make a reader fail.
+    if (version.value() != kSchemaVersion) {
+        if (auto migrated = migrate(); !migrated)
+            return migrated;
+    }
+    return checkTables();
 }
 
 Result<void> Library::preparePostgres()
 {
+    if (auto limited = applyWaitLimit(false); !limited)
+        return limited;
     QSqlQuery query(database());
     if (!query.exec(
             u"SELECT current_setting('server_version_num')::integer, current_setting('server_version')"_s)
@@ -146,9 +208,34 @@ Result<void> Library::preparePostgres()
             || !query.next())
             return failure(tr("Reading your rights in the library"), query);
         m_readOnly = !query.value(0).toBool();
-        return {};
+        return checkTables();
     }
-    return migrate();
+    if (auto migrated = migrate(); !migrated)
+        return migrated;
+    return checkTables();
+}
+
+Error Library::damaged(const QString &why) const
+{
+    return Error { tr("%1 is damaged: %2. Toffee leaves it as it is and writes nothing into it: restore it "
+                      "from a backup (docs/LIBRARY.md), or choose another library.")
+                       .arg(m_location.displayName(), why) };
+}
+
+Result<void> Library::checkTables() const
+{
+    const QSqlDatabase db = database();
+    for (const auto &[table, columns] : kTables) {
+        const QSqlRecord record = db.record(table);
+        if (record.isEmpty())
+            return damaged(tr("its table \"%1\" is missing").arg(table));
+        for (const QString &column : columns) {
+            if (record.indexOf(column) < 0)
+                return damaged(
+                    tr("its table \"%1\" was altered: it has no column \"%2\"").arg(table, column));
+        }
+    }
+    return {};
 }
 
 Result<void> Library::checkNotNewer(int version) const
@@ -173,9 +260,21 @@ Result<int> Library::schemaVersion() const
         return 0;
     }
     QSqlQuery query(database());
-    if (!query.exec(u"SELECT version FROM toffee_schema"_s) || !query.next())
+    if (!query.exec(u"SELECT version FROM toffee_schema"_s))
         return failure(tr("Reading the library's version"), query);
-    return query.value(0).toInt();
+    if (!query.next())
+        return damaged(
+            tr("its version table (toffee_schema) is empty, so it cannot say which Toffee wrote it"));
+    const QVariant value = query.value(0);
+    if (query.next())
+        return damaged(tr("its version table (toffee_schema) holds more than one version"));
+    // A version is a whole number Toffee wrote: 2.5, text, a negative number or one no Toffee reaches is
+    // damage, never rounded into a version.
+    const auto version = value.isNull() ? std::nullopt : parseInteger(value.toString().toUtf8());
+    if (!version || *version < 0 || *version > kLargestPlausibleVersion)
+        return damaged(tr("its schema version is \"%1\", which is not a version any Toffee writes")
+                           .arg(excerpt(value.isNull() ? u"NULL"_s : value.toString())));
+    return int(*version);
 }
 
 Result<void> Library::migrate()

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Machine tables in the library: read, created, written tool by tool against each row's version, and kept up
 // to date by every new measurement event.
+#include <climits>
+
 #include <QMap>
 #include <QSqlDatabase>
 #include <QSqlError>
@@ -9,6 +11,7 @@
 #include <QVariant>
 
 #include "model/library/library.h"
+#include "model/library/rowreader.h"
 
 using namespace Qt::StringLiterals;
 
@@ -19,6 +22,17 @@ namespace {
 QString timeText(const QDateTime &at)
 {
     return at.toUTC().toString(Qt::ISODateWithMs);
+}
+
+// The columns RowReader::ToolRow reads, the data only when it is not longer than the bound bound to the first
+// "?" (a row of 100 MB is never fetched), and its length.
+const QString kToolRowColumns = u"number, version, deleted, CASE WHEN length(data) <= ? THEN data END, "
+                                "length(data), updated_by, updated_at"_s;
+
+RowReader::ToolRow toolRow(const QSqlQuery &query, int first)
+{
+    return { query.value(first), query.value(first + 1), query.value(first + 2), query.value(first + 3),
+        query.value(first + 4), query.value(first + 5), query.value(first + 6) };
 }
 
 QVariant tloOf(const std::optional<Tool> &tool)
@@ -46,7 +60,12 @@ bool Library::isConnectionLost() const
 
 Result<void> Library::checkWritable() const
 {
-    if (!m_readOnly)
+    return checkWritableFor(m_readOnly);
+}
+
+Result<void> Library::checkWritableFor(bool readOnly) const
+{
+    if (!readOnly)
         return {};
     return Error { m_location.isShared()
             ? tr("The library (%1) is read-only for %2: this role may read the tools but not change them. "
@@ -92,7 +111,13 @@ Result<std::optional<Units>> Library::tableUnits(const QString &machine) const
         return failure(tr("Reading %1's table").arg(machine), query);
     if (!query.next())
         return std::optional<Units>();
-    return unitsFromSymbol(query.value(0).toString());
+    const auto units = query.value(0).isNull() ? std::nullopt : unitsFromSymbol(query.value(0).toString());
+    if (!units)
+        return Error { tr(
+            "%1: %2's table says its units are %3, neither mm nor in; it was written by another "
+            "program or by hand, and is not opened.")
+                           .arg(m_location.displayName(), machine, RowReader::shown(query.value(0))) };
+    return std::optional(*units);
 }
 
 Result<StoredTable> Library::readTable(const QString &machine) const
@@ -105,25 +130,35 @@ Result<StoredTable> Library::readTable(const QString &machine) const
     StoredTable out { machine, *units.value(), {} };
     QSqlQuery query(database());
     query.setForwardOnly(true);
-    query.prepare(
-        u"SELECT number, version, deleted, data, updated_by, updated_at FROM tools WHERE machine = ? "
-        "ORDER BY number"_s);
+    query.prepare(u"SELECT "_s + kToolRowColumns + u" FROM tools WHERE machine = ? ORDER BY number"_s);
+    query.addBindValue(RowReader::kMaxToolDataChars);
     query.addBindValue(machine);
     if (!query.exec())
         return failure(tr("Reading %1's table").arg(machine), query);
+    // Every row is read and checked: a table with one wrong row is not opened, and the message names each
+    // wrong row, not only the first.
+    QStringList unreadable;
+    qsizetype moreUnreadable = 0;
     while (query.next()) {
-        StoredTool row { query.value(0).toInt(), std::nullopt, query.value(1).toLongLong(),
-            query.value(4).toString(), QDateTime::fromString(query.value(5).toString(), Qt::ISODateWithMs) };
-        if (query.value(2).toInt() == 0) {
-            auto tool = toolFromData(query.value(3).toByteArray(), out.units);
-            if (!tool)
-                return Error { tr("%1: T%2 of %3's table cannot be read: %4")
-                                   .arg(m_location.displayName())
-                                   .arg(row.number)
-                                   .arg(machine, tool.error().message) };
-            row.tool = tool.value();
+        auto row = RowReader::tool(toolRow(query, 0), out.units);
+        if (!row) {
+            if (unreadable.size() < kMaxUnreadableNamed)
+                unreadable << row.error().message;
+            else
+                ++moreUnreadable;
+            continue;
         }
-        out.rows.append(std::move(row));
+        out.rows.append(row.takeValue());
+    }
+    if (!unreadable.isEmpty()) {
+        QString list = unreadable.join(u"; "_s);
+        if (moreUnreadable > 0)
+            list += u"; "_s + tr("and %n more", nullptr, int(std::min<qsizetype>(moreUnreadable, INT_MAX)));
+        return Error { tr("%1: %2's table has rows Toffee cannot read, so it is not opened and nothing was "
+                          "written: %3. They were written by another program or by hand; put the table back "
+                          "from a backup, or have whoever changed them correct them (docs/LIBRARY.md).")
+                           .arg(m_location.displayName(), machine, list),
+            0 };
     }
     return out;
 }
@@ -136,24 +171,25 @@ Result<std::optional<StoredTool>> Library::readRow(const QString &machine, int n
     // tool at full speed could keep overtaking each other). SQLite's IMMEDIATE transaction already excludes
     // every other writer.
     const QString lock = m_location.isShared() ? u" FOR UPDATE OF tools"_s : QString();
-    query.prepare(u"SELECT version, deleted, data, updated_by, units FROM tools JOIN machine_tables USING "
-                  "(machine) WHERE machine = ? AND number = ?"_s
+    query.prepare(u"SELECT "_s + kToolRowColumns
+        + u", units FROM tools JOIN machine_tables USING (machine) WHERE machine = ? AND number = ?"_s
         + lock);
+    query.addBindValue(RowReader::kMaxToolDataChars);
     query.addBindValue(machine);
     query.addBindValue(number);
     if (!query.exec())
         return failure(tr("Reading T%1 of %2").arg(number).arg(machine), query);
     if (!query.next())
         return std::optional<StoredTool>();
-    StoredTool row { number, std::nullopt, query.value(0).toLongLong(), query.value(3).toString(), {} };
-    if (query.value(1).toInt() == 0) {
-        auto tool = toolFromData(query.value(2).toByteArray(),
-            unitsFromSymbol(query.value(4).toString()).value_or(Units::Millimetre));
-        if (!tool)
-            return tool.error();
-        row.tool = tool.value();
-    }
-    return std::optional(row);
+    const auto units = unitsFromSymbol(query.value(7).toString());
+    if (!units)
+        return Error { tr("%1: %2's table has units %3, neither mm nor in.")
+                           .arg(m_location.displayName(), machine, RowReader::shown(query.value(7))) };
+    auto row = RowReader::tool(toolRow(query, 0), *units);
+    if (!row)
+        return Error { tr("%1: %2's %3. Nothing was written to it.")
+                           .arg(m_location.displayName(), machine, row.error().message) };
+    return std::optional(row.takeValue());
 }
 
 // True when the row was written; false when another station's write got there first.

@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/library/outboxpayload.h"
 
+#include <cmath>
+
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+
+#include "model/formats/jsonscanner.h"
+#include "model/library/rowreader.h"
 
 using namespace Qt::StringLiterals;
 
@@ -46,19 +51,27 @@ QByteArray eventsPayload(const QList<HistoryEvent> &events)
 
 Result<QList<HistoryEvent>> eventsFromPayload(const QByteArray &payload)
 {
+    if (!hasNoDuplicateKeys(payload))
+        return unreadable();
     const QJsonDocument doc = QJsonDocument::fromJson(payload);
     if (!doc.isArray())
         return unreadable();
+    return eventsFromJson(doc.array());
+}
+
+Result<QList<HistoryEvent>> eventsFromJson(const QJsonArray &events)
+{
     QList<HistoryEvent> out;
-    for (const QJsonValue &v : doc.array()) {
+    for (const QJsonValue &v : events) {
         const QJsonObject o = v.toObject();
         HistoryEvent e;
         e.id = o.value(u"id"_s).toString();
         e.machine = o.value(u"machine"_s).toString();
-        e.tool = o.value(u"tool"_s).toInt();
+        const double tool = o.value(u"tool"_s).toDouble(-1.5);
+        e.tool = tool == std::floor(tool) && std::fabs(tool) < 2e9 ? int(tool) : -2;
         e.at = QDateTime::fromString(o.value(u"at"_s).toString(), Qt::ISODateWithMs).toUTC();
         const auto kind = eventKindFromName(o.value(u"kind"_s).toString());
-        if (e.id.isEmpty() || e.machine.isEmpty() || !e.at.isValid() || !kind)
+        if (!kind)
             return unreadable();
         e.kind = *kind;
         e.tlo = numberFrom(o.value(u"tlo"_s));
@@ -69,9 +82,20 @@ Result<QList<HistoryEvent>> eventsFromPayload(const QByteArray &payload)
         e.newTlo = numberFrom(o.value(u"new_tlo"_s));
         if (o.value(u"failed"_s).isBool())
             e.failed = o.value(u"failed"_s).toBool();
+        // Held to what Toffee writes, as a row is: an entry altered on the disk is refused, not sent.
+        if (!RowReader::checkEvent(e))
+            return unreadable();
         out.append(std::move(e));
     }
     return out;
+}
+
+bool hasNoDuplicateKeys(QByteArrayView json)
+{
+    // JsonScanner refuses an object with a key twice at any depth; QJsonDocument would keep the last.
+    JsonScanner scanner(json);
+    Scalar whole;
+    return scanner.value(whole) && scanner.atEnd();
 }
 
 QByteArray toolsPayload(const ToolWrites &writes)
@@ -91,6 +115,8 @@ QByteArray toolsPayload(const ToolWrites &writes)
 
 Result<ToolWrites> toolsFromPayload(const QByteArray &payload)
 {
+    if (!hasNoDuplicateKeys(payload))
+        return unreadable();
     const QJsonObject o = QJsonDocument::fromJson(payload).object();
     const auto units = unitsFromSymbol(o.value(u"units"_s).toString());
     if (!units || o.value(u"machine"_s).toString().isEmpty())

@@ -4,6 +4,8 @@
 #include <QByteArray>
 #include <QList>
 
+class QJsonArray;
+
 #include "model/library/historyevent.h"
 #include "model/library/storedtable.h"
 
@@ -13,6 +15,10 @@ namespace Toffee {
 // writes with the versions they were made over. Read back whole or refused.
 [[nodiscard]] QByteArray eventsPayload(const QList<HistoryEvent> &events);
 [[nodiscard]] Result<QList<HistoryEvent>> eventsFromPayload(const QByteArray &payload);
+[[nodiscard]] Result<QList<HistoryEvent>> eventsFromJson(const QJsonArray &events);
+// True when no JSON object in `json` has a key twice (and it is JSON at all): what Toffee reads is refused
+// rather than read as whichever of two values a parser keeps.
+[[nodiscard]] bool hasNoDuplicateKeys(QByteArrayView json);
 
 struct ToolWrites
 {

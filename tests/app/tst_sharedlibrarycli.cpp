@@ -97,13 +97,14 @@ private Q_SLOTS:
         QVERIFY(probe.waitForFinished(30000));
         const QString err = QString::fromUtf8(probe.readAllStandardError());
         QCOMPARE(probe.exitCode(), 0); // the machine measured: the probe itself succeeded
-        QVERIFY2(err.contains(u"is kept in"_s) && err.contains(u"written the next time"_s), qPrintable(err));
+        QVERIFY2(err.contains(u"is kept on this computer"_s) && err.contains(u"will be sent the next time"_s),
+            qPrintable(err));
         QVERIFY2(m_cluster.restart(&error), qPrintable(error));
         for (int i = 0; i < 2; ++i) { // the first sends what waits; the second finds nothing more to send
             const Run run = toffee({ u"history"_s, u"--machine"_s, u"C1"_s, u"--tool"_s, u"1"_s });
             QCOMPARE(run.exitCode, 0);
             QCOMPARE(json(run).value(u"events"_s).toArray().size(), 2); // the earlier probe, and this one
-            QCOMPARE(run.err.contains("sent 1 measurement kept in"), i == 0);
+            QCOMPARE(run.err.contains("sent 1 measurement kept on this computer"), i == 0);
         }
     }
 
