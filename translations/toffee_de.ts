@@ -152,10 +152,6 @@
         <translation>„version“ muss vor „tools“ stehen.</translation>
     </message>
     <message>
-        <source>&quot;tools&quot; appears twice.</source>
-        <translation>„tools“ kommt zweimal vor.</translation>
-    </message>
-    <message>
         <source>&quot;tools&quot; must be a list of tools.</source>
         <translation>„tools“ muss eine Liste von Werkzeugen sein.</translation>
     </message>
@@ -2566,10 +2562,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die Zahl %1 ist zu groß.</translation>
     </message>
     <message>
-        <source>this is not valid JSON for a tool table: nested too deeply.</source>
-        <translation>Das ist kein gültiges JSON für eine Werkzeugtabelle: zu tief verschachtelt.</translation>
-    </message>
-    <message>
         <source>this is not valid JSON: a \u escape needs four hex digits.</source>
         <translation>Das ist kein gültiges JSON: Eine \u-Sequenz braucht vier Hexadezimalziffern.</translation>
     </message>
@@ -2580,6 +2572,22 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>the text &quot;%1&quot; is longer than %2 KB; no field of a tool table holds that much.</source>
         <translation>Der Text „%1“ ist länger als %2 KB; kein Feld einer Werkzeugtabelle fasst so viel.</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears twice at the top level; Toffee will not guess which one is meant.</source>
+        <translation>Der Schlüssel „%1“ kommt auf der obersten Ebene zweimal vor; Toffee rät nicht, welcher gemeint ist.</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears twice in one object; Toffee will not guess which one is meant.</source>
+        <translation>Der Schlüssel „%1“ kommt in einem Objekt zweimal vor; Toffee rät nicht, welcher gemeint ist.</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears twice in &quot;%2&quot;; Toffee will not guess which one is meant.</source>
+        <translation>Der Schlüssel „%1“ kommt in „%2“ zweimal vor; Toffee rät nicht, welcher gemeint ist.</translation>
+    </message>
+    <message>
+        <source>this is not JSON Toffee reads: it is nested too deeply (more than %1 levels).</source>
+        <translation>Das ist kein JSON, das Toffee liest: Es ist zu tief verschachtelt (mehr als %1 Ebenen).</translation>
     </message>
 </context>
 <context>

@@ -152,10 +152,6 @@
         <translation>“version”必须位于“tools”之前。</translation>
     </message>
     <message>
-        <source>&quot;tools&quot; appears twice.</source>
-        <translation>“tools”出现了两次。</translation>
-    </message>
-    <message>
         <source>&quot;tools&quot; must be a list of tools.</source>
         <translation>“tools”必须是刀具列表。</translation>
     </message>
@@ -2566,10 +2562,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>数字 %1 太大。</translation>
     </message>
     <message>
-        <source>this is not valid JSON for a tool table: nested too deeply.</source>
-        <translation>这不是有效的刀具表 JSON：嵌套过深。</translation>
-    </message>
-    <message>
         <source>this is not valid JSON: a \u escape needs four hex digits.</source>
         <translation>这不是有效的 JSON：\u 转义需要四个十六进制数字。</translation>
     </message>
@@ -2580,6 +2572,22 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>the text &quot;%1&quot; is longer than %2 KB; no field of a tool table holds that much.</source>
         <translation>文本“%1”超过 %2 KB；刀具表的任何字段都容纳不了这么多。</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears twice at the top level; Toffee will not guess which one is meant.</source>
+        <translation>键“%1”在最外层出现了两次；Toffee 不会猜测指的是哪一个。</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears twice in one object; Toffee will not guess which one is meant.</source>
+        <translation>键“%1”在同一个对象中出现了两次；Toffee 不会猜测指的是哪一个。</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears twice in &quot;%2&quot;; Toffee will not guess which one is meant.</source>
+        <translation>键“%1”在“%2”中出现了两次；Toffee 不会猜测指的是哪一个。</translation>
+    </message>
+    <message>
+        <source>this is not JSON Toffee reads: it is nested too deeply (more than %1 levels).</source>
+        <translation>这不是 Toffee 可读取的 JSON：嵌套过深（超过 %1 层）。</translation>
     </message>
 </context>
 <context>

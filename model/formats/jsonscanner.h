@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 
 #include <QByteArrayView>
 #include <QCoreApplication>
+#include <QSet>
 #include <QString>
 
 #include "model/result.h"
@@ -13,35 +16,49 @@
 
 namespace Toffee {
 
-// A JSON value that is not an object or array (those are parsed and kept as "Composite").
+// A JSON value as read: a scalar with its value, or a list or an object, read through (every key and value in
+// it checked) but not kept.
 struct Scalar
 {
-    enum Kind { Null, Bool, Number, String, Composite } kind = Null;
+    enum Kind { Null, Bool, Number, String, List, Object } kind = Null;
     double number = 0.0;
     QString string;
 };
 
+// The keys of one object read so far (JsonScanner::keyOnce).
+using JsonKeys = QSet<QByteArray>;
+
 // A strict streaming JSON reader (RFC 8259) that knows the line of everything it reads: errors name the
-// line of the value at fault, and no document tree is built.
+// line of the value at fault, and no document tree is built. A key given twice in any object it reads or
+// reads through is refused: RFC 8259 leaves its meaning open, and a reader that took the first or the last
+// would guess.
 class JsonScanner
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::JsonScanner)
 
 public:
+    // No file Toffee reads nests deeper (a Fusion library: 6 levels); each level costs a little stack.
+    static constexpr int kMaxDepth = 64;
+
     explicit JsonScanner(QByteArrayView data)
         : m_p(data.data())
         , m_end(data.data() + data.size())
+        , m_lineStart(data.data())
     { }
 
     int line() const { return m_line; }
     bool failed() const { return m_failed; }
     const Error &error() const { return m_error; }
+    // The column of the error on its line, in characters (UTF-16 code units, as an editor counts them).
+    int errorColumn() const { return m_errorColumn; }
 
-    bool fail(const QString &message)
+    bool fail(const QString &message) { return failAt(m_p, message); }
+    bool failAt(const char *at, const QString &message)
     {
         if (!m_failed) {
             m_failed = true;
             m_error = Error { message, m_line };
+            m_errorColumn = columnOf(at);
         }
         return false;
     }
@@ -54,10 +71,12 @@ public:
     {
         while (m_p < m_end) {
             const char c = *m_p;
-            if (c == '\n')
+            if (c == '\n') {
                 ++m_line;
-            else if (c != ' ' && c != '\t' && c != '\r')
+                m_lineStart = m_p + 1;
+            } else if (c != ' ' && c != '\t' && c != '\r') {
                 return;
+            }
             ++m_p;
         }
     }
@@ -85,6 +104,7 @@ public:
     {
         if (peek() != '"')
             return syntax("a key in double quotes");
+        m_keyAt = m_p;
         const char *start = m_p + 1;
         const char *q = start;
         while (q < m_end && *q != '"' && *q != '\\' && uchar(*q) >= 0x20 && uchar(*q) < 0x80)
@@ -99,6 +119,27 @@ public:
         m_keyBuffer = decoded.toUtf8();
         raw = m_keyBuffer;
         return true;
+    }
+
+    // Whether `key`, just read by key(), is new among `keys`, the keys read so far of the object at `depth`
+    // (0: the top level), which is the value of `container` (or of none). Each key is hashed once: linear.
+    bool keyOnce(JsonKeys &keys, QByteArrayView key, int depth, QByteArrayView container = {})
+    {
+        const qsizetype before = keys.size();
+        keys.insert(key.toByteArray());
+        if (keys.size() > before)
+            return true;
+        const QString name = excerpt(key);
+        return failAt(m_keyAt,
+            depth == 0
+                ? tr("the key \"%1\" appears twice at the top level; Toffee will not guess which one is "
+                     "meant.")
+                      .arg(name)
+                : container.isEmpty()
+                ? tr("the key \"%1\" appears twice in one object; Toffee will not guess which one is meant.")
+                      .arg(name)
+                : tr("the key \"%1\" appears twice in \"%2\"; Toffee will not guess which one is meant.")
+                      .arg(name, excerpt(container)));
     }
 
     // No field of a tool table holds more (notes: 10,000 characters): a longer text is refused as it is
@@ -164,37 +205,44 @@ public:
         return true;
     }
 
-    bool value(Scalar &out, int depth = 0)
+    // A value at `depth` (0: the whole document), the value of `container` (a key, or none). A string is kept
+    // up to kMaxTextBytes; a list or an object is read through.
+    bool value(Scalar &out, int depth = 0, QByteArrayView container = {})
     {
-        if (depth > 64)
-            return fail(tr("this is not valid JSON for a tool table: nested too deeply."));
         const char c = peek();
         out = Scalar();
         if (c == '"') {
             out.kind = Scalar::String;
             return string(out.string);
         }
+        if (c == '{' || c == '[') {
+            out.kind = c == '{' ? Scalar::Object : Scalar::List;
+            return skipComposite(depth, container);
+        }
+        return literal(out);
+    }
+
+    // Any value, checked as value() checks it but kept nowhere: its strings are not copied, whatever their
+    // size.
+    bool skip(int depth = 0, QByteArrayView container = {})
+    {
+        const char c = peek();
+        if (c == '"')
+            return skipString();
+        if (c == '{' || c == '[')
+            return skipComposite(depth, container);
+        Scalar ignored;
+        return literal(ignored);
+    }
+
+private:
+    // A number, true, false or null.
+    bool literal(Scalar &out)
+    {
+        const char c = peek();
         if (c == '-' || (c >= '0' && c <= '9')) {
             out.kind = Scalar::Number;
             return number(out.number);
-        }
-        if (c == '{' || c == '[') {
-            out.kind = Scalar::Composite;
-            ++m_p;
-            const char close = c == '{' ? '}' : ']';
-            if (consume(close))
-                return true;
-            do {
-                Scalar inner;
-                if (c == '{') {
-                    QString key;
-                    if (!string(key) || !expect(':', "':' after a key"))
-                        return false;
-                }
-                if (!value(inner, depth + 1))
-                    return false;
-            } while (consume(','));
-            return expect(close, c == '{' ? "',' or '}'" : "',' or ']'");
         }
         for (const auto &[word, kind] : { std::pair { "true", Scalar::Bool },
                  std::pair { "false", Scalar::Bool }, std::pair { "null", Scalar::Null } }) {
@@ -209,7 +257,84 @@ public:
         return syntax("a value");
     }
 
-private:
+    // The object or list at '{' or '[', at `depth`: every key once, every value checked, nothing kept. The
+    // values of a list are named by the list's own key.
+    bool skipComposite(int depth, QByteArrayView container)
+    {
+        if (depth > kMaxDepth)
+            return fail(tr("this is not JSON Toffee reads: it is nested too deeply (more than %1 levels).")
+                            .arg(kMaxDepth));
+        const char open = *m_p++;
+        const char close = open == '{' ? '}' : ']';
+        if (consume(close))
+            return true;
+        // Its own copy: `container` may be the key buffer, which the keys inside replace.
+        const QByteArray owner = container.toByteArray();
+        JsonKeys keys;
+        QByteArray name;
+        do {
+            if (open == '{') {
+                QByteArrayView raw;
+                QString decoded;
+                if (!key(raw, decoded) || !keyOnce(keys, raw, depth, owner))
+                    return false;
+                name = raw.toByteArray();
+                if (!expect(':', "':' after a key"))
+                    return false;
+            }
+            if (!skip(depth + 1, open == '{' ? QByteArrayView(name) : QByteArrayView(owner)))
+                return false;
+        } while (consume(','));
+        return expect(close, open == '{' ? "',' or '}'" : "',' or ']'");
+    }
+
+    // A string read through: its escapes and its UTF-8 checked, nothing copied.
+    bool skipString()
+    {
+        if (!consume('"'))
+            return syntax("a string in double quotes");
+        const char *run = m_p; // the bytes since the last escape
+        while (m_p < m_end) {
+            const char c = *m_p;
+            if (c == '"' || c == '\\') {
+                if (!QByteArrayView(run, m_p - run).isValidUtf8())
+                    return fail(tr("a string is not valid UTF-8 text."));
+                ++m_p;
+                if (c == '"')
+                    return true;
+                if (m_p >= m_end)
+                    break;
+                if (!escape(nullptr))
+                    return false;
+                run = m_p;
+            } else if (uchar(c) < 0x20) {
+                return controlCharacter();
+            } else {
+                ++m_p;
+            }
+        }
+        return fail(tr("this is not valid JSON: a string is never closed."));
+    }
+
+    bool controlCharacter()
+    {
+        return fail(
+            tr("this is not valid JSON: a line break or control character inside a string; write it as "
+               "\\n."));
+    }
+
+    // The column of `at` on the current line: one for each character, two for one beyond the BMP.
+    int columnOf(const char *at) const
+    {
+        at = std::clamp(at, m_lineStart, m_end);
+        qsizetype column = 1;
+        for (const char *p = m_lineStart; p < at; ++p) {
+            column += (uchar(*p) & 0xc0) != 0x80;
+            column += uchar(*p) >= 0xf0;
+        }
+        return int(std::min<qsizetype>(column, INT_MAX));
+    }
+
     // The rest of a string that has an escape (or a fault) at `m_p`; `start` is its first character. Only
     // such a string is copied into a buffer of its own.
     bool escapedString(const char *start, QString &out)
@@ -221,55 +346,60 @@ private:
             const char c = *m_p++;
             if (c == '"')
                 return decode(buffer, 0x80, out);
-            if (uchar(c) < 0x20)
-                return fail(tr("this is not valid JSON: a line break or control character inside a string; "
-                               "write it as \\n."));
+            if (uchar(c) < 0x20) {
+                --m_p;
+                return controlCharacter();
+            }
             if (c != '\\') {
                 buffer += c;
                 continue;
             }
             if (m_p >= m_end)
                 break;
-            if (!escape(buffer))
+            if (!escape(&buffer))
                 return false;
         }
         return fail(tr("this is not valid JSON: a string is never closed."));
     }
 
-    // The escape after a backslash, onto `buffer` as UTF-8.
-    bool escape(QByteArray &buffer)
+    // The escape after a backslash, onto `buffer` as UTF-8 (when there is one: else only checked).
+    bool escape(QByteArray *buffer)
     {
         const char e = *m_p++;
+        char decoded = 0;
         switch (e) {
         case '"':
         case '\\':
         case '/':
-            buffer += e;
-            return true;
+            decoded = e;
+            break;
         case 'b':
-            buffer += '\b';
-            return true;
+            decoded = '\b';
+            break;
         case 'f':
-            buffer += '\f';
-            return true;
+            decoded = '\f';
+            break;
         case 'n':
-            buffer += '\n';
-            return true;
+            decoded = '\n';
+            break;
         case 'r':
-            buffer += '\r';
-            return true;
+            decoded = '\r';
+            break;
         case 't':
-            buffer += '\t';
-            return true;
+            decoded = '\t';
+            break;
         case 'u':
             return unicodeEscape(buffer);
         default:
             return fail(tr("this is not valid JSON: unknown escape \\%1 in a string.").arg(QLatin1Char(e)));
         }
+        if (buffer)
+            *buffer += decoded;
+        return true;
     }
 
     // \uXXXX, and the low half that must follow a high surrogate: one character beyond the BMP.
-    bool unicodeEscape(QByteArray &buffer)
+    bool unicodeEscape(QByteArray *buffer)
     {
         char32_t code = 0;
         if (!hex4(code))
@@ -285,7 +415,8 @@ private:
         } else if (code >= 0xDC00 && code <= 0xDFFF) {
             return fail(tr("this is not valid JSON: a lone UTF-16 surrogate in a \\u escape."));
         }
-        buffer += QString::fromUcs4(&code, 1).toUtf8();
+        if (buffer)
+            *buffer += QString::fromUcs4(&code, 1).toUtf8();
         return true;
     }
 
@@ -321,9 +452,12 @@ private:
 
     const char *m_p;
     const char *m_end;
+    const char *m_lineStart;
+    const char *m_keyAt = nullptr; // the opening quote of the last key read
     int m_line = 1;
     bool m_failed = false;
     Error m_error;
+    int m_errorColumn = 0;
     QByteArray m_keyBuffer;
 };
 

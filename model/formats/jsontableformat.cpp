@@ -46,8 +46,6 @@ Result<void> readTools(JsonScanner &json, TableFields &table, ToolCollector &too
             json.line() };
     if (!table.hasVersion)
         return Error { tr("\"version\" must come before \"tools\"."), json.line() };
-    if (table.hasTools)
-        return Error { tr("\"tools\" appears twice."), json.line() };
     table.hasTools = true;
     if (!json.consume('['))
         return Error { tr("\"tools\" must be a list of tools."), json.line() };
@@ -108,10 +106,13 @@ Result<void> readTableFields(JsonScanner &json, TableFields &table, ToolCollecto
 {
     if (json.consume('}'))
         return {};
+    JsonKeys keys;
     do {
-        QString key;
-        if (!json.string(key) || !json.expect(':', "':' after a key"))
+        QByteArrayView raw;
+        QString decoded;
+        if (!json.key(raw, decoded) || !json.keyOnce(keys, raw, 0) || !json.expect(':', "':' after a key"))
             return json.error();
+        const QString key = QString::fromUtf8(raw);
         if (key == JsonKey::Tools) {
             if (auto read = readTools(json, table, tools); !read)
                 return read;
@@ -119,7 +120,7 @@ Result<void> readTableFields(JsonScanner &json, TableFields &table, ToolCollecto
         }
         Scalar v;
         const int line = (json.peek(), json.line());
-        if (!json.value(v))
+        if (!json.value(v, 1, raw))
             return json.error();
         if (auto read = readTableField(key, v, line, table); !read)
             return read;

@@ -170,7 +170,8 @@ bool readToolEntry(JsonScanner &json, Tool &tool, quint32 &seen)
     QByteArrayView key;
     QString decodedKey;
     Scalar v;
-    if (!json.key(key, decodedKey) || !json.expect(':', "':' after a key") || !json.value(v))
+    // A tool is at depth 2 (the table, "tools", the tool): its values at 3.
+    if (!json.key(key, decodedKey) || !json.expect(':', "':' after a key") || !json.value(v, 3, key))
         return false;
     const auto found = std::find_if(std::begin(kToolKeys), std::end(kToolKeys),
         [&key](QLatin1StringView k) { return QByteArrayView(k.data(), k.size()) == key; });

@@ -150,6 +150,26 @@ private Q_SLOTS:
             << table({ R"({"number": 1, "length_wear": 1e999})" }) << 6 << u"too large"_s;
         QTest::newRow("deeply nested garbage") << QByteArray(R"({"format": "toffee-tool-table", "x": )")
                 + QByteArray(200, '[') << 1 << u"nested too deeply"_s;
+        // A key given twice is refused at every level, named with its line.
+        const QByteArray top
+            = "{\n  \"format\": \"toffee-tool-table\",\n  \"version\": 1,\n  \"units\": \"mm\",\n";
+        QTest::newRow("format twice")
+            << table({ kGood }, top + "  \"format\": \"toffee-tool-table\",\n  \"tools\": [\n") << 5
+            << u"the key \"format\" appears twice at the top level"_s;
+        QTest::newRow("units twice") << table({ kGood }, top + "  \"units\": \"in\",\n  \"tools\": [\n") << 5
+                                     << u"the key \"units\" appears twice at the top level"_s;
+        QTest::newRow("tools twice") << top + "  \"tools\": [],\n  \"tools\": []\n}\n"
+                                     << 6 << u"the key \"tools\" appears twice at the top level"_s;
+        QTest::newRow("a key twice in a tool's value")
+            << table({ kGood, R"({"number": 2, "notes": {"a": 1, "a": 2}})" }) << 7
+            << u"the key \"a\" appears twice in \"notes\"; Toffee will not guess which one is meant."_s;
+        QTest::newRow("a key twice deep in a field of the table")
+            << table({ kGood },
+                   top + "  \"x\": [[{\"k\": [{\"a\": 1}, {\"b\": 1,\n \"b\": 2}]}]],\n  \"tools\": [\n")
+            << 6 << u"the key \"b\" appears twice in \"k\""_s;
+        QTest::newRow("a key twice in an object of a list")
+            << table({ kGood }, top + "  \"x\": [[{\"a\": 1,\n \"a\": 2}]],\n  \"tools\": [\n") << 6
+            << u"the key \"a\" appears twice in \"x\""_s;
         QTest::newRow("tools on one line, the third bad")
             << table({ R"({"number": 1}, {"number": 2}, {"number": 3, "pocket": -1})" }) << 6
             << u"pocket -1"_s;
