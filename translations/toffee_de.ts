@@ -656,10 +656,6 @@
         <translation>null</translation>
     </message>
     <message>
-        <source>column %1: this is not valid JSON (%2).</source>
-        <translation>Spalte %1: das ist kein gültiges JSON (%2).</translation>
-    </message>
-    <message>
         <source>this is not a Fusion tool library: that is a JSON object with &quot;data&quot;, a list of tools.</source>
         <translation>das ist keine Fusion-Werkzeugbibliothek: die ist ein JSON-Objekt mit „data“, einer Liste von Werkzeugen.</translation>
     </message>
@@ -798,6 +794,18 @@
     <message>
         <source>Toffee&apos;s zip reader %1 cannot be loaded (%2); reinstall Toffee.</source>
         <translation>Toffees Zip-Leser %1 kann nicht geladen werden (%2); installieren Sie Toffee neu.</translation>
+    </message>
+    <message>
+        <source>column %1: %2</source>
+        <translation>Spalte %1: %2</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: there is more text after the value.</source>
+        <translation>Das ist kein gültiges JSON: Nach dem Wert folgt weiterer Text.</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: there is more text after the library.</source>
+        <translation>Das ist kein gültiges JSON: Nach der Bibliothek folgt weiterer Text.</translation>
     </message>
 </context>
 <context>
@@ -1460,6 +1468,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>its &quot;unit&quot; is &quot;%1&quot;; Toffee reads millimeters or inches.</source>
         <translation>seine „unit“ ist „%1“; Toffee liest millimeters oder inches.</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears twice; Toffee will not guess which one is meant.</source>
+        <translation>der Schlüssel „%1“ kommt zweimal vor; Toffee rät nicht, welcher gemeint ist.</translation>
     </message>
 </context>
 <context>

@@ -656,10 +656,6 @@
         <translation>null</translation>
     </message>
     <message>
-        <source>column %1: this is not valid JSON (%2).</source>
-        <translation>第 %1 列：这不是有效的 JSON（%2）。</translation>
-    </message>
-    <message>
         <source>this is not a Fusion tool library: that is a JSON object with &quot;data&quot;, a list of tools.</source>
         <translation>这不是 Fusion 刀具库：刀具库是一个带有“data”（刀具列表）的 JSON 对象。</translation>
     </message>
@@ -798,6 +794,18 @@
     <message>
         <source>Toffee&apos;s zip reader %1 cannot be loaded (%2); reinstall Toffee.</source>
         <translation>无法加载 Toffee 的 zip 读取模块 %1（%2）；请重新安装 Toffee。</translation>
+    </message>
+    <message>
+        <source>column %1: %2</source>
+        <translation>第 %1 列：%2</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: there is more text after the value.</source>
+        <translation>这不是有效的 JSON：值之后还有其他文本。</translation>
+    </message>
+    <message>
+        <source>this is not valid JSON: there is more text after the library.</source>
+        <translation>这不是有效的 JSON：刀具库之后还有其他文本。</translation>
     </message>
 </context>
 <context>
@@ -1460,6 +1468,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>its &quot;unit&quot; is &quot;%1&quot;; Toffee reads millimeters or inches.</source>
         <translation>它的“unit”为“%1”；Toffee 只读取 millimeters 或 inches。</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears twice; Toffee will not guess which one is meant.</source>
+        <translation>键“%1”出现了两次；Toffee 不会猜测指的是哪一个。</translation>
     </message>
 </context>
 <context>

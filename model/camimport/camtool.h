@@ -44,3 +44,6 @@ struct CamLibrary
 };
 
 } // namespace Toffee
+
+// Moved, not copied, when a list of them grows: a library's reader appends one at a time.
+Q_DECLARE_TYPEINFO(Toffee::CamTool, Q_RELOCATABLE_TYPE);

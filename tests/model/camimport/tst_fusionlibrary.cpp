@@ -1,5 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Fusion / HSM JSON tool libraries and .tools archives (model/camimport/fusionjson.cpp, fusionarchive.cpp).
+#include <csignal>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <QFile>
 #include <QTest>
 
 #include "model/camimport/camreaders.h"
@@ -19,6 +26,34 @@ void verifyRefused(const Result<QList<CamTool>> &read, int line, const QString &
     QVERIFY2(!read.ok(), "the library was read");
     QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
     QCOMPARE(read.error().line, line);
+}
+
+// The address space this process has now (VmSize), in bytes.
+qint64 addressSpace()
+{
+    QFile status(u"/proc/self/status"_s);
+    if (!status.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray &line : status.readAll().split('\n')) {
+        if (line.startsWith("VmSize:"))
+            return line.mid(7).trimmed().split(' ').value(0).toLongLong() * 1024;
+    }
+    return -1;
+}
+
+// A library of Fusion's own tools, each about 800 bytes, as near to the 32 MB a library may have as they go.
+QByteArray largestLibrary(int *tools)
+{
+    QByteArray json = "{\n  \"version\": 14,\n  \"data\": [\n";
+    const qsizetype room = kMaxCamLibraryBytes - 2048;
+    for (*tools = 0; json.size() < room;) {
+        const QByteArray tool = Test::fusionTool(*tools + 1);
+        if (json.size() + tool.size() + 8 > room)
+            break;
+        json += (*tools > 0 ? ",\n    " : "    ") + tool;
+        ++*tools;
+    }
+    return json + "\n  ]\n}\n";
 }
 
 } // namespace
@@ -136,6 +171,29 @@ private Q_SLOTS:
                                  << u"not a Fusion tool library"_s;
         QTest::newRow("a list, not an object") << QByteArray("[1, 2]") << 1 << u"not a Fusion tool library"_s;
         QTest::newRow("no tools") << Test::fusionLibrary({}) << 0 << u"holds no tools"_s;
+        // A key given twice is refused at every level, named with its line: Fusion would take one of them.
+        QTest::newRow("number twice in post-process")
+            << Test::fusionLibrary({ QByteArray(good).replace(R"("turret": 0)", R"("number": 4)") }) << 7
+            << u"the key \"number\" appears twice in \"post-process\"; Toffee will not guess which one is meant."_s;
+        QTest::newRow("number twice, once written with an escape")
+            << Test::fusionLibrary({ QByteArray(good).replace(R"("turret": 0)", R"("numb\u0065r": 4)") }) << 7
+            << u"the key \"number\" appears twice in \"post-process\""_s;
+        QTest::newRow("DC twice in geometry") << Test::fusionLibrary(
+            { Test::fusionTool(1, "x", "millimeters", R"("DC": 6, "LB": 3, "DC": 8)") })
+                                              << 5 << u"the key \"DC\" appears twice in \"geometry\""_s;
+        QTest::newRow("type twice in a tool")
+            << Test::fusionLibrary({ Test::fusionTool(2),
+                   QByteArray(good).replace(R"("unit":)", R"("type": "drill", "unit":)") })
+            << 10
+            << u"tool 2 in \"data\": the key \"type\" appears twice; Toffee will not guess which one is meant."_s;
+        QTest::newRow("a key twice in a holder's segment")
+            << Test::fusionLibrary({ QByteArray(good).replace(R"("lower-diameter": 16)", R"("height": 16)") })
+            << 8 << u"the key \"height\" appears twice in \"segments\""_s;
+        QTest::newRow("a key twice in a preset")
+            << Test::fusionLibrary({ QByteArray(good).replace(R"("v_f": 800)", R"("n": 800)") }) << 9
+            << u"the key \"n\" appears twice in \"presets\""_s;
+        QTest::newRow("data twice") << "{\n  \"data\": [" + good + "],\n  \"data\": []\n}\n"
+                                    << 8 << u"the key \"data\" appears twice at the top level"_s;
         QTest::newRow("length-offset is text")
             << Test::fusionLibrary(
                    { QByteArray(good).replace(R"("length-offset": 1,)", R"("length-offset": "H1",)") })
@@ -151,6 +209,34 @@ private Q_SLOTS:
         QVERIFY2(read.error().message.contains(message), qPrintable(read.error().message));
         if (line > 0)
             QCOMPARE(read.error().line, line);
+    }
+
+    // A library is read a tool at a time, keeping only what Toffee takes: the largest one Toffee reads is
+    // read in a child process whose address space may grow by 150 MB (a whole QJsonDocument of it took 500
+    // MB).
+    void readsTheLargestLibraryInBoundedMemory()
+    {
+        int tools = 0;
+        const QByteArray json = largestLibrary(&tools);
+        QVERIFY(json.size() > kMaxCamLibraryBytes - 4096 && json.size() <= kMaxCamLibraryBytes);
+        constexpr qint64 kAllowance = 150LL * 1024 * 1024;
+        const qint64 limit = addressSpace() + kAllowance;
+        QVERIFY(limit > kAllowance);
+        const pid_t child = fork();
+        QVERIFY(child >= 0);
+        if (child == 0) {
+            std::signal(
+                SIGABRT, SIG_DFL); // out of memory ends the child quietly, not through QTest's handler
+            const rlimit rl { rlim_t(limit), rlim_t(limit) };
+            if (setrlimit(RLIMIT_AS, &rl) != 0)
+                _exit(3);
+            const auto read = readFusionJson(json);
+            _exit(!read.ok() ? 1 : read.value().size() != tools ? 2 : 0);
+        }
+        int status = 0;
+        QCOMPARE(waitpid(child, &status, 0), child);
+        QVERIFY2(WIFEXITED(status), "the reader ran out of memory (or crashed)");
+        QCOMPARE(WEXITSTATUS(status), 0);
     }
 
     void aSyntaxErrorNamesItsLineAndColumn()
