@@ -56,6 +56,9 @@ struct BlockEffect
     bool unitsWord = false; // G20 or G21
     bool lengthAxisWord = false; // the block commands the length axis (Z under G17), which takes the offset
     double lowestZ = 0.0; // the lowest work Z the move reaches: its end, or lower on an arc
+    // The block's feed moves (a cycle's included), as toolUsage() counts them for the active tool.
+    double feedPathMm = 0.0;
+    double cuttingSeconds = 0.0;
 };
 
 // The length compensation in force: whether any, and which register (H, FAGOR's D or T, LinuxCNC's tool) it
@@ -123,6 +126,9 @@ public:
     // Tool life: what each tool did, by the tool loaded (M6, M61) or, before any change, selected (T); -1 for
     // moves before any tool. Rapids (G0) count only in the rapid distance.
     [[nodiscard]] const std::map<int, ToolUsage> &toolUsage() const { return m_usage; }
+    // Off: toolUsage() stays empty, so a program of a million tools does not hold one entry each; a caller
+    // that needs it per tool adds up each block's (BlockEffect::feedPathMm, cuttingSeconds).
+    void setKeepToolUsage(bool keep) { m_keepUsage = keep; }
     [[nodiscard]] double rapidDistance() const { return m_rapid; }
     [[nodiscard]] int activeTool() const { return m_cuttingTool >= 0 ? m_cuttingTool : m_selectedTool; }
     // The tool M6 (or M61) loaded last; -1 before any change.
@@ -219,6 +225,7 @@ private:
     int m_selectedTool = -1; // tool life: the last T word
     int m_cuttingTool = -1; // tool life: the tool M6 (or M61) loaded
     std::map<int, ToolUsage> m_usage;
+    bool m_keepUsage = true;
     double m_rapid = 0.0;
     Position m_machine {}; // where the machine is
     Position m_g54 {}; // the work offset in use (G54 to G59)

@@ -210,9 +210,14 @@ void GCodeInterpreter::tally(double length, bool feed)
         m_rapid += length;
         return;
     }
+    const double seconds = feedSeconds(length);
+    m_effect.feedPathMm += length;
+    m_effect.cuttingSeconds += seconds;
+    if (!m_keepUsage)
+        return;
     ToolUsage &usage = m_usage[activeTool()];
     usage.feedPathMm += length;
-    usage.cuttingSeconds += feedSeconds(length);
+    usage.cuttingSeconds += seconds;
 }
 
 } // namespace Toffee
