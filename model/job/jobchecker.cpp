@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "model/limits.h"
 #include "model/numberformat.h"
@@ -21,6 +22,9 @@ quint64 aggregateKey(FindingKind kind, int tool)
 {
     return (quint64(kind) << 32) | quint32(tool);
 }
+
+// The key of a kind's summary of the tools beyond the list: no tool has this number.
+constexpr int kMoreToolsKey = std::numeric_limits<int>::min();
 
 } // namespace
 
@@ -80,7 +84,12 @@ JobChecker::JobChecker(JobCheckSetup setup)
     : m_setup(std::move(setup))
     , m_interpreter(m_setup.dialect, m_setup.offsets)
 {
+    static_assert(int(FindingKind::ProgramSetsTlo) < std::tuple_size_v<decltype(m_moreCounted)>);
     m_interpreter.setRecordMoves(false);
+    // Each block's feed goes to the listed tool it cut with (feed()): the interpreter keeps none per tool.
+    m_interpreter.setKeepToolUsage(false);
+    for (int tool : m_setup.rack.value_or(QList<int> {}))
+        m_rack.insert(tool);
 }
 
 void JobChecker::feed(QByteArrayView line, int lineNumber)
@@ -101,12 +110,31 @@ void JobChecker::feed(QByteArrayView line, int lineNumber)
         tloSet(lineNumber);
     if (effect.motion == BlockEffect::Motion::Feed)
         feedMove(lineNumber, effect);
+    if (effect.feedPathMm != 0.0 || effect.cuttingSeconds != 0.0) {
+        m_cuttingSeconds += effect.cuttingSeconds;
+        if (m_current >= 0) {
+            JobTool &tool = m_tools[m_current];
+            tool.cuttingSeconds += effect.cuttingSeconds;
+            tool.feedPathMm += effect.feedPathMm;
+        }
+    }
 }
 
 void JobChecker::toolChanged(int line)
 {
+    m_compensationDue = true;
+    m_callsAtChange = m_interpreter.lengthCalls();
     const int number = m_interpreter.loadedTool();
     auto found = m_toolIndex.constFind(number);
+    if (found == m_toolIndex.cend() && m_tools.size() >= kMaxListedTools) {
+        m_current = kBeyondList;
+        const bool first = m_moreSeen.insert(number);
+        if (first && m_moreTools++ == 0)
+            m_moreFromLine = line;
+        ++m_moreLoads;
+        countMoreTool(number, line, first);
+        return;
+    }
     if (found == m_toolIndex.cend()) {
         JobTool tool;
         tool.number = number;
@@ -118,18 +146,16 @@ void JobChecker::toolChanged(int line)
     if (tool.loadLines.size() < kMaxLinesPerFinding)
         tool.loadLines.append(line);
     ++tool.loads;
-    m_compensationDue = true;
-    m_callsAtChange = m_interpreter.lengthCalls();
 }
 
 void JobChecker::feedMove(int line, const BlockEffect &effect)
 {
-    if (m_current < 0) {
+    if (m_current == -1) {
         note(FindingKind::NoToolLoaded, -1, line, [] {
             return tr("A feed move before any tool change: the program does not say which tool is in the "
                       "spindle.");
         });
-    } else if (!effect.machineCoordinates) {
+    } else if (!effect.machineCoordinates && m_current >= 0) {
         JobTool &tool = m_tools[m_current];
         if (!tool.lowestZ || effect.lowestZ < *tool.lowestZ)
             tool.lowestZ = effect.lowestZ;
@@ -145,7 +171,7 @@ void JobChecker::feedMove(int line, const BlockEffect &effect)
                                    .arg(millimetres(z, false), millimetres(*m_setup.zFloor, false));
         });
     }
-    if (usesG43(m_setup.dialect) && m_current >= 0)
+    if (usesG43(m_setup.dialect) && m_current != -1)
         checkCompensation(line);
 }
 
@@ -224,6 +250,13 @@ void JobChecker::programError(const Error &error)
 
 template<typename Message> void JobChecker::note(FindingKind kind, int tool, int line, Message message)
 {
+    // A finding of a tool is the loaded one's; units and a feed before any change are no tool's.
+    const bool ofTool = kind != FindingKind::NoToolLoaded && kind != FindingKind::UnitsMismatch
+        && kind != FindingKind::InchOnCarvera;
+    if (m_current == kBeyondList && ofTool) {
+        noteMore(kind, tool, line, m_moreCounted[size_t(kind)].insert(tool));
+        return;
+    }
     const quint64 key = aggregateKey(kind, tool);
     if (const auto found = m_findingIndex.constFind(key); found != m_findingIndex.cend()) {
         Finding &f = m_findings[*found];
@@ -234,6 +267,23 @@ template<typename Message> void JobChecker::note(FindingKind kind, int tool, int
     }
     m_findingIndex.insert(key, m_findings.size());
     m_findings.append({ kind, line, tool, message(), { line }, 1 });
+}
+
+void JobChecker::noteMore(FindingKind kind, int tool, int line, bool newTool)
+{
+    const quint64 key = aggregateKey(kind, kMoreToolsKey);
+    auto found = m_findingIndex.constFind(key);
+    if (found == m_findingIndex.cend()) {
+        // Its message is made at the end, when the count is known; until then `tool` is the first one's.
+        found = m_findingIndex.insert(key, m_findings.size());
+        m_findings.append({ kind, line, tool, QString(), {}, 0, 0 });
+    }
+    Finding &f = m_findings[*found];
+    if (f.lines.size() < kMaxLinesPerFinding)
+        f.lines.append(line);
+    ++f.count;
+    if (newTool)
+        ++f.moreTools;
 }
 
 QList<int> JobChecker::toolNumbers() const

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <array>
 #include <functional>
 #include <optional>
 
@@ -10,6 +11,7 @@
 
 #include "model/gcode/gcodeinterpreter.h"
 #include "model/job/jobreport.h"
+#include "model/job/toolbits.h"
 #include "model/job/toolfacts.h"
 #include "model/units.h"
 
@@ -51,7 +53,10 @@ struct JobCheckSetup
 
 // Checks a program against the table as it is read, one line at a time, in memory that does not grow with the
 // program: findings that repeat (a feed below the floor on every pass) are kept once per tool with their
-// first lines and a count, and the controller's refusals after the first 100 are counted.
+// first lines and a count, and the controller's refusals after the first 100 are counted. Nor does it grow
+// with the tools a program loads: the first kMaxListedTools are kept whole; each one after them is a bit in a
+// set and a count, its findings summed up in one per kind, and only the listed ones are looked up in the
+// history library. Each line costs the same whatever came before it.
 class JobChecker
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::JobChecker)
@@ -60,13 +65,14 @@ class JobChecker
 public:
     static constexpr int kMaxLinesPerFinding = 10;
     static constexpr int kMaxProgramErrors = 100;
+    static constexpr int kMaxListedTools = JobReport::kMaxListedTools;
 
     explicit JobChecker(JobCheckSetup setup);
 
     void feed(QByteArrayView line, int lineNumber);
     // The program ended (M2, M30): the controller runs nothing after it.
     [[nodiscard]] bool ended() const { return m_interpreter.ended(); }
-    // The tools loaded so far, in the order of first use.
+    // The tools loaded so far and listed (at most kMaxListedTools), in the order of first use.
     [[nodiscard]] QList<int> toolNumbers() const;
     [[nodiscard]] const QHash<int, ToolFacts> &facts() const { return m_setup.facts; }
     // Adds what `source` knows of the tools loaded so far (the library's facts, once the program is read).
@@ -80,18 +86,39 @@ private:
     void tloSet(int line);
     void checkCompensation(int line);
     void programError(const Error &error);
-    // Notes a finding, once per kind and tool: again, only its line and count.
+    // Notes a finding, once per kind and tool: again, only its line and count. For the loaded tool when it is
+    // beyond the list, once per kind for all of them (noteMore).
     template<typename Message> void note(FindingKind kind, int tool, int line, Message message);
+    // A finding of a tool beyond the list: counted in its kind's summary, `newTool` when this tool was not
+    // counted in it before.
+    void noteMore(FindingKind kind, int tool, int line, bool newTool);
+    // What the table and the library say of a tool, each finding's message made only when `found` asks for
+    // it.
+    template<typename Found> void judgeTool(int number, const ToolFacts &facts, Found found) const;
     void toolFindings(const JobTool &tool);
+    // A tool beyond the list loaded at `line`: its findings from the table, counted.
+    void countMoreTool(int number, int line, bool first);
     void noteForTool(FindingKind kind, const JobTool &tool, const QString &message);
-    [[nodiscard]] bool hasLengthCompensation() const;
+    [[nodiscard]] QString moreMessage(const Finding &summary) const;
+    [[nodiscard]] bool inRack(int tool) const { return m_rack.contains(tool); }
+
+    // m_current when the loaded tool is beyond the list.
+    static constexpr qsizetype kBeyondList = -2;
 
     JobCheckSetup m_setup;
     GCodeInterpreter m_interpreter;
+    ToolBits m_rack; // the setup's, for a lookup that does not grow with it
     qint64 m_lines = 0;
-    QList<JobTool> m_tools;
+    QList<JobTool> m_tools; // the listed ones
     QHash<int, qsizetype> m_toolIndex;
-    qsizetype m_current = -1; // the loaded tool's index in m_tools
+    qsizetype m_current = -1; // the loaded tool's index in m_tools; -1 none; kBeyondList
+    ToolBits m_moreSeen; // the tools beyond the list loaded so far
+    qint64 m_moreTools = 0;
+    qint64 m_moreLoads = 0;
+    int m_moreFromLine = 0;
+    // For each kind of finding, the tools beyond the list it was counted for.
+    std::array<ToolBits, 16> m_moreCounted;
+    double m_cuttingSeconds = 0.0;
     QList<Finding> m_findings;
     QHash<quint64, qsizetype> m_findingIndex; // (kind, tool) -> index in m_findings
     qint64 m_moreProgramErrors = 0;

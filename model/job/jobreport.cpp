@@ -78,15 +78,28 @@ QString linesListed(const QList<int> &lines, qint64 count)
     return text;
 }
 
+namespace {
+
+int countOf(const QList<Finding> &findings, Severity severity)
+{
+    qint64 n = 0;
+    for (const Finding &f : findings) {
+        if (f.severity() == severity)
+            n += f.moreTools > 0 ? f.moreTools : 1;
+    }
+    return int(n);
+}
+
+} // namespace
+
 int JobReport::errors() const
 {
-    return int(std::count_if(findings.cbegin(), findings.cend(),
-        [](const Finding &f) { return f.severity() == Severity::Error; }));
+    return countOf(findings, Severity::Error);
 }
 
 int JobReport::warnings() const
 {
-    return int(findings.size()) - errors();
+    return countOf(findings, Severity::Warning);
 }
 
 int JobReport::exitCode() const

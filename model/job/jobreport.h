@@ -50,6 +50,9 @@ struct Finding
     QString message;
     QList<int> lines; // the first few lines it happened on
     qint64 count = 1;
+    // A summary of the tools beyond the report's list (JobReport::kMaxListedTools): how many distinct tools
+    // it stands for, with no tool of its own; 0 for every other finding.
+    qint64 moreTools = 0;
 
     [[nodiscard]] Severity severity() const { return findingSeverity(kind); }
     // "12, 14, 19", with ", …" when it happened on more lines than are kept.
@@ -82,11 +85,22 @@ public:
     Dialect dialect = Dialect::Carvera;
     qint64 lines = 0; // lines read
     bool cancelled = false; // stopped before the end: what is here covers `lines` only
-    QList<JobTool> tools;
+    // A real program loads a handful of tools; one that loads thousands is wrong or hostile. The first
+    // kMaxListedTools are listed with everything known of them; the rest are counted (moreTools, moreLoads),
+    // their findings summed up in one finding per kind (Finding::moreTools), and the history library is not
+    // read for them: their facts are the table's.
+    static constexpr int kMaxListedTools = 1000;
+    QList<JobTool> tools; // the first kMaxListedTools, in the order of first use
+    qint64 moreTools = 0; // distinct tools loaded beyond those
+    qint64 moreLoads = 0; // and how often they were loaded
+    int moreFromLine = 0; // the line that loads the first of them
     QList<Finding> findings;
     double cuttingSeconds = 0.0;
     double rapidMm = 0.0;
 
+    // Every distinct tool the program loads, listed or counted.
+    [[nodiscard]] qint64 distinctTools() const { return tools.size() + moreTools; }
+    // A summary finding counts once for each tool it stands for.
     [[nodiscard]] int errors() const;
     [[nodiscard]] int warnings() const;
     // toffee-cli job check's exit code: 0 clean, 1 warnings only, 4 errors.

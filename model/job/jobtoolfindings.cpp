@@ -7,6 +7,8 @@
 #include "model/numberformat.h"
 #include "model/timetext.h"
 
+using namespace Qt::StringLiterals;
+
 namespace Toffee {
 
 JobReport JobChecker::finish(const QString &program, bool cancelled)
@@ -16,12 +18,8 @@ JobReport JobChecker::finish(const QString &program, bool cancelled)
     report.dialect = m_setup.dialect;
     report.lines = m_lines;
     report.cancelled = cancelled;
-    const auto &usage = m_interpreter.toolUsage();
+    report.tools.reserve(m_tools.size());
     for (JobTool tool : std::as_const(m_tools)) {
-        if (const auto used = usage.find(tool.number); used != usage.end()) {
-            tool.cuttingSeconds = used->second.cuttingSeconds;
-            tool.feedPathMm = used->second.feedPathMm;
-        }
         const ToolFacts facts = m_setup.facts.value(tool.number);
         tool.inTable = facts.inTable;
         tool.tlo = m_setup.dialect == Dialect::Carvera ? facts.measuredTlo
@@ -32,8 +30,16 @@ JobReport JobChecker::finish(const QString &program, bool cancelled)
         report.tools.append(tool);
         toolFindings(tool);
     }
-    for (const auto &[tool, used] : usage)
-        report.cuttingSeconds += used.cuttingSeconds;
+    report.moreTools = m_moreTools;
+    report.moreLoads = m_moreLoads;
+    report.moreFromLine = m_moreFromLine;
+    for (Finding &f : m_findings) {
+        if (f.moreTools > 0 && f.message.isEmpty()) {
+            f.message = moreMessage(f);
+            f.tool = -1; // it stands for many
+        }
+    }
+    report.cuttingSeconds = m_cuttingSeconds;
     report.rapidMm = m_interpreter.rapidDistance();
     if (m_moreProgramErrors > 0)
         m_findings.append({ FindingKind::ProgramError, m_firstUncountedError, -1,
@@ -54,62 +60,143 @@ void JobChecker::noteForTool(FindingKind kind, const JobTool &tool, const QStrin
     m_findings.append({ kind, tool.loadLines.value(0), tool.number, message, tool.loadLines, tool.loads });
 }
 
-void JobChecker::toolFindings(const JobTool &tool)
+template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &facts, Found found) const
 {
-    const int n = tool.number;
     const bool carvera = m_setup.dialect == Dialect::Carvera;
     // T0 is no tool on the other controllers (LinuxCNC's empty spindle), the wireless probe on the Carvera.
     if (n == 0 || (carvera && isCarveraNonCutter(n)))
         return;
-    if (m_setup.rack && !m_setup.rack->contains(n))
-        noteForTool(FindingKind::ManualChange, tool,
-            tr("The machine's rack does not hold T%1: it is a manual change, and the machine waits for the "
-               "operator.")
-                .arg(n));
-    const ToolFacts facts = m_setup.facts.value(n);
+    if (m_setup.rack && !inRack(n))
+        found(FindingKind::ManualChange, [n] {
+            return tr(
+                "The machine's rack does not hold T%1: it is a manual change, and the machine waits for "
+                "the operator.")
+                .arg(n);
+        });
     if (m_setup.hasTable && !facts.inTable) {
-        noteForTool(FindingKind::MissingTool, tool,
-            tr("T%1 is not in the tool table: nothing is known of its length.").arg(n));
+        found(FindingKind::MissingTool,
+            [n] { return tr("T%1 is not in the tool table: nothing is known of its length.").arg(n); });
         return;
     }
     if (facts.broken)
-        noteForTool(FindingKind::BrokenTool, tool,
-            tr("T%1 failed its last break test and has not been measured since: check the tool and probe "
-               "it.")
-                .arg(n));
+        found(FindingKind::BrokenTool, [n] {
+            return tr("T%1 failed its last break test and has not been measured since: check the tool and "
+                      "probe it.")
+                .arg(n);
+        });
     const bool measured
         = carvera ? facts.measuredTlo.has_value() : (facts.measuredTlo || facts.length != 0.0);
     if (!measured) {
-        noteForTool(FindingKind::NotMeasured, tool,
-            carvera ? tr("T%1 has no measured TLO.").arg(n)
-                    : tr("T%1 has no length in the table: G43 would apply 0.").arg(n));
+        found(FindingKind::NotMeasured, [n, carvera] {
+            return carvera ? tr("T%1 has no measured TLO.").arg(n)
+                           : tr("T%1 has no length in the table: G43 would apply 0.").arg(n);
+        });
     } else if (carvera && facts.source == TloSource::Manual) {
-        noteForTool(FindingKind::NotMeasured, tool,
-            tr("T%1's TLO was set by hand, not measured on the tool setter: probe it before the job.")
-                .arg(n));
+        found(FindingKind::NotMeasured, [n] {
+            return tr("T%1's TLO was set by hand, not measured on the tool setter: probe it before the job.")
+                .arg(n);
+        });
     } else if (facts.measuredAt.isValid()
         && facts.measuredAt.secsTo(m_setup.now) < -ToolFacts::kClockSkewSeconds) {
-        noteForTool(FindingKind::StaleTlo, tool,
-            tr("T%1's TLO is dated %2, in the future: a clock was wrong, and when it was measured is not "
-               "known.")
+        found(FindingKind::StaleTlo, [n, &facts] {
+            return tr("T%1's TLO is dated %2, in the future: a clock was wrong, and when it was measured is "
+                      "not known.")
                 .arg(n)
-                .arg(facts.measuredAt.toString(Qt::ISODate)));
+                .arg(facts.measuredAt.toString(Qt::ISODate));
+        });
     } else if (facts.measuredAt.isValid() && !facts.isFresh(m_setup.now, m_setup.staleDays)) {
-        noteForTool(FindingKind::StaleTlo, tool,
-            tr("T%1's TLO was measured %2, before the stale limit (%3 d).")
+        found(FindingKind::StaleTlo, [this, n, &facts] {
+            return tr("T%1's TLO was measured %2, before the stale limit (%3 d).")
                 .arg(n)
                 .arg(ageText(facts.measuredAt, m_setup.now))
-                .arg(m_setup.staleDays));
+                .arg(m_setup.staleDays);
+        });
     }
     if (facts.libraryTlo)
-        noteForTool(FindingKind::StaleTlo, tool,
-            tr("The history has a newer measurement of T%1 (%2, %3) than the table's: the table was not "
-               "saved "
-               "after it.")
+        found(FindingKind::StaleTlo, [this, n, &facts] {
+            return tr("The history has a newer measurement of T%1 (%2, %3) than the table's: the table was "
+                      "not saved "
+                      "after it.")
                 .arg(n)
                 .arg(displayNumber(*facts.libraryTlo, m_setup.tableUnits) + u' '
                         + unitsSymbol(m_setup.tableUnits),
-                    ageText(facts.libraryMeasuredAt, m_setup.now)));
+                    ageText(facts.libraryMeasuredAt, m_setup.now));
+        });
+}
+
+void JobChecker::toolFindings(const JobTool &tool)
+{
+    const ToolFacts facts = m_setup.facts.value(tool.number);
+    judgeTool(tool.number, facts,
+        [this, &tool](FindingKind kind, const auto &message) { noteForTool(kind, tool, message()); });
+}
+
+void JobChecker::countMoreTool(int number, int line, bool first)
+{
+    static const ToolFacts unknown;
+    const auto found = m_setup.facts.constFind(number);
+    const ToolFacts &facts = found != m_setup.facts.cend() ? *found : unknown;
+    quint32 counted = 0; // a kind once a load (a stale TLO can be found twice)
+    judgeTool(number, facts, [&](FindingKind kind, const auto &) {
+        const quint32 bit = quint32(1) << int(kind);
+        if (!(counted & bit))
+            noteMore(kind, number, line, first);
+        counted |= bit;
+    });
+}
+
+QString JobChecker::moreMessage(const Finding &summary) const
+{
+    const qint64 n = summary.moreTools;
+    QString what;
+    switch (summary.kind) {
+    case FindingKind::MissingTool:
+        what = tr("%1 more tools the table lacks").arg(n);
+        break;
+    case FindingKind::ManualChange:
+        what = tr("%1 more tools the machine's rack does not hold (manual changes)").arg(n);
+        break;
+    case FindingKind::NotMeasured:
+        what = tr("%1 more tools with no TLO measured on the tool setter").arg(n);
+        break;
+    case FindingKind::StaleTlo:
+        what = tr("%1 more tools whose TLO is older than the stale limit (%2 d) or dated in the future")
+                   .arg(n)
+                   .arg(m_setup.staleDays);
+        break;
+    case FindingKind::BrokenTool:
+        what = tr("%1 more tools that failed their last break test").arg(n);
+        break;
+    case FindingKind::BelowFloor:
+        what = tr("%1 more tools feed below the floor of %2")
+                   .arg(n)
+                   .arg(millimetres(m_setup.zFloor.value_or(0.0), false));
+        break;
+    case FindingKind::NoLengthCompensation:
+        what = tr("%1 more tools cut with no length compensation").arg(n);
+        break;
+    case FindingKind::LengthOffsetMismatch:
+        what = tr("%1 more tools cut with another tool's length offset").arg(n);
+        break;
+    case FindingKind::ProgramSetsTlo:
+        what = tr("%1 more tools have their TLO set by the program to another value than the table's").arg(n);
+        break;
+    default: // not a tool's finding: never summed up
+        what = u"%1 more tools: %2"_s.arg(n).arg(findingKey(summary.kind));
+        break;
+    }
+    // What the history knows could change these three; it is read for the listed tools only.
+    const bool fromTable = summary.kind == FindingKind::NotMeasured || summary.kind == FindingKind::StaleTlo
+        || summary.kind == FindingKind::BrokenTool;
+    return (fromTable
+            ? tr("%1, beyond the first %2 tools the program loads; the first of them is T%3. Counted, "
+                 "not listed, and judged by the table alone: the history library is read for the "
+                 "listed tools only.")
+            : tr("%1, beyond the first %2 tools the program loads; the first of them is T%3. Counted, "
+                 "not listed."))
+        .arg(what)
+        .arg(kMaxListedTools)
+        .arg(summary.tool);
 }
 
 } // namespace Toffee

@@ -113,6 +113,8 @@ Result<void> addLibraryFacts(
         auto tested = newest(library, machine, tool, { EventKind::BreakTest });
         if (!tested)
             return tested.error();
+        if (!measured.value() && !tested.value())
+            continue; // nothing to add: no entry made for it
         ToolFacts &f = facts[tool];
         if (const auto &m = measured.value(); m && m->tlo) {
             const bool sameTlo = f.measuredTlo && std::fabs(*f.measuredTlo - *m->tlo) < 0.0005;

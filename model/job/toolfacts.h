@@ -55,7 +55,8 @@ enum class ReferenceCheck { IfKnown, Required };
 [[nodiscard]] std::function<Result<void>(QHash<int, ToolFacts> &, const QList<int> &)> libraryFacts(
     const Library *library, const QString &machine);
 // Adds what the library holds for `machine` of each of `tools` (its newest measurement and break test). A
-// tool the table lacks takes its TLO from the library.
+// tool the table lacks takes its TLO from the library. Two indexed look-ups a tool (about 0.1 ms in all): the
+// job check asks only for the tools it lists (JobReport::kMaxListedTools), never for a program's every tool.
 [[nodiscard]] Result<void> addLibraryFacts(
     QHash<int, ToolFacts> &facts, const Library &library, const QString &machine, const QList<int> &tools);
 

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The job check: every finding, each on its line, against a table and a real SQLite history library.
+#include <cmath>
+
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -330,6 +332,114 @@ private Q_SLOTS:
         // The table says T3 is unmeasured; the library's probe is not the table's TLO.
         QVERIFY(find(r, FindingKind::NotMeasured, 3));
         QCOMPARE(r.program, u"job.nc"_s);
+    }
+
+    void listsTheFirstThousandToolsAndCountsTheRest()
+    {
+        // T8 to T1507, each plunging below the floor: the first 1,000 are listed, the other 500 counted. Then
+        // a listed tool again, a counted one again (below the floor again), and T2, in the table and the
+        // rack.
+        QByteArray program = "G21 G90\n";
+        for (int t = 8; t < 1508; ++t)
+            program += "M6 T" + QByteArray::number(t) + "\nG1 Z-21 F600\nG0 Z0\n";
+        program += "M6 T8\nG1 X10\nM6 T1500\nG1 Z-22\nM6 T2\nM30\n";
+        const int firstCounted = 2 + 3 * JobChecker::kMaxListedTools; // M6 T1008
+        const JobReport r = check(program, Dialect::Carvera, shopTable(), -20.0, carveraRack());
+        QCOMPARE(r.tools.size(), JobChecker::kMaxListedTools);
+        QCOMPARE(r.tools.front().number, 8);
+        QCOMPARE(r.tools.back().number, 1007);
+        QCOMPARE(r.tools.front().loads, 2); // listed, so loaded twice
+        QCOMPARE(r.tools.front().loadLines, (QList<int> { 2, 4502 }));
+        QCOMPARE(r.tools.front().feedPathMm, 21.0 + 10.0);
+        QCOMPARE(r.moreTools, 501);
+        QCOMPARE(r.moreLoads, 502);
+        QCOMPARE(r.moreFromLine, firstCounted);
+        QCOMPARE(r.distinctTools(), 1501);
+        // Every feed counted in the total: 1,500 plunges of 21 mm, 10 mm, and 22 mm at 600 mm/min.
+        QVERIFY(std::fabs(r.cuttingSeconds - (1500 * 21.0 + 10.0 + 22.0) / 10.0) < 1e-6);
+
+        // One finding per kind for the counted tools: which, how many, how often, from where.
+        const auto summary = [&r](FindingKind kind) -> const Finding * {
+            for (const Finding &f : r.findings) {
+                if (f.kind == kind && f.moreTools > 0)
+                    return &f;
+            }
+            return nullptr;
+        };
+        const Finding *missing = summary(FindingKind::MissingTool);
+        QVERIFY(missing);
+        QCOMPARE(missing->moreTools, 500); // not T2: the table has it
+        QCOMPARE(missing->count, 501); // T1500 was loaded twice
+        QCOMPARE(missing->line, firstCounted);
+        QCOMPARE(missing->lines.size(), JobChecker::kMaxLinesPerFinding);
+        QCOMPARE(missing->lines.at(1), firstCounted + 3);
+        QCOMPARE(missing->tool, -1);
+        QCOMPARE(missing->severity(), Severity::Error);
+        QVERIFY2(
+            missing->message.startsWith(u"500 more tools the table lacks, beyond the first 1000 tools the "
+                                        "program loads; the first of them is T1008. Counted, not listed."_s),
+            qPrintable(missing->message));
+        const Finding *manual = summary(FindingKind::ManualChange);
+        QVERIFY(manual);
+        QCOMPARE(manual->moreTools, 500); // T2 is in the rack
+        QCOMPARE(manual->severity(), Severity::Warning);
+        const Finding *below = summary(FindingKind::BelowFloor);
+        QVERIFY(below);
+        QCOMPARE(below->moreTools, 500);
+        QCOMPARE(below->count, 501); // T1500 plunged twice
+        QCOMPARE(below->line, firstCounted + 1);
+        QVERIFY2(below->message.contains(u"500 more tools feed below the floor of -20.000"_s),
+            qPrintable(below->message));
+        QVERIFY(!summary(FindingKind::StaleTlo) && !summary(FindingKind::NotMeasured));
+        // The listed tools' own findings stay; no counted tool has one of its own.
+        QVERIFY(find(r, FindingKind::MissingTool, 1007));
+        QVERIFY(find(r, FindingKind::BelowFloor, 1007));
+        QVERIFY(!find(r, FindingKind::MissingTool, 1008));
+        QVERIFY(!find(r, FindingKind::BelowFloor, 1500));
+        // A summary counts once for each tool it stands for: 1,000 + 500 missing, 1,000 + 500 below the
+        // floor.
+        QCOMPARE(r.errors(), 3000);
+        QCOMPARE(r.warnings(), 1500);
+        for (qsizetype i = 1; i < r.findings.size(); ++i)
+            QVERIFY(r.findings.at(i - 1).line <= r.findings.at(i).line);
+        // Length compensation of a counted tool is summed up too.
+        QByteArray fanuc;
+        for (int t = 1; t <= JobChecker::kMaxListedTools + 3; ++t)
+            fanuc += "T" + QByteArray::number(t) + " M6\nG1 Z-1 F100\n";
+        const JobReport g43 = check(fanuc, Dialect::Fanuc, shopTable());
+        const Finding *none = nullptr;
+        for (const Finding &f : g43.findings) {
+            if (f.kind == FindingKind::NoLengthCompensation && f.moreTools > 0)
+                none = &f;
+        }
+        QVERIFY(none);
+        QCOMPARE(none->moreTools, 3);
+        QCOMPARE(none->line, 2 * JobChecker::kMaxListedTools + 2);
+    }
+
+    void theLibraryIsAskedOnlyForTheListedTools()
+    {
+        QByteArray program;
+        for (int t = 1; t <= JobChecker::kMaxListedTools + 50; ++t)
+            program += "M6 T" + QByteArray::number(t) + "\n";
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"many.nc"_s);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(program);
+        file.close();
+        JobCheckSetup setup;
+        setup.useTable(shopTable());
+        setup.now = kNow;
+        qsizetype asked = 0;
+        const auto report
+            = checkJobFile(path, setup, [&asked](QHash<int, ToolFacts> &, const QList<int> &tools) {
+                  asked = tools.size();
+                  return Result<void>();
+              });
+        QVERIFY(report.ok());
+        QCOMPARE(asked, JobChecker::kMaxListedTools);
+        QCOMPARE(report.value().moreTools, 50);
     }
 
     void aCancelledCheckSaysSoAndAFileThatIsNotOneIsRefused()
