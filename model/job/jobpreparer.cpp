@@ -19,6 +19,10 @@ JobPreparer::JobPreparer(const ToolTable &table, PrepareOptions options)
 {
     m_original.setRecordMoves(false);
     m_prepared.setRecordMoves(false);
+    m_original.setKeepToolUsage(false);
+    m_prepared.setKeepToolUsage(false);
+    for (int tool : std::as_const(m_options.rack))
+        m_rack.insert(tool);
 }
 
 Result<void> JobPreparer::check(const PrepareOptions &options)
@@ -131,6 +135,11 @@ Result<PrepareSummary> JobPreparer::finish(const LineSink &sink)
     }
     if (!m_hunk.isEmpty())
         closeHunk();
+    if (m_moreNotes > 0)
+        m_summary.notes.append(tr("%1 more notes like these, one for each further tool (the first of them "
+                                  "T%2): counted, not listed.")
+                                   .arg(m_moreNotes)
+                                   .arg(m_firstMoreNoted));
     return m_summary;
 }
 

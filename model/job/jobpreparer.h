@@ -10,6 +10,7 @@
 #include <QString>
 
 #include "model/gcode/gcodeinterpreter.h"
+#include "model/job/toolbits.h"
 #include "model/job/toolfacts.h"
 #include "model/limits.h"
 #include "model/result.h"
@@ -57,16 +58,20 @@ struct PrepareSummary
     int inserted = 0;
     int changed = 0;
     int cuttingMoves = 0; // each checked: the same work position as the original, the tool's own offset
-    QList<PrepareHunk> hunks; // the first kMaxHunks
+    QList<PrepareHunk> hunks; // the first kMaxHunks, each of at most kMaxHunkRows and its closing context
     int moreHunks = 0;
-    QStringList notes; // what was left as it was, and why ("T2 is in the rack: …")
+    // What was left as it was, and why ("T2 is in the rack: …"): once a tool, the first kMaxNotes, then how
+    // many more.
+    QStringList notes;
 };
 
 // Rewrites a program so that the machine restores stored offsets and break-tests each tool (the Carvera), or
 // so that each tool change has its length compensation (the G43 controllers), a line at a time. Every
 // inserted line carries a comment saying why. The prepared program is run beside the original through the
 // interpreter as it is written: every cutting move must reach the same work position, with the tool's own
-// offset where the original had none; anything else stops it (nothing is written).
+// offset where the original had none; anything else stops it (nothing is written). What it keeps does not
+// grow with the program nor with the tools it loads: the preview and the notes are bounded, a tool noted is a
+// bit.
 class JobPreparer
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::JobPreparer)
@@ -74,6 +79,10 @@ class JobPreparer
 
 public:
     static constexpr int kMaxHunks = 200;
+    // A run of changes longer than this (a change on every other line) goes on in the next hunk.
+    static constexpr int kMaxHunkRows = 50;
+    // A real program has a note or two; one that loads thousands of tools would have one each.
+    static constexpr int kMaxNotes = 100;
     static constexpr int kContextLines = 3;
     // The loosest break test a preparation writes: a tool broken by more than this is not "within tolerance".
     static constexpr double kMaxPrepareTolerance = 5.0;
@@ -126,7 +135,11 @@ private:
     qint64 m_callsAtInsertion = 0; // the original's length calls then
     bool m_changedLine = false; // the current original line was rewritten
     bool m_afterEnd = false; // the current original line comes after the program's end: copied, not run
-    QHash<int, bool> m_noted; // tools a note was made for
+    ToolBits m_rack; // the options' rack, for a lookup that does not grow with it
+    ToolBits m_noted; // tools a note was made for
+    ToolBits m_notedReference; // tools whose TLO's unknown reference was noted
+    qint64 m_moreNotes = 0; // notes beyond kMaxNotes, counted
+    int m_firstMoreNoted = 0; // the tool of the first of them
     std::optional<double> m_restoredReference; // the reference of the stored TLOs restored so far
     int m_restoredTool = -1; // the first tool restored
     // The preview: the last few unchanged rows, and the hunk being built.

@@ -114,7 +114,7 @@ std::optional<double> JobPreparer::restorable(int tool)
 {
     if (isCarveraNonCutter(tool))
         return std::nullopt;
-    if (m_options.rack.contains(tool)) {
+    if (m_rack.contains(tool)) {
         noteOnce(tool, tr("T%1 is in the rack: the Carvera measures a rack tool at every change.").arg(tool));
         return std::nullopt;
     }
@@ -255,12 +255,19 @@ Result<void> JobPreparer::sameReference(int tool, const ToolFacts &facts)
     return {};
 }
 
+// `tool`, or -2 - tool for its reference's note.
 void JobPreparer::noteOnce(int tool, const QString &note)
 {
-    if (m_noted.contains(tool))
+    const bool reference = tool < Limits::kEmptySpindle;
+    const int number = reference ? -2 - tool : tool;
+    if (!(reference ? m_notedReference : m_noted).insert(number))
         return;
-    m_noted.insert(tool, true);
-    m_summary.notes.append(note);
+    if (m_summary.notes.size() < kMaxNotes) {
+        m_summary.notes.append(note);
+        return;
+    }
+    if (m_moreNotes++ == 0)
+        m_firstMoreNoted = number;
 }
 
 void JobPreparer::addRow(const PrepareRow &row, bool changed)
@@ -271,6 +278,8 @@ void JobPreparer::addRow(const PrepareRow &row, bool changed)
         m_context.clear();
         m_hunk.append(row);
         m_trailing = 0;
+        if (m_hunk.size() >= kMaxHunkRows)
+            closeHunk();
         return;
     }
     if (!m_hunk.isEmpty()) {

@@ -231,6 +231,49 @@ private Q_SLOTS:
         QVERIFY(open.endsWith("tolerance 0.05 mm)\n"));
     }
 
+    void whatItKeepsDoesNotGrowWithTheToolsAProgramLoads()
+    {
+        // 300 tools the table lacks, each cutting once: a note for each (measured at its change), and a break
+        // test after each, a change on every third line.
+        PrepareOptions o;
+        o.useStoredTlo = true;
+        o.breakTest = true;
+        o.tolerance = 0.05;
+        o.rack = { 1, 2, 3, 4, 5, 6 };
+        o.now = kNow;
+        JobPreparer preparer(table(), o);
+        qint64 written = 0;
+        const auto sink = [&written](QByteArrayView) {
+            return ++written > 0;
+        };
+        int line = 0;
+        for (int t = 10; t < 310; ++t) {
+            QVERIFY(preparer.feed(QByteArray("M6 T" + QByteArray::number(t)), ++line, sink).ok());
+            QVERIFY(preparer.feed("G1 Z-1 F100", ++line, sink).ok());
+        }
+        QVERIFY(preparer.feed("M30", ++line, sink).ok());
+        const auto summary = preparer.finish(sink);
+        QVERIFY(summary.ok());
+        const PrepareSummary &s = summary.value();
+        QCOMPARE(s.inserted, 300);
+        QCOMPARE(written, 601 + 300);
+        // The first notes, then how many more.
+        QCOMPARE(s.notes.size(), JobPreparer::kMaxNotes + 1);
+        QCOMPARE(s.notes.front(), u"T10 is not in the table: it is measured at its change."_s);
+        QCOMPARE(s.notes.back(),
+            u"200 more notes like these, one for each further tool (the first of them T110): counted, not "
+            "listed."_s);
+        // The preview in pieces of a bounded size, every insertion in one of them.
+        QVERIFY(s.hunks.size() > 1);
+        qsizetype inserted = 0;
+        for (const PrepareHunk &hunk : s.hunks) {
+            QVERIFY(hunk.size() <= JobPreparer::kMaxHunkRows + JobPreparer::kContextLines);
+            inserted += std::count_if(
+                hunk.cbegin(), hunk.cend(), [](const PrepareRow &r) { return r.originalLine == 0; });
+        }
+        QCOMPARE(inserted, 300);
+    }
+
     void storedTlosOfTwoReferencesAreRefusedAndTheReferenceToolIsNotBreakTested()
     {
         // T7 and T8 (made fresh) measured against two references: at most one can be the machine's.
