@@ -47,12 +47,16 @@ QJsonObject reportJson(const JobReport &report)
             { u"lowest_z"_s, optionalNumber(t.lowestZ) }, { u"set_by_hand"_s, t.setByHand } });
     QJsonArray findings;
     for (const Finding &f : report.findings)
-        findings.append(
-            QJsonObject { { u"severity"_s, severityName(f.severity()) }, { u"kind"_s, findingKey(f.kind) },
-                { u"line"_s, f.line }, { u"tool"_s, f.tool >= 0 ? QJsonValue(f.tool) : QJsonValue() },
-                { u"message"_s, f.message }, { u"lines"_s, numbers(f.lines) }, { u"count"_s, f.count } });
+        findings.append(QJsonObject { { u"severity"_s, severityName(f.severity()) },
+            { u"kind"_s, findingKey(f.kind) }, { u"line"_s, f.line },
+            { u"tool"_s, f.tool >= 0 ? QJsonValue(f.tool) : QJsonValue() }, { u"message"_s, f.message },
+            { u"lines"_s, numbers(f.lines) }, { u"count"_s, f.count }, { u"more_tools"_s, f.moreTools } });
+    // The tools beyond the listed ones, counted: how many, how often loaded, from which line.
     return { { u"program"_s, report.program }, { u"dialect"_s, dialectInfo(report.dialect).key },
         { u"lines"_s, report.lines }, { u"cancelled"_s, report.cancelled }, { u"tools"_s, tools },
+        { u"distinct_tools"_s, report.distinctTools() }, { u"more_tools"_s, report.moreTools },
+        { u"more_tool_loads"_s, report.moreLoads },
+        { u"more_tools_from_line"_s, report.moreTools > 0 ? QJsonValue(report.moreFromLine) : QJsonValue() },
         { u"findings"_s, findings }, { u"cutting_seconds"_s, report.cuttingSeconds },
         { u"rapid_mm"_s, report.rapidMm }, { u"errors"_s, report.errors() },
         { u"warnings"_s, report.warnings() } };
@@ -96,6 +100,11 @@ void printReport(Invocation &call, const JobReport &report, const QDateTime &now
     call.out << (report.tools.isEmpty() ? "No tool changes.\n" : "Tools, in order of use:\n");
     for (const JobTool &t : report.tools)
         printTool(call, t, now);
+    if (report.moreTools > 0)
+        call.out << u"  … and "_s << report.moreTools << " more tools from line " << report.moreFromLine
+                 << " (" << report.moreLoads << " loads): counted, not listed; the first "
+                 << report.tools.size() << " of the program's " << report.distinctTools()
+                 << " distinct tools are listed.\n";
     for (const Finding &f : report.findings) {
         call.out << severityName(f.severity()) << ": line " << f.line << ": " << f.message;
         if (f.count > 1)

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // toffee-cli job check and job prepare as a script runs them: exit codes, JSON, refusals, and memory that
-// does not grow with the program (a million lines and five million peak within 10 % of each other).
+// does not grow with the program (a million lines and five million peak within 10 % of each other) nor with
+// the tools it loads (a million distinct tools checked within a ceiling of address space).
+#include <sys/resource.h>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -34,6 +37,46 @@ void write(const QString &path, const QByteArray &content)
 QJsonObject json(const Run &run)
 {
     return QJsonDocument::fromJson(run.out).object();
+}
+
+// A program that loads `tools` distinct tools, T0 upwards, each with a feed move.
+void writeManyTools(const QString &path, int tools)
+{
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    QByteArray chunk = "G21 G90\n";
+    for (int t = 0; t < tools; ++t) {
+        chunk += "T" + QByteArray::number(t) + " M6\nG1 X" + QByteArray::number(t % 2) + " F100\n";
+        if (chunk.size() > (1 << 20)) {
+            QVERIFY(file.write(chunk) == chunk.size());
+            chunk.clear();
+        }
+    }
+    chunk += "M30\n";
+    QVERIFY(file.write(chunk) == chunk.size());
+}
+
+// toffee-cli run with its address space limited (setrlimit in the child, before exec): a program that needs
+// more fails to allocate and aborts.
+Run cliWithin(rlim_t bytes, const QStringList &arguments)
+{
+    QProcess process;
+    process.setChildProcessModifier([bytes] {
+        const rlimit limit { bytes, bytes };
+        setrlimit(RLIMIT_AS, &limit);
+    });
+    process.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"), arguments);
+    Run run;
+    if (!process.waitForFinished(120000)) {
+        process.kill();
+        process.waitForFinished();
+        run.err = "TEST: toffee-cli did not finish";
+        return run;
+    }
+    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
 }
 
 } // namespace
@@ -220,6 +263,71 @@ private Q_SLOTS:
         qInfo("simulate peak: 1,000,000 lines %ld KB, 5,000,000 lines %ld KB", simOne.peakKb, simFive.peakKb);
         QVERIFY2(double(simFive.peakKb) <= 1.1 * double(simOne.peakKb),
             qPrintable(u"%1 KB against %2 KB"_s.arg(simFive.peakKb).arg(simOne.peakKb)));
+    }
+
+    void listsTheFirstThousandToolsAndCountsTheRest()
+    {
+        const QString path = m_dir.filePath(u"many.nc"_s);
+        writeManyTools(path, 1200);
+        const Run run = cli({ u"job"_s, u"check"_s, path, u"--table"_s, kExample, u"--stale-days"_s,
+            u"3650"_s, u"--no-history"_s });
+        QCOMPARE(run.exitCode, 4);
+        QVERIFY2(run.out.contains("  T999  loaded at line 2000"), run.out.constData());
+        QVERIFY2(!run.out.contains("  T1000  loaded"), run.out.constData());
+        QVERIFY2(
+            run.out.contains("  … and 200 more tools from line 2002 (200 loads): counted, not listed; the "
+                             "first 1000 of the program's 1200 distinct tools are listed.\n"),
+            run.out.constData());
+        QVERIFY2(run.out.contains("error: line 2002: 200 more tools the table lacks, beyond the first 1000 "
+                                  "tools the program loads; the first of them is T1000. Counted, not listed. "
+                                  "(lines 2002, 2004,"),
+            run.out.constData());
+        QVERIFY2(run.out.contains("warning: line 2002: 200 more tools the machine's rack does not hold"),
+            run.out.constData());
+        // The example table holds T1 to T6 (T3 to T6 not measured); T0 is the Carvera's probe. Each counted
+        // tool is one error and one warning, as a listed one is.
+        QVERIFY2(run.out.contains("1193 errors, 1197 warnings"), run.out.constData());
+    }
+
+    // The old check held about a kilobyte for each distinct tool (1.1 GB for a million; 7 KB each with
+    // --json) and asked the library twice for each (77 s). Address space, not resident memory, is what the
+    // kernel can cap: an ordinary program needs about 60 MB of it (Qt's and ICU's libraries and data mapped,
+    // little of it resident), a million tools now 70 MB. The aim, under 200 bytes a tool above an ordinary
+    // program, is 260 MB for a million: 256 MB is that, with room for the allocator's arenas.
+    void checksAMillionDistinctToolsWithinAFixedAddressSpace()
+    {
+        if (kUnderAsan)
+            QSKIP("AddressSanitizer reserves terabytes of address space");
+        const QString path = m_dir.filePath(u"million-tools.nc"_s);
+        writeManyTools(path, 1000000);
+        const QStringList arguments { u"--json"_s, u"job"_s, u"check"_s, path, u"--table"_s, kExample,
+            u"--stale-days"_s, u"3650"_s, u"--no-history"_s };
+        constexpr rlim_t kCeiling = 256 * 1024 * 1024;
+        const Run run = cliWithin(kCeiling, arguments);
+        QVERIFY2(run.exitCode == 4, run.err.constData());
+        const QJsonObject o = json(run);
+        QCOMPARE(o.value(u"lines"_s).toInteger(), 2000002);
+        QCOMPARE(o.value(u"distinct_tools"_s).toInteger(), 1000000);
+        QCOMPARE(o.value(u"tools"_s).toArray().size(), 1000);
+        QCOMPARE(o.value(u"more_tools"_s).toInteger(), 999000);
+        QCOMPARE(o.value(u"more_tool_loads"_s).toInteger(), 999000);
+        QCOMPARE(o.value(u"more_tools_from_line"_s).toInteger(), 2002);
+        QJsonObject missing;
+        for (const QJsonValue &f : o.value(u"findings"_s).toArray()) {
+            if (f.toObject().value(u"kind"_s) == u"missing_tool"_s
+                && f.toObject().value(u"more_tools"_s).toInteger() > 0)
+                missing = f.toObject();
+        }
+        // T999990 and up are the Carvera's probes, not looked up.
+        QCOMPARE(missing.value(u"more_tools"_s).toInteger(), 998990);
+        QCOMPARE(missing.value(u"line"_s).toInt(), 2002);
+        QVERIFY(missing.value(u"tool"_s).isNull());
+        QCOMPARE(o.value(u"errors"_s).toInt(), 993 + 998990);
+        // The history library, when there is one, is read for the listed tools only.
+        const Run withLibrary = cliWithin(kCeiling,
+            QStringList { u"--library"_s, m_dir.filePath(u"library.sqlite"_s) } + arguments.mid(0, 8));
+        QVERIFY2(withLibrary.exitCode == 4, withLibrary.err.constData());
+        QCOMPARE(json(withLibrary).value(u"distinct_tools"_s).toInteger(), 1000000);
     }
 
 private:
