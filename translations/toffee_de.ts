@@ -2192,6 +2192,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>&amp;Rack holds:</source>
         <translation>&amp;Magazin enthält:</translation>
     </message>
+    <message>
+        <source>Only the first %1 tools are listed; the other %2 are counted, their findings summed up one for each kind.</source>
+        <translation>Nur die ersten %1 Werkzeuge sind aufgeführt; die übrigen %2 sind gezählt, ihre Befunde zu einem je Art zusammengefasst.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::JobChecker</name>
@@ -2275,6 +2279,50 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>T%1&apos;s TLO was set by hand, not measured on the tool setter: probe it before the job.</source>
         <translation>Die TLO von T%1 wurde von Hand gesetzt, nicht am Werkzeugtaster gemessen: vor dem Job antasten.</translation>
     </message>
+    <message>
+        <source>%1 more tools the table lacks</source>
+        <translation>%1 weitere Werkzeuge, die nicht in der Tabelle stehen</translation>
+    </message>
+    <message>
+        <source>%1 more tools the machine&apos;s rack does not hold (manual changes)</source>
+        <translation>%1 weitere Werkzeuge, die das Magazin der Maschine nicht enthält (manuelle Wechsel)</translation>
+    </message>
+    <message>
+        <source>%1 more tools with no TLO measured on the tool setter</source>
+        <translation>%1 weitere Werkzeuge ohne am Werkzeugtaster gemessene TLO</translation>
+    </message>
+    <message>
+        <source>%1 more tools whose TLO is older than the stale limit (%2 d) or dated in the future</source>
+        <translation>%1 weitere Werkzeuge, deren TLO älter als die Grenze (%2 d) oder in die Zukunft datiert ist</translation>
+    </message>
+    <message>
+        <source>%1 more tools that failed their last break test</source>
+        <translation>%1 weitere Werkzeuge, die ihren letzten Bruchtest nicht bestanden haben</translation>
+    </message>
+    <message>
+        <source>%1 more tools feed below the floor of %2</source>
+        <translation>%1 weitere Werkzeuge fahren im Vorschub unter die Untergrenze von %2</translation>
+    </message>
+    <message>
+        <source>%1 more tools cut with no length compensation</source>
+        <translation>%1 weitere Werkzeuge schneiden ohne Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>%1 more tools cut with another tool&apos;s length offset</source>
+        <translation>%1 weitere Werkzeuge schneiden mit der Längenkorrektur eines anderen Werkzeugs</translation>
+    </message>
+    <message>
+        <source>%1 more tools have their TLO set by the program to another value than the table&apos;s</source>
+        <translation>Bei %1 weiteren Werkzeugen setzt das Programm die TLO auf einen anderen Wert als die Tabelle</translation>
+    </message>
+    <message>
+        <source>%1, beyond the first %2 tools the program loads; the first of them is T%3. Counted, not listed, and judged by the table alone: the history library is read for the listed tools only.</source>
+        <translation>%1, über die ersten %2 Werkzeuge hinaus, die das Programm einwechselt; das erste davon ist T%3. Gezählt, nicht aufgeführt und allein nach der Tabelle beurteilt: Die Verlaufsbibliothek wird nur für die aufgeführten Werkzeuge gelesen.</translation>
+    </message>
+    <message>
+        <source>%1, beyond the first %2 tools the program loads; the first of them is T%3. Counted, not listed.</source>
+        <translation>%1, über die ersten %2 Werkzeuge hinaus, die das Programm einwechselt; das erste davon ist T%3. Gezählt, nicht aufgeführt.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::JobFindingsModel</name>
@@ -2305,6 +2353,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Finding</source>
         <translation>Befund</translation>
+    </message>
+    <message>
+        <source>%1 tools</source>
+        <translation>%1 Werkzeuge</translation>
     </message>
 </context>
 <context>
@@ -2472,6 +2524,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
         <translation>Die gespeicherten TLOs gelten nur, solange die Referenz-MCS-Z der Maschine %1 ist (wo ihr Referenzwerkzeug vermessen wurde): Prüfen Sie das, bevor Sie das Programm starten.</translation>
     </message>
+    <message>
+        <source>%1 more notes like these, one for each further tool (the first of them T%2): counted, not listed.</source>
+        <translation>%1 weitere solche Hinweise, einer je weiteres Werkzeug (das erste davon T%2): gezählt, nicht aufgeführt.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::JobReport</name>
@@ -2545,6 +2601,18 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>set %1</source>
         <translation>gesetzt %1</translation>
+    </message>
+    <message>
+        <source>%1 more</source>
+        <translation>%1 weitere</translation>
+    </message>
+    <message>
+        <source>from line %1, %2 loads: counted, not listed</source>
+        <translation>ab Zeile %1, %2 Wechsel: gezählt, nicht aufgeführt</translation>
+    </message>
+    <message>
+        <source>The program loads %1 distinct tools: the first %2 are listed, the other %3 only counted. Their findings are summed up, one for each kind.</source>
+        <translation>Das Programm wechselt %1 verschiedene Werkzeuge ein: Die ersten %2 sind aufgeführt, die übrigen %3 nur gezählt. Ihre Befunde sind zusammengefasst, einer je Art.</translation>
     </message>
 </context>
 <context>

@@ -2192,6 +2192,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>&amp;Rack holds:</source>
         <translation>刀库包含(&amp;R)：</translation>
     </message>
+    <message>
+        <source>Only the first %1 tools are listed; the other %2 are counted, their findings summed up one for each kind.</source>
+        <translation>仅列出前 %1 把刀具；其余 %2 把只计数，其问题按类别各汇总为一条。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::JobChecker</name>
@@ -2275,6 +2279,50 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>T%1&apos;s TLO was set by hand, not measured on the tool setter: probe it before the job.</source>
         <translation>T%1 的 TLO 是手动设置的，并非在对刀仪上测得：请在作业前对刀。</translation>
     </message>
+    <message>
+        <source>%1 more tools the table lacks</source>
+        <translation>另有 %1 把刀具不在刀具表中</translation>
+    </message>
+    <message>
+        <source>%1 more tools the machine&apos;s rack does not hold (manual changes)</source>
+        <translation>另有 %1 把刀具不在机床刀库中（手动换刀）</translation>
+    </message>
+    <message>
+        <source>%1 more tools with no TLO measured on the tool setter</source>
+        <translation>另有 %1 把刀具没有在对刀仪上测得的 TLO</translation>
+    </message>
+    <message>
+        <source>%1 more tools whose TLO is older than the stale limit (%2 d) or dated in the future</source>
+        <translation>另有 %1 把刀具的 TLO 已超过过期期限（%2 天）或日期在未来</translation>
+    </message>
+    <message>
+        <source>%1 more tools that failed their last break test</source>
+        <translation>另有 %1 把刀具未通过上次断刀检测</translation>
+    </message>
+    <message>
+        <source>%1 more tools feed below the floor of %2</source>
+        <translation>另有 %1 把刀具进给到下限 %2 以下</translation>
+    </message>
+    <message>
+        <source>%1 more tools cut with no length compensation</source>
+        <translation>另有 %1 把刀具切削时没有刀具长度补偿</translation>
+    </message>
+    <message>
+        <source>%1 more tools cut with another tool&apos;s length offset</source>
+        <translation>另有 %1 把刀具切削时使用另一把刀具的长度补偿</translation>
+    </message>
+    <message>
+        <source>%1 more tools have their TLO set by the program to another value than the table&apos;s</source>
+        <translation>另有 %1 把刀具的 TLO 被程序设为与刀具表不同的值</translation>
+    </message>
+    <message>
+        <source>%1, beyond the first %2 tools the program loads; the first of them is T%3. Counted, not listed, and judged by the table alone: the history library is read for the listed tools only.</source>
+        <translation>%1，超出程序装入的前 %2 把刀具；其中第一把是 T%3。只计数、不列出，且仅依据刀具表判断：历史库只为列出的刀具读取。</translation>
+    </message>
+    <message>
+        <source>%1, beyond the first %2 tools the program loads; the first of them is T%3. Counted, not listed.</source>
+        <translation>%1，超出程序装入的前 %2 把刀具；其中第一把是 T%3。只计数，不列出。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::JobFindingsModel</name>
@@ -2305,6 +2353,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Finding</source>
         <translation>问题</translation>
+    </message>
+    <message>
+        <source>%1 tools</source>
+        <translation>%1 把刀具</translation>
     </message>
 </context>
 <context>
@@ -2472,6 +2524,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
         <translation>只有当机床的基准 MCS Z 为 %1（其基准刀具对刀处）时，已存 TLO 才有效：运行程序前请检查。</translation>
     </message>
+    <message>
+        <source>%1 more notes like these, one for each further tool (the first of them T%2): counted, not listed.</source>
+        <translation>另有 %1 条类似说明，每把后续刀具一条（其中第一把为 T%2）：只计数，不列出。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::JobReport</name>
@@ -2545,6 +2601,18 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>set %1</source>
         <translation>设置于 %1</translation>
+    </message>
+    <message>
+        <source>%1 more</source>
+        <translation>另有 %1 把</translation>
+    </message>
+    <message>
+        <source>from line %1, %2 loads: counted, not listed</source>
+        <translation>自第 %1 行起，换刀 %2 次：只计数，不列出</translation>
+    </message>
+    <message>
+        <source>The program loads %1 distinct tools: the first %2 are listed, the other %3 only counted. Their findings are summed up, one for each kind.</source>
+        <translation>程序装入 %1 把不同的刀具：列出前 %2 把，其余 %3 把只计数。它们的问题按类别各汇总为一条。</translation>
     </message>
 </context>
 <context>

@@ -274,7 +274,7 @@ void JobCheckDialog::finished(bool cancelled)
 void JobCheckDialog::showReport()
 {
     const JobReport &r = *m_report;
-    m_toolsModel->setReport(r.tools, QDateTime::currentDateTimeUtc());
+    m_toolsModel->setReport(r, QDateTime::currentDateTimeUtc());
     m_findingsModel->setFindings(r.findings);
     m_tools->resizeColumnsToContents();
     m_findings->resizeColumnsToContents();
@@ -282,8 +282,14 @@ void JobCheckDialog::showReport()
                        .arg(r.program)
                        .arg(QLocale().toString(r.lines))
                        .arg(dialectInfo(r.dialect).name)
-                       .arg(r.tools.size())
+                       .arg(r.distinctTools())
                        .arg(durationText(r.cuttingSeconds), millimetres(r.rapidMm, false));
+    if (r.moreTools > 0)
+        text += u' '
+            + tr("Only the first %1 tools are listed; the other %2 are counted, their findings summed up "
+                 "one for each kind.")
+                  .arg(r.tools.size())
+                  .arg(r.moreTools);
     if (r.cancelled)
         text = tr("Cancelled after %1 lines: what was found so far.").arg(QLocale().toString(r.lines)) + u' '
             + text;

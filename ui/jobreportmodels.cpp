@@ -15,17 +15,20 @@ JobToolsModel::JobToolsModel(QObject *parent)
     : QAbstractTableModel(parent)
 { }
 
-void JobToolsModel::setReport(const QList<JobTool> &tools, const QDateTime &now)
+void JobToolsModel::setReport(const JobReport &report, const QDateTime &now)
 {
     beginResetModel();
-    m_tools = tools;
+    m_tools = report.tools;
+    m_moreTools = report.moreTools;
+    m_moreLoads = report.moreLoads;
+    m_moreFromLine = report.moreFromLine;
     m_now = now;
     endResetModel();
 }
 
 int JobToolsModel::rowCount(const QModelIndex &parent) const
 {
-    return parent.isValid() ? 0 : int(m_tools.size());
+    return parent.isValid() ? 0 : int(m_tools.size()) + (m_moreTools > 0 ? 1 : 0);
 }
 
 int JobToolsModel::columnCount(const QModelIndex &parent) const
@@ -62,10 +65,28 @@ QString JobToolsModel::text(const JobTool &tool, int column) const
     return {};
 }
 
+// The last row: the tools beyond the list, counted.
+QVariant JobToolsModel::moreData(int column, int role) const
+{
+    if (role == Qt::DisplayRole && column == NumberColumn)
+        return tr("%1 more").arg(m_moreTools);
+    if (role == Qt::DisplayRole && column == LoadedColumn)
+        return tr("from line %1, %2 loads: counted, not listed").arg(m_moreFromLine).arg(m_moreLoads);
+    if (role == Qt::ToolTipRole)
+        return tr("The program loads %1 distinct tools: the first %2 are listed, the other %3 only counted. "
+                  "Their findings are summed up, one for each kind.")
+            .arg(qint64(m_tools.size()) + m_moreTools)
+            .arg(m_tools.size())
+            .arg(m_moreTools);
+    return {};
+}
+
 QVariant JobToolsModel::data(const QModelIndex &index, int role) const
 {
-    if (!index.isValid() || index.row() >= m_tools.size())
+    if (!index.isValid() || index.row() >= rowCount())
         return {};
+    if (index.row() == m_tools.size())
+        return moreData(index.column(), role);
     const JobTool &tool = m_tools.at(index.row());
     if (role == Qt::DisplayRole)
         return text(tool, index.column());
@@ -138,6 +159,8 @@ QVariant JobFindingsModel::data(const QModelIndex &index, int role) const
         case LineColumn:
             return f.line;
         case ToolColumn:
+            if (f.moreTools > 0)
+                return tr("%1 tools").arg(f.moreTools);
             return f.tool >= 0 ? u"T"_s + QString::number(f.tool) : QString();
         case MessageColumn:
             return f.count > 1 ? tr("%1 (%2 times: lines %3)").arg(f.message).arg(f.count).arg(f.linesText())

@@ -8,7 +8,8 @@
 
 namespace Toffee {
 
-// The tools a checked program loads, in the order of first use: a snapshot of the report, replaced whole.
+// The tools a checked program loads, in the order of first use: a snapshot of the report, replaced whole. The
+// tools beyond the report's list, counted, are one last row that says so.
 class JobToolsModel final : public QAbstractTableModel
 {
     Q_OBJECT
@@ -27,7 +28,7 @@ public:
     };
 
     explicit JobToolsModel(QObject *parent = nullptr);
-    void setReport(const QList<JobTool> &tools, const QDateTime &now);
+    void setReport(const JobReport &report, const QDateTime &now);
 
     [[nodiscard]] int rowCount(const QModelIndex &parent = {}) const override;
     [[nodiscard]] int columnCount(const QModelIndex &parent = {}) const override;
@@ -37,8 +38,12 @@ public:
 
 private:
     [[nodiscard]] QString text(const JobTool &tool, int column) const;
+    [[nodiscard]] QVariant moreData(int column, int role) const;
 
     QList<JobTool> m_tools;
+    qint64 m_moreTools = 0;
+    qint64 m_moreLoads = 0;
+    int m_moreFromLine = 0;
     QDateTime m_now;
 };
 

@@ -2,6 +2,7 @@
 // File ▸ Check Job… as an operator uses it: a program checked against the open table with progress and Cancel
 // while the window keeps answering, the findings by line and the program around one, Prepare… with its side
 // by side preview and the prepared file, a program dropped on the window.
+#include <QAbstractItemModelTester>
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
@@ -308,6 +309,64 @@ private Q_SLOTS:
         QVERIFY(!dialog->report());
         QVERIFY(dialog->findChild<QLabel *>(u"jobSummaryLabel"_s)->text().contains(u"folder"_s));
         QCOMPARE(dialog->findChild<QTableView *>(u"jobFindingsView"_s)->model()->rowCount(), 0);
+    }
+
+    void aProgramOfThousandsOfToolsListsTheFirstAndSaysTheRestWereCounted()
+    {
+        MainWindow window;
+        window.setLibrary({ m_dir.filePath(u"library.sqlite"_s) });
+        QVERIFY(window.openFile(kExample));
+        window.show();
+        QByteArray program;
+        for (int t = 1; t <= JobReport::kMaxListedTools + 50; ++t)
+            program += "M6 T" + QByteArray::number(t) + "\nG1 Z-1 F100\n";
+        JobCheckDialog *dialog = window.openJobCheck(write(m_dir, u"many.nc"_s, program));
+        QVERIFY(waitForCheck(dialog));
+        // What earlier tests chose is remembered: the Carvera, with no floor, here.
+        if (auto *floor = dialog->findChild<QCheckBox *>(u"jobFloorCheck"_s); floor->isChecked()) {
+            floor->setChecked(false);
+            QVERIFY(waitForCheck(dialog));
+        }
+        if (auto *controller = dialog->findChild<QComboBox *>(u"jobDialectCombo"_s);
+            controller->currentData() != u"carvera"_s) {
+            controller->setCurrentIndex(controller->findData(u"carvera"_s));
+            QVERIFY(waitForCheck(dialog));
+        }
+        auto *tools = dialog->findChild<QTableView *>(u"jobToolsView"_s)->model();
+        QAbstractItemModelTester toolsTester(tools, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        // The listed tools, then one row for the rest.
+        QCOMPARE(tools->rowCount(), JobReport::kMaxListedTools + 1);
+        const int last = JobReport::kMaxListedTools;
+        QCOMPARE(tools->index(last - 1, JobToolsModel::NumberColumn).data().toString(), u"T1000"_s);
+        QCOMPARE(tools->index(last, JobToolsModel::NumberColumn).data().toString(), u"50 more"_s);
+        QCOMPARE(tools->index(last, JobToolsModel::LoadedColumn).data().toString(),
+            u"from line 2001, 50 loads: counted, not listed"_s);
+        QVERIFY(tools->index(last, JobToolsModel::TloColumn)
+                    .data(Qt::ToolTipRole)
+                    .toString()
+                    .contains(u"The program loads 1050 distinct tools: the first 1000 are listed"_s));
+        // The counted tools' findings, one for each kind, say how many tools they stand for.
+        auto *findings = dialog->findChild<QTableView *>(u"jobFindingsView"_s)->model();
+        QAbstractItemModelTester findingsTester(
+            findings, QAbstractItemModelTester::FailureReportingMode::QtTest);
+        int summaries = 0;
+        for (int row = 0; row < findings->rowCount(); ++row) {
+            const QString tool = findings->index(row, JobFindingsModel::ToolColumn).data().toString();
+            if (tool != u"50 tools"_s)
+                continue;
+            ++summaries;
+            QCOMPARE(findings->index(row, JobFindingsModel::LineColumn).data().toInt(), 2001);
+            QVERIFY(findings->index(row, JobFindingsModel::MessageColumn)
+                        .data()
+                        .toString()
+                        .startsWith(u"50 more tools"_s));
+        }
+        QCOMPARE(summaries, 2); // not in the table, not in the rack
+        const QString summary = dialog->findChild<QLabel *>(u"jobSummaryLabel"_s)->text();
+        QVERIFY2(summary.contains(u"tools: 1050"_s)
+                && summary.contains(u"Only the first 1000 tools are listed; the other 50 are counted"_s),
+            qPrintable(summary));
+        QCOMPARE(dialog->report()->errors(), 1050 - 6);
     }
 
 private:
