@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The job check of a long program: toffee-cli job check (lines per second, peak memory), LinuxCNC's own
 // interpreter rs274 on the same file where it is installed (the yardstick, in the same run), and the window's
-// check (its event loop's longest stall while the check runs on its own thread).
+// check (its event loop's longest stall while the check runs on its own thread). Then a hostile program: a
+// million distinct tools, against one of the same lines that loads six, for the memory each tool costs.
 //   toffee-bench-jobcheck [LINES]      (5,000,000 by default)
 #include <QApplication>
 #include <QElapsedTimer>
@@ -32,15 +33,17 @@ struct Timed
     int exitCode = -1;
 };
 
-Timed timeCli(const QString &program)
+Timed timeCli(const QString &program, const QStringList &more = { u"--no-history"_s })
 {
     Timed t;
     for (int run = 0; run < kRuns; ++run) {
         QElapsedTimer clock;
         clock.start();
-        const Test::MeasuredRun r = Test::cliWithPeak({ u"job"_s, u"check"_s, program, u"--table"_s, kExample,
-                                                          u"--no-history"_s, u"--stale-days"_s, u"3650"_s },
-            false);
+        const Test::MeasuredRun r
+            = Test::cliWithPeak(QStringList { u"job"_s, u"check"_s, program, u"--table"_s, kExample,
+                                    u"--stale-days"_s, u"3650"_s }
+                    + more,
+                false);
         t.bestMs = std::min(t.bestMs, double(clock.nsecsElapsed()) / 1e6);
         t.peakKb = std::max(t.peakKb, r.peakKb);
         t.exitCode = r.exitCode;
@@ -48,8 +51,8 @@ Timed timeCli(const QString &program)
     return t;
 }
 
-// rs274 -g runs a whole program and prints LinuxCNC's canonical commands, which go nowhere here; it stops at a
-// tool its table lacks, so it gets the example table as a LinuxCNC tool table.
+// rs274 -g runs a whole program and prints LinuxCNC's canonical commands, which go nowhere here; it stops at
+// a tool its table lacks, so it gets the example table as a LinuxCNC tool table.
 Timed timeRs274(const QString &rs274, const QString &program, const QString &toolTable)
 {
     Timed t;
@@ -77,9 +80,8 @@ void timeWindow(const QString &program, QTextStream &out)
     QElapsedTimer sinceTick;
     qint64 longestGap = 0;
     QTimer ticker;
-    QObject::connect(&ticker, &QTimer::timeout, &ticker, [&] {
-        longestGap = std::max(longestGap, sinceTick.restart());
-    });
+    QObject::connect(
+        &ticker, &QTimer::timeout, &ticker, [&] { longestGap = std::max(longestGap, sinceTick.restart()); });
     QElapsedTimer clock;
     clock.start();
     sinceTick.start();
@@ -88,8 +90,55 @@ void timeWindow(const QString &program, QTextStream &out)
     while (dialog->isRunning() || !dialog->report())
         QApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
     longestGap = std::max(longestGap, sinceTick.elapsed());
-    out << "| the window's check (File > Check Job) | " << QString::number(double(clock.nsecsElapsed()) / 1e6, 'f', 0)
-        << " ms | longest event-loop stall " << longestGap << " ms (aim <= 50) |\n";
+    out << "| the window's check (File > Check Job) | "
+        << QString::number(double(clock.nsecsElapsed()) / 1e6, 'f', 0) << " ms | longest event-loop stall "
+        << longestGap << " ms (aim <= 50) |\n";
+}
+
+// `changes` tool changes, each with a feed move: to `changes` distinct tools, or round six.
+bool writeToolChanges(const QString &path, int changes, bool distinct)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        return false;
+    QByteArray chunk = "G21 G90\n";
+    for (int t = 0; t < changes; ++t) {
+        chunk += "T" + QByteArray::number(distinct ? t : t % 6 + 1) + " M6\nG1 X" + QByteArray::number(t % 2)
+            + " F100\n";
+        if (chunk.size() > (1 << 20)) {
+            if (file.write(chunk) != chunk.size())
+                return false;
+            chunk.clear();
+        }
+    }
+    chunk += "M30\n";
+    return file.write(chunk) == chunk.size();
+}
+
+// A million changes to distinct tools against a million round six: the peak's difference is what the distinct
+// tools cost; with an empty history library too, which the check reads for the listed tools only.
+bool timeDistinctTools(const QTemporaryDir &dir, QTextStream &out)
+{
+    constexpr int kChanges = 1000000;
+    const QString ordinary = dir.filePath(u"six-tools.nc"_s);
+    const QString hostile = dir.filePath(u"distinct-tools.nc"_s);
+    if (!writeToolChanges(ordinary, kChanges, false) || !writeToolChanges(hostile, kChanges, true))
+        return false;
+    const Timed six = timeCli(ordinary);
+    const Timed distinct = timeCli(hostile);
+    const Timed library = timeCli(hostile, { u"--library"_s, dir.filePath(u"library.sqlite"_s) });
+    if (six.exitCode != 0 && six.exitCode != 1)
+        return false;
+    const double perTool = double(distinct.peakKb - six.peakKb) * 1024.0 / kChanges;
+    out << "| toffee-cli job check, " << kChanges << " changes to distinct tools | "
+        << QString::number(distinct.bestMs, 'f', 0) << " ms | peak "
+        << QString::number(double(distinct.peakKb) / 1024.0, 'f', 1) << " MB against "
+        << QString::number(double(six.peakKb) / 1024.0, 'f', 1) << " MB for as many changes round six tools ("
+        << QString::number(six.bestMs, 'f', 0) << " ms): " << QString::number(perTool, 'f', 1)
+        << " bytes per distinct tool (aim < 200) |\n"
+        << "| the same, with a history library | " << QString::number(library.bestMs, 'f', 0) << " ms | peak "
+        << QString::number(double(library.peakKb) / 1024.0, 'f', 1) << " MB |\n";
+    return true;
 }
 
 } // namespace
@@ -128,12 +177,19 @@ int main(int argc, char *argv[])
             return 1;
         }
         const Timed linuxcnc = timeRs274(rs274, program, toolTable);
-        out << "| LinuxCNC rs274 -g (the yardstick) | " << QString::number(linuxcnc.bestMs, 'f', 0) << " ms | "
-            << QString::number(double(lines) / linuxcnc.bestMs * 1000.0, 'f', 0) << " lines/s; Toffee is "
-            << QString::number(linuxcnc.bestMs / toffee.bestMs, 'f', 1) << "x as fast"
-            << (linuxcnc.exitCode == 0 ? u""_s : u" (rs274 stopped early: exit %1)"_s.arg(linuxcnc.exitCode)) << " |\n";
+        out << "| LinuxCNC rs274 -g (the yardstick) | " << QString::number(linuxcnc.bestMs, 'f', 0)
+            << " ms | " << QString::number(double(lines) / linuxcnc.bestMs * 1000.0, 'f', 0)
+            << " lines/s; Toffee is " << QString::number(linuxcnc.bestMs / toffee.bestMs, 'f', 1)
+            << "x as fast"
+            << (linuxcnc.exitCode == 0 ? u""_s : u" (rs274 stopped early: exit %1)"_s.arg(linuxcnc.exitCode))
+            << " |\n";
     }
     out.flush();
     timeWindow(program, out);
+    out.flush();
+    if (!timeDistinctTools(dir, out)) {
+        QTextStream(stderr) << "the distinct-tools check failed\n";
+        return 1;
+    }
     return 0;
 }
