@@ -22,6 +22,7 @@ HistoryRecorder::HistoryRecorder(QObject *parent)
 
 HistoryRecorder::~HistoryRecorder()
 {
+    spoolPending(); // closing the window loses nothing that waits
     delete m_watcher;
     if (m_probe)
         m_probe->wait(); // at most the connect timeout
@@ -56,9 +57,12 @@ void HistoryRecorder::closeLibrary()
 Result<void> HistoryRecorder::setLocation(const LibraryLocation &location, Library::Options options)
 {
     closeLibrary();
+    // What waits in memory (the last library would not even open) goes to this one, as the operator's
+    // measurements; what was kept on this computer stays with the library it was kept for.
     m_location = location;
     m_options = options;
     countOutbox();
+    countSpool();
     auto opened = Library::open(location, options);
     if (!opened) {
         fail(opened.error().message);
@@ -121,7 +125,33 @@ void HistoryRecorder::record(const HistoryEvent &event)
         flush();
     else if (m_location.isShared())
         lose(m_lastError); // into the outbox at once: a crash now loses nothing
+    else if (m_library)
+        spoolPending(); // the library is there but refuses writes: kept on this computer at once
     Q_EMIT pendingChanged(pendingCount());
+}
+
+void HistoryRecorder::setSpoolFolder(const QString &folder)
+{
+    m_spool = Spool(folder);
+    countSpool();
+}
+
+void HistoryRecorder::countSpool()
+{
+    const qsizetype before = m_spoolCount;
+    m_spoolCount = m_location.isSet() ? m_spool.count(m_location) : 0;
+    if (m_spoolCount != before)
+        Q_EMIT pendingChanged(pendingCount());
+}
+
+void HistoryRecorder::spoolPending()
+{
+    if (m_pending.isEmpty() || !m_location.isSet())
+        return;
+    if (m_spool.keep(m_location, m_pending)) {
+        m_pending.clear();
+        countSpool();
+    }
 }
 
 void HistoryRecorder::recordUse(const QList<ToolUse> &uses)
@@ -133,7 +163,8 @@ void HistoryRecorder::recordUse(const QList<ToolUse> &uses)
 
 bool HistoryRecorder::flush()
 {
-    const bool waiting = !m_pending.isEmpty() || !m_pendingUse.isEmpty() || m_outboxCount > 0;
+    const bool waiting
+        = !m_pending.isEmpty() || !m_pendingUse.isEmpty() || m_outboxCount > 0 || m_spoolCount > 0;
     if (!waiting && (m_library || !m_location.isSet())) {
         m_retry.stop();
         if (m_library && std::exchange(m_down, false)) {
@@ -143,6 +174,8 @@ bool HistoryRecorder::flush()
         return true;
     }
     if (!ensureOpen()) {
+        // A library that would not open (not a library at all, perhaps) keeps them in memory, to go to the
+        // library the operator chooses next; closing the window keeps them in the spool.
         if (m_location.isShared() && !m_pending.isEmpty())
             lose(m_lastError);
         return false;
@@ -153,8 +186,19 @@ bool HistoryRecorder::flush()
             return false;
         }
     }
+    if (m_spoolCount > 0) {
+        auto sent = m_spool.send(*m_library, [this](const QList<HistoryEvent> &events) {
+            countSpool();
+            Q_EMIT recorded(events);
+        });
+        countSpool();
+        if (!sent) {
+            m_location.isShared() ? lose(sent.error().message) : failAndSpool(sent.error().message);
+            return false;
+        }
+    }
     if (auto written = m_library->append(m_pending); !written) {
-        m_location.isShared() ? lose(written.error().message) : fail(written.error().message);
+        m_location.isShared() ? lose(written.error().message) : failAndSpool(written.error().message);
         return false;
     }
     const QList<HistoryEvent> done = std::exchange(m_pending, {});
@@ -213,6 +257,13 @@ void HistoryRecorder::lose(const QString &message)
         if (!keepInOutbox(u"events"_s, eventsPayload(events)))
             m_pending = events;
     }
+    spoolPending(); // the outbox could not take them (its own library locked, full): the spool's files
+    fail(message);
+}
+
+void HistoryRecorder::failAndSpool(const QString &message)
+{
+    spoolPending();
     fail(message);
 }
 

@@ -10,17 +10,19 @@
 #include "model/library/historyevent.h"
 #include "model/library/library.h"
 #include "model/library/outboxpayload.h"
+#include "model/library/spool.h"
 
 namespace Toffee {
 
 class LibraryWatcher;
 
 // A station's link to its library. It writes measurement events without ever holding up the table: an event
-// the library cannot take now (locked for too long, a full disk, a read-only file, a library that would not
-// open) waits and is written when the library takes writes again, and it says so once per outage, not once
-// per event. For a shared library what waits is kept in the station's own SQLite library (the outbox), so it
-// outlives a crash; each event's id makes a replay write it once. It also writes machine tables, and says
-// when another station changed the library.
+// the library cannot take now (locked for too long, a full disk, a read-only file, a damaged library, one
+// that would not open) waits and is written when the library takes writes again, and it says so once per
+// outage, not once per event. What waits is kept on this computer at once, so that it outlives a crash and
+// the window's closing: for a shared library in the station's own SQLite library (the outbox), else (or when
+// that cannot take it either) in the spool's files (spool.h); each event's id makes a replay write it once.
+// It also writes machine tables, and says when another station changed the library.
 class HistoryRecorder final : public QObject
 {
     Q_OBJECT
@@ -51,8 +53,10 @@ public:
     bool flush();
     [[nodiscard]] qsizetype pendingCount() const
     {
-        return m_pending.size() + m_pendingUse.size() + m_outboxCount;
+        return m_pending.size() + m_pendingUse.size() + m_outboxCount + m_spoolCount;
     }
+    // Where events the library cannot take are kept on this computer (Spool::defaultFolder() unless set).
+    void setSpoolFolder(const QString &folder);
     [[nodiscard]] bool isAvailable() const { return !m_down; }
     [[nodiscard]] QString lastError() const { return m_lastError; }
 
@@ -79,7 +83,12 @@ private:
     [[nodiscard]] Result<void> replayOutbox();
     void lose(const QString &message);
     void fail(const QString &message);
+    void failAndSpool(const QString &message);
     void countOutbox();
+    void countSpool();
+    // The events that wait in memory go to the spool, where neither a crash nor closing the window loses
+    // them; those it cannot take stay in memory.
+    void spoolPending();
     void checkConnection();
     void startProbe();
 
@@ -92,6 +101,8 @@ private:
     QList<HistoryEvent> m_pending;
     QList<ToolUse> m_pendingUse;
     qsizetype m_outboxCount = 0;
+    Spool m_spool;
+    qsizetype m_spoolCount = 0; // events kept in the spool for this library
     QTimer m_retry;
     QTimer m_health;
     bool m_down = false;

@@ -118,6 +118,25 @@ Result<Spool::Sent> Spool::send(
 {
     Sent sent;
     const QString target = library.location().text();
+    // In batches of one transaction each, oldest first: a hundred files are one write, not a hundred.
+    QStringList batch;
+    QList<HistoryEvent> events;
+    auto write = [&]() -> Result<void> {
+        if (batch.isEmpty())
+            return {};
+        if (auto appended = library.append(events); !appended)
+            return appended.error();
+        for (const QString &path : std::as_const(batch)) {
+            if (auto removed = remove(path); !removed)
+                return removed;
+        }
+        sent.events += int(events.size());
+        if (written)
+            written(events);
+        batch.clear();
+        events.clear();
+        return {};
+    };
     for (const QString &path : files()) {
         auto entry = read(path);
         if (!entry) {
@@ -127,14 +146,15 @@ Result<Spool::Sent> Spool::send(
         }
         if (entry.value().library != target)
             continue; // another library's
-        if (auto appended = library.append(entry.value().events); !appended)
-            return appended.error();
-        if (auto removed = remove(path); !removed)
-            return removed.error();
-        sent.events += int(entry.value().events.size());
-        if (written)
-            written(entry.value().events);
+        batch << path;
+        events << entry.value().events;
+        if (events.size() >= kBatchEvents) {
+            if (auto done = write(); !done)
+                return done.error();
+        }
     }
+    if (auto done = write(); !done)
+        return done.error();
     return sent;
 }
 

@@ -32,6 +32,8 @@ class Spool
 public:
     // A spool file is a few events: anything larger was not written by Toffee.
     static constexpr qint64 kMaxFileBytes = 1024 * 1024;
+    // How many events one transaction of send() writes at most.
+    static constexpr qsizetype kBatchEvents = 1000;
 
     explicit Spool(QString folder = defaultFolder());
     // <AppDataLocation>/outbox, beside LibraryLocation::standard().

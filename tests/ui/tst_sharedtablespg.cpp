@@ -136,7 +136,7 @@ private Q_SLOTS:
         QString said;
         answerNextBox(QMessageBox::Ok, &said);
         QVERIFY(!a.save().shown);
-        QVERIFY2(said.contains(u"permission denied"_s), qPrintable(said));
+        QVERIFY2(said.contains(u"is read-only for toffee"_s), qPrintable(said));
         QVERIFY(said.contains(u"Nothing was written"_s));
         QVERIFY(a.document()->isModified());
         QCOMPARE(a.tool(3).notes, u"first"_s);

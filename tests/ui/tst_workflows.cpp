@@ -485,6 +485,32 @@ private Q_SLOTS:
         QCOMPARE(s.window.history()->library()->history({}).value().size(), 1);
     }
 
+    // A library whose schema version another program made -1 (it crashed the window at every start): the
+    // window starts, says what is wrong and what to do, and the measurement waits for a library.
+    void aDamagedLibraryIsSaidAndTheWindowWorksOn()
+    {
+        Station s;
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"damaged.sqlite"_s);
+        QVERIFY(Library::open({ path }));
+        {
+            QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, u"damage"_s);
+            db.setDatabaseName(path);
+            QVERIFY(db.open());
+            QSqlQuery query(db);
+            QVERIFY(query.exec(u"UPDATE toffee_schema SET version = -1"_s));
+        }
+        QSqlDatabase::removeDatabase(u"damage"_s);
+        s.window.setLibrary({ path });
+        const QString said = s.window.statusBar()->currentMessage();
+        QVERIFY2(said.contains(u"is damaged: its schema version is \"-1\""_s), qPrintable(said));
+        QVERIFY(said.contains(u"restore it from a backup"_s));
+        s.connect();
+        s.probe();
+        QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
+        QCOMPARE(s.window.history()->pendingCount(), 1);
+    }
+
     // Machine ▸ History Library…: another library and another machine name; a folder is refused with the
     // dialog still open.
     void theHistoryLibraryAndTheMachinesNameAreChosenInADialog()

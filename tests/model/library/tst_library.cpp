@@ -10,11 +10,13 @@
 #include <QSignalSpy>
 #include <QSqlDatabase>
 #include <QSqlQuery>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include "model/library/historyrecorder.h"
 #include "model/library/library.h"
+#include "model/library/spool.h"
 #include "tests/support/fulldisk.h"
 
 using namespace Toffee;
@@ -82,6 +84,12 @@ class TestLibrary : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void initTestCase()
+    {
+        // The recorder's spool (Spool::defaultFolder) is under the test's own data folder, not the user's.
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
     void recordsEveryKindWithEveryField()
     {
         QTemporaryDir dir;
@@ -318,6 +326,60 @@ private Q_SLOTS:
         QCOMPARE(recorder.library()->history({}).value().size(), 2);
     }
 
+    // The window closes while the library is locked: what waited is in the spool's files, and the next
+    // recorder on that library writes it, once.
+    void eventsWaitingWhenTheRecorderGoesAreKeptAndWrittenOnce()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        const QString folder = dir.filePath(u"outbox"_s);
+        RawConnection other(path, u"raw-lock-close"_s);
+        {
+            HistoryRecorder recorder;
+            recorder.setSpoolFolder(folder);
+            QVERIFY(recorder.setLocation({ path }, Library::Options { 50 }));
+            QVERIFY(other.exec(u"BEGIN IMMEDIATE"_s));
+            recorder.record(makeEvent(3, EventKind::Probe, 0, -2.0));
+            recorder.record(makeEvent(3, EventKind::ManualSet, 1, -2.5));
+            QCOMPARE(recorder.pendingCount(), 2);
+            // Kept at once, not only when the window closes: a crash now loses nothing either.
+            QCOMPARE(Spool(folder).count({ path }), 2);
+        }
+        QCOMPARE(Spool(folder).count({ path }), 2);
+        QVERIFY(other.exec(u"ROLLBACK"_s));
+        for (int i = 0; i < 2; ++i) {
+            HistoryRecorder recorder;
+            recorder.setSpoolFolder(folder);
+            QVERIFY(recorder.setLocation({ path }));
+            QCOMPARE(recorder.pendingCount(), 0);
+            QCOMPARE(recorder.library()->history({}).value().size(), 2);
+        }
+        QCOMPARE(Spool(folder).count({ path }), 0);
+    }
+
+    // Another program drops the events table under the window: the events are kept, and the message says
+    // the library is damaged, in Toffee's words.
+    void aLibraryDamagedUnderTheRecorderKeepsTheEvents()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        const QString folder = dir.filePath(u"outbox"_s);
+        HistoryRecorder recorder;
+        recorder.setSpoolFolder(folder);
+        QVERIFY(recorder.setLocation({ path }));
+        QSignalSpy down(&recorder, &HistoryRecorder::unavailable);
+        {
+            RawConnection other(path, u"raw-drop"_s);
+            QVERIFY(other.exec(u"DROP TABLE events"_s));
+        }
+        recorder.record(makeEvent(4, EventKind::Probe, 0, -1.0));
+        QCOMPARE(down.size(), 1);
+        const QString said = down.front().front().toString();
+        QVERIFY2(said.contains(u"is damaged: its table \"events\" is missing"_s), qPrintable(said));
+        QCOMPARE(Spool(folder).count({ path }), 1);
+        QCOMPARE(recorder.pendingCount(), 1);
+    }
+
     void aFullDiskKeepsTheEventsAndWritesThemWhenThereIsRoom()
     {
         Test::FullDisk disk(1024 * 1024);
@@ -334,7 +396,7 @@ private Q_SLOTS:
         QCOMPARE(recorder.pendingCount(), 200); // a failed batch is not half-written: all of it waits
         QVERIFY2(down.front().front().toString().contains(path), qPrintable(down.front().front().toString()));
         disk.free();
-        QVERIFY(recorder.flush());
+        QVERIFY2(recorder.flush(), qPrintable(recorder.lastError()));
         QCOMPARE(recorder.library()->history({}).value().size(), 201);
         QCOMPARE(recorder.pendingCount(), 0);
     }
