@@ -85,8 +85,16 @@ void SerialPortTransport::handleError(QSerialPort::SerialPortError error)
         return;
     // Any other error means the port can no longer be trusted: a hung-up device makes QSerialPort repeat its
     // error endlessly. Say it once and close, so that pending commands fail at once.
-    const QString message = error == QSerialPort::ResourceError
-        ? tr("The port %1 went away (unplugged, or the machine was switched off).").arg(m_name)
+    // A device that vanished (a pty whose other end closed, a USB cable pulled) reports a read, write,
+    // resource or unknown error, and errorString() then holds whatever errno was last ("File exists",
+    // "Inappropriate ioctl for device"): it is not shown for these.
+    const bool vanished = error == QSerialPort::ResourceError || error == QSerialPort::ReadError
+        || error == QSerialPort::WriteError || error == QSerialPort::UnknownError;
+    const QString message = vanished
+        ? tr("The port %1 stopped answering and was closed: the cable was unplugged, the machine switched "
+             "off, or the program serving the port ended. Check the cable and the machine, then connect "
+             "again.")
+              .arg(m_name)
         : tr("The port %1 failed (%2); the link was closed. Check the cable and connect again.")
               .arg(m_name, m_port.errorString());
     m_port.clearError();

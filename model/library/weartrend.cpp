@@ -66,14 +66,17 @@ std::optional<WearTrend> WearTrend::fit(const QList<TrendPoint> &points)
     }
     const int freedom = t.points - (sxx > 0.0 ? 2 : 1);
     t.spread = freedom > 0 ? std::sqrt(ss / double(freedom)) : 0.0;
+    // Values no machine measures overflow the sums: no trend then, rather than one of infinities.
+    if (!std::isfinite(t.slope) || !std::isfinite(t.intercept) || !std::isfinite(t.spread))
+        return std::nullopt;
     return t;
 }
 
 std::optional<QString> WearTrend::check(int tool, double x, double tlo, double tolerance) const
 {
     const double off = tlo - predict(x);
-    if (std::fabs(off) <= tolerance)
-        return std::nullopt;
+    if (!std::isfinite(off) || std::fabs(off) <= tolerance)
+        return std::nullopt; // never "nan mm longer"
     const QString amount = millimetres(std::fabs(off));
     const QString band = formatNumber(tolerance, NumberFormat::upTo(3).inLocale());
     return off < 0

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A tool's wear trend, on rows computed by hand, and the warning a probe off the trend gets.
+#include <limits>
+
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -70,6 +72,16 @@ private Q_SLOTS:
         QCOMPARE(one->slope, 0.0);
         QCOMPARE(one->predict(99999), -7.5);
         QCOMPARE(one->spread, 0.0);
+    }
+
+    // Values no machine measures (rows another program wrote): no trend, no "nan mm longer".
+    void fitsNoTrendToValuesThatOverflowAndWarnsOfNoNumberThatIsNot()
+    {
+        QVERIFY(!WearTrend::fit({ { 0, 1e308 }, { 3600, 1e308 }, { 7200, -1e308 } }));
+        const auto trend = WearTrend::fit({ { 0, -10.0 }, { 3600, -10.01 } });
+        QVERIFY(trend);
+        QVERIFY(!trend->check(3, 7200, std::numeric_limits<double>::quiet_NaN(), 0.1));
+        QVERIFY(!trend->check(3, std::numeric_limits<double>::infinity(), -10.0, 0.1));
     }
 
     void warnsWithNumbersWhenAProbeIsOffTheTrend()
