@@ -33,9 +33,11 @@ namespace Toffee {
 
 namespace {
 
-// A write waits this long for toffee-cli's to finish, then the event waits in memory: the window never stalls
-// for the library.
+// A write waits this long for another program's lock (SQLite's busy timeout, PostgreSQL's lock_timeout), then
+// the event is kept on this computer: the window never stalls for the library. A statement itself may run
+// longer (reading a long history from a busy server), up to kWindowStatementTimeoutMs.
 constexpr int kWindowBusyTimeoutMs = 250;
+constexpr int kWindowStatementTimeoutMs = 5000;
 
 } // namespace
 
@@ -98,7 +100,10 @@ void MainWindow::setLibrary(const LibraryLocation &location, const QString &stat
     // The window opens a shared library on its own thread: a server that does not answer holds it up for the
     // connect timeout, so that is short. (Reconnecting is asked from another thread: HistoryRecorder.)
     const Library::Options options {
-        .busyTimeoutMs = kWindowBusyTimeoutMs, .connectTimeoutS = 2, .station = m_station
+        .busyTimeoutMs = kWindowBusyTimeoutMs,
+        .statementTimeoutMs = kWindowStatementTimeoutMs,
+        .connectTimeoutS = 2,
+        .station = m_station
     };
     // A failure is told by the recorder's unavailable(); the measurements wait for a library that opens, and
     // a shared one's wait in the station's own library (the outbox).
