@@ -69,7 +69,12 @@ Result<CamTool> readToolLine(QByteArrayView line, int lineNumber)
     bool hasNumber = false;
     // Each field Toffee reads, as first given: a second one would silently win.
     QHash<QByteArrayView, QByteArrayView> seen;
-    for (QByteArrayView field : splitView(line.sliced(kToolLine.size()), '|')) {
+    // Field by field, not split into a list first: a 4 MB line of bars would be a list of 64 MB.
+    const QByteArrayView fields = line.sliced(kToolLine.size());
+    for (qsizetype from = 0; from <= fields.size();) {
+        const qsizetype bar = fields.indexOf('|', from);
+        const QByteArrayView field = fields.sliced(from, (bar < 0 ? fields.size() : bar) - from);
+        from = bar < 0 ? fields.size() + 1 : bar + 1;
         const qsizetype equals = field.indexOf('=');
         if (equals <= 0)
             continue; // not key=value: nothing Toffee reads

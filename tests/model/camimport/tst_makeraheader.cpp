@@ -1,5 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Makera CAM's tool header in a G-code program (model/camimport/makeraheader.cpp).
+#include <csignal>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <QFile>
 #include <QTest>
 
 #include "model/camimport/camreaders.h"
@@ -7,6 +14,23 @@
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
+
+namespace {
+
+// The address space this process has now (VmSize), in bytes.
+qint64 addressSpace()
+{
+    QFile status(u"/proc/self/status"_s);
+    if (!status.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray &line : status.readAll().split('\n')) {
+        if (line.startsWith("VmSize:"))
+            return line.mid(7).trimmed().split(' ').value(0).toLongLong() * 1024;
+    }
+    return -1;
+}
+
+} // namespace
 
 class TestMakeraHeader : public QObject
 {
@@ -108,6 +132,34 @@ private Q_SLOTS:
         QVERIFY2(read.error().message.startsWith(u"this is not a text program"_s),
             qPrintable(read.error().message));
         QCOMPARE(read.error().line, 1);
+    }
+
+    // A tool line is read a field at a time: a line of 4 MB of empty fields is read in a child whose address
+    // space may grow by 16 MB (split into a list first, it took 64 MB).
+    void readsALineOfManyFieldsInBoundedMemory()
+    {
+        const QByteArray program
+            = Test::makeraProgram({ ";@MKR|TOOL|number=1" + QByteArray(kMaxProgramHeaderBytes - 1024, '|') });
+        const qint64 limit = addressSpace() + 16LL * 1024 * 1024;
+        const pid_t child = fork();
+        QVERIFY(child >= 0);
+        if (child == 0) {
+            std::signal(SIGABRT, SIG_DFL); // an abort ends the child quietly, not through QTest's handler
+            const rlimit rl { rlim_t(limit), rlim_t(limit) };
+            if (setrlimit(RLIMIT_AS, &rl) != 0)
+                _exit(3);
+            try {
+                const auto read = readMakeraHeader(program);
+                _exit(read.ok() && read.value().size() == 1 ? 0 : 1);
+            } catch (...) { // std::bad_alloc: QTest would catch it, and the child would run on as a test
+                _exit(4);
+            }
+        }
+        int status = 0;
+        QCOMPARE(waitpid(child, &status, 0), child);
+        QVERIFY2(WIFEXITED(status), "the reader crashed");
+        QVERIFY2(WEXITSTATUS(status) != 4, "the reader ran out of memory");
+        QCOMPARE(WEXITSTATUS(status), 0);
     }
 
     void refusesAHeaderThatRunsPastWhatWasRead()
