@@ -138,6 +138,19 @@ private Q_SLOTS:
         QTest::newRow("wrong namespace")
             << u"lib.hsmlib"_s << Test::hsmLibrary(Test::hsmTool(1), u"tool-library"_s, u"urn:x"_s)
             << "lib.hsmlib: line 2: column"_ba;
+        QTest::newRow("a key twice")
+            << u"lib.json"_s
+            << Test::fusionLibrary({ Test::fusionTool(1).replace(R"("turret": 0)", R"("number": 4)") })
+            << "lib.json: line 7: column 37: the key \"number\" appears twice in \"post-process\"; "
+               "Toffee will not guess which one is meant."_ba;
+        QString attributes;
+        for (int i = 0; i < 300; ++i)
+            attributes += u" a"_s + QString::number(i) + u"=\"1\""_s;
+        QTest::newRow("an element of 300 attributes")
+            << u"lib.hsmlib"_s
+            << Test::hsmLibrary(
+                   QString(Test::hsmTool(1)).replace(u"<tool "_s, u"<tool"_s + attributes + u" "_s))
+            << "lib.hsmlib: line 3: this is not an HSM tool library Toffee reads: <tool> has more than 256 attributes"_ba;
         QTest::newRow("number=abc") << u"part.nc"_s
                                     << Test::makeraProgram({ ";@MKR|TOOL|number=abc|diameter=3" })
                                     << "part.nc: line 3: number=abc is not a tool number."_ba;
