@@ -2681,10 +2681,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Das Lesen der Maschinen</translation>
     </message>
     <message>
-        <source>%1 cannot be written: %2</source>
-        <translation>%1 lässt sich nicht schreiben: %2</translation>
-    </message>
-    <message>
         <source>Recording T%1&apos;s %2</source>
         <translation>Das Aufzeichnen von T%1 (%2)</translation>
     </message>
@@ -2837,10 +2833,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die Bibliothek hat keine Werkzeugtabelle für %1.</translation>
     </message>
     <message>
-        <source>%1: T%2 of %3&apos;s table cannot be read: %4</source>
-        <translation>%1: T%2 der Tabelle von %3 lässt sich nicht lesen: %4</translation>
-    </message>
-    <message>
         <source>Reading T%1 of %2</source>
         <translation>Das Lesen von T%1 aus der Tabelle von %2</translation>
     </message>
@@ -2879,6 +2871,74 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>An outbox entry cannot be read; it is kept as it is.</source>
         <translation>Ein Eintrag im Postausgang lässt sich nicht lesen; er bleibt unverändert erhalten.</translation>
+    </message>
+    <message>
+        <source>The library (%1) was busy: another station or program held what Toffee needed (%2) for more than %3 s, Toffee&apos;s limit.</source>
+        <translation>Die Bibliothek (%1) war belegt: Eine andere Station oder ein anderes Programm hielt, was Toffee brauchte (%2), länger als %3 s, die Grenze von Toffee.</translation>
+    </message>
+    <message>
+        <source>a table or column Toffee needs is missing (%1)</source>
+        <translation>eine Tabelle oder Spalte, die Toffee braucht, fehlt (%1)</translation>
+    </message>
+    <message>
+        <source>the database gave no reason</source>
+        <translation>die Datenbank nannte keinen Grund</translation>
+    </message>
+    <message>
+        <source>Starting a write</source>
+        <translation>Das Beginnen eines Schreibvorgangs</translation>
+    </message>
+    <message>
+        <source>Setting how long to wait</source>
+        <translation>Das Festlegen der Wartezeit</translation>
+    </message>
+    <message>
+        <source>Writing</source>
+        <translation>Das Schreiben</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2. Toffee leaves it as it is and writes nothing into it: restore it from a backup (docs/LIBRARY.md), or choose another library.</source>
+        <translation>%1 ist beschädigt: %2. Toffee lässt sie unverändert und schreibt nichts hinein: Stellen Sie sie aus einer Sicherung wieder her (docs/LIBRARY.md) oder wählen Sie eine andere Bibliothek.</translation>
+    </message>
+    <message>
+        <source>its table &quot;%1&quot; is missing</source>
+        <translation>ihre Tabelle „%1“ fehlt</translation>
+    </message>
+    <message>
+        <source>its table &quot;%1&quot; was altered: it has no column &quot;%2&quot;</source>
+        <translation>ihre Tabelle „%1“ wurde verändert: Sie hat keine Spalte „%2“</translation>
+    </message>
+    <message>
+        <source>its version table (toffee_schema) is empty, so it cannot say which Toffee wrote it</source>
+        <translation>ihre Versionstabelle (toffee_schema) ist leer, sie kann also nicht sagen, welches Toffee sie schrieb</translation>
+    </message>
+    <message>
+        <source>its version table (toffee_schema) holds more than one version</source>
+        <translation>ihre Versionstabelle (toffee_schema) enthält mehr als eine Version</translation>
+    </message>
+    <message>
+        <source>its schema version is &quot;%1&quot;, which is not a version any Toffee writes</source>
+        <translation>ihre Schemaversion ist „%1“, eine Version, die kein Toffee schreibt</translation>
+    </message>
+    <message>
+        <source>%1: %2&apos;s table says its units are %3, neither mm nor in; it was written by another program or by hand, and is not opened.</source>
+        <translation>%1: Die Tabelle von %2 nennt die Einheiten %3, weder mm noch in; sie wurde von einem anderen Programm oder von Hand geschrieben und wird nicht geöffnet.</translation>
+    </message>
+    <message>
+        <source>%1: %2&apos;s table has rows Toffee cannot read, so it is not opened and nothing was written: %3. They were written by another program or by hand; put the table back from a backup, or have whoever changed them correct them (docs/LIBRARY.md).</source>
+        <translation>%1: Die Tabelle von %2 hat Zeilen, die Toffee nicht lesen kann; sie wird daher nicht geöffnet, und nichts wurde geschrieben: %3. Sie wurden von einem anderen Programm oder von Hand geschrieben; stellen Sie die Tabelle aus einer Sicherung wieder her oder lassen Sie sie von dem korrigieren, der sie geändert hat (docs/LIBRARY.md).</translation>
+    </message>
+    <message>
+        <source>%1: %2&apos;s table has units %3, neither mm nor in.</source>
+        <translation>%1: Die Tabelle von %2 hat die Einheiten %3, weder mm noch in.</translation>
+    </message>
+    <message>
+        <source>%1: %2&apos;s %3. Nothing was written to it.</source>
+        <translation>%1: Tabelle von %2, %3. Nichts wurde hineingeschrieben.</translation>
+    </message>
+    <message>
+        <source>and %1 more</source>
+        <translation>und %1 weitere</translation>
     </message>
 </context>
 <context>
@@ -4584,6 +4644,129 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     </message>
 </context>
 <context>
+    <name>Toffee::RowReader</name>
+    <message>
+        <source>a blob of %1 bytes</source>
+        <translation>ein Blob von %1 Byte</translation>
+    </message>
+    <message>
+        <source>a row&apos;s tool number is %1, not a tool number (%2 to %3)</source>
+        <translation>die Werkzeugnummer einer Zeile ist %1, keine Werkzeugnummer (%2 bis %3)</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s row</source>
+        <translation>Zeile von T%1</translation>
+    </message>
+    <message>
+        <source>its version is %1, not a whole number from 1 up</source>
+        <translation>ihre Version ist %1, keine ganze Zahl ab 1</translation>
+    </message>
+    <message>
+        <source>&quot;deleted&quot; is %1, not 0 or 1</source>
+        <translation>„deleted“ ist %1, nicht 0 oder 1</translation>
+    </message>
+    <message>
+        <source>its data is %1 characters long; no tool&apos;s is longer than %2 KB</source>
+        <translation>ihre Daten sind %1 Zeichen lang; die keines Werkzeugs sind länger als %2 KB</translation>
+    </message>
+    <message>
+        <source>its data is %1, not a tool</source>
+        <translation>ihre Daten sind %1, kein Werkzeug</translation>
+    </message>
+    <message>
+        <source>its data is T%1&apos;s, not T%2&apos;s</source>
+        <translation>ihre Daten gehören zu T%1, nicht zu T%2</translation>
+    </message>
+    <message>
+        <source>event %1: %2</source>
+        <translation>Ereignis %1: %2</translation>
+    </message>
+    <message>
+        <source>its id is not an event&apos;s</source>
+        <translation>ihre Kennung ist keine eines Ereignisses</translation>
+    </message>
+    <message>
+        <source>it names no machine</source>
+        <translation>es nennt keine Maschine</translation>
+    </message>
+    <message>
+        <source>its tool %1 is not a tool number</source>
+        <translation>sein Werkzeug %1 ist keine Werkzeugnummer</translation>
+    </message>
+    <message>
+        <source>it has no valid time</source>
+        <translation>es hat keine gültige Zeit</translation>
+    </message>
+    <message>
+        <source>its %1 is %2, which no machine measures</source>
+        <translation>sein Wert %1 ist %2, was keine Maschine misst</translation>
+    </message>
+    <message>
+        <source>its tolerance is negative</source>
+        <translation>seine Toleranz ist negativ</translation>
+    </message>
+    <message>
+        <source>an event&apos;s row has %1 columns, not %2</source>
+        <translation>die Zeile eines Ereignisses hat %1 Spalten, nicht %2</translation>
+    </message>
+    <message>
+        <source>its id is not text of up to %1 characters</source>
+        <translation>seine Kennung ist kein Text von höchstens %1 Zeichen</translation>
+    </message>
+    <message>
+        <source>its machine is %1, not a machine&apos;s name</source>
+        <translation>seine Maschine ist %1, kein Maschinenname</translation>
+    </message>
+    <message>
+        <source>its tool is %1, not a tool number (%2 to %3)</source>
+        <translation>sein Werkzeug ist %1, keine Werkzeugnummer (%2 bis %3)</translation>
+    </message>
+    <message>
+        <source>its time is %1, not a time in UTC (2026-11-23T08:10:00.125Z)</source>
+        <translation>seine Zeit ist %1, keine Zeit in UTC (2026-11-23T08:10:00.125Z)</translation>
+    </message>
+    <message>
+        <source>its kind is %1, not one Toffee records</source>
+        <translation>seine Art ist %1, keine, die Toffee aufzeichnet</translation>
+    </message>
+    <message>
+        <source>its %1 is %2, not a number</source>
+        <translation>sein Wert %1 ist %2, keine Zahl</translation>
+    </message>
+    <message>
+        <source>&quot;failed&quot; is %1, not 0 or 1</source>
+        <translation>„failed“ ist %1, nicht 0 oder 1</translation>
+    </message>
+    <message>
+        <source>a tool use&apos;s row has %1 columns, not 7</source>
+        <translation>die Zeile einer Werkzeugnutzung hat %1 Spalten, nicht 7</translation>
+    </message>
+    <message>
+        <source>tool use %1: %2</source>
+        <translation>Werkzeugnutzung %1: %2</translation>
+    </message>
+    <message>
+        <source>its tool is %1, not a tool number</source>
+        <translation>sein Werkzeug ist %1, keine Werkzeugnummer</translation>
+    </message>
+    <message>
+        <source>its time is %1, not a time in UTC</source>
+        <translation>seine Zeit ist %1, keine Zeit in UTC</translation>
+    </message>
+    <message>
+        <source>its program is %1, not a file name</source>
+        <translation>sein Programm ist %1, kein Dateiname</translation>
+    </message>
+    <message>
+        <source>its cutting time is %1, not a number of seconds</source>
+        <translation>seine Schnittzeit ist %1, keine Anzahl Sekunden</translation>
+    </message>
+    <message>
+        <source>its feed path is %1, not a length</source>
+        <translation>sein Vorschubweg ist %1, keine Länge</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::SelfTest</name>
     <message>
         <source>no progress within 20 s</source>
@@ -4645,16 +4828,31 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation>%1 mit %2 Baud</translation>
     </message>
     <message>
-        <source>The port %1 went away (unplugged, or the machine was switched off).</source>
-        <translation>Der Anschluss %1 ist verschwunden (ausgesteckt oder die Maschine ausgeschaltet).</translation>
-    </message>
-    <message>
         <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
         <translation>Der Anschluss %1 ist ausgefallen (%2); die Verbindung wurde geschlossen. Prüfen Sie das Kabel und verbinden Sie erneut.</translation>
     </message>
     <message>
         <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
         <translation>%1 hat eine Zeile mit mehr als %2 Byte gesendet; nur ihre ersten %2 Byte wurden behalten.</translation>
+    </message>
+    <message>
+        <source>The port %1 stopped answering and was closed: the cable was unplugged, the machine switched off, or the program serving the port ended. Check the cable and the machine, then connect again.</source>
+        <translation>Der Anschluss %1 antwortet nicht mehr und wurde geschlossen: Das Kabel wurde abgezogen, die Maschine ausgeschaltet oder das Programm hinter dem Anschluss beendet. Prüfen Sie Kabel und Maschine und verbinden Sie erneut.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::Spool</name>
+    <message>
+        <source>The folder %1 cannot be made, so nothing can be kept there.</source>
+        <translation>Der Ordner %1 lässt sich nicht anlegen; darin kann nichts aufbewahrt werden.</translation>
+    </message>
+    <message>
+        <source>%1 was written to the library but cannot be removed from this computer; it will be sent again, and the library will find it already there.</source>
+        <translation>%1 wurde in die Bibliothek geschrieben, lässt sich aber von diesem Computer nicht entfernen; es wird erneut gesendet, und die Bibliothek findet es dann schon vor.</translation>
+    </message>
+    <message>
+        <source>%1 is not a measurement Toffee kept: it was changed or damaged.</source>
+        <translation>%1 ist keine Messung, die Toffee aufbewahrt hat: Sie wurde verändert oder beschädigt.</translation>
     </message>
 </context>
 <context>

@@ -2681,10 +2681,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>读取机器</translation>
     </message>
     <message>
-        <source>%1 cannot be written: %2</source>
-        <translation>无法写入 %1：%2</translation>
-    </message>
-    <message>
         <source>Recording T%1&apos;s %2</source>
         <translation>记录 T%1 的 %2</translation>
     </message>
@@ -2837,10 +2833,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>刀具库中没有 %1 的刀具表。</translation>
     </message>
     <message>
-        <source>%1: T%2 of %3&apos;s table cannot be read: %4</source>
-        <translation>%1：无法读取 %3 的刀具表中的 T%2：%4</translation>
-    </message>
-    <message>
         <source>Reading T%1 of %2</source>
         <translation>读取 %2 的 T%1</translation>
     </message>
@@ -2879,6 +2871,74 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>An outbox entry cannot be read; it is kept as it is.</source>
         <translation>无法读取发件箱中的一个条目；它将保持原样。</translation>
+    </message>
+    <message>
+        <source>The library (%1) was busy: another station or program held what Toffee needed (%2) for more than %3 s, Toffee&apos;s limit.</source>
+        <translation>库（%1）正忙：另一个工位或程序占用了 Toffee 所需的资源（%2），超过了 Toffee 的时限 %3 秒。</translation>
+    </message>
+    <message>
+        <source>a table or column Toffee needs is missing (%1)</source>
+        <translation>缺少 Toffee 需要的表或列（%1）</translation>
+    </message>
+    <message>
+        <source>the database gave no reason</source>
+        <translation>数据库未给出原因</translation>
+    </message>
+    <message>
+        <source>Starting a write</source>
+        <translation>开始写入</translation>
+    </message>
+    <message>
+        <source>Setting how long to wait</source>
+        <translation>设置等待时限</translation>
+    </message>
+    <message>
+        <source>Writing</source>
+        <translation>写入</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2. Toffee leaves it as it is and writes nothing into it: restore it from a backup (docs/LIBRARY.md), or choose another library.</source>
+        <translation>%1 已损坏：%2。Toffee 保持原样，不写入任何内容：请从备份恢复（docs/LIBRARY.md），或选择其他库。</translation>
+    </message>
+    <message>
+        <source>its table &quot;%1&quot; is missing</source>
+        <translation>其表“%1”缺失</translation>
+    </message>
+    <message>
+        <source>its table &quot;%1&quot; was altered: it has no column &quot;%2&quot;</source>
+        <translation>其表“%1”已被修改：没有列“%2”</translation>
+    </message>
+    <message>
+        <source>its version table (toffee_schema) is empty, so it cannot say which Toffee wrote it</source>
+        <translation>其版本表（toffee_schema）为空，无法说明由哪个 Toffee 写入</translation>
+    </message>
+    <message>
+        <source>its version table (toffee_schema) holds more than one version</source>
+        <translation>其版本表（toffee_schema）包含多个版本</translation>
+    </message>
+    <message>
+        <source>its schema version is &quot;%1&quot;, which is not a version any Toffee writes</source>
+        <translation>其架构版本为“%1”，这不是任何 Toffee 会写入的版本</translation>
+    </message>
+    <message>
+        <source>%1: %2&apos;s table says its units are %3, neither mm nor in; it was written by another program or by hand, and is not opened.</source>
+        <translation>%1：%2 的表声明其单位为 %3，既不是 mm 也不是 in；它由其他程序或手工写入，因此不会打开。</translation>
+    </message>
+    <message>
+        <source>%1: %2&apos;s table has rows Toffee cannot read, so it is not opened and nothing was written: %3. They were written by another program or by hand; put the table back from a backup, or have whoever changed them correct them (docs/LIBRARY.md).</source>
+        <translation>%1：%2 的表中有 Toffee 无法读取的行，因此不会打开，也未写入任何内容：%3。这些行由其他程序或手工写入；请从备份恢复该表，或请修改者更正（docs/LIBRARY.md）。</translation>
+    </message>
+    <message>
+        <source>%1: %2&apos;s table has units %3, neither mm nor in.</source>
+        <translation>%1：%2 的表单位为 %3，既不是 mm 也不是 in。</translation>
+    </message>
+    <message>
+        <source>%1: %2&apos;s %3. Nothing was written to it.</source>
+        <translation>%1：%2 的%3。未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>and %1 more</source>
+        <translation>以及另外 %1 个</translation>
     </message>
 </context>
 <context>
@@ -4584,6 +4644,129 @@ when it is fresh (no probe)</source>
     </message>
 </context>
 <context>
+    <name>Toffee::RowReader</name>
+    <message>
+        <source>a blob of %1 bytes</source>
+        <translation>%1 字节的二进制数据</translation>
+    </message>
+    <message>
+        <source>a row&apos;s tool number is %1, not a tool number (%2 to %3)</source>
+        <translation>某行的刀具号为 %1，不是刀具号（%2 到 %3）</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s row</source>
+        <translation>T%1 的行</translation>
+    </message>
+    <message>
+        <source>its version is %1, not a whole number from 1 up</source>
+        <translation>其版本为 %1，不是从 1 起的整数</translation>
+    </message>
+    <message>
+        <source>&quot;deleted&quot; is %1, not 0 or 1</source>
+        <translation>“deleted”为 %1，不是 0 或 1</translation>
+    </message>
+    <message>
+        <source>its data is %1 characters long; no tool&apos;s is longer than %2 KB</source>
+        <translation>其数据长 %1 个字符；任何刀具的数据都不超过 %2 KB</translation>
+    </message>
+    <message>
+        <source>its data is %1, not a tool</source>
+        <translation>其数据为 %1，不是刀具</translation>
+    </message>
+    <message>
+        <source>its data is T%1&apos;s, not T%2&apos;s</source>
+        <translation>其数据属于 T%1，而不是 T%2</translation>
+    </message>
+    <message>
+        <source>event %1: %2</source>
+        <translation>事件 %1：%2</translation>
+    </message>
+    <message>
+        <source>its id is not an event&apos;s</source>
+        <translation>其标识不是事件的标识</translation>
+    </message>
+    <message>
+        <source>it names no machine</source>
+        <translation>未指明机器</translation>
+    </message>
+    <message>
+        <source>its tool %1 is not a tool number</source>
+        <translation>其刀具 %1 不是刀具号</translation>
+    </message>
+    <message>
+        <source>it has no valid time</source>
+        <translation>没有有效时间</translation>
+    </message>
+    <message>
+        <source>its %1 is %2, which no machine measures</source>
+        <translation>其 %1 为 %2，没有机器会测得此值</translation>
+    </message>
+    <message>
+        <source>its tolerance is negative</source>
+        <translation>其公差为负</translation>
+    </message>
+    <message>
+        <source>an event&apos;s row has %1 columns, not %2</source>
+        <translation>事件行有 %1 列，而不是 %2 列</translation>
+    </message>
+    <message>
+        <source>its id is not text of up to %1 characters</source>
+        <translation>其标识不是最多 %1 个字符的文本</translation>
+    </message>
+    <message>
+        <source>its machine is %1, not a machine&apos;s name</source>
+        <translation>其机器为 %1，不是机器名称</translation>
+    </message>
+    <message>
+        <source>its tool is %1, not a tool number (%2 to %3)</source>
+        <translation>其刀具为 %1，不是刀具号（%2 到 %3）</translation>
+    </message>
+    <message>
+        <source>its time is %1, not a time in UTC (2026-11-23T08:10:00.125Z)</source>
+        <translation>其时间为 %1，不是 UTC 时间（2026-11-23T08:10:00.125Z）</translation>
+    </message>
+    <message>
+        <source>its kind is %1, not one Toffee records</source>
+        <translation>其类型为 %1，不是 Toffee 记录的类型</translation>
+    </message>
+    <message>
+        <source>its %1 is %2, not a number</source>
+        <translation>其 %1 为 %2，不是数字</translation>
+    </message>
+    <message>
+        <source>&quot;failed&quot; is %1, not 0 or 1</source>
+        <translation>“failed”为 %1，不是 0 或 1</translation>
+    </message>
+    <message>
+        <source>a tool use&apos;s row has %1 columns, not 7</source>
+        <translation>刀具使用行有 %1 列，而不是 7 列</translation>
+    </message>
+    <message>
+        <source>tool use %1: %2</source>
+        <translation>刀具使用 %1：%2</translation>
+    </message>
+    <message>
+        <source>its tool is %1, not a tool number</source>
+        <translation>其刀具为 %1，不是刀具号</translation>
+    </message>
+    <message>
+        <source>its time is %1, not a time in UTC</source>
+        <translation>其时间为 %1，不是 UTC 时间</translation>
+    </message>
+    <message>
+        <source>its program is %1, not a file name</source>
+        <translation>其程序为 %1，不是文件名</translation>
+    </message>
+    <message>
+        <source>its cutting time is %1, not a number of seconds</source>
+        <translation>其切削时间为 %1，不是秒数</translation>
+    </message>
+    <message>
+        <source>its feed path is %1, not a length</source>
+        <translation>其进给路径为 %1，不是长度</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::SelfTest</name>
     <message>
         <source>no progress within 20 s</source>
@@ -4645,16 +4828,31 @@ when it is fresh (no probe)</source>
         <translation>%1，%2 波特</translation>
     </message>
     <message>
-        <source>The port %1 went away (unplugged, or the machine was switched off).</source>
-        <translation>端口 %1 已消失（被拔出，或机床已关机）。</translation>
-    </message>
-    <message>
         <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
         <translation>端口 %1 出错（%2）；连接已关闭。请检查线缆后重新连接。</translation>
     </message>
     <message>
         <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
         <translation>%1 发送了超过 %2 字节的一行；只保留了其前 %2 字节。</translation>
+    </message>
+    <message>
+        <source>The port %1 stopped answering and was closed: the cable was unplugged, the machine switched off, or the program serving the port ended. Check the cable and the machine, then connect again.</source>
+        <translation>端口 %1 停止响应并已关闭：电缆被拔出、机器已关闭，或为该端口服务的程序已结束。请检查电缆和机器，然后重新连接。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::Spool</name>
+    <message>
+        <source>The folder %1 cannot be made, so nothing can be kept there.</source>
+        <translation>无法创建文件夹 %1，因此无法在其中保存任何内容。</translation>
+    </message>
+    <message>
+        <source>%1 was written to the library but cannot be removed from this computer; it will be sent again, and the library will find it already there.</source>
+        <translation>%1 已写入库，但无法从此计算机删除；它将被再次发送，库会发现它已存在。</translation>
+    </message>
+    <message>
+        <source>%1 is not a measurement Toffee kept: it was changed or damaged.</source>
+        <translation>%1 不是 Toffee 保存的测量：它已被更改或损坏。</translation>
     </message>
 </context>
 <context>

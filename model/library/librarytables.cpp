@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Machine tables in the library: read, created, written tool by tool against each row's version, and kept up
 // to date by every new measurement event.
-#include <climits>
-
 #include <QMap>
 #include <QSqlDatabase>
 #include <QSqlError>
@@ -153,7 +151,7 @@ Result<StoredTable> Library::readTable(const QString &machine) const
     if (!unreadable.isEmpty()) {
         QString list = unreadable.join(u"; "_s);
         if (moreUnreadable > 0)
-            list += u"; "_s + tr("and %n more", nullptr, int(std::min<qsizetype>(moreUnreadable, INT_MAX)));
+            list += u"; "_s + tr("and %1 more").arg(moreUnreadable);
         return Error { tr("%1: %2's table has rows Toffee cannot read, so it is not opened and nothing was "
                           "written: %3. They were written by another program or by hand; put the table back "
                           "from a backup, or have whoever changed them correct them (docs/LIBRARY.md).")
