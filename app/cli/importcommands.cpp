@@ -4,7 +4,6 @@
 
 #include <QFileInfo>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 
 #include "app/cli/cli.h"
@@ -12,6 +11,7 @@
 #include "model/camimport/camreaders.h"
 #include "model/camimport/importpreview.h"
 #include "model/formats/fileio.h"
+#include "model/formats/jsonscanner.h"
 #include "model/formats/tablefile.h"
 
 using namespace Qt::StringLiterals;
@@ -90,11 +90,25 @@ std::optional<QString> notATable(const QString &path)
     const auto data = readRegularFile(path, kMaxCamLibraryBytes);
     if (!data || isToffeeTable(data.value()))
         return std::nullopt;
-    QJsonParseError parsed {};
-    const QJsonDocument json = QJsonDocument::fromJson(data.value(), &parsed);
-    if (parsed.error != QJsonParseError::NoError)
-        return std::nullopt; // the table's reader shows where the JSON breaks
-    if (readFusionJson(data.value()) || json.object().value(u"data"_s).isArray())
+    // Read as it streams, never as a whole document (a library may be 32 MB): valid JSON, and whether its
+    // top level has a "data" list, as a Fusion library has.
+    JsonScanner json(data.value());
+    bool dataList = false;
+    if (json.consume('{') && !json.consume('}')) {
+        do {
+            QByteArrayView key;
+            QString decoded;
+            Scalar value;
+            if (!json.key(key, decoded) || !json.expect(':', "':'"))
+                return std::nullopt;
+            dataList = dataList || (key == "data" && json.peek() == '[');
+            if (!json.value(value))
+                return std::nullopt; // the table's reader shows where the JSON breaks
+        } while (json.consume(','));
+    }
+    if (json.failed())
+        return std::nullopt;
+    if (dataList || readFusionJson(data.value()))
         return u"a Fusion tool library, not a tool table"_s;
     return u"JSON but not a tool table (it has no \"format\": \"toffee-tool-table\")"_s;
 }

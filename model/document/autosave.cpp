@@ -19,6 +19,7 @@
 
 #include "model/document/tooldocument.h"
 #include "model/formats/fileio.h"
+#include "model/formats/jsonscanner.h"
 
 using namespace Qt::StringLiterals;
 
@@ -79,6 +80,11 @@ bool readInfo(const QString &path, AutoSave::Session &session)
         return false;
     const auto data = readRegularFile(path, AutoSave::kMaxInfoBytes);
     if (!data)
+        return false;
+    // A key twice is refused, not read as whichever of the two QJsonDocument keeps.
+    JsonScanner scanner(data.value());
+    Scalar whole;
+    if (!scanner.value(whole) || !scanner.atEnd())
         return false;
     QJsonParseError error;
     const QJsonDocument document = QJsonDocument::fromJson(data.value(), &error);

@@ -182,6 +182,7 @@ private Q_SLOTS:
         QTest::newRow(".info with a 1 MB path") << u"info-long-path"_s;
         QTest::newRow(".info with a relative path") << u"info-relative"_s;
         QTest::newRow(".info with a path through ..") << u"info-dotdot"_s;
+        QTest::newRow(".info with a key twice") << u"info-twice"_s;
         QTest::newRow("copy a link to /dev/zero") << u"copy-zero"_s;
         QTest::newRow("copy a FIFO") << u"copy-fifo"_s;
         QTest::newRow("lock a FIFO") << u"lock-fifo"_s;
@@ -224,6 +225,9 @@ private Q_SLOTS:
         else if (garbage == u"info-dotdot")
             QVERIFY(write(
                 bad + u".info"_s, R"({"original_path": "/tmp/../etc/passwd", "original_format": "json"})"));
+        else if (garbage == u"info-twice") // which path is meant? QJsonDocument would take the second
+            QVERIFY(write(bad + u".info"_s,
+                R"({"original_path": "/tmp/a.json", "original_path": "/tmp/b.json", "original_format": "json"})"));
         else if (garbage == u"lock-fifo")
             QVERIFY(fifo(bad + u".lock"_s));
         else if (garbage == u"lock-folder")
