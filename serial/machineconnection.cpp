@@ -221,11 +221,13 @@ bool MachineConnection::probe(Done done)
         [](MachineSession *s, Done d) { s->probe(std::move(d)); }, std::move(done));
 }
 
-bool MachineConnection::breakTest(double tolerance, Done done)
+bool MachineConnection::breakTest(double tolerance, Done done, std::optional<double> storedTlo)
 {
     return perform(
         tr("Break-testing %1…").arg(activeToolName()), false,
-        [tolerance](MachineSession *s, Done d) { s->breakTest(tolerance, std::move(d)); }, std::move(done));
+        [tolerance, storedTlo](
+            MachineSession *s, Done d) { s->breakTest(tolerance, std::move(d), storedTlo); },
+        std::move(done));
 }
 
 bool MachineConnection::setTlo(double tlo, Done done)
@@ -249,10 +251,12 @@ bool MachineConnection::restoreTlo(int tool, double tlo, Done done)
         [tool, tlo](MachineSession *s, Done d) { s->restoreTlo(tool, tlo, std::move(d)); }, std::move(done));
 }
 
-bool MachineConnection::unlock(Done done)
+bool MachineConnection::unlock(Done done, std::optional<double> brokenToolTlo)
 {
     return perform(
-        tr("Unlock"), true, [](MachineSession *s, Done d) { s->unlock(std::move(d)); }, std::move(done));
+        tr("Unlock"), true,
+        [brokenToolTlo](MachineSession *s, Done d) { s->unlock(std::move(d), brokenToolTlo); },
+        std::move(done));
 }
 
 bool MachineConnection::sendLine(
@@ -260,25 +264,36 @@ bool MachineConnection::sendLine(
 {
     if (!beginOperation(QString::fromUtf8(line)))
         return false;
-    m_link->send(line, MachineLink::kMotionTimeoutMs, [this, done](const CommandReply &reply) {
-        // Offsets the reply reports (an M493.3 or M493.4 typed by hand) are the machine's now.
-        SessionResult result;
-        for (const QByteArray &l : reply.lines) {
-            if (auto tlo = parseTloReport(l))
-                result.tlo = tlo;
-        }
-        auto finish = [this, done, reply](SessionResult result) {
-            result.tool = activeTool();
-            endOperation(result);
-            if (done)
-                done(reply, result);
-        };
-        if (!reply.ok() || !m_session)
-            return finish(result);
-        // A typed M6 or M493.2 changed the tool: the operation ends when a fresh status says which tool is in
-        // the spindle, so that a probe started right after cannot be recorded for the tool before.
-        m_session->status([finish, result](const SessionResult &) { finish(result); });
-    });
+    // A script (M491, M6) ends with "Done ATC", a shell command perhaps with nothing: each as the firmware
+    // answers it, so that no later "ok" is taken for this line's.
+    m_link->send(
+        line, MachineLink::kMotionTimeoutMs,
+        [this, done](const CommandReply &reply) {
+            // Offsets the reply reports (an M493.3 or M493.4 typed by hand): the TLO in force is the status
+            // report's, read next.
+            std::optional<OffsetReport> report;
+            for (const QByteArray &l : reply.lines) {
+                if (auto r = parseTloReport(l))
+                    report = r;
+            }
+            auto finish = [this, done, reply](SessionResult result) {
+                result.tool = activeTool();
+                endOperation(result);
+                if (done)
+                    done(reply, result);
+            };
+            if (!reply.ok() || !m_session)
+                return finish(SessionResult {});
+            // A typed M6 or M493.2 changed the tool: the operation ends when a fresh status says which tool
+            // is in the spindle, so that a probe started right after cannot be recorded for the tool before.
+            m_session->status([finish, report](const SessionResult &status) {
+                SessionResult result;
+                if (report && status.status && status.status->tlo)
+                    result.tlo = TloReading::from(*status.status->tlo, report);
+                finish(result);
+            });
+        },
+        replyEndFor(line));
     return true;
 }
 

@@ -67,11 +67,14 @@ public:
     // With `storedTlo`, a manual change takes it instead of probing (MachineSession::changeTool).
     bool changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt);
     bool probe(Done done);
-    bool breakTest(double tolerance, Done done);
+    // `storedTlo`: the table's TLO for the tool, which the firmware is to compare with (set first when the
+    // machine has another in force).
+    bool breakTest(double tolerance, Done done, std::optional<double> storedTlo = std::nullopt);
     bool setTlo(double tlo, Done done);
     bool setTloAboveZ0(double height, Done done);
     bool restoreTlo(int tool, double tlo, Done done);
-    bool unlock(Done done);
+    // `brokenToolTlo`: MachineSession::unlock's.
+    bool unlock(Done done, std::optional<double> brokenToolTlo = std::nullopt);
     // A line typed in the console, sent as it is (ConsoleCheck has judged it first); offsets in its reply are
     // announced like any operation's.
     // `done` gets the reply and the result announced for it (the offsets it reported, the tool in the

@@ -27,6 +27,12 @@ MachineLink::MachineLink(LineTransport *transport, QObject *parent)
     m_grace.setSingleShot(true);
     m_grace.setTimerType(Qt::PreciseTimer);
     m_poll.setInterval(kPollIntervalMs);
+    m_quiet.setSingleShot(true);
+    m_quiet.setTimerType(Qt::PreciseTimer);
+    connect(&m_quiet, &QTimer::timeout, this, [this] {
+        if (m_current && m_current->end == ReplyEnd::Quiet && m_alarm.isEmpty())
+            complete(CommandReply::Status::Ok, {});
+    });
     connect(&m_timeout, &QTimer::timeout, this, [this] {
         if (!m_current)
             return;
@@ -84,7 +90,7 @@ void MachineLink::setPollInterval(int ms)
         m_poll.start();
 }
 
-void MachineLink::send(const QByteArray &line, int timeoutMs, ReplyHandler handler)
+void MachineLink::send(const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end)
 {
     if (!isOpen()) {
         CommandReply reply { CommandReply::Status::LinkLost, line, {},
@@ -93,7 +99,7 @@ void MachineLink::send(const QByteArray &line, int timeoutMs, ReplyHandler handl
             this, [handler, reply] { handler(reply); }, Qt::QueuedConnection);
         return;
     }
-    m_queue.append({ line, timeoutMs, std::move(handler) });
+    m_queue.append({ line, timeoutMs, std::move(handler), end });
     if (!m_current)
         startNext();
 }
@@ -117,7 +123,10 @@ void MachineLink::startNext()
     m_lines.clear();
     m_droppedLines = 0;
     m_alarm.clear();
+    m_scriptRunning = false;
     m_timeout.start(m_timeoutOverride > 0 ? m_timeoutOverride : int(m_current->timeoutMs * m_timeoutScale));
+    if (m_current->end == ReplyEnd::Quiet)
+        m_quiet.start(int(kQuietMs * m_timeoutScale));
     Q_EMIT lineSent(m_current->line);
     m_transport->writeLine(m_current->line);
 }
@@ -140,12 +149,23 @@ void MachineLink::handleLine(const QByteArray &line)
         Q_EMIT alarmRaised(replyMessage(line));
     if (!m_current)
         return; // stray output, kept for the console only
+    handleReplyLine(line, kind);
+}
+
+void MachineLink::handleReplyLine(const QByteArray &line, ReplyKind kind)
+{
+    const ReplyEnd end = m_current->end;
+    if (end == ReplyEnd::Quiet && m_quiet.isActive())
+        m_quiet.start(); // silence is counted from the last line
     switch (kind) {
     case ReplyKind::Ok:
-        if (m_alarm.isEmpty())
-            complete(CommandReply::Status::Ok, {});
-        else
+        if (!m_alarm.isEmpty()) {
             complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm) + floodNote());
+        } else if (end == ReplyEnd::Script && m_scriptRunning) {
+            keep(line); // the acknowledgement, or one of the script's own lines' "ok"
+        } else {
+            complete(CommandReply::Status::Ok, {});
+        }
         break;
     case ReplyKind::Error:
         complete(CommandReply::Status::Refused,
@@ -161,6 +181,14 @@ void MachineLink::handleLine(const QByteArray &line)
         break;
     default:
         keep(line);
+        if (end == ReplyEnd::Line && m_alarm.isEmpty()) {
+            complete(CommandReply::Status::Ok, {});
+        } else if (end == ReplyEnd::Script) {
+            if (isScriptDone(line) && m_alarm.isEmpty())
+                complete(CommandReply::Status::Ok, {});
+            else
+                m_scriptRunning = true;
+        }
     }
 }
 
@@ -170,6 +198,8 @@ void MachineLink::complete(CommandReply::Status status, const QString &message)
         return;
     m_timeout.stop();
     m_grace.stop();
+    m_quiet.stop();
+    m_scriptRunning = false;
     Pending done = std::move(*m_current);
     m_current.reset();
     CommandReply reply { status, done.line, std::move(m_lines), message, m_droppedLines };

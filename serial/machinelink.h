@@ -33,11 +33,10 @@ struct CommandReply
     [[nodiscard]] bool ok() const { return status == Status::Ok; }
 };
 
-// Sends command lines to the controller one at a time and matches each terminator to its command by exact
-// token
-// ("ok" is the whole line; "error:" starts it), polls the status report about every 200 ms as real-time
-// traffic, and fails a command that gets no answer in its time limit. Never hangs: a stalled or closed link
-// fails the pending commands with a message.
+// Sends command lines to the controller one at a time and matches each reply to its command (ReplyEnd:
+// "ok" is the whole line, "error:" starts it, a script ends with "Done ATC"), polls the status report about
+// every 200 ms as real-time traffic, and fails a command that gets no answer in its time limit. Never hangs:
+// a stalled or closed link fails the pending commands with a message.
 class MachineLink final : public QObject
 {
     Q_OBJECT
@@ -53,6 +52,8 @@ public:
     // What a command's reply keeps: the results (probe, offsets, break test) come just before "ok", so a
     // tail is enough, and a machine that floods the link cannot grow memory without bound.
     static constexpr qsizetype kMaxReplyLines = 256;
+    // ReplyEnd::Quiet: this long without a line ends the reply.
+    static constexpr int kQuietMs = 400;
 
     explicit MachineLink(LineTransport *transport, QObject *parent = nullptr);
 
@@ -61,7 +62,7 @@ public:
     void open();
     void close();
 
-    void send(const QByteArray &line, int timeoutMs, ReplyHandler handler);
+    void send(const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end = ReplyEnd::Ok);
     void sendRealtime(char c);
     void requestStatus();
     void setPollInterval(int ms); // 0: no polling
@@ -100,10 +101,13 @@ private:
         QByteArray line;
         int timeoutMs = kDefaultTimeoutMs;
         ReplyHandler handler;
+        ReplyEnd end = ReplyEnd::Ok;
     };
 
     void startNext();
     void handleLine(const QByteArray &line);
+    // A line of the running command's reply, by how its reply ends.
+    void handleReplyLine(const QByteArray &line, ReplyKind kind);
     void complete(CommandReply::Status status, const QString &message);
     void failAll(CommandReply::Status status, const QString &message);
     void handleClosed();
@@ -119,6 +123,8 @@ private:
     QString m_lastError;
     QTimer m_timeout;
     QTimer m_grace;
+    QTimer m_quiet; // ReplyEnd::Quiet: the silence that ends the reply
+    bool m_scriptRunning = false; // ReplyEnd::Script: the firmware said it starts its script
     QTimer m_poll;
     double m_timeoutScale = 1.0;
     int m_timeoutOverride = 0;

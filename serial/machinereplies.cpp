@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "serial/machinereplies.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -8,6 +9,7 @@
 #include <QCoreApplication>
 #include <QList>
 
+#include "model/gcode/gcodewords.h"
 #include "model/textparsing.h"
 #include "model/toolvalidation.h"
 #include "model/translate.h"
@@ -72,6 +74,28 @@ ReplyKind classifyReply(QByteArrayView line)
     return ReplyKind::Other;
 }
 
+bool isScriptDone(QByteArrayView line)
+{
+    return line.trimmed() == "Done ATC";
+}
+
+ReplyEnd replyEndFor(QByteArrayView line)
+{
+    line = line.trimmed();
+    if (line.isEmpty())
+        return ReplyEnd::Ok;
+    if (line == "version")
+        return ReplyEnd::Line;
+    // The firmware's shell: $X says nothing when the machine is not halted, and its lower-case commands
+    // (version, echo, ls, …) are answered without "ok".
+    if (line.startsWith("$X") || line.startsWith("$x") || (line.front() >= 'a' && line.front() <= 'z'))
+        return ReplyEnd::Quiet;
+    if (const auto block = GCodeBlock::read(line);
+        block && (block.value().has('M', 491) || block.value().has('M', 491.1) || block.value().has('M', 6)))
+        return ReplyEnd::Script;
+    return ReplyEnd::Ok;
+}
+
 QString replyMessage(QByteArrayView line)
 {
     line = line.trimmed();
@@ -112,11 +136,13 @@ std::optional<MachineStatus> parseStatusReport(QByteArrayView line)
             const QList<QByteArrayView> parts = splitView(value, ',');
             const auto tool = parseInteger(parts.front());
             const auto tlo = parts.size() > 1 ? parseDecimal(parts.at(1)) : std::nullopt;
-            // T-1 is the empty spindle. A number no tool can have is a garbled report, not a tool: taken
-            // as an int it would wrap round to some other tool.
-            if (!tool || *tool < kEmptySpindle || *tool > Limits::kMaxToolNumber || parts.size() < 2 || !tlo)
-                return std::nullopt;
-            status.tool = int(*tool);
+            // T-1 is the empty spindle. The firmware takes M493.2 T-2 or T1000000 and then reports that
+            // number: the report still holds the state and the position, but no tool (taken as an int it
+            // would wrap round to some other tool).
+            if (!tool || parts.size() < 2 || !tlo || !plausible(*tlo))
+                return std::nullopt; // garbled
+            if (tool && *tool >= kEmptySpindle && *tool <= Limits::kMaxToolNumber)
+                status.tool = int(*tool);
             status.tlo = *tlo;
         } else if (name == "H") {
             const auto reason = parseInteger(value);
@@ -133,7 +159,7 @@ std::optional<MachineStatus> parseStatusReport(QByteArrayView line)
 namespace {
 
 // The report's two numbers, whatever their size.
-std::optional<TloReading> readTloReport(QByteArrayView line)
+std::optional<OffsetReport> readTloReport(QByteArrayView line)
 {
     line = line.trimmed();
     if (!line.startsWith("current tool offset [") || !line.contains("] , reference tool offset ["))
@@ -143,28 +169,40 @@ std::optional<TloReading> readTloReport(QByteArrayView line)
     const auto reference = bracketed(line, from);
     if (!current || !reference || from != line.size())
         return std::nullopt;
-    return TloReading { *current, *reference };
+    return OffsetReport { *current, *reference };
 }
 
-bool plausible(const TloReading &reading)
+bool plausible(const OffsetReport &report)
 {
-    return plausible(reading.currentMz) && plausible(reading.referenceMz) && std::isfinite(reading.tlo());
+    return plausible(report.currentMz) && plausible(report.referenceMz);
 }
 
 } // namespace
 
-std::optional<TloReading> parseTloReport(QByteArrayView line)
+std::optional<OffsetReport> parseTloReport(QByteArrayView line)
 {
-    const auto reading = readTloReport(line);
-    if (!reading || !plausible(*reading))
+    const auto report = readTloReport(line);
+    if (!report || !plausible(*report))
         return std::nullopt;
-    return reading;
+    return report;
 }
 
 bool isImplausibleTloReport(QByteArrayView line)
 {
-    const auto reading = readTloReport(line);
-    return reading && !plausible(*reading);
+    const auto report = readTloReport(line);
+    return report && !plausible(*report);
+}
+
+TloReading TloReading::from(double tloInForce, const std::optional<OffsetReport> &report)
+{
+    TloReading reading { tloInForce, std::nullopt, std::nullopt };
+    if (report) {
+        reading.referenceMz = report->referenceMz;
+        // At the report's resolution: 0.001 mm either way.
+        if (std::fabs(report->currentMz - report->referenceMz - tloInForce) < 0.0015)
+            reading.currentMz = report->currentMz;
+    }
+    return reading;
 }
 
 std::optional<ProbeResult> parseProbeResult(QByteArrayView line)
@@ -282,14 +320,17 @@ std::optional<FirmwareInfo> parseVersion(QByteArrayView line)
     }
     FirmwareInfo info;
     info.version = QString::fromLatin1(version);
-    // The community builds' version is `git describe`: "2.1.0c", "v2.1.0c-3-gabc"; the "c" follows the
-    // numbers.
-    const qsizetype dash = version.indexOf('-');
-    const QByteArrayView release = dash < 0 ? version : version.first(dash);
-    const bool numeric = !release.isEmpty() && std::isdigit(static_cast<unsigned char>(release.back()));
-    info.kind = release.endsWith('c') || release.endsWith('C') ? FirmwareInfo::Kind::Community
-        : numeric                                              ? FirmwareInfo::Kind::Stock
-                                                               : FirmwareInfo::Kind::Unknown;
+    // A plain release number, two to four numbers and dots (Makera's 1.0.5), is the stock firmware's; any
+    // other name a build was given is the community firmware's. A community build named like a release
+    // would be taken for the stock one, which is offered less (no break test), never more.
+    const QList<QByteArrayView> parts = splitView(version, '.');
+    const bool plainRelease = parts.size() >= 2 && parts.size() <= 4
+        && std::all_of(parts.cbegin(), parts.cend(), [](QByteArrayView part) {
+               return !part.isEmpty() && part.size() <= 4
+                   && std::all_of(part.cbegin(), part.cend(),
+                       [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+           });
+    info.kind = plainRelease ? FirmwareInfo::Kind::Stock : FirmwareInfo::Kind::Community;
     return info;
 }
 

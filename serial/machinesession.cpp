@@ -126,56 +126,85 @@ SessionResult MachineSession::failure(const CommandReply &reply)
     return result;
 }
 
-void MachineSession::run(
-    const QByteArray &command, int timeoutMs, Done done, std::function<void(const CommandReply &)> next)
+void MachineSession::run(const QByteArray &command, int timeoutMs, Done done,
+    std::function<void(const CommandReply &)> next, ReplyEnd end)
 {
-    m_link->send(command, timeoutMs, [done, next = std::move(next)](const CommandReply &reply) {
-        if (!reply.ok()) {
-            done(failure(reply));
-            return;
-        }
-        next(reply);
-    });
+    m_link->send(
+        command, timeoutMs,
+        [done, next = std::move(next)](const CommandReply &reply) {
+            if (!reply.ok()) {
+                done(failure(reply));
+                return;
+            }
+            next(reply);
+        },
+        end);
 }
 
+// The TLO in force is the status report's (T:), whatever the firmware prints elsewhere: after M493.3 Z<v>
+// its M493.4 prints v as the "current tool offset". M493.4 adds the reference, and the current MCS Z when
+// current - reference is that TLO (after a probe).
 void MachineSession::readOffsets(Done done, SessionResult result)
 {
-    if (m_firmware.kind == FirmwareInfo::Kind::Stock)
-        return readStatusTlo(std::move(done), std::move(result)); // M493.4 says nothing there
-    run("M493.4", MachineLink::kDefaultTimeoutMs, done,
-        [this, done, result](const CommandReply &reply) mutable {
-            for (const QByteArray &line : reply.lines) {
-                if (auto tlo = parseTloReport(line)) {
-                    result.tlo = tlo;
-                    result.tool = result.tool ? result.tool : m_tool;
-                    done(result);
-                    return;
-                }
-            }
+    awaitStatus(2000, [this, done, result](std::optional<MachineStatus> status) mutable {
+        if (!status) {
             SessionResult bad;
-            bad.outcome = SessionResult::Outcome::MachineError;
-            const auto report
-                = std::find_if(reply.lines.cbegin(), reply.lines.cend(), isImplausibleTloReport);
-            if (report != reply.lines.cend()) {
-                bad.message = tr("The machine's offset report (M493.4) holds values no machine can have: "
-                                 "\"%1\". Nothing was recorded; check the offsets on the machine before "
-                                 "you cut.")
-                                  .arg(excerpt(*report));
-            } else {
-                bad.message
-                    = tr("The machine's offset report (M493.4) could not be read%1. Nothing was "
-                         "recorded; try again, and check the cable if it happens twice.")
-                          .arg(reply.lines.isEmpty() ? QString()
-                                                     : u": \""_s + excerpt(reply.lines.front()) + u'"')
-                    + floodNote(reply);
-            }
+            bad.outcome = SessionResult::Outcome::LinkFailure;
+            bad.message = tr("The machine sent no status report within 2 s, and the TLO in force is read "
+                             "from it. Nothing was recorded; check the cable and try again.");
             done(bad);
-        });
+            return;
+        }
+        result.status = status;
+        if (status->tool)
+            m_tool = status->tool;
+        if (!status->tool || !status->tlo) {
+            // The stock firmware leaves T: out when the spindle is empty.
+            result.tool = result.tool ? result.tool : std::optional<int>(Limits::kEmptySpindle);
+            done(result);
+            return;
+        }
+        result.tool = result.tool ? result.tool : status->tool;
+        const double tloInForce = *status->tlo;
+        if (m_firmware.kind == FirmwareInfo::Kind::Stock) {
+            result.tlo = TloReading::from(tloInForce, std::nullopt); // M493.4 says nothing there
+            done(result);
+            return;
+        }
+        run("M493.4", MachineLink::kDefaultTimeoutMs, done,
+            [done, result, tloInForce](const CommandReply &reply) mutable {
+                for (const QByteArray &line : reply.lines) {
+                    if (auto report = parseTloReport(line)) {
+                        result.tlo = TloReading::from(tloInForce, report);
+                        done(result);
+                        return;
+                    }
+                }
+                SessionResult bad;
+                bad.outcome = SessionResult::Outcome::MachineError;
+                const auto report
+                    = std::find_if(reply.lines.cbegin(), reply.lines.cend(), isImplausibleTloReport);
+                if (report != reply.lines.cend()) {
+                    bad.message = tr("The machine's offset report (M493.4) holds values no machine can have: "
+                                     "\"%1\". Nothing was recorded; check the offsets on the machine before "
+                                     "you cut.")
+                                      .arg(excerpt(*report));
+                } else {
+                    bad.message
+                        = tr("The machine's offset report (M493.4) could not be read%1. Nothing was "
+                             "recorded; try again, and check the cable if it happens twice.")
+                              .arg(reply.lines.isEmpty() ? QString()
+                                                         : u": \""_s + excerpt(reply.lines.front()) + u'"')
+                        + floodNote(reply);
+                }
+                done(bad);
+            });
+    });
 }
 
 void MachineSession::status(Done done)
 {
-    awaitStatus(2000, [done](std::optional<MachineStatus> status) {
+    awaitStatus(2000, [this, done](std::optional<MachineStatus> status) {
         SessionResult result;
         if (!status) {
             result.outcome = SessionResult::Outcome::LinkFailure;
@@ -183,6 +212,8 @@ void MachineSession::status(Done done)
         } else {
             result.status = status;
             result.tool = status->tool;
+            if (status->tool)
+                m_tool = status->tool;
         }
         done(result);
     });
@@ -220,106 +251,218 @@ MachineSession::Done MachineSession::recordingVerdict(Done done)
     };
 }
 
+namespace {
+
+// A probe's result among a script's lines: the last one that triggered (the firmware probes fast, then
+// slowly, and takes the second).
+std::optional<ProbeResult> lastProbe(const QList<QByteArray> &lines)
+{
+    std::optional<ProbeResult> found;
+    for (const QByteArray &line : lines) {
+        if (auto p = parseProbeResult(line))
+            found = p;
+    }
+    return found;
+}
+
+} // namespace
+
 void MachineSession::probe(Done done)
 {
     done = recording(std::move(done), RecordingKind::Probe);
-    run("M491", MachineLink::kMotionTimeoutMs, done, [this, done](const CommandReply &reply) {
-        const auto probe = std::find_if(reply.lines.cbegin(), reply.lines.cend(),
-            [](const QByteArray &l) { return parseProbeResult(l).has_value(); });
-        if (probe == reply.lines.cend() || !parseProbeResult(*probe)->triggered) {
-            SessionResult bad;
-            bad.outcome = SessionResult::Outcome::MachineError;
-            bad.message = tr("The machine finished probing but its probe result ([PRB:…]) could not be read. "
-                             "Nothing was recorded; check the offsets (Report) before you cut.")
-                + floodNote(reply);
-            done(bad);
-            return;
-        }
-        readOffsets(done, SessionResult {});
-    });
+    run(
+        "M491", MachineLink::kMotionTimeoutMs, done,
+        [this, done](const CommandReply &reply) {
+            const auto probe = lastProbe(reply.lines);
+            if (!probe || !probe->triggered) {
+                SessionResult bad;
+                bad.outcome = SessionResult::Outcome::MachineError;
+                bad.message
+                    = tr("The machine finished probing but its probe result ([PRB:…]) could not be read. "
+                         "Nothing was recorded; check the offsets (Report) before you cut.")
+                    + floodNote(reply);
+                done(bad);
+                return;
+            }
+            readOffsets(
+                [done](const SessionResult &r) {
+                    // After a probe, current - reference is the TLO: when the machine's two reports disagree,
+                    // neither is recorded.
+                    if (r.ok() && r.tlo && r.tlo->referenceMz && !r.tlo->currentMz) {
+                        SessionResult bad = r;
+                        bad.outcome = SessionResult::Outcome::MachineError;
+                        bad.message
+                            = tr("The machine measured the tool, but its two reports disagree: the TLO "
+                                 "in force is %1 mm, and its offset report does not add up to it. "
+                                 "Nothing was recorded; probe again.")
+                                  .arg(millimetres(r.tlo->tlo(), false));
+                        done(bad);
+                        return;
+                    }
+                    done(r);
+                },
+                SessionResult {});
+        },
+        ReplyEnd::Script);
 }
 
-void MachineSession::breakTest(double tolerance, Done done)
+void MachineSession::breakTest(double tolerance, Done done, std::optional<double> storedTlo)
 {
     done = recordingVerdict(std::move(done));
     if (auto why = unsupported(true))
         return refuse(done, *why);
     if (auto r = validateTolerance(tolerance); !r)
         return refuse(done, r.error().message);
-    const QByteArray command = "M491.1 H" + number(tolerance);
-    m_link->send(command, MachineLink::kMotionTimeoutMs, [this, done, tolerance](const CommandReply &reply) {
-        std::optional<BreakTestReading> reading;
-        bool noPrevious = false;
-        bool broken = false;
-        for (const QByteArray &line : reply.lines) {
-            if (!reading)
-                reading = parseBreakTest(line);
-            noPrevious = noPrevious || line.trimmed() == "No previous TLO included, aborting";
-            broken = broken || line.contains("Tool Break Check - check tool for breakage");
-        }
-        SessionResult result;
-        result.tool = m_tool;
-        result.tolerance = tolerance;
-        result.breakTest = reading;
-        if (broken && reading) {
-            result.outcome = SessionResult::Outcome::ToolBroken;
-            result.message
-                = tr("Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a "
-                     "difference of %4 mm; the tolerance is %5 mm). The machine has halted. Check the "
-                     "tool and replace it if it is damaged, then Unlock.")
-                      .arg(m_tool.value_or(-1))
-                      .arg(millimetres(reading->newTlo, false))
-                      .arg(millimetres(reading->oldTlo, false))
-                      .arg(millimetres(std::fabs(reading->newTlo - reading->oldTlo), false))
-                      .arg(toleranceText(tolerance));
-            done(result);
+    // The community firmware takes T0 and every tool from T9 up for its wireless probe in M491.1: it
+    // measures, then halts for a probe that is "dead or not set" (ATCHandler, seen on the firmware).
+    if (m_tool && (*m_tool == 0 || *m_tool >= 9))
+        return refuse(done,
+            tr("The firmware's break test takes T%1 for its wireless probe (T0, and every tool from T9 up): "
+               "it "
+               "would measure the tool, then halt. Break-test tools T1 to T8, or probe T%1 and compare its "
+               "TLO "
+               "with the table.")
+                .arg(*m_tool));
+    if (storedTlo) {
+        if (auto r = validateOffset(tr("The stored TLO"), *storedTlo); !r)
+            return refuse(done, r.error().message);
+    }
+    // What the firmware compares with is the TLO in force: the table's, when there is one, set first.
+    awaitStatus(2000, [this, done, tolerance, storedTlo](std::optional<MachineStatus> status) {
+        if (!status || !status->tlo) {
+            SessionResult bad;
+            bad.outcome = SessionResult::Outcome::LinkFailure;
+            bad.message = tr("The machine sent no status report within 2 s; no break test was run.");
+            done(bad);
             return;
         }
-        if (!reply.ok()) {
-            done(failure(reply));
+        const double inForce = storedTlo ? *storedTlo : *status->tlo;
+        if (std::round(inForce * 1000.0) == 0.0) {
+            refuse(done,
+                tr("The firmware compares with the TLO in force, and takes a TLO of 0.000 mm for none: it "
+                   "would "
+                   "measure T%1 without comparing. No break test was run; probe T%1 and compare its TLO with "
+                   "the table.")
+                    .arg(m_tool.value_or(-1)));
             return;
         }
-        if (noPrevious) {
-            result.outcome = SessionResult::Outcome::MachineError;
-            result.message
-                = tr("The machine has no TLO for this tool to compare with. Probe the tool first, then "
-                     "run the break test.");
-        } else if (!reading) {
-            result.outcome = SessionResult::Outcome::MachineError;
-            result.message
-                = tr("The break test ran but its result (\"Old: … , new: …\") could not be read. Run it "
-                     "again before you trust the tool.")
-                + floodNote(reply);
-        } else if (std::fabs(reading->newTlo - reading->oldTlo) > tolerance) {
-            // The firmware should have halted; do not call this tool good on our side either.
-            result.outcome = SessionResult::Outcome::ToolBroken;
-            result.message = tr("Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.")
-                                 .arg(m_tool.value_or(-1))
-                                 .arg(millimetres(reading->newTlo, false))
-                                 .arg(millimetres(reading->oldTlo, false))
-                                 .arg(toleranceText(tolerance));
+        // The stored TLO goes in first, always: after a tool change the machine has just measured the tool,
+        // and a tool broken before the change would be compared with its own broken length.
+        if (storedTlo) {
+            run("M493.3 Z" + number(*storedTlo), MachineLink::kDefaultTimeoutMs, done,
+                [this, done, tolerance, storedTlo](
+                    const CommandReply &) { runBreakTest(tolerance, done, storedTlo); });
+            return;
         }
-        done(result);
+        runBreakTest(tolerance, done, std::nullopt);
     });
 }
 
-void MachineSession::finishWithReport(const QList<QByteArray> &lines, Done done, const QString &what)
+void MachineSession::runBreakTest(double tolerance, Done done, std::optional<double> storedTlo)
 {
-    for (const QByteArray &line : lines) {
-        if (auto tlo = parseTloReport(line)) {
+    const QByteArray command = "M491.1 H" + number(tolerance);
+    m_link->send(
+        command, MachineLink::kMotionTimeoutMs,
+        [this, done, tolerance, storedTlo](const CommandReply &reply) {
+            std::optional<BreakTestReading> reading;
+            bool noPrevious = false;
+            bool broken = false;
+            for (const QByteArray &line : reply.lines) {
+                if (auto r = parseBreakTest(line))
+                    reading = r;
+                noPrevious = noPrevious || line.trimmed() == "No previous TLO included, aborting";
+                broken = broken || line.contains("Tool Break Check - check tool for breakage");
+            }
             SessionResult result;
-            result.tlo = tlo;
             result.tool = m_tool;
+            result.tolerance = tolerance;
+            result.breakTest = reading;
+            // The firmware says what it compared with: it must be the stored TLO that was set.
+            const bool comparedWithAnother
+                = reading && storedTlo && std::fabs(reading->oldTlo - *storedTlo) > 0.0005;
+            if (comparedWithAnother) {
+                if (broken)
+                    m_restoreOnUnlock = storedTlo;
+                result.breakTest.reset();
+                result.outcome = SessionResult::Outcome::MachineError;
+                result.message
+                    = tr("The machine compared T%1 with a TLO of %2 mm, not its stored %3 mm, so its "
+                         "verdict does not hold. Check the offsets, then run the break test again.")
+                          .arg(m_tool.value_or(-1))
+                          .arg(millimetres(reading->oldTlo, false))
+                          .arg(millimetres(*storedTlo, false));
+                done(result);
+                return;
+            }
+            if (broken && reading) {
+                // The firmware halts with the new, broken length in force: Unlock sets the stored one back
+                // before anything can move.
+                m_restoreOnUnlock = reading->oldTlo;
+                result.outcome = SessionResult::Outcome::ToolBroken;
+                result.message
+                    = tr("Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a "
+                         "difference of %4 mm; the tolerance is %5 mm). The machine has halted with the new "
+                         "length, %2 mm, in force. Check the tool and replace it if it is damaged, then "
+                         "Unlock: Toffee sets the stored TLO, %3 mm, back first.")
+                          .arg(m_tool.value_or(-1))
+                          .arg(millimetres(reading->newTlo, false))
+                          .arg(millimetres(reading->oldTlo, false))
+                          .arg(millimetres(std::fabs(reading->newTlo - reading->oldTlo), false))
+                          .arg(toleranceText(tolerance));
+                done(result);
+                return;
+            }
+            if (!reply.ok()) {
+                done(failure(reply));
+                return;
+            }
+            if (noPrevious) {
+                result.outcome = SessionResult::Outcome::MachineError;
+                result.message
+                    = tr("The machine had no TLO for this tool to compare with: it measured the tool "
+                         "and took the new length without comparing. Check the TLO it reports "
+                         "against the table before you cut.");
+            } else if (!reading) {
+                result.outcome = SessionResult::Outcome::MachineError;
+                result.message
+                    = tr("The break test ran but its result (\"Old: … , new: …\") could not be read. Run it "
+                         "again before you trust the tool.")
+                    + floodNote(reply);
+            } else if (std::fabs(reading->newTlo - reading->oldTlo) > tolerance) {
+                // The firmware should have halted; do not call this tool good on our side either.
+                result.outcome = SessionResult::Outcome::ToolBroken;
+                result.message = tr("Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.")
+                                     .arg(m_tool.value_or(-1))
+                                     .arg(millimetres(reading->newTlo, false))
+                                     .arg(millimetres(reading->oldTlo, false))
+                                     .arg(toleranceText(tolerance));
+            }
             done(result);
+        },
+        ReplyEnd::Script);
+}
+
+MachineSession::Done MachineSession::expectingTlo(double tlo, Done done)
+{
+    return [done = std::move(done), tlo](const SessionResult &r) {
+        if (r.ok() && (!r.tlo || std::fabs(r.tlo->tlo() - tlo) > 0.0005)) {
+            SessionResult bad = r;
+            bad.outcome = SessionResult::Outcome::MachineError;
+            bad.message = tr("The machine was told TLO %1 mm but reports %2 mm in force. Check the offsets "
+                             "before you cut.")
+                              .arg(millimetres(tlo, false))
+                              .arg(r.tlo ? millimetres(r.tlo->tlo(), false) : tr("none"));
+            done(bad);
             return;
         }
-    }
-    SessionResult bad;
-    bad.outcome = SessionResult::Outcome::MachineError;
-    bad.message
-        = tr("The machine's reply to %1 could not be read. Check the offsets (Report) before you cut.")
-              .arg(what);
-    done(bad);
+        done(r);
+    };
+}
+
+void MachineSession::setTloTo(double tlo, Done done)
+{
+    run("M493.3 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done,
+        [this, done, tlo](const CommandReply &) { readOffsets(expectingTlo(tlo, done), SessionResult {}); });
 }
 
 void MachineSession::setTlo(double tlo, Done done)
@@ -329,27 +472,13 @@ void MachineSession::setTlo(double tlo, Done done)
         return refuse(done, *why);
     if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
         return refuse(done, r.error().message);
-    run("M493.3 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done,
-        [this, done, tlo](const CommandReply &reply) {
-            finishWithReport(
-                reply.lines,
-                [done, tlo](const SessionResult &result) {
-                    if (result.ok() && std::fabs(result.tlo->tlo() - tlo) > 0.0005) {
-                        SessionResult bad = result;
-                        bad.outcome = SessionResult::Outcome::MachineError;
-                        bad.message = tr("The machine was told TLO %1 mm but reports %2 mm. Check the "
-                                         "offsets before you cut.")
-                                          .arg(millimetres(tlo, false))
-                                          .arg(millimetres(result.tlo->tlo(), false));
-                        done(bad);
-                        return;
-                    }
-                    done(result);
-                },
-                u"M493.3"_s);
-        });
+    setTloTo(tlo, done);
 }
 
+// The tool tip is `height` above work Z0. The firmware's M493.3 H adds to its "current tool offset", which
+// after an M493.3 Z is no MCS Z (it is off by the reference then, 115 mm on a C1): Toffee works the TLO out
+// from the status report instead (work Z = machine Z - work offset - TLO, so the TLO that puts the tip at
+// `height` is the TLO in force + work Z - height) and sets it with M493.3 Z.
 void MachineSession::setTloAboveZ0(double height, Done done)
 {
     done = recording(std::move(done), RecordingKind::ManualSet);
@@ -357,8 +486,19 @@ void MachineSession::setTloAboveZ0(double height, Done done)
         return refuse(done, *why);
     if (auto r = validateOffset(tr("The height above Z0"), height); !r)
         return refuse(done, r.error().message);
-    run("M493.3 H" + number(height), MachineLink::kDefaultTimeoutMs, done,
-        [this, done](const CommandReply &reply) { finishWithReport(reply.lines, done, u"M493.3"_s); });
+    awaitStatus(2000, [this, done, height](std::optional<MachineStatus> status) {
+        if (!status || !status->tlo) {
+            SessionResult bad;
+            bad.outcome = SessionResult::Outcome::LinkFailure;
+            bad.message = tr("The machine sent no status report within 2 s; its TLO was not set.");
+            done(bad);
+            return;
+        }
+        const double tlo = std::round((*status->tlo + status->wpos[2] - height) * 1000.0) / 1000.0;
+        if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
+            return refuse(done, r.error().message);
+        setTloTo(tlo, done);
+    });
 }
 
 void MachineSession::selectTool(int tool, Done done)
@@ -386,78 +526,117 @@ void MachineSession::changeTool(int tool, Done done, std::optional<double> store
     if (m_tool == tool && tool >= 0)
         return probe(std::move(done)); // the firmware ignores M6 to the tool it holds
     done = recording(std::move(done), RecordingKind::Probe); // M6 probes the new tool
-    run("M6 T" + QByteArray::number(tool), kToolChangeTimeoutMs, done,
+    run(
+        "M6 T" + QByteArray::number(tool), kToolChangeTimeoutMs, done,
         [this, done, tool](const CommandReply &reply) {
-            m_tool = tool;
             if (tool == Limits::kEmptySpindle)
                 return confirmEmptySpindle(done); // nothing to measure
-            const bool probed
-                = std::any_of(reply.lines.cbegin(), reply.lines.cend(), [](const QByteArray &l) {
-                      const auto p = parseProbeResult(l);
-                      return p && p->triggered;
-                  });
-            if (!probed) {
+            const auto probe = lastProbe(reply.lines);
+            if (!probe || !probe->triggered) {
                 SessionResult bad;
                 bad.outcome = SessionResult::Outcome::MachineError;
                 bad.message
-                    = tr("T%1 is in the spindle, but its probe result ([PRB:…]) could not be read. Nothing "
-                         "was recorded; probe the tool again.")
+                    = tr("The machine finished changing to T%1, but its probe result ([PRB:…]) could not be "
+                         "read. Nothing was recorded; probe the tool again.")
                           .arg(tool)
                     + floodNote(reply);
                 done(bad);
                 return;
             }
-            readOffsets(done, SessionResult {});
-        });
-}
-
-// M6 T H: a manual change that takes the table's TLO; the machine's report must then show it.
-void MachineSession::changeToStoredTlo(int tool, double tlo, Done done)
-{
-    run("M6 T" + QByteArray::number(tool) + " H" + number(tlo), kToolChangeTimeoutMs, done,
-        [this, done, tool, tlo](const CommandReply &) {
-            m_tool = tool;
             SessionResult changed;
             changed.tool = tool;
-            readOffsets(
-                [done, tool, tlo](const SessionResult &r) {
-                    if (r.ok() && (!r.tlo || std::fabs(r.tlo->tlo() - tlo) > 0.0005)) {
-                        SessionResult bad = r;
-                        bad.outcome = SessionResult::Outcome::MachineError;
-                        bad.message
-                            = tr("T%1 is in the spindle, but the machine reports TLO %2 mm where it was "
-                                 "told %3 mm. Probe T%1 before you cut.")
-                                  .arg(tool)
-                                  .arg(r.tlo ? millimetres(r.tlo->tlo(), false) : tr("none"))
-                                  .arg(millimetres(tlo, false));
-                        done(bad);
-                        return;
-                    }
-                    SessionResult restored = r;
-                    restored.tool = tool;
-                    if (r.tlo)
-                        restored.recording
-                            = Recording { tool, r.tlo->tlo(), TloSource::Probe, r.tlo->knownReferenceMz(),
-                                  std::nullopt, QDateTime::currentDateTimeUtc(), RecordingKind::Restore };
-                    done(restored);
-                },
-                changed);
-        });
+            readOffsets(done, changed);
+        },
+        ReplyEnd::Script);
 }
 
-void MachineSession::unlock(Done done)
+// M6 T H: a manual change that takes the table's TLO (the firmware measures a rack tool all the same); the
+// machine must then report it in force.
+void MachineSession::changeToStoredTlo(int tool, double tlo, Done done)
 {
-    run("$X", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &reply) {
-        const bool unlocked = std::any_of(reply.lines.cbegin(), reply.lines.cend(),
-            [](const QByteArray &l) { return l.trimmed() == "[Caution: Unlocked]"; });
-        if (!unlocked) {
+    run(
+        "M6 T" + QByteArray::number(tool) + " H" + number(tlo), kToolChangeTimeoutMs, done,
+        [this, done, tool, tlo](const CommandReply &reply) {
+            SessionResult changed;
+            changed.tool = tool;
+            const auto probe = lastProbe(reply.lines);
+            if (probe && probe->triggered) {
+                // A rack tool: the firmware measured it, and the measurement is what is in force.
+                readOffsets(recording(done, RecordingKind::Probe), changed);
+                return;
+            }
+            readOffsets(expectingTlo(tlo,
+                            [done, tool](const SessionResult &r) {
+                                SessionResult restored = r;
+                                restored.tool = tool;
+                                if (r.ok() && r.tlo)
+                                    restored.recording = Recording { tool, r.tlo->tlo(), TloSource::Probe,
+                                        r.tlo->knownReferenceMz(), std::nullopt,
+                                        QDateTime::currentDateTimeUtc(), RecordingKind::Restore };
+                                done(restored);
+                            }),
+                changed);
+        },
+        ReplyEnd::Script);
+}
+
+void MachineSession::unlock(Done done, std::optional<double> brokenToolTlo)
+{
+    awaitStatus(2000, [this, done, brokenToolTlo](std::optional<MachineStatus> before) {
+        if (!before) {
             SessionResult bad;
-            bad.outcome = SessionResult::Outcome::MachineError;
-            bad.message = tr("The machine did not confirm the unlock; check its state before you go on.");
+            bad.outcome = SessionResult::Outcome::LinkFailure;
+            bad.message = tr("The machine sent no status report within 2 s; it was not unlocked.");
             done(bad);
             return;
         }
-        status(done);
+        if (!before->isAlarm()) {
+            // The firmware says nothing at all to $X when it is not halted.
+            SessionResult result;
+            result.status = before;
+            result.tool = before->tool;
+            result.message = tr("The machine was not halted.");
+            done(result);
+            return;
+        }
+        if (!m_restoreOnUnlock && brokenToolTlo && before->tlo
+            && std::fabs(*before->tlo - *brokenToolTlo) > 0.0005)
+            m_restoreOnUnlock = brokenToolTlo;
+        run("$X", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &reply) {
+            const bool unlocked = std::any_of(reply.lines.cbegin(), reply.lines.cend(),
+                [](const QByteArray &l) { return l.trimmed() == "[Caution: Unlocked]"; });
+            if (!unlocked) {
+                SessionResult bad;
+                bad.outcome = SessionResult::Outcome::MachineError;
+                bad.message = tr("The machine did not confirm the unlock; check its state before you go on.");
+                done(bad);
+                return;
+            }
+            const auto stored = std::exchange(m_restoreOnUnlock, std::nullopt);
+            if (!stored) {
+                status(done);
+                return;
+            }
+            // A failed break test left the broken length in force: the stored TLO goes back before anything
+            // else is sent.
+            const double was = *stored;
+            setTloTo(was, [this, done, was](const SessionResult &r) {
+                SessionResult result = r;
+                if (r.ok()) {
+                    result.message
+                        = tr("Unlocked. T%1's stored TLO, %2 mm, is in force again (the break test "
+                             "had left the new length in force).")
+                              .arg(m_tool.value_or(-1))
+                              .arg(millimetres(was, false));
+                } else {
+                    m_restoreOnUnlock = was; // tried again at the next unlock
+                    result.message = tr("Unlocked, but the stored TLO (%1 mm) could not be set back: %2 The "
+                                        "length the break test measured is still in force; do not cut.")
+                                         .arg(millimetres(was, false), r.message);
+                }
+                done(result);
+            });
+        });
     });
 }
 
@@ -467,6 +646,8 @@ void MachineSession::restoreTlo(int tool, double tlo, Done done)
         return refuse(done, r.error().message);
     if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
         return refuse(done, r.error().message);
+    if (auto why = unsupported(false))
+        return refuse(done, *why);
     selectTool(tool, [this, done, tlo](const SessionResult &selected) {
         if (!selected.ok()) {
             done(selected);
@@ -474,12 +655,15 @@ void MachineSession::restoreTlo(int tool, double tlo, Done done)
         }
         // The table already holds this TLO: a restore changes no tool, and goes into the history as a
         // restore.
-        setTlo(tlo, [done](const SessionResult &r) {
-            SessionResult restored = r;
-            if (restored.recording)
-                restored.recording->kind = RecordingKind::Restore;
-            done(restored);
-        });
+        setTloTo(tlo,
+            recording(
+                [done](const SessionResult &r) {
+                    SessionResult restored = r;
+                    if (restored.recording)
+                        restored.recording->kind = RecordingKind::Restore;
+                    done(restored);
+                },
+                RecordingKind::ManualSet));
     });
 }
 

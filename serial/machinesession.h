@@ -68,7 +68,9 @@ public:
     void status(Done done);
     void report(Done done);
     void probe(Done done);
-    void breakTest(double tolerance, Done done);
+    // M491.1 compares with the TLO in force: with `storedTlo` (the table's), that is set first when the
+    // machine has another one (after M493.2 the firmware still has the previous tool's).
+    void breakTest(double tolerance, Done done, std::optional<double> storedTlo = std::nullopt);
     void setTlo(double tlo, Done done);
     void setTloAboveZ0(double height, Done done);
     void selectTool(int tool, Done done);
@@ -76,7 +78,14 @@ public:
     // always measures a rack tool), M6 T H takes that TLO instead of probing. The tool already in the spindle
     // is measured where it is (M491): the firmware ignores a change to it.
     void changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt);
-    void unlock(Done done);
+    // $X when the machine is halted (it says nothing to $X otherwise), then, after a failed break test, the
+    // stored TLO set back before anything can move: the firmware halts with the broken length in force.
+    // `brokenToolTlo`: the table's stored TLO for the tool in the spindle when the table marks it broken (a
+    // break test in an earlier session): set back too when the machine has another TLO in force.
+    void unlock(Done done, std::optional<double> brokenToolTlo = std::nullopt);
+    // The TLO a failed break test left the machine without (the firmware keeps the new, broken length in
+    // force while it halts): set back by unlock().
+    [[nodiscard]] std::optional<double> tloToRestore() const { return m_restoreOnUnlock; }
     // Makes `tool` active with a TLO already known (from the table), without probing.
     void restoreTlo(int tool, double tlo, Done done);
     // Ctrl-X: stops whatever the machine is doing. It halts; Unlock afterwards.
@@ -87,12 +96,15 @@ public:
     [[nodiscard]] static Result<void> validateToolNumber(int tool);
 
 private:
-    void run(
-        const QByteArray &command, int timeoutMs, Done done, std::function<void(const CommandReply &)> next);
-    void finishWithReport(const QList<QByteArray> &lines, Done done, const QString &what);
+    void run(const QByteArray &command, int timeoutMs, Done done,
+        std::function<void(const CommandReply &)> next, ReplyEnd end = ReplyEnd::Ok);
+    // The offsets after an operation: the TLO in force from a fresh status report, the reference (and the
+    // current MCS Z, when it agrees) from M493.4.
     void readOffsets(Done done, SessionResult result);
-    // The stock firmware's only TLO report: the status's T: field.
-    void readStatusTlo(Done done, SessionResult result);
+    // M493.3 Z<tlo>, then the offsets: the machine must report that TLO in force.
+    void setTloTo(double tlo, Done done);
+    // `done`'s result, or a failure when the status report's TLO is not `tlo`.
+    [[nodiscard]] static Done expectingTlo(double tlo, Done done);
     void readVersion(Done done, std::function<void()> next);
     void readStatusAfterConnect(Done done);
     void changeToStoredTlo(int tool, double tlo, Done done);
@@ -100,6 +112,7 @@ private:
     void confirmEmptySpindle(Done done);
     // Why an operation this firmware does not have is refused, or nothing.
     [[nodiscard]] std::optional<QString> unsupported(bool breakTest) const;
+    void runBreakTest(double tolerance, Done done, std::optional<double> storedTlo);
     void awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next);
     // Polls until the machine is no longer running a command (a late answer of a timed-out command would
     // otherwise be taken for the next command's), then lets stray output settle. `next` gets false on
@@ -119,6 +132,7 @@ private:
     MachineLink *m_link;
     std::optional<int> m_tool;
     FirmwareInfo m_firmware;
+    std::optional<double> m_restoreOnUnlock;
 };
 
 } // namespace Toffee

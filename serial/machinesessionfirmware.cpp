@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Which firmware the machine runs, and what follows from it: the stock firmware reports its TLO only in the
-// status report, and has neither a break test nor a manual offset (docs/CARVERA.md § 7).
+// Which firmware the machine runs, and what follows from it: the stock firmware has neither a break test nor
+// a manual offset, and no offset report (docs/CARVERA.md).
 #include "serial/machinesession.h"
 
 using namespace Qt::StringLiterals;
@@ -9,47 +9,27 @@ namespace Toffee {
 
 void MachineSession::readVersion(Done done, std::function<void()> next)
 {
-    m_link->send("version", MachineLink::kDefaultTimeoutMs, [this, done, next](const CommandReply &reply) {
-        if (reply.status == CommandReply::Status::Timeout || reply.status == CommandReply::Status::LinkLost) {
-            done(failure(reply));
-            return;
-        }
-        // A firmware that refuses "version" (or garbles its answer) stays Unknown: offered only what both
-        // firmwares do.
-        m_firmware = FirmwareInfo {};
-        for (const QByteArray &line : reply.lines) {
-            if (auto info = parseVersion(line)) {
-                m_firmware = *info;
-                break;
+    // A shell command: the firmware prints "version = …" and no "ok".
+    m_link->send(
+        "version", MachineLink::kDefaultTimeoutMs,
+        [this, done, next](const CommandReply &reply) {
+            if (reply.status == CommandReply::Status::Timeout
+                || reply.status == CommandReply::Status::LinkLost) {
+                done(failure(reply));
+                return;
             }
-        }
-        next();
-    });
-}
-
-void MachineSession::readStatusTlo(Done done, SessionResult result)
-{
-    awaitStatus(2000, [done, result](std::optional<MachineStatus> status) mutable {
-        if (!status) {
-            SessionResult bad;
-            bad.outcome = SessionResult::Outcome::LinkFailure;
-            bad.message
-                = tr("The machine sent no status report within 2 s, and this firmware reports its TLO "
-                     "nowhere else. Nothing was recorded; check the cable and try again.");
-            done(bad);
-            return;
-        }
-        result.status = status;
-        if (!status->tool || !status->tlo) {
-            // The stock firmware leaves T: out when the spindle is empty.
-            result.tool = Limits::kEmptySpindle;
-            done(result);
-            return;
-        }
-        result.tool = result.tool ? result.tool : status->tool;
-        result.tlo = TloReading { *status->tlo, 0.0, true };
-        done(result);
-    });
+            // A firmware that refuses "version" (or garbles its answer) stays Unknown: offered only what both
+            // firmwares do.
+            m_firmware = FirmwareInfo {};
+            for (const QByteArray &line : reply.lines) {
+                if (auto info = parseVersion(line)) {
+                    m_firmware = *info;
+                    break;
+                }
+            }
+            next();
+        },
+        ReplyEnd::Line);
 }
 
 void MachineSession::confirmEmptySpindle(Done done)
@@ -59,15 +39,19 @@ void MachineSession::confirmEmptySpindle(Done done)
         result.status = status;
         result.tool = Limits::kEmptySpindle;
         // The stock firmware leaves T: out for an empty spindle; the community firmware says T:-1.
-        const bool empty = status && (status->tool ? *status->tool == Limits::kEmptySpindle
-                                                   : m_firmware.kind == FirmwareInfo::Kind::Stock);
+        const bool empty = status
+            && (status->tool ? *status->tool == Limits::kEmptySpindle
+                             : m_firmware.kind == FirmwareInfo::Kind::Stock);
         if (!empty) {
-            result.outcome = status ? SessionResult::Outcome::MachineError : SessionResult::Outcome::LinkFailure;
+            result.outcome
+                = status ? SessionResult::Outcome::MachineError : SessionResult::Outcome::LinkFailure;
             result.message = status && status->tool
-                ? tr("The machine was told to put its tool back, but it reports T%1 in the spindle. Check the "
-                     "spindle and the rack before you go on.")
+                ? tr(
+                    "The machine was told to put its tool back, but it reports T%1 in the spindle. Check the "
+                    "spindle and the rack before you go on.")
                       .arg(*status->tool)
-                : tr("The machine was told to put its tool back but did not report an empty spindle. Check the "
+                : tr("The machine was told to put its tool back but did not report an empty spindle. Check "
+                     "the "
                      "spindle and the rack before you go on.");
         }
         done(result);

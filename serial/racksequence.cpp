@@ -166,7 +166,7 @@ void RackSequence::check(int index)
 {
     const int tool = m_plan.steps.at(index).tool;
     const auto &offsets = m_connection->lastOffsets();
-    const bool hasReference = offsets && (offsets->onlyTlo || offsets->referenceMz != 0.0);
+    const bool hasReference = offsets && (!offsets->referenceMz || *offsets->referenceMz != 0.0);
     if (m_connection->activeTool() == tool && hasReference)
         return testInSpindle(index);
     // The change measures the tool too (and a tool already in the spindle is measured where it is, so that a
@@ -185,40 +185,38 @@ void RackSequence::testInSpindle(int index)
     const auto machineReference = m_connection->lastOffsets();
     // A tool setter scatters by a few micrometres from one start to the next: a reference that moved by less
     // than a quarter of the tolerance shifts every comparison by that little, and the check goes on.
-    const double moved = current.storedReferenceMz && machineReference && !machineReference->onlyTlo
-        ? std::fabs(*current.storedReferenceMz - machineReference->referenceMz)
+    const double moved = current.storedReferenceMz && machineReference && machineReference->referenceMz
+        ? std::fabs(*current.storedReferenceMz - *machineReference->referenceMz)
         : 0.0;
     if (moved > m_plan.tolerance / 4) {
         SessionResult refused;
         refused.outcome = SessionResult::Outcome::MachineError;
         refused.message
-            = tr("T%1's stored TLO was measured against reference MCS Z %2, but the machine's reference (the "
-                 "first tool it measured since it started) is at %3 now, %4 away: every comparison would be "
-                 "off by that much. Check the reference tool and the tool setter: a damaged or changed "
-                 "reference tool moves it. If they are sound, measure the rack again (Measure Rack).")
+            = tr("T%1's stored TLO was measured against reference MCS Z %2, but the machine's reference is "
+                 "at %3 now, %4 away: every comparison would be off by that much. Check the machine's "
+                 "calibration and the tool setter; if they are sound, measure the rack again (Measure "
+                 "Rack).")
                   .arg(current.tool)
                   .arg(millimetres(*current.storedReferenceMz, false))
-                  .arg(millimetres(machineReference->referenceMz, false))
+                  .arg(millimetres(*machineReference->referenceMz, false))
                   .arg(millimetres(moved));
         return settle(index, RackStep::State::Failed, refused);
     }
-    // The machine keeps one TLO, the spindle tool's: the stored one goes in, and M491.1 compares with it.
-    m_connection->session()->setTlo(*current.storedTlo, step([this, index](const SessionResult &set) {
-        if (!set.ok() || !m_connection->session())
-            return settle(index, RackStep::State::Failed, set);
-        m_connection->session()->breakTest(m_plan.tolerance, step([this, index](const SessionResult &r) {
-            if (r.breakTest)
-                m_plan.steps[index].measuredTlo = r.breakTest->newTlo;
-            if (r.recording)
-                Q_EMIT recorded(r);
-            const bool broken = r.outcome == SessionResult::Outcome::ToolBroken;
-            settle(index,
-                r.ok()       ? RackStep::State::Passed
-                    : broken ? RackStep::State::Broken
-                             : RackStep::State::Failed,
-                r);
-        }));
-    }));
+    // The machine keeps one TLO, the spindle tool's, and M491.1 compares with it: the stored one goes in
+    // first (breakTest sets it when the machine has another).
+    m_connection->session()->breakTest(m_plan.tolerance, step([this, index](const SessionResult &r) {
+        if (r.breakTest)
+            m_plan.steps[index].measuredTlo = r.breakTest->newTlo;
+        if (r.recording)
+            Q_EMIT recorded(r);
+        const bool broken = r.outcome == SessionResult::Outcome::ToolBroken;
+        settle(index,
+            r.ok()       ? RackStep::State::Passed
+                : broken ? RackStep::State::Broken
+                         : RackStep::State::Failed,
+            r);
+    }),
+        *current.storedTlo);
 }
 
 void RackSequence::putBack()

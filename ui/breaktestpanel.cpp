@@ -120,8 +120,9 @@ QString BreakTestPanel::referenceWarning() const
             .arg(*tool)
             .arg(machine ? u" ("_s + millimetres(*machine) + u')' : QString());
     if (machine && std::fabs(*machine - *stored->measuredTlo) > 0.0005)
-        return tr("The machine holds TLO %1 but the table holds %2 for T%3: the test compares against the "
-                  "machine's %1.")
+        return tr(
+            "The machine holds TLO %1 but the table holds %2 for T%3: Toffee sets the table's %2 first, "
+            "and the machine compares the tool with it.")
             .arg(millimetres(*machine), millimetres(*stored->measuredTlo))
             .arg(*tool);
     if (stored->tloSource == TloSource::Manual)
@@ -166,13 +167,19 @@ void BreakTestPanel::run(bool confirm)
     // Whether the TLO compared against was set by hand, as it was before the verdict is recorded.
     const Tool *stored = tool ? m_document->table().find(*tool) : nullptr;
     const bool handSet = stored && stored->measuredTlo && stored->tloSource == TloSource::Manual;
-    const bool started = m_connection->breakTest(tolerance, [this](const SessionResult &r) {
-        // A broken tool is marked in the table (and its file, once saved) until it is probed again.
-        if (r.recording)
-            (void)m_document->record(*r.recording);
-        showResult(r);
-        Q_EMIT finished(r);
-    });
+    // The firmware compares with the TLO in force: the table's for this tool, set first when the machine has
+    // another (after selecting a tool it still has the previous tool's).
+    const std::optional<double> storedTlo = stored ? stored->measuredTlo : std::nullopt;
+    const bool started = m_connection->breakTest(
+        tolerance,
+        [this](const SessionResult &r) {
+            // A broken tool is marked in the table (and its file, once saved) until it is probed again.
+            if (r.recording)
+                (void)m_document->record(*r.recording);
+            showResult(r);
+            Q_EMIT finished(r);
+        },
+        storedTlo);
     if (started) {
         m_verdict->clear();
         m_comparedWithHandSet = handSet;
@@ -201,7 +208,8 @@ void BreakTestPanel::showResult(const SessionResult &r)
         return;
     }
     m_verdict->setText(r.message);
-    QMessageBox::warning(this, tr("The break test did not run"), r.message);
+    if (window()->isVisible()) // not after the operator stopped it to quit
+        QMessageBox::warning(this, tr("The break test did not run"), r.message);
 }
 
 void BreakTestPanel::raiseBrokenAlarm(const SessionResult &r)

@@ -109,6 +109,9 @@ void ProbePanel::report(const SessionResult &result, const QString &title)
     if (result.ok())
         return;
     m_result->setText(result.message);
+    // Stopped because the operator quit: the window is gone, and no box pops up after it.
+    if (!window()->isVisible())
+        return;
     QMessageBox::warning(
         this, title, result.message + u"\n\n"_s + tr("Nothing was written to the tool table."));
 }
@@ -122,14 +125,8 @@ void ProbePanel::probe(bool confirm)
         && QMessageBox::question(this, tr("Probe %1?").arg(name),
                tr("The machine will move: up to clearance, over the tool setter, then down until "
                   "%1 touches it. Keep hands clear.\n\nThe machine says %1 is in the spindle: the "
-                  "measurement is recorded as %1's TLO.%2\n\nProbe now?")
-                   .arg(name,
-                       m_connection->lastOffsets() && m_connection->lastOffsets()->referenceMz == 0.0
-                           ? u"\n\n"_s
-                               + tr("No tool has been measured since the machine started: %1 becomes the "
-                                    "reference tool, and every other TLO is measured against it.")
-                                     .arg(name)
-                           : QString()),
+                  "measurement is recorded as %1's TLO.\n\nProbe now?")
+                   .arg(name),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
@@ -161,17 +158,18 @@ void ProbePanel::restore(bool confirm)
     const double tlo = *tool->measuredTlo;
     const auto &offsets = m_connection->lastOffsets();
     // A TLO is the difference to the reference tool it was measured against: on a machine whose reference is
-    // another (another tool probed first since power-on, or the setter moved) it is simply wrong.
-    if (tool->referenceMz && offsets && offsets->referenceMz != 0.0
-        && std::fabs(*tool->referenceMz - offsets->referenceMz) > 0.0005) {
+    // another (another machine, or one calibrated again since) it is simply wrong.
+    const std::optional<double> machineReference
+        = offsets && offsets->referenceMz && *offsets->referenceMz != 0.0 ? offsets->referenceMz
+                                                                          : std::nullopt;
+    if (tool->referenceMz && machineReference && std::fabs(*tool->referenceMz - *machineReference) > 0.0005) {
         QMessageBox::warning(this, tr("T%1's TLO does not fit this machine's reference").arg(number),
             tr("T%1's TLO %2 was measured against a reference tool at MCS Z %3, but the machine's reference "
-               "is "
-               "now at MCS Z %4 (another tool was probed first since the machine started, or the tool setter "
-               "moved). Restored, it would be off by %5.\n\nProbe T%1 instead.")
+               "is now at MCS Z %4 (another machine's TLO, or the machine was calibrated again since). "
+               "Restored, it would be off by %5.\n\nProbe T%1 instead.")
                 .arg(number)
-                .arg(millimetres(tlo), millimetres(*tool->referenceMz), millimetres(offsets->referenceMz),
-                    millimetres(std::fabs(*tool->referenceMz - offsets->referenceMz))));
+                .arg(millimetres(tlo), millimetres(*tool->referenceMz), millimetres(*machineReference),
+                    millimetres(std::fabs(*tool->referenceMz - *machineReference))));
         return;
     }
     if (confirm) {
@@ -191,10 +189,10 @@ void ProbePanel::restore(bool confirm)
             details << tr("The table does not say which reference tool T%1's TLO was measured against: make "
                           "sure it is the reference the machine has now.")
                            .arg(number);
-        if (offsets && offsets->referenceMz == 0.0)
+        if (offsets && !machineReference)
             details << tr(
-                "The machine has no reference tool measured since it started: a stored TLO is only "
-                "right against the reference it was measured from. Probe the reference tool first.");
+                "The machine reports no reference tool MCS Z: a stored TLO is only right against the "
+                "reference it was measured from.");
         if (tool->breakTestFailed)
             details << tr("T%1 failed its last break test.").arg(number);
         details << tr("Sends: M493.2 T%1, then M493.3 Z%2")

@@ -22,9 +22,9 @@ namespace Toffee {
 
 std::optional<double> RackPanel::machineReference() const
 {
-    // 0 is a machine that has measured nothing since it started; the stock firmware reports no MCS Z.
+    // The stock firmware reports no MCS Z.
     const auto &offsets = m_connection->lastOffsets();
-    if (!offsets || offsets->onlyTlo || offsets->referenceMz == 0.0)
+    if (!offsets || !offsets->referenceMz || *offsets->referenceMz == 0.0)
         return std::nullopt;
     return offsets->referenceMz;
 }

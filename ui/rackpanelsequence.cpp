@@ -71,17 +71,8 @@ void RackPanel::runSequence(RackSequence::Mode mode, bool confirm)
              "measures each on the tool setter; each TLO is recorded in the table. T%2 stays in the spindle.")
               .arg(tools)
               .arg(m_rack->last());
-    // A machine that has measured nothing since it started takes the first tool it measures as its reference.
-    const auto &offsets = m_connection->lastOffsets();
-    const QString reference = !check && offsets && !offsets->onlyTlo && offsets->referenceMz == 0.0
-        ? u"\n\n"_s
-            + tr("The machine has no reference tool yet: T%1, measured first, becomes it, and every TLO is "
-                 "measured against it.")
-                  .arg(m_rack->first())
-        : QString();
     if (confirm
-        && QMessageBox::question(this, title,
-               question + reference + u"\n\n"_s + tr("Keep clear of the machine."),
+        && QMessageBox::question(this, title, question + u"\n\n"_s + tr("Keep clear of the machine."),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;

@@ -223,19 +223,18 @@ void TloPanel::updateTlo()
         return;
     m_tool->setText(
         m_activeTool ? (*m_activeTool < 0 ? tr("none") : u"T"_s + QString::number(*m_activeTool)) : u"—"_s);
-    if (m_offsets && m_offsets->onlyTlo) {
-        // The stock firmware reports the TLO alone: the MCS Zs behind it are not known, not zero.
-        m_reference->setText(tr("not reported"));
-        m_current->setText(tr("not reported"));
-    } else if (m_offsets) {
-        // The firmware starts with both at zero; no tool setter is at MCS Z 0, so zero means never probed.
+    if (m_offsets) {
+        // The stock firmware reports the TLO alone, and after a TLO set by hand the tool has no MCS Z on the
+        // setter: what the machine did not report is said so, not shown as zero.
         m_reference->setText(
-            m_offsets->referenceMz == 0.0 ? tr("not measured") : millimetres(m_offsets->referenceMz));
-        m_current->setText(
-            m_offsets->currentMz == 0.0 ? tr("not measured") : millimetres(m_offsets->currentMz));
+            m_offsets->referenceMz ? millimetres(*m_offsets->referenceMz) : tr("not reported"));
+        m_current->setText(m_offsets->currentMz ? millimetres(*m_offsets->currentMz)
+                : m_offsets->referenceMz        ? tr("not measured")
+                                                : tr("not reported"));
     }
-    const bool neverMeasured
-        = m_offsets && !m_offsets->onlyTlo && m_offsets->referenceMz == 0.0 && m_offsets->currentMz == 0.0;
+    // A TLO of exactly 0 that no MCS Z adds up to is the firmware's "none" (its break test says "No previous
+    // TLO" to it): nothing measured or set since the machine started.
+    const bool neverMeasured = m_offsets && m_offsets->tlo() == 0.0 && !m_offsets->currentMz;
     if (!m_machineTlo) {
         m_tlo->setText(u"—"_s);
         m_tloNote->clear();
@@ -246,7 +245,7 @@ void TloPanel::updateTlo()
     bool warn = false;
     const Tool *tool = m_activeTool ? m_document->table().find(*m_activeTool) : nullptr;
     if (neverMeasured) {
-        note = tr("the machine has measured no tool yet: probe the reference tool first");
+        note = tr("the machine has no TLO in force: probe the tool first");
         warn = true;
     } else if (!m_activeTool || *m_activeTool < 0) {
         note.clear();
@@ -284,11 +283,20 @@ void TloPanel::checkStale()
 
 void TloPanel::unlock()
 {
-    m_connection->unlock([this](const SessionResult &r) {
-        if (!r.ok())
-            QMessageBox::warning(this, tr("Unlock failed"),
-                r.message + u"\n\n"_s + tr("The machine is still halted: check it, then try Unlock again."));
-    });
+    // A tool the table marks broken: the failed break test left its new length in force, and its stored TLO
+    // goes back first.
+    const auto tool = m_connection->activeTool();
+    const Tool *stored = tool ? m_document->table().find(*tool) : nullptr;
+    const std::optional<double> brokenTlo
+        = stored && stored->breakTestFailed ? stored->measuredTlo : std::nullopt;
+    m_connection->unlock(
+        [this](const SessionResult &r) {
+            if (!r.ok())
+                QMessageBox::warning(this, tr("Unlock failed"),
+                    r.message + u"\n\n"_s
+                        + tr("The machine is still halted: check it, then try Unlock again."));
+        },
+        brokenTlo);
 }
 
 } // namespace Toffee

@@ -62,13 +62,14 @@ void printTlo(
     Invocation &call, const SessionResult &r, const QString &trendWarning = {}, const QString &history = {})
 {
     const int tool = r.tool.value_or(-1);
-    // The stock firmware reports the TLO alone, not the MCS Zs it comes from.
-    const bool mcs = !r.tlo->onlyTlo;
+    // The TLO in force is the machine's; the reference and the tool's MCS Z only where it reported them (the
+    // stock firmware reports neither, and after a TLO set by hand there is no MCS Z of the tool).
+    const auto json = [](std::optional<double> v) {
+        return v ? QJsonValue(*v) : QJsonValue();
+    };
     if (call.json) {
-        QJsonObject o { { u"tool"_s, tool },
-            { u"reference_mz"_s, mcs ? QJsonValue(r.tlo->referenceMz) : QJsonValue() },
-            { u"current_mz"_s, mcs ? QJsonValue(r.tlo->currentMz) : QJsonValue() },
-            { u"tlo"_s, r.tlo->tlo() } };
+        QJsonObject o { { u"tool"_s, tool }, { u"reference_mz"_s, json(r.tlo->referenceMz) },
+            { u"current_mz"_s, json(r.tlo->currentMz) }, { u"tlo"_s, r.tlo->tlo() } };
         if (!trendWarning.isEmpty())
             o.insert(u"trend_warning"_s, trendWarning);
         if (!history.isEmpty())
@@ -77,9 +78,11 @@ void printTlo(
         return;
     }
     call.out << "T" << tool << ": TLO " << mm(r.tlo->tlo()) << " mm";
-    if (mcs)
-        call.out << " (current tool MCS Z " << mm(r.tlo->currentMz) << ", reference MCS Z "
-                 << mm(r.tlo->referenceMz) << ")";
+    if (r.tlo->currentMz && r.tlo->referenceMz)
+        call.out << " (current tool MCS Z " << mm(*r.tlo->currentMz) << ", reference MCS Z "
+                 << mm(*r.tlo->referenceMz) << ")";
+    else if (r.tlo->referenceMz)
+        call.out << " (reference MCS Z " << mm(*r.tlo->referenceMz) << ")";
     call.out << Qt::endl;
 }
 
@@ -186,6 +189,8 @@ private:
     // Sets the table's TLO for the tool back on the machine, when it was measured against the machine's
     // reference.
     bool restore();
+    [[nodiscard]] std::optional<double> storedTloInSpindle() const;
+    [[nodiscard]] std::optional<double> brokenToolTloInSpindle() const;
     void roundTrip();
     // `reported`: the command printed the failure itself (a rack's summary holds it).
     void finishWith(const SessionResult &r, bool reported = false);
@@ -357,14 +362,15 @@ void MachineRun::operate()
             printBreakTest(m_call, r);
             if (r.breakTest)
                 (void)record(r);
-        }));
+        }),
+            storedTloInSpindle());
     else if (command == u"restore")
         started = restore();
     else if (command == u"select-tool")
         started = c.selectTool(
             m_options.tool, printed([this](const SessionResult &r) { printSelected(m_call, r); }));
     else if (command == u"unlock")
-        started = c.unlock(status);
+        started = c.unlock(status, brokenToolTloInSpindle());
     else if (command == u"link-test")
         linkTest();
     if (!started) {
@@ -375,17 +381,34 @@ void MachineRun::operate()
     }
 }
 
+// The table's TLO for the tool in the spindle, which a break test compares with (none without --table).
+std::optional<double> MachineRun::storedTloInSpindle() const
+{
+    const auto tool = m_connection.activeTool();
+    const Tool *stored = m_options.table && tool ? m_options.table->find(*tool) : nullptr;
+    return stored ? stored->measuredTlo : std::nullopt;
+}
+
+// The table's TLO for the tool in the spindle when the table marks it broken: unlock sets it back, since the
+// failed break test left the machine with the broken length in force.
+std::optional<double> MachineRun::brokenToolTloInSpindle() const
+{
+    const auto tool = m_connection.activeTool();
+    const Tool *stored = m_options.table && tool ? m_options.table->find(*tool) : nullptr;
+    return stored && stored->breakTestFailed ? stored->measuredTlo : std::nullopt;
+}
+
 bool MachineRun::restore()
 {
     const Tool *tool = m_options.table->find(m_options.tool);
     // The offsets read on connecting: the reference the machine has now.
     const auto &offsets = m_connection.connectResult().tlo;
-    const double machineReference = offsets ? offsets->referenceMz : 0.0;
+    const double machineReference = offsets && offsets->referenceMz ? *offsets->referenceMz : 0.0;
     QString refusal;
     if (machineReference == 0.0)
-        refusal
-            = u"the machine has no reference tool measured since it started, and a stored TLO is only right "
-              "against its own reference: probe the reference tool first."_s;
+        refusal = u"the machine reports no reference tool MCS Z, and a stored TLO is only right against the "
+                  u"reference "
+                  "it was measured with: probe T%1 instead."_s.arg(m_options.tool);
     else if (!tool->referenceMz)
         refusal
             = u"T%1's TLO in the table does not say which reference it was measured against, so it cannot be "

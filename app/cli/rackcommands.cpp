@@ -187,10 +187,10 @@ std::optional<double> storedTloForChange(
         if (auto added = addLibraryFacts(facts, *o.library, o.machine, { o.tool }); !added)
             return note(added.error().message);
     }
-    // 0: the machine has measured no reference since it started; the stock firmware reports none.
+    // The stock firmware reports no reference.
     const auto &offsets = connection.lastOffsets();
-    const std::optional<double> reference = offsets && !offsets->onlyTlo && offsets->referenceMz != 0.0
-        ? std::optional<double>(offsets->referenceMz)
+    const std::optional<double> reference = offsets && offsets->referenceMz && *offsets->referenceMz != 0.0
+        ? offsets->referenceMz
         : std::nullopt;
     auto tlo = restorableTlo(o.tool, facts.value(o.tool), QDateTime::currentDateTimeUtc(), o.staleDays,
         reference, ReferenceCheck::Required);

@@ -90,10 +90,21 @@ Result<void> JobPreparer::breakTest(const LineSink &sink)
                 .arg(lastCut));
         return {};
     }
+    // The firmware's own rules (seen on the community firmware, ATCHandler): M491.1 takes T0 and every tool
+    // from T9 up for its wireless probe and halts, and a TLO of exactly 0 for none (it measures without
+    // comparing).
+    if (tool == 0 || tool >= 9) {
+        noteOnce(tool,
+            tr("T%1 is not break-tested: the community firmware's break test takes T0 and every tool from T9 "
+               "up "
+               "for its wireless probe, and would halt the program.")
+                .arg(tool));
+        return {};
+    }
     if (const ToolFacts facts = m_facts.value(tool); facts.measuredTlo && *facts.measuredTlo == 0.0) {
         noteOnce(tool,
-            tr("T%1 is the reference tool (TLO 0): the community firmware does not break-test it (it "
-               "aborts with \"No previous TLO included\"), so no test is inserted.")
+            tr("T%1 is not break-tested: its TLO is 0.000 mm, which the community firmware takes for none "
+               "(\"No previous TLO included\"): it would measure the tool without comparing.")
                 .arg(tool));
         return {};
     }
@@ -248,8 +259,8 @@ Result<void> JobPreparer::sameReference(int tool, const ToolFacts &facts)
         m_restoredReference = facts.referenceMz;
         m_restoredTool = tool;
         m_summary.notes.append(
-            tr("The stored TLOs hold only while the machine's reference MCS Z is %1 (where its "
-               "reference tool was probed): check it before running the program.")
+            tr("The stored TLOs hold only while the machine's reference MCS Z is %1 (its calibration): "
+               "check it before running the program.")
                 .arg(commandNumber(*facts.referenceMz)));
     }
     return {};

@@ -75,7 +75,9 @@ std::optional<WearTrend> WearTrend::fit(const QList<TrendPoint> &points)
 std::optional<QString> WearTrend::check(int tool, double x, double tlo, double tolerance) const
 {
     const double off = tlo - predict(x);
-    if (!std::isfinite(off) || std::fabs(off) <= tolerance)
+    // Lengths at the machine's 0.001 mm: a difference of exactly the tolerance is within it, whatever its
+    // last binary digit (43.04 - 42.94 is 0.1000000000000014).
+    if (!std::isfinite(off) || std::fabs(off) <= tolerance + 1e-9)
         return std::nullopt; // never "nan mm longer"
     const QString amount = millimetres(std::fabs(off));
     const QString band = formatNumber(tolerance, NumberFormat::upTo(3).inLocale());

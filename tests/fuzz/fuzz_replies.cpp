@@ -34,9 +34,11 @@ void checkLine(QByteArrayView line)
             TOFFEE_FUZZ_CHECK(finite(v), shown);
         for (double v : status->wpos)
             TOFFEE_FUZZ_CHECK(finite(v), shown);
-        TOFFEE_FUZZ_CHECK(status->tool.has_value() == status->tlo.has_value(), shown);
+        // A tool comes with its TLO; a T: field whose number is no tool's keeps the TLO and names no tool.
         if (status->tool)
-            TOFFEE_FUZZ_CHECK(*status->tool >= -1 && *status->tool <= 999999 && finite(*status->tlo), shown);
+            TOFFEE_FUZZ_CHECK(status->tlo && *status->tool >= -1 && *status->tool <= 999999, shown);
+        if (status->tlo)
+            TOFFEE_FUZZ_CHECK(finite(*status->tlo), shown);
         if (status->haltReason) {
             TOFFEE_FUZZ_CHECK(status->isAlarm(), shown);
             TOFFEE_FUZZ_CHECK(!haltReasonName(*status->haltReason).isEmpty(), shown);
@@ -45,7 +47,7 @@ void checkLine(QByteArrayView line)
     }
     if (const auto tlo = parseTloReport(line)) {
         TOFFEE_FUZZ_CHECK(kind == ReplyKind::Other, shown);
-        TOFFEE_FUZZ_CHECK(finite(tlo->currentMz) && finite(tlo->referenceMz) && finite(tlo->tlo()), shown);
+        TOFFEE_FUZZ_CHECK(finite(tlo->currentMz) && finite(tlo->referenceMz), shown);
         TOFFEE_FUZZ_CHECK(std::fabs(tlo->currentMz) <= kMaxMachineMillimetres
                 && std::fabs(tlo->referenceMz) <= kMaxMachineMillimetres,
             shown);

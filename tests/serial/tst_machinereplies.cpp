@@ -16,7 +16,94 @@ private Q_SLOTS:
         const auto report
             = parseTloReport("current tool offset [-105.688] , reference tool offset [-72.300]");
         QVERIFY(report);
-        QCOMPARE(report->tlo(), -33.388); // not -33.388000000000005
+        const TloReading reading = TloReading::from(report->currentMz - report->referenceMz, report);
+        QCOMPARE(reading.tlo(), -33.388); // not -33.388000000000005
+        QCOMPARE(reading.currentMz, -105.688);
+    }
+
+    // After a probe, M493.4's current - reference is the TLO in force: the current MCS Z is known. After
+    // M493.3 Z-10.5 the firmware prints -10.5 as "current" and the status report's TLO is -10.5: there is no
+    // MCS Z of the tool then, and none is made up (seen on the firmware).
+    void theCurrentMcsZIsKeptOnlyWhenItAddsUpToTheTloInForce_data()
+    {
+        QTest::addColumn<QByteArray>("report");
+        QTest::addColumn<double>("tloInForce");
+        QTest::addColumn<bool>("currentKnown");
+        QTest::newRow("after a probe")
+            << QByteArray("current tool offset [-108.425] , reference tool offset [-115.340]") << 6.915
+            << true;
+        QTest::newRow("after M493.3 Z-10.5")
+            << QByteArray("current tool offset [-10.500] , reference tool offset [-115.340]") << -10.5
+            << false;
+        QTest::newRow("a fresh machine")
+            << QByteArray("current tool offset [0.000] , reference tool offset [-115.340]") << 0.0 << false;
+    }
+    void theCurrentMcsZIsKeptOnlyWhenItAddsUpToTheTloInForce()
+    {
+        QFETCH(QByteArray, report);
+        QFETCH(double, tloInForce);
+        QFETCH(bool, currentKnown);
+        const auto parsed = parseTloReport(report);
+        QVERIFY(parsed);
+        const TloReading reading = TloReading::from(tloInForce, parsed);
+        QCOMPARE(reading.tlo(), tloInForce); // the TLO is the one in force, never current - reference
+        QCOMPARE(reading.referenceMz, -115.34);
+        QCOMPARE(reading.currentMz.has_value(), currentKnown);
+    }
+
+    // The firmware's `version` says what its build was named: only a plain release number is Makera's.
+    void tellsTheFirmwareFromItsVersion_data()
+    {
+        QTest::addColumn<QByteArray>("line");
+        QTest::addColumn<int>("kind");
+        const int community = int(FirmwareInfo::Kind::Community);
+        const int stock = int(FirmwareInfo::Kind::Stock);
+        QTest::newRow("the peer") << QByteArray("version = 2.1.0c-simulator") << community;
+        QTest::newRow("a tag") << QByteArray("version = 2.1.0c") << community;
+        QTest::newRow("a branch") << QByteArray("version = Dev-78afb9f") << community;
+        QTest::newRow("a pull request") << QByteArray("version = pr-355-78afb9f") << community;
+        QTest::newRow("an alpha") << QByteArray("version = vcommunity_1.0.5alpha6") << community;
+        QTest::newRow("an older tag") << QByteArray("version = v1.0.3c1.0.6") << community;
+        QTest::newRow("git describe") << QByteArray("version = v2.1.0c-3-gabc1234") << community;
+        QTest::newRow("Makera 1.0.5") << QByteArray("version = 1.0.5") << stock;
+        QTest::newRow("Makera 0.9.13") << QByteArray("version = 0.9.13") << stock;
+        QTest::newRow("Makera 1.0") << QByteArray("version = 1.0") << stock;
+    }
+    void tellsTheFirmwareFromItsVersion()
+    {
+        QFETCH(QByteArray, line);
+        QFETCH(int, kind);
+        const auto info = parseVersion(line);
+        QVERIFY(info);
+        QCOMPARE(int(info->kind), kind);
+        QCOMPARE(info->version, QString::fromLatin1(line.mid(10)));
+    }
+
+    // How each kind of command's reply ends on the firmware: a script to "Done ATC", `version` with its one
+    // line, $X and lower-case shell words perhaps with nothing.
+    void knowsHowEachRepliesEnd_data()
+    {
+        QTest::addColumn<QByteArray>("line");
+        QTest::addColumn<int>("end");
+        QTest::newRow("M491") << QByteArray("M491") << int(ReplyEnd::Script);
+        QTest::newRow("M491.1 H0.05") << QByteArray("M491.1 H0.05") << int(ReplyEnd::Script);
+        QTest::newRow("M6 T2") << QByteArray("M6 T2") << int(ReplyEnd::Script);
+        QTest::newRow("m6t2, lower case") << QByteArray("m6t2") << int(ReplyEnd::Quiet);
+        QTest::newRow("M493.4") << QByteArray("M493.4") << int(ReplyEnd::Ok);
+        QTest::newRow("M493.2 T1") << QByteArray("M493.2 T1") << int(ReplyEnd::Ok);
+        QTest::newRow("G0 X1") << QByteArray("G0 X1") << int(ReplyEnd::Ok);
+        QTest::newRow("version") << QByteArray("version") << int(ReplyEnd::Line);
+        QTest::newRow("$X") << QByteArray("$X") << int(ReplyEnd::Quiet);
+        QTest::newRow("echo echo") << QByteArray("echo echo") << int(ReplyEnd::Quiet);
+        QTest::newRow("empty") << QByteArray("") << int(ReplyEnd::Ok);
+    }
+    void knowsHowEachRepliesEnd()
+    {
+        QFETCH(QByteArray, line);
+        QFETCH(int, end);
+        QCOMPARE(int(replyEndFor(line)), end);
+        QVERIFY(isScriptDone("Done ATC\r"));
+        QVERIFY(!isScriptDone("Done ATC soon"));
     }
 
     void classifiesByExactToken_data()
@@ -88,11 +175,22 @@ private Q_SLOTS:
             << 0.5 << 0;
         QTest::newRow("T-1, the empty spindle")
             << QByteArray("<Idle|MPos:1,2,3|T:-1,0>") << true << u"Idle"_s << 3.0 << 0.0 << -1 << 0.0 << 0;
-        QTest::newRow("T beyond any tool") << QByteArray("<Idle|MPos:1,2,3|T:1000000,0>") << false
-                                           << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
+        // The firmware takes M493.2 T1000000 (or T-2) and reports it: the report holds no tool then, but its
+        // state and position still count (every report refused would look like a dead link).
+        QTest::newRow("T beyond any tool") << QByteArray("<Idle|MPos:1,2,3|T:1000000,6.915>") << true
+                                           << u"Idle"_s << 3.0 << 0.0 << -1 << 6.915 << 0;
+        QTest::newRow("T-2") << QByteArray("<Idle|MPos:1,2,3|T:-2,0.000,-1,0>") << true << u"Idle"_s << 3.0
+                             << 0.0 << -1 << 0.0 << 0;
         // Found by fuzz-replies: taken as an int, 19999999999 wrapped round to another tool's number.
-        QTest::newRow("T wrapping an int") << QByteArray("<Idle|MPos:1,2,3|T:19999999999,0>") << false
-                                           << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
+        QTest::newRow("T wrapping an int") << QByteArray("<Idle|MPos:1,2,3|T:19999999999,0>") << true
+                                           << u"Idle"_s << 3.0 << 0.0 << -1 << 0.0 << 0;
+        QTest::newRow("the real firmware, halted") << QByteArray(
+            "<Alarm|MPos:-4.9650,-54.4800,-20.0000,0.4875,0.0000|WPos:-4.9650,-54.4800,-26.9150,0.4875,0."
+            "0000|"
+            "R:0.0000|G:0|F:0.0,5000.0,100.0|S:0.0,10000.0,100.0,0,25.0,0.0,0,0,0|T:1,6.915,-1,0|W:0.00|"
+            "L:0, 0, 0, 0.0,100.0|P:93980767033532,0,0,0,93980767033532|H:4|C:1,6,0,0|PWM:0.000>")
+                                                   << true << u"Alarm"_s << -20.0 << -26.915 << 1 << 6.915
+                                                   << 4;
         QTest::newRow("H wrapping an int") << QByteArray("<Alarm|MPos:1,2,3|H:4294967299>") << false
                                            << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
         QTest::newRow("H negative") << QByteArray("<Alarm|MPos:1,2,3|H:-3>") << false << QString() << 0.0
@@ -166,7 +264,7 @@ private Q_SLOTS:
         const auto r = parseTloReport(line);
         QCOMPARE(r.has_value(), valid);
         if (valid)
-            QVERIFY(qFuzzyCompare(1.0 + r->tlo(), 1.0 + tlo));
+            QVERIFY(qFuzzyCompare(1.0 + (r->currentMz - r->referenceMz), 1.0 + tlo));
     }
 
     void parsesProbeResults_data()

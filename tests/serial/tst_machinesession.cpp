@@ -24,44 +24,66 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), qPrintable(r.message));
         QCOMPARE(h.sent.mid(0, 4), (QList<QByteArray> { "", ";", "version", "M493.4" }));
         QCOMPARE(h.session.firmware().kind, FirmwareInfo::Kind::Community);
-        QCOMPARE(h.session.firmware().version, u"2.1.0c"_s);
+        QCOMPARE(h.session.firmware().version, u"2.1.0c-emulator"_s);
         QVERIFY(r.status.has_value());
         QCOMPARE(r.tool.value_or(-2), 1);
         QVERIFY(r.tlo.has_value());
     }
 
-    void followsTheSeedsWorkedExample()
+    // The TLO in force is the machine's own (its status report), against the reference it is calibrated
+    // with (-115.340 on a C1): probing never makes a tool the reference.
+    void measuresAndSetsAgainstTheMachinesReference()
     {
         SessionHarness h;
         QVERIFY(h.connect().ok());
         SessionResult r = h.run([&](auto done) { h.session.probe(done); });
         QVERIFY2(r.ok(), qPrintable(r.message));
-        QCOMPARE(r.tlo->referenceMz, -72.3);
-        QCOMPARE(r.tlo->tlo(), 0.0);
+        QCOMPARE(*r.tlo->referenceMz, -115.34);
+        QCOMPARE(r.tlo->tlo(), 43.04);
         QVERIFY(h.run([&](auto done) { h.session.selectTool(2, done); }).ok());
         r = h.run([&](auto done) { h.session.probe(done); });
         QVERIFY2(r.ok(), qPrintable(r.message));
         QCOMPARE(r.tool.value_or(-1), 2);
-        QCOMPARE(r.tlo->currentMz, -105.688);
-        QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-33.388"_s);
-        // The result carries what to record: T2's TLO, probed, against the reference at -72.300.
+        QCOMPARE(*r.tlo->currentMz, -105.688);
+        QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"9.652"_s);
+        // The result carries what to record: T2's TLO, probed, against the reference at -115.340.
         QVERIFY(r.recording);
         QCOMPARE(r.recording->tool, 2);
-        QCOMPARE(*r.recording->tlo, -33.388);
+        QCOMPARE(*r.recording->tlo, 9.652);
         QCOMPARE(r.recording->source, TloSource::Probe);
-        QCOMPARE(*r.recording->referenceMz, -72.3);
+        QCOMPARE(*r.recording->referenceMz, -115.34);
+        QCOMPARE(*r.recording->currentMz, -105.688);
         r = h.run([&](auto done) { h.session.setTlo(r.tlo->tlo() + 2.9, done); });
         QVERIFY2(r.ok(), qPrintable(r.message));
-        QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-30.488"_s);
-        QCOMPARE(h.sent.last(), QByteArray("M493.3 Z-30.488"));
+        QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"12.552"_s);
+        QCOMPARE(h.sent.last(), QByteArray("M493.4"));
+        QVERIFY(h.sent.contains("M493.3 Z12.552"));
         QVERIFY(r.recording);
         QCOMPARE(r.recording->source, TloSource::Manual); // set by hand
-        QCOMPARE(*r.recording->tlo, -30.488);
+        QCOMPARE(*r.recording->tlo, 12.552);
+        // M493.4 prints the TLO as the "current tool offset" now: no MCS Z of the tool is made up from it.
+        QVERIFY(!r.recording->currentMz);
         // Recorded the same way the window and the CLI record it.
         ToolTable table;
         QVERIFY(table.record(*r.recording).ok());
         QCOMPARE(table.find(2)->tloSource, TloSource::Manual);
-        QCOMPARE(*table.find(2)->referenceMz, -72.3);
+        QCOMPARE(*table.find(2)->referenceMz, -115.34);
+    }
+
+    // Set from a gauge: Toffee works the TLO out from the status report and sends M493.3 Z (the firmware's
+    // M493.3 H is 115 mm off after an M493.3 Z).
+    void setsTheTloFromAGaugeWithoutTheFirmwaresH()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        QVERIFY(h.run([&](auto done) { h.session.setTlo(20.0, done); }).ok());
+        const SessionResult r = h.run([&](auto done) { h.session.setTloAboveZ0(3.0, done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        // Work Z is MPos Z (-2) less the work offset (-59) less the TLO (20): 37. The tip at 3 mm: TLO 54.
+        QCOMPARE(r.tlo->tlo(), 54.0);
+        QVERIFY(h.sent.contains("M493.3 Z54"));
+        QVERIFY(!h.sent.contains("M493.3 H3"));
+        QCOMPARE(h.emulator.tlo(), 54.0);
     }
 
     void refusesBadInputWithoutSendingIt_data()
@@ -139,13 +161,76 @@ private Q_SLOTS:
         QVERIFY(h.emulator.isHalted());
     }
 
-    void aBreakTestWithoutAPreviousTloSaysSo()
+    // The firmware compares with the TLO in force and takes 0 for none: it would measure without comparing.
+    void aBreakTestAgainstNoTloIsNotSent()
     {
         SessionHarness h;
         QVERIFY(h.connect().ok());
+        const qsizetype before = h.sent.size();
         const SessionResult r = h.run([&](auto done) { h.session.breakTest(0.1, done); });
-        QCOMPARE(r.outcome, Outcome::MachineError);
-        QVERIFY(r.message.contains(u"Probe the tool first"_s));
+        QCOMPARE(r.outcome, Outcome::Refused);
+        QVERIFY2(r.message.contains(u"takes a TLO of 0.000 mm for none"_s), qPrintable(r.message));
+        QCOMPARE(h.sent.size(), before);
+    }
+
+    // After M493.2 the firmware still has the previous tool's TLO in force, and M491.1 would compare with
+    // it: with the table's TLO the session sets that first.
+    void aBreakTestComparesWithTheStoredTloNotThePreviousTools()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        QVERIFY(h.run([&](auto done) { h.session.probe(done); }).ok()); // T1: 43.040
+        QVERIFY(h.run([&](auto done) { h.session.selectTool(2, done); }).ok());
+        const SessionResult r = h.run([&](auto done) { h.session.breakTest(0.1, done, 9.652); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QVERIFY(h.sent.contains("M493.3 Z9.652"));
+        QCOMPARE(r.breakTest->oldTlo, 9.652);
+        QCOMPARE(r.breakTest->newTlo, 9.652);
+    }
+
+    // The firmware takes T0 and T9 on for its wireless probe in M491.1, and halts after measuring.
+    void aBreakTestOfToolNineOrAboveIsNotSent()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        QVERIFY(h.run([&](auto done) { h.session.selectTool(9, done); }).ok());
+        const qsizetype before = h.sent.size();
+        const SessionResult r = h.run([&](auto done) { h.session.breakTest(0.1, done, 12.5); });
+        QCOMPARE(r.outcome, Outcome::Refused);
+        QVERIFY2(r.message.contains(u"wireless probe"_s), qPrintable(r.message));
+        QCOMPARE(h.sent.size(), before);
+    }
+
+    // A failed break test halts with the new, broken length in force; Unlock sets the stored TLO back first.
+    void unlockingAfterABrokenToolPutsTheStoredTloBack()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        QVERIFY(h.run([&](auto done) { h.session.probe(done); }).ok());
+        h.emulator.breakTool(1, 0.3);
+        SessionResult r = h.run([&](auto done) { h.session.breakTest(0.1, done); });
+        QCOMPARE(r.outcome, Outcome::ToolBroken);
+        QCOMPARE(h.emulator.tlo(), 42.74); // the broken length, in force
+        QCOMPARE(h.session.tloToRestore(), 43.04);
+        QVERIFY2(r.message.contains(u"42.740 mm, in force"_s), qPrintable(r.message));
+        r = h.run([&](auto done) { h.session.unlock(done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(h.emulator.tlo(), 43.04);
+        QCOMPARE(h.sent.mid(h.sent.size() - 3), (QList<QByteArray> { "$X", "M493.3 Z43.04", "M493.4" }));
+        QVERIFY2(r.message.contains(u"stored TLO, 43.040 mm, is in force again"_s), qPrintable(r.message));
+        QVERIFY(!h.session.tloToRestore());
+    }
+
+    // $X on a machine that is not halted gets no answer at all from the firmware: it is not sent.
+    void unlockingAMachineThatIsNotHaltedSendsNothing()
+    {
+        SessionHarness h;
+        QVERIFY(h.connect().ok());
+        const qsizetype before = h.sent.size();
+        const SessionResult r = h.run([&](auto done) { h.session.unlock(done); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(h.sent.size(), before);
+        QVERIFY(h.link.isOpen());
     }
 
     void reachesAHaltedMachineToUnlockIt()
@@ -209,7 +294,7 @@ private Q_SLOTS:
         const SessionResult r = h.run([&](auto done) { h.session.changeTool(2, done); });
         QVERIFY2(r.ok(), qPrintable(r.message));
         QCOMPARE(r.tool.value_or(-1), 2);
-        QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-33.388"_s);
+        QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"9.652"_s);
     }
 
     void abortStopsAProbe()
