@@ -912,10 +912,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>T%1 hat keine TLO in der Tabelle: Der Test vergleicht mit der TLO, die die Maschine gerade hat%2, und die ist vielleicht nicht die von T%1.</translation>
     </message>
     <message>
-        <source>The machine holds TLO %1 but the table holds %2 for T%3: the test compares against the machine&apos;s %1.</source>
-        <translation>Die Maschine hat TLO %1, die Tabelle aber %2 für T%3: Der Test vergleicht mit dem Wert der Maschine, %1.</translation>
-    </message>
-    <message>
         <source>T%1&apos;s TLO %2 was set by hand (%3), not measured: if that value is not the tool&apos;s real length, the test reports the tool broken and halts the machine.</source>
         <translation>Die TLO %2 von T%1 wurde von Hand gesetzt (%3), nicht gemessen: Entspricht dieser Wert nicht der tatsächlichen Länge des Werkzeugs, meldet der Test das Werkzeug als gebrochen und hält die Maschine an.</translation>
     </message>
@@ -954,6 +950,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The spindle is empty: load a tool first (Rack ▸ Load).</source>
         <translation>Die Spindel ist leer: Wechseln Sie zuerst ein Werkzeug ein (Magazin ▸ Einwechseln).</translation>
+    </message>
+    <message>
+        <source>The machine holds TLO %1 but the table holds %2 for T%3: Toffee sets the table&apos;s %2 first, and the machine compares the tool with it.</source>
+        <translation>Die Maschine hat die Längenkorrektur %1, die Tabelle aber %2 für T%3: Toffee setzt zuerst %2 aus der Tabelle, und die Maschine vergleicht das Werkzeug damit.</translation>
     </message>
 </context>
 <context>
@@ -2493,10 +2493,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Das Programm schneidet vor jedem Werkzeugwechsel (Originalzeile %1): Es gibt kein Werkzeug für einen Bruchtest.</translation>
     </message>
     <message>
-        <source>T%1 is the reference tool (TLO 0): the community firmware does not break-test it (it aborts with &quot;No previous TLO included&quot;), so no test is inserted.</source>
-        <translation>T%1 ist das Referenzwerkzeug (TLO 0): Die Community-Firmware macht damit keinen Bruchtest (sie bricht mit „No previous TLO included“ ab), daher wird kein Test eingefügt.</translation>
-    </message>
-    <message>
         <source>T%1 is in the rack: the Carvera measures a rack tool at every change.</source>
         <translation>T%1 ist im Magazin: Die Carvera vermisst ein Magazinwerkzeug bei jedem Wechsel.</translation>
     </message>
@@ -2521,12 +2517,20 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die von T%3 gegen %4: Die Maschine hat eine Referenz, also stimmt höchstens eine. Vermessen Sie eines der Werkzeuge erneut oder bereiten Sie ohne gespeicherte TLOs vor. Es wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
-        <translation>Die gespeicherten TLOs gelten nur, solange die Referenz-MCS-Z der Maschine %1 ist (wo ihr Referenzwerkzeug vermessen wurde): Prüfen Sie das, bevor Sie das Programm starten.</translation>
-    </message>
-    <message>
         <source>%1 more notes like these, one for each further tool (the first of them T%2): counted, not listed.</source>
         <translation>%1 weitere solche Hinweise, einer je weiteres Werkzeug (das erste davon T%2): gezählt, nicht aufgeführt.</translation>
+    </message>
+    <message>
+        <source>T%1 is not break-tested: the community firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt the program.</source>
+        <translation>T%1 wird nicht auf Bruch geprüft: Die Bruchprüfung der Community-Firmware hält T0 und jedes Werkzeug ab T9 für ihren Funktaster und würde das Programm anhalten.</translation>
+    </message>
+    <message>
+        <source>T%1 is not break-tested: its TLO is 0.000 mm, which the community firmware takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
+        <translation>T%1 wird nicht auf Bruch geprüft: Seine Längenkorrektur ist 0,000 mm, was die Community-Firmware für keine hält („No previous TLO included“): Sie würde das Werkzeug vermessen, ohne zu vergleichen.</translation>
+    </message>
+    <message>
+        <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (its calibration): check it before running the program.</source>
+        <translation>Die gespeicherten Längenkorrekturen gelten nur, solange die Referenz-MCS-Z der Maschine %1 ist (ihre Kalibrierung): Prüfen Sie das, bevor Sie das Programm starten.</translation>
     </message>
 </context>
 <context>
@@ -3214,14 +3218,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die Maschine hat die Messung beendet, aber das Messergebnis ([PRB:…]) war nicht lesbar. Nichts wurde gespeichert; prüfen Sie die Korrekturen (Bericht), bevor Sie schneiden.</translation>
     </message>
     <message>
-        <source>Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a difference of %4 mm; the tolerance is %5 mm). The machine has halted. Check the tool and replace it if it is damaged, then Unlock.</source>
-        <translation>Werkzeug T%1 ist möglicherweise gebrochen: Es hat eine Längenkorrektur von %2 mm gemessen, vorher %3 mm (Abweichung %4 mm; Toleranz %5 mm). Die Maschine hat angehalten. Prüfen Sie das Werkzeug, ersetzen Sie es, wenn es beschädigt ist, und entsperren Sie dann.</translation>
-    </message>
-    <message>
-        <source>The machine has no TLO for this tool to compare with. Probe the tool first, then run the break test.</source>
-        <translation>Die Maschine hat für dieses Werkzeug keine Längenkorrektur zum Vergleich. Vermessen Sie das Werkzeug zuerst und starten Sie dann den Bruchtest.</translation>
-    </message>
-    <message>
         <source>The break test ran but its result (&quot;Old: … , new: …&quot;) could not be read. Run it again before you trust the tool.</source>
         <translation>Der Bruchtest ist gelaufen, aber sein Ergebnis („Old: … , new: …“) war nicht lesbar. Starten Sie ihn erneut, bevor Sie dem Werkzeug trauen.</translation>
     </message>
@@ -3230,24 +3226,12 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Werkzeug T%1 hat %2 mm gemessen, vorher %3 mm, mehr als die Toleranz von %4 mm.</translation>
     </message>
     <message>
-        <source>The machine&apos;s reply to %1 could not be read. Check the offsets (Report) before you cut.</source>
-        <translation>Die Antwort der Maschine auf %1 war nicht lesbar. Prüfen Sie die Korrekturen (Bericht), bevor Sie schneiden.</translation>
-    </message>
-    <message>
         <source>The tool length offset</source>
         <translation>Die Werkzeuglängenkorrektur</translation>
     </message>
     <message>
-        <source>The machine was told TLO %1 mm but reports %2 mm. Check the offsets before you cut.</source>
-        <translation>Der Maschine wurde eine Längenkorrektur von %1 mm gesendet, sie meldet aber %2 mm. Prüfen Sie die Korrekturen, bevor Sie schneiden.</translation>
-    </message>
-    <message>
         <source>The height above Z0</source>
         <translation>Die Höhe über Z0</translation>
-    </message>
-    <message>
-        <source>T%1 is in the spindle, but its probe result ([PRB:…]) could not be read. Nothing was recorded; probe the tool again.</source>
-        <translation>T%1 ist in der Spindel, aber das Messergebnis ([PRB:…]) war nicht lesbar. Nichts wurde gespeichert; vermessen Sie das Werkzeug erneut.</translation>
     </message>
     <message>
         <source>The machine did not confirm the unlock; check its state before you go on.</source>
@@ -3278,16 +3262,8 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Werkzeug %1 ist keine Werkzeugnummer; verwenden Sie %2 bis %3 (%4 für eine leere Spindel).</translation>
     </message>
     <message>
-        <source>T%1 is in the spindle, but the machine reports TLO %2 mm where it was told %3 mm. Probe T%1 before you cut.</source>
-        <translation>T%1 ist in der Spindel, aber die Maschine meldet TLO %2 mm, obwohl ihr %3 mm gesendet wurde. Vermessen Sie T%1, bevor Sie schneiden.</translation>
-    </message>
-    <message>
         <source>none</source>
         <translation>keine</translation>
-    </message>
-    <message>
-        <source>The machine sent no status report within 2 s, and this firmware reports its TLO nowhere else. Nothing was recorded; check the cable and try again.</source>
-        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet, und diese Firmware meldet die TLO nirgends sonst. Nichts wurde gespeichert; prüfen Sie das Kabel und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>The machine was told to put its tool back, but it reports T%1 in the spindle. Check the spindle and the rack before you go on.</source>
@@ -3308,6 +3284,70 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
         <translation>Auf der Maschine läuft %1, die M493.3 stillschweigend ignoriert: Eine von Hand gesetzte TLO würde nicht verwendet. Vermessen Sie stattdessen das Werkzeug, oder wechseln Sie mit seiner TLO zu ihm (ein manueller Wechsel).</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable and try again.</source>
+        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet, und aus ihm wird die gültige Längenkorrektur gelesen. Nichts wurde aufgezeichnet; prüfen Sie das Kabel und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The machine measured the tool, but its two reports disagree: the TLO in force is %1 mm, and its offset report does not add up to it. Nothing was recorded; probe again.</source>
+        <translation>Die Maschine hat das Werkzeug vermessen, aber ihre beiden Berichte widersprechen sich: Die gültige Längenkorrektur ist %1 mm, und ihr Korrekturbericht ergibt sie nicht. Nichts wurde aufgezeichnet; vermessen Sie erneut.</translation>
+    </message>
+    <message>
+        <source>The firmware&apos;s break test takes T%1 for its wireless probe (T0, and every tool from T9 up): it would measure the tool, then halt. Break-test tools T1 to T8, or probe T%1 and compare its TLO with the table.</source>
+        <translation>Die Bruchprüfung der Firmware hält T%1 für ihren Funktaster (T0 und jedes Werkzeug ab T9): Sie würde das Werkzeug vermessen und dann anhalten. Prüfen Sie die Werkzeuge T1 bis T8 auf Bruch, oder vermessen Sie T%1 und vergleichen Sie seine Längenkorrektur mit der Tabelle.</translation>
+    </message>
+    <message>
+        <source>The stored TLO</source>
+        <translation>Die gespeicherte Längenkorrektur</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s; no break test was run.</source>
+        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet; es wurde keine Bruchprüfung ausgeführt.</translation>
+    </message>
+    <message>
+        <source>The firmware compares with the TLO in force, and takes a TLO of 0.000 mm for none: it would measure T%1 without comparing. No break test was run; probe T%1 and compare its TLO with the table.</source>
+        <translation>Die Firmware vergleicht mit der gültigen Längenkorrektur und hält 0,000 mm für keine: Sie würde T%1 vermessen, ohne zu vergleichen. Es wurde keine Bruchprüfung ausgeführt; vermessen Sie T%1 und vergleichen Sie seine Längenkorrektur mit der Tabelle.</translation>
+    </message>
+    <message>
+        <source>The machine compared T%1 with a TLO of %2 mm, not its stored %3 mm, so its verdict does not hold. Check the offsets, then run the break test again.</source>
+        <translation>Die Maschine hat T%1 mit einer Längenkorrektur von %2 mm verglichen, nicht mit den gespeicherten %3 mm; ihr Ergebnis gilt daher nicht. Prüfen Sie die Korrekturen und führen Sie die Bruchprüfung erneut aus.</translation>
+    </message>
+    <message>
+        <source>Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a difference of %4 mm; the tolerance is %5 mm). The machine has halted with the new length, %2 mm, in force. Check the tool and replace it if it is damaged, then Unlock: Toffee sets the stored TLO, %3 mm, back first.</source>
+        <translation>Werkzeug T%1 ist möglicherweise gebrochen: Es wurde mit einer Längenkorrektur von %2 mm gemessen, zuvor %3 mm (eine Differenz von %4 mm; die Toleranz ist %5 mm). Die Maschine hat angehalten, mit der neuen Länge %2 mm in Kraft. Prüfen Sie das Werkzeug und ersetzen Sie es, falls es beschädigt ist, dann Entsperren: Toffee setzt zuerst die gespeicherte Längenkorrektur %3 mm zurück.</translation>
+    </message>
+    <message>
+        <source>The machine had no TLO for this tool to compare with: it measured the tool and took the new length without comparing. Check the TLO it reports against the table before you cut.</source>
+        <translation>Die Maschine hatte für dieses Werkzeug keine Längenkorrektur zum Vergleich: Sie hat das Werkzeug vermessen und die neue Länge ohne Vergleich übernommen. Prüfen Sie die gemeldete Längenkorrektur anhand der Tabelle, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>The machine was told TLO %1 mm but reports %2 mm in force. Check the offsets before you cut.</source>
+        <translation>Der Maschine wurde die Längenkorrektur %1 mm gesendet, sie meldet aber %2 mm in Kraft. Prüfen Sie die Korrekturen, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s; its TLO was not set.</source>
+        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet; ihre Längenkorrektur wurde nicht gesetzt.</translation>
+    </message>
+    <message>
+        <source>The machine finished changing to T%1, but its probe result ([PRB:…]) could not be read. Nothing was recorded; probe the tool again.</source>
+        <translation>Die Maschine hat zu T%1 gewechselt, aber ihr Tastergebnis ([PRB:…]) ließ sich nicht lesen. Nichts wurde aufgezeichnet; vermessen Sie das Werkzeug erneut.</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s; it was not unlocked.</source>
+        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet; sie wurde nicht entsperrt.</translation>
+    </message>
+    <message>
+        <source>The machine was not halted.</source>
+        <translation>Die Maschine war nicht angehalten.</translation>
+    </message>
+    <message>
+        <source>Unlocked. T%1&apos;s stored TLO, %2 mm, is in force again (the break test had left the new length in force).</source>
+        <translation>Entsperrt. Die gespeicherte Längenkorrektur von T%1, %2 mm, ist wieder in Kraft (die Bruchprüfung hatte die neue Länge in Kraft gelassen).</translation>
+    </message>
+    <message>
+        <source>Unlocked, but the stored TLO (%1 mm) could not be set back: %2 The length the break test measured is still in force; do not cut.</source>
+        <translation>Entsperrt, aber die gespeicherte Längenkorrektur (%1 mm) ließ sich nicht zurücksetzen: %2 Die bei der Bruchprüfung gemessene Länge ist noch in Kraft; schneiden Sie nicht.</translation>
     </message>
 </context>
 <context>
@@ -4074,10 +4114,6 @@ Der nächste Schnitt verwendet die neue Korrektur. Die Tabelle speichert sie als
         <translation>gemessen</translation>
     </message>
     <message>
-        <source>The machine has no reference tool measured since it started: a stored TLO is only right against the reference it was measured from. Probe the reference tool first.</source>
-        <translation>Die Maschine hat seit dem Start kein Referenzwerkzeug gemessen: Eine gespeicherte TLO stimmt nur in Bezug auf die Referenz, gegen die sie gemessen wurde. Vermessen Sie zuerst das Referenzwerkzeug.</translation>
-    </message>
-    <message>
         <source>T%1 failed its last break test.</source>
         <translation>T%1 hat seinen letzten Bruchtest nicht bestanden.</translation>
     </message>
@@ -4094,32 +4130,8 @@ Der nächste Schnitt verwendet die neue Korrektur. Die Tabelle speichert sie als
         <translation>T%1 ist aktiv mit TLO %2.</translation>
     </message>
     <message>
-        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
-
-The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.%2
-
-Probe now?</source>
-        <translation>Die Maschine fährt: nach oben auf Sicherheitshöhe, über den Werkzeugtaster, dann nach unten, bis %1 ihn berührt. Hände weg!
-
-Laut Maschine ist %1 in der Spindel: Die Messung wird als TLO von %1 gespeichert.%2
-
-Jetzt vermessen?</translation>
-    </message>
-    <message>
-        <source>No tool has been measured since the machine started: %1 becomes the reference tool, and every other TLO is measured against it.</source>
-        <translation>Seit dem Start der Maschine wurde kein Werkzeug vermessen: %1 wird das Referenzwerkzeug, und jede andere TLO wird gegen es gemessen.</translation>
-    </message>
-    <message>
         <source>T%1&apos;s TLO does not fit this machine&apos;s reference</source>
         <translation>Die TLO von T%1 passt nicht zur Referenz dieser Maschine</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s TLO %2 was measured against a reference tool at MCS Z %3, but the machine&apos;s reference is now at MCS Z %4 (another tool was probed first since the machine started, or the tool setter moved). Restored, it would be off by %5.
-
-Probe T%1 instead.</source>
-        <translation>Die TLO %2 von T%1 wurde gegen ein Referenzwerkzeug bei MCS Z %3 gemessen, die Referenz der Maschine liegt jetzt aber bei MCS Z %4 (seit dem Start wurde zuerst ein anderes Werkzeug vermessen, oder der Werkzeugtaster wurde versetzt). Wiederhergestellt läge sie um %5 daneben.
-
-Vermessen Sie T%1 stattdessen.</translation>
     </message>
     <message>
         <source>The table does not say which reference tool T%1&apos;s TLO was measured against: make sure it is the reference the machine has now.</source>
@@ -4128,6 +4140,30 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>The spindle is empty: load a tool first (Rack ▸ Load).</source>
         <translation>Die Spindel ist leer: Wechseln Sie zuerst ein Werkzeug ein (Magazin ▸ Einwechseln).</translation>
+    </message>
+    <message>
+        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
+
+The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.
+
+Probe now?</source>
+        <translation>Die Maschine fährt: auf Sicherheitshöhe, über den Werkzeugtaster, dann hinunter, bis %1 ihn berührt. Hände weg.
+
+Die Maschine meldet %1 in der Spindel: Die Messung wird als Längenkorrektur von %1 aufgezeichnet.
+
+Jetzt vermessen?</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was measured against a reference tool at MCS Z %3, but the machine&apos;s reference is now at MCS Z %4 (another machine&apos;s TLO, or the machine was calibrated again since). Restored, it would be off by %5.
+
+Probe T%1 instead.</source>
+        <translation>Die Längenkorrektur %2 von T%1 wurde gegen ein Referenzwerkzeug bei MCS Z %3 gemessen, die Referenz der Maschine liegt jetzt aber bei MCS Z %4 (die Längenkorrektur einer anderen Maschine, oder die Maschine wurde seitdem neu kalibriert). Zurückgesetzt läge sie um %5 daneben.
+
+Vermessen Sie T%1 stattdessen.</translation>
+    </message>
+    <message>
+        <source>The machine reports no reference tool MCS Z: a stored TLO is only right against the reference it was measured from.</source>
+        <translation>Die Maschine meldet keine Referenz-MCS-Z: Eine gespeicherte Längenkorrektur stimmt nur gegen die Referenz, gegen die sie gemessen wurde.</translation>
     </message>
 </context>
 <context>
@@ -4561,10 +4597,6 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation>Die Spindel ist leer.</translation>
     </message>
     <message>
-        <source>The machine has no reference tool yet: T%1, measured first, becomes it, and every TLO is measured against it.</source>
-        <translation>Die Maschine hat noch kein Referenzwerkzeug: T%1, das zuerst vermessen wird, wird es, und jede TLO wird gegen es gemessen.</translation>
-    </message>
-    <message>
         <source>The machine stopped during T%1&apos;s step: look which tool is in the spindle and that the rack holds the others before you Unlock, then measure the tool in the spindle.</source>
         <translation>Die Maschine hat während des Schritts von T%1 angehalten: Sehen Sie nach, welches Werkzeug in der Spindel steckt und ob das Magazin die übrigen hält, bevor Sie entsperren; vermessen Sie dann das Werkzeug in der Spindel.</translation>
     </message>
@@ -4628,8 +4660,8 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation>Alle Werkzeuge haben bestanden, aber das letzte konnte nicht zurückgelegt werden: %1</translation>
     </message>
     <message>
-        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference (the first tool it measured since it started) is at %3 now, %4 away: every comparison would be off by that much. Check the reference tool and the tool setter: a damaged or changed reference tool moves it. If they are sound, measure the rack again (Measure Rack).</source>
-        <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die Referenz der Maschine (das erste seit dem Start vermessene Werkzeug) liegt jetzt aber bei %3, %4 entfernt: Jeder Vergleich wäre um so viel verschoben. Prüfen Sie das Referenzwerkzeug und den Werkzeugtaster: Ein beschädigtes oder gewechseltes Referenzwerkzeug verschiebt sie. Sind beide in Ordnung, vermessen Sie das Magazin neu (Magazin vermessen).</translation>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference is at %3 now, %4 away: every comparison would be off by that much. Check the machine&apos;s calibration and the tool setter; if they are sound, measure the rack again (Measure Rack).</source>
+        <translation>Die gespeicherte Längenkorrektur von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die Referenz der Maschine liegt jetzt aber bei %3, %4 entfernt: Jeder Vergleich läge um so viel daneben. Prüfen Sie die Kalibrierung der Maschine und den Werkzeugtaster; sind sie in Ordnung, vermessen Sie das Magazin erneut (Magazin vermessen).</translation>
     </message>
 </context>
 <context>
@@ -4961,10 +4993,6 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation>nicht gemessen</translation>
     </message>
     <message>
-        <source>the machine has measured no tool yet: probe the reference tool first</source>
-        <translation>die Maschine hat noch kein Werkzeug gemessen: Vermessen Sie zuerst das Referenzwerkzeug</translation>
-    </message>
-    <message>
         <source>T%1 has no TLO in the table</source>
         <translation>T%1 hat keine TLO in der Tabelle</translation>
     </message>
@@ -5035,6 +5063,10 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     <message>
         <source>not reported</source>
         <translation>nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>the machine has no TLO in force: probe the tool first</source>
+        <translation>Die Maschine hat keine gültige Längenkorrektur: Vermessen Sie zuerst das Werkzeug</translation>
     </message>
 </context>
 <context>

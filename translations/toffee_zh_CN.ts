@@ -912,10 +912,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>T%1 在刀具表中没有 TLO：检测将与机床当前保存的 TLO%2 比较，而它可能不是 T%1 的。</translation>
     </message>
     <message>
-        <source>The machine holds TLO %1 but the table holds %2 for T%3: the test compares against the machine&apos;s %1.</source>
-        <translation>机床中的 TLO 为 %1，但刀具表中 T%3 的 TLO 为 %2：检测将与机床的 %1 比较。</translation>
-    </message>
-    <message>
         <source>T%1&apos;s TLO %2 was set by hand (%3), not measured: if that value is not the tool&apos;s real length, the test reports the tool broken and halts the machine.</source>
         <translation>T%1 的 TLO %2 是手动设置的（%3），未测量：如果该值不是刀具的实际长度，检测会报告断刀并使机床停机。</translation>
     </message>
@@ -954,6 +950,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The spindle is empty: load a tool first (Rack ▸ Load).</source>
         <translation>主轴为空：请先装入刀具（刀库 ▸ 装入）。</translation>
+    </message>
+    <message>
+        <source>The machine holds TLO %1 but the table holds %2 for T%3: Toffee sets the table&apos;s %2 first, and the machine compares the tool with it.</source>
+        <translation>机床的 TLO 为 %1，但刀具表中 T%3 为 %2：Toffee 会先设置刀具表中的 %2，机床再用它与刀具比较。</translation>
     </message>
 </context>
 <context>
@@ -2493,10 +2493,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>程序在任何换刀之前就切削（原程序第 %1 行）：没有可进行断刀检测的刀具。</translation>
     </message>
     <message>
-        <source>T%1 is the reference tool (TLO 0): the community firmware does not break-test it (it aborts with &quot;No previous TLO included&quot;), so no test is inserted.</source>
-        <translation>T%1 是基准刀具（TLO 0）：社区固件不对其进行断刀检测（会以“No previous TLO included”中止），因此不插入检测。</translation>
-    </message>
-    <message>
         <source>T%1 is in the rack: the Carvera measures a rack tool at every change.</source>
         <translation>T%1 在刀库中：Carvera 每次换刀都会测量刀库中的刀具。</translation>
     </message>
@@ -2521,12 +2517,20 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，而 T%3 的是相对于 %4：机床只有一个基准，因此最多只有一个正确。请对其中一把刀具重新对刀，或不使用已存 TLO 进行准备。未写入任何内容。</translation>
     </message>
     <message>
-        <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (where its reference tool was probed): check it before running the program.</source>
-        <translation>只有当机床的基准 MCS Z 为 %1（其基准刀具对刀处）时，已存 TLO 才有效：运行程序前请检查。</translation>
-    </message>
-    <message>
         <source>%1 more notes like these, one for each further tool (the first of them T%2): counted, not listed.</source>
         <translation>另有 %1 条类似说明，每把后续刀具一条（其中第一把为 T%2）：只计数，不列出。</translation>
+    </message>
+    <message>
+        <source>T%1 is not break-tested: the community firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt the program.</source>
+        <translation>T%1 不做断刀检测：社区固件的断刀检测把 T0 和 T9 及以上的刀具当作无线探头，会使程序停机。</translation>
+    </message>
+    <message>
+        <source>T%1 is not break-tested: its TLO is 0.000 mm, which the community firmware takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
+        <translation>T%1 不做断刀检测：其 TLO 为 0.000 mm，社区固件将其视为没有（“No previous TLO included”）：它只会测量刀具而不作比较。</translation>
+    </message>
+    <message>
+        <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (its calibration): check it before running the program.</source>
+        <translation>已存 TLO 仅在机床的基准 MCS Z 为 %1（其校准值）时有效：运行程序前请检查。</translation>
     </message>
 </context>
 <context>
@@ -3214,14 +3218,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>机床已完成对刀，但无法读取对刀结果（[PRB:…]）。未记录任何内容；切削前请检查补偿（报告）。</translation>
     </message>
     <message>
-        <source>Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a difference of %4 mm; the tolerance is %5 mm). The machine has halted. Check the tool and replace it if it is damaged, then Unlock.</source>
-        <translation>刀具 T%1 可能已断：测得刀长补偿 %2 mm，之前为 %3 mm（差值 %4 mm；公差 %5 mm）。机床已停机。请检查刀具，如有损坏请更换，然后解锁。</translation>
-    </message>
-    <message>
-        <source>The machine has no TLO for this tool to compare with. Probe the tool first, then run the break test.</source>
-        <translation>机床没有此刀具的刀长补偿可供比较。请先对刀，再运行断刀检测。</translation>
-    </message>
-    <message>
         <source>The break test ran but its result (&quot;Old: … , new: …&quot;) could not be read. Run it again before you trust the tool.</source>
         <translation>断刀检测已运行，但无法读取其结果（“Old: … , new: …”）。在信任该刀具之前请重新运行。</translation>
     </message>
@@ -3230,24 +3226,12 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>刀具 T%1 测得 %2 mm，之前为 %3 mm，超出了 %4 mm 的公差。</translation>
     </message>
     <message>
-        <source>The machine&apos;s reply to %1 could not be read. Check the offsets (Report) before you cut.</source>
-        <translation>无法读取机床对 %1 的回应。切削前请检查补偿（报告）。</translation>
-    </message>
-    <message>
         <source>The tool length offset</source>
         <translation>刀具长度补偿</translation>
     </message>
     <message>
-        <source>The machine was told TLO %1 mm but reports %2 mm. Check the offsets before you cut.</source>
-        <translation>已向机床设置刀长补偿 %1 mm，但机床报告为 %2 mm。切削前请检查补偿。</translation>
-    </message>
-    <message>
         <source>The height above Z0</source>
         <translation>Z0 以上的高度</translation>
-    </message>
-    <message>
-        <source>T%1 is in the spindle, but its probe result ([PRB:…]) could not be read. Nothing was recorded; probe the tool again.</source>
-        <translation>T%1 已在主轴上，但无法读取对刀结果（[PRB:…]）。未记录任何内容；请重新对刀。</translation>
     </message>
     <message>
         <source>The machine did not confirm the unlock; check its state before you go on.</source>
@@ -3278,16 +3262,8 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>刀具 %1 不是刀具号；请使用 %2 到 %3（%4 表示主轴为空）。</translation>
     </message>
     <message>
-        <source>T%1 is in the spindle, but the machine reports TLO %2 mm where it was told %3 mm. Probe T%1 before you cut.</source>
-        <translation>T%1 在主轴上，但机床报告的 TLO 为 %2 mm，而设置给它的是 %3 mm。切削前请对 T%1 对刀。</translation>
-    </message>
-    <message>
         <source>none</source>
         <translation>无</translation>
-    </message>
-    <message>
-        <source>The machine sent no status report within 2 s, and this firmware reports its TLO nowhere else. Nothing was recorded; check the cable and try again.</source>
-        <translation>机床在 2 秒内未发送状态报告，而此固件不会在其他地方报告 TLO。未记录任何内容；请检查电缆后重试。</translation>
     </message>
     <message>
         <source>The machine was told to put its tool back, but it reports T%1 in the spindle. Check the spindle and the rack before you go on.</source>
@@ -3308,6 +3284,70 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
         <translation>机床运行的是 %1，它会不加提示地忽略 M493.3：手动设置的 TLO 不会被使用。请改为对刀，或带着其 TLO 换到该刀具（手动换刀）。</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable and try again.</source>
+        <translation>机床在 2 秒内没有发送状态报告，而生效的 TLO 需从中读取。未记录任何内容；请检查线缆后重试。</translation>
+    </message>
+    <message>
+        <source>The machine measured the tool, but its two reports disagree: the TLO in force is %1 mm, and its offset report does not add up to it. Nothing was recorded; probe again.</source>
+        <translation>机床已测量刀具，但其两份报告不一致：生效的 TLO 为 %1 mm，而其偏置报告算不出此值。未记录任何内容；请重新对刀。</translation>
+    </message>
+    <message>
+        <source>The firmware&apos;s break test takes T%1 for its wireless probe (T0, and every tool from T9 up): it would measure the tool, then halt. Break-test tools T1 to T8, or probe T%1 and compare its TLO with the table.</source>
+        <translation>固件的断刀检测把 T%1 当作无线探头（T0 及 T9 以上的每把刀）：它会测量刀具然后停机。请只对 T1 到 T8 做断刀检测，或对 T%1 对刀并将其 TLO 与刀具表比较。</translation>
+    </message>
+    <message>
+        <source>The stored TLO</source>
+        <translation>已存 TLO</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s; no break test was run.</source>
+        <translation>机床在 2 秒内没有发送状态报告；未执行断刀检测。</translation>
+    </message>
+    <message>
+        <source>The firmware compares with the TLO in force, and takes a TLO of 0.000 mm for none: it would measure T%1 without comparing. No break test was run; probe T%1 and compare its TLO with the table.</source>
+        <translation>固件与生效的 TLO 比较，并把 0.000 mm 视为没有：它会测量 T%1 而不作比较。未执行断刀检测；请对 T%1 对刀并将其 TLO 与刀具表比较。</translation>
+    </message>
+    <message>
+        <source>The machine compared T%1 with a TLO of %2 mm, not its stored %3 mm, so its verdict does not hold. Check the offsets, then run the break test again.</source>
+        <translation>机床将 T%1 与 %2 mm 的 TLO 比较，而不是其已存的 %3 mm，因此结论无效。请检查偏置，然后重新进行断刀检测。</translation>
+    </message>
+    <message>
+        <source>Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a difference of %4 mm; the tolerance is %5 mm). The machine has halted with the new length, %2 mm, in force. Check the tool and replace it if it is damaged, then Unlock: Toffee sets the stored TLO, %3 mm, back first.</source>
+        <translation>刀具 T%1 可能已断：测得 TLO 为 %2 mm，之前为 %3 mm（相差 %4 mm；公差为 %5 mm）。机床已停机，新的长度 %2 mm 正在生效。请检查刀具，如有损坏请更换，然后解锁：Toffee 会先恢复已存的 TLO %3 mm。</translation>
+    </message>
+    <message>
+        <source>The machine had no TLO for this tool to compare with: it measured the tool and took the new length without comparing. Check the TLO it reports against the table before you cut.</source>
+        <translation>机床没有此刀具的 TLO 可供比较：它测量了刀具并在未比较的情况下采用了新长度。切削前请将其报告的 TLO 与刀具表核对。</translation>
+    </message>
+    <message>
+        <source>The machine was told TLO %1 mm but reports %2 mm in force. Check the offsets before you cut.</source>
+        <translation>已向机床发送 TLO %1 mm，但其报告生效的是 %2 mm。切削前请检查偏置。</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s; its TLO was not set.</source>
+        <translation>机床在 2 秒内没有发送状态报告；未设置其 TLO。</translation>
+    </message>
+    <message>
+        <source>The machine finished changing to T%1, but its probe result ([PRB:…]) could not be read. Nothing was recorded; probe the tool again.</source>
+        <translation>机床已换到 T%1，但无法读取其对刀结果（[PRB:…]）。未记录任何内容；请重新对刀。</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s; it was not unlocked.</source>
+        <translation>机床在 2 秒内没有发送状态报告；未解锁。</translation>
+    </message>
+    <message>
+        <source>The machine was not halted.</source>
+        <translation>机床并未停机。</translation>
+    </message>
+    <message>
+        <source>Unlocked. T%1&apos;s stored TLO, %2 mm, is in force again (the break test had left the new length in force).</source>
+        <translation>已解锁。T%1 的已存 TLO %2 mm 重新生效（断刀检测曾使新长度生效）。</translation>
+    </message>
+    <message>
+        <source>Unlocked, but the stored TLO (%1 mm) could not be set back: %2 The length the break test measured is still in force; do not cut.</source>
+        <translation>已解锁，但无法恢复已存的 TLO（%1 mm）：%2 断刀检测测得的长度仍在生效；请勿切削。</translation>
     </message>
 </context>
 <context>
@@ -4074,10 +4114,6 @@ TLO %3
         <translation>已测量</translation>
     </message>
     <message>
-        <source>The machine has no reference tool measured since it started: a stored TLO is only right against the reference it was measured from. Probe the reference tool first.</source>
-        <translation>机床自启动以来尚未测量基准刀具：已保存的 TLO 只有相对于测量它时所用的基准才正确。请先对基准刀具对刀。</translation>
-    </message>
-    <message>
         <source>T%1 failed its last break test.</source>
         <translation>T%1 未通过上次断刀检测。</translation>
     </message>
@@ -4094,32 +4130,8 @@ TLO %3
         <translation>T%1 已激活，TLO 为 %2。</translation>
     </message>
     <message>
-        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
-
-The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.%2
-
-Probe now?</source>
-        <translation>机床将移动：先升到安全高度，移到对刀仪上方，然后下降直到 %1 接触对刀仪。请远离机床。
-
-机床报告主轴中是 %1：测量结果将记录为 %1 的 TLO。%2
-
-现在对刀？</translation>
-    </message>
-    <message>
-        <source>No tool has been measured since the machine started: %1 becomes the reference tool, and every other TLO is measured against it.</source>
-        <translation>机床启动后尚未测量任何刀具：%1 将成为基准刀具，其他所有 TLO 都相对于它测量。</translation>
-    </message>
-    <message>
         <source>T%1&apos;s TLO does not fit this machine&apos;s reference</source>
         <translation>T%1 的 TLO 与本机床的基准不符</translation>
-    </message>
-    <message>
-        <source>T%1&apos;s TLO %2 was measured against a reference tool at MCS Z %3, but the machine&apos;s reference is now at MCS Z %4 (another tool was probed first since the machine started, or the tool setter moved). Restored, it would be off by %5.
-
-Probe T%1 instead.</source>
-        <translation>T%1 的 TLO %2 是相对于 MCS Z %3 处的基准刀具测得的，但机床的基准现在位于 MCS Z %4（机床启动后先对了另一把刀，或对刀仪被移动过）。若恢复，将偏差 %5。
-
-请改为对 T%1 对刀。</translation>
     </message>
     <message>
         <source>The table does not say which reference tool T%1&apos;s TLO was measured against: make sure it is the reference the machine has now.</source>
@@ -4128,6 +4140,30 @@ Probe T%1 instead.</source>
     <message>
         <source>The spindle is empty: load a tool first (Rack ▸ Load).</source>
         <translation>主轴为空：请先装入刀具（刀库 ▸ 装入）。</translation>
+    </message>
+    <message>
+        <source>The machine will move: up to clearance, over the tool setter, then down until %1 touches it. Keep hands clear.
+
+The machine says %1 is in the spindle: the measurement is recorded as %1&apos;s TLO.
+
+Probe now?</source>
+        <translation>机床将移动：升到安全高度，移到对刀仪上方，然后下降直到 %1 接触它。请勿将手靠近。
+
+机床报告 %1 在主轴上：测量结果将记录为 %1 的 TLO。
+
+现在对刀？</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was measured against a reference tool at MCS Z %3, but the machine&apos;s reference is now at MCS Z %4 (another machine&apos;s TLO, or the machine was calibrated again since). Restored, it would be off by %5.
+
+Probe T%1 instead.</source>
+        <translation>T%1 的 TLO %2 是相对 MCS Z %3 处的基准刀测量的，但机床当前基准位于 MCS Z %4（另一台机床的 TLO，或机床之后重新校准过）。若恢复，将偏差 %5。
+
+请改为对 T%1 对刀。</translation>
+    </message>
+    <message>
+        <source>The machine reports no reference tool MCS Z: a stored TLO is only right against the reference it was measured from.</source>
+        <translation>机床未报告基准刀 MCS Z：已存 TLO 仅相对其测量时的基准才正确。</translation>
     </message>
 </context>
 <context>
@@ -4561,10 +4597,6 @@ when it is fresh (no probe)</source>
         <translation>主轴已空。</translation>
     </message>
     <message>
-        <source>The machine has no reference tool yet: T%1, measured first, becomes it, and every TLO is measured against it.</source>
-        <translation>机床尚无基准刀：最先测量的 T%1 将成为基准刀，所有 TLO 都相对它测量。</translation>
-    </message>
-    <message>
         <source>The machine stopped during T%1&apos;s step: look which tool is in the spindle and that the rack holds the others before you Unlock, then measure the tool in the spindle.</source>
         <translation>机床在 T%1 的步骤中停止：解锁前请目视检查主轴上是哪把刀、刀库是否装有其余刀具，然后对主轴上的刀具对刀。</translation>
     </message>
@@ -4628,8 +4660,8 @@ when it is fresh (no probe)</source>
         <translation>所有刀具均已通过，但最后一把无法放回：%1</translation>
     </message>
     <message>
-        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference (the first tool it measured since it started) is at %3 now, %4 away: every comparison would be off by that much. Check the reference tool and the tool setter: a damaged or changed reference tool moves it. If they are sound, measure the rack again (Measure Rack).</source>
-        <translation>T%1 的已存 TLO 是相对基准 MCS Z %2 测量的，但机床当前的基准（开机以来测量的第一把刀）位于 %3，相差 %4：每次比较都会偏差这么多。请检查基准刀和对刀仪：基准刀损坏或被更换都会使基准移动。若两者完好，请重新测量刀库（测量刀库）。</translation>
+        <source>T%1&apos;s stored TLO was measured against reference MCS Z %2, but the machine&apos;s reference is at %3 now, %4 away: every comparison would be off by that much. Check the machine&apos;s calibration and the tool setter; if they are sound, measure the rack again (Measure Rack).</source>
+        <translation>T%1 的已存 TLO 是相对基准 MCS Z %2 测量的，但机床当前基准位于 %3，相差 %4：每次比较都会偏差这么多。请检查机床的校准和对刀仪；若两者完好，请重新测量刀库（测量刀库）。</translation>
     </message>
 </context>
 <context>
@@ -4961,10 +4993,6 @@ when it is fresh (no probe)</source>
         <translation>未测量</translation>
     </message>
     <message>
-        <source>the machine has measured no tool yet: probe the reference tool first</source>
-        <translation>机床尚未测量任何刀具：请先对基准刀具对刀</translation>
-    </message>
-    <message>
         <source>T%1 has no TLO in the table</source>
         <translation>T%1 在刀具表中没有 TLO</translation>
     </message>
@@ -5035,6 +5063,10 @@ when it is fresh (no probe)</source>
     <message>
         <source>not reported</source>
         <translation>未报告</translation>
+    </message>
+    <message>
+        <source>the machine has no TLO in force: probe the tool first</source>
+        <translation>机床没有生效的 TLO：请先对刀</translation>
     </message>
 </context>
 <context>

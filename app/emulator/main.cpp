@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // toffee-emulator: a Carvera on a pseudo-terminal, for QSerialPort, toffee-cli --port, or a terminal program.
+#include <cmath>
 #include <cstdio>
 #include <limits>
 
@@ -80,8 +81,10 @@ struct Options
         u"How far apart repeated measurements of a tool trigger, in mm (default 0)."_s, u"MM"_s, u"0"_s };
     QCommandLineOption moveMs { u"move-ms"_s, u"How long any other command takes (default 0)."_s, u"MS"_s,
         u"0"_s };
-    QCommandLineOption fixedReference { u"fixed-reference"_s,
-        u"Firmware 2.1.0c: the reference tool MCS Z is configured, not probed."_s, u"MZ"_s };
+    QCommandLineOption reference { QStringList { u"reference"_s, u"fixed-reference"_s },
+        u"The reference tool MCS Z the machine is calibrated with (default %1, a C1's factory calibration)."_s
+            .arg(CarveraEmulator::kFactoryReferenceMz),
+        u"MZ"_s };
     QCommandLineOption notHomed { u"not-homed"_s, u"Start unhomed: probing halts until $H."_s };
     QCommandLineOption halted { u"halted"_s, u"Start halted with this reason (1-16)."_s, u"REASON"_s };
     QCommandLineOption fault { u"fault"_s,
@@ -92,7 +95,7 @@ struct Options
     void addTo(QCommandLineParser &parser) const
     {
         parser.addOptions({ link, tool, broken, probeMs, changeMs, moveMs, firmware, slotFile, repeatability,
-            fixedReference, notHomed, halted, fault });
+            reference, notHomed, halted, fault });
     }
 };
 
@@ -127,11 +130,11 @@ Problem configureMachine(CarveraEmulator &emulator, const QCommandLineParser &pa
             return u"--probe-ms, --move-ms and --change-ms take milliseconds."_s;
     }
     emulator.setTiming({ int(*probe), int(*move), int(*change) });
-    if (parser.isSet(o.fixedReference)) {
-        const auto mz = Toffee::parseDecimal(parser.value(o.fixedReference).toUtf8());
-        if (!mz)
-            return u"--fixed-reference takes an MCS Z in mm."_s;
-        emulator.setProfile(CarveraEmulator::Profile::FixedReference, *mz);
+    if (parser.isSet(o.reference)) {
+        const auto mz = Toffee::parseDecimal(parser.value(o.reference).toUtf8());
+        if (!mz || std::fabs(*mz) > 1000.0)
+            return u"--reference takes an MCS Z in mm."_s;
+        emulator.setReference(*mz);
     }
     emulator.setHomed(!parser.isSet(o.notHomed));
     if (parser.isSet(o.halted)) {

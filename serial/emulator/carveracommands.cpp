@@ -72,14 +72,11 @@ void CarveraEmulator::execute(const QByteArray &line)
         QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
         return;
     }
-    if (!read) {
-        refuse(line);
-        return;
-    }
+    if (!read)
+        return unknownCommand(line);
     const GCodeBlock &block = read.value();
-    // Both firmwares alarm; the halt reason is Toffee's assumption (the sources name none).
     if (block.has('G', 20))
-        return haltWith("ALARM: Imperial Units are unsupported", HaltReason::Manual);
+        return haltWith("ERROR: Imperial Units are unsupported", HaltReason::Manual);
     for (const auto &[code, run] : kMCommands) {
         if (block.has('M', code)) {
             (this->*run)(block, line);
@@ -88,17 +85,27 @@ void CarveraEmulator::execute(const QByteArray &line)
     }
     if (block.has('M', 999)) {
         m_haltReason = 0;
+        say(kHaltLine);
         say("WARNING: After HALT you should HOME as position is currently unknown");
         finish();
     } else if (block.isEmpty()) {
         finish(); // a comment alone
     } else if (block.words.front().letter == 'G') {
         move(line);
-    } else if (carveraRunsWhileHalted(block)) {
-        finish(); // M2, M5, M9, M30...: nothing to do on a table-top emulator
     } else {
-        refuse(line);
+        finish(); // M2, M5, M9, M30, and any M-code it does not know: taken without a word
     }
+}
+
+// Upper-case text that is no G-code: the firmware says "ok", then halts on the expression it cannot read
+// (seen on the firmware: `FOO`).
+void CarveraEmulator::unknownCommand(const QByteArray &)
+{
+    say("ok");
+    say("ERROR: Invalid number in expression, " + QByteArray(kHaltLine));
+    halt(int(HaltReason::Manual));
+    m_busy = m_dropOk = m_garble = false;
+    QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
 }
 
 void CarveraEmulator::refuse(const QByteArray &line, const QByteArray &why)
@@ -109,27 +116,33 @@ void CarveraEmulator::refuse(const QByteArray &line, const QByteArray &why)
     QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
 }
 
+// The firmware says why it halts, then where ("Halt Happened at Line: …"), then the "ok" of the line that
+// halted it.
 void CarveraEmulator::haltWith(const QByteArray &message, HaltReason reason)
 {
     say(message);
+    say(kHaltLine);
     halt(int(reason));
+    m_waitingForOperator = false;
     finish();
 }
 
-// M493 (and .0, .1): the last probe becomes the current tool's, and the reference's if there is none.
+// The TLO the firmware takes from a probe: the tool's MCS Z against the configured reference.
+void CarveraEmulator::takeTlo(double currentMz)
+{
+    m_curMz = currentMz;
+    m_tlo = currentMz - m_refMz;
+}
+
+// M493 (and .0, .1): the last probe becomes the current tool's TLO.
 void CarveraEmulator::takeProbe(const GCodeBlock &, const QByteArray &)
 {
-    if (m_lastProbeZ) {
-        if (!m_hasReference) {
-            m_refMz = *m_lastProbeZ;
-            m_hasReference = true;
-        }
-        m_curMz = *m_lastProbeZ;
-        m_calibrated = true;
-    }
+    if (m_lastProbeZ)
+        takeTlo(*m_lastProbeZ);
     finish();
 }
 
+// M493.2 T: the tool changes, the TLO in force does not (it is the previous tool's until measured or set).
 void CarveraEmulator::selectTool(const GCodeBlock &block, const QByteArray &)
 {
     const auto t = block.value('T');
@@ -138,10 +151,13 @@ void CarveraEmulator::selectTool(const GCodeBlock &block, const QByteArray &)
     if (!isToolNumber(*t))
         return invalidTool(*t);
     m_tool = int(*t);
-    m_calibrated = false;
     finish();
 }
 
+// M493.3 Z<v>: the TLO is v, and so is the "current tool offset" the firmware prints (ATCHandler:
+// cur_tool_mz = Z; tool_offset = cur_tool_mz). M493.3 H<h>: the current tool offset moves by the tool tip's
+// work Z less h, and the TLO is it less the reference; after an M493.3 Z that is off by the reference, as on
+// the firmware.
 void CarveraEmulator::setTlo(const GCodeBlock &block, const QByteArray &line)
 {
     if (m_firmware == Firmware::Stock)
@@ -151,12 +167,11 @@ void CarveraEmulator::setTlo(const GCodeBlock &block, const QByteArray &line)
     if (!plausible(z) || !plausible(h))
         return refuse(line);
     if (z) {
-        m_curMz = m_refMz + *z;
-        m_calibrated = true;
+        m_curMz = *z;
+        m_tlo = *z;
     } else if (h) {
-        // The tool tip is h above work Z0: work Z of the spindle = mpos - wcs - tlo = h.
-        m_curMz = m_refMz + (m_mpos[2] - m_wcs[2] - *h);
-        m_calibrated = true;
+        const double workZ = m_mpos[2] - m_wcs[2] - m_tlo;
+        takeTlo(m_curMz + workZ - *h);
     }
     reportTlo();
     finish();
@@ -176,8 +191,10 @@ void CarveraEmulator::move(const QByteArray &line)
     m_motion.setWorkOffset({ m_wcs[0], m_wcs[1], m_wcs[2] });
     m_motion.setLengthOffset(tlo());
     m_motion.setMachinePosition({ m_mpos[0], m_mpos[1], m_mpos[2] });
-    if (auto r = m_motion.runLine(line, 1); !r)
-        return refuse(line); // the firmware's own answer to what it does not take
+    if (auto r = m_motion.runLine(line, 1); !r) {
+        finish(); // the firmware takes what it does not know without a word
+        return;
+    }
     const Position &p = m_motion.position();
     const Position &g54 = m_motion.workOffset();
     m_mpos = { p[0], p[1], p[2] };
@@ -195,58 +212,78 @@ void CarveraEmulator::reportOffsets()
     reportTlo();
     say("no one-off tool setter position offsets configured");
     say("using default Tool setter position: X[" + fixed(m_setter[0]) + "] Y[" + fixed(m_setter[1]) + "] Z["
-        + fixed(m_setter[2]) + ']');
+        + fixed(kZTravelLimit) + ']');
 }
 
-void CarveraEmulator::calibrate(bool breakTest, double tolerance, int repeats)
+// A script starts by saving where the spindle is, and the command's own "ok" comes at once.
+void CarveraEmulator::saveXy()
 {
-    if (!m_homed) {
-        return haltWith("Machine has not been homed", HaltReason::HomeFail);
-    }
-    if (breakTest && !m_calibrated) {
-        say("No previous TLO included, aborting");
-        finish();
-        return;
-    }
-    const double startX = m_mpos[0];
-    const double startY = m_mpos[1];
-    // The probing script the firmware runs, echoed line by line.
-    say("M497.3");
-    say("G53 G0 Z" + fixed(kClearanceZ));
-    say("G53 G0 X" + fixed(m_setter[0]) + " Y" + fixed(m_setter[1]));
-    say("G38.6 Z" + fixed(kZTravelLimit) + " F500");
-    m_mpos = { m_setter[0], m_setter[1], kClearanceZ };
+    m_savedXy = { m_mpos[0], m_mpos[1] };
+    say("Saved XY position: X" + fixed(m_mpos[0]) + " Y" + fixed(m_mpos[1]));
+    say("ok");
+}
 
+// The firmware's probing script, echoed line by line: fast down to the setter, back 2 mm, slowly again; the
+// slow probe is the one taken (M493.1 R1). A break test compares it with the TLO in force (M491.2 H… , P…):
+// a TLO of exactly 0 is "no previous TLO", compared with nothing.
+void CarveraEmulator::calibrate(Calibration kind, double tolerance, int repeats)
+{
+    if (!m_homed)
+        return haltWith("Machine has not been homed", HaltReason::HomeFail);
+    const bool breakTest = kind == Calibration::BreakTest;
+    if (breakTest)
+        echo("M5");
+    echo("M497.3");
+    echo("G53 G0 Z" + fixed(kClearanceZ));
+    echo("G53 G0 X" + fixed(m_setter[0]) + " Y" + fixed(m_setter[1]));
+    say("G38.6 Z" + fixed(kZTravelLimit) + " F600.000");
+    m_mpos = { m_setter[0], m_setter[1], kClearanceZ };
     const double trigger = kNoseTriggerZ + toolLength(m_tool);
     const bool fail = probeFails(trigger);
     if (repeats > 0) {
         if (fail)
             return later(m_timing.probeMs, [this] { failProbe(); });
-        return measureRepeatedly({ repeats, trigger, startX, startY, {} });
+        return measureRepeatedly({ repeats, trigger, m_savedXy[0], m_savedXy[1], {} });
     }
     later(m_timing.probeMs, [=, this] {
         if (fail)
             return failProbe();
+        say("[PRB:" + fixed(m_setter[0]) + ',' + fixed(m_setter[1]) + ',' + fixed(trigger - 0.01) + ":1]");
+        say("ok");
+        echo("G91 G0 Z2.000");
+        say("G38.6 Z-3.000 F150.000");
         say("[PRB:" + fixed(m_setter[0]) + ',' + fixed(m_setter[1]) + ',' + fixed(trigger) + ":1]");
+        say("ok");
         m_lastProbeZ = trigger;
-        const double oldTlo = m_curMz - m_refMz;
-        if (!m_hasReference) {
-            m_refMz = trigger;
-            m_hasReference = true;
-        }
-        const double newTlo = trigger - m_refMz;
+        m_mpos[2] = trigger;
+        const double stored = m_tlo;
+        echo("M493.1 R1");
+        takeTlo(trigger);
+        echo("G53 G0 Z" + fixed(kClearanceZ));
+        m_mpos[2] = kClearanceZ;
         if (breakTest) {
-            say("Old: " + fixed(oldTlo) + " , new: " + fixed(newTlo));
-            if (std::fabs(oldTlo - newTlo) > tolerance) {
-                return haltWith(
-                    "ERROR: Tool Break Check - check tool for breakage", HaltReason::CalibrateFail);
+            if (m_tool == 0 || m_tool >= 9) {
+                // The community firmware takes T0 and T9 on for its wireless probe here.
+                echo("M494.1");
+                return haltWith("ERROR: Wireless probe dead or not set, please charge or set first!",
+                    HaltReason::ProbeInvalid);
             }
-        } else {
-            say("M493.1");
+            echo("G53 G0 Z-20.000");
+            m_mpos[2] = -20.0;
+            say("M491.2 H" + fixed(tolerance) + " , P" + fixed(stored));
+            if (std::round(stored * 1000.0) == 0.0) {
+                say("No previous TLO included, aborting");
+                say("ok");
+            } else {
+                say("Old: " + fixed(stored) + " , new: " + fixed(m_tlo));
+                // The new, broken length stays in force while the machine halts over the setter.
+                if (std::fabs(stored - m_tlo) > tolerance)
+                    return haltWith(
+                        "ERROR: Tool Break Check - check tool for breakage", HaltReason::CalibrateFail);
+                say("ok");
+            }
         }
-        m_curMz = trigger;
-        m_calibrated = true;
-        returnTo(startX, startY);
+        returnTo(m_savedXy[0], m_savedXy[1]);
     });
 }
 
@@ -276,8 +313,7 @@ void CarveraEmulator::returnTo(double x, double y)
 {
     m_mpos = { x, y, kClearanceZ };
     say("Return to XY position: X" + fixed(x) + " Y" + fixed(y));
-    say("Done ATC");
-    finish();
+    finishScript();
 }
 
 } // namespace Toffee

@@ -21,7 +21,7 @@ QByteArray fixed(double v, int decimals = 3)
 CarveraEmulator::CarveraEmulator(QObject *parent)
     : QObject(parent)
 {
-    // The seed's example: the first tool probes at MCS Z -72.300, the second at -105.688.
+    // The seed's example tools: the first probes at MCS Z -72.300, the second at -105.688.
     m_lengths.insert(1, 77.7);
     m_lengths.insert(2, 44.312);
     m_step.setSingleShot(true);
@@ -31,15 +31,6 @@ CarveraEmulator::CarveraEmulator(QObject *parent)
         if (action)
             action();
     });
-}
-
-void CarveraEmulator::setProfile(Profile profile, double fixedReferenceMz)
-{
-    m_profile = profile;
-    if (profile == Profile::FixedReference) {
-        m_refMz = fixedReferenceMz;
-        m_hasReference = true;
-    }
 }
 
 double CarveraEmulator::toolLength(int tool) const
@@ -61,17 +52,20 @@ void CarveraEmulator::halt(int reason)
 
 QByteArray CarveraEmulator::statusReport() const
 {
-    const QByteArray state = isHalted() ? "Alarm" : m_held ? "Hold" : m_busy ? "Run" : "Idle";
+    const QByteArray state = isHalted() ? "Alarm"
+        : m_held                        ? "Hold"
+        : m_waitingForOperator          ? "Tool"
+        : m_busy                        ? "Run"
+                                        : "Idle";
     auto axes = [](double x, double y, double z) -> QByteArray {
         return fixed(x, 4) + ',' + fixed(y, 4) + ',' + fixed(z, 4) + ",0.0000,0.0000";
     };
-    const double tloNow = m_curMz - m_refMz;
     QByteArray report = '<' + state + "|MPos:" + axes(m_mpos[0], m_mpos[1], m_mpos[2])
-        + "|WPos:" + axes(m_mpos[0] - m_wcs[0], m_mpos[1] - m_wcs[1], m_mpos[2] - m_wcs[2] - tloNow)
-        + "|R:0.0000|G:0|F:0.0,3000.0,100.0|S:0.0,0.0,100.0,0,23.5,24.1" + toolField() + "|W:0.00|C:1,0,0,1";
+        + "|WPos:" + axes(m_mpos[0] - m_wcs[0], m_mpos[1] - m_wcs[1], m_mpos[2] - m_wcs[2] - m_tlo)
+        + "|R:0.0000|G:0|F:0.0,3000.0,100.0|S:0.0,0.0,100.0,0,23.5,24.1" + toolField() + "|W:0.00";
     if (isHalted())
         report += "|H:" + QByteArray::number(m_haltReason);
-    return report + '>';
+    return report + "|C:1,0,0,1>";
 }
 
 void CarveraEmulator::receiveRealtime(char c)
@@ -80,15 +74,18 @@ void CarveraEmulator::receiveRealtime(char c)
     case '?':
         Q_EMIT lineSent(statusReport());
         break;
-    case 0x18: // Ctrl-X: abort whatever runs, drop what is queued
+    case 0x18: // Ctrl-X: abort whatever runs, drop what is queued; the firmware halts even when idle
         m_queue.clear();
+        m_step.stop();
+        m_stepAction = nullptr;
+        m_waitingForOperator = false;
+        Q_EMIT lineSent("ERROR: Abort during cycle");
+        Q_EMIT lineSent(kHaltLine);
+        halt(int(HaltReason::Manual));
         if (m_busy) {
-            m_step.stop();
-            m_stepAction = nullptr;
             m_busy = false;
             m_dropOk = m_garble = false;
-            halt(int(HaltReason::Manual));
-            Q_EMIT lineSent("ALARM: Abort during cycle");
+            Q_EMIT lineSent("ok");
         }
         break;
     case '!':
@@ -198,6 +195,30 @@ void CarveraEmulator::say(const QByteArray &line)
         return;
     }
     Q_EMIT lineSent(line);
+}
+
+void CarveraEmulator::echo(const QByteArray &line)
+{
+    say(line);
+    say("ok");
+}
+
+void CarveraEmulator::finishScript()
+{
+    if (m_dropOk)
+        m_dropOk = false; // the script's end never comes
+    else
+        say("Done ATC");
+    endSilently();
+}
+
+void CarveraEmulator::endSilently()
+{
+    m_garble = false;
+    m_dropOk = false;
+    m_busy = false;
+    if (!m_queue.isEmpty())
+        QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
 }
 
 void CarveraEmulator::finish()

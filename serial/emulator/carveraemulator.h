@@ -15,19 +15,19 @@
 
 namespace Toffee {
 
-// A Carvera controller as the firmware behaves (see docs/CARVERA.md): it keeps positions, the reference and
-// current tool MCS Z, a tool setter, the physical length of each tool (so a broken tool really measures
-// shorter) and the halt state, and answers with the firmware's own strings. Not a mock: tests and
-// toffee-emulator drive it.
+// A Carvera controller as its firmware behaves (docs/CARVERA.md, checked against the community firmware
+// itself in ../shared/peers/carvera): it keeps positions, the configured reference tool MCS Z, the TLO in
+// force and the current tool's MCS Z as the firmware keeps them (M493.3 Z sets both to Z), a tool setter, the
+// physical length of each tool (so a broken tool really measures shorter) and the halt state, and answers
+// with the firmware's own lines: a shell command without "ok", a probing or tool-changing script acknowledged
+// at once and echoed line by line, each with its "ok", to "Done ATC". Not a mock: tests and toffee-emulator
+// drive it.
 class CarveraEmulator final : public QObject
 {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(CarveraEmulator)
 
 public:
-    // Seed: the first tool probed becomes the reference (the seed document). FixedReference: the reference is
-    // configured, as in firmware 2.1.0c.
-    enum class Profile { Seed, FixedReference };
     enum class Fault {
         DropOk, // the command runs but its "ok" never comes
         NoAnswer, // the command is swallowed: no output, no "ok"
@@ -53,20 +53,27 @@ public:
         double z = 0.0;
     };
 
-    // The MCS Z at which the spindle nose itself would touch the setter; a tool of length L triggers L
-    // higher.
+    // The machine is a C1 as the firmware's config on the test peer's SD card sets it up (the setter at
+    // Y-54.480, probed down to Z-154.400, from Z-3.000); the spindle nose itself would touch the
+    // setter at MCS Z -150, and a tool of length L triggers L higher.
     static constexpr double kNoseTriggerZ = -150.0;
-    static constexpr double kZTravelLimit = -145.0; // the probe gives up here
-    static constexpr double kClearanceZ = -10.0;
+    static constexpr double kZTravelLimit = -154.4; // the probe gives up here
+    static constexpr double kClearanceZ = -3.0;
     static constexpr qsizetype kMaxLineBytes = 4096;
-    // What `version` answers (`version = %s`).
-    static constexpr char kCommunityVersion[] = "2.1.0c";
+    // What `version` answers (`version = %s`, no "ok"): a community build's name, Makera's release number.
+    static constexpr char kCommunityVersion[] = "2.1.0c-emulator";
     static constexpr char kStockVersion[] = "1.0.1";
     static constexpr int kMaxRepeats = 10; // M491 R<n>
+    // What the firmware prints after each halt; its numbers mean nothing (the firmware's own build prints a
+    // host address there).
+    static constexpr char kHaltLine[] = "Halt Happened at Line: 0,percent: 0, time: 0";
 
     explicit CarveraEmulator(QObject *parent = nullptr);
 
-    void setProfile(Profile profile, double fixedReferenceMz = -72.3);
+    // The reference tool MCS Z the machine is calibrated with (a setting of the firmware, kept in its
+    // EEPROM): a C1's factory calibration on the test peer's SD card is -115.340. Probing never changes it.
+    static constexpr double kFactoryReferenceMz = -115.34;
+    void setReference(double mz) { m_refMz = mz; }
     void setTiming(Timing timing) { m_timing = timing; }
     // About as long as a C1 takes: a probing cycle 8 s, a rack change 15 s (Toffee's estimate).
     [[nodiscard]] static constexpr Timing realisticTiming() { return { 8000, 0, 15000 }; }
@@ -94,7 +101,10 @@ public:
     [[nodiscard]] int haltReason() const { return m_haltReason; }
     [[nodiscard]] double referenceMz() const { return m_refMz; }
     [[nodiscard]] double currentMz() const { return m_curMz; }
-    [[nodiscard]] double tlo() const { return m_curMz - m_refMz; }
+    // The TLO in force, as the status report's T: field carries it.
+    [[nodiscard]] double tlo() const { return m_tlo; }
+    // Waiting for the operator to change a tool by hand (the status report says "Tool").
+    [[nodiscard]] bool isWaitingForOperator() const { return m_waitingForOperator; }
     [[nodiscard]] QByteArray statusReport() const;
 
     // Whether a command is running or waiting.
@@ -130,7 +140,8 @@ private:
         ProbeFail = 3,
         CalibrateFail = 4,
         AtcToolInvalid = 6,
-        AtcNoTool = 7
+        AtcNoTool = 7,
+        ProbeInvalid = 12,
     };
     // An M-code's handler gets the block and the line as received (for the "Unsupported command" echo).
     using Handler = void (CarveraEmulator::*)(const GCodeBlock &block, const QByteArray &line);
@@ -146,7 +157,13 @@ private:
     bool shellCommand(const QByteArray &line);
     void systemCommand(const QByteArray &upper);
     void say(const QByteArray &line);
+    // A line of a running script, echoed as the firmware echoes it, with its "ok".
+    void echo(const QByteArray &line);
     void finish();
+    // The end of a script: "Done ATC", and no "ok".
+    void finishScript();
+    // The end of a command the firmware answers without "ok" (its shell).
+    void endSilently();
     void refuse(const QByteArray &line, const QByteArray &why = {});
     void haltWith(const QByteArray &message, HaltReason reason);
     void later(int ms, std::function<void()> step);
@@ -165,7 +182,13 @@ private:
     [[nodiscard]] QByteArray toolField() const;
     void move(const QByteArray &line);
 
-    void calibrate(bool breakTest, double tolerance, int repeats = 0);
+    // What kind of measurement a probing script makes.
+    enum class Calibration { Measure, BreakTest, AfterChange };
+    void calibrate(Calibration kind, double tolerance, int repeats = 0);
+    void saveXy();
+    void unknownCommand(const QByteArray &line);
+    void pickTool(int tool, std::optional<double> tlo);
+    void dropTool();
     [[nodiscard]] bool probeFails(double trigger);
     void failProbe();
     // M491 R<n>: each measurement's trigger, and where the spindle returns after the last.
@@ -181,8 +204,8 @@ private:
     void returnTo(double x, double y);
     void reportOffsets();
     void reportTlo();
+    void takeTlo(double currentMz);
 
-    Profile m_profile = Profile::Seed;
     Firmware m_firmware = Firmware::Community;
     Timing m_timing;
     double m_repeatability = 0.0;
@@ -202,14 +225,15 @@ private:
 
     bool m_homed = true;
     int m_haltReason = 0;
-    std::array<double, 3> m_mpos { 0.0, 0.0, kClearanceZ };
+    std::array<double, 3> m_mpos { -2.0, -2.0, -2.0 };
     std::array<double, 3> m_wcs { 0.0, 0.0, -59.0 };
-    std::array<double, 3> m_setter { -88.0, -9.0, -2.0 };
+    std::array<double, 2> m_setter { -4.965, -54.48 };
     int m_tool = 1;
-    bool m_calibrated = false;
-    bool m_hasReference = false;
-    double m_refMz = 0.0;
-    double m_curMz = 0.0;
+    double m_refMz = kFactoryReferenceMz;
+    double m_curMz = 0.0; // "current tool offset": the tool's MCS Z on the setter, or Z after M493.3 Z
+    double m_tlo = 0.0; // in force: 0 until something is measured or set
+    bool m_waitingForOperator = false;
+    std::array<double, 2> m_savedXy { 0.0, 0.0 };
     std::optional<double> m_lastProbeZ;
     // Motion and work offsets go through the same interpreter as `toffee-cli simulate`.
     GCodeInterpreter m_motion { Dialect::Carvera };

@@ -88,16 +88,22 @@ QByteArray CarveraEmulator::toolField() const
     return "|T:" + QByteArray::number(m_tool) + ',' + fixed(empty ? 0.0 : tlo()) + ",-1,0";
 }
 
-// The firmware's shell: its commands are not G-code, so they run while halted too.
+// The firmware's shell: its commands are not G-code, so they run while halted too, and they are answered
+// without "ok" (`version`), or not at all ($X on a machine that is not halted).
 bool CarveraEmulator::shellCommand(const QByteArray &line)
 {
     if (line == "version") {
         say(QByteArray("version = ") + (m_firmware == Firmware::Stock ? kStockVersion : kCommunityVersion));
-        finish();
+        endSilently();
         return true;
     }
     if (line.startsWith('$')) {
         systemCommand(line.toUpper());
+        return true;
+    }
+    if (!line.isEmpty() && line.front() >= 'a' && line.front() <= 'z') {
+        // Another shell word (echo, ls, …): this emulator has none of them (the firmware names the word).
+        refuse(line.split(' ').front());
         return true;
     }
     return false;
@@ -106,13 +112,15 @@ bool CarveraEmulator::shellCommand(const QByteArray &line)
 void CarveraEmulator::systemCommand(const QByteArray &upper)
 {
     if (upper == "$X") {
+        if (!isHalted())
+            return endSilently(); // not a word when there is nothing to unlock
         m_haltReason = 0;
+        say(kHaltLine);
         say("[Caution: Unlocked]");
         finish();
     } else if (isHalted()) {
         say("error:Alarm lock");
-        m_busy = m_dropOk = m_garble = false;
-        QMetaObject::invokeMethod(this, &CarveraEmulator::processNext, Qt::QueuedConnection);
+        endSilently();
     } else if (upper == "$H") {
         m_homed = true;
         m_mpos = { 0.0, 0.0, 0.0 };
@@ -125,24 +133,29 @@ void CarveraEmulator::systemCommand(const QByteArray &upper)
 void CarveraEmulator::probeTool(const GCodeBlock &block, const QByteArray &line)
 {
     const GCodeWord *r = block.find('R');
-    if (!r || m_firmware == Firmware::Stock)
-        return calibrate(false, 0.0); // the stock firmware has no repeats and ignores R
-    if (r->bare || r->value != std::floor(r->value) || r->value < 1 || r->value > kMaxRepeats)
+    if (r && m_firmware != Firmware::Stock
+        && (r->bare || r->value != std::floor(r->value) || r->value < 1 || r->value > kMaxRepeats))
         return refuse(line);
-    calibrate(false, 0.0, int(r->value));
+    saveXy();
+    if (!r || m_firmware == Firmware::Stock)
+        return calibrate(Calibration::Measure, 0.0); // the stock firmware has no repeats and ignores R
+    calibrate(Calibration::Measure, 0.0, int(r->value));
 }
 
 void CarveraEmulator::breakTest(const GCodeBlock &block, const QByteArray &line)
 {
-    if (m_firmware == Firmware::Stock)
-        return calibrate(false, 0.0); // the subcode is ignored: a plain M491, whatever H says
+    if (m_firmware == Firmware::Stock) {
+        saveXy();
+        return calibrate(Calibration::Measure, 0.0); // the subcode is ignored: a plain M491
+    }
     const GCodeWord *h = block.find('H');
     if (h && h->bare)
         return refuse(line);
     const double tolerance = h ? h->value : Limits::kDefaultBreakTolerance;
     if (tolerance < Limits::kMinBreakTolerance)
         return haltWith("ERROR: Tool Break Check - tolerance set too small", HaltReason::CalibrateFail);
-    calibrate(true, tolerance);
+    saveXy();
+    calibrate(Calibration::BreakTest, tolerance);
 }
 
 // One measurement of M491 R<n> per probing cycle; after the last, the mean becomes the tool's. The lines'
@@ -154,10 +167,6 @@ void CarveraEmulator::measureRepeatedly(Repeats repeats)
         const double trigger = r.trigger + m_repeatability * kRepeatSpread[size_t(i) % kRepeatSpread.size()];
         say("[PRB:" + fixed(m_setter[0]) + ',' + fixed(m_setter[1]) + ',' + fixed(trigger) + ":1]");
         m_lastProbeZ = trigger;
-        if (!m_hasReference) {
-            m_refMz = trigger;
-            m_hasReference = true;
-        }
         r.triggers.append(trigger);
         say("TLO measurement " + QByteArray::number(i + 1) + " of " + QByteArray::number(r.count) + ": "
             + fixed(trigger - m_refMz));
@@ -167,14 +176,15 @@ void CarveraEmulator::measureRepeatedly(Repeats repeats)
         const double mean = std::accumulate(r.triggers.cbegin(), r.triggers.cend(), 0.0) / r.count;
         say("Max delta: " + fixed(*high - *low));
         say("Using TLO: " + fixed(mean - m_refMz));
-        m_curMz = mean;
-        m_calibrated = true;
+        takeTlo(mean);
         returnTo(r.startX, r.startY);
     });
 }
 
-// M6 T<n>: the firmware changes only to another tool. A rack tool is put back or picked and always
-// measured (H is for manual changes only); a tool with no slot is changed by hand.
+// M6 T<n>: the firmware changes only to another tool (M6 to the tool in the spindle gets a bare "ok"). A rack
+// tool is put back or picked and always measured (H is for manual changes only); a tool with no slot is
+// changed by hand: the machine waits in state Tool for the operator (changeMs here), then measures it, or
+// takes H as its TLO.
 void CarveraEmulator::changeTool(const GCodeBlock &block, const QByteArray &line)
 {
     const auto t = block.value('T');
@@ -186,26 +196,69 @@ void CarveraEmulator::changeTool(const GCodeBlock &block, const QByteArray &line
     const int n = int(*t);
     if (n == m_tool)
         return finish();
-    const bool atTheRack = inRack(n) || (n == Limits::kEmptySpindle && inRack(m_tool));
+    m_savedXy = { m_mpos[0], m_mpos[1] };
+    say("Saved XY position: X" + fixed(m_mpos[0]) + " Y" + fixed(m_mpos[1]));
     announceChange(n);
-    m_tool = n;
-    m_calibrated = false;
+    say("ok");
+    dropTool();
     if (n == Limits::kEmptySpindle) {
-        if (atTheRack && m_timing.changeMs > 0)
-            return later(m_timing.changeMs, [this] { finish(); });
-        return finish();
-    }
-    if (atTheRack) {
         if (m_timing.changeMs > 0)
-            return later(m_timing.changeMs, [this] { calibrate(false, 0.0); });
-        return calibrate(false, 0.0);
+            return later(m_timing.changeMs, [this] { returnTo(m_savedXy[0], m_savedXy[1]); });
+        return returnTo(m_savedXy[0], m_savedXy[1]);
     }
-    if (h) {
-        m_curMz = m_refMz + *h;
-        m_calibrated = true;
-        return finish();
+    const std::optional<double> tlo = inRack(n) ? std::nullopt : h;
+    if (m_timing.changeMs > 0) {
+        m_waitingForOperator = !inRack(n);
+        return later(m_timing.changeMs, [this, n, tlo] { pickTool(n, tlo); });
     }
-    calibrate(false, 0.0);
+    pickTool(n, tlo);
+}
+
+// The tool in the spindle goes back in its slot, or is taken out by hand.
+void CarveraEmulator::dropTool()
+{
+    if (m_tool == Limits::kEmptySpindle)
+        return;
+    echo("M497.1");
+    echo("G53 G0 Z" + fixed(kClearanceZ));
+    for (const RackSlot &slot : std::as_const(m_rack)) {
+        if (slot.tool == m_tool) {
+            echo("G53 G0 X" + fixed(slot.x) + " Y" + fixed(slot.y));
+            echo("G53 G0 Z" + fixed(slot.z));
+        }
+    }
+    say("M490.2");
+    say("ATC loosed!");
+    say("ok");
+    echo("M493.2 T-1");
+    m_tool = Limits::kEmptySpindle;
+    echo("G53 G0 Z" + fixed(kClearanceZ));
+}
+
+void CarveraEmulator::pickTool(int tool, std::optional<double> tlo)
+{
+    m_waitingForOperator = false;
+    for (const RackSlot &slot : std::as_const(m_rack)) {
+        if (slot.tool == tool) {
+            echo("G53 G0 X" + fixed(slot.x) + " Y" + fixed(slot.y));
+            echo("G53 G0 Z" + fixed(slot.z));
+        }
+    }
+    say("M490.1");
+    say("ATC clamped!");
+    say("ok");
+    echo("M493.2 T" + QByteArray::number(tool));
+    m_tool = tool;
+    if (!tlo)
+        return calibrate(Calibration::AfterChange, 0.0);
+    say("Tool is now installed and TLO set as " + fixed(*tlo) + '.');
+    say("ok");
+    say("M493.3 Z" + fixed(*tlo));
+    m_curMz = *tlo;
+    m_tlo = *tlo;
+    reportTlo();
+    say("ok");
+    returnTo(m_savedXy[0], m_savedXy[1]);
 }
 
 // The stock firmware says one line for a drop and a pick; the community firmware one for each.
@@ -217,7 +270,8 @@ void CarveraEmulator::announceChange(int newTool)
     if (m_firmware == Firmware::Stock && dropping && newTool != Limits::kEmptySpindle)
         return say("Start atc, old tool: " + oldT + ", new tool: " + newT);
     if (dropping)
-        say("Start dropping current tool: " + oldT);
+        say((inRack(m_tool) ? "Start dropping current tool: " : "Start manually dropping current tool: ")
+            + oldT);
     if (newTool == Limits::kEmptySpindle)
         return;
     say((inRack(newTool) ? "Start picking new tool: " : "Start manually picking new tool: ") + newT);

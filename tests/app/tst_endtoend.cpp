@@ -48,6 +48,8 @@ private:
     }
 
 private Q_SLOTS:
+    // The seed's worked example on the machine as its firmware is: the reference is the machine's calibration
+    // (-115.340), every TLO the firmware's own.
     void followsTheSeedsWorkedExampleOverAPty()
     {
         Emulator emulator(tty(), {});
@@ -57,9 +59,8 @@ private Q_SLOTS:
 
         Run run = machine({ u"probe"_s });
         QCOMPARE(run.exitCode, 0);
-        QCOMPARE(
-            fixed3(json(run).value(u"reference_mz"_s)), u"-72.300"_s); // the first tool becomes the reference
-        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"0.000"_s);
+        QCOMPARE(fixed3(json(run).value(u"reference_mz"_s)), u"-115.340"_s); // the machine's, not T1's
+        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"43.040"_s);
 
         run = machine({ u"select-tool"_s, u"2"_s });
         QCOMPARE(run.exitCode, 0);
@@ -72,12 +73,12 @@ private Q_SLOTS:
         QJsonObject o = json(run);
         QCOMPARE(o.value(u"tool"_s).toInt(), 2);
         QCOMPARE(fixed3(o.value(u"current_mz"_s)), u"-105.688"_s);
-        QCOMPARE(fixed3(o.value(u"reference_mz"_s)), u"-72.300"_s);
-        QCOMPARE(fixed3(o.value(u"tlo"_s)), u"-33.388"_s);
+        QCOMPARE(fixed3(o.value(u"reference_mz"_s)), u"-115.340"_s);
+        QCOMPARE(fixed3(o.value(u"tlo"_s)), u"9.652"_s);
         const Run shown = cli({ u"--json"_s, u"show"_s, table });
         const QJsonObject t2
             = QJsonDocument::fromJson(shown.out).object()[u"tools"_s].toArray().at(1).toObject();
-        QCOMPARE(fixed3(t2.value(u"measured_tlo"_s)), u"-33.388"_s); // recorded, with its time
+        QCOMPARE(fixed3(t2.value(u"measured_tlo"_s)), u"9.652"_s); // recorded, with its time
         QVERIFY(QDateTime::fromString(t2.value(u"measured_at"_s).toString(), Qt::ISODateWithMs)
                     .secsTo(QDateTime::currentDateTimeUtc())
             < 60);
@@ -86,27 +87,28 @@ private Q_SLOTS:
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(json(run).value(u"broken"_s).toBool(), false);
 
-        // "Adding 2.9mm length to the current tool": -33.388 + 2.9 = -30.488, recorded as set by hand.
-        run = machine({ u"--table"_s, table, u"set-tlo"_s, u"--z"_s, u"-30.488"_s });
+        // "Adding 2.9mm length to the current tool": 9.652 + 2.9 = 12.552, recorded as set by hand.
+        run = machine({ u"--table"_s, table, u"set-tlo"_s, u"--z"_s, u"12.552"_s });
         QCOMPARE(run.exitCode, 0);
-        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"-30.488"_s);
+        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"12.552"_s);
         auto shownTool = [&table](int index) {
             const Run shown = cli({ u"--json"_s, u"show"_s, table });
             return QJsonDocument::fromJson(shown.out).object()[u"tools"_s].toArray().at(index).toObject();
         };
-        QCOMPARE(fixed3(shownTool(1).value(u"measured_tlo"_s)), u"-30.488"_s);
+        QCOMPARE(fixed3(shownTool(1).value(u"measured_tlo"_s)), u"12.552"_s);
         QCOMPARE(shownTool(1).value(u"tlo_source"_s).toString(), u"manual"_s);
         QCOMPARE(shownTool(0).value(u"tlo_source"_s).toString(), u"probe"_s);
         run = machine({ u"report"_s });
-        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"-30.488"_s);
-        QCOMPARE(fixed3(json(run).value(u"current_mz"_s)), u"-102.788"_s);
+        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"12.552"_s);
+        // After M493.3 Z the firmware's "current tool offset" is the TLO itself, no MCS Z: none is claimed.
+        QVERIFY(json(run).value(u"current_mz"_s).isNull());
 
         run = machine({ u"status"_s });
         QCOMPARE(run.exitCode, 0);
         o = json(run);
         QCOMPARE(o.value(u"state"_s).toString(), u"Idle"_s);
         QCOMPARE(o.value(u"tool"_s).toInt(), 2);
-        QCOMPARE(fixed3(o.value(u"tlo"_s)), u"-30.488"_s);
+        QCOMPARE(fixed3(o.value(u"tlo"_s)), u"12.552"_s);
         QVERIFY(o.value(u"halt_reason"_s).isNull());
         QCOMPARE(o.value(u"mpos"_s).toArray().size(), 3);
 
@@ -122,7 +124,7 @@ private Q_SLOTS:
         QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0);
         QVERIFY(!shownTool(1).value(u"break_test_failed"_s).toBool());
         QCOMPARE(shownTool(1).value(u"tlo_source"_s).toString(), u"probe"_s);
-        QCOMPARE(fixed3(shownTool(1).value(u"measured_tlo"_s)), u"-33.388"_s);
+        QCOMPARE(fixed3(shownTool(1).value(u"measured_tlo"_s)), u"9.652"_s);
 
         // Every measurement is in the history library, in order, with what the machine reported.
         run = cli({ u"--json"_s, u"--library"_s, library(), u"history"_s, u"--tool"_s, u"2"_s });
@@ -133,15 +135,16 @@ private Q_SLOTS:
             kinds << e[u"kind"_s].toString();
         QCOMPARE(kinds,
             (QStringList { u"probe"_s, u"break_test"_s, u"manual_set"_s, u"break_test"_s, u"probe"_s }));
-        QCOMPARE(fixed3(events.at(0)[u"tlo"_s]), u"-33.388"_s);
+        QCOMPARE(fixed3(events.at(0)[u"tlo"_s]), u"9.652"_s);
         QCOMPARE(fixed3(events.at(0)[u"current_mz"_s]), u"-105.688"_s);
-        QCOMPARE(fixed3(events.at(0)[u"reference_mz"_s]), u"-72.300"_s);
+        QCOMPARE(fixed3(events.at(0)[u"reference_mz"_s]), u"-115.340"_s);
         QCOMPARE(events.at(1)[u"failed"_s].toBool(), false);
         QCOMPARE(events.at(1)[u"tolerance"_s].toDouble(), 0.05);
-        QCOMPARE(fixed3(events.at(2)[u"tlo"_s]), u"-30.488"_s);
+        QCOMPARE(fixed3(events.at(2)[u"tlo"_s]), u"12.552"_s);
+        QVERIFY(events.at(2)[u"current_mz"_s].isNull());
         QCOMPARE(events.at(3)[u"failed"_s].toBool(), true);
-        QCOMPARE(fixed3(events.at(3)[u"old_tlo"_s]), u"-30.488"_s);
-        QCOMPARE(fixed3(events.at(3)[u"new_tlo"_s]), u"-33.388"_s);
+        QCOMPARE(fixed3(events.at(3)[u"old_tlo"_s]), u"12.552"_s);
+        QCOMPARE(fixed3(events.at(3)[u"new_tlo"_s]), u"9.652"_s);
         QCOMPARE(events.at(4)[u"machine"_s].toString(), u"Carvera"_s);
         {
             auto opened = Toffee::Library::open({ library() });
@@ -204,8 +207,10 @@ private Q_SLOTS:
         const Run run = machine({ u"--table"_s, table, u"probe"_s });
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains("nothing was sent to the machine"));
-        // The machine never probed: it still has no reference tool.
-        QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"reference_mz"_s)), u"0.000"_s);
+        // The machine never probed: nothing is measured, no MCS Z of a tool.
+        const QJsonObject report = json(machine({ u"report"_s }));
+        QCOMPARE(fixed3(report.value(u"tlo"_s)), u"0.000"_s);
+        QVERIFY(report.value(u"current_mz"_s).isNull());
     }
 
     void findsABrokenToolAndUnlocks()
@@ -249,32 +254,24 @@ private Q_SLOTS:
         const QString table = m_dir.filePath(u"restore.json"_s);
         QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table));
         QFile::setPermissions(table, QFile::ReadOwner | QFile::WriteOwner);
-        {
-            Emulator fresh(tty(), {});
-            QVERIFY(fresh.started());
-            // A machine that has measured nothing since it started: no reference to restore against.
-            const Run refused = machine({ u"--table"_s, table, u"restore"_s, u"2"_s });
-            QCOMPARE(refused.exitCode, 2);
-            QVERIFY2(refused.err.contains("probe the reference tool first"), refused.err.constData());
-        }
         Emulator emulator(tty(), {});
         QVERIFY(emulator.started());
-        QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0); // T1, the reference
-        QCOMPARE(machine({ u"--table"_s, table, u"change-tool"_s, u"2"_s }).exitCode, 0); // T2: -33.388
+        QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0); // T1: 43.040
+        QCOMPARE(machine({ u"--table"_s, table, u"change-tool"_s, u"2"_s }).exitCode, 0); // T2: 9.652
         QCOMPARE(machine({ u"select-tool"_s, u"1"_s }).exitCode, 0);
         QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0);
 
         const Run run = machine({ u"--table"_s, table, u"restore"_s, u"2"_s });
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(json(run).value(u"tool"_s).toInt(), 2);
-        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"-33.388"_s);
-        QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"tlo"_s)), u"-33.388"_s);
+        QCOMPARE(fixed3(json(run).value(u"tlo"_s)), u"9.652"_s);
+        QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"tlo"_s)), u"9.652"_s);
         const QJsonArray events
             = json(cli({ u"--json"_s, u"--library"_s, library(), u"history"_s, u"--tool"_s, u"2"_s }))
                   .value(u"events"_s)
                   .toArray();
         QCOMPARE(events.last()[u"kind"_s].toString(), u"restore"_s);
-        QCOMPARE(fixed3(events.last()[u"tlo"_s]), u"-33.388"_s);
+        QCOMPARE(fixed3(events.last()[u"tlo"_s]), u"9.652"_s);
 
         // T3 has no TLO in the table: nothing to restore, nothing sent.
         const Run none = machine({ u"--table"_s, table, u"restore"_s, u"3"_s });
@@ -292,10 +289,10 @@ private Q_SLOTS:
             QFile::setPermissions(table, QFile::ReadOwner | QFile::WriteOwner);
             QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0);
             QCOMPARE(
-                machine({ u"--table"_s, table, u"change-tool"_s, u"2"_s }).exitCode, 0); // against -72.300
+                machine({ u"--table"_s, table, u"change-tool"_s, u"2"_s }).exitCode, 0); // against -115.340
         }
-        // Another day, a reference 10 mm lower: T2's stored TLO would be 10 mm off.
-        Emulator emulator(tty(), { u"--fixed-reference"_s, u"-82.3"_s });
+        // Another day, calibrated 10 mm lower: T2's stored TLO would be 10 mm off.
+        Emulator emulator(tty(), { u"--reference"_s, u"-125.34"_s });
         QVERIFY(emulator.started());
         const QJsonObject before = json(machine({ u"report"_s }));
         const Run run = machine({ u"--table"_s, table, u"restore"_s, u"2"_s });
@@ -317,7 +314,7 @@ private Q_SLOTS:
         // What records nothing needs no library: the status still answers.
         QCOMPARE(cli({ u"--library"_s, folder, u"--port"_s, tty(), u"status"_s }).exitCode, 0);
         // Nothing moved: the machine still has nothing measured.
-        QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"reference_mz"_s)), u"0.000"_s);
+        QVERIFY(json(machine({ u"report"_s })).value(u"current_mz"_s).isNull());
         QCOMPARE(cli({ u"--no-history"_s, u"--port"_s, tty(), u"probe"_s }).exitCode, 0);
     }
 

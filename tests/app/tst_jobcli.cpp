@@ -130,7 +130,7 @@ private Q_SLOTS:
         const Run run = cli({ u"job"_s, u"check"_s, path, u"--table"_s, kExample, u"--stale-days"_s,
             u"3650"_s, u"--no-history"_s });
         QCOMPARE(run.exitCode, 4);
-        QVERIFY2(run.out.contains("T2  loaded at line 1  TLO -33.388"), run.out.constData());
+        QVERIFY2(run.out.contains("T2  loaded at line 1  TLO 9.652"), run.out.constData());
         QVERIFY2(run.out.contains("cutting 6 s, 60.000 mm"), run.out.constData());
         QVERIFY2(run.out.contains("error: line 3: T9 is not in the tool table"), run.out.constData());
         QVERIFY2(
@@ -219,13 +219,12 @@ private Q_SLOTS:
         Run run = cli({ u"--json"_s, u"job"_s, u"prepare"_s, path, u"--table"_s, kExample, u"--break-test"_s,
             u"--tolerance"_s, u"0.05"_s, u"-o"_s, out, u"--no-history"_s });
         QCOMPARE(run.exitCode, 0);
-        // T2 is stopped and tested; T1, the reference tool (TLO 0), is not: the firmware does not test it.
-        QCOMPARE(json(run).value(u"inserted"_s).toInt(), 2);
+        // T2 is stopped and tested, and T1 after its cut (the spindle stopped at the change already).
+        QCOMPARE(json(run).value(u"inserted"_s).toInt(), 3);
         QCOMPARE(json(run).value(u"cutting_moves_checked"_s).toInt(), 3);
-        QVERIFY(
-            json(run).value(u"notes"_s).toArray().at(0).toString().contains(u"T1 is the reference tool"_s));
+        QVERIFY(json(run).value(u"notes"_s).toArray().isEmpty());
         const QByteArray prepared = readFile(out);
-        QCOMPARE(prepared.count("M491.1 H0.05"), 1);
+        QCOMPARE(prepared.count("M491.1 H0.05"), 2);
         QVERIFY(prepared.contains("M5 (Toffee: the spindle stops for T2's break test)\n"));
         run = cli({ u"job"_s, u"check"_s, out, u"--table"_s, kExample, u"--stale-days"_s, u"3650"_s,
             u"--no-history"_s });

@@ -79,7 +79,7 @@ private Q_SLOTS:
             const QJsonArray rackSlots = json(run).value(u"slots"_s).toArray();
             QCOMPARE(rackSlots.size(), 6);
             QCOMPARE(
-                QString::number(rackSlots.at(1).toObject().value(u"tlo"_s).toDouble(), 'f', 3), u"-33.388"_s);
+                QString::number(rackSlots.at(1).toObject().value(u"tlo"_s).toDouble(), 'f', 3), u"9.652"_s);
             QCOMPARE(json(run).value(u"spindle"_s).toInt(), 6);
             QCOMPARE(json(run)[u"firmware"_s][u"kind"_s].toString(), u"community"_s);
         }
@@ -144,10 +144,10 @@ private Q_SLOTS:
             Emulator emulator(tty(), {});
             QVERIFY(emulator.started());
             QCOMPARE(machine({ u"measure-rack"_s }).exitCode, 0);
-            QCOMPARE(machine({ u"change-tool"_s, u"8"_s }).exitCode, 0); // T8 against T1's reference
+            QCOMPARE(machine({ u"change-tool"_s, u"8"_s }).exitCode, 0); // T8 against the reference -115.340
         }
-        // Switched off and on: T3 is measured first and becomes the reference. T8's stored TLO is against T1.
-        Emulator emulator(tty(), {});
+        // Calibrated again, 1 mm lower: T8's stored TLO is against the reference before.
+        Emulator emulator(tty(), { u"--reference"_s, u"-116.34"_s });
         QVERIFY(emulator.started());
         QCOMPARE(machine({ u"change-tool"_s, u"3"_s }).exitCode, 0);
         const int probes = historyCount(u"probe"_s);
@@ -156,8 +156,8 @@ private Q_SLOTS:
         QVERIFY2(run.err.contains("reference MCS Z"), run.err.constData());
         QCOMPARE(historyCount(u"probe"_s), probes + 1); // probed, not restored
         QCOMPARE(historyCount(u"restore"_s), 0);
-        // A table row that does not say its reference cannot be restored either.
-        QCOMPARE(machine({ u"restore"_s, u"1"_s }).exitCode, 2); // the example's T1: no reference in the file
+        // Nor is T1's restored: measured against the reference before.
+        QCOMPARE(machine({ u"restore"_s, u"1"_s }).exitCode, 2);
     }
 
     void theStockFirmwareHasNoRackCheck()

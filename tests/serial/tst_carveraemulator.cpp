@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The emulator answers as the Carvera's community firmware answers: the transcripts here are the firmware's
+// own, recorded from it (../shared/peers/carvera, 2026-11-25) on the same C1 configuration, with tool 1 as
+// long as the simulator's tools (it triggers the setter at MCS Z -108.425).
 #include <QSignalSpy>
 #include <QTest>
 
@@ -11,64 +14,175 @@ using namespace Toffee;
 using namespace Toffee::Test;
 using namespace Qt::StringLiterals;
 
+namespace {
+
+// The simulator's tools all trigger at -108.425 (a fast probe 0.010 lower first).
+constexpr double kSimulatedToolLength = 41.575;
+
+QList<QByteArray> lines(const char *text)
+{
+    return QByteArray(text).split('\n');
+}
+
+} // namespace
+
 class TestCarveraEmulator : public QObject
 {
     Q_OBJECT
 
 private Q_SLOTS:
-    void followsTheSeedsWorkedExample()
+    void answersTheShellAsTheFirmwareDoes()
     {
         CarveraEmulator emulator;
-        QList<QByteArray> out = command(emulator, "M491");
-        QVERIFY(out.contains("[PRB:-88.000,-9.000,-72.300:1]"));
-        QCOMPARE(out.last(), QByteArray("ok"));
-        QVERIFY(out.contains("Done ATC"));
-        QCOMPARE(emulator.referenceMz(), -72.3); // the first tool probed becomes the reference
-        QCOMPARE(command(emulator, "M493.2 T2"), QList<QByteArray> { "ok" });
-        command(emulator, "M491");
-        out = command(emulator, "M493.4");
-        QCOMPARE(out.size(), 4);
-        QCOMPARE(out.at(0), QByteArray("current tool offset [-105.688] , reference tool offset [-72.300]"));
-        QCOMPARE(out.at(1), QByteArray("no one-off tool setter position offsets configured"));
-        QCOMPARE(out.at(2), QByteArray("using default Tool setter position: X[-88.000] Y[-9.000] Z[-2.000]"));
-        QVERIFY(qFuzzyCompare(emulator.tlo(), -33.388));
-        // "Adding 2.9mm length to the current tool": -33.388 + 2.9 = -30.488
-        out = command(emulator, "M493.3 Z-30.488");
-        QCOMPARE(out.at(0), QByteArray("current tool offset [-102.788] , reference tool offset [-72.300]"));
-        QVERIFY(status(emulator).contains("|T:2,-30.488,-1,0|"));
+        // `version` is the shell's: one line, no "ok".
+        QCOMPARE(command(emulator, "version"), QList<QByteArray> { "version = 2.1.0c-emulator" });
+        QVERIFY(parseVersion("version = 2.1.0c-emulator")->kind == FirmwareInfo::Kind::Community);
+        // $X on a machine that is not halted: not a word.
+        QCOMPARE(command(emulator, "$X"), QList<QByteArray> {});
+        QCOMPARE(command(emulator, "echo echo"), QList<QByteArray> { "error:Unsupported command - echo" });
+        QCOMPARE(command(emulator, ""), QList<QByteArray> { "ok" });
+        QCOMPARE(command(emulator, ";"), QList<QByteArray> { "ok" });
     }
 
-    void aBrokenToolMeasuresShorter()
+    void probesMeasuresAndSetsAsTheFirmwareDoes()
+    {
+        CarveraEmulator emulator;
+        emulator.setToolLength(1, kSimulatedToolLength);
+        QCOMPARE(command(emulator, "M493.4"),
+            lines("current tool offset [0.000] , reference tool offset [-115.340]\n"
+                  "no one-off tool setter position offsets configured\n"
+                  "using default Tool setter position: X[-4.965] Y[-54.480] "
+                  "Z[-154.400]\n"
+                  "ok"));
+        // The command's own "ok" at once, each line of the script echoed with its "ok", "Done ATC" at the
+        // end.
+        QCOMPARE(command(emulator, "M491"),
+            lines("Saved XY position: X-2.000 Y-2.000\n"
+                  "ok\n"
+                  "M497.3\nok\n"
+                  "G53 G0 Z-3.000\nok\n"
+                  "G53 G0 X-4.965 Y-54.480\nok\n"
+                  "G38.6 Z-154.400 F600.000\n"
+                  "[PRB:-4.965,-54.480,-108.435:1]\nok\n"
+                  "G91 G0 Z2.000\nok\n"
+                  "G38.6 Z-3.000 F150.000\n"
+                  "[PRB:-4.965,-54.480,-108.425:1]\nok\n"
+                  "M493.1 R1\nok\n"
+                  "G53 G0 Z-3.000\nok\n"
+                  "Return to XY position: X-2.000 Y-2.000\n"
+                  "Done ATC"));
+        QVERIFY(status(emulator).contains("|T:1,6.915,-1,0|"));
+        QCOMPARE(command(emulator, "M493.4").front(),
+            QByteArray("current tool offset [-108.425] , reference tool offset [-115.340]"));
+        // M493.3 Z: the TLO is Z, and so is the "current tool offset" printed (not reference + Z).
+        QCOMPARE(command(emulator, "M493.3 Z-10.5"),
+            lines("current tool offset [-10.500] , reference tool offset [-115.340]\nok"));
+        QVERIFY(status(emulator).contains("|T:1,-10.500,-1,0|"));
+        // M493.2 changes the tool, not the TLO in force.
+        QCOMPARE(command(emulator, "M493.2 T5"), QList<QByteArray> { "ok" });
+        QVERIFY(status(emulator).contains("|T:5,-10.500,-1,0|"));
+        QCOMPARE(emulator.referenceMz(), CarveraEmulator::kFactoryReferenceMz); // probing never moves it
+    }
+
+    // M493.3 H adds to the "current tool offset", which after an M493.3 Z is no MCS Z: 115.340 mm off, as on
+    // the firmware (Toffee itself never sends M493.3 H: it works the TLO out and sends M493.3 Z).
+    void setsTloFromAGaugeAboveZ0AsTheFirmwareDoes()
+    {
+        CarveraEmulator emulator;
+        emulator.setToolLength(1, kSimulatedToolLength);
+        command(emulator, "M491"); // TLO 6.915, WPos Z -3 + 59 - 6.915 = 49.085
+        QCOMPARE(command(emulator, "M493.3 H3").front(),
+            QByteArray("current tool offset [-62.340] , reference tool offset [-115.340]"));
+        QVERIFY2(status(emulator).contains("|T:1,53.000,-1,0|"), status(emulator).constData()); // right
+        command(emulator, "M493.3 Z53");
+        QCOMPARE(command(emulator, "M493.3 H3").front(),
+            QByteArray("current tool offset [53.000] , reference tool offset [-115.340]"));
+        QVERIFY(status(emulator).contains("|T:1,168.340,-1,0|")); // the firmware's error, 115.340 off
+    }
+
+    void aFailedBreakTestHaltsWithTheNewLengthInForce()
+    {
+        CarveraEmulator emulator;
+        emulator.setToolLength(1, kSimulatedToolLength);
+        command(emulator, "M491");
+        command(emulator, "M493.3 Z109.34");
+        QCOMPARE(command(emulator, "M491.1 H0.05"),
+            lines("Saved XY position: X-2.000 Y-2.000\n"
+                  "ok\n"
+                  "M5\nok\n"
+                  "M497.3\nok\n"
+                  "G53 G0 Z-3.000\nok\n"
+                  "G53 G0 X-4.965 Y-54.480\nok\n"
+                  "G38.6 Z-154.400 F600.000\n"
+                  "[PRB:-4.965,-54.480,-108.435:1]\nok\n"
+                  "G91 G0 Z2.000\nok\n"
+                  "G38.6 Z-3.000 F150.000\n"
+                  "[PRB:-4.965,-54.480,-108.425:1]\nok\n"
+                  "M493.1 R1\nok\n"
+                  "G53 G0 Z-3.000\nok\n"
+                  "G53 G0 Z-20.000\nok\n"
+                  "M491.2 H0.050 , P109.340\n"
+                  "Old: 109.340 , new: 6.915\n"
+                  "ERROR: Tool Break Check - check tool for breakage\n"
+                  "Halt Happened at Line: 0,percent: 0, time: 0\n"
+                  "ok"));
+        const QByteArray report = status(emulator);
+        QVERIFY2(report.startsWith("<Alarm|MPos:-4.9650,-54.4800,-20.0000,"), report.constData());
+        QVERIFY(report.contains("|T:1,6.915,-1,0|")); // the broken length, not 109.340
+        QVERIFY(report.contains("|H:4|"));
+        QCOMPARE(command(emulator, "G90"), QList<QByteArray> { "error:Alarm lock" });
+        QCOMPARE(command(emulator, "M493.4"), QList<QByteArray> { "error:Alarm lock" });
+        QCOMPARE(command(emulator, "$X"),
+            lines("Halt Happened at Line: 0,percent: 0, time: 0\n[Caution: Unlocked]\nok"));
+        QVERIFY(!emulator.isHalted());
+    }
+
+    void aBreakTestThatPassesEndsWithDoneAtc()
     {
         CarveraEmulator emulator;
         command(emulator, "M491");
-        QList<QByteArray> out = command(emulator, "M491.1 H0.05");
-        QVERIFY(out.contains("Old: 0.000 , new: 0.000"));
+        const QList<QByteArray> out = command(emulator, "M491.1 H0.05");
+        QVERIFY(out.contains("M491.2 H0.050 , P43.040"));
+        QVERIFY(out.contains("Old: 43.040 , new: 43.040"));
+        QCOMPARE(out.last(), QByteArray("Done ATC"));
         QVERIFY(!emulator.isHalted());
         emulator.breakTool(1, 0.5);
-        out = command(emulator, "M491.1");
-        QVERIFY(out.contains("Old: 0.000 , new: -0.500"));
-        QVERIFY(out.contains("ERROR: Tool Break Check - check tool for breakage"));
+        QVERIFY(command(emulator, "M491.1").contains("Old: 43.040 , new: 42.540"));
         QCOMPARE(emulator.haltReason(), 4);
-        QVERIFY(status(emulator).contains("|H:4>"));
-        QVERIFY(status(emulator).startsWith("<Alarm|"));
     }
 
     void refusesATooSmallToleranceBeforeMoving()
     {
         CarveraEmulator emulator;
         command(emulator, "M491");
-        const QList<QByteArray> out = command(emulator, "M491.1 H0.01");
-        QCOMPARE(out.front(), QByteArray("ERROR: Tool Break Check - tolerance set too small"));
-        QVERIFY(!out.contains("M497.3")); // no probing script ran
+        QCOMPARE(command(emulator, "M491.1 H0.01"),
+            lines("ERROR: Tool Break Check - tolerance set too small\n"
+                  "Halt Happened at Line: 0,percent: 0, time: 0\nok"));
         QCOMPARE(emulator.haltReason(), 4);
     }
 
-    void needsAPreviousTloForTheBreakTest()
+    // "No previous TLO" is a TLO of exactly 0: the whole probe runs, the new length is taken, nothing is
+    // compared, and the machine does not halt.
+    void aTloOfZeroIsNoPreviousTlo()
     {
         CarveraEmulator emulator;
-        QCOMPARE(command(emulator, "M491.1").front(), QByteArray("No previous TLO included, aborting"));
+        const QList<QByteArray> out = command(emulator, "M491.1");
+        QVERIFY(out.contains("M491.2 H0.100 , P0.000"));
+        QVERIFY(out.contains("No previous TLO included, aborting"));
+        QCOMPARE(out.last(), QByteArray("Done ATC"));
         QVERIFY(!emulator.isHalted());
+        QCOMPARE(emulator.tlo(), 43.04);
+    }
+
+    // The firmware's M491.1 takes T0 and T9 on for its wireless probe: it measures, then halts (H:12).
+    void breakTestingToolNineOrAboveHaltsAsTheFirmwareDoes()
+    {
+        CarveraEmulator emulator;
+        command(emulator, "M493.2 T10");
+        command(emulator, "M491");
+        const QList<QByteArray> out = command(emulator, "M491.1");
+        QVERIFY(out.contains("ERROR: Wireless probe dead or not set, please charge or set first!"));
+        QCOMPARE(emulator.haltReason(), 12);
     }
 
     void locksWhileHaltedAndUnlocks()
@@ -76,14 +190,13 @@ private Q_SLOTS:
         CarveraEmulator emulator;
         emulator.halt(3);
         QCOMPARE(command(emulator, "M491"), QList<QByteArray> { "error:Alarm lock" });
-        QCOMPARE(command(emulator, "M493.4"), QList<QByteArray> { "error:Alarm lock" });
         QCOMPARE(command(emulator, "M5"), QList<QByteArray> { "ok" }); // allowed while halted
-        const QList<QByteArray> unlock { "[Caution: Unlocked]", "ok" };
-        QCOMPARE(command(emulator, "$X"), unlock);
+        QVERIFY(command(emulator, "$X").contains("[Caution: Unlocked]"));
         QVERIFY(!emulator.isHalted());
         emulator.halt(1);
-        QCOMPARE(command(emulator, "M999").front(),
-            QByteArray("WARNING: After HALT you should HOME as position is currently unknown"));
+        QCOMPARE(command(emulator, "M999"),
+            lines("Halt Happened at Line: 0,percent: 0, time: 0\n"
+                  "WARNING: After HALT you should HOME as position is currently unknown\nok"));
         QVERIFY(!emulator.isHalted());
     }
 
@@ -97,9 +210,9 @@ private Q_SLOTS:
     void aToolTooShortFailsToTrigger()
     {
         CarveraEmulator emulator;
-        emulator.setToolLength(1, 2.0);
+        emulator.setToolLength(1, -5.0);
         const QList<QByteArray> out = command(emulator, "M491");
-        QVERIFY(out.contains("ALARM: Probe failed to trigger within safety margin (135.00mm)"));
+        QVERIFY(out.contains("ALARM: Probe failed to trigger within safety margin (151.40mm)"));
         QCOMPARE(emulator.haltReason(), 3);
     }
 
@@ -107,41 +220,57 @@ private Q_SLOTS:
     {
         CarveraEmulator emulator;
         emulator.setHomed(false);
-        QCOMPARE(command(emulator, "M491").front(), QByteArray("Machine has not been homed"));
+        const QList<QByteArray> out = command(emulator, "M491");
+        QVERIFY(out.contains("Machine has not been homed"));
         QCOMPARE(emulator.haltReason(), 2);
     }
 
-    void changesToolsAndSetsTloWithoutProbing()
+    void changesToolsAsTheFirmwareDoes()
     {
         CarveraEmulator emulator;
         command(emulator, "M491");
-        emulator.setToolLength(7, 44.312); // a tool with no rack slot: changed by hand
-        QList<QByteArray> out = command(emulator, "M6 T7");
-        QCOMPARE(out.at(0), QByteArray("Start dropping current tool: T1"));
-        QCOMPARE(out.at(1), QByteArray("Start manually picking new tool: T7"));
-        QVERIFY(qFuzzyCompare(emulator.tlo(), -33.388));
+        QList<QByteArray> out = command(emulator, "M6 T2");
+        QCOMPARE(out.mid(0, 4),
+            lines("Saved XY position: X-2.000 Y-2.000\nStart dropping current tool: T1\n"
+                  "Start picking new tool: T2\nok"));
+        QVERIFY(out.contains("ATC loosed!"));
+        QVERIFY(out.contains("ATC clamped!"));
+        QVERIFY(out.contains("[PRB:-4.965,-54.480,-105.688:1]"));
+        QCOMPARE(out.last(), QByteArray("Done ATC"));
+        QCOMPARE(emulator.tool(), 2);
+        QCOMPARE(emulator.tlo(), 9.652);
+        // M6 to the tool in the spindle: a bare "ok".
+        QCOMPARE(command(emulator, "M6 T2"), QList<QByteArray> { "ok" });
+        // A tool with no slot is changed by hand; with H its TLO is taken without probing.
         out = command(emulator, "M6 T8 H-12.5");
-        const QList<QByteArray> byHand { "Start dropping current tool: T7",
-            "Start manually picking new tool: T8", "ok" };
-        QCOMPARE(out, byHand);
+        QVERIFY(out.contains("Start manually picking new tool: T8"));
+        QVERIFY(out.contains("Tool is now installed and TLO set as -12.500."));
+        QVERIFY(out.contains("current tool offset [-12.500] , reference tool offset [-115.340]"));
+        QCOMPARE(out.last(), QByteArray("Done ATC"));
         QCOMPARE(emulator.tool(), 8);
         QCOMPARE(emulator.tlo(), -12.5);
+        out = command(emulator, "M6 T-1");
+        QVERIFY(out.contains("Start manually dropping current tool: T8"));
+        QCOMPARE(out.last(), QByteArray("Done ATC"));
+        QCOMPARE(emulator.tool(), -1);
+        QVERIFY(status(emulator).contains("|T:-1,0.000,-1,0|"));
         out = command(emulator, "M6 T-5");
         QCOMPARE(out.front(), QByteArray("ALARM: Invalid tool: T-5"));
         QCOMPARE(emulator.haltReason(), 6);
     }
 
-    void setsTloFromAGaugeAboveZ0()
+    // A manual change waits for the operator in state Tool (here for the change time, standing in for the
+    // operator's button).
+    void aManualChangeWaitsInStateTool()
     {
         CarveraEmulator emulator;
-        command(emulator, "M491"); // reference -72.300, TLO 0
-        command(emulator, "G53 G0 Z-40");
-        command(emulator, "G10 L20 P1 Z0"); // work Z0 here
-        command(emulator, "G53 G0 Z-37"); // 3 mm up: a 3 mm gauge under the tip
-        const QList<QByteArray> out = command(emulator, "M493.3 H3.0");
-        const auto r = parseTloReport(out.front());
-        QVERIFY(r);
-        QVERIFY2(std::fabs(r->tlo()) < 1e-9, out.front().constData());
+        emulator.setTiming({ 0, 0, 300 });
+        QSignalSpy sent(&emulator, &CarveraEmulator::lineSent);
+        emulator.receiveLine("M6 T8");
+        QTRY_VERIFY(status(emulator).startsWith("<Tool|"));
+        QTRY_VERIFY_WITH_TIMEOUT(!emulator.isBusy(), 3000);
+        QCOMPARE(emulator.tool(), 8);
+        QVERIFY(status(emulator).startsWith("<Idle|"));
     }
 
     void movesExactlyAsTheSharedInterpreterSays()
@@ -161,28 +290,25 @@ private Q_SLOTS:
             QVERIFY2(std::fabs(report->mpos[i] - simulated.position()[i]) < 1e-4,
                 qPrintable(u"axis %1: %2 vs %3"_s.arg(i).arg(report->mpos[i]).arg(simulated.position()[i])));
         QCOMPARE(simulated.position()[2], -60 + 2 - 1.5 - 33.388);
-        QCOMPARE(
-            command(emulator, "G43 H1").front(), QByteArray("error:Unsupported command - G43 H1")); // no G43
     }
 
-    void theFixedReferenceProfileKeepsItsReference()
+    // What the firmware does with what it does not know: an M- or G-code it takes without a word, upper-case
+    // text it takes and then halts on, a lower-case word it refuses (its shell).
+    void answersUnknownCommandsAsTheFirmwareDoes()
     {
         CarveraEmulator emulator;
-        emulator.setProfile(CarveraEmulator::Profile::FixedReference, -70.0);
-        command(emulator, "M491");
-        QCOMPARE(emulator.referenceMz(), -70.0);
-        QVERIFY(qFuzzyCompare(emulator.tlo(), -2.3));
+        QCOMPARE(command(emulator, "M12345"), QList<QByteArray> { "ok" });
+        QCOMPARE(command(emulator, "foo"), QList<QByteArray> { "error:Unsupported command - foo" });
+        QVERIFY(!emulator.isHalted());
+        const QList<QByteArray> out = command(emulator, "FOO");
+        QCOMPARE(out.front(), QByteArray("ok"));
+        QVERIFY(emulator.isHalted());
+        QCOMPARE(command(emulator, "G20").front(), QByteArray("error:Alarm lock"));
+        command(emulator, "$X");
+        QCOMPARE(command(emulator, "G20").front(), QByteArray("ERROR: Imperial Units are unsupported"));
     }
 
-    void answersUnknownCommandsAndEmptyLines()
-    {
-        CarveraEmulator emulator;
-        QCOMPARE(command(emulator, "M12345"), QList<QByteArray> { "error:Unsupported command - M12345" });
-        QCOMPARE(command(emulator, ""), QList<QByteArray> { "ok" });
-        QCOMPARE(command(emulator, ";"), QList<QByteArray> { "ok" });
-    }
-
-    void abortsAProbeWithCtrlX()
+    void abortsWithCtrlXEvenWhenIdle()
     {
         CarveraEmulator emulator;
         emulator.setTiming({ 5000, 0 });
@@ -190,10 +316,13 @@ private Q_SLOTS:
         emulator.receiveLine("M491");
         QVERIFY(status(emulator).startsWith("<Run|"));
         emulator.receiveRealtime(0x18);
-        QCOMPARE(lines.last().front().toByteArray(), QByteArray("ALARM: Abort during cycle"));
+        QVERIFY(lines.contains(QVariantList { QByteArray("ERROR: Abort during cycle") }));
         QVERIFY(emulator.isHalted());
-        QTest::qWait(50);
-        QVERIFY(!lines.contains(QVariantList { QByteArray("ok") }));
+        command(emulator, "$X");
+        QVERIFY(!emulator.isHalted());
+        emulator.receiveRealtime(0x18); // idle: the firmware halts all the same
+        QVERIFY(emulator.isHalted());
+        QCOMPARE(emulator.haltReason(), 1);
     }
 
     void injectsFaults()
@@ -209,15 +338,19 @@ private Q_SLOTS:
         out = command(emulator, "M493.4");
         QVERIFY(!parseTloReport(out.front()));
         QCOMPARE(out.last(), QByteArray("ok"));
+        // Dropped at a script, it is the script's end that never comes.
+        emulator.injectFault(CarveraEmulator::Fault::DropOk, "M491");
+        out = command(emulator, "M491", 300);
+        QCOMPARE(out.last(), QByteArray("TEST: no terminator"));
         emulator.injectFault(CarveraEmulator::Fault::FailProbe);
         out = command(emulator, "M491");
-        QVERIFY(out.contains("ALARM: Probe failed to trigger within safety margin (135.00mm)"));
+        QVERIFY(out.contains("ALARM: Probe failed to trigger within safety margin (151.40mm)"));
         // Aimed at the break test, the fault leaves a plain probe alone (it once hit the first probe).
         QVERIFY(command(emulator, "$X").contains("[Caution: Unlocked]"));
         emulator.injectFault(CarveraEmulator::Fault::FailProbe, "M491.1");
         out = command(emulator, "M491");
         QVERIFY(!out.join('\n').contains("ALARM"));
-        QCOMPARE(out.last(), QByteArray("ok"));
+        QCOMPARE(out.last(), QByteArray("Done ATC"));
         out = command(emulator, "M491.1 H0.1");
         QVERIFY(out.join('\n').contains("ALARM: Probe failed to trigger"));
         QVERIFY(command(emulator, "$X").contains("[Caution: Unlocked]"));

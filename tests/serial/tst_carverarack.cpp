@@ -4,6 +4,7 @@
 #include <QTest>
 
 #include "serial/emulator/carveraemulator.h"
+#include "serial/machinereplies.h"
 #include "tests/support/emulatorlines.h"
 
 using namespace Toffee;
@@ -19,7 +20,7 @@ bool near(double a, double b)
     return std::fabs(a - b) < 1e-9;
 }
 
-const QByteArray kProbeAlarm = "ALARM: Probe failed to trigger within safety margin (135.00mm)";
+const QByteArray kProbeAlarm = "ALARM: Probe failed to trigger within safety margin (151.40mm)";
 
 } // namespace
 
@@ -28,17 +29,16 @@ class TestCarveraRack : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    // `version` is the firmware's shell: one line, no "ok", and it runs while halted too.
     void answersVersionInBothFirmwares()
     {
         CarveraEmulator emulator;
         QCOMPARE(emulator.firmware(), Firmware::Community);
-        const Lines community { "version = 2.1.0c", "ok" };
-        QCOMPARE(command(emulator, "version  "), community);
-        QCOMPARE(QByteArray(CarveraEmulator::kCommunityVersion), QByteArray("2.1.0c"));
+        QCOMPARE(command(emulator, "version"), Lines { "version = 2.1.0c-emulator" });
         emulator.setFirmware(Firmware::Stock);
         emulator.halt(3);
-        const Lines stock { "version = 1.0.1", "ok" };
-        QCOMPARE(command(emulator, "version"), stock); // a shell command: it runs while halted
+        QCOMPARE(command(emulator, "version"), Lines { "version = 1.0.1" });
+        QVERIFY(parseVersion("version = 1.0.1")->kind == FirmwareInfo::Kind::Stock);
         QVERIFY(emulator.isHalted());
         QCOMPARE(command(emulator, "M491"), Lines { "error:Alarm lock" });
     }
@@ -48,16 +48,16 @@ private Q_SLOTS:
     {
         CarveraEmulator emulator;
         emulator.setFirmware(Firmware::Stock);
-        command(emulator, "M491"); // the reference: T1's -72.300
+        command(emulator, "M491"); // T1 at -72.300: TLO 43.040
         QCOMPARE(command(emulator, "M493.3 Z-5"), Lines { "ok" });
         QCOMPARE(command(emulator, "M493.4"), Lines { "ok" });
         QCOMPARE(emulator.currentMz(), -72.3);
         emulator.breakTool(1, 0.5);
         Lines out = command(emulator, "M491.1 H0.05");
-        QVERIFY(out.contains("M493.1"));
+        QVERIFY(out.contains("M493.1 R1"));
         QVERIFY(!out.join('\n').contains("Old:"));
-        QCOMPARE(out.last(), QByteArray("ok"));
-        QVERIFY(near(emulator.tlo(), -0.5)); // the broken tool's TLO, adopted silently
+        QCOMPARE(out.last(), QByteArray("Done ATC"));
+        QVERIFY(near(emulator.tlo(), 42.54)); // the broken tool's TLO, adopted silently
         QVERIFY(command(emulator, "M491.1 H0.001").contains("Done ATC"));
         QVERIFY(!emulator.isHalted());
     }
@@ -82,40 +82,39 @@ private Q_SLOTS:
         CarveraEmulator emulator;
         emulator.setFirmware(firmware); // T1 in the spindle, TLO 0
         if (!change.isEmpty())
-            QCOMPARE(command(emulator, change).last(), QByteArray("ok"));
+            QCOMPARE(command(emulator, change).last(), QByteArray("Done ATC"));
         const QByteArray report = status(emulator);
         QVERIFY2(field.isEmpty() ? !report.contains("|T:") : report.contains(field), report.constData());
     }
 
-    void alarmsOnInches()
+    void haltsOnInches()
     {
         for (const Firmware firmware : { Firmware::Community, Firmware::Stock }) {
             CarveraEmulator emulator;
             emulator.setFirmware(firmware);
-            const Lines alarm { "ALARM: Imperial Units are unsupported", "ok" };
-            QCOMPARE(command(emulator, "G0 G20 X1"), alarm);
+            const Lines halt { "ERROR: Imperial Units are unsupported", CarveraEmulator::kHaltLine, "ok" };
+            QCOMPARE(command(emulator, "G0 G20 X1"), halt);
             QCOMPARE(emulator.haltReason(), 1);
-            QVERIFY(status(emulator).contains("|MPos:0.0000,0.0000,")); // it did not move
+            QVERIFY(status(emulator).contains("|MPos:-2.0000,-2.0000,")); // it did not move
         }
     }
 
     void repeatsAMeasurement()
     {
         CarveraEmulator emulator;
-        command(emulator, "M491"); // T1: the reference, -72.300
         command(emulator, "M493.2 T2");
         emulator.setRepeatability(0.01);
         const Lines out = command(emulator, "M491 R3");
-        const qsizetype first = out.indexOf("TLO measurement 1 of 3: -33.388");
+        const qsizetype first = out.indexOf("TLO measurement 1 of 3: 9.652");
         QVERIFY2(first > 0, out.join('\n').constData());
-        QCOMPARE(out.at(first - 1), QByteArray("[PRB:-88.000,-9.000,-105.688:1]"));
-        const Lines tail { "TLO measurement 1 of 3: -33.388", "[PRB:-88.000,-9.000,-105.678:1]",
-            "TLO measurement 2 of 3: -33.378", "[PRB:-88.000,-9.000,-105.698:1]",
-            "TLO measurement 3 of 3: -33.398", "Max delta: 0.020", "Using TLO: -33.388",
-            "Return to XY position: X0.000 Y0.000", "Done ATC", "ok" };
+        QCOMPARE(out.at(first - 1), QByteArray("[PRB:-4.965,-54.480,-105.688:1]"));
+        const Lines tail { "TLO measurement 1 of 3: 9.652", "[PRB:-4.965,-54.480,-105.678:1]",
+            "TLO measurement 2 of 3: 9.662", "[PRB:-4.965,-54.480,-105.698:1]",
+            "TLO measurement 3 of 3: 9.642", "Max delta: 0.020", "Using TLO: 9.652",
+            "Return to XY position: X-2.000 Y-2.000", "Done ATC" };
         QCOMPARE(out.mid(first), tail);
-        QVERIFY(near(emulator.tlo(), -33.388));
-        QVERIFY(!out.contains("M493.1"));
+        QVERIFY(near(emulator.tlo(), 9.652));
+        QVERIFY(!out.contains("M493.1 R1"));
     }
 
     void refusesRepeatsOutOfRange()
@@ -126,7 +125,7 @@ private Q_SLOTS:
         QVERIFY(!emulator.isHalted());
         emulator.setFirmware(Firmware::Stock); // R ignored: one plain measurement
         const Lines out = command(emulator, "M491 R11");
-        QVERIFY(out.contains("M493.1"));
+        QVERIFY(out.contains("M493.1 R1"));
         QVERIFY(!out.join('\n').contains("TLO measurement"));
     }
 
@@ -134,16 +133,22 @@ private Q_SLOTS:
     {
         CarveraEmulator emulator;
         command(emulator, "M491");
-        const Lines change { "Start dropping current tool: T1", "Start picking new tool: T2", "M497.3",
-            "G53 G0 Z-10.000", "G53 G0 X-88.000 Y-9.000", "G38.6 Z-145.000 F500",
-            "[PRB:-88.000,-9.000,-105.688:1]", "M493.1", "Return to XY position: X0.000 Y0.000", "Done ATC",
-            "ok" };
-        QCOMPARE(command(emulator, "M6 T2"), change);
+        const Lines out = command(emulator, "M6 T2");
+        QCOMPARE(out.mid(0, 4),
+            (Lines { "Saved XY position: X-2.000 Y-2.000", "Start dropping current tool: T1",
+                "Start picking new tool: T2", "ok" }));
+        // T1 back in its slot, T2 out of its own, then measured, then back where it was.
+        QVERIFY(out.contains("G53 G0 X-15.000 Y-7.000"));
+        QVERIFY(out.contains("M493.2 T-1"));
+        QVERIFY(out.contains("G53 G0 X-45.000 Y-7.000"));
+        QVERIFY(out.contains("M493.2 T2"));
+        QVERIFY(out.contains("[PRB:-4.965,-54.480,-105.688:1]"));
+        QCOMPARE(out.mid(out.size() - 2), (Lines { "Return to XY position: X-2.000 Y-2.000", "Done ATC" }));
         QCOMPARE(emulator.tool(), 2);
-        QVERIFY(near(emulator.tlo(), -33.388));
-        const Lines out = command(emulator, "M6 T3 H-1"); // H is for manual changes only
-        QVERIFY(out.contains("[PRB:-88.000,-9.000,-102.500:1]")); // T3: 47.5 mm
-        QVERIFY(near(emulator.tlo(), -30.2));
+        QVERIFY(near(emulator.tlo(), 9.652));
+        const Lines again = command(emulator, "M6 T3 H-1"); // H is for manual changes only
+        QVERIFY(again.contains("[PRB:-4.965,-54.480,-102.500:1]")); // T3: 47.5 mm
+        QVERIFY(near(emulator.tlo(), 12.84));
     }
 
     void stockSaysOneLineForAChange()
@@ -151,23 +156,28 @@ private Q_SLOTS:
         CarveraEmulator emulator;
         emulator.setFirmware(Firmware::Stock);
         Lines out = command(emulator, "M6 T2");
-        QCOMPARE(out.front(), QByteArray("Start atc, old tool: T1, new tool: T2"));
-        QCOMPARE(out.at(1), QByteArray("M497.3"));
-        QCOMPARE(command(emulator, "M6 T-1"), (Lines { "Start dropping current tool: T2", "ok" }));
+        QCOMPARE(out.at(1), QByteArray("Start atc, old tool: T1, new tool: T2"));
+        QCOMPARE(out.last(), QByteArray("Done ATC"));
+        out = command(emulator, "M6 T-1");
+        QCOMPARE(out.at(1), QByteArray("Start dropping current tool: T2"));
         QCOMPARE(emulator.tool(), -1);
         out = command(emulator, "M6 T3");
-        QCOMPARE(out.front(), QByteArray("Start picking new tool: T3"));
+        QCOMPARE(out.at(1), QByteArray("Start picking new tool: T3"));
         QVERIFY(out.contains("Done ATC"));
     }
 
     void picksIntoAnEmptySpindle()
     {
         CarveraEmulator emulator;
-        QCOMPARE(command(emulator, "M6 T-1"), (Lines { "Start dropping current tool: T1", "ok" }));
+        Lines out = command(emulator, "M6 T-1");
+        QCOMPARE(out.mid(0, 3),
+            (Lines { "Saved XY position: X-2.000 Y-2.000", "Start dropping current tool: T1", "ok" }));
+        QCOMPARE(out.last(), QByteArray("Done ATC"));
         QCOMPARE(emulator.tool(), -1);
-        const Lines out = command(emulator, "M6 T2");
-        QCOMPARE(out.front(), QByteArray("Start picking new tool: T2"));
-        QCOMPARE(out.at(1), QByteArray("M497.3"));
+        out = command(emulator, "M6 T2");
+        QCOMPARE(out.at(1), QByteArray("Start picking new tool: T2"));
+        QVERIFY(!out.contains("M497.1")); // nothing to drop
+        QVERIFY(out.contains("M497.3"));
     }
 
     void changesByHandOutsideTheRack()
@@ -175,12 +185,16 @@ private Q_SLOTS:
         CarveraEmulator emulator;
         command(emulator, "M491");
         Lines out = command(emulator, "M6 T0"); // the wireless probe has no slot
-        QCOMPARE(out.mid(0, 3),
-            (Lines { "Start dropping current tool: T1", "Start manually picking new tool: T0", "M497.3" }));
+        QCOMPARE(out.mid(1, 2),
+            (Lines { "Start dropping current tool: T1", "Start manually picking new tool: T0" }));
+        QVERIFY(out.contains("M497.3"));
         QVERIFY(out.contains("Done ATC"));
         out = command(emulator, "M6 T999990 H2.5");
-        QCOMPARE(out,
-            (Lines { "Start dropping current tool: T0", "Start manually picking new tool: T999990", "ok" }));
+        QCOMPARE(out.mid(1, 2),
+            (Lines {
+                "Start manually dropping current tool: T0", "Start manually picking new tool: T999990" }));
+        QVERIFY(out.contains("Tool is now installed and TLO set as 2.500."));
+        QVERIFY(!out.contains("M497.3"));
         QCOMPARE(emulator.tlo(), 2.5);
     }
 
@@ -190,14 +204,15 @@ private Q_SLOTS:
         command(emulator, "M491");
         QCOMPARE(command(emulator, "M6 T1"), Lines { "ok" });
         QCOMPARE(command(emulator, "M6 T1 H5"), Lines { "ok" });
-        QCOMPARE(emulator.tlo(), 0.0);
+        QCOMPARE(emulator.tlo(), 43.04);
     }
 
     void alarmsOnAnInvalidTool()
     {
         for (const QByteArray t : { "1000000", "-2", "2.5" }) {
             CarveraEmulator emulator;
-            QCOMPARE(command(emulator, "M6 T" + t), (Lines { "ALARM: Invalid tool: T" + t, "ok" }));
+            QCOMPARE(command(emulator, "M6 T" + t),
+                (Lines { "ALARM: Invalid tool: T" + t, CarveraEmulator::kHaltLine, "ok" }));
             QCOMPARE(emulator.haltReason(), 6);
             QCOMPARE(emulator.tool(), 1);
         }
@@ -249,8 +264,8 @@ private Q_SLOTS:
         QVERIFY(emulator.inRack(6) && !emulator.inRack(7));
         emulator.setRack(CarveraEmulator::parseToolSlots("7 -10 -20 -100").value());
         QVERIFY(emulator.inRack(7) && !emulator.inRack(2));
-        QCOMPARE(command(emulator, "M6 T7").at(1), QByteArray("Start picking new tool: T7"));
-        QCOMPARE(command(emulator, "M6 T2 H1").at(1), QByteArray("Start manually picking new tool: T2"));
+        QCOMPARE(command(emulator, "M6 T7").at(2), QByteArray("Start picking new tool: T7"));
+        QCOMPARE(command(emulator, "M6 T2 H1").at(2), QByteArray("Start manually picking new tool: T2"));
         QCOMPARE(emulator.tlo(), 1.0);
     }
 
@@ -258,18 +273,17 @@ private Q_SLOTS:
     {
         CarveraEmulator emulator;
         emulator.setTiming({ 0, 0, 60000 });
-        QCOMPARE(command(emulator, "M6 T7 H1").last(), QByteArray("ok")); // by hand: no wait
         QSignalSpy lines(&emulator, &CarveraEmulator::lineSent);
         emulator.receiveLine("M6 T2");
         QTest::qWait(100);
-        QCOMPARE(lines.size(), 2); // the drop and pick lines; the probe has not started
-        QCOMPARE(lines.at(1).front().toByteArray(), QByteArray("Start picking new tool: T2"));
+        QVERIFY(lines.contains(QVariantList { QByteArray("Start picking new tool: T2") }));
+        QVERIFY(!lines.contains(QVariantList { QByteArray("M497.3") })); // the probe has not started
         QVERIFY(status(emulator).startsWith("<Run|"));
         emulator.receiveRealtime(0x18);
-        QCOMPARE(lines.last().front().toByteArray(), QByteArray("ALARM: Abort during cycle"));
+        QVERIFY(lines.contains(QVariantList { QByteArray("ERROR: Abort during cycle") }));
         QCOMPARE(emulator.haltReason(), 1);
         QTest::qWait(50);
-        QVERIFY(!lines.contains(QVariantList { QByteArray("ok") }));
+        QVERIFY(!lines.contains(QVariantList { QByteArray("Done ATC") }));
     }
 
     void faultsHitAToolChange()
@@ -283,10 +297,11 @@ private Q_SLOTS:
         command(emulator, "$X");
         emulator.injectFault(CarveraEmulator::Fault::DropOk, "M6");
         out = command(emulator, "M6 T3", 200);
-        QCOMPARE(out.mid(out.size() - 2), (Lines { "Done ATC", "TEST: no terminator" }));
+        QCOMPARE(out.mid(out.size() - 2),
+            (Lines { "Return to XY position: X-4.965 Y-54.480", "TEST: no terminator" }));
         emulator.injectFault(CarveraEmulator::Fault::BreakTool, "M491.1", 0.5);
         out = command(emulator, "M491.1 H0.1");
-        QVERIFY(out.contains("Old: -30.200 , new: -30.700"));
+        QVERIFY(out.contains("Old: 12.840 , new: 12.340"));
         QVERIFY(out.contains("ERROR: Tool Break Check - check tool for breakage"));
         QCOMPARE(emulator.haltReason(), 4);
         QCOMPARE(emulator.toolLength(3), 47.0); // the picked tool broke, not the one put back

@@ -139,6 +139,10 @@ private Q_SLOTS:
                               .takeValue();
         const ToolTable before = table;
 
+        // $X on a machine that is not halted is never sent (the firmware would say nothing): unlock is tried
+        // on a halted one.
+        if (operation == Unlock)
+            h.emulator.halt(1);
         injectFault(h.emulator, operation, fault);
         h.link.setTimeoutScale(
             0.005); // for the operation under the fault: 5 s -> 25 ms, a probe's 120 s -> 600 ms
@@ -150,11 +154,16 @@ private Q_SLOTS:
 
         if (operation == Unlock && fault == Alarm) {
             QVERIFY2(r.ok(), qPrintable(r.message)); // unlocking a halted machine is what unlock is for
-        } else if (operation == ChangeToStoredTlo && fault == Garble) {
-            // Only the change's own lines ("Start manually picking new tool") were garbled: the offsets read
-            // after it show the TLO it was given, which is what counts.
+        } else if (fault == Garble && (operation == ChangeToStoredTlo || operation == SetTlo)) {
+            // Only the command's own lines were garbled: the TLO in force is read from the status report
+            // after it, and it is the one asked for, which is what counts.
             QVERIFY2(r.ok(), qPrintable(r.message));
-            QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-12.300"_s);
+            QCOMPARE(
+                QString::number(r.tlo->tlo(), 'f', 3), operation == SetTlo ? u"-30.488"_s : u"-12.300"_s);
+        } else if (fault == Garble && operation == SetAboveZ0) {
+            // As above: Toffee works the TLO out itself, and the status report shows it in force.
+            QVERIFY2(r.ok(), qPrintable(r.message));
+            QCOMPARE(r.tlo->tlo(), h.emulator.tlo());
         } else if (fault == ToolBroken) {
             // Only the break test can tell a broken tool: it must say so and write nothing. A probe measures
             // the tool as it now is (T1, the reference, 0.5 mm short); the other operations do not look at
@@ -165,8 +174,8 @@ private Q_SLOTS:
                 QCOMPARE(table, before);
             } else {
                 QVERIFY2(r.ok(), qPrintable(r.message));
-                if (operation == Probe)
-                    QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"-0.500"_s);
+                if (operation == Probe) // T1: 43.040 whole, 0.5 mm short now
+                    QCOMPARE(QString::number(r.tlo->tlo(), 'f', 3), u"42.540"_s);
             }
         } else {
             QVERIFY2(!r.ok(), "the fault went unnoticed");

@@ -109,10 +109,10 @@ private Q_SLOTS:
         QCOMPARE(s.recordings.size(), 6);
         for (const Recording &r : std::as_const(s.recordings))
             QCOMPARE(r.kind, RecordingKind::Probe);
-        // T1 is the reference (the first probe); T4 is 61.25 mm long against T1's 77.7.
-        QCOMPARE(*s.table.find(1)->measuredTlo, 0.0);
-        QCOMPARE(QString::number(*s.table.find(4)->measuredTlo, 'f', 3), u"-16.450"_s);
-        QCOMPARE(*s.table.find(4)->referenceMz, -72.3);
+        // Against the machine's reference (-115.340): T1 77.7 mm long, T4 61.25.
+        QCOMPARE(*s.table.find(1)->measuredTlo, 43.04);
+        QCOMPARE(QString::number(*s.table.find(4)->measuredTlo, 'f', 3), u"26.590"_s);
+        QCOMPARE(*s.table.find(4)->referenceMz, -115.34);
         QCOMPARE(s.machine().tool(), 6);
         QVERIFY(!s.connection.isBusy());
     }
@@ -213,6 +213,12 @@ private Q_SLOTS:
         s.connection.link()->setTimeoutScale(0.005); // 5 s -> 25 ms, a change's 120 s -> 600 ms
         RackSequence sequence(&s.connection, RackSequence::plan(Mode(mode), kRack, s.table, 0.1));
         QVERIFY2(s.run(sequence), "the sequence hung");
+        if (Fault(fault) == Fault::Garble && command.startsWith("M493.3")) {
+            // Its report was garbled, but the firmware set the stored TLO: the break test's own line says it
+            // compared with it (Old: …), which Toffee checks.
+            QVERIFY2(sequence.outcome().ok(), qPrintable(sequence.outcome().message));
+            return;
+        }
         if (Fault(fault) == Fault::Garble && command == "M6 T-1") {
             // Its line was garbled, but the status confirms the spindle is empty: the put-back happened.
             QVERIFY2(sequence.outcome().ok(), qPrintable(sequence.outcome().message));
@@ -259,14 +265,17 @@ private Q_SLOTS:
     void aMovedReferenceStopsTheCheck()
     {
         const ToolTable measured = measuredYesterday();
-        // Overnight the reference tool T1 lost 0.5 mm: every stored TLO is off by that much now.
+        // Overnight the machine was calibrated again, 0.5 mm away: every stored TLO is off by that much now.
         Station today;
-        today.machine().breakTool(1, 0.5);
+        today.machine().setReference(CarveraEmulator::kFactoryReferenceMz - 0.5);
+        bool reported = false;
+        QVERIFY(today.connection.report([&reported](const SessionResult &) { reported = true; }));
+        QTRY_VERIFY(reported);
         today.table = measured;
         RackSequence check(&today.connection, RackSequence::plan(Mode::Check, kRack, today.table, 0.1));
         QVERIFY(today.run(check));
-        QCOMPARE(check.outcome().outcome, Outcome::MachineError);
-        QVERIFY2(check.outcome().message.contains(u"Check the reference tool"_s),
+        QVERIFY2(check.outcome().outcome == Outcome::MachineError, qPrintable(check.outcome().message));
+        QVERIFY2(check.outcome().message.contains(u"Check the machine's calibration"_s),
             qPrintable(check.outcome().message));
         QVERIFY(check.outcome().message.contains(u"0.500 mm away"_s));
         QCOMPARE(today.states(check).first(), State::Failed);
@@ -343,7 +352,7 @@ private Q_SLOTS:
         s.measureAll();
         QCOMPARE(s.recordings.size(), 6);
         QVERIFY(!s.table.find(2)->referenceMz);
-        QCOMPARE(QString::number(*s.table.find(2)->measuredTlo, 'f', 3), u"-33.388"_s);
+        QCOMPARE(QString::number(*s.table.find(2)->measuredTlo, 'f', 3), u"9.652"_s);
         s.sent.clear();
         RackSequence check(&s.connection, RackSequence::plan(Mode::Check, kRack, s.table, 0.1));
         QVERIFY(!check.start());

@@ -103,7 +103,7 @@ private Q_SLOTS:
         auto *tools = dialog->findChild<QTableView *>(u"jobToolsView"_s)->model();
         QCOMPARE(column(tools, JobToolsModel::NumberColumn), u"T2|T3|T9"_s);
         QCOMPARE(column(tools, JobToolsModel::LoadedColumn), u"3|9|11"_s);
-        QCOMPARE(column(tools, JobToolsModel::TloColumn), u"-33.388|not measured|not in the table"_s);
+        QCOMPARE(column(tools, JobToolsModel::TloColumn), u"9.652|not measured|not in the table"_s);
         auto *findings = dialog->findChild<QTableView *>(u"jobFindingsView"_s);
         QCOMPARE(column(findings->model(), JobFindingsModel::LineColumn), u"9|11|11"_s);
         QCOMPARE(column(findings->model(), JobFindingsModel::SeverityColumn), u"Warning|Error|Warning"_s);

@@ -95,10 +95,10 @@ private Q_SLOTS:
         f.probe();
         QVERIFY(f.sent.contains("M491"));
         const Tool *t1 = f.window.document()->table().find(1);
-        QCOMPARE(t1->measuredTlo.value_or(99), 0.0);
+        QCOMPARE(t1->measuredTlo.value_or(99), 43.04);
         QVERIFY(t1->measuredAt.secsTo(QDateTime::currentDateTimeUtc()) < 10);
         QVERIFY(f.window.document()->isModified());
-        QCOMPARE(f.find<QLabel>(u"referenceMzLabel"_s)->text(), u"-72.300 mm"_s);
+        QCOMPARE(f.find<QLabel>(u"referenceMzLabel"_s)->text(), u"-115.340 mm"_s);
         f.window.document()->undoStack()->undo(); // the measurement is one undo step
         QCOMPARE(f.window.document()->table().find(1)->measuredAt,
             QDateTime::fromString(u"2026-11-20T08:12:40.000Z"_s, Qt::ISODateWithMs));
@@ -185,27 +185,27 @@ private Q_SLOTS:
     void theSeedsAddTwoPointNineExample()
     {
         Fixture f;
-        f.probe(); // T1: the reference
+        f.probe(); // T1
         QVERIFY(QTest::qWaitFor([&f] { return f.idle(); }));
         f.window.consoleDock()->sendCommand(u"M493.2 T2"_s, false);
         QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.2 T2"); }));
-        f.probe(); // T2: -105.688, TLO -33.388
-        QCOMPARE(f.find<QLabel>(u"tloLabel"_s)->text(), u"-33.388 mm"_s);
+        f.probe(); // T2: -105.688 against the reference -115.340, TLO 9.652
+        QCOMPARE(f.find<QLabel>(u"tloLabel"_s)->text(), u"9.652 mm"_s);
 
         auto *mode = f.find<QComboBox>(u"offsetModeCombo"_s);
         mode->setCurrentIndex(mode->findText(u"Change TLO by"_s));
         auto *value = f.find<QDoubleSpinBox>(u"offsetValueSpin"_s);
         value->selectAll();
         QTest::keyClicks(value, u"2.9"_s);
-        QCOMPARE(f.find<QLabel>(u"offsetCommandPreview"_s)->text(), u"M493.3 Z-30.488"_s);
-        QCOMPARE(f.find<QLabel>(u"offsetResultPreview"_s)->text(), u"-33.388 → -30.488 mm"_s);
+        QCOMPARE(f.find<QLabel>(u"offsetCommandPreview"_s)->text(), u"M493.3 Z12.552"_s);
+        QCOMPARE(f.find<QLabel>(u"offsetResultPreview"_s)->text(), u"9.652 → 12.552 mm"_s);
         QString question;
         answerNextBox(QMessageBox::Yes, &question);
         QTest::mouseClick(f.find<QPushButton>(u"sendOffsetButton"_s), Qt::LeftButton);
-        QVERIFY(question.contains(u"M493.3 Z-30.488"_s));
-        QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.3 Z-30.488"); }));
-        QTRY_COMPARE(f.find<QLabel>(u"tloLabel"_s)->text(), u"-30.488 mm"_s);
-        QVERIFY(std::fabs(f.window.connection()->emulator()->tlo() + 30.488) < 1e-9);
+        QVERIFY(question.contains(u"M493.3 Z12.552"_s));
+        QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.3 Z12.552"); }));
+        QTRY_COMPARE(f.find<QLabel>(u"tloLabel"_s)->text(), u"12.552 mm"_s);
+        QVERIFY(std::fabs(f.window.connection()->emulator()->tlo() - 12.552) < 1e-9);
     }
 
     void restoresAKnownTloFromTheTable()
@@ -213,25 +213,29 @@ private Q_SLOTS:
         Fixture f;
         f.probe();
         f.window.connection()->emulator()->setToolLength(2, 10.0); // would measure very differently
-        f.window.toolTablePanel()->selectTool(2); // measured -33.388 in the example
+        f.window.toolTablePanel()->selectTool(2); // measured 9.652 in the example
         answerNextBox(QMessageBox::NoButton, nullptr, u"restoreYesButton"_s);
         QTest::mouseClick(f.find<QPushButton>(u"restoreButton"_s), Qt::LeftButton);
-        QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.3 Z-33.388"); }));
+        QVERIFY(QTest::qWaitFor([&f] { return f.idle() && f.sent.contains("M493.3 Z9.652"); }));
         QCOMPARE(f.window.connection()->emulator()->tool(), 2);
-        QVERIFY(std::fabs(f.window.connection()->emulator()->tlo() + 33.388) < 1e-9);
+        QVERIFY(std::fabs(f.window.connection()->emulator()->tlo() - 9.652) < 1e-9);
         QVERIFY(!f.sent.contains("M491") || f.sent.count("M491") == 1); // no probe for the restore
     }
 
     void restoreAsksWhetherTheToolIsInTheSpindleAndWarnsWithoutAReference()
     {
-        // A fresh machine (no probe yet): restoring a stored TLO has no reference to be right against.
+        // A TLO in the table that does not say which reference it was measured against.
         Fixture f;
+        Tool t2 = *f.window.document()->table().find(2);
+        t2.referenceMz.reset();
+        QVERIFY(f.window.document()->editTool(2, t2).ok());
         f.window.toolTablePanel()->selectTool(2);
         QString question;
         answerNextBox(QMessageBox::Cancel, &question);
         QTest::mouseClick(f.find<QPushButton>(u"restoreButton"_s), Qt::LeftButton);
         QVERIFY(question.contains(u"Is T2 in the spindle now?"_s));
-        QVERIFY(question.contains(u"no reference tool measured"_s));
+        QVERIFY2(question.contains(u"does not say which reference tool T2's TLO was measured against"_s),
+            qPrintable(question));
         QVERIFY(!f.sent.contains("M493.2 T2")); // Cancel, the default, sends nothing
         QCOMPARE(f.window.connection()->emulator()->tool(), 1);
     }

@@ -124,10 +124,10 @@ private Q_SLOTS:
                 u"T12 New pocket 12; no tool length yet (0 in the table): measure it before use"_s }));
         QCOMPARE(view->model()->rowCount(), 7);
         QCOMPARE(shown(view, 2, ToolTableModel::RadiusGeometryColumn), u"4.000"_s);
-        QCOMPARE(shown(view, 2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+        QCOMPARE(shown(view, 2, ToolTableModel::MeasuredTloColumn), u"9.652"_s);
         QCOMPARE(shown(view, 12, ToolTableModel::DescriptionColumn), u"10 mm roughing"_s);
         QCOMPARE(shown(view, 12, ToolTableModel::LengthGeometryColumn), u"0.000"_s);
-        QCOMPARE(*window.document()->table().find(2)->measuredTlo, -33.388);
+        QCOMPARE(*window.document()->table().find(2)->measuredTlo, 9.652);
         QVERIFY2(window.statusBar()->currentMessage().contains(u"1 new, 1 changed, 1 unchanged"_s),
             qPrintable(window.statusBar()->currentMessage()));
 

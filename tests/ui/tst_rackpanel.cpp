@@ -53,7 +53,7 @@ private Q_SLOTS:
         QVERIFY(!s.find<QPushButton>(u"rackMeasureButton"_s)->isEnabled());
         s.connect();
         QCOMPARE(s.text(u"rackSpindleLabel"_s), u"Spindle: T1"_s);
-        QCOMPARE(s.text(u"rackFirmwareLabel"_s), u"Community firmware 2.1.0c"_s);
+        QCOMPARE(s.text(u"rackFirmwareLabel"_s), u"Community firmware 2.1.0c-emulator"_s);
         QCOMPARE(s.find<QLineEdit>(u"rackHoldsEdit"_s)->text(), u"1-6"_s);
         QCOMPARE(s.column(RackPanel::ToolColumn),
             QStringList({ u"T1 · in spindle"_s, u"T2"_s, u"T3"_s, u"T4"_s, u"T5"_s, u"T6"_s }));
@@ -118,11 +118,11 @@ private Q_SLOTS:
         answerNextBox(QMessageBox::Yes);
         s.click(u"rackMeasureButton"_s);
         QVERIFY(QTest::qWaitFor([&s] { return s.idle(); }, kLongWaitMs));
-        QCOMPARE(s.rackCell(1, RackPanel::StoredColumn), u"-33.388"_s);
+        QCOMPARE(s.rackCell(1, RackPanel::StoredColumn), u"9.652"_s);
         QVERIFY(!s.table().find(2)->referenceMz);
         QCOMPARE(s.text(u"referenceMzLabel"_s), u"not reported"_s);
         QCOMPARE(s.text(u"currentMzLabel"_s), u"not reported"_s);
-        QCOMPARE(s.text(u"tloLabel"_s), u"-22.700 mm"_s); // T6's, the last measured
+        QCOMPARE(s.text(u"tloLabel"_s), u"20.340 mm"_s); // T6's, the last measured
 
         s.window.connection()->disconnectFromMachine();
         QVERIFY(!s.find<QGroupBox>(u"breakTestGroup"_s)->isHidden());
@@ -139,8 +139,9 @@ private:
         s.click(u"rackMeasureButton"_s);
         QVERIFY2(question.contains(u"T1, T2, T3, T4, T5, T6"_s) && question.contains(u"Keep clear"_s),
             qPrintable(question));
-        // A machine just started: the first tool measured becomes its reference, and the question says so.
-        QVERIFY2(question.contains(u"T1, measured first, becomes it"_s), qPrintable(question));
+        // The machine's reference is its calibration: no tool "becomes" it, and the question says nothing of
+        // it.
+        QVERIFY2(!question.contains(u"reference"_s), qPrintable(question));
         QVERIFY(s.find<QProgressBar>(u"rackProgress"_s)->isVisible());
         QCOMPARE(s.find<QProgressBar>(u"rackProgress"_s)->maximum(), 6);
         QVERIFY(s.find<QPushButton>(u"rackCancelButton"_s)->isVisible());
@@ -156,7 +157,10 @@ private:
             const Tool *t = s.table().find(tool);
             QVERIFY2(t && t->measuredTlo, qPrintable(u"T%1"_s.arg(tool)));
             QCOMPARE(t->tloSource, TloSource::Probe);
-            QVERIFY(std::fabs(*t->measuredTlo - (s.machine()->toolLength(tool) - s.machine()->toolLength(1)))
+            // Against the machine's reference: where the nose would touch, plus the tool's length, less it.
+            QVERIFY(std::fabs(*t->measuredTlo
+                        - (CarveraEmulator::kNoseTriggerZ + s.machine()->toolLength(tool)
+                            - CarveraEmulator::kFactoryReferenceMz))
                 < 0.0015);
             QCOMPARE(s.rackCell(tool - 1, RackPanel::StoredColumn), millimetres(*t->measuredTlo, false));
         }
@@ -230,7 +234,7 @@ private:
     void loadAManualToolWithItsStoredTlo(RackStation &s)
     {
         // T8 lives outside the rack; it was measured this morning against the machine's reference.
-        const double reference = s.window.connection()->lastOffsets()->referenceMz;
+        const double reference = *s.window.connection()->lastOffsets()->referenceMz;
         QVERIFY(s.window.document()->recordMeasurement(
             8, -5.25, QDateTime::currentDateTimeUtc().addSecs(-3700), TloSource::Probe, reference));
         s.find<QCheckBox>(u"rackUseStoredCheck"_s)->setChecked(true);

@@ -55,7 +55,7 @@ const QString kExample = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/e
 // The window as an operator has it, with every line it sent to the machine.
 // The chapters of the first story, in order; each leaves the station where the next begins.
 
-// First start, connect, and the reference tool probed.
+// First start, connect, and the first tool probed.
 void firstStartAndTheReference(Station &s)
 {
     // First start: an empty table, no machine; nothing claims to be measured.
@@ -63,22 +63,24 @@ void firstStartAndTheReference(Station &s)
     QCOMPARE(s.text(u"machineStateLabel"_s), u"Not connected"_s);
     QVERIFY(!s.find<QAction>(u"actionProbe"_s)->isEnabled());
 
-    // Connect: a fresh machine has measured nothing, and the strip says so rather than "0.000 mm".
+    // Connect: a fresh machine has no TLO in force (0, the firmware's "none"), and the strip says so rather
+    // than "0.000 mm"; its reference is its calibration.
     s.connect();
     QCOMPARE(s.text(u"activeToolLabel"_s), u"T1"_s);
     QCOMPARE(s.text(u"tloLabel"_s), u"not measured"_s);
-    QVERIFY(s.text(u"tloNoteLabel"_s).contains(u"probe the reference tool first"_s));
-    QCOMPARE(s.text(u"referenceMzLabel"_s), u"not measured"_s);
+    QVERIFY(s.text(u"tloNoteLabel"_s).contains(u"probe the tool first"_s));
+    QCOMPARE(s.text(u"referenceMzLabel"_s), u"-115.340 mm"_s);
+    QCOMPARE(s.text(u"currentMzLabel"_s), u"not measured"_s);
 
-    // Probe the reference tool: T1 enters the table, measured.
+    // Probe T1: it enters the table, measured against the machine's reference.
     const QString first = s.probe();
     QVERIFY(first.contains(u"recorded as T1's TLO"_s));
-    QVERIFY(first.contains(u"T1 becomes the reference tool"_s));
-    QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
+    QCOMPARE(*s.table().find(1)->measuredTlo, 43.04);
     QCOMPARE(s.table().find(1)->tloSource, TloSource::Probe);
-    QCOMPARE(s.text(u"tloLabel"_s), u"0.000 mm"_s);
+    QCOMPARE(s.text(u"tloLabel"_s), u"43.040 mm"_s);
     QVERIFY(s.text(u"tloNoteLabel"_s).startsWith(u"measured "_s));
-    QCOMPARE(s.text(u"referenceMzLabel"_s), u"-72.300 mm"_s);
+    QCOMPARE(s.text(u"referenceMzLabel"_s), u"-115.340 mm"_s);
+    QCOMPARE(s.text(u"currentMzLabel"_s), u"-72.300 mm"_s);
 }
 
 // T2 loaded from the console, then probed.
@@ -101,15 +103,15 @@ void changeToT2FromTheConsole(Station &s)
     // The console's tool change measured T2 on the machine, and it is recorded like a probe from the panel;
     // the strip shows the machine as it is after the command, not as it was before.
     QTRY_VERIFY(s.table().find(2) && s.table().find(2)->measuredTlo);
-    QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
+    QCOMPARE(*s.table().find(2)->measuredTlo, 9.652);
     QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
     QTRY_COMPARE(s.text(u"currentMzLabel"_s), u"-105.688 mm"_s);
-    QCOMPARE(s.text(u"tloLabel"_s), u"-33.388 mm"_s);
+    QCOMPARE(s.text(u"tloLabel"_s), u"9.652 mm"_s);
 
-    // Probe T2 again from the panel: -33.388 mm, at the machine's resolution.
+    // Probe T2 again from the panel: 9.652 mm, at the machine's resolution.
     s.probe();
-    QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
-    QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+    QCOMPARE(*s.table().find(2)->measuredTlo, 9.652);
+    QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"9.652"_s);
 }
 
 // T2's offset adjusted by hand: the machine and the table agree, marked so.
@@ -124,17 +126,19 @@ void adjustT2ByHand(Station &s)
     answerNextBox(QMessageBox::Yes, &question);
     QTest::mouseClick(s.find<QPushButton>(u"sendOffsetButton"_s), Qt::LeftButton);
     QVERIFY(question.contains(u"T2"_s));
-    QVERIFY(question.contains(u"M493.3 Z-30.488"_s));
+    QVERIFY(question.contains(u"M493.3 Z12.552"_s));
     QVERIFY(QTest::qWaitFor([&s] { return s.idle(); }, 5000));
-    QVERIFY(std::fabs(s.machine()->tlo() + 30.488) < 1e-9);
-    QCOMPARE(*s.table().find(2)->measuredTlo, -30.488);
+    QVERIFY(std::fabs(s.machine()->tlo() - 12.552) < 1e-9);
+    QCOMPARE(*s.table().find(2)->measuredTlo, 12.552);
     QCOMPARE(s.table().find(2)->tloSource, TloSource::Manual);
-    QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-30.488 (by hand)"_s);
+    QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"12.552 (by hand)"_s);
+    // The firmware prints the TLO as its "current tool offset" now: the strip claims no MCS Z of the tool.
+    QCOMPARE(s.text(u"currentMzLabel"_s), u"not measured"_s);
     QVERIFY(s.text(u"tloNoteLabel"_s).startsWith(u"set by hand"_s));
     QCOMPARE(value->value(), 0.0); // a second Send would not add 2.9 again
     QVERIFY(!s.find<QPushButton>(u"sendOffsetButton"_s)->isEnabled()); // and adding 0 is no change
     // The probe panel no longer claims the probe's TLO is the one in use.
-    QVERIFY(!s.text(u"probeResultLabel"_s).contains(u"-33.388"_s));
+    QVERIFY(!s.text(u"probeResultLabel"_s).contains(u"9.652"_s));
     QCOMPARE(s.window.document()->undoStack()->undoText(), u"Set T2 TLO by hand"_s);
 }
 
@@ -202,17 +206,21 @@ void unlockAndProbeAgain(Station &s, const QTemporaryDir &dir)
     QVERIFY(saved.value().find(2)->breakTestFailed);
     QCOMPARE(saved.value().find(2)->tloSource, TloSource::Manual);
 
-    // Unlock (Ctrl+Shift+U), then probe T2 again: measured, and the mark is gone.
+    // Unlock (Ctrl+Shift+U): the failed break test left the length it measured in force, and the stored TLO
+    // goes back before anything else; then probe T2 again: measured, and the mark is gone.
+    QCOMPARE(s.machine()->tlo(), 9.652);
     s.window.activateWindow();
     s.trigger(u"actionUnlock"_s);
     QVERIFY(QTest::qWaitFor([&s] { return s.idle() && !s.machine()->isHalted(); }, 5000));
+    QCOMPARE(s.machine()->tlo(), 12.552);
+    QVERIFY(s.sent.contains("M493.3 Z12.552"));
     QTRY_VERIFY(s.find<QAction>(u"actionProbe"_s)->isEnabled());
     QTRY_VERIFY(!s.find<QLabel>(u"haltLabel"_s)->isVisible());
     s.probe();
-    QCOMPARE(*s.table().find(2)->measuredTlo, -33.388);
+    QCOMPARE(*s.table().find(2)->measuredTlo, 9.652);
     QVERIFY(!s.table().find(2)->breakTestFailed);
     QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
-    QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+    QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"9.652"_s);
     // The break test's "BROKEN TOOL" was about the tool before it was measured again.
     QVERIFY(s.text(u"breakVerdictLabel"_s).isEmpty());
 
@@ -222,8 +230,8 @@ void unlockAndProbeAgain(Station &s, const QTemporaryDir &dir)
     Station reopened;
     QVERIFY(reopened.window.openFile(path));
     QCOMPARE(reopened.table(), s.table());
-    QCOMPARE(reopened.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
-    QCOMPARE(reopened.cell(1, ToolTableModel::MeasuredTloColumn), u"0.000"_s);
+    QCOMPARE(reopened.cell(2, ToolTableModel::MeasuredTloColumn), u"9.652"_s);
+    QCOMPARE(reopened.cell(1, ToolTableModel::MeasuredTloColumn), u"43.040"_s);
 }
 
 } // namespace
@@ -356,7 +364,7 @@ private Q_SLOTS:
         s.trigger(u"actionUndo"_s);
         QCOMPARE(s.table(), full);
         QVERIFY(s.window.isWindowModified());
-        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"-33.388"_s);
+        QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"9.652"_s);
         // Cancelling the question saves nothing and changes nothing.
         QTimer::singleShot(0, [] { answerNextBox(QMessageBox::Cancel); });
         s.trigger(u"actionSave"_s);
@@ -406,11 +414,11 @@ private Q_SLOTS:
         Station s;
         QVERIFY(s.window.openFile(kExample));
         s.connect();
-        s.probe(); // T1 is the reference now, at MCS Z -72.300
-        QCOMPARE(*s.table().find(1)->referenceMz, -72.3);
-        // T2's TLO was measured against a reference elsewhere (another day, another reference tool).
+        s.probe(); // T1, against the machine's reference, MCS Z -115.340
+        QCOMPARE(*s.table().find(1)->referenceMz, -115.34);
+        // T2's TLO was measured against a reference elsewhere (another machine, or before a calibration).
         Tool t2 = *s.table().find(2);
-        t2.referenceMz = -80.0;
+        t2.referenceMz = -123.04;
         QVERIFY(s.window.document()->editTool(2, t2).ok());
         s.window.toolTablePanel()->selectTool(2);
         QString refusal;
@@ -431,7 +439,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitFor([&s] { return s.idle() && s.sent.contains("M493.3 Z-1.5"); }, 5000));
         QCOMPARE(*s.table().find(1)->measuredTlo, -1.5);
         QCOMPARE(s.table().find(1)->tloSource, TloSource::Manual);
-        QCOMPARE(*s.table().find(1)->referenceMz, -72.3);
+        QCOMPARE(*s.table().find(1)->referenceMz, -115.34);
         QVERIFY(s.window.consoleDock()->lines().last().contains(u"recorded in the table: T1"_s));
     }
 
@@ -451,7 +459,7 @@ private Q_SLOTS:
 
         s.machine()->setToolLength(1, 77.69); // worn by 0.01: a new TLO the table must show now
         s.probe();
-        QCOMPARE(*s.table().find(1)->measuredTlo, -0.01);
+        QCOMPARE(*s.table().find(1)->measuredTlo, 43.03);
         QCOMPARE(s.window.history()->pendingCount(), 1);
         QVERIFY(s.window.statusBar()->currentMessage().contains(u"cannot be written"_s));
         QVERIFY(s.window.statusBar()->currentMessage().contains(s.libraryPath()));
@@ -461,7 +469,7 @@ private Q_SLOTS:
         QVERIFY(s.window.statusBar()->currentMessage().contains(u"written again"_s));
         const auto events = s.window.history()->library()->history({}).value();
         QCOMPARE(events.size(), 2);
-        QCOMPARE(events.last().tlo, -0.01);
+        QCOMPARE(events.last().tlo, 43.03);
         lock.finish();
         other.close();
         other = QSqlDatabase();
@@ -478,7 +486,7 @@ private Q_SLOTS:
         QVERIFY(s.window.statusBar()->currentMessage().contains(dir.path() + u" is a folder"_s));
         s.connect();
         s.probe();
-        QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
+        QCOMPARE(*s.table().find(1)->measuredTlo, 43.04);
         QCOMPARE(s.window.history()->pendingCount(), 1);
         s.window.setLibrary({ s.libraryPath() }); // a library again: what waited is written
         QCOMPARE(s.window.history()->pendingCount(), 0);
@@ -507,7 +515,7 @@ private Q_SLOTS:
         QVERIFY(said.contains(u"restore it from a backup"_s));
         s.connect();
         s.probe();
-        QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
+        QCOMPARE(*s.table().find(1)->measuredTlo, 43.04);
         QCOMPARE(s.window.history()->pendingCount(), 1);
     }
 
@@ -553,7 +561,7 @@ private Q_SLOTS:
     {
         Station s;
         s.connect();
-        s.probe(); // T1, the reference
+        s.probe(); // T1
         s.machine()->setToolLength(1, 77.6); // 0.1 shorter: within the 0.1 tolerance of the trend
         s.probe();
         QVERIFY(!s.window.statusBar()->currentMessage().contains(u"trend"_s));

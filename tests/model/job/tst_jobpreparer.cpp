@@ -233,37 +233,55 @@ private Q_SLOTS:
 
     void whatItKeepsDoesNotGrowWithTheToolsAProgramLoads()
     {
-        // 300 tools the table lacks, each cutting once: a note for each (measured at its change), and a break
-        // test after each, a change on every third line.
+        // 300 tools the table lacks, each cutting once: a note for each (measured at its change), the first
+        // 100 kept. From T9 up the firmware's break test would halt (it takes them for its wireless probe):
+        // none is inserted for them.
         PrepareOptions o;
         o.useStoredTlo = true;
         o.breakTest = true;
         o.tolerance = 0.05;
         o.rack = { 1, 2, 3, 4, 5, 6 };
         o.now = kNow;
+        {
+            JobPreparer preparer(table(), o);
+            qint64 written = 0;
+            const auto sink = [&written](QByteArrayView) {
+                return ++written > 0;
+            };
+            int line = 0;
+            for (int t = 10; t < 310; ++t) {
+                QVERIFY(preparer.feed(QByteArray("M6 T" + QByteArray::number(t)), ++line, sink).ok());
+                QVERIFY(preparer.feed("G1 Z-1 F100", ++line, sink).ok());
+            }
+            QVERIFY(preparer.feed("M30", ++line, sink).ok());
+            const auto summary = preparer.finish(sink);
+            QVERIFY(summary.ok());
+            const PrepareSummary &s = summary.value();
+            QCOMPARE(s.inserted, 0);
+            QCOMPARE(written, 601);
+            // The first notes, then how many more.
+            QCOMPARE(s.notes.size(), JobPreparer::kMaxNotes + 1);
+            QCOMPARE(s.notes.front(), u"T10 is not in the table: it is measured at its change."_s);
+            QCOMPARE(s.notes.back(),
+                u"200 more notes like these, one for each further tool (the first of them T110): counted, "
+                u"not "
+                "listed."_s);
+        }
+        // 300 changes round T2 to T8, a cut after each: a break test after each, a change on every third
+        // line; the preview in pieces of a bounded size, every insertion in one of them.
         JobPreparer preparer(table(), o);
-        qint64 written = 0;
-        const auto sink = [&written](QByteArrayView) {
-            return ++written > 0;
+        const auto sink = [](QByteArrayView) {
+            return true;
         };
         int line = 0;
-        for (int t = 10; t < 310; ++t) {
-            QVERIFY(preparer.feed(QByteArray("M6 T" + QByteArray::number(t)), ++line, sink).ok());
+        for (int i = 0; i < 300; ++i) {
+            QVERIFY(preparer.feed(QByteArray("M6 T" + QByteArray::number(2 + i % 7)), ++line, sink).ok());
             QVERIFY(preparer.feed("G1 Z-1 F100", ++line, sink).ok());
         }
         QVERIFY(preparer.feed("M30", ++line, sink).ok());
         const auto summary = preparer.finish(sink);
         QVERIFY(summary.ok());
         const PrepareSummary &s = summary.value();
-        QCOMPARE(s.inserted, 300);
-        QCOMPARE(written, 601 + 300);
-        // The first notes, then how many more.
-        QCOMPARE(s.notes.size(), JobPreparer::kMaxNotes + 1);
-        QCOMPARE(s.notes.front(), u"T10 is not in the table: it is measured at its change."_s);
-        QCOMPARE(s.notes.back(),
-            u"200 more notes like these, one for each further tool (the first of them T110): counted, not "
-            "listed."_s);
-        // The preview in pieces of a bounded size, every insertion in one of them.
         QVERIFY(s.hunks.size() > 1);
         qsizetype inserted = 0;
         for (const PrepareHunk &hunk : s.hunks) {
@@ -271,7 +289,8 @@ private Q_SLOTS:
             inserted += std::count_if(
                 hunk.cbegin(), hunk.cend(), [](const PrepareRow &r) { return r.originalLine == 0; });
         }
-        QCOMPARE(inserted, 300);
+        QCOMPARE(inserted, s.inserted);
+        QVERIFY2(s.inserted >= 300, qPrintable(QString::number(s.inserted)));
     }
 
     void storedTlosOfTwoReferencesAreRefusedAndTheReferenceToolIsNotBreakTested()
@@ -305,13 +324,18 @@ private Q_SLOTS:
         QVERIFY(
             prepared.value().notes.join(u'\n').contains(u"T8's stored TLO was measured against reference MCS "
                                                         "Z -80, but the machine's is -72.3"_s));
-        // T1 is the reference tool: the community firmware does not break-test a TLO of 0.
+        // T1's TLO is 0: the community firmware takes it for none and would not compare (seen on it).
         PrepareOptions test;
         test.breakTest = true;
         PrepareSummary summary;
         const QByteArray withT1 = prepare("M6 T1\nG1 Z-1 F100\nM6 T2\nG1 Z-1\nM30\n", test, &summary);
         QCOMPARE(withT1.count("M491.1"), 1);
-        QVERIFY(summary.notes.join(u'\n').contains(u"T1 is the reference tool"_s));
+        QVERIFY(summary.notes.join(u'\n').contains(u"T1 is not break-tested: its TLO is 0.000 mm"_s));
+        // T9 on: the firmware's break test takes them for its wireless probe and halts (seen on it).
+        summary = {};
+        const QByteArray withT9 = prepare("M6 T2\nG1 Z-1 F100\nM6 T9\nG1 Z-1\nM30\n", test, &summary);
+        QCOMPARE(withT9.count("M491.1"), 1);
+        QVERIFY(summary.notes.join(u'\n').contains(u"T9 is not break-tested"_s));
     }
 
     void theCarveraTakesBothAtOnce()
