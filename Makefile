@@ -7,15 +7,17 @@ BUILD_DIR := build
 PRESET    := default
 
 # The Debian packages the build, the tests and `make run` need (bookworm; Qt 6.4.2). On the last two lines: the
-# shared library's driver and the throwaway server the suite starts for itself (tests/support/pgcluster.h), and the
-# validators of the desktop entry, the AppStream metainfo and the package.
+# shared library's driver and the throwaway server the suite starts for itself (tests/support/pgcluster.h), the
+# validators of the desktop entry, the AppStream metainfo and the package, and what the real controllers the
+# suite tests against need (the Carvera firmware's simulator: protobuf; grblHAL on a pty: socat).
 DEB_PACKAGES := cmake ninja-build g++ make \
 	qt6-base-dev qt6-base-dev-tools qt6-qpa-plugins qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev \
 	qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools \
 	libqt6svg6 libqt6sql6-sqlite libgl-dev fonts-dejavu-core xvfb xauth qt6-translations-l10n \
 	pkg-config libzip-dev libxcb1-dev \
 	postgresql libqt6sql6-psql \
-	desktop-file-utils appstream lintian
+	desktop-file-utils appstream lintian \
+	libprotobuf32 socat
 
 # `make bench` also runs LinuxCNC's own interpreter (rs274) on the job check's program, as its yardstick.
 BENCH_PACKAGES := linuxcnc-uspace

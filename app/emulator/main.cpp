@@ -86,6 +86,12 @@ struct Options
             .arg(CarveraEmulator::kFactoryReferenceMz),
         u"MZ"_s };
     QCommandLineOption notHomed { u"not-homed"_s, u"Start unhomed: probing halts until $H."_s };
+    QCommandLineOption emptyRack {
+        u"empty-rack"_s,
+        u"The rack's slots hold no tools: a pick halts (\"Unexpected tool absence\"), as on the test peer."_s
+    };
+    QCommandLineOption spindle { u"spindle"_s, u"The tool in the spindle at start (default 1; -1 empty)."_s,
+        u"N"_s };
     QCommandLineOption halted { u"halted"_s, u"Start halted with this reason (1-16)."_s, u"REASON"_s };
     QCommandLineOption fault { u"fault"_s,
         u"A one-shot fault: drop-ok, no-answer, garble, close, fail-probe, delay:MS or break:MM, "
@@ -95,7 +101,7 @@ struct Options
     void addTo(QCommandLineParser &parser) const
     {
         parser.addOptions({ link, tool, broken, probeMs, changeMs, moveMs, firmware, slotFile, repeatability,
-            reference, notHomed, halted, fault });
+            reference, notHomed, emptyRack, spindle, halted, fault });
     }
 };
 
@@ -137,6 +143,13 @@ Problem configureMachine(CarveraEmulator &emulator, const QCommandLineParser &pa
         emulator.setReference(*mz);
     }
     emulator.setHomed(!parser.isSet(o.notHomed));
+    emulator.setRackEmpty(parser.isSet(o.emptyRack));
+    if (parser.isSet(o.spindle)) {
+        const auto tool = Toffee::parseInteger(parser.value(o.spindle).toUtf8());
+        if (!tool || *tool < -1 || *tool > 999999)
+            return u"--spindle takes a tool number, or -1 for an empty spindle."_s;
+        emulator.setToolInSpindle(int(*tool));
+    }
     if (parser.isSet(o.halted)) {
         const auto reason = Toffee::parseInteger(parser.value(o.halted).toUtf8());
         if (!reason || *reason < 1)

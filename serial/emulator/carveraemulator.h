@@ -89,6 +89,10 @@ public:
     // The community firmware's custom_tool_slots.txt: `number x y [z]` a line, `#` comments.
     [[nodiscard]] static Result<QList<RackSlot>> parseToolSlots(const QByteArray &text);
     void setToolLength(int tool, double millimetres) { m_lengths.insert(tool, millimetres); }
+    // The rack's slots hold no tools (the test peer's SD card): a pick from the rack finds none and halts.
+    void setRackEmpty(bool empty) { m_rackEmpty = empty; }
+    // The tool in the spindle as the machine starts (T1 unless set; -1 empty, as a fresh C1).
+    void setToolInSpindle(int tool) { m_tool = tool; }
     [[nodiscard]] double toolLength(int tool) const;
     void breakTool(int tool, double millimetres) { m_lengths.insert(tool, toolLength(tool) - millimetres); }
     // A one-shot fault on the next command that starts with `prefix` (any command when empty).
@@ -188,7 +192,7 @@ private:
     void saveXy();
     void unknownCommand(const QByteArray &line);
     void pickTool(int tool, std::optional<double> tlo);
-    void dropTool();
+    [[nodiscard]] bool dropTool();
     [[nodiscard]] bool probeFails(double trigger);
     void failProbe();
     // M491 R<n>: each measurement's trigger, and where the spindle returns after the last.
@@ -226,13 +230,14 @@ private:
     bool m_homed = true;
     int m_haltReason = 0;
     std::array<double, 3> m_mpos { -2.0, -2.0, -2.0 };
-    std::array<double, 3> m_wcs { 0.0, 0.0, -59.0 };
+    std::array<double, 3> m_wcs { 0.0, 0.0, 0.0 }; // G54, zero as on a fresh C1
     std::array<double, 2> m_setter { -4.965, -54.48 };
     int m_tool = 1;
     double m_refMz = kFactoryReferenceMz;
     double m_curMz = 0.0; // "current tool offset": the tool's MCS Z on the setter, or Z after M493.3 Z
     double m_tlo = 0.0; // in force: 0 until something is measured or set
     bool m_waitingForOperator = false;
+    bool m_rackEmpty = false;
     std::array<double, 2> m_savedXy { 0.0, 0.0 };
     std::optional<double> m_lastProbeZ;
     // Motion and work offsets go through the same interpreter as `toffee-cli simulate`.

@@ -30,12 +30,13 @@ constexpr std::array<double, 5> kRepeatSpread { 0.0, 1.0, -1.0, 0.5, -0.5 };
 
 } // namespace
 
-// Toffee's assumption: a row along the back, 30 mm apart, at MCS Z -105. Nothing prints the coordinates.
+// The C1's six slots as its firmware goes to them (seen on it): a row 30 mm apart in Y from
+// Y-84.480, at MCS Z -114.400.
 QList<CarveraEmulator::RackSlot> CarveraEmulator::defaultRack()
 {
     QList<RackSlot> rack;
     for (int n = 1; n <= 6; ++n)
-        rack.append({ n, -15.0 - 30.0 * (n - 1), -7.0, -105.0 });
+        rack.append({ n, -4.96, -84.48 - 30.0 * (n - 1), -114.4 });
     return rack;
 }
 
@@ -200,7 +201,8 @@ void CarveraEmulator::changeTool(const GCodeBlock &block, const QByteArray &line
     say("Saved XY position: X" + fixed(m_mpos[0]) + " Y" + fixed(m_mpos[1]));
     announceChange(n);
     say("ok");
-    dropTool();
+    if (!dropTool())
+        return; // halted
     if (n == Limits::kEmptySpindle) {
         if (m_timing.changeMs > 0)
             return later(m_timing.changeMs, [this] { returnTo(m_savedXy[0], m_savedXy[1]); });
@@ -214,11 +216,13 @@ void CarveraEmulator::changeTool(const GCodeBlock &block, const QByteArray &line
     pickTool(n, tlo);
 }
 
-// The tool in the spindle goes back in its slot, or is taken out by hand.
-void CarveraEmulator::dropTool()
+// The tool in the spindle goes back in its slot (and the slot's sensor must then see it), or is taken out by
+// hand. False when the machine halted.
+bool CarveraEmulator::dropTool()
 {
     if (m_tool == Limits::kEmptySpindle)
-        return;
+        return true;
+    const bool toRack = inRack(m_tool);
     echo("M497.1");
     echo("G53 G0 Z" + fixed(kClearanceZ));
     for (const RackSlot &slot : std::as_const(m_rack)) {
@@ -232,7 +236,17 @@ void CarveraEmulator::dropTool()
     say("ok");
     echo("M493.2 T-1");
     m_tool = Limits::kEmptySpindle;
+    if (toRack) {
+        say("M492.1");
+        if (m_rackEmpty) {
+            haltWith(
+                "ERROR: Unexpected tool absence detected, please check tool rack!", HaltReason::AtcNoTool);
+            return false;
+        }
+        say("ok");
+    }
     echo("G53 G0 Z" + fixed(kClearanceZ));
+    return true;
 }
 
 void CarveraEmulator::pickTool(int tool, std::optional<double> tlo)
@@ -243,6 +257,13 @@ void CarveraEmulator::pickTool(int tool, std::optional<double> tlo)
             echo("G53 G0 X" + fixed(slot.x) + " Y" + fixed(slot.y));
             echo("G53 G0 Z" + fixed(slot.z));
         }
+    }
+    if (inRack(tool)) {
+        say("M492.1"); // is there a tool in the slot?
+        if (m_rackEmpty)
+            return haltWith(
+                "ERROR: Unexpected tool absence detected, please check tool rack!", HaltReason::AtcNoTool);
+        say("ok");
     }
     say("M490.1");
     say("ATC clamped!");

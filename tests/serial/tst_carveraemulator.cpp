@@ -90,14 +90,14 @@ private Q_SLOTS:
     {
         CarveraEmulator emulator;
         emulator.setToolLength(1, kSimulatedToolLength);
-        command(emulator, "M491"); // TLO 6.915, WPos Z -3 + 59 - 6.915 = 49.085
+        command(emulator, "M491"); // TLO 6.915, WPos Z -3 - 6.915 = -9.915
         QCOMPARE(command(emulator, "M493.3 H3").front(),
-            QByteArray("current tool offset [-62.340] , reference tool offset [-115.340]"));
-        QVERIFY2(status(emulator).contains("|T:1,53.000,-1,0|"), status(emulator).constData()); // right
-        command(emulator, "M493.3 Z53");
+            QByteArray("current tool offset [-121.340] , reference tool offset [-115.340]"));
+        QVERIFY2(status(emulator).contains("|T:1,-6.000,-1,0|"), status(emulator).constData()); // right
+        command(emulator, "M493.3 Z6.915");
         QCOMPARE(command(emulator, "M493.3 H3").front(),
-            QByteArray("current tool offset [53.000] , reference tool offset [-115.340]"));
-        QVERIFY(status(emulator).contains("|T:1,168.340,-1,0|")); // the firmware's error, 115.340 off
+            QByteArray("current tool offset [-6.000] , reference tool offset [-115.340]"));
+        QVERIFY(status(emulator).contains("|T:1,109.340,-1,0|")); // the firmware's error, 115.340 off
     }
 
     void aFailedBreakTestHaltsWithTheNewLengthInForce()

@@ -138,9 +138,9 @@ private Q_SLOTS:
             (Lines { "Saved XY position: X-2.000 Y-2.000", "Start dropping current tool: T1",
                 "Start picking new tool: T2", "ok" }));
         // T1 back in its slot, T2 out of its own, then measured, then back where it was.
-        QVERIFY(out.contains("G53 G0 X-15.000 Y-7.000"));
+        QVERIFY(out.contains("G53 G0 X-4.960 Y-84.480")); // T1's slot, as on the firmware
         QVERIFY(out.contains("M493.2 T-1"));
-        QVERIFY(out.contains("G53 G0 X-45.000 Y-7.000"));
+        QVERIFY(out.contains("G53 G0 X-4.960 Y-114.480")); // T2's
         QVERIFY(out.contains("M493.2 T2"));
         QVERIFY(out.contains("[PRB:-4.965,-54.480,-105.688:1]"));
         QCOMPARE(out.mid(out.size() - 2), (Lines { "Return to XY position: X-2.000 Y-2.000", "Done ATC" }));
@@ -256,6 +256,31 @@ private Q_SLOTS:
         const auto rack = CarveraEmulator::parseToolSlots(text);
         QVERIFY(!rack);
         QCOMPARE(rack.error().text(), error);
+    }
+
+    // The test peer's rack senses no tools: the firmware puts the spindle's back, finds no tool in the slot
+    // it just filled, and halts with the spindle empty (seen on it); a pick into an empty spindle halts the
+    // same.
+    void anEmptyRackHaltsAsTheFirmwareDoes()
+    {
+        CarveraEmulator emulator;
+        emulator.setRackEmpty(true);
+        Lines out = command(emulator, "M6 T2");
+        QVERIFY(out.contains("ATC loosed!"));
+        QVERIFY(out.contains("M493.2 T-1"));
+        QVERIFY(!out.contains("Start picking new tool: T2") || !out.contains("ATC clamped!"));
+        QCOMPARE(out.mid(out.size() - 3),
+            (Lines { "ERROR: Unexpected tool absence detected, please check tool rack!",
+                CarveraEmulator::kHaltLine, "ok" }));
+        QCOMPARE(emulator.haltReason(), 7);
+        command(emulator, "$X");
+        out = command(emulator, "M6 T2");
+        QVERIFY(out.contains("M492.1"));
+        QCOMPARE(out.mid(out.size() - 3),
+            (Lines { "ERROR: Unexpected tool absence detected, please check tool rack!",
+                CarveraEmulator::kHaltLine, "ok" }));
+        QCOMPARE(emulator.haltReason(), 7);
+        QVERIFY(status(emulator).contains("|T:-1,0.000,-1,0|"));
     }
 
     void aCustomRackDecidesWhatIsManual()

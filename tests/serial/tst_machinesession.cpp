@@ -79,11 +79,11 @@ private Q_SLOTS:
         QVERIFY(h.run([&](auto done) { h.session.setTlo(20.0, done); }).ok());
         const SessionResult r = h.run([&](auto done) { h.session.setTloAboveZ0(3.0, done); });
         QVERIFY2(r.ok(), qPrintable(r.message));
-        // Work Z is MPos Z (-2) less the work offset (-59) less the TLO (20): 37. The tip at 3 mm: TLO 54.
-        QCOMPARE(r.tlo->tlo(), 54.0);
-        QVERIFY(h.sent.contains("M493.3 Z54"));
+        // Work Z is MPos Z (-2) less the work offset (0) less the TLO (20): -22. The tip at 3 mm: TLO -5.
+        QCOMPARE(r.tlo->tlo(), -5.0);
+        QVERIFY(h.sent.contains("M493.3 Z-5"));
         QVERIFY(!h.sent.contains("M493.3 H3"));
-        QCOMPARE(h.emulator.tlo(), 54.0);
+        QCOMPARE(h.emulator.tlo(), -5.0);
     }
 
     void refusesBadInputWithoutSendingIt_data()

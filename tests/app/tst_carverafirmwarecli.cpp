@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// toffee-cli against the Carvera's real firmware (TOFFEE_CARVERA_PEER: the community firmware in its
+// simulator) over its serial port, as a script runs it: status, select-tool, probe, report, set-tlo, a break
+// test that fails and one that passes, unlock; what the table file and the history hold after each.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include "tests/support/carverapeer.h"
+#include "tests/support/processes.h"
+
+using namespace Toffee::Test;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+QJsonObject json(const Run &run)
+{
+    return QJsonDocument::fromJson(run.out.trimmed().split('\n').last()).object();
+}
+
+QString fixed3(const QJsonValue &v)
+{
+    return QString::number(v.toDouble(), 'f', 3);
+}
+
+} // namespace
+
+class TestCarveraFirmwareCli : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    QString m_port;
+
+    QString table() const { return m_dir.filePath(u"tools.json"_s); }
+    Run machine(const QStringList &arguments)
+    {
+        return cli(QStringList { u"--json"_s, u"--library"_s, m_dir.filePath(u"library.sqlite"_s),
+                       u"--table"_s, table(), u"--port"_s, m_port }
+                + arguments,
+            90000);
+    }
+    QJsonObject tool(int number) const
+    {
+        for (const QJsonValue &t :
+            QJsonDocument::fromJson(readFile(table())).object()[u"tools"_s].toArray()) {
+            if (t[u"number"_s].toInt() == number)
+                return t.toObject();
+        }
+        return {};
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        if (CarveraPeer::script().isEmpty())
+            QSKIP(qPrintable(CarveraPeer::skipReason()));
+        qputenv("XDG_DATA_HOME", m_dir.filePath(u"data"_s).toLocal8Bit());
+    }
+
+    void aScriptDrivesTheRealFirmware()
+    {
+        CarveraPeer peer;
+        QVERIFY2(peer.started(), qPrintable(peer.errors()));
+        m_port = peer.uart();
+        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table()));
+        QFile(table()).setPermissions(QFile::ReadOwner | QFile::WriteOwner);
+
+        // It connects (the firmware answers `version` with no "ok") and knows the firmware for what it is.
+        Run run = machine({ u"status"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QCOMPARE(json(run)[u"state"_s].toString(), u"Idle"_s);
+        QCOMPARE(json(run)[u"tool"_s].toInt(), -1); // a fresh C1: nothing in the spindle
+        QCOMPARE(json(run)[u"firmware"_s][u"kind"_s].toString(), u"community"_s);
+        QCOMPARE(json(run)[u"firmware"_s][u"version"_s].toString(), u"2.1.0c-simulator"_s);
+        QCOMPARE(json(run)[u"firmware"_s][u"break_test"_s].toBool(), true);
+
+        run = machine({ u"select-tool"_s, u"1"_s });
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(json(run)[u"warning"_s].toString().contains(u"another tool's"_s));
+
+        // Probed against the machine's own reference, its factory calibration: T1 does not become it.
+        run = machine({ u"probe"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QCOMPARE(fixed3(json(run)[u"tlo"_s]), u"6.915"_s);
+        QCOMPARE(fixed3(json(run)[u"reference_mz"_s]), u"-115.340"_s);
+        QCOMPARE(fixed3(json(run)[u"current_mz"_s]), u"-108.425"_s);
+        QCOMPARE(fixed3(tool(1)[u"measured_tlo"_s]), u"6.915"_s);
+        QCOMPARE(fixed3(tool(1)[u"reference_mz"_s]), u"-115.340"_s);
+        run = machine({ u"report"_s });
+        QCOMPARE(fixed3(json(run)[u"tlo"_s]), u"6.915"_s);
+
+        // Set by hand: the firmware's TLO is the value set, and no MCS Z of the tool is claimed.
+        run = machine({ u"set-tlo"_s, u"--z"_s, u"6.5"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QCOMPARE(fixed3(json(run)[u"tlo"_s]), u"6.500"_s);
+        QVERIFY(json(run)[u"current_mz"_s].isNull());
+        QCOMPARE(tool(1)[u"tlo_source"_s].toString(), u"manual"_s);
+        QCOMPARE(fixed3(json(machine({ u"status"_s }))[u"tlo"_s]), u"6.500"_s);
+
+        // The break test against 6.500 finds 6.915: broken, marked, and the machine halts with the new length
+        // in force.
+        run = machine({ u"break-test"_s, u"--tolerance"_s, u"0.05"_s });
+        QCOMPARE(run.exitCode, 3);
+        QCOMPARE(json(run)[u"broken"_s].toBool(), true);
+        QCOMPARE(fixed3(json(run)[u"old_tlo"_s]), u"6.500"_s);
+        QCOMPARE(fixed3(json(run)[u"new_tlo"_s]), u"6.915"_s);
+        QVERIFY2(run.err.contains("halted with the new length, 6.915 mm, in force"), run.err.constData());
+        QVERIFY(tool(1)[u"break_test_failed"_s].toBool());
+        run = machine({ u"status"_s });
+        QCOMPARE(json(run)[u"state"_s].toString(), u"Alarm"_s);
+        QCOMPARE(json(run)[u"halt_reason"_s].toInt(), 4);
+        QCOMPARE(fixed3(json(run)[u"tlo"_s]), u"6.915"_s);
+        QCOMPARE(machine({ u"probe"_s }).exitCode, 4); // halted: refused
+
+        // Unlock sets the stored TLO back first: the broken tool's measured length is not left in force.
+        run = machine({ u"unlock"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QCOMPARE(json(run)[u"state"_s].toString(), u"Idle"_s);
+        QCOMPARE(fixed3(json(machine({ u"status"_s }))[u"tlo"_s]), u"6.500"_s);
+        QCOMPARE(machine({ u"unlock"_s }).exitCode, 0); // not halted: nothing sent, no hang
+
+        // Probed again, the mark goes; a break test against that passes.
+        QCOMPARE(machine({ u"probe"_s }).exitCode, 0);
+        QVERIFY(!tool(1)[u"break_test_failed"_s].toBool());
+        run = machine({ u"break-test"_s, u"--tolerance"_s, u"0.05"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QCOMPARE(json(run)[u"broken"_s].toBool(), false);
+
+        const Run history
+            = cli({ u"--json"_s, u"--library"_s, m_dir.filePath(u"library.sqlite"_s), u"history"_s });
+        QStringList kinds;
+        for (const QJsonValue &e : json(history)[u"events"_s].toArray())
+            kinds << e[u"kind"_s].toString() + (e[u"failed"_s].toBool() ? u"!"_s : QString());
+        QCOMPARE(kinds,
+            (QStringList { u"probe"_s, u"manual_set"_s, u"break_test!"_s, u"probe"_s, u"break_test"_s }));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCarveraFirmwareCli)
+#include "tst_carverafirmwarecli.moc"
