@@ -85,6 +85,7 @@ std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target)
 
 void MachineConnection::connectTo(const ConnectionTarget &target)
 {
+    m_target = target;
     teardown();
     m_transport = makeTransport(target);
     m_link = std::make_unique<MachineLink>(m_transport.get());

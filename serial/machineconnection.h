@@ -43,6 +43,8 @@ public:
     ~MachineConnection() override;
 
     void connectTo(const ConnectionTarget &target);
+    // What the last connectTo() named: the machine connected to, or being connected to.
+    [[nodiscard]] const ConnectionTarget &target() const { return m_target; }
     void disconnectFromMachine();
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] QString description() const;
@@ -139,6 +141,7 @@ private:
     SessionResult m_connectResult;
     QString m_operation;
     bool m_halted = false;
+    ConnectionTarget m_target;
     std::optional<TloReading> m_offsets;
     std::optional<int> m_haltReason;
 };

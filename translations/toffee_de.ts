@@ -5068,6 +5068,20 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <source>the machine has no TLO in force: probe the tool first</source>
         <translation>Die Maschine hat keine gültige Längenkorrektur: Vermessen Sie zuerst das Werkzeug</translation>
     </message>
+    <message>
+        <source>The break test found %1 broken, and the machine halted with the length it measured in force (%2 above).
+Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source>
+        <translation>Die Bruchprüfung hat %1 als gebrochen befunden, und die Maschine hat mit der gemessenen Länge in Kraft angehalten (%2, oben).
+Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeicherte Längenkorrektur %3 zurück.</translation>
+    </message>
+    <message>
+        <source>the tool</source>
+        <translation>das Werkzeug</translation>
+    </message>
+    <message>
+        <source>its TLO</source>
+        <translation>seine Längenkorrektur</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolDocument</name>

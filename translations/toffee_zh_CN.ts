@@ -5068,6 +5068,20 @@ when it is fresh (no probe)</source>
         <source>the machine has no TLO in force: probe the tool first</source>
         <translation>机床没有生效的 TLO：请先对刀</translation>
     </message>
+    <message>
+        <source>The break test found %1 broken, and the machine halted with the length it measured in force (%2 above).
+Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source>
+        <translation>断刀检测发现 %1 已断，机床已停机，测得的长度正在生效（上方的 %2）。
+请检查刀具，然后解锁：Toffee 会先恢复其已存 TLO %3。</translation>
+    </message>
+    <message>
+        <source>the tool</source>
+        <translation>该刀具</translation>
+    </message>
+    <message>
+        <source>its TLO</source>
+        <translation>其 TLO</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolDocument</name>

@@ -121,6 +121,9 @@ void ConnectionPanel::updateState()
 {
     const auto state = m_connection->state();
     const bool idle = state == MachineConnection::State::Disconnected;
+    // The machine it is connected to, however the connection was made (the command line, a script).
+    if (!idle)
+        setTarget(m_connection->target());
     m_port->setEnabled(idle);
     m_baud->setEnabled(idle && m_port->currentData().toString() != kEmulator);
     m_refresh->setEnabled(idle);

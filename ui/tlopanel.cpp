@@ -103,6 +103,9 @@ TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidge
     connect(m_connection, &MachineConnection::statusChanged, this, &TloPanel::showStatus);
     connect(m_connection, &MachineConnection::offsetsChanged, this, &TloPanel::showOffsets);
     connect(m_connection, &MachineConnection::haltedChanged, this, &TloPanel::showHalt);
+    // An operation's end may change what the halt means (a failed break test's length in force), before the
+    // next status report.
+    connect(m_connection, &MachineConnection::busyChanged, this, &TloPanel::showHalt);
     connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State s) {
         if (s != MachineConnection::State::Connected)
             clear();
@@ -193,10 +196,21 @@ void TloPanel::showHalt()
     m_halt->setVisible(halted);
     if (halted) {
         const auto reason = m_connection->haltReason();
-        m_halt->setText((reason ? haltMeaning(*reason) + u'\n' + haltRecovery(*reason)
-                                : tr("The machine reported an alarm.") + u'\n'
-                                    + tr("Check the machine, then Unlock ($X)."))
-            + u' ' + tr("Nothing that moves the machine or changes its offsets runs until then."));
+        const auto restore = m_connection->session() ? m_connection->session()->tloToRestore() : std::nullopt;
+        // After a failed break test the firmware keeps the length it measured in force: which one that is,
+        // and what Unlock does about it.
+        const QString why = restore
+            ? tr(
+                "The break test found %1 broken, and the machine halted with the length it measured in force "
+                "(%2 above).\nCheck the tool, then Unlock: Toffee sets its stored TLO, %3, back first.")
+                  .arg(m_activeTool && *m_activeTool >= 0 ? u"T"_s + QString::number(*m_activeTool)
+                                                          : tr("the tool"),
+                      m_machineTlo ? millimetres(*m_machineTlo) : tr("its TLO"), millimetres(*restore))
+            : reason
+            ? haltMeaning(*reason) + u'\n' + haltRecovery(*reason)
+            : tr("The machine reported an alarm.") + u'\n' + tr("Check the machine, then Unlock ($X).");
+        m_halt->setText(
+            why + u' ' + tr("Nothing that moves the machine or changes its offsets runs until then."));
         m_halt->setToolTip(m_halt->text());
         m_halt->setStyleSheet(
             u"color: white; background: %1; padding: 3px 6px; font-weight: bold;"_s.arg(red));
