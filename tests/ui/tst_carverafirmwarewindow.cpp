@@ -193,9 +193,7 @@ private Q_SLOTS:
         QTRY_VERIFY(s.text(u"breakVerdictLabel"_s).contains(u"OK"_s));
 
         // A change to T2 on a rack that holds nothing: the machine halts, and says why.
-        QString failed;
-        answerNextBox(QMessageBox::Yes);
-        QTimer::singleShot(300, [&failed] { answerNextBox(QMessageBox::Ok, &failed, {}, 600); });
+        answerNextBox(QMessageBox::Yes); // the console asks before a line that moves the machine
         s.window.consoleDock()->sendCommand(u"M6 T2"_s, true);
         QVERIFY(waitIdle(s, 60000));
         QTRY_COMPARE_WITH_TIMEOUT(s.text(u"machineStateLabel"_s), u"HALTED"_s, 5000);
@@ -205,6 +203,26 @@ private Q_SLOTS:
         QVERIFY(waitIdle(s));
         QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
         QCOMPARE(s.text(u"activeToolLabel"_s), u"none"_s);
+
+        // Rack ▸ Measure: the first pick finds its slot empty, the machine halts, and the rack stops there,
+        // recording nothing.
+        const ToolTable before = s.table();
+        QString stopped;
+        answerNextBox(QMessageBox::Yes);
+        QTimer::singleShot(300, [&stopped] { answerNextBox(QMessageBox::Ok, &stopped, {}, 1500); });
+        QVERIFY2(s.find<QPushButton>(u"rackMeasureButton"_s)->isEnabled(),
+            qPrintable(s.find<QPushButton>(u"rackMeasureButton"_s)->toolTip()));
+        s.find<QPushButton>(u"rackMeasureButton"_s)->click();
+        QVERIFY2(QTest::qWaitFor([&stopped] { return !stopped.isEmpty(); }, 60000),
+            qPrintable(
+                s.window.consoleDock()->lines().mid(s.window.consoleDock()->lines().size() - 8).join(u'\n')));
+        QVERIFY2(stopped.contains(u"Unexpected tool absence"_s), qPrintable(stopped));
+        QVERIFY(waitIdle(s));
+        QCOMPARE(s.table(), before);
+        QTRY_COMPARE_WITH_TIMEOUT(s.text(u"machineStateLabel"_s), u"HALTED"_s, 5000);
+        s.trigger(u"actionUnlock"_s);
+        QVERIFY(waitIdle(s));
+        QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
     }
 };
 
