@@ -182,8 +182,16 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
 
         const QString connection
             = o.target.emulator ? u"emulator"_s : o.target.port + u' ' + QString::number(o.target.baud);
-        if (auto added = o.library->addMachine({ o.machine, u"carvera"_s, connection }); !added)
-            return Error { added.error().message + u" Nothing was sent to the machine."_s };
+        if (auto added = o.library->addMachine({ o.machine, u"carvera"_s, connection }); !added) {
+            // Another program holds the library for now: the machine may still measure, and what it measures
+            // is kept on this computer and sent later, as any measurement the library cannot take now.
+            if (added.error().code != Library::kBusy)
+                return Error { added.error().message + u" Nothing was sent to the machine."_s };
+            call.err << u"toffee-cli: warning: "_s << added.error().message
+                     << u" What this command measures is kept on this computer and sent when the library is "
+                        "free."_s
+                     << Qt::endl;
+        }
     }
     return {};
 }

@@ -40,6 +40,15 @@ Result<void> Library::addMachine(const MachineRecord &machine)
 {
     if (auto writable = checkWritable(); !writable)
         return writable;
+    // Known as it is: nothing to write, so no write lock to wait for while another program holds one.
+    {
+        QSqlQuery known(database());
+        known.prepare(u"SELECT dialect, connection FROM machines WHERE name = ?"_s);
+        known.addBindValue(machine.name);
+        if (known.exec() && known.next() && known.value(0).toString() == machine.dialect
+            && known.value(1).toString() == machine.connection)
+            return {};
+    }
     QSqlQuery query(database());
     query.prepare(u"INSERT INTO machines (name, dialect, connection) VALUES (?, ?, ?) ON CONFLICT (name) DO "
                   "UPDATE SET dialect = excluded.dialect, connection = excluded.connection"_s);

@@ -171,6 +171,115 @@ private Q_SLOTS:
         QVERIFY(!said.contains("sent"));
     }
 
+    // The matrix: every command that records, against every way the library can fail it. Each ends within its
+    // limit, with the measurements in the table file; whatever the library could not take is kept on this
+    // computer, said so, and reaches the library exactly once when the fault is gone (a tampered row: once
+    // it is mended). A library damaged before the command is refused before the machine moves.
+    void everyRecordingCommandAgainstEveryLibraryFault_data()
+    {
+        QTest::addColumn<QStringList>("command");
+        QTest::addColumn<int>("recorded");
+        QTest::addColumn<QString>("fault");
+        const QList<std::pair<QStringList, int>> commands {
+            { { u"probe"_s }, 1 },
+            { { u"set-tlo"_s, u"--z"_s, u"42.5"_s }, 1 },
+            { { u"break-test"_s, u"--tolerance"_s, u"0.1"_s }, 1 },
+            { { u"measure-rack"_s }, 6 },
+            { { u"check-rack"_s, u"--tolerance"_s, u"0.1"_s }, 6 },
+        };
+        for (const QString &fault : { u"SQLite locked"_s, u"PostgreSQL rows locked"_s,
+                 u"PostgreSQL row tampered"_s, u"SQLite events table gone"_s }) {
+            for (const auto &[command, recorded] : commands)
+                QTest::addRow("%s, %s", qPrintable(command.first()), qPrintable(fault))
+                    << command << recorded << fault;
+        }
+    }
+    void everyRecordingCommandAgainstEveryLibraryFault()
+    {
+        QFETCH(QStringList, command);
+        QFETCH(int, recorded);
+        QFETCH(QString, fault);
+        const bool shared = fault.startsWith(u"PostgreSQL"_s);
+        const QString library = shared ? pgUrl() : m_sqlite;
+        const QString machine = shared ? u"M%1"_s.arg(m_case) : u"Carvera"_s;
+        if (shared) {
+            const Run put = cli({ u"--library"_s, library, u"library"_s, u"put"_s, u"--machine"_s, machine,
+                QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json") });
+            QVERIFY2(put.exitCode == 0, put.err.constData());
+        }
+        const QStringList base { u"--json"_s, u"--library"_s, library, u"--machine"_s, machine, u"--table"_s,
+            m_table, u"--timeout"_s, u"1"_s, u"--emulator"_s };
+        if (command.first() == u"check-rack") { // a check needs the rack measured first, fault-free
+            const Run measured = cli(base + QStringList { u"measure-rack"_s });
+            QVERIFY2(measured.exitCode == 0, measured.err.constData());
+        }
+        const int before = events(library, machine);
+        QVERIFY(before >= 0);
+        const QByteArray tableBefore = readFile(m_table);
+
+        Connection other(shared ? u"QPSQL"_s : u"QSQLITE"_s);
+        if (shared)
+            QVERIFY(openPg(other));
+        else {
+            other.db().setDatabaseName(m_sqlite);
+            QVERIFY(other.db().open());
+        }
+        const QString rows = u"machine = '%1'"_s.arg(machine);
+        if (fault == u"SQLite locked") {
+            QVERIFY(other.exec(u"BEGIN EXCLUSIVE"_s));
+        } else if (fault == u"PostgreSQL rows locked") {
+            QVERIFY(other.exec(u"BEGIN"_s));
+            QVERIFY(other.exec(u"SELECT * FROM tools WHERE %1 FOR UPDATE"_s.arg(rows)));
+        } else if (fault == u"PostgreSQL row tampered") { // T1's row holds T2's data
+            QVERIFY(other.exec(u"UPDATE tools SET data = (SELECT data FROM tools WHERE %1 AND number = 2) "
+                               "WHERE %1 AND number = 1"_s.arg(rows)));
+        } else {
+            QVERIFY(other.exec(u"DROP TABLE events"_s));
+        }
+
+        QElapsedTimer clock;
+        clock.start();
+        const Run run = cli(base + command);
+        const qint64 took = clock.elapsed();
+        QVERIFY2(took < 20000, qPrintable(QString::number(took)));
+
+        if (fault == u"SQLite events table gone") { // refused by name before the machine moved
+            QCOMPARE(run.exitCode, 2);
+            QVERIFY2(run.err.contains("its table \"events\" is missing")
+                    && run.err.contains("Nothing was sent to the machine"),
+                run.err.constData());
+            QCOMPARE(readFile(m_table), tableBefore);
+            QCOMPARE(spooled().size(), 0);
+            return;
+        }
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QVERIFY2(run.err.contains("is kept on this computer"), run.err.constData());
+        if (command.first() != u"check-rack" && command.first() != u"break-test") // a pass changes no TLO
+            QVERIFY(readFile(m_table) != tableBefore);
+        QVERIFY(tableTool(1).contains(u"measured_tlo"_s));
+        QVERIFY(!spooled().isEmpty());
+        QCOMPARE(lastJson(run.out).value(u"history"_s).toString(u"kept"_s), u"kept"_s);
+
+        // The fault goes: what was kept is sent, once.
+        if (fault == u"PostgreSQL row tampered") {
+            QByteArray said;
+            // T1's row is named and its measurement still kept; the other tools' went in.
+            const int meanwhile = events(library, machine, &said);
+            QVERIFY(meanwhile >= before && meanwhile < before + recorded);
+            QVERIFY2(said.contains("T1's row"), said.constData());
+            QVERIFY(!spooled().isEmpty());
+            QVERIFY(other.exec(u"UPDATE tools SET data = replace(data, '\"number\": 2', '\"number\": 1') "
+                               "WHERE %1 AND number = 1"_s.arg(rows)));
+        } else {
+            QVERIFY(other.exec(u"ROLLBACK"_s));
+        }
+        QByteArray said;
+        QCOMPARE(events(library, machine, &said), before + recorded);
+        QVERIFY2(said.contains("sent "), said.constData());
+        QCOMPARE(spooled().size(), 0);
+        QCOMPARE(events(library, machine), before + recorded); // exactly once
+    }
+
     // Reading the history takes no write lock: another program's long write does not stop it.
     void theHistoryIsReadWhileAnotherProgramWrites()
     {
