@@ -111,9 +111,15 @@ std::optional<ConsoleCheck> ConsoleCheck::checkOffsets(const GCodeBlock &block, 
     const auto h = block.value('H');
     if (!z && !h)
         return refuse(tr("M493.3 needs Z (the TLO) or H (the tool tip's height above Z0)."));
-    if (auto r = MachineSession::validateOffset(
-            z ? tr("The tool length offset") : tr("The height above Z0"), z ? *z : *h);
-        !r)
+    // The community firmware adds H to its "current tool offset", which after any M493.3 Z is the TLO and
+    // not the tool's MCS Z: the TLO it sets is then off by the reference, more than 100 mm on a C1.
+    if (!z)
+        return refuse(
+            tr("Typed, M493.3 H can set a TLO more than 100 mm off: after an M493.3 Z the community "
+               "firmware measures H from the TLO instead of the tool's height. Under \"Set the offset "
+               "by hand\", choose Gauge height above Z0: Toffee works the TLO out from the position "
+               "and sends it as M493.3 Z."));
+    if (auto r = MachineSession::validateOffset(tr("The tool length offset"), *z); !r)
         return refuse(r.error().message);
     ConsoleCheck c = confirm(
         tr("%1 changes the tool length offset the next cut uses. The table records it as set by hand.")

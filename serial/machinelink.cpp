@@ -48,9 +48,8 @@ MachineLink::MachineLink(LineTransport *transport, QObject *parent)
         m_lastError = message;
         m_transport->close();
     });
-    connect(&m_grace, &QTimer::timeout, this, [this] {
-        complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm) + floodNote());
-    });
+    connect(&m_grace, &QTimer::timeout, this,
+        [this] { complete(CommandReply::Status::Halted, haltedMessage() + floodNote()); });
     connect(&m_poll, &QTimer::timeout, this, &MachineLink::requestStatus);
     connect(m_transport, &LineTransport::lineReceived, this, &MachineLink::handleLine);
     connect(m_transport, &LineTransport::errorOccurred, this,
@@ -160,7 +159,7 @@ void MachineLink::handleReplyLine(const QByteArray &line, ReplyKind kind)
     switch (kind) {
     case ReplyKind::Ok:
         if (!m_alarm.isEmpty()) {
-            complete(CommandReply::Status::Halted, tr("The machine halted: %1").arg(m_alarm) + floodNote());
+            complete(CommandReply::Status::Halted, haltedMessage() + floodNote());
         } else if (end == ReplyEnd::Script && m_scriptRunning) {
             keep(line); // the acknowledgement, or one of the script's own lines' "ok"
         } else {
@@ -242,6 +241,14 @@ void MachineLink::keep(const QByteArray &line)
         ++m_droppedLines;
     }
     m_lines.append(line);
+}
+
+// The firmware's own words, and what they mean when Toffee knows the line.
+QString MachineLink::haltedMessage() const
+{
+    const QString meaning = haltLineMeaning(m_alarm);
+    const QString said = tr("The machine halted: %1").arg(m_alarm);
+    return meaning.isEmpty() ? said : said + u' ' + meaning;
 }
 
 QString MachineLink::floodNote() const

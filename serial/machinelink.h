@@ -113,6 +113,7 @@ private:
     void handleClosed();
     void keep(const QByteArray &line);
     [[nodiscard]] QString floodNote() const;
+    [[nodiscard]] QString haltedMessage() const;
 
     LineTransport *m_transport;
     QList<Pending> m_queue;

@@ -66,7 +66,8 @@ ReplyKind classifyReply(QByteArrayView line)
         return ReplyKind::Error;
     if (line.startsWith("ALARM:"))
         return ReplyKind::Alarm;
-    // The one halting line the firmware prints without a prefix (M491 on an unhomed machine: halt 2).
+    // "Machine has not been homed" is the stock firmware's halting line without a prefix (CARVERA.md: M491 on
+    // an unhomed machine, halt 2); the community firmware says "ERROR: Machine has not been homed. …".
     if (line.startsWith("ERROR:") || line == "Machine has not been homed")
         return ReplyKind::HaltError;
     if (line.startsWith('<') && line.endsWith('>'))
@@ -86,9 +87,14 @@ ReplyEnd replyEndFor(QByteArrayView line)
         return ReplyEnd::Ok;
     if (line == "version")
         return ReplyEnd::Line;
-    // The firmware's shell: $X says nothing when the machine is not halted, and its lower-case commands
-    // (version, echo, ls, …) are answered without "ok".
-    if (line.startsWith("$X") || line.startsWith("$x") || (line.front() >= 'a' && line.front() <= 'z'))
+    // The firmware's shell (SimpleShell): $G, $# and $H end with "ok"; $X says nothing when the machine is
+    // not halted; $I, $J, $S, $F and $O print what they print and no "ok"; any other $ is "error:Invalid
+    // statement"; its lower-case commands (version, echo, ls, …) are answered without "ok".
+    if (line.front() == '$') {
+        const char second = line.size() > 1 ? line.at(1) : '\0';
+        return second == 'G' || second == '#' || second == 'H' ? ReplyEnd::Ok : ReplyEnd::Quiet;
+    }
+    if (line.front() >= 'a' && line.front() <= 'z')
         return ReplyEnd::Quiet;
     if (const auto block = GCodeBlock::read(line);
         block && (block.value().has('M', 491) || block.value().has('M', 491.1) || block.value().has('M', 6)))
@@ -265,8 +271,9 @@ QString haltMeaning(int reason)
                   "shorter than expected.");
     case 4:
         return tr(
-            "Measuring on the tool setter failed: a break test found the tool broken, the tolerance was "
-            "too small, or the calibration failed.");
+            "Measuring on the tool setter failed: the setter was not touched (the tool may be missing or "
+            "much "
+            "shorter than expected), a break test found the tool broken, or the tolerance was too small.");
     case 5:
         return tr("The tool changer could not home.");
     case 6:
@@ -303,6 +310,20 @@ QString haltRecovery(int reason)
     if (reason == 41)
         return tr("This halt needs the machine switched off and on again.");
     return tr("Check the machine, then Unlock ($X).");
+}
+
+QString haltLineMeaning(QStringView message)
+{
+    if (message.startsWith(u"Calibrate fail"))
+        return tr("The tool setter was never touched: the tool may be missing, broken or much shorter than "
+                  "expected. Check the spindle, then Unlock.");
+    if (message.startsWith(u"Probe failed to trigger"))
+        return haltMeaning(3) + u' ' + haltRecovery(3);
+    if (message.startsWith(u"Machine has not been homed"))
+        return tr("Unlock, home the machine, then try again.");
+    if (message.startsWith(u"Invalid tool") || message.contains(u"not defined in tool slots"))
+        return haltMeaning(6) + u' ' + haltRecovery(6);
+    return {};
 }
 
 std::optional<FirmwareInfo> parseVersion(QByteArrayView line)

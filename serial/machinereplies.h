@@ -142,5 +142,9 @@ enum class ReplyEnd {
 [[nodiscard]] QString haltMeaning(int reason);
 // Whether $X clears it (1-16), or it needs a reset (21-26) or a power cycle (41).
 [[nodiscard]] QString haltRecovery(int reason);
+// What a halting line the firmware prints means and what to do, for the lines Toffee knows ("Calibrate
+// fail!", "Probe failed to trigger …", "Machine has not been homed …", "Invalid tool: T…"); empty for others,
+// whose meaning the status report's halt reason gives.
+[[nodiscard]] QString haltLineMeaning(QStringView message);
 
 } // namespace Toffee

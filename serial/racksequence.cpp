@@ -169,9 +169,9 @@ void RackSequence::check(int index)
     const bool hasReference = offsets && (!offsets->referenceMz || *offsets->referenceMz != 0.0);
     if (m_connection->activeTool() == tool && hasReference)
         return testInSpindle(index);
-    // The change measures the tool too (and a tool already in the spindle is measured where it is, so that a
-    // machine just switched on has its reference again); that measurement is not stored: a broken tool's
-    // would replace the TLO it is about to be compared with.
+    // The change measures the tool too (and a tool already in the spindle is measured where it is when the
+    // machine reports an uncalibrated reference of 0); that measurement is not stored: a broken tool's would
+    // replace the TLO it is about to be compared with.
     m_connection->session()->changeTool(tool, step([this, index](const SessionResult &r) {
         if (!r.ok())
             return settle(index, RackStep::State::Failed, r);

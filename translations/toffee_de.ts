@@ -456,10 +456,6 @@
         <translation>Der Taster hat innerhalb seines Sicherheitsabstands nicht ausgelöst: Das Werkzeug fehlt möglicherweise, ist gebrochen oder viel kürzer als erwartet.</translation>
     </message>
     <message>
-        <source>Measuring on the tool setter failed: a break test found the tool broken, the tolerance was too small, or the calibration failed.</source>
-        <translation>Die Messung am Werkzeugtaster ist fehlgeschlagen: Ein Bruchtest hat das Werkzeug als gebrochen erkannt, die Toleranz war zu klein, oder die Kalibrierung ist fehlgeschlagen.</translation>
-    </message>
-    <message>
         <source>The tool changer could not home.</source>
         <translation>Der Werkzeugwechsler konnte keine Referenzfahrt ausführen.</translation>
     </message>
@@ -780,10 +776,6 @@
         <translation>Die gespeicherte TLO von T%1 wurde gegen Referenz-MCS-Z %2 gemessen, die der Maschine ist aber %3: T%1 wird beim Wechsel vermessen.</translation>
     </message>
     <message>
-        <source>the machine reports no reference (none measured since it started, or a firmware that does not say), so T%1&apos;s stored TLO cannot be checked against it: it is measured at its change.</source>
-        <translation>die Maschine meldet keine Referenz (seit dem Start keine vermessen, oder eine Firmware, die sie nicht angibt), daher kann die gespeicherte TLO von T%1 nicht gegen sie geprüft werden: T%1 wird beim Wechsel vermessen.</translation>
-    </message>
-    <message>
         <source>T%1&apos;s stored TLO does not say which reference it was measured against: it is measured at its change.</source>
         <translation>Bei der gespeicherten TLO von T%1 ist nicht vermerkt, gegen welche Referenz sie gemessen wurde: T%1 wird beim Wechsel vermessen.</translation>
     </message>
@@ -806,6 +798,22 @@
     <message>
         <source>this is not valid JSON: there is more text after the library.</source>
         <translation>Das ist kein gültiges JSON: Nach der Bibliothek folgt weiterer Text.</translation>
+    </message>
+    <message>
+        <source>the machine reports no reference (an uncalibrated reference of 0, or a firmware that does not say), so T%1&apos;s stored TLO cannot be checked against it: it is measured at its change.</source>
+        <translation>die Maschine meldet keine Referenz (eine unkalibrierte Referenz von 0 oder eine Firmware, die sie nicht nennt), daher kann die gespeicherte Längenkorrektur von T%1 nicht mit ihr geprüft werden: T%1 wird beim Wechsel vermessen.</translation>
+    </message>
+    <message>
+        <source>Measuring on the tool setter failed: the setter was not touched (the tool may be missing or much shorter than expected), a break test found the tool broken, or the tolerance was too small.</source>
+        <translation>Das Vermessen am Werkzeugtaster ist fehlgeschlagen: Der Taster wurde nicht berührt (das Werkzeug fehlt vielleicht oder ist viel kürzer als erwartet), eine Bruchprüfung hat das Werkzeug als gebrochen erkannt, oder die Toleranz war zu klein.</translation>
+    </message>
+    <message>
+        <source>The tool setter was never touched: the tool may be missing, broken or much shorter than expected. Check the spindle, then Unlock.</source>
+        <translation>Der Werkzeugtaster wurde nie berührt: Das Werkzeug fehlt vielleicht, ist gebrochen oder viel kürzer als erwartet. Prüfen Sie die Spindel, dann Entsperren.</translation>
+    </message>
+    <message>
+        <source>Unlock, home the machine, then try again.</source>
+        <translation>Entsperren, die Maschine referenzieren, dann erneut versuchen.</translation>
     </message>
 </context>
 <context>
@@ -1201,10 +1209,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die Werkzeuglängenkorrektur</translation>
     </message>
     <message>
-        <source>The height above Z0</source>
-        <translation>Die Höhe über Z0</translation>
-    </message>
-    <message>
         <source>%1 changes the tool length offset the next cut uses. The table records it as set by hand.</source>
         <translation>%1 ändert die Werkzeuglängenkorrektur, die der nächste Schnitt verwendet. Die Tabelle speichert sie als von Hand gesetzt.</translation>
     </message>
@@ -1247,6 +1251,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
         <translation>%1 vermisst das Werkzeug: Die Maschine fährt zum Werkzeugtaster, und die gemessene TLO wird in der Tabelle gespeichert.</translation>
+    </message>
+    <message>
+        <source>Typed, M493.3 H can set a TLO more than 100 mm off: after an M493.3 Z the community firmware measures H from the TLO instead of the tool&apos;s height. Under &quot;Set the offset by hand&quot;, choose Gauge height above Z0: Toffee works the TLO out from the position and sends it as M493.3 Z.</source>
+        <translation>Von Hand eingegeben kann M493.3 H eine Längenkorrektur setzen, die um mehr als 100 mm falsch ist: Nach einem M493.3 Z misst die Community-Firmware H von der Längenkorrektur statt von der Höhe des Werkzeugs. Wählen Sie unter „Korrektur von Hand setzen“ „Lehrenhöhe über Z0“: Toffee berechnet die Längenkorrektur aus der Position und sendet sie als M493.3 Z.</translation>
     </message>
 </context>
 <context>

@@ -456,10 +456,6 @@
         <translation>探针在安全余量内未触发：刀具可能缺失、已断，或比预期短得多。</translation>
     </message>
     <message>
-        <source>Measuring on the tool setter failed: a break test found the tool broken, the tolerance was too small, or the calibration failed.</source>
-        <translation>在对刀仪上测量失败：断刀检测发现刀具已断、公差太小，或校准失败。</translation>
-    </message>
-    <message>
         <source>The tool changer could not home.</source>
         <translation>换刀装置无法回零。</translation>
     </message>
@@ -780,10 +776,6 @@
         <translation>T%1 的已存 TLO 是相对于基准 MCS Z %2 测得的，但机床的基准为 %3：换刀时将对其对刀。</translation>
     </message>
     <message>
-        <source>the machine reports no reference (none measured since it started, or a firmware that does not say), so T%1&apos;s stored TLO cannot be checked against it: it is measured at its change.</source>
-        <translation>机床未报告基准（开机以来尚未测量，或固件不报告），因此无法核对 T%1 的已存 TLO：换刀时将重新对刀。</translation>
-    </message>
-    <message>
         <source>T%1&apos;s stored TLO does not say which reference it was measured against: it is measured at its change.</source>
         <translation>T%1 的已存 TLO 未注明是相对哪个基准测量的：换刀时将重新对刀。</translation>
     </message>
@@ -806,6 +798,22 @@
     <message>
         <source>this is not valid JSON: there is more text after the library.</source>
         <translation>这不是有效的 JSON：刀具库之后还有其他文本。</translation>
+    </message>
+    <message>
+        <source>the machine reports no reference (an uncalibrated reference of 0, or a firmware that does not say), so T%1&apos;s stored TLO cannot be checked against it: it is measured at its change.</source>
+        <translation>机床未报告基准（基准为 0 即未校准，或固件不报告），因此无法据此检查 T%1 的已存 TLO：换刀时将对其测量。</translation>
+    </message>
+    <message>
+        <source>Measuring on the tool setter failed: the setter was not touched (the tool may be missing or much shorter than expected), a break test found the tool broken, or the tolerance was too small.</source>
+        <translation>在对刀仪上测量失败：对刀仪未被触碰（刀具可能缺失或比预期短得多）、断刀检测判定刀具已断，或公差过小。</translation>
+    </message>
+    <message>
+        <source>The tool setter was never touched: the tool may be missing, broken or much shorter than expected. Check the spindle, then Unlock.</source>
+        <translation>对刀仪始终未被触碰：刀具可能缺失、已断或比预期短得多。请检查主轴，然后解锁。</translation>
+    </message>
+    <message>
+        <source>Unlock, home the machine, then try again.</source>
+        <translation>请解锁、让机床回原点，然后重试。</translation>
     </message>
 </context>
 <context>
@@ -1201,10 +1209,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>刀具长度补偿</translation>
     </message>
     <message>
-        <source>The height above Z0</source>
-        <translation>Z0 以上的高度</translation>
-    </message>
-    <message>
         <source>%1 changes the tool length offset the next cut uses. The table records it as set by hand.</source>
         <translation>%1 会更改下一次切削所用的刀具长度补偿。刀具表会将其记录为手动设置。</translation>
     </message>
@@ -1247,6 +1251,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
         <translation>%1 会对刀：机床移动到对刀仪，测得的 TLO 将记录到刀具表中。</translation>
+    </message>
+    <message>
+        <source>Typed, M493.3 H can set a TLO more than 100 mm off: after an M493.3 Z the community firmware measures H from the TLO instead of the tool&apos;s height. Under &quot;Set the offset by hand&quot;, choose Gauge height above Z0: Toffee works the TLO out from the position and sends it as M493.3 Z.</source>
+        <translation>手动输入的 M493.3 H 可能使 TLO 偏差超过 100 mm：在 M493.3 Z 之后，社区固件从 TLO 而不是刀具高度起算 H。请在“手动设置补偿”中选择“Z0 以上的量规高度”：Toffee 会根据位置算出 TLO 并以 M493.3 Z 发送。</translation>
     </message>
 </context>
 <context>

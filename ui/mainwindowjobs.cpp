@@ -73,7 +73,7 @@ std::optional<double> MainWindow::machineReference() const
 {
     const auto &offsets = m_connection->lastOffsets();
     if (!offsets || offsets->referenceMz == 0.0)
-        return std::nullopt; // nothing measured since the machine started (docs/CARVERA.md § 3)
+        return std::nullopt; // a reference of 0 is an uncalibrated machine (docs/CARVERA.md § 3)
     return offsets->referenceMz;
 }
 

@@ -36,7 +36,7 @@ Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &
                            .arg(tool)
                            .arg(staleDays) };
     if (check == ReferenceCheck::Required && !machineReferenceMz)
-        return Error { tr("the machine reports no reference (none measured since it started, or a firmware "
+        return Error { tr("the machine reports no reference (an uncalibrated reference of 0, or a firmware "
                           "that does not say), so T%1's stored TLO cannot be checked against it: it is "
                           "measured at its change.")
                            .arg(tool) };

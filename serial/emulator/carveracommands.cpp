@@ -5,6 +5,7 @@
 #include "serial/emulator/carveraemulator.h"
 
 #include <cmath>
+#include <limits>
 
 #include "model/gcode/carvera.h"
 #include "model/limits.h"
@@ -148,9 +149,15 @@ void CarveraEmulator::selectTool(const GCodeBlock &block, const QByteArray &)
     const auto t = block.value('T');
     if (!t)
         return haltWith("ERROR: No tool was set!", HaltReason::AtcNoTool);
-    if (!isToolNumber(*t))
+    if (m_firmware == Firmware::Stock && !isToolNumber(*t))
         return invalidTool(*t);
-    m_tool = int(*t);
+    // The community firmware takes any number, as an int (ATCHandler: active_tool = get_value('T')): T-2 and
+    // T1000000 are "ok", and its status report then says T:-2. Beyond an int, x86 gives INT_MIN.
+    const double whole = std::trunc(*t);
+    m_tool = std::isfinite(whole) && whole >= double(std::numeric_limits<int>::min())
+            && whole <= double(std::numeric_limits<int>::max())
+        ? int(whole)
+        : std::numeric_limits<int>::min();
     finish();
 }
 
@@ -229,7 +236,10 @@ void CarveraEmulator::saveXy()
 void CarveraEmulator::calibrate(Calibration kind, double tolerance, int repeats)
 {
     if (!m_homed)
-        return haltWith("Machine has not been homed", HaltReason::HomeFail);
+        return haltWith(m_firmware == Firmware::Stock
+                ? QByteArray("Machine has not been homed") // CARVERA.md's words
+                : QByteArray("ERROR: Machine has not been homed. Use M888 to disable homed check"),
+            HaltReason::HomeFail);
     const bool breakTest = kind == Calibration::BreakTest;
     if (breakTest)
         echo("M5");
@@ -301,12 +311,18 @@ bool CarveraEmulator::probeFails(double trigger)
     return fail || trigger < kZTravelLimit;
 }
 
+// The setter never triggered. The community firmware's G38.6 reports where it stopped, untriggered, and halts
+// with a failed calibration (ZProbe::calibrate_Z); CARVERA.md gives the stock firmware's words.
 void CarveraEmulator::failProbe()
 {
     m_mpos[2] = kZTravelLimit;
-    haltWith("ALARM: Probe failed to trigger within safety margin (" + fixed(kClearanceZ - kZTravelLimit, 2)
-            + "mm)",
-        HaltReason::ProbeFail);
+    if (m_firmware == Firmware::Stock) {
+        return haltWith("ALARM: Probe failed to trigger within safety margin ("
+                + fixed(kClearanceZ - kZTravelLimit, 2) + "mm)",
+            HaltReason::ProbeFail);
+    }
+    say("[PRB:" + fixed(m_setter[0]) + ',' + fixed(m_setter[1]) + ',' + fixed(kZTravelLimit) + ":0]");
+    haltWith("ERROR: Calibrate fail!", HaltReason::CalibrateFail);
 }
 
 void CarveraEmulator::returnTo(double x, double y)

@@ -159,7 +159,7 @@ private:
     void processNext();
     void execute(const QByteArray &line);
     bool shellCommand(const QByteArray &line);
-    void systemCommand(const QByteArray &upper);
+    void systemCommand(const QByteArray &line);
     void say(const QByteArray &line);
     // A line of a running script, echoed as the firmware echoes it, with its "ok".
     void echo(const QByteArray &line);

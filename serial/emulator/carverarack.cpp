@@ -99,7 +99,7 @@ bool CarveraEmulator::shellCommand(const QByteArray &line)
         return true;
     }
     if (line.startsWith('$')) {
-        systemCommand(line.toUpper());
+        systemCommand(line);
         return true;
     }
     if (!line.isEmpty() && line.front() >= 'a' && line.front() <= 'z') {
@@ -110,24 +110,60 @@ bool CarveraEmulator::shellCommand(const QByteArray &line)
     return false;
 }
 
-void CarveraEmulator::systemCommand(const QByteArray &upper)
+// The firmware's grbl commands (SimpleShell), by their second character as sent (`$x` is no `$X`): $G and $I
+// the modal state (only $G with "ok"), $# the work offsets with "ok", $X an unlock that says nothing when
+// nothing is halted, $H homing; $J, $S, $F and $O end without "ok" (this emulator neither jogs nor switches);
+// any other letter "error:Invalid statement", and a bare "$" the shell's unknown command. The shell takes
+// them while halted too ($H clears the halt first).
+void CarveraEmulator::systemCommand(const QByteArray &line)
 {
-    if (upper == "$X") {
+    if (line.size() < 2)
+        return refuse(line);
+    // The state as the peer prints it at rest: the shell asks a tool manager the Carvera does not have (T0).
+    const QByteArray state = "[G0 G54 G17 G21 G90 G94 M0 M5 M9 T0 F5000.0000 S1.0000]";
+    switch (line.at(1)) {
+    case 'X':
         if (!isHalted())
             return endSilently(); // not a word when there is nothing to unlock
         m_haltReason = 0;
         say(kHaltLine);
         say("[Caution: Unlocked]");
-        finish();
-    } else if (isHalted()) {
-        say("error:Alarm lock");
-        endSilently();
-    } else if (upper == "$H") {
+        return finish();
+    case 'H':
+        m_haltReason = 0;
         m_homed = true;
         m_mpos = { 0.0, 0.0, 0.0 };
-        finish();
-    } else {
-        refuse(upper);
+        return finish();
+    case 'G':
+        say(state);
+        return finish();
+    case 'I':
+        say(state);
+        return endSilently();
+    case '#':
+        for (const char *name : { "G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3" }) {
+            const bool g54 = qstrcmp(name, "G54") == 0;
+            say(QByteArray("[") + name + ':' + fixed(g54 ? m_wcs[0] : 0.0, 4) + ','
+                + fixed(g54 ? m_wcs[1] : 0.0, 4) + ',' + fixed(g54 ? m_wcs[2] : 0.0, 4)
+                + ",0.0000,0.0000,0.0000]");
+        }
+        say("[G28:0.0000,0.0000,0.0000]");
+        say("[G30:0.0000,0.0000,0.0000]");
+        say("[G92:0.0000,0.0000,0.0000,0.0000,0.0000]");
+        say("[TL0:0.0000]");
+        say("[PRB:0.0000,0.0000,0.0000:0]");
+        return finish();
+    case 'J':
+    case 'S':
+        return endSilently();
+    case 'F':
+    case 'O':
+        if (!line.contains('S'))
+            say("usage: $O S100");
+        return endSilently();
+    default:
+        say("error:Invalid statement");
+        return endSilently();
     }
 }
 
@@ -300,7 +336,9 @@ void CarveraEmulator::announceChange(int newTool)
 
 void CarveraEmulator::invalidTool(double tool)
 {
-    haltWith("ALARM: Invalid tool: T" + numberBytes(tool), HaltReason::AtcToolInvalid);
+    haltWith((m_firmware == Firmware::Stock ? "ALARM: Invalid tool: T" : "ERROR: Invalid tool: T")
+            + numberBytes(tool),
+        HaltReason::AtcToolInvalid);
 }
 
 } // namespace Toffee

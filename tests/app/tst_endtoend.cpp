@@ -341,7 +341,7 @@ private Q_SLOTS:
         QTest::newRow("link closed") << u"close@M493.2"_s << QStringList { u"select-tool"_s, u"3"_s } << 5
                                      << u"lost"_s;
         QTest::newRow("probe fails") << u"fail-probe@M491"_s << QStringList { u"probe"_s } << 4
-                                     << u"Probe failed to trigger"_s;
+                                     << u"Calibrate fail! The tool setter was never touched"_s;
     }
     void reportsFaultsAndWorksAgain()
     {

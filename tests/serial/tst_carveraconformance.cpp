@@ -157,6 +157,21 @@ void script(Machine &run)
             d(said);
         });
     });
+    // The shell's grbl commands: $I prints the modal state and no "ok", $G the same with one; neither may
+    // leave the link waiting, nor an "ok" for the next command to take.
+    for (const char *typed : { "$I", "$G", "$Q" }) {
+        run.step(u"typed %1"_s.arg(QString::fromLatin1(typed)), [&c, typed](Done d) {
+            return c.sendLine(typed, [d](const CommandReply &reply, const SessionResult &r) {
+                SessionResult said = r;
+                const bool state = reply.lines.size() == 1 && reply.lines.front().startsWith("[G0 G54");
+                said.outcome = reply.ok() && state                  ? Outcome::Success
+                    : reply.status == CommandReply::Status::Refused ? Outcome::Refused
+                                                                    : Outcome::MachineError;
+                d(said);
+            });
+        });
+        run.step(u"status after %1"_s.arg(QString::fromLatin1(typed)), [&c](Done d) { return c.status(d); });
+    }
 }
 
 } // namespace
@@ -234,6 +249,11 @@ private Q_SLOTS:
         QVERIFY2(find(u"status after the change"_s).contains(u"Alarm | H:7"_s),
             qPrintable(find(u"status after the change"_s)));
         QVERIFY(find(u"typed $X, not halted"_s).contains(u"success"_s)); // not a word, and no hang
+        QVERIFY2(find(u"typed $I"_s).contains(u"success"_s), qPrintable(find(u"typed $I"_s)));
+        QVERIFY2(find(u"typed $G"_s).contains(u"success"_s), qPrintable(find(u"typed $G"_s)));
+        QVERIFY2(find(u"typed $Q"_s).contains(u"refused"_s), qPrintable(find(u"typed $Q"_s)));
+        QVERIFY2(find(u"status after $I"_s).contains(u"success | T-1 | Idle"_s),
+            qPrintable(find(u"status after $I"_s)));
         // What both recorded: the probe, the sets, the verdicts, in one table.
         QCOMPARE(firmware.table().tools().size(), emulated.table().tools().size());
         QVERIFY(firmware.table().find(1));

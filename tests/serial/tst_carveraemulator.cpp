@@ -212,8 +212,17 @@ private Q_SLOTS:
         CarveraEmulator emulator;
         emulator.setToolLength(1, -5.0);
         const QList<QByteArray> out = command(emulator, "M491");
-        QVERIFY(out.contains("ALARM: Probe failed to trigger within safety margin (151.40mm)"));
-        QCOMPARE(emulator.haltReason(), 3);
+        // The community firmware's G38.6 stops untriggered at the end of its travel (ZProbe::calibrate_Z).
+        QVERIFY(out.contains("[PRB:-4.965,-54.480,-154.400:0]"));
+        QVERIFY(out.contains("ERROR: Calibrate fail!"));
+        QCOMPARE(emulator.haltReason(), 4);
+        // The stock firmware's words are CARVERA.md's.
+        CarveraEmulator stock;
+        stock.setFirmware(CarveraEmulator::Firmware::Stock);
+        stock.setToolLength(1, -5.0);
+        QVERIFY(command(stock, "M491")
+                    .contains("ALARM: Probe failed to trigger within safety margin (151.40mm)"));
+        QCOMPARE(stock.haltReason(), 3);
     }
 
     void refusesProbingUnhomed()
@@ -221,8 +230,13 @@ private Q_SLOTS:
         CarveraEmulator emulator;
         emulator.setHomed(false);
         const QList<QByteArray> out = command(emulator, "M491");
-        QVERIFY(out.contains("Machine has not been homed"));
+        QVERIFY(out.contains("ERROR: Machine has not been homed. Use M888 to disable homed check"));
         QCOMPARE(emulator.haltReason(), 2);
+        CarveraEmulator stock;
+        stock.setFirmware(CarveraEmulator::Firmware::Stock);
+        stock.setHomed(false);
+        QVERIFY(command(stock, "M491").contains("Machine has not been homed"));
+        QCOMPARE(stock.haltReason(), 2);
     }
 
     void changesToolsAsTheFirmwareDoes()
@@ -255,7 +269,7 @@ private Q_SLOTS:
         QCOMPARE(emulator.tool(), -1);
         QVERIFY(status(emulator).contains("|T:-1,0.000,-1,0|"));
         out = command(emulator, "M6 T-5");
-        QCOMPARE(out.front(), QByteArray("ALARM: Invalid tool: T-5"));
+        QCOMPARE(out.front(), QByteArray("ERROR: Invalid tool: T-5"));
         QCOMPARE(emulator.haltReason(), 6);
     }
 
@@ -344,15 +358,15 @@ private Q_SLOTS:
         QCOMPARE(out.last(), QByteArray("TEST: no terminator"));
         emulator.injectFault(CarveraEmulator::Fault::FailProbe);
         out = command(emulator, "M491");
-        QVERIFY(out.contains("ALARM: Probe failed to trigger within safety margin (151.40mm)"));
+        QVERIFY(out.contains("ERROR: Calibrate fail!"));
         // Aimed at the break test, the fault leaves a plain probe alone (it once hit the first probe).
         QVERIFY(command(emulator, "$X").contains("[Caution: Unlocked]"));
         emulator.injectFault(CarveraEmulator::Fault::FailProbe, "M491.1");
         out = command(emulator, "M491");
-        QVERIFY(!out.join('\n').contains("ALARM"));
+        QVERIFY(!out.join('\n').contains("Calibrate fail"));
         QCOMPARE(out.last(), QByteArray("Done ATC"));
         out = command(emulator, "M491.1 H0.1");
-        QVERIFY(out.join('\n').contains("ALARM: Probe failed to trigger"));
+        QVERIFY(out.contains("ERROR: Calibrate fail!"));
         QVERIFY(command(emulator, "$X").contains("[Caution: Unlocked]"));
         QSignalSpy closed(&emulator, &CarveraEmulator::linkClosed);
         emulator.injectFault(CarveraEmulator::Fault::CloseLink);

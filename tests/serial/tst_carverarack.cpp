@@ -20,7 +20,7 @@ bool near(double a, double b)
     return std::fabs(a - b) < 1e-9;
 }
 
-const QByteArray kProbeAlarm = "ALARM: Probe failed to trigger within safety margin (151.40mm)";
+const QByteArray kProbeAlarm = "ERROR: Calibrate fail!"; // the setter never touched
 
 } // namespace
 
@@ -209,10 +209,12 @@ private Q_SLOTS:
 
     void alarmsOnAnInvalidTool()
     {
-        for (const QByteArray t : { "1000000", "-2", "2.5" }) {
+        // The firmware halts above T1000000; it would take T-2 for a manual tool and T2.5 for T2, where the
+        // emulator halts too (docs/CARVERA.md § 9; Toffee sends neither).
+        for (const QByteArray t : { "1000001", "-2", "2.5" }) {
             CarveraEmulator emulator;
             QCOMPARE(command(emulator, "M6 T" + t),
-                (Lines { "ALARM: Invalid tool: T" + t, CarveraEmulator::kHaltLine, "ok" }));
+                (Lines { "ERROR: Invalid tool: T" + t, CarveraEmulator::kHaltLine, "ok" }));
             QCOMPARE(emulator.haltReason(), 6);
             QCOMPARE(emulator.tool(), 1);
         }
@@ -318,7 +320,7 @@ private Q_SLOTS:
         emulator.injectFault(CarveraEmulator::Fault::FailProbe, "M6");
         Lines out = command(emulator, "M6 T2");
         QVERIFY(out.contains(kProbeAlarm));
-        QCOMPARE(emulator.haltReason(), 3);
+        QCOMPARE(emulator.haltReason(), 4);
         command(emulator, "$X");
         emulator.injectFault(CarveraEmulator::Fault::DropOk, "M6");
         out = command(emulator, "M6 T3", 200);

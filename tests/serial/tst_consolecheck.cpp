@@ -57,6 +57,8 @@ private Q_SLOTS:
         QTest::newRow("spindle on") << u"M3 S10000"_s << false << Verdict::Confirm << u"spindle"_s;
         QTest::newRow("home") << u"$H"_s << false << Verdict::Confirm << u"homes"_s;
         QTest::newRow("jog") << u"$J=G91 X1 F100"_s << false << Verdict::Confirm << u"jogs"_s;
+        QTest::newRow("M493.3 H: 115 mm off after a Z")
+            << u"M493.3 H12.5"_s << false << Verdict::Refuse << u"Gauge height above Z0"_s;
         QTest::newRow("set TLO") << u"M493.3 Z-30.488"_s << false << Verdict::Confirm << u"set by hand"_s;
         QTest::newRow("select tool") << u"M493.2 T3"_s << false << Verdict::Confirm
                                      << u"keeps the current TLO"_s;
@@ -80,7 +82,7 @@ private Q_SLOTS:
 
     void onlyM4933IsRecordedAsAnOffset()
     {
-        QVERIFY(ConsoleCheck::check(u"M493.3 H12.5"_s, false).setsTlo);
+        QVERIFY(ConsoleCheck::check(u"M493.3 Z12.5"_s, false).setsTlo);
         QVERIFY(!ConsoleCheck::check(u"M493.4"_s, false).setsTlo);
         QVERIFY(!ConsoleCheck::check(u"M6 T2"_s, false).setsTlo);
     }

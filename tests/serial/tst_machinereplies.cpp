@@ -94,6 +94,12 @@ private Q_SLOTS:
         QTest::newRow("G0 X1") << QByteArray("G0 X1") << int(ReplyEnd::Ok);
         QTest::newRow("version") << QByteArray("version") << int(ReplyEnd::Line);
         QTest::newRow("$X") << QByteArray("$X") << int(ReplyEnd::Quiet);
+        QTest::newRow("$I: the state, no ok") << QByteArray("$I") << int(ReplyEnd::Quiet);
+        QTest::newRow("$J X1: no ok") << QByteArray("$J X1") << int(ReplyEnd::Quiet);
+        QTest::newRow("$G") << QByteArray("$G") << int(ReplyEnd::Ok);
+        QTest::newRow("$#") << QByteArray("$#") << int(ReplyEnd::Ok);
+        QTest::newRow("$H") << QByteArray("$H") << int(ReplyEnd::Ok);
+        QTest::newRow("$Q: error:Invalid statement") << QByteArray("$Q") << int(ReplyEnd::Quiet);
         QTest::newRow("echo echo") << QByteArray("echo echo") << int(ReplyEnd::Quiet);
         QTest::newRow("empty") << QByteArray("") << int(ReplyEnd::Ok);
     }
@@ -332,6 +338,34 @@ private Q_SLOTS:
         QVERIFY(haltRecovery(4).contains(u"Unlock"_s));
         QVERIFY(haltRecovery(23).contains(u"reset"_s));
         QVERIFY(haltRecovery(41).contains(u"off and on"_s));
+    }
+
+    // The halting lines the firmwares print, explained; others are left to the status report's reason.
+    void explainsTheHaltingLinesItKnows_data()
+    {
+        QTest::addColumn<QByteArray>("line");
+        QTest::addColumn<QString>("said");
+        QTest::newRow("setter never touched") << QByteArray("ERROR: Calibrate fail!") << u"never touched"_s;
+        QTest::newRow("stock: safety margin")
+            << QByteArray("ALARM: Probe failed to trigger within safety margin (151.40mm)")
+            << u"safety margin"_s;
+        QTest::newRow("community: not homed")
+            << QByteArray("ERROR: Machine has not been homed. Use M888 to disable homed check") << u"home"_s;
+        QTest::newRow("stock: not homed") << QByteArray("Machine has not been homed") << u"home"_s;
+        QTest::newRow("invalid tool") << QByteArray("ERROR: Invalid tool: T1000001") << u"not a valid tool"_s;
+        QTest::newRow("no slot") << QByteArray("ERROR: Tool T9 not defined in tool slots")
+                                 << u"not a valid tool"_s;
+        QTest::newRow("unknown") << QByteArray("ERROR: Can not do ATC in laser mode!") << QString();
+    }
+    void explainsTheHaltingLinesItKnows()
+    {
+        QFETCH(QByteArray, line);
+        QFETCH(QString, said);
+        const QString meaning = haltLineMeaning(replyMessage(line));
+        if (said.isEmpty())
+            QVERIFY(meaning.isEmpty());
+        else
+            QVERIFY2(meaning.contains(said), qPrintable(meaning));
     }
 };
 
