@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "serial/linetransport.h"
+#include "serial/transport/linetransport.h"
 
 namespace Toffee {
 

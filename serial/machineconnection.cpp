@@ -3,7 +3,8 @@
 
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulatortransport.h"
-#include "serial/serialporttransport.h"
+#include "serial/transport/serialporttransport.h"
+#include "serial/transport/tcptransport.h"
 
 using namespace Qt::StringLiterals;
 
@@ -80,7 +81,25 @@ std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target)
             machine->setTiming(CarveraEmulator::realisticTiming());
         return transport;
     }
-    return std::make_unique<SerialPortTransport>(target.port, target.baud);
+    if (target.isNetwork()) {
+        auto transport
+            = std::make_unique<TcpTransport>(TcpTransport::Address { target.host, target.tcpPort });
+        transport->setConnectTimeoutMs(target.timeoutMs);
+        transport->setProtocol(target.protocol);
+        return transport;
+    }
+    auto transport = std::make_unique<SerialPortTransport>(target.port, target.baud);
+    transport->setProtocol(target.protocol);
+    return transport;
+}
+
+QString ConnectionTarget::name() const
+{
+    if (emulator)
+        return u"emulator"_s;
+    if (isNetwork())
+        return (host.contains(u':') ? u'[' + host + u']' : host) + u':' + QString::number(tcpPort);
+    return port;
 }
 
 void MachineConnection::connectTo(const ConnectionTarget &target)

@@ -6,13 +6,15 @@
 #include <QObject>
 
 #include "serial/machinesession.h"
+#include "serial/transport/tcptransport.h"
 
 namespace Toffee {
 
 class CarveraEmulator;
 class LineTransport;
 
-// Where to find the machine: a serial port at a baud rate, or the built-in emulator.
+// Where to find the machine: a serial port at a baud rate, a host on the network (Wi-Fi), or the built-in
+// emulator.
 struct ConnectionTarget
 {
     bool emulator = true;
@@ -23,6 +25,15 @@ struct ConnectionTarget
     // (toffee --emulator, for a person watching) instead of none (tests).
     bool emulatorStock = false;
     bool emulatorPaced = false;
+    // Not the emulator and a host: the machine's console over TCP (Wi-Fi) instead of the serial port.
+    QString host;
+    quint16 tcpPort = TcpTransport::kDefaultPort;
+    // Plain text or Makera's frames, found on connecting unless forced (serial port and network alike).
+    StreamTransport::Protocol protocol = StreamTransport::Protocol::Auto;
+
+    [[nodiscard]] bool isNetwork() const { return !emulator && !host.isEmpty(); }
+    // "192.168.1.57:2222", "/dev/ttyACM0" or "emulator", as the history and the settings name it.
+    [[nodiscard]] QString name() const;
 };
 
 // The transport a target names: a serial port at its baud rate, or a new built-in emulator. The window's

@@ -2,7 +2,7 @@
 #include "serial/machinelink.h"
 
 #include "model/numberformat.h"
-#include "serial/linetransport.h"
+#include "serial/transport/linetransport.h"
 
 namespace Toffee {
 

@@ -60,7 +60,8 @@ bool plausible(double millimetres)
 ReplyKind classifyReply(QByteArrayView line)
 {
     line = line.trimmed();
-    if (line == "ok")
+    // "ok - ignore: [B2]" is the firmware's "ok" to a line it does not read as a command.
+    if (line == "ok" || line.startsWith("ok - ignore: ["))
         return ReplyKind::Ok;
     if (line.startsWith("error:"))
         return ReplyKind::Error;

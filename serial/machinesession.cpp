@@ -9,7 +9,7 @@
 
 #include "model/numberformat.h"
 #include "model/textparsing.h"
-#include "serial/linetransport.h"
+#include "serial/transport/linetransport.h"
 
 using namespace Qt::StringLiterals;
 

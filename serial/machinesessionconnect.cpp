@@ -8,7 +8,7 @@
 #include <QTimer>
 
 #include "model/numberformat.h"
-#include "serial/linetransport.h"
+#include "serial/transport/linetransport.h"
 
 using namespace Qt::StringLiterals;
 

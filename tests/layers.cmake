@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Fails when a source file includes from a layer above its own. Run as
 #   cmake -DROOT=<source root> -P tests/layers.cmake
-# The layers, lowest first: model ← formats, gcode, library, camimport, job ← document; model, gcode ← emulator ←
-# serial; ui; app.
+# The layers, lowest first: model ← formats, gcode, library, camimport, job ← document; wire ← transport;
+# model, gcode, wire ← emulator; transport, emulator ← serial; ui; app.
 # Includes are written from the source root ("serial/machinesession.h"), so the first folders name the layer.
 
 cmake_minimum_required(VERSION 3.25)
@@ -15,7 +15,7 @@ endif()
 function(layer_of path out)
     foreach(pair "model/document:document" "model/formats:formats" "model/gcode:gcode" "model/library:library"
             "model/camimport:camimport" "model/job:job" "model:model"
-            "serial/emulator:emulator" "serial:serial" "ui:ui" "app:app")
+            "serial/wire:wire" "serial/transport:transport" "serial/emulator:emulator" "serial:serial" "ui:ui" "app:app")
         string(REPLACE ":" ";" pair "${pair}")
         list(GET pair 0 prefix)
         list(GET pair 1 name)
@@ -35,10 +35,12 @@ set(allowed_document model formats library document)
 set(allowed_library model formats gcode library)
 set(allowed_camimport model formats camimport)
 set(allowed_job model formats gcode library job)
-set(allowed_emulator model gcode emulator)
-set(allowed_serial model gcode emulator serial)
-set(allowed_ui model formats gcode document library camimport job emulator serial ui)
-set(allowed_app model formats gcode document library camimport job emulator serial ui app)
+set(allowed_wire wire)
+set(allowed_transport model wire transport)
+set(allowed_emulator model gcode wire emulator)
+set(allowed_serial model gcode wire transport emulator serial)
+set(allowed_ui model formats gcode document library camimport job wire transport emulator serial ui)
+set(allowed_app model formats gcode document library camimport job wire transport emulator serial ui app)
 
 file(GLOB_RECURSE sources RELATIVE ${ROOT}
     ${ROOT}/model/*.h ${ROOT}/model/*.cpp ${ROOT}/serial/*.h ${ROOT}/serial/*.cpp

@@ -55,9 +55,11 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
 
     refreshPorts();
     AppSettings settings;
-    setTarget({ settings.connectionPort().isEmpty() || settings.connectionPort() == kEmulator,
-        settings.connectionPort() == kEmulator ? QString() : settings.connectionPort(),
-        settings.connectionBaud() });
+    ConnectionTarget remembered;
+    remembered.emulator = settings.connectionPort().isEmpty() || settings.connectionPort() == kEmulator;
+    remembered.port = remembered.emulator ? QString() : settings.connectionPort();
+    remembered.baud = settings.connectionBaud();
+    setTarget(remembered);
     updateState();
 }
 
@@ -82,8 +84,10 @@ ConnectionTarget ConnectionPanel::target() const
     QString port = m_port->currentData().toString();
     if (m_port->currentText() != m_port->itemText(m_port->currentIndex()) || port.isEmpty())
         port = m_port->currentText().trimmed(); // typed in
-    ConnectionTarget t { port == kEmulator, port == kEmulator ? QString() : port,
-        m_baud->currentData().toInt() };
+    ConnectionTarget t;
+    t.emulator = port == kEmulator;
+    t.port = t.emulator ? QString() : port;
+    t.baud = m_baud->currentData().toInt();
     t.emulatorStock = m_emulatorStock;
     t.emulatorPaced = m_emulatorPaced;
     return t;

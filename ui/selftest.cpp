@@ -80,7 +80,7 @@ void SelfTest::start(const QElapsedTimer &sinceLaunch)
             });
             probe->probe(false);
         });
-    connection->connectTo({ true, {}, 115200 });
+    connection->connectTo(ConnectionTarget {});
 }
 
 } // namespace Toffee

@@ -29,13 +29,16 @@ Tool tables:
                              missing: what is new, what changes and how, what is unchanged; measured TLOs,
                              wear and notes are kept, inch libraries converted
 
-The machine: toffee-cli (--port DEV [--baud N] | --emulator) [--table FILE] COMMAND
+The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator) [--protocol P] [--table FILE]
+                 COMMAND
+  --host                     the machine over Wi-Fi: its console on TCP port PORT (default 2222)
+  --protocol auto|text|framed  plain text, or Makera's frames (its firmware from 1.0.4); auto finds out
   status                     state, active tool, TLO, positions
   report                     the tool length offsets (M493.4)
   probe                      measure the current tool on the tool setter (M491); the machine moves
   break-test [--tolerance H] re-measure and compare with the stored TLO (M491.1; H >= %1, default %2)
   set-tlo --z V              set the TLO directly (M493.3 Z)
-  set-tlo --above-z0 H       set the TLO from the current position, the tip H above work Z0 (M493.3 H)
+  set-tlo --above-z0 H       set the TLO from the current position, the tip H above work Z0 (M493.3 Z)
   select-tool N              make tool N active without a change (M493.2 T)
   change-tool N [--use-stored-tlo [--stale-days D]]
                              change to tool N and measure it (M6 T); the machine moves. With
@@ -67,6 +70,10 @@ Jobs: toffee-cli job check PROGRAM [--table FILE] [--machine NAME] [--dialect D]
                              interpreter before OUT is written (whole or not at all)
   --rack LIST                the tools the machine's rack holds: 1-6 (a Carvera C1, the default), none, or
                              a list such as 1,2,5-8
+
+Wi-Fi: toffee-cli discover [--seconds S] [--discovery-port P]
+                             the machines heard announcing themselves (UDP 3333, default 3 s): name, address,
+                             port, and whether another program is connected to it
 
 The history: toffee-cli history [--machine NAME] [--tool N] [--since DATE] [--json | --csv]
   history add-use --machine NAME --program FILE [--dialect D]
@@ -109,7 +116,8 @@ QString usage()
 
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
     u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s, u"library"_s,
-    u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s };
+    u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s, u"host"_s,
+    u"protocol"_s, u"seconds"_s, u"discovery-port"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"version"_s, u"emulator"_s, u"no-history"_s,
     u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s };
 
@@ -184,6 +192,7 @@ const std::pair<QStringView, Command> kTableCommands[] = {
     { u"history", showHistory },
     { u"library", runLibrary },
     { u"job", runJob },
+    { u"discover", discoverMachines },
 };
 
 } // namespace

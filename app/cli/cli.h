@@ -38,6 +38,7 @@ int simulateProgram(Invocation &call);
 int showHistory(Invocation &call);
 int runLibrary(Invocation &call);
 int runJob(Invocation &call);
+int discoverMachines(Invocation &call);
 [[nodiscard]] bool isMachineCommand(const QString &command);
 int runMachineCommand(Invocation &call);
 

@@ -11,7 +11,8 @@
 #include "model/job/jobchecker.h"
 #include "model/textparsing.h"
 #include "serial/machinesession.h"
-#include "serial/serialporttransport.h"
+#include "serial/transport/serialporttransport.h"
+#include "serial/transport/tcptransport.h"
 
 using namespace Qt::StringLiterals;
 
@@ -26,14 +27,33 @@ std::optional<double> decimalOption(const Invocation &call, const QString &name)
 
 Result<void> choosePort(const Invocation &call, MachineOptions &)
 {
-    if (call.has(u"port"_s) == call.has(u"emulator"_s))
-        return Error { u"say which machine: --port DEVICE or --emulator."_s };
+    const int named = int(call.has(u"port"_s)) + int(call.has(u"host"_s)) + int(call.has(u"emulator"_s));
+    if (named != 1)
+        return Error { u"say which machine: --port DEVICE, --host HOST[:PORT] or --emulator."_s };
     return {};
 }
 
 Result<void> readTarget(const Invocation &call, MachineOptions &o)
 {
-    o.target = { call.has(u"emulator"_s), call.option(u"port"_s), SerialPortTransport::kDefaultBaud, 0 };
+    o.target = ConnectionTarget {};
+    o.target.emulator = call.has(u"emulator"_s);
+    o.target.port = call.option(u"port"_s);
+    o.target.baud = SerialPortTransport::kDefaultBaud;
+    if (call.has(u"host"_s)) {
+        const auto address = TcpTransport::parseAddress(call.option(u"host"_s));
+        if (!address)
+            return address.error();
+        o.target.host = address.value().host;
+        o.target.tcpPort = address.value().port;
+    }
+    if (call.has(u"protocol"_s)) {
+        const auto protocol = StreamTransport::parseProtocol(call.option(u"protocol"_s));
+        if (!protocol)
+            return Error { u"--protocol must be auto, text or framed."_s };
+        if (o.target.emulator)
+            return Error { u"--protocol is for --port and --host: the built-in emulator has no wire."_s };
+        o.target.protocol = *protocol;
+    }
     if (call.has(u"baud"_s)) {
         const auto b = parseInteger(call.option(u"baud"_s).toUtf8());
         if (!b || *b < 50 || *b > 4000000)
@@ -180,8 +200,9 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
     // The machine as the library knows it: a Carvera, and how it was reached this time.
     if (o.library) {
 
-        const QString connection
-            = o.target.emulator ? u"emulator"_s : o.target.port + u' ' + QString::number(o.target.baud);
+        const QString connection = o.target.emulator ? u"emulator"_s
+            : o.target.isNetwork()                   ? o.target.name()
+                                                     : o.target.port + u' ' + QString::number(o.target.baud);
         if (auto added = o.library->addMachine({ o.machine, u"carvera"_s, connection }); !added) {
             // Another program holds the library for now: the machine may still measure, and what it measures
             // is kept on this computer and sent later, as any measurement the library cannot take now.

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// toffee-emulator: a Carvera on a pseudo-terminal, for QSerialPort, toffee-cli --port, or a terminal program.
+// toffee-emulator: a Carvera on a pseudo-terminal, for QSerialPort, toffee-cli --port, or a terminal program;
+// and with --listen on a TCP port too, as over Wi-Fi, announcing itself by its beacon with --announce.
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -10,8 +12,10 @@
 #include <QTextStream>
 
 #include "model/textparsing.h"
+#include "serial/emulator/beaconsender.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulator/ptyserver.h"
+#include "serial/emulator/tcpserver.h"
 
 using namespace Qt::StringLiterals;
 using Toffee::CarveraEmulator;
@@ -93,6 +97,22 @@ struct Options
     QCommandLineOption spindle { u"spindle"_s, u"The tool in the spindle at start (default 1; -1 empty)."_s,
         u"N"_s };
     QCommandLineOption halted { u"halted"_s, u"Start halted with this reason (1-16)."_s, u"REASON"_s };
+    QCommandLineOption listen { u"listen"_s,
+        u"Also serve the console on TCP, as over Wi-Fi: [HOST:]PORT (host 127.0.0.1 unless given; port 0 "
+        u"takes a "
+        u"free one). Prints \"tcp HOST:PORT\" after the device path."_s,
+        u"[HOST:]PORT"_s };
+    QCommandLineOption framed { u"framed"_s,
+        u"Frame every byte as Makera's current firmware does (86 68 ... 55 AA), on the terminal and TCP "
+        u"alike; "
+        u"with --firmware stock, version 1.0.5."_s };
+    QCommandLineOption announce { u"announce"_s,
+        u"Send the Wi-Fi beacon (NAME,IP,PORT,BUSY) once a second to UDP 127.0.0.1:PORT (a machine's is "
+        u"3333); "
+        u"needs --listen."_s,
+        u"PORT"_s };
+    QCommandLineOption name { u"name"_s, u"The machine's name in its beacon (default Carvera_Emulator)."_s,
+        u"NAME"_s, u"Carvera_Emulator"_s };
     QCommandLineOption fault { u"fault"_s,
         u"A one-shot fault: drop-ok, no-answer, garble, close, fail-probe, delay:MS or break:MM, "
         u"optionally @PREFIX to hit the first command starting with PREFIX (repeatable)."_s,
@@ -101,7 +121,7 @@ struct Options
     void addTo(QCommandLineParser &parser) const
     {
         parser.addOptions({ link, tool, broken, probeMs, changeMs, moveMs, firmware, slotFile, repeatability,
-            reference, notHomed, emptyRack, spindle, halted, fault });
+            reference, notHomed, emptyRack, spindle, halted, listen, framed, announce, name, fault });
     }
 };
 
@@ -203,6 +223,44 @@ Problem configureFaults(CarveraEmulator &emulator, const QCommandLineParser &par
     return std::nullopt;
 }
 
+// --listen and --announce: the console on TCP, and the beacon that says where it is.
+Problem serveNetwork(CarveraEmulator &emulator, const QCommandLineParser &parser, const Options &o,
+    bool framed, std::unique_ptr<Toffee::TcpServer> &tcp, std::unique_ptr<Toffee::BeaconSender> &beacon)
+{
+    if (!parser.isSet(o.listen))
+        return parser.isSet(o.announce) ? Problem(u"--announce needs --listen: the beacon says where the TCP "
+                                                  u"console is."_s)
+                                        : std::nullopt;
+    const QString value = parser.value(o.listen);
+    const QString host = value.contains(u':') ? value.section(u':', 0, -2) : u"127.0.0.1"_s;
+    const auto port = Toffee::parseInteger(value.section(u':', -1).toUtf8());
+    const QHostAddress address(host);
+    if (!port || *port < 0 || *port > 65535 || address.isNull())
+        return u"--listen %1: give [HOST:]PORT, such as 2222 or 127.0.0.1:0."_s.arg(value);
+    tcp = std::make_unique<Toffee::TcpServer>(&emulator, framed);
+    if (!tcp->listen(address, quint16(*port)))
+        return u"--listen %1: %2"_s.arg(value, tcp->errorString());
+    std::printf("tcp %s:%u\n", qPrintable(tcp->address().toString()), unsigned(tcp->port()));
+    std::fflush(stdout);
+    if (!parser.isSet(o.announce))
+        return std::nullopt;
+    const auto to = Toffee::parseInteger(parser.value(o.announce).toUtf8());
+    if (!to || *to < 1 || *to > 65535)
+        return u"--announce takes a UDP port, such as 3333."_s;
+    const QString name = parser.value(o.name);
+    Toffee::Beacon b { name,
+        tcp->address() == QHostAddress::AnyIPv4 ? u"127.0.0.1"_s : tcp->address().toString(), tcp->port(),
+        false };
+    if (!Toffee::Beacon::parse(b.format()))
+        return u"--name %1: a name of up to %2 printable characters, without commas."_s.arg(name).arg(
+            Toffee::Beacon::kMaxNameLength);
+    beacon = std::make_unique<Toffee::BeaconSender>(b, QHostAddress::LocalHost, quint16(*to));
+    QObject::connect(
+        tcp.get(), &Toffee::TcpServer::busyChanged, beacon.get(), &Toffee::BeaconSender::setBusy);
+    beacon->start();
+    return std::nullopt;
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -211,9 +269,9 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(u"toffee-emulator"_s);
     QCoreApplication::setApplicationVersion(QStringLiteral(TOFFEE_VERSION));
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        u"A Carvera controller on a pseudo-terminal. Prints the device path, then "
-        u"serves until stopped."_s);
+    parser.setApplicationDescription(u"A Carvera controller on a pseudo-terminal (and with --listen on a TCP "
+                                     u"port, as over Wi-Fi). Prints the "
+                                     u"device path, then serves until stopped."_s);
     parser.addHelpOption();
     parser.addVersionOption();
     const Options options;
@@ -225,7 +283,11 @@ int main(int argc, char *argv[])
         if (const Problem problem = configure(emulator, parser, options))
             return usageError(*problem);
     }
+    const bool framed = parser.isSet(options.framed);
+    if (framed && parser.value(options.firmware) == u"stock")
+        emulator.setVersion(CarveraEmulator::kFramedStockVersion);
     Toffee::PtyServer server(&emulator, parser.value(options.link));
+    server.setFramed(framed);
     QObject::connect(&server, &Toffee::PtyServer::deviceChanged, &app, [](const QString &path) {
         std::printf("%s\n", qPrintable(path));
         std::fflush(stdout);
@@ -234,5 +296,9 @@ int main(int argc, char *argv[])
         return usageError(server.errorString());
     if (!server.errorString().isEmpty())
         QTextStream(stderr) << "toffee-emulator: " << server.errorString() << '\n';
+    std::unique_ptr<Toffee::TcpServer> tcp;
+    std::unique_ptr<Toffee::BeaconSender> beacon;
+    if (const Problem problem = serveNetwork(emulator, parser, options, framed, tcp, beacon))
+        return usageError(*problem);
     return QCoreApplication::exec();
 }

@@ -6,6 +6,7 @@
 #include <QCommandLineParser>
 #include <QElapsedTimer>
 #include <QStandardPaths>
+#include <QTextStream>
 #include <QTimer>
 
 #include "serial/machineconnection.h"
@@ -37,6 +38,10 @@ struct Options
         u"PORT"_s };
     QCommandLineOption baud { u"baud"_s, QApplication::translate("main", "Baud rate (default 115200)."),
         u"N"_s, u"115200"_s };
+    QCommandLineOption host { u"host"_s,
+        QApplication::translate(
+            "main", "Connect to the machine over Wi-Fi at HOST[:PORT] (port 2222 by default)."),
+        u"HOST"_s };
     QCommandLineOption selfTest { u"self-test"_s,
         QApplication::translate("main",
             "Open the window, connect to the emulator, load the example table, probe, "
@@ -63,7 +68,7 @@ struct Options
         parser.addHelpOption();
         parser.addVersionOption();
         parser.addOptions(
-            { emulator, emulatorFirmware, port, baud, selfTest, dark, lang, library, checkJob });
+            { emulator, emulatorFirmware, port, baud, host, selfTest, dark, lang, library, checkJob });
         parser.addPositionalArgument(
             u"table"_s, QApplication::translate("main", "A tool table to open."), u"[table]"_s);
     }
@@ -156,9 +161,20 @@ int main(int argc, char *argv[])
     // Edits a crash would have lost come first; the table asked for opens when none are recovered.
     if (!Toffee::offerRecovery(&window) && !parser.positionalArguments().isEmpty())
         window.openFile(parser.positionalArguments().constFirst());
-    if (parser.isSet(options.emulator) || parser.isSet(options.port)) {
-        Toffee::ConnectionTarget target { parser.isSet(options.emulator), parser.value(options.port),
-            parser.value(options.baud).toInt() };
+    if (parser.isSet(options.emulator) || parser.isSet(options.port) || parser.isSet(options.host)) {
+        Toffee::ConnectionTarget target;
+        target.emulator = parser.isSet(options.emulator);
+        target.port = parser.value(options.port);
+        target.baud = parser.value(options.baud).toInt();
+        if (parser.isSet(options.host) && !target.emulator) {
+            const auto address = Toffee::TcpTransport::parseAddress(parser.value(options.host));
+            if (!address) {
+                QTextStream(stderr) << "toffee: " << address.error().message << '\n';
+                return 2;
+            }
+            target.host = address.value().host;
+            target.tcpPort = address.value().port;
+        }
         target.emulatorStock = firmware == u"stock";
         target.emulatorPaced = true;
         window.machineDock()->connectionPanel()->setTarget(target);

@@ -62,9 +62,19 @@ void CarveraEmulator::execute(const QByteArray &line)
 {
     if (shellCommand(line))
         return;
-    if (line.isEmpty() || line.startsWith(';')) {
+    if (line.isEmpty() || line.startsWith(';') || line.startsWith('(')) {
         finish();
         return;
+    }
+    // The dispatcher reads a line by its first character (GcodeDispatch): G, M, T, S, N and # are G-code,
+    // X, Y, Z, A and F a move in the last mode; any other is answered "ok - ignore: [line]", halted or not,
+    // the line printed as a C string (to its first NUL). A frame's bytes sent to a plain-text firmware end
+    // so.
+    if (!QByteArrayView("GMTSN#XYZAF").contains(line.front())) {
+        const qsizetype nul = line.indexOf('\0');
+        const QByteArray echoed = (nul < 0 ? line : line.first(nul)).left(kMaxLineBytes - 16);
+        say("ok - ignore: [" + echoed + "]");
+        return endSilently();
     }
     const auto read = GCodeBlock::read(line);
     if (isHalted() && !(read && carveraRunsWhileHalted(read.value()))) {

@@ -63,6 +63,8 @@ public:
     // What `version` answers (`version = %s`, no "ok"): a community build's name, Makera's release number.
     static constexpr char kCommunityVersion[] = "2.1.0c-emulator";
     static constexpr char kStockVersion[] = "1.0.1";
+    // Makera's current firmware, which frames every byte (its version when the emulator speaks frames).
+    static constexpr char kFramedStockVersion[] = "1.0.5";
     static constexpr int kMaxRepeats = 10; // M491 R<n>
     // What the firmware prints after each halt; its numbers mean nothing (the firmware's own build prints a
     // host address there).
@@ -78,6 +80,8 @@ public:
     // About as long as a C1 takes: a probing cycle 8 s, a rack change 15 s (Toffee's estimate).
     [[nodiscard]] static constexpr Timing realisticTiming() { return { 8000, 0, 15000 }; }
     void setFirmware(Firmware firmware) { m_firmware = firmware; }
+    // What `version` answers, instead of the firmware's default.
+    void setVersion(const QByteArray &version) { m_version = version; }
     [[nodiscard]] Firmware firmware() const { return m_firmware; }
     // How far apart repeated measurements of one tool trigger (M491 R<n>); 0 measures the same every time.
     void setRepeatability(double millimetres) { m_repeatability = millimetres; }
@@ -211,6 +215,8 @@ private:
     void takeTlo(double currentMz);
 
     Firmware m_firmware = Firmware::Community;
+
+    QByteArray m_version;
     Timing m_timing;
     double m_repeatability = 0.0;
     QList<RackSlot> m_rack = defaultRack();

@@ -94,7 +94,10 @@ QByteArray CarveraEmulator::toolField() const
 bool CarveraEmulator::shellCommand(const QByteArray &line)
 {
     if (line == "version") {
-        say(QByteArray("version = ") + (m_firmware == Firmware::Stock ? kStockVersion : kCommunityVersion));
+        say(QByteArray("version = ")
+            + (!m_version.isEmpty()                 ? m_version
+                    : m_firmware == Firmware::Stock ? QByteArray(kStockVersion)
+                                                    : QByteArray(kCommunityVersion)));
         endSilently();
         return true;
     }

@@ -18,6 +18,7 @@ namespace Toffee {
 PtyServer::PtyServer(CarveraEmulator *emulator, const QString &linkPath, QObject *parent)
     : QObject(parent)
     , m_emulator(emulator)
+    , m_wire(emulator, EmulatorWire::Mode::Text, EmulatorWire::Link::Serial)
     , m_linkPath(linkPath)
 {
     connect(m_emulator, &CarveraEmulator::lineSent, this, &PtyServer::send);
@@ -32,6 +33,12 @@ PtyServer::~PtyServer()
     stop();
     if (!m_linkPath.isEmpty())
         QFile::remove(m_linkPath);
+}
+
+void PtyServer::setFramed(bool framed)
+{
+    m_wire = EmulatorWire(m_emulator, framed ? EmulatorWire::Mode::Framed : EmulatorWire::Mode::Text,
+        EmulatorWire::Link::Serial);
 }
 
 bool PtyServer::start()
@@ -64,7 +71,7 @@ bool PtyServer::start()
             m_error = tr("cannot make the link %1").arg(m_linkPath);
     }
     m_out.clear();
-    m_emulator->resetInput();
+    m_wire.reset();
     Q_EMIT deviceChanged(m_devicePath);
     return true;
 }
@@ -95,7 +102,7 @@ void PtyServer::readMaster()
         const ssize_t n = ::read(master, buffer, sizeof buffer);
         if (n <= 0)
             return;
-        m_emulator->receiveBytes(QByteArrayView(buffer, n));
+        m_wire.receive(QByteArrayView(buffer, n));
     }
 }
 
@@ -103,11 +110,12 @@ void PtyServer::send(const QByteArray &line)
 {
     if (m_master < 0)
         return;
-    if (m_out.size() + line.size() + 2 > kMaxPendingBytes) {
+    const QByteArray bytes = m_wire.encode(line);
+    if (m_out.size() + bytes.size() > kMaxPendingBytes) {
         ++m_droppedLines; // the client has not read for a while: lose the line rather than wait or grow
         return;
     }
-    m_out += line + "\r\n";
+    m_out += bytes;
     flush();
 }
 

@@ -3,6 +3,8 @@
 
 #include <QObject>
 
+#include "serial/emulator/emulatorwire.h"
+
 class QSocketNotifier;
 
 namespace Toffee {
@@ -24,6 +26,8 @@ public:
     PtyServer(CarveraEmulator *emulator, const QString &linkPath = {}, QObject *parent = nullptr);
     ~PtyServer() override;
 
+    // Frames, as Makera's current firmware speaks on USB, instead of plain text; before start().
+    void setFramed(bool framed);
     // Opens the terminal; false, with errorString(), when the system has none to give.
     bool start();
     [[nodiscard]] QString devicePath() const { return m_devicePath; }
@@ -43,6 +47,7 @@ private:
     void stop();
 
     CarveraEmulator *m_emulator;
+    EmulatorWire m_wire;
     QString m_linkPath;
     QString m_devicePath;
     QString m_error;

@@ -7,7 +7,7 @@
 // buffer never exceeds the cap.
 #include <algorithm>
 
-#include "serial/lineassembler.h"
+#include "serial/transport/lineassembler.h"
 #include "tests/fuzz/fuzzcheck.h"
 
 using namespace Toffee;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
-#include "serial/lineassembler.h"
+#include "serial/transport/lineassembler.h"
 
 using namespace Toffee;
 using Line = LineAssembler::Line;

@@ -3,7 +3,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "serial/linetransport.h"
+#include "serial/transport/linetransport.h"
 #include "serial/machinelink.h"
 
 using namespace Toffee;

@@ -8,7 +8,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "serial/serialporttransport.h"
+#include "serial/transport/serialporttransport.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
@@ -60,6 +60,7 @@ private Q_SLOTS:
         Pty pty;
         QVERIFY(!pty.slave.isEmpty());
         SerialPortTransport transport(pty.slave);
+        transport.setProtocol(StreamTransport::Protocol::Text); // the test speaks for the machine
         QSignalSpy opened(&transport, &LineTransport::opened);
         QSignalSpy lines(&transport, &LineTransport::lineReceived);
         transport.open();
@@ -83,6 +84,7 @@ private Q_SLOTS:
     {
         Pty pty;
         SerialPortTransport transport(pty.slave);
+        transport.setProtocol(StreamTransport::Protocol::Text); // the test speaks for the machine
         QSignalSpy opened(&transport, &LineTransport::opened);
         transport.open();
         QTRY_COMPARE(opened.size(), 1);
@@ -99,6 +101,7 @@ private Q_SLOTS:
     {
         Pty pty;
         SerialPortTransport transport(pty.slave);
+        transport.setProtocol(StreamTransport::Protocol::Text); // the test speaks for the machine
         QSignalSpy opened(&transport, &LineTransport::opened);
         QSignalSpy lines(&transport, &LineTransport::lineReceived);
         QSignalSpy errors(&transport, &LineTransport::errorOccurred);
@@ -121,6 +124,7 @@ private Q_SLOTS:
     {
         Pty pty;
         SerialPortTransport transport(pty.slave);
+        transport.setProtocol(StreamTransport::Protocol::Text); // the test speaks for the machine
         QSignalSpy opened(&transport, &LineTransport::opened);
         QSignalSpy errors(&transport, &LineTransport::errorOccurred);
         QSignalSpy closed(&transport, &LineTransport::closed);
@@ -134,6 +138,89 @@ private Q_SLOTS:
         QVERIFY2(said.contains(pty.slave) && said.contains(u"stopped answering"_s), qPrintable(said));
         // Not a stale errno's words ("File exists", "Inappropriate ioctl for device").
         QVERIFY2(!said.contains(u'('), qPrintable(said));
+    }
+
+    // Protocol::Auto sends a status query as a frame, and a plain-text firmware's answer makes it plain text:
+    // a line end then flushes the frame's other bytes from the firmware's line ("ok - ignore: [..]"), and
+    // nothing said before is taken for the machine's words (boot lines).
+    void findsPlainTextByItsAnswerToAFramedQuery()
+    {
+        Pty pty;
+        SerialPortTransport transport(pty.slave);
+        QSignalSpy opened(&transport, &LineTransport::opened);
+        QSignalSpy lines(&transport, &LineTransport::lineReceived);
+        transport.open();
+        QByteArray sent;
+        QTRY_VERIFY((sent += pty.read()).size() >= 10);
+        QCOMPARE(sent, MakeraFrame::encode(MakeraFrame::RealTime, "?"));
+        pty.write("version = 2.1.0c\r\nok\r\n<Idle|MPos:0,0,0|T:1,0.000,-1,0>\r\n");
+        sent.clear();
+        QTRY_COMPARE((sent += pty.read()), QByteArray("\n"));
+        QCOMPARE(opened.size(), 0); // not before the flush is answered
+        pty.write(QByteArray("ok - ignore: [\x86h]\r\n"));
+        QTRY_COMPARE(opened.size(), 1);
+        QCOMPARE(transport.mode(), ConsoleStream::Mode::Text);
+        QCOMPARE(lines.size(), 0);
+        transport.writeLine("M493.4");
+        sent.clear();
+        QTRY_COMPARE((sent += pty.read()), QByteArray("M493.4\n"));
+        pty.write("ok\r\n");
+        QTRY_COMPARE(lines.size(), 1);
+        QCOMPARE(lines.front().front().toByteArray(), QByteArray("ok"));
+    }
+
+    // The framed firmware answers in a frame: from then on every line goes out as a frame, and what comes
+    // back is read from frames split anywhere, with the bytes between them never taken for the machine's.
+    void findsFramesByTheirAnswer()
+    {
+        Pty pty;
+        SerialPortTransport transport(pty.slave);
+        QSignalSpy opened(&transport, &LineTransport::opened);
+        QSignalSpy lines(&transport, &LineTransport::lineReceived);
+        transport.open();
+        QByteArray sent;
+        QTRY_VERIFY((sent += pty.read()).size() >= 10);
+        pty.write(MakeraFrame::encode(MakeraFrame::Status, "<Idle|MPos:0,0,0>\n"));
+        QTRY_COMPARE(opened.size(), 1);
+        QCOMPARE(transport.mode(), ConsoleStream::Mode::Framed);
+        QVERIFY(transport.description().endsWith(u" (framed)"_s));
+        transport.writeLine("M493.4");
+        transport.writeRealtime('?');
+        sent.clear();
+        const QByteArray expected = MakeraFrame::encode(MakeraFrame::Command, "M493.4")
+            + MakeraFrame::encode(MakeraFrame::RealTime, "?");
+        QTRY_COMPARE((sent += pty.read()), expected);
+        const QByteArray reply = MakeraFrame::encode(MakeraFrame::Output, "current tool offset [0.000] , ")
+            + "stray text\n" + MakeraFrame::encode(MakeraFrame::Output, "reference tool offset [-115.340]\n")
+            + MakeraFrame::encode(MakeraFrame::Reply, "ok\r\n")
+            + MakeraFrame::encode(MakeraFrame::Status, "<Idle|MPos:0,0,0>\n");
+        for (qsizetype i = 0; i < reply.size(); i += 7) { // split at any byte
+            pty.write(reply.mid(i, 7));
+            QTest::qWait(2);
+        }
+        QTRY_COMPARE(lines.size(), 3);
+        QCOMPARE(lines.at(0).front().toByteArray(),
+            QByteArray("current tool offset [0.000] , reference tool offset [-115.340]"));
+        QCOMPARE(lines.at(1).front().toByteArray(), QByteArray("ok"));
+        QCOMPARE(lines.at(2).front().toByteArray(), QByteArray("<Idle|MPos:0,0,0>"));
+        QCOMPARE(transport.stream().frameCounts().strayBytes, 11);
+    }
+
+    // A port where nothing answers: three queries a second apart, then a clear error and the port closed.
+    void saysWhenNothingAnswersTheQuery()
+    {
+        Pty pty;
+        SerialPortTransport transport(pty.slave);
+        QSignalSpy opened(&transport, &LineTransport::opened);
+        QSignalSpy errors(&transport, &LineTransport::errorOccurred);
+        QSignalSpy closed(&transport, &LineTransport::closed);
+        transport.open();
+        QTRY_COMPARE_WITH_TIMEOUT(closed.size(), 1, 5000);
+        QCOMPARE(opened.size(), 0);
+        QCOMPARE(errors.size(), 1);
+        QVERIFY2(errors.front().front().toString().contains(u"did not answer a status query"_s),
+            qPrintable(errors.front().front().toString()));
+        QCOMPARE(pty.read(), MakeraFrame::encode(MakeraFrame::RealTime, "?").repeated(3));
     }
 
     void saysWhyAPortCannotOpen()

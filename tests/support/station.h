@@ -57,7 +57,7 @@ struct Station
 
     void connect()
     {
-        window.connection()->connectTo({ true, {}, 115200 });
+        window.connection()->connectTo(ConnectionTarget {});
         QVERIFY(QTest::qWaitFor(
             [this] { return window.connection()->state() == MachineConnection::State::Connected; }));
         QObject::connect(window.connection(), &MachineConnection::consoleLine, &window,

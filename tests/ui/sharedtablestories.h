@@ -157,7 +157,7 @@ inline void measurementReachesTheOtherStation(const LibraryLocation &at)
     b.window.historyDock()->raise();
     QTRY_VERIFY(b.window.historyDock()->isVisible());
     const qsizetype before = b.window.historyDock()->events().size();
-    a.window.connection()->connectTo({ true, {}, 115200 });
+    a.window.connection()->connectTo(ConnectionTarget {});
     QTRY_VERIFY(a.window.connection()->state() == MachineConnection::State::Connected);
     QTRY_VERIFY(a.window.connection()->canOperate());
     answerNextBox(QMessageBox::Yes);

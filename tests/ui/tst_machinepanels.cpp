@@ -43,7 +43,7 @@ struct Fixture
         window.show();
         if (!window.openFile(kExample))
             qFatal("the example did not open");
-        window.connection()->connectTo({ true, {}, 115200 });
+        window.connection()->connectTo(ConnectionTarget {});
         if (!QTest::qWaitFor(
                 [this] { return window.connection()->state() == MachineConnection::State::Connected; }))
             qFatal("the emulator did not connect");

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/lineassembler.h"
+#include "serial/transport/lineassembler.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/linetransport.h"
+#include "serial/transport/linetransport.h"
 
 namespace Toffee {
 

@@ -1,21 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/serialporttransport.h"
+#include "serial/transport/serialporttransport.h"
 
 namespace Toffee {
 
 SerialPortTransport::SerialPortTransport(const QString &portName, int baud, QObject *parent)
-    : LineTransport(parent)
+    : StreamTransport(parent)
     , m_name(portName)
     , m_baud(baud)
 {
     m_port.setPortName(portName);
-    connect(&m_port, &QSerialPort::readyRead, this, &SerialPortTransport::readAvailable);
     connect(&m_port, &QSerialPort::errorOccurred, this, &SerialPortTransport::handleError);
 }
 
 void SerialPortTransport::open()
 {
-    m_lines.reset();
     m_port.setBaudRate(m_baud);
     m_port.setDataBits(QSerialPort::Data8);
     m_port.setParity(QSerialPort::NoParity);
@@ -31,51 +29,21 @@ void SerialPortTransport::open()
             this, [this, message] { Q_EMIT errorOccurred(message); }, Qt::QueuedConnection);
         return;
     }
-    QMetaObject::invokeMethod(this, &LineTransport::opened, Qt::QueuedConnection);
+    start(&m_port);
 }
 
 void SerialPortTransport::close()
 {
+    stop();
     if (!m_port.isOpen())
         return;
     m_port.close();
     Q_EMIT closed();
 }
 
-void SerialPortTransport::writeLine(const QByteArray &line)
-{
-    if (!m_port.isOpen()) {
-        Q_EMIT errorOccurred(tr("%1 is not open.").arg(m_name));
-        return;
-    }
-    m_port.write(line + '\n');
-}
-
-void SerialPortTransport::writeRealtime(char c)
-{
-    if (m_port.isOpen())
-        m_port.write(&c, 1);
-}
-
 QString SerialPortTransport::description() const
 {
-    return tr("%1 at %2 baud").arg(m_name).arg(m_baud);
-}
-
-void SerialPortTransport::readAvailable()
-{
-    for (const LineAssembler::Line &line : m_lines.feed(m_port.readAll())) {
-        if (line.truncated) {
-            // Not a controller's line, but its start may still say what it is ("error:..."): keep that, drop
-            // the rest rather than grow without bound, and say so once for each such line.
-            Q_EMIT errorOccurred(tr("%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.")
-                                     .arg(m_name)
-                                     .arg(kMaxLineBytes));
-        }
-        Q_EMIT lineReceived(line.bytes);
-        if (!m_port.isOpen())
-            return; // a receiver closed the port
-    }
+    return tr("%1 at %2 baud").arg(m_name).arg(m_baud) + modeSuffix();
 }
 
 void SerialPortTransport::handleError(QSerialPort::SerialPortError error)

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QElapsedTimer>
+#include <QList>
+#include <QObject>
+#include <QUdpSocket>
+
+#include "serial/wire/beacon.h"
+
+namespace Toffee {
+
+// Hears the Carveras on this computer's networks: their beacons on UDP port 3333 (docs/CARVERA.md § 11). One
+// entry per machine name, the last beacon's; a malformed datagram is counted and ignored. Memory is bounded
+// whatever arrives: at most kMaxMachines names, a machine silent for kForgetAfterMs forgotten.
+class BeaconListener final : public QObject
+{
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(BeaconListener)
+
+public:
+    static constexpr int kMaxMachines = 64;
+    static constexpr int kForgetAfterMs = 5000;
+
+    struct Machine
+    {
+        Beacon beacon;
+        QString from; // the address the datagram came from
+        qint64 heardMs = 0; // on elapsed()'s clock
+    };
+
+    explicit BeaconListener(QObject *parent = nullptr);
+
+    // Binds UDP `port` on every address, shared with other listeners; false, with errorString(), when it
+    // cannot.
+    bool listen(quint16 port = Beacon::kDiscoveryPort);
+    [[nodiscard]] QString errorString() const { return m_socket.errorString(); }
+    [[nodiscard]] quint16 port() const { return m_socket.localPort(); }
+    // By name; those silent for longer than kForgetAfterMs are left out.
+    [[nodiscard]] QList<Machine> machines() const;
+    [[nodiscard]] qint64 ignored() const { return m_ignored; }
+    // Datagrams from machines beyond the kMaxMachines already held.
+    [[nodiscard]] qint64 overflowed() const { return m_overflowed; }
+    [[nodiscard]] qint64 elapsed() const { return m_clock.elapsed(); }
+
+    // One datagram, as if it had arrived (the socket's path, and the tests').
+    void take(QByteArrayView datagram, const QString &from);
+
+Q_SIGNALS:
+    // A machine was heard for the first time, or its address, port or busy changed.
+    void machinesChanged();
+
+private:
+    void readPending();
+    void forgetSilent();
+
+    QUdpSocket m_socket;
+    QElapsedTimer m_clock;
+    QList<Machine> m_machines;
+    qint64 m_ignored = 0;
+    qint64 m_overflowed = 0;
+};
+
+} // namespace Toffee
