@@ -11,6 +11,7 @@
 
 #include "model/tooltable.h"
 #include "serial/machineconnection.h"
+#include "serial/transport/tcptransport.h"
 #include "tests/support/carverapeer.h"
 #include "tests/support/processes.h"
 
@@ -68,17 +69,25 @@ QString conclusion(const QString &step, bool started, const SessionResult &r)
 class Machine
 {
 public:
-    explicit Machine(const QString &port)
+    // `where`: a pseudo-terminal's path, or "tcp:HOST:PORT"; the protocol is found on connecting.
+    explicit Machine(const QString &where)
     {
         ConnectionTarget target;
         target.emulator = false;
-        target.port = port;
+        if (where.startsWith(u"tcp:"_s)) {
+            const auto address = TcpTransport::parseAddress(where.mid(4));
+            target.host = address.value().host;
+            target.tcpPort = address.value().port;
+        } else {
+            target.port = where;
+        }
         m_connection.connectTo(target);
         (void)QTest::qWaitFor(
             [this] { return m_connection.state() != MachineConnection::State::Connecting; }, 20000);
         m_log << conclusion(u"connect"_s, m_connection.state() == MachineConnection::State::Connected,
             m_connection.connectResult())
-              << u"firmware: %1"_s.arg(int(m_connection.firmware().kind));
+              << u"firmware: %1"_s.arg(int(m_connection.firmware().kind))
+              << u"framed: %1"_s.arg(m_connection.description().endsWith(u"(framed)"_s));
     }
     MachineConnection &connection() { return m_connection; }
     const QStringList &log() const { return m_log; }
@@ -187,17 +196,35 @@ private Q_SLOTS:
             QSKIP(qPrintable(CarveraPeer::skipReason()));
     }
 
+    // The same operations over each wire the firmware serves: its USB serial port and its Wi-Fi TCP port, in
+    // plain text (the community firmware) and in frames (--protocol makera, as Makera's current firmware).
+    void toffeeConcludesTheSameFromTheFirmwareAndTheEmulator_data()
+    {
+        QTest::addColumn<bool>("tcp");
+        QTest::addColumn<bool>("framed");
+        QTest::newRow("serial, plain text") << false << false;
+        QTest::newRow("TCP, plain text") << true << false;
+        QTest::newRow("TCP, framed") << true << true;
+        QTest::newRow("serial, framed") << false << true;
+    }
     void toffeeConcludesTheSameFromTheFirmwareAndTheEmulator()
     {
-        CarveraPeer peer;
+        QFETCH(bool, tcp);
+        QFETCH(bool, framed);
+        CarveraPeer peer({}, framed ? u"makera"_s : u"smoothie"_s);
         QVERIFY2(peer.started(), qPrintable(peer.errors()));
         QTemporaryDir dir;
-        Emulator emulator(dir.filePath(u"tty"_s), kLikeThePeer);
+        QStringList emulatorArguments = kLikeThePeer;
+        if (tcp)
+            emulatorArguments << u"--listen"_s << u"0"_s;
+        if (framed)
+            emulatorArguments << u"--framed"_s;
+        Emulator emulator(dir.filePath(u"tty"_s), emulatorArguments);
         QVERIFY(emulator.started());
 
-        Machine firmware(peer.uart());
+        Machine firmware(tcp ? u"tcp:"_s + peer.wifi() : peer.uart());
         script(firmware);
-        Machine emulated(dir.filePath(u"tty"_s));
+        Machine emulated(tcp ? u"tcp:"_s + emulator.tcp() : dir.filePath(u"tty"_s));
         script(emulated);
 
         QStringList differences;
@@ -216,6 +243,7 @@ private Q_SLOTS:
             log.first().contains(u"connect: success | T-1 | TLO 0.000, reference -115.340, MCS Z none"_s),
             qPrintable(log.first()));
         QCOMPARE(log.at(1), u"firmware: %1"_s.arg(int(FirmwareInfo::Kind::Community)));
+        QCOMPARE(log.at(2), u"framed: %1"_s.arg(framed));
         const auto find = [&log](const QString &step) {
             for (const QString &l : log) {
                 if (l.startsWith(step + u':'))

@@ -93,8 +93,20 @@ public:
         if (!arguments.contains(QStringLiteral("--change-ms")))
             arguments << QStringLiteral("--change-ms") << QStringLiteral("0");
         m_process.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-emulator"), arguments);
-        if (m_process.waitForReadyRead(10000))
-            m_device = QString::fromUtf8(m_process.readLine()).trimmed();
+        const bool listens = arguments.contains(QStringLiteral("--listen"));
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < 10000 && (m_device.isEmpty() || (listens && m_tcp.isEmpty()))) {
+            if (!m_process.canReadLine() && !m_process.waitForReadyRead(200))
+                continue;
+            while (m_process.canReadLine()) {
+                const QString line = QString::fromUtf8(m_process.readLine()).trimmed();
+                if (line.startsWith(QStringLiteral("tcp ")))
+                    m_tcp = line.mid(4);
+                else if (m_device.isEmpty())
+                    m_device = line;
+            }
+        }
     }
     ~Emulator()
     {
@@ -104,11 +116,14 @@ public:
     }
     [[nodiscard]] bool started() const { return m_device.startsWith(QStringLiteral("/dev/")); }
     [[nodiscard]] QString device() const { return m_device; }
+    // With --listen: "127.0.0.1:PORT".
+    [[nodiscard]] QString tcp() const { return m_tcp; }
     QProcess &process() { return m_process; }
 
 private:
     QProcess m_process;
     QString m_device;
+    QString m_tcp;
 };
 
 inline QByteArray readFile(const QString &path)
