@@ -4860,24 +4860,16 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation>%1 lässt sich nicht öffnen: %2. Prüfen Sie das Kabel, ob ein anderes Programm den Anschluss geöffnet hat und ob Sie serielle Anschlüsse verwenden dürfen (Gruppe dialout).</translation>
     </message>
     <message>
-        <source>%1 is not open.</source>
-        <translation>%1 ist nicht geöffnet.</translation>
-    </message>
-    <message>
         <source>%1 at %2 baud</source>
         <translation>%1 mit %2 Baud</translation>
     </message>
     <message>
-        <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
-        <translation>Der Anschluss %1 ist ausgefallen (%2); die Verbindung wurde geschlossen. Prüfen Sie das Kabel und verbinden Sie erneut.</translation>
-    </message>
-    <message>
-        <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
-        <translation>%1 hat eine Zeile mit mehr als %2 Byte gesendet; nur ihre ersten %2 Byte wurden behalten.</translation>
-    </message>
-    <message>
         <source>The port %1 stopped answering and was closed: the cable was unplugged, the machine switched off, or the program serving the port ended. Check the cable and the machine, then connect again.</source>
         <translation>Der Anschluss %1 antwortet nicht mehr und wurde geschlossen: Das Kabel wurde abgezogen, die Maschine ausgeschaltet oder das Programm hinter dem Anschluss beendet. Prüfen Sie Kabel und Maschine und verbinden Sie erneut.</translation>
+    </message>
+    <message>
+        <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
+        <translation>Der Anschluss %1 ist ausgefallen (%2); die Verbindung wurde geschlossen. Prüfen Sie das Kabel und verbinden Sie erneut.</translation>
     </message>
 </context>
 <context>
@@ -4896,10 +4888,64 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     </message>
 </context>
 <context>
+    <name>Toffee::StreamTransport</name>
+    <message>
+        <source> (framed)</source>
+        <translation> (gerahmt)</translation>
+    </message>
+    <message>
+        <source>%1 did not answer a status query, as plain text or framed, within %2 s. Check that it is a Carvera, that it is switched on and has started, and the address or port.</source>
+        <translation>%1 hat innerhalb von %2 s weder als Klartext noch gerahmt auf eine Statusabfrage geantwortet. Prüfen Sie, ob es eine Carvera ist, ob sie eingeschaltet und hochgefahren ist, und die Adresse oder den Port.</translation>
+    </message>
+    <message>
+        <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
+        <translation>%1 hat eine Zeile mit mehr als %2 Bytes gesendet; nur ihre ersten %2 Bytes wurden behalten.</translation>
+    </message>
+    <message>
+        <source>%1 is not open.</source>
+        <translation>%1 ist nicht geöffnet.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::TableReading</name>
     <message>
         <source>tool %1 is already on line %2; tool numbers must be unique.</source>
         <translation>Werkzeug %1 steht schon in Zeile %2; Werkzeugnummern müssen eindeutig sein.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::TcpTransport</name>
+    <message>
+        <source>&quot;%1&quot; is not a machine&apos;s address: give HOST or HOST:PORT (the port is %2 when not given), such as 192.168.1.57 or carvera.local:2222.</source>
+        <translation>„%1“ ist keine Maschinenadresse: Geben Sie HOST oder HOST:PORT an (ohne Port gilt %2), etwa 192.168.1.57 oder carvera.local:2222.</translation>
+    </message>
+    <message>
+        <source>%1 over the network</source>
+        <translation>%1 über das Netzwerk</translation>
+    </message>
+    <message>
+        <source>%1 did not answer within %2 s. Check that the machine is switched on and on this network, and its address (the machine&apos;s screen shows it).</source>
+        <translation>%1 hat nicht innerhalb von %2 s geantwortet. Prüfen Sie, ob die Maschine eingeschaltet und in diesem Netzwerk ist, und ihre Adresse (der Bildschirm der Maschine zeigt sie).</translation>
+    </message>
+    <message>
+        <source>Nothing answers at %1 (the connection was refused): the machine&apos;s Wi-Fi console is off, or the port is wrong (a Carvera listens on %2). Check the address and try again.</source>
+        <translation>Unter %1 antwortet nichts (die Verbindung wurde abgewiesen): Die WLAN-Konsole der Maschine ist aus, oder der Port ist falsch (eine Carvera hört auf %2). Prüfen Sie die Adresse und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>%1 is not a host name this computer can find. Give the machine&apos;s address as the machine&apos;s screen shows it (such as 192.168.1.57).</source>
+        <translation>%1 ist kein Hostname, den dieser Computer finden kann. Geben Sie die Adresse der Maschine so an, wie ihr Bildschirm sie zeigt (etwa 192.168.1.57).</translation>
+    </message>
+    <message>
+        <source>Cannot reach %1: %2. Check that this computer and the machine are on the same network.</source>
+        <translation>%1 ist nicht erreichbar: %2. Prüfen Sie, ob dieser Computer und die Maschine im selben Netzwerk sind.</translation>
+    </message>
+    <message>
+        <source>The machine at %1 closed the connection: it was switched off or restarted, or it serves another program now. Check the machine, then connect again.</source>
+        <translation>Die Maschine unter %1 hat die Verbindung geschlossen: Sie wurde ausgeschaltet oder neu gestartet, oder sie bedient jetzt ein anderes Programm. Prüfen Sie die Maschine und verbinden Sie sich erneut.</translation>
+    </message>
+    <message>
+        <source>The link to %1 was lost (%2): the machine was switched off or left the network. Check the machine, then connect again.</source>
+        <translation>Die Verbindung zu %1 ist abgerissen (%2): Die Maschine wurde ausgeschaltet oder hat das Netzwerk verlassen. Prüfen Sie die Maschine und verbinden Sie sich erneut.</translation>
     </message>
 </context>
 <context>
@@ -5358,6 +5404,10 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>The history library: an SQLite file (or sqlite:PATH), or a shared one on PostgreSQL (postgresql://user@host:port/dbname; the password in ~/.pgpass).</source>
         <translation>Die Verlaufsbibliothek: eine SQLite-Datei (oder sqlite:PFAD) oder eine gemeinsame auf PostgreSQL (postgresql://user@host:port/dbname; das Passwort in ~/.pgpass).</translation>
+    </message>
+    <message>
+        <source>Connect to the machine over Wi-Fi at HOST[:PORT] (port 2222 by default).</source>
+        <translation>Über WLAN mit der Maschine unter HOST[:PORT] verbinden (standardmäßig Port 2222).</translation>
     </message>
 </context>
 </TS>

@@ -4860,24 +4860,16 @@ when it is fresh (no probe)</source>
         <translation>无法打开 %1：%2。请检查线缆、是否有其他程序占用该端口，以及您是否有使用串口的权限（dialout 组）。</translation>
     </message>
     <message>
-        <source>%1 is not open.</source>
-        <translation>%1 未打开。</translation>
-    </message>
-    <message>
         <source>%1 at %2 baud</source>
         <translation>%1，%2 波特</translation>
     </message>
     <message>
-        <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
-        <translation>端口 %1 出错（%2）；连接已关闭。请检查线缆后重新连接。</translation>
-    </message>
-    <message>
-        <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
-        <translation>%1 发送了超过 %2 字节的一行；只保留了其前 %2 字节。</translation>
-    </message>
-    <message>
         <source>The port %1 stopped answering and was closed: the cable was unplugged, the machine switched off, or the program serving the port ended. Check the cable and the machine, then connect again.</source>
         <translation>端口 %1 停止响应并已关闭：电缆被拔出、机器已关闭，或为该端口服务的程序已结束。请检查电缆和机器，然后重新连接。</translation>
+    </message>
+    <message>
+        <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
+        <translation>端口 %1 出错（%2）；连接已关闭。请检查线缆后重新连接。</translation>
     </message>
 </context>
 <context>
@@ -4896,10 +4888,64 @@ when it is fresh (no probe)</source>
     </message>
 </context>
 <context>
+    <name>Toffee::StreamTransport</name>
+    <message>
+        <source> (framed)</source>
+        <translation>（帧协议）</translation>
+    </message>
+    <message>
+        <source>%1 did not answer a status query, as plain text or framed, within %2 s. Check that it is a Carvera, that it is switched on and has started, and the address or port.</source>
+        <translation>%1 在 %2 秒内未以纯文本或帧协议回应状态查询。请检查它是否为 Carvera、是否已开机并启动完成，以及地址或端口。</translation>
+    </message>
+    <message>
+        <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
+        <translation>%1 发送了一行超过 %2 字节的内容；只保留了前 %2 字节。</translation>
+    </message>
+    <message>
+        <source>%1 is not open.</source>
+        <translation>%1 未打开。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::TableReading</name>
     <message>
         <source>tool %1 is already on line %2; tool numbers must be unique.</source>
         <translation>刀具 %1 已在第 %2 行；刀具号必须唯一。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::TcpTransport</name>
+    <message>
+        <source>&quot;%1&quot; is not a machine&apos;s address: give HOST or HOST:PORT (the port is %2 when not given), such as 192.168.1.57 or carvera.local:2222.</source>
+        <translation>“%1”不是机器地址：请输入 HOST 或 HOST:PORT（未给出端口时为 %2），例如 192.168.1.57 或 carvera.local:2222。</translation>
+    </message>
+    <message>
+        <source>%1 over the network</source>
+        <translation>通过网络连接 %1</translation>
+    </message>
+    <message>
+        <source>%1 did not answer within %2 s. Check that the machine is switched on and on this network, and its address (the machine&apos;s screen shows it).</source>
+        <translation>%1 在 %2 秒内没有应答。请检查机器是否已开机并在此网络中，以及它的地址（机器屏幕上有显示）。</translation>
+    </message>
+    <message>
+        <source>Nothing answers at %1 (the connection was refused): the machine&apos;s Wi-Fi console is off, or the port is wrong (a Carvera listens on %2). Check the address and try again.</source>
+        <translation>%1 无应答（连接被拒绝）：机器的 Wi-Fi 控制台已关闭，或端口错误（Carvera 监听 %2）。请检查地址后重试。</translation>
+    </message>
+    <message>
+        <source>%1 is not a host name this computer can find. Give the machine&apos;s address as the machine&apos;s screen shows it (such as 192.168.1.57).</source>
+        <translation>此计算机找不到主机名 %1。请按机器屏幕显示的地址输入（例如 192.168.1.57）。</translation>
+    </message>
+    <message>
+        <source>Cannot reach %1: %2. Check that this computer and the machine are on the same network.</source>
+        <translation>无法连接 %1：%2。请检查此计算机与机器是否在同一网络中。</translation>
+    </message>
+    <message>
+        <source>The machine at %1 closed the connection: it was switched off or restarted, or it serves another program now. Check the machine, then connect again.</source>
+        <translation>%1 处的机器关闭了连接：它已关机或重启，或正在服务另一个程序。请检查机器后重新连接。</translation>
+    </message>
+    <message>
+        <source>The link to %1 was lost (%2): the machine was switched off or left the network. Check the machine, then connect again.</source>
+        <translation>与 %1 的连接已断开（%2）：机器已关机或离开了网络。请检查机器后重新连接。</translation>
     </message>
 </context>
 <context>
@@ -5358,6 +5404,10 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>The history library: an SQLite file (or sqlite:PATH), or a shared one on PostgreSQL (postgresql://user@host:port/dbname; the password in ~/.pgpass).</source>
         <translation>历史库：一个 SQLite 文件（或 sqlite:路径），或 PostgreSQL 上的共享库（postgresql://user@host:port/dbname；密码放在 ~/.pgpass 中）。</translation>
+    </message>
+    <message>
+        <source>Connect to the machine over Wi-Fi at HOST[:PORT] (port 2222 by default).</source>
+        <translation>通过 Wi-Fi 连接位于 HOST[:PORT] 的机器（默认端口 2222）。</translation>
     </message>
 </context>
 </TS>
