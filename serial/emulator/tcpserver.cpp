@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "serial/emulator/tcpserver.h"
 
+#include <sys/socket.h>
+
 #include <QTcpSocket>
 
 #include "serial/emulator/carveraemulator.h"
@@ -37,6 +39,7 @@ void TcpServer::accept()
 {
     while (QTcpSocket *client = m_server.nextPendingConnection()) {
         client->setParent(nullptr);
+        client->setSocketOption(QAbstractSocket::LowDelayOption, 1); // each line goes as it is printed
         if (m_clients.isEmpty())
             m_wire.reset(); // a half-received line does not outlive the clients that sent it
         m_clients.append(client);
@@ -76,6 +79,11 @@ void TcpServer::drop(QTcpSocket *client)
 void TcpServer::dropAll()
 {
     const QList<QTcpSocket *> clients = m_clients;
+    if (m_dropByReset) {
+        const ::linger reset { 1, 0 };
+        for (QTcpSocket *client : clients)
+            ::setsockopt(int(client->socketDescriptor()), SOL_SOCKET, SO_LINGER, &reset, sizeof reset);
+    }
     for (QTcpSocket *client : clients)
         drop(client);
 }

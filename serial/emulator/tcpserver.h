@@ -34,6 +34,9 @@ public:
     [[nodiscard]] QHostAddress address() const { return m_server.serverAddress(); }
     [[nodiscard]] quint16 port() const { return m_server.serverPort(); }
     [[nodiscard]] QString errorString() const { return m_server.errorString(); }
+    // A "close link" fault resets the connections (RST, as a machine that lost power mid-stream) instead of
+    // closing them.
+    void setDropByReset(bool reset) { m_dropByReset = reset; }
     // A client is connected (the beacon's BUSY).
     [[nodiscard]] bool isBusy() const { return !m_clients.isEmpty(); }
     [[nodiscard]] int clientCount() const { return int(m_clients.size()); }
@@ -51,6 +54,7 @@ private:
     EmulatorWire m_wire;
     QTcpServer m_server;
     QList<QTcpSocket *> m_clients;
+    bool m_dropByReset = false;
 };
 
 } // namespace Toffee

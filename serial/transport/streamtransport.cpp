@@ -81,8 +81,8 @@ void StreamTransport::stop()
 {
     m_timer.stop();
     m_phase = Phase::Closed;
-    if (m_device)
-        m_device->disconnect(this);
+    if (m_device) // only what start() connected: the subclass's own connections to its device stay
+        disconnect(m_device, &QIODevice::readyRead, this, &StreamTransport::readAvailable);
     m_device = nullptr;
 }
 

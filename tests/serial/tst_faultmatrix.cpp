@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Every machine-session operation under every injected fault: a clear error, no change to the tool table, and
-// a link that works again after an unlock or a reconnect.
+// a link that works again after an unlock or a reconnect. In process, and over a real TCP socket in Makera's
+// frames (the Wi-Fi link), where the machine may also reset the connection.
 #include <array>
 
 #include <QTest>
@@ -29,14 +30,24 @@ enum Operation {
     RestoreTlo,
     OperationCount
 };
-enum Injected { DropOk, NoAnswer, Garble, CloseLink, Alarm, LateAnswer, ToolBroken, InjectedCount };
+enum Injected {
+    DropOk,
+    NoAnswer,
+    Garble,
+    CloseLink,
+    Alarm,
+    LateAnswer,
+    ToolBroken,
+    LinkReset,
+    InjectedCount
+};
 
 // Sized by the enums, with a check that every entry is filled: a name left out fails to compile.
 constexpr std::array<const char *, OperationCount> kOperationNames
     = { "report", "probe", "break-test", "set-tlo", "set-above-z0", "select-tool", "change-tool",
           "change-to-stored-tlo", "unlock", "restore-tlo" };
-constexpr std::array<const char *, InjectedCount> kFaultNames
-    = { "dropped ok", "no answer", "garbled reply", "link closed", "alarm", "late answer", "tool broken" };
+constexpr std::array<const char *, InjectedCount> kFaultNames = { "dropped ok", "no answer", "garbled reply",
+    "link closed", "alarm", "late answer", "tool broken", "link reset" };
 // The first command each operation sends, which the fault is aimed at.
 constexpr std::array<const char *, OperationCount> kFirstCommand
     = { "M493.4", "M491", "M491.1", "M493.3", "M493.3", "M493.2", "M6", "M6", "$X", "M493.2" };
@@ -88,6 +99,7 @@ void injectFault(CarveraEmulator &emulator, int operation, int fault)
         emulator.injectFault(Fault::Garble, target);
         break;
     case CloseLink:
+    case LinkReset: // the harness's server resets instead of closing
         emulator.injectFault(Fault::CloseLink, target);
         break;
     case Alarm:
@@ -118,16 +130,28 @@ private Q_SLOTS:
     {
         QTest::addColumn<int>("operation");
         QTest::addColumn<int>("fault");
-        for (int o = 0; o < OperationCount; ++o) {
-            for (int f = 0; f < InjectedCount; ++f)
-                QTest::addRow("%s, %s", kOperationNames[size_t(o)], kFaultNames[size_t(f)]) << o << f;
+        QTest::addColumn<int>("wire");
+        for (const auto wire : { SessionHarness::Wire::InProcess, SessionHarness::Wire::TcpFramed }) {
+            const bool tcp = wire != SessionHarness::Wire::InProcess;
+            for (int o = 0; o < OperationCount; ++o) {
+                for (int f = 0; f < InjectedCount; ++f) {
+                    if (f == LinkReset && !tcp)
+                        continue; // a connection to reset is TCP's
+                    QTest::addRow("%s%s, %s", tcp ? "TCP framed: " : "", kOperationNames[size_t(o)],
+                        kFaultNames[size_t(f)])
+                        << o << f << int(wire);
+                }
+            }
         }
     }
     void everyOperationUnderEveryFault()
     {
         QFETCH(int, operation);
         QFETCH(int, fault);
-        SessionHarness h;
+        QFETCH(int, wire);
+        SessionHarness h { SessionHarness::Wire(wire) };
+        if (h.server)
+            h.server->setDropByReset(fault == LinkReset);
         // Connecting and the first probe at the real limits: under a sanitizer on a busy machine a 25 ms
         // limit is not always enough for a command that has no fault at all.
         QVERIFY(h.connect().ok());
