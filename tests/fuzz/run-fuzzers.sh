@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs every fuzz target (or those named) for SECONDS each, two at a time on two cores; `make fuzz` calls it.
-#   tests/fuzz/run-fuzzers.sh SECONDS [replies json tbl csv gcode job emulator lines rows]
+#   tests/fuzz/run-fuzzers.sh SECONDS [replies json tbl csv gcode job emulator lines rows frames beacon]
 # SECONDS 0 runs each target over its folder once and stops: a check, the same every time, that CI runs.
 # Each target starts from its seeds in tests/fuzz/<name>/ and grows a working corpus in build-fuzz/corpus/.
 # Whatever breaks a target is left in build-fuzz/artifacts/<name>/: copy it into tests/fuzz/<name>/ (it then
@@ -10,7 +10,7 @@ cd "$(dirname "$0")/../.."
 seconds=${1:?usage: run-fuzzers.sh SECONDS [TARGET...]}
 shift
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(replies json tbl csv gcode job emulator lines rows)
+[ ${#targets[@]} -gt 0 ] || targets=(replies json tbl csv gcode job emulator lines rows frames beacon)
 build=build-fuzz
 jobs=$(nproc)
 
