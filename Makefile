@@ -87,6 +87,7 @@ bench: build
 	QT_QPA_PLATFORM=offscreen $(BUILD_DIR)/bin/toffee-bench-historychart 10000
 	$(BUILD_DIR)/bin/toffee-bench-jobcheck 5000000
 	$(BUILD_DIR)/bin/toffee-bench-camimport
+	$(BUILD_DIR)/bin/toffee-bench-wire
 	$(BUILD_DIR)/bin/toffee-cli --emulator link-test --count 10000
 	@link=$$(mktemp -u /tmp/toffee-bench-tty.XXXXXX); \
 	$(BUILD_DIR)/bin/toffee-emulator --link $$link > /dev/null & pid=$$!; \
