@@ -14,6 +14,7 @@ SerialPortTransport::SerialPortTransport(const QString &portName, int baud, QObj
 
 void SerialPortTransport::open()
 {
+    opening();
     m_port.setBaudRate(m_baud);
     m_port.setDataBits(QSerialPort::Data8);
     m_port.setParity(QSerialPort::NoParity);

@@ -58,11 +58,31 @@ QString StreamTransport::modeSuffix() const
                                                                                     : QString();
 }
 
+std::optional<StreamTransport::Protocol> StreamTransport::otherProtocolLikely() const
+{
+    if (!m_started)
+        return std::nullopt; // the device never opened: a protocol has nothing to do with it
+    if (m_protocol == Protocol::Text && m_bytesReceived == 0)
+        return Protocol::Framed;
+    const MakeraFrame::Decoder::Counts &counts = m_stream.frameCounts();
+    if (m_protocol == Protocol::Framed && counts.frames == 0 && counts.strayBytes > 0)
+        return Protocol::Text;
+    return std::nullopt;
+}
+
+void StreamTransport::opening()
+{
+    m_started = false;
+    m_bytesReceived = 0;
+}
+
 void StreamTransport::start(QIODevice *device)
 {
+    m_started = true;
     m_device = device;
     connect(device, &QIODevice::readyRead, this, &StreamTransport::readAvailable, Qt::UniqueConnection);
     m_tries = 0;
+    m_bytesReceived = 0;
     switch (m_protocol) {
     case Protocol::Text:
         return opened(ConsoleStream::Mode::Text);
@@ -124,6 +144,7 @@ void StreamTransport::readAvailable()
     if (!m_device)
         return;
     const QByteArray bytes = m_device->readAll();
+    m_bytesReceived += bytes.size();
     if (m_phase == Phase::Open)
         return deliver(m_stream.feed(bytes));
     detect(bytes);

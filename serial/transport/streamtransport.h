@@ -35,6 +35,12 @@ public:
     // What the link speaks once open (Auto: what was found).
     [[nodiscard]] ConsoleStream::Mode mode() const { return m_stream.mode(); }
     [[nodiscard]] const ConsoleStream &stream() const { return m_stream; }
+    // With a protocol forced, what the machine's bytes since opening say it speaks instead: framed when text
+    // was forced and nothing at all came back (a framed machine ignores plain text; over TCP it falls
+    // silent), text when framed was forced and plain bytes came but no frame. Nothing when the forced
+    // protocol was answered, or with Auto. A forced protocol that is wrong otherwise looks like a machine
+    // that does not answer.
+    [[nodiscard]] std::optional<Protocol> otherProtocolLikely() const;
 
     [[nodiscard]] bool isOpen() const override;
     void writeLine(const QByteArray &line) override;
@@ -46,6 +52,8 @@ public:
 protected:
     explicit StreamTransport(QObject *parent = nullptr);
 
+    // Opening the device starts: what an earlier opening received is forgotten.
+    void opening();
     // The device is open: find the protocol when asked to, then say `opened`.
     void start(QIODevice *device);
     // The device is closed or failed: forget it (no signal).
@@ -74,6 +82,8 @@ private:
     ConsoleStream m_asFrames { ConsoleStream::Mode::Framed, kMaxLineBytes };
     QTimer m_timer;
     int m_tries = 0;
+    bool m_started = false; // since opening()
+    qint64 m_bytesReceived = 0; // since start()
 };
 
 } // namespace Toffee

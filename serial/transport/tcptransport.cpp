@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "serial/transport/tcptransport.h"
 
+#include <fcntl.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/socket.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 
 #include <QHostAddress>
 
@@ -63,9 +66,17 @@ TcpTransport::TcpTransport(const Address &address, QObject *parent)
     , m_address(address)
 {
     m_connectTimer.setSingleShot(true);
+    // Precise: a coarse timer may fire up to 5 % early (4.75 s of a 5 s limit), and a limit is a promise to
+    // wait that long.
+    m_connectTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_connectTimer, &QTimer::timeout, this, &TcpTransport::connectTimedOut);
     connect(&m_socket, &QTcpSocket::connected, this, &TcpTransport::connected);
     connect(&m_socket, &QTcpSocket::errorOccurred, this, &TcpTransport::handleError);
+}
+
+TcpTransport::~TcpTransport()
+{
+    releaseWatch();
 }
 
 QString TcpTransport::name() const
@@ -81,7 +92,9 @@ QString TcpTransport::description() const
 
 void TcpTransport::open()
 {
+    opening();
     m_connected = false;
+    releaseWatch();
     m_socket.abort();
     m_connectTimer.start(m_connectTimeoutMs > 0 ? m_connectTimeoutMs : kConnectTimeoutMs);
     m_socket.connectToHost(m_address.host, m_address.port);
@@ -93,6 +106,7 @@ void TcpTransport::close()
     const bool wasOpen = m_connected || m_socket.state() != QAbstractSocket::UnconnectedState;
     stop();
     m_connected = false;
+    releaseWatch();
     m_socket.abort();
     if (wasOpen)
         Q_EMIT closed();
@@ -114,6 +128,8 @@ void TcpTransport::tuneSocket()
     const int fd = int(m_socket.socketDescriptor());
     if (fd < 0)
         return;
+    releaseWatch();
+    m_watch = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
     const int idle = kKeepAliveIdleS;
     const int interval = kKeepAliveIntervalS;
     const int count = kKeepAliveCount;
@@ -122,6 +138,22 @@ void TcpTransport::tuneSocket()
     ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPINTVL, &interval, sizeof interval);
     ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPCNT, &count, sizeof count);
     ::setsockopt(fd, IPPROTO_TCP, TCP_USER_TIMEOUT, &unacknowledged, sizeof unacknowledged);
+}
+
+bool TcpTransport::peerReset() const
+{
+    tcp_info info {};
+    socklen_t size = sizeof info;
+    // After a FIN the socket waits for this side to close (CLOSE_WAIT); after an RST it is closed at once.
+    return m_watch >= 0 && ::getsockopt(m_watch, IPPROTO_TCP, TCP_INFO, &info, &size) == 0
+        && info.tcpi_state == TCP_CLOSE;
+}
+
+void TcpTransport::releaseWatch()
+{
+    if (m_watch >= 0)
+        ::close(m_watch); // the connection ends once Qt's descriptor is closed too
+    m_watch = -1;
 }
 
 void TcpTransport::connectTimedOut()
@@ -163,14 +195,16 @@ void TcpTransport::handleError(QAbstractSocket::SocketError error)
         Q_EMIT errorOccurred(message);
         return;
     }
-    const QString message = error == QAbstractSocket::RemoteHostClosedError
+    const bool reset = error == QAbstractSocket::RemoteHostClosedError && peerReset();
+    releaseWatch();
+    const QString message = error == QAbstractSocket::RemoteHostClosedError && !reset
         ? tr(
             "The machine at %1 closed the connection: it was switched off or restarted, or it serves another "
             "program now. Check the machine, then connect again.")
               .arg(name())
         : tr("The link to %1 was lost (%2): the machine was switched off or left the network. Check the "
              "machine, then connect again.")
-              .arg(name(), m_socket.errorString());
+              .arg(name(), reset ? qt_error_string(ECONNRESET) : m_socket.errorString());
     Q_EMIT errorOccurred(message);
     close();
 }

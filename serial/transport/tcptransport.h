@@ -36,6 +36,7 @@ public:
     [[nodiscard]] static Result<Address> parseAddress(const QString &text);
 
     explicit TcpTransport(const Address &address, QObject *parent = nullptr);
+    ~TcpTransport() override;
 
     // 0: kConnectTimeoutMs.
     void setConnectTimeoutMs(int milliseconds) { m_connectTimeoutMs = milliseconds; }
@@ -51,12 +52,18 @@ private:
     void handleError(QAbstractSocket::SocketError error);
     void connectTimedOut();
     void tuneSocket();
+    // The machine ended the connection with a reset (RST: it lost power, the network dropped it) rather than
+    // closing it: Qt reports both as RemoteHostClosedError and closes its descriptor; the socket's TCP state,
+    // read through m_watch, tells them apart.
+    [[nodiscard]] bool peerReset() const;
+    void releaseWatch();
 
     Address m_address;
     QTcpSocket m_socket;
     QTimer m_connectTimer;
     int m_connectTimeoutMs = kConnectTimeoutMs;
     bool m_connected = false;
+    int m_watch = -1; // a second descriptor of the connected socket; released whenever the link ends
 };
 
 } // namespace Toffee

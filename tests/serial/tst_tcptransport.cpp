@@ -1,0 +1,488 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// TcpTransport, the Wi-Fi link, on real sockets on 127.0.0.1: the addresses it takes, each way connecting
+// fails and what it says then, the socket options that notice a vanished machine, a peer that closes, resets
+// or falls silent while a command waits, and Makera's frames with garbage between them. The peer is the test:
+// a QTcpServer, or a POSIX listener that never accepts.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QTest>
+#include <QTimer>
+
+#include "serial/machinelink.h"
+#include "serial/transport/tcptransport.h"
+#include "serial/wire/makeraframe.h"
+#include "tests/support/silentlistener.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+using Toffee::Test::SilentListener;
+
+namespace {
+
+// Runs the event loop until `done` or `ms` pass; true when done. Woken by the event that changes things, not
+// by QTest::qWaitFor's 10 ms naps, so that elapsed times measure the transport rather than the test.
+bool runUntil(const std::function<bool()> &done, int ms)
+{
+    QElapsedTimer clock;
+    clock.start();
+    QTimer deadline; // wakes the wait below at the latest
+    deadline.setSingleShot(true);
+    deadline.start(ms);
+    while (!done()) {
+        if (clock.elapsed() >= ms)
+            return false;
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+    }
+    return true;
+}
+
+// The machine's end: a listener on 127.0.0.1 that accepts one client and reads what it sends.
+struct Peer
+{
+    QTcpServer server;
+    QTcpSocket *socket = nullptr;
+
+    Peer() { server.listen(QHostAddress::LocalHost, 0); }
+    [[nodiscard]] TcpTransport::Address address() const { return { u"127.0.0.1"_s, server.serverPort() }; }
+    bool accept()
+    {
+        if (!runUntil([this] { return server.hasPendingConnections(); }, 3000))
+            return false;
+        socket = server.nextPendingConnection();
+        return socket != nullptr;
+    }
+    // What the client sent until it ends with `end` (or 3 s pass).
+    QByteArray readUntil(QByteArrayView end)
+    {
+        QByteArray got;
+        runUntil(
+            [&] {
+                got += socket->readAll();
+                return got.endsWith(end);
+            },
+            3000);
+        return got;
+    }
+};
+
+// This process's TCP socket whose local end is 127.0.0.1:`port`: the transport keeps its QTcpSocket to
+// itself, and what counts is what the kernel was told about the socket anyway.
+int socketWithLocalPort(quint16 port)
+{
+    for (int fd = 0; fd < 1024; ++fd) {
+        sockaddr_in a {};
+        socklen_t size = sizeof a;
+        if (::getsockname(fd, reinterpret_cast<sockaddr *>(&a), &size) == 0 && a.sin_family == AF_INET
+            && ntohs(a.sin_port) == port)
+            return fd;
+    }
+    return -1;
+}
+
+int intOption(int fd, int level, int name)
+{
+    int value = -1;
+    socklen_t size = sizeof value;
+    return ::getsockopt(fd, level, name, &value, &size) == 0 ? value : -2;
+}
+
+QString likely(const StreamTransport &transport)
+{
+    const auto other = transport.otherProtocolLikely();
+    return other ? StreamTransport::protocolName(*other) : u"none"_s;
+}
+
+// A link opened on `peer`'s first client, in plain text (the test speaks for the machine), without status
+// polls; false when it did not open.
+bool openLink(Peer &peer, MachineLink &link)
+{
+    link.setPollInterval(0);
+    QSignalSpy opened(&link, &MachineLink::opened);
+    link.open();
+    return peer.accept() && runUntil([&] { return !opened.isEmpty(); }, 3000);
+}
+
+} // namespace
+
+class TestTcpTransport : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void parsesAddresses_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("host");
+        QTest::addColumn<int>("port");
+        QTest::newRow("host only") << u"carvera.local"_s << u"carvera.local"_s << 2222;
+        QTest::newRow("IPv4 only") << u"192.168.1.57"_s << u"192.168.1.57"_s << 2222;
+        QTest::newRow("host:port") << u"192.168.1.57:2323"_s << u"192.168.1.57"_s << 2323;
+        QTest::newRow("spaces around") << u"  carvera.local:1 "_s << u"carvera.local"_s << 1;
+        QTest::newRow("port 65535") << u"c:65535"_s << u"c"_s << 65535;
+        QTest::newRow("[::1]:2222") << u"[::1]:2222"_s << u"::1"_s << 2222;
+        QTest::newRow("[IPv6] bare") << u"[fe80::1]"_s << u"fe80::1"_s << 2222;
+        QTest::newRow("[IPv6]:port") << u"[2001:db8::57]:80"_s << u"2001:db8::57"_s << 80;
+    }
+    void parsesAddresses()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, host);
+        QFETCH(int, port);
+        const auto address = TcpTransport::parseAddress(text);
+        QVERIFY2(address.ok(), qPrintable(address.ok() ? QString() : address.error().message));
+        QCOMPARE(address.value().host, host);
+        QCOMPARE(int(address.value().port), port);
+    }
+
+    // Refused with a message that names what was given, so that a typo in a script is found. An IPv6 address
+    // without brackets too: its last group could be a port (toffee-cli says how to write it).
+    void refusesWhatIsNoAddress_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("says");
+        const QString usage = u"give HOST or HOST:PORT"_s;
+        QTest::newRow("empty") << QString() << usage;
+        QTest::newRow("spaces") << u"   "_s << usage;
+        QTest::newRow("port 0") << u"carvera.local:0"_s << usage;
+        QTest::newRow("port 70000") << u"carvera.local:70000"_s << usage;
+        QTest::newRow("port 65536") << u"carvera.local:65536"_s << usage;
+        QTest::newRow("host:") << u"carvera.local:"_s << usage;
+        QTest::newRow(":port") << u":2222"_s << usage;
+        QTest::newRow("a:b:c") << u"a:b:c"_s << usage;
+        QTest::newRow("port +22") << u"c:+22"_s << usage;
+        QTest::newRow("port -1") << u"c:-1"_s << usage;
+        QTest::newRow("port x") << u"c:twentytwo"_s << usage;
+        QTest::newRow("a space inside") << u"my carvera:2222"_s << usage;
+        QTest::newRow("[unclosed") << u"[::1:2222"_s << usage;
+        QTest::newRow("[IPv4]") << u"[192.168.1.57]:2222"_s << usage;
+        QTest::newRow("[::1]x") << u"[::1]x"_s << usage;
+        QTest::newRow("[::1]:") << u"[::1]:"_s << usage;
+        QTest::newRow("[::1]:0") << u"[::1]:0"_s << usage;
+        QTest::newRow("IPv6 bare") << u"::1"_s << usage;
+        QTest::newRow("IPv6 and a port, bare") << u"fe80::1:2222"_s << usage;
+        QTest::newRow("a long name") << QString(254, u'a') << usage;
+    }
+    void refusesWhatIsNoAddress()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, says);
+        const auto address = TcpTransport::parseAddress(text);
+        QVERIFY(!address.ok());
+        const QString message = address.error().message;
+        QVERIFY2(message.contains(u'"' + text.trimmed() + u'"'), qPrintable(message));
+        QVERIFY2(message.contains(says), qPrintable(message));
+    }
+
+    // A closed port on a reachable host answers at once (RST): no waiting out the connect limit.
+    void refusedConnectionFailsAtOnce()
+    {
+        QTcpServer closed;
+        QVERIFY(closed.listen(QHostAddress::LocalHost, 0));
+        const quint16 port = closed.serverPort();
+        closed.close();
+        TcpTransport transport({ u"127.0.0.1"_s, port });
+        QSignalSpy errors(&transport, &LineTransport::errorOccurred);
+        QSignalSpy opened(&transport, &LineTransport::opened);
+        QElapsedTimer clock;
+        clock.start();
+        transport.open();
+        QVERIFY(runUntil([&] { return !errors.isEmpty(); }, 3000));
+        QVERIFY2(clock.elapsed() < 1000, qPrintable(QString::number(clock.elapsed())));
+        const QString said = errors.front().front().toString();
+        QVERIFY2(said.contains(u"Nothing answers at 127.0.0.1:%1 (the connection was refused)"_s.arg(port)),
+            qPrintable(said));
+        QVERIFY2(said.contains(u"a Carvera listens on 2222"_s), qPrintable(said));
+        QVERIFY(!transport.isOpen());
+        QTest::qWait(100); // nothing more comes of it
+        QCOMPARE(errors.size(), 1);
+        QCOMPARE(opened.size(), 0);
+    }
+
+    // A name no resolver knows (.invalid is reserved never to resolve, RFC 6761) is said to be one.
+    void unknownHostIsSaidToBeOne()
+    {
+        TcpTransport transport({ u"no-such-carvera.invalid"_s, 2222 });
+        QSignalSpy errors(&transport, &LineTransport::errorOccurred);
+        transport.open();
+        QVERIFY(runUntil([&] { return !errors.isEmpty(); }, 6000));
+        const QString said = errors.front().front().toString();
+        QVERIFY2(said.startsWith(u"no-such-carvera.invalid is not a host name this computer can find"_s),
+            qPrintable(said));
+        QVERIFY(!transport.isOpen());
+    }
+
+    // A machine switched off does not refuse, it says nothing: the connect gives up after its limit (5 s
+    // unless set), said with the address, instead of the system's two minutes. A coarse timer could fire 5 %
+    // early; the limit is a promise to wait that long.
+    void connectGivesUpAfterItsLimit_data()
+    {
+        QTest::addColumn<int>("limitMs");
+        QTest::addColumn<int>("expectedMs");
+        QTest::addColumn<QString>("says");
+        QTest::newRow("default") << 0 << TcpTransport::kConnectTimeoutMs << u"within 5 s"_s;
+        QTest::newRow("1.5 s") << 1500 << 1500 << u"within 1.5 s"_s;
+    }
+    void connectGivesUpAfterItsLimit()
+    {
+        QFETCH(int, limitMs);
+        QFETCH(int, expectedMs);
+        QFETCH(QString, says);
+        SilentListener silent;
+        QVERIFY(silent.full);
+        TcpTransport transport({ u"127.0.0.1"_s, silent.port });
+        if (limitMs > 0)
+            transport.setConnectTimeoutMs(limitMs);
+        QSignalSpy errors(&transport, &LineTransport::errorOccurred);
+        QSignalSpy opened(&transport, &LineTransport::opened);
+        QElapsedTimer clock;
+        clock.start();
+        transport.open();
+        QVERIFY(runUntil([&] { return !errors.isEmpty(); }, expectedMs + 3000));
+        const qint64 elapsed = clock.elapsed();
+        QVERIFY2(elapsed >= expectedMs && elapsed < expectedMs + 500, qPrintable(QString::number(elapsed)));
+        const QString said = errors.front().front().toString();
+        QVERIFY2(said.startsWith(u"127.0.0.1:%1 did not answer %2"_s.arg(silent.port).arg(says)),
+            qPrintable(said));
+        QVERIFY2(said.contains(u"switched on and on this network"_s), qPrintable(said));
+        QVERIFY(!transport.isOpen());
+        QCOMPARE(opened.size(), 0);
+    }
+
+    // What notices a machine that vanished (switched off, out of Wi-Fi range) in seconds: keepalives after
+    // 2 s of silence, one a second, three unanswered; data unacknowledged for 5 s; and no Nagle delay on a
+    // command's few bytes. Read back from the kernel; the peer's own socket, left as the system makes it,
+    // shows that the reading tells them apart.
+    void tunesTheConnectedSocket()
+    {
+        Peer peer;
+        auto transport = std::make_unique<TcpTransport>(peer.address());
+        transport->setProtocol(StreamTransport::Protocol::Text);
+        QSignalSpy opened(transport.get(), &LineTransport::opened);
+        transport->open();
+        QVERIFY(peer.accept());
+        QVERIFY(runUntil([&] { return !opened.isEmpty(); }, 3000));
+        const quint16 local = peer.socket->peerPort();
+        const int fd = socketWithLocalPort(local);
+        QVERIFY(fd >= 0);
+        QCOMPARE(intOption(fd, SOL_SOCKET, SO_KEEPALIVE), 1);
+        QCOMPARE(intOption(fd, IPPROTO_TCP, TCP_KEEPIDLE), TcpTransport::kKeepAliveIdleS);
+        QCOMPARE(intOption(fd, IPPROTO_TCP, TCP_KEEPINTVL), TcpTransport::kKeepAliveIntervalS);
+        QCOMPARE(intOption(fd, IPPROTO_TCP, TCP_KEEPCNT), TcpTransport::kKeepAliveCount);
+        QCOMPARE(intOption(fd, IPPROTO_TCP, TCP_USER_TIMEOUT), TcpTransport::kUnacknowledgedMs);
+        QCOMPARE(intOption(fd, IPPROTO_TCP, TCP_NODELAY), 1);
+        QCOMPARE(TcpTransport::kKeepAliveIdleS, 2);
+        QCOMPARE(TcpTransport::kKeepAliveIntervalS, 1);
+        QCOMPARE(TcpTransport::kKeepAliveCount, 3);
+        QCOMPARE(TcpTransport::kUnacknowledgedMs, 5000);
+
+        const int untuned = int(peer.socket->socketDescriptor());
+        QCOMPARE(intOption(untuned, SOL_SOCKET, SO_KEEPALIVE), 0);
+        QCOMPARE(intOption(untuned, IPPROTO_TCP, TCP_USER_TIMEOUT), 0);
+        QCOMPARE(intOption(untuned, IPPROTO_TCP, TCP_NODELAY), 0);
+
+        // Gone with the transport, the connection ends: a machine serves one client at a time and says busy
+        // while one is connected, so a connection left behind would keep it from the next.
+        transport.reset();
+        QVERIFY(runUntil([&] { return peer.socket->state() == QAbstractSocket::UnconnectedState; }, 3000));
+        QCOMPARE(socketWithLocalPort(local), -1);
+    }
+
+    // The machine closes the connection (switched off cleanly, restarted, another program took it) while a
+    // command waits: the command fails at once, not at its 5 s limit, in words that say what happened.
+    void peerClosingFailsTheCommandAtOnce()
+    {
+        Peer peer;
+        TcpTransport transport(peer.address());
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        MachineLink link(&transport);
+        QVERIFY(openLink(peer, link));
+        QSignalSpy closed(&link, &MachineLink::closed);
+        std::optional<CommandReply> reply;
+        link.send("M493.4", MachineLink::kDefaultTimeoutMs, [&reply](const CommandReply &r) { reply = r; });
+        QCOMPARE(peer.readUntil("\n"), QByteArray("M493.4\n"));
+        QElapsedTimer clock;
+        clock.start();
+        peer.socket->disconnectFromHost();
+        QVERIFY(runUntil([&] { return reply.has_value(); }, 3000));
+        QVERIFY2(clock.elapsed() < 500, qPrintable(QString::number(clock.elapsed())));
+        QCOMPARE(reply->status, CommandReply::Status::LinkLost);
+        QVERIFY2(reply->message.contains(u"while it ran \"M493.4\""_s), qPrintable(reply->message));
+        const QString address = u"127.0.0.1:%1"_s.arg(peer.server.serverPort());
+        QVERIFY2(reply->message.contains(u"The machine at %1 closed the connection"_s.arg(address)),
+            qPrintable(reply->message));
+        QVERIFY(!transport.isOpen());
+        QCOMPARE(closed.size(), 1);
+        // This side closed too, and said so to the machine, which can serve the next client.
+        QVERIFY(runUntil([&] { return peer.socket->state() == QAbstractSocket::UnconnectedState; }, 3000));
+    }
+
+    // The connection is reset (RST: the machine lost power mid-stream, a router dropped it): the same at
+    // once, said as a lost link.
+    void peerResettingFailsTheCommandAtOnce()
+    {
+        Peer peer;
+        TcpTransport transport(peer.address());
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        MachineLink link(&transport);
+        QVERIFY(openLink(peer, link));
+        std::optional<CommandReply> reply;
+        link.send(
+            "M491", MachineLink::kMotionTimeoutMs, [&reply](const CommandReply &r) { reply = r; },
+            ReplyEnd::Script);
+        QCOMPARE(peer.readUntil("\n"), QByteArray("M491\n"));
+        const ::linger reset { 1, 0 };
+        QCOMPARE(
+            ::setsockopt(int(peer.socket->socketDescriptor()), SOL_SOCKET, SO_LINGER, &reset, sizeof reset),
+            0);
+        QElapsedTimer clock;
+        clock.start();
+        peer.socket->abort();
+        QVERIFY(runUntil([&] { return reply.has_value(); }, 3000));
+        QVERIFY2(clock.elapsed() < 500, qPrintable(QString::number(clock.elapsed())));
+        QCOMPARE(reply->status, CommandReply::Status::LinkLost);
+        const QString address = u"127.0.0.1:%1"_s.arg(peer.server.serverPort());
+        QVERIFY2(reply->message.contains(
+                     u"The link to %1 was lost (%2)"_s.arg(address, qt_error_string(ECONNRESET))),
+            qPrintable(reply->message));
+        QVERIFY2(reply->message.contains(u"switched off or left the network"_s), qPrintable(reply->message));
+        QVERIFY2(!reply->message.contains(u"closed the connection"_s), qPrintable(reply->message));
+        QVERIFY(!transport.isOpen());
+    }
+
+    // A peer that took the connection and then says nothing (half-open as the client sees it: a machine
+    // hung, or gone without a word while the kernel on its side still acknowledges): the command fails at its
+    // own limit, and the link is closed, since a late answer could be taken for the next command's.
+    // Keepalives and TCP_USER_TIMEOUT are for a peer whose kernel is gone too, which loopback cannot play:
+    // what they are set to is tunesTheConnectedSocket's.
+    void silentPeerFailsTheCommandAtItsLimit()
+    {
+        Peer peer;
+        TcpTransport transport(peer.address());
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        MachineLink link(&transport);
+        QVERIFY(openLink(peer, link));
+        std::optional<CommandReply> reply;
+        QElapsedTimer clock;
+        clock.start();
+        link.send("M493.4", 1000, [&reply](const CommandReply &r) { reply = r; });
+        QCOMPARE(peer.readUntil("\n"), QByteArray("M493.4\n"));
+        QVERIFY(runUntil([&] { return reply.has_value(); }, 4000));
+        const qint64 elapsed = clock.elapsed();
+        QVERIFY2(elapsed >= 1000 && elapsed < 1500, qPrintable(QString::number(elapsed)));
+        QCOMPARE(reply->status, CommandReply::Status::Timeout);
+        QVERIFY2(reply->message.startsWith(u"The machine did not answer \"M493.4\" within 1.0 s"_s),
+            qPrintable(reply->message));
+        QVERIFY(!transport.isOpen());
+        QVERIFY(runUntil([&] { return peer.socket->state() == QAbstractSocket::UnconnectedState; }, 3000));
+    }
+
+    // Over TCP, as on a serial port, the framed firmware's bytes may come with noise between its frames
+    // (boot text, a broken frame, a stray header byte): found by the transport as framed, and every command
+    // still understood, nothing of the noise taken for the machine's words.
+    void understandsFramesWithGarbageBetweenThem()
+    {
+        Peer peer;
+        TcpTransport transport(peer.address());
+        MachineLink link(&transport);
+        link.setPollInterval(0);
+        QSignalSpy opened(&link, &MachineLink::opened);
+        QSignalSpy lines(&link, &MachineLink::lineReceived);
+        link.open();
+        QVERIFY(peer.accept());
+        const QByteArray query = MakeraFrame::encode(MakeraFrame::RealTime, "?");
+        QCOMPARE(peer.readUntil(query), query);
+        QByteArray broken = MakeraFrame::encode(MakeraFrame::Output, "bad crc\n");
+        broken[broken.size() - 3] = char(broken.at(broken.size() - 3) ^ 0x5a);
+        peer.socket->write("boot text\r\n" + broken + "\x86"
+            + MakeraFrame::encode(MakeraFrame::Status, "<Idle|MPos:0,0,0|T:2,9.652,-1,0>\n") + "\x55\xaa");
+        QVERIFY(runUntil([&] { return !opened.isEmpty(); }, 3000));
+        QCOMPARE(transport.mode(), ConsoleStream::Mode::Framed);
+
+        std::optional<CommandReply> reply;
+        link.send("M493.4", MachineLink::kDefaultTimeoutMs, [&reply](const CommandReply &r) { reply = r; });
+        const QByteArray command = MakeraFrame::encode(MakeraFrame::Command, "M493.4");
+        QCOMPARE(peer.readUntil(command), command);
+        const QByteArray answer = "\x86\x68junk"
+            + MakeraFrame::encode(MakeraFrame::Reply, "current tool offset [") + QByteArray("\r\n\x00\xff", 4)
+            + broken + MakeraFrame::encode(MakeraFrame::Reply, "9.652] , reference tool offset ") + "noise"
+            + MakeraFrame::encode(MakeraFrame::Reply, "[-115.340]\r\n")
+            + MakeraFrame::encode(MakeraFrame::Reply, "ok\r\n") + "trailing noise";
+        for (qsizetype i = 0; i < answer.size(); i += 5) { // split anywhere
+            peer.socket->write(answer.mid(i, 5));
+            peer.socket->flush();
+        }
+        QVERIFY(runUntil([&] { return reply.has_value(); }, 3000));
+        QVERIFY2(reply->ok(), qPrintable(reply->message));
+        QCOMPARE(reply->lines,
+            QList<QByteArray> { "current tool offset [9.652] , reference tool offset [-115.340]" });
+        QStringList heard;
+        for (const auto &l : std::as_const(lines))
+            heard << QString::fromLatin1(l.front().toByteArray());
+        QCOMPARE(heard,
+            (QStringList { u"current tool offset [9.652] , reference tool offset [-115.340]"_s, u"ok"_s }));
+        const auto &counts = transport.stream().frameCounts();
+        QCOMPARE(counts.badCrc, 1);
+        QVERIFY2(counts.strayBytes >= 20, qPrintable(QString::number(counts.strayBytes)));
+        QVERIFY(transport.isOpen());
+    }
+
+    // A protocol forced wrongly looks like a machine that does not answer: the transport says what the bytes
+    // point to instead (nothing at all to plain text: framed; plain text to frames: text), and nothing once
+    // the machine answered as forced, or when the socket never connected.
+    void saysWhenAForcedProtocolIsNotTheMachines()
+    {
+        using Protocol = StreamTransport::Protocol;
+        const QByteArray status = "<Idle|MPos:0,0,0|T:1,0.000,-1,0>\r\n";
+        for (const Protocol forced : { Protocol::Text, Protocol::Framed }) {
+            const bool text = forced == Protocol::Text;
+            for (const bool answered : { false, true }) {
+                Peer peer;
+                TcpTransport transport(peer.address());
+                transport.setProtocol(forced);
+                QSignalSpy opened(&transport, &LineTransport::opened);
+                QSignalSpy lines(&transport, &LineTransport::lineReceived);
+                transport.open();
+                QVERIFY(peer.accept());
+                QVERIFY(runUntil([&] { return !opened.isEmpty(); }, 3000));
+                if (!text)
+                    peer.socket->write(status); // a plain machine's answer to a framed query
+                if (answered)
+                    peer.socket->write(text ? status : MakeraFrame::encode(MakeraFrame::Status, status));
+                QVERIFY(runUntil(
+                    [&] {
+                        return text ? lines.size() == int(answered)
+                                    : transport.stream().frameCounts().strayBytes > 0
+                                && lines.size() == int(answered);
+                    },
+                    3000));
+                const QString other = answered ? u"none"_s : text ? u"framed"_s : u"text"_s;
+                QCOMPARE(likely(transport), other);
+                transport
+                    .close(); // what the link does when the command times out: still said, for its message
+                QCOMPARE(likely(transport), other);
+            }
+        }
+        TcpTransport refused({ u"127.0.0.1"_s, 1 });
+        refused.setProtocol(Protocol::Text);
+        QSignalSpy errors(&refused, &LineTransport::errorOccurred);
+        refused.open();
+        QVERIFY(runUntil([&] { return !errors.isEmpty(); }, 3000));
+        QCOMPARE(likely(refused), u"none"_s);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestTcpTransport)
+#include "tst_tcptransport.moc"
