@@ -19,7 +19,9 @@
 #include "model/limits.h"
 #include "model/numberformat.h"
 #include "serial/machineconnection.h"
+#include "serial/machinelink.h"
 #include "serial/machinesession.h"
+#include "serial/transport/streamtransport.h"
 
 using namespace Qt::StringLiterals;
 
@@ -167,8 +169,11 @@ public:
 
     int exec()
     {
-        QObject::connect(&m_connection, &MachineConnection::connectFailed, &m_loop,
-            [this] { finishWith(m_connection.connectResult()); });
+        QObject::connect(&m_connection, &MachineConnection::connectFailed, &m_loop, [this] {
+            SessionResult result = m_connection.connectResult();
+            result.message += protocolHint();
+            finishWith(result);
+        });
         QObject::connect(
             &m_connection, &MachineConnection::stateChanged, &m_loop, [this](MachineConnection::State state) {
                 if (state == MachineConnection::State::Connected && !std::exchange(m_started, true))
@@ -192,6 +197,9 @@ private:
     [[nodiscard]] std::optional<double> storedTloInSpindle() const;
     [[nodiscard]] std::optional<double> brokenToolTloInSpindle() const;
     void roundTrip();
+    // A forced --protocol the machine does not speak looks like a machine that does not answer: what its
+    // bytes say instead, as a sentence to add to the failure, or nothing.
+    [[nodiscard]] QString protocolHint() const;
     // `reported`: the command printed the failure itself (a rack's summary holds it).
     void finishWith(const SessionResult &r, bool reported = false);
     [[nodiscard]] bool record(const SessionResult &r);
@@ -214,6 +222,22 @@ private:
     QElapsedTimer m_clock;
     bool m_recordFailed = false; // then the exit code says so (unless the tool is broken, which says more)
 };
+
+QString MachineRun::protocolHint() const
+{
+    const MachineLink *link = m_connection.link();
+    const auto *stream = link ? qobject_cast<const StreamTransport *>(link->transport()) : nullptr;
+    const auto other = stream ? stream->otherProtocolLikely() : std::nullopt;
+    if (!other)
+        return {};
+    if (*other == StreamTransport::Protocol::Framed)
+        return u" Nothing at all came back to --protocol text: a machine that speaks Makera's frames (its "
+               u"firmware from 1.0.4) ignores plain text. Leave --protocol out, or give --protocol auto, and "
+               u"Toffee finds out; or give --protocol framed. If it still does not answer, check that the "
+               u"machine is on and has started."_s;
+    return u" It answered in plain text, not in Makera's frames as --protocol framed expects. Leave "
+           u"--protocol out, or give --protocol auto, and Toffee finds out; or give --protocol text."_s;
+}
 
 void MachineRun::finishWith(const SessionResult &r, bool reported)
 {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <QFileInfo>
+#include <QHostAddress>
 
 #include "model/formats/tablefile.h"
 #include "model/job/jobchecker.h"
@@ -40,7 +41,13 @@ Result<void> readTarget(const Invocation &call, MachineOptions &o)
     o.target.port = call.option(u"port"_s);
     o.target.baud = SerialPortTransport::kDefaultBaud;
     if (call.has(u"host"_s)) {
-        const auto address = TcpTransport::parseAddress(call.option(u"host"_s));
+        const QString host = call.option(u"host"_s).trimmed();
+        const auto address = TcpTransport::parseAddress(host);
+        // A bare IPv6 address is refused, since its last group cannot be told from a port: say how to write
+        // it.
+        if (!address && QHostAddress(host).protocol() == QAbstractSocket::IPv6Protocol)
+            return Error { address.error().message
+                + u" An IPv6 address goes in brackets: [%1], or [%1]:PORT with a port."_s.arg(host) };
         if (!address)
             return address.error();
         o.target.host = address.value().host;
