@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "serial/machineconnection.h"
 
+#include <cmath>
+#include <utility>
+
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulatortransport.h"
 #include "serial/transport/serialporttransport.h"
@@ -128,8 +131,14 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
     });
     connect(m_link.get(), &MachineLink::closed, this, [this](const QString &reason) {
         if (m_state == State::Connected) {
+            // An operation still running (between two commands) was interrupted as well.
+            if (!m_interruption && !m_operation.isEmpty())
+                m_interruption = m_before;
+            const std::optional<Interruption> lost = m_interruption;
             setState(State::Disconnected);
             Q_EMIT disconnected(reason);
+            if (lost)
+                Q_EMIT linkLost(lost->operation, reason);
         }
     });
     setState(State::Connecting);
@@ -151,7 +160,44 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
         }
         if (result.tlo)
             Q_EMIT offsetsChanged(*result.tlo, result.tool.value_or(-1));
+        if (m_interruption && m_interruption->machine == m_target.name()) {
+            const Interruption before = *std::exchange(m_interruption, std::nullopt);
+            Q_EMIT interruptionChecked(interruptionVerdict(before, result));
+        }
     });
+}
+
+QString MachineConnection::interruptionVerdict(const Interruption &before, const SessionResult &now)
+{
+    const auto tool = now.status ? now.status->tool : now.tool;
+    const std::optional<double> tlo = now.tlo ? std::optional(now.tlo->tlo())
+        : now.status                          ? now.status->tlo
+                                              : std::nullopt;
+    const std::optional<double> currentMz = now.tlo ? now.tlo->knownCurrentMz() : std::nullopt;
+    auto toolName = [](std::optional<int> t) {
+        return !t ? tr("an unknown tool") : *t < 0 ? tr("no tool") : u"T"_s + QString::number(*t);
+    };
+    auto mm = [](std::optional<double> v) {
+        return v ? QString::number(*v, 'f', 3) : tr("unknown");
+    };
+    auto differs = [](std::optional<double> a, std::optional<double> b) {
+        return a && b && std::abs(*a - *b) >= 0.0005;
+    };
+    const QString held
+        = tr("Before \"%1\" the machine had %2 in the spindle with TLO %3; now it has %4 with "
+             "TLO %5.")
+              .arg(before.operation, toolName(before.tool), mm(before.tloInForce), toolName(tool), mm(tlo));
+    if (!tlo || !before.tloInForce)
+        return held + u' '
+            + tr("Toffee cannot tell whether it ran. Nothing of it was recorded; check the machine and run "
+                 "it again.");
+    if (tool != before.tool || differs(tlo, before.tloInForce) || differs(currentMz, before.currentMz))
+        return held + u' '
+            + tr("It ran on the machine, at least in part, but the machine's confirmation was lost: "
+                 "nothing of it was recorded. Run it again to record it.");
+    return held + u' '
+        + tr("Nothing changed on the machine: it did not run, or it measured exactly the length held "
+             "before. Nothing of it was recorded; run it again.");
 }
 
 void MachineConnection::setHalt(bool halted, std::optional<int> reason)
@@ -174,6 +220,9 @@ bool MachineConnection::perform(const QString &what, bool evenIfHalted,
     if ((m_halted && !evenIfHalted) || !beginOperation(what))
         return false;
     operation(m_session.get(), [this, done](const SessionResult &r) {
+        // The link went in the middle of it: what the machine held before is kept for reconnecting.
+        if (r.outcome == SessionResult::Outcome::LinkFailure && m_before)
+            m_interruption = m_before;
         endOperation(r);
         if (done)
             done(r);
@@ -333,6 +382,13 @@ bool MachineConnection::beginOperation(const QString &what)
     if (isBusy() || m_state != State::Connected)
         return false;
     m_operation = what;
+    const auto &status = m_link->lastStatus();
+    m_before = Interruption { what, m_target.name(), status ? status->tool : activeTool(),
+        status && status->tlo ? status->tlo
+            : m_offsets       ? std::optional(m_offsets->tlo())
+                              : std::nullopt,
+        m_offsets ? m_offsets->knownCurrentMz() : std::nullopt };
+    m_interruption.reset(); // a new operation on the machine: the old question is answered by now
     Q_EMIT busyChanged(true, what);
     return true;
 }

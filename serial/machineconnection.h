@@ -124,6 +124,28 @@ public:
     [[nodiscard]] bool canOperate() const;
     [[nodiscard]] QString operation() const { return m_operation; }
 
+    // An operation the link was lost in the middle of (a cable pulled, the machine out of Wi-Fi): what it was
+    // and what the machine held when it began. Nothing of it was recorded, since the machine confirmed
+    // nothing; on connecting to the same machine again Toffee reads the offsets back and says what became of
+    // it (interruptionChecked), then forgets it.
+    struct Interruption
+    {
+        QString operation; // "Probing T3…"
+        QString machine; // ConnectionTarget::name()
+        std::optional<int> tool; // in the spindle when it began
+        std::optional<double> tloInForce;
+        std::optional<double> currentMz; // M493.4's current tool offset, when known
+    };
+    [[nodiscard]] const std::optional<Interruption> &interruption() const { return m_interruption; }
+    // The last operation ended because the link went: linkLost follows, or came already (a panel leaves the
+    // telling to whoever offers to reconnect).
+    [[nodiscard]] bool linkLostDuringOperation() const
+    {
+        return m_interruption && (m_state != State::Connected || !m_link || !m_link->isOpen());
+    }
+    // What the machine holds now against what it held before `interruption`, for people: whether it ran.
+    [[nodiscard]] static QString interruptionVerdict(const Interruption &before, const SessionResult &now);
+
 Q_SIGNALS:
     void stateChanged(Toffee::MachineConnection::State state);
     void connectFailed(const QString &message);
@@ -136,6 +158,10 @@ Q_SIGNALS:
     void haltedChanged(bool halted);
     // Offsets learned from any operation (M493.4 and M493.3 replies).
     void offsetsChanged(const Toffee::TloReading &offsets, int tool);
+    // The link was lost while `operation` ran (interruption() says what the machine held before it).
+    void linkLost(const QString &operation, const QString &reason);
+    // Connected again to the machine of interruption(): what the machine holds now says whether it ran.
+    void interruptionChecked(const QString &verdict);
 
 private:
     void setState(State state);
@@ -155,6 +181,9 @@ private:
     ConnectionTarget m_target;
     std::optional<TloReading> m_offsets;
     std::optional<int> m_haltReason;
+    // What the machine held when the running operation began (the tool and TLO of the last status report).
+    std::optional<Interruption> m_before;
+    std::optional<Interruption> m_interruption;
 };
 
 } // namespace Toffee

@@ -114,9 +114,16 @@ void MachineSession::connectToMachine(Done done)
         done(result);
     };
     *failed = connect(m_link->transport(), &LineTransport::errorOccurred, guard, fail);
-    connect(guard, &QTimer::timeout, guard, [fail] { fail(tr("The port did not open within 5 s.")); });
+    // A backstop: the transport says itself why it did not open, within its own limit.
+    const int openLimitMs = m_link->transport()->openLimitMs() + 1000;
+    connect(guard, &QTimer::timeout, guard, [this, fail, openLimitMs] {
+        fail(tr("The link to %1 did not open within %2 s. Check the machine and the connection, then try "
+                "again.")
+                 .arg(m_link->transport()->description())
+                 .arg(openLimitMs / 1000));
+    });
     guard->setTimerType(Qt::PreciseTimer);
-    guard->start(5000);
+    guard->start(openLimitMs);
     m_link->open();
 }
 

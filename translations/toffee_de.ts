@@ -1169,6 +1169,82 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
+    <message>
+        <source>Toffee&apos;s own Carvera, for trying things out</source>
+        <translation>Toffees eigene Carvera, zum Ausprobieren</translation>
+    </message>
+    <message>
+        <source>How to reach the machine</source>
+        <translation>Wie die Maschine erreicht wird</translation>
+    </message>
+    <message>
+        <source>Serial port (USB)</source>
+        <translation>Serieller Anschluss (USB)</translation>
+    </message>
+    <message>
+        <source>Wi-Fi</source>
+        <translation>WLAN</translation>
+    </message>
+    <message>
+        <source>Machine on the network</source>
+        <translation>Maschine im Netzwerk</translation>
+    </message>
+    <message>
+        <source>Address, such as 192.168.1.57</source>
+        <translation>Adresse, etwa 192.168.1.57</translation>
+    </message>
+    <message>
+        <source>%1 — %2 (busy)</source>
+        <translation>%1 — %2 (belegt)</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>Cannot connect to the machine</source>
+        <translation>Keine Verbindung zur Maschine möglich</translation>
+    </message>
+    <message>
+        <source>No machine chosen. Choose one of the machines heard on the network, or type the machine&apos;s address as its screen shows it (such as 192.168.1.57).</source>
+        <translation>Keine Maschine gewählt. Wählen Sie eine der im Netzwerk gehörten Maschinen, oder geben Sie die Adresse der Maschine so ein, wie ihr Bildschirm sie zeigt (etwa 192.168.1.57).</translation>
+    </message>
+    <message>
+        <source>The machine is busy</source>
+        <translation>Die Maschine ist beschäftigt</translation>
+    </message>
+    <message>
+        <source>%1 says it is busy: another program is connected to it (Makera&apos;s controller, a phone, another computer).</source>
+        <translation>%1 meldet sich als belegt: Ein anderes Programm ist mit ihr verbunden (Makeras Controller, ein Telefon, ein anderer Computer).</translation>
+    </message>
+    <message>
+        <source>Commands from two programs at once can interfere, and each sees the other&apos;s replies. Disconnect the other program first, or connect anyway.</source>
+        <translation>Befehle aus zwei Programmen zugleich können sich stören, und jedes sieht die Antworten des anderen. Trennen Sie zuerst das andere Programm, oder verbinden Sie sich trotzdem.</translation>
+    </message>
+    <message>
+        <source>Connect Anyway</source>
+        <translation>Trotzdem verbinden</translation>
+    </message>
+    <message>
+        <source>Cannot listen for machines on UDP port %1 (%2): type the machine&apos;s address.</source>
+        <translation>Auf UDP-Port %1 kann nicht nach Maschinen gehorcht werden (%2): Geben Sie die Adresse der Maschine ein.</translation>
+    </message>
+    <message>
+        <source>%1 is busy: another program is connected to it.</source>
+        <translation>%1 ist belegt: Ein anderes Programm ist mit ihr verbunden.</translation>
+    </message>
+    <message>
+        <source>Listening for machines on the network… None heard yet: a Carvera announces itself once a second when its Wi-Fi is on. Or type its address.</source>
+        <translation>Horche auf Maschinen im Netzwerk… Noch keine gehört: Eine Carvera meldet sich einmal pro Sekunde, wenn ihr WLAN an ist. Oder geben Sie ihre Adresse ein.</translation>
+    </message>
+    <message>
+        <source>One machine heard on the network.</source>
+        <translation>Eine Maschine im Netzwerk gehört.</translation>
+    </message>
+    <message>
+        <source>%1 machines heard on the network.</source>
+        <translation>%1 Maschinen im Netzwerk gehört.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleCheck</name>
@@ -3116,6 +3192,34 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>Emptying the spindle…</source>
         <translation>Spindel wird geleert …</translation>
     </message>
+    <message>
+        <source>an unknown tool</source>
+        <translation>ein unbekanntes Werkzeug</translation>
+    </message>
+    <message>
+        <source>no tool</source>
+        <translation>kein Werkzeug</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>Before &quot;%1&quot; the machine had %2 in the spindle with TLO %3; now it has %4 with TLO %5.</source>
+        <translation>Vor „%1“ hatte die Maschine %2 in der Spindel mit Längenkorrektur %3; jetzt hat sie %4 mit Längenkorrektur %5.</translation>
+    </message>
+    <message>
+        <source>Toffee cannot tell whether it ran. Nothing of it was recorded; check the machine and run it again.</source>
+        <translation>Toffee kann nicht erkennen, ob es ausgeführt wurde. Nichts davon wurde aufgezeichnet; prüfen Sie die Maschine und führen Sie es erneut aus.</translation>
+    </message>
+    <message>
+        <source>It ran on the machine, at least in part, but the machine&apos;s confirmation was lost: nothing of it was recorded. Run it again to record it.</source>
+        <translation>Es lief auf der Maschine, zumindest teilweise, aber die Bestätigung der Maschine ging verloren: Nichts davon wurde aufgezeichnet. Führen Sie es erneut aus, um es aufzuzeichnen.</translation>
+    </message>
+    <message>
+        <source>Nothing changed on the machine: it did not run, or it measured exactly the length held before. Nothing of it was recorded; run it again.</source>
+        <translation>An der Maschine hat sich nichts geändert: Es lief nicht, oder es hat genau die vorherige Länge gemessen. Nichts davon wurde aufgezeichnet; führen Sie es erneut aus.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -3208,10 +3312,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine answered but sent no status report; is this a Carvera?</source>
         <translation>Die Maschine hat geantwortet, aber keinen Statusbericht gesendet; ist das eine Carvera?</translation>
-    </message>
-    <message>
-        <source>The port did not open within 5 s.</source>
-        <translation>Der Anschluss hat sich nicht innerhalb von 5 s geöffnet.</translation>
     </message>
     <message>
         <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
@@ -3356,6 +3456,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Unlocked, but the stored TLO (%1 mm) could not be set back: %2 The length the break test measured is still in force; do not cut.</source>
         <translation>Entsperrt, aber die gespeicherte Längenkorrektur (%1 mm) ließ sich nicht zurücksetzen: %2 Die bei der Bruchprüfung gemessene Länge ist noch in Kraft; schneiden Sie nicht.</translation>
+    </message>
+    <message>
+        <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
+        <translation>Die Verbindung zu %1 wurde nicht innerhalb von %2 s geöffnet. Prüfen Sie die Maschine und die Verbindung und versuchen Sie es erneut.</translation>
     </message>
 </context>
 <context>
@@ -3932,6 +4036,30 @@ Trotzdem speichern?</translation>
     <message>
         <source>&amp;About Toffee</source>
         <translation>Ü&amp;ber Toffee</translation>
+    </message>
+    <message>
+        <source>Connected again</source>
+        <translation>Wieder verbunden</translation>
+    </message>
+    <message>
+        <source>The link to the machine was lost</source>
+        <translation>Die Verbindung zur Maschine ist abgerissen</translation>
+    </message>
+    <message>
+        <source>The link to the machine was lost during &quot;%1&quot;: %2</source>
+        <translation>Die Verbindung zur Maschine ist während „%1“ abgerissen: %2</translation>
+    </message>
+    <message>
+        <source>Nothing of it was written to the tool table or the history: the machine did not confirm it. Reconnect to read the machine&apos;s offsets back; Toffee then says whether it happened.</source>
+        <translation>Nichts davon wurde in die Werkzeugtabelle oder den Verlauf geschrieben: Die Maschine hat es nicht bestätigt. Verbinden Sie sich erneut, um die Korrekturen der Maschine zurückzulesen; Toffee sagt dann, ob es geschehen ist.</translation>
+    </message>
+    <message>
+        <source>Reconnect</source>
+        <translation>Erneut verbinden</translation>
+    </message>
+    <message>
+        <source>Not Now</source>
+        <translation>Nicht jetzt</translation>
     </message>
 </context>
 <context>

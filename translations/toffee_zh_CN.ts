@@ -1169,6 +1169,82 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
+    <message>
+        <source>Toffee&apos;s own Carvera, for trying things out</source>
+        <translation>Toffee 自带的 Carvera，用于试用</translation>
+    </message>
+    <message>
+        <source>How to reach the machine</source>
+        <translation>连接机器的方式</translation>
+    </message>
+    <message>
+        <source>Serial port (USB)</source>
+        <translation>串口（USB）</translation>
+    </message>
+    <message>
+        <source>Wi-Fi</source>
+        <translation>Wi-Fi</translation>
+    </message>
+    <message>
+        <source>Machine on the network</source>
+        <translation>网络中的机器</translation>
+    </message>
+    <message>
+        <source>Address, such as 192.168.1.57</source>
+        <translation>地址，例如 192.168.1.57</translation>
+    </message>
+    <message>
+        <source>%1 — %2 (busy)</source>
+        <translation>%1 — %2（忙）</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>Cannot connect to the machine</source>
+        <translation>无法连接到机床</translation>
+    </message>
+    <message>
+        <source>No machine chosen. Choose one of the machines heard on the network, or type the machine&apos;s address as its screen shows it (such as 192.168.1.57).</source>
+        <translation>未选择机器。请选择网络中发现的机器之一，或按机器屏幕显示的地址输入（例如 192.168.1.57）。</translation>
+    </message>
+    <message>
+        <source>The machine is busy</source>
+        <translation>机床正忙</translation>
+    </message>
+    <message>
+        <source>%1 says it is busy: another program is connected to it (Makera&apos;s controller, a phone, another computer).</source>
+        <translation>%1 表示它正忙：另一个程序已连接到它（Makera 的控制程序、手机或另一台电脑）。</translation>
+    </message>
+    <message>
+        <source>Commands from two programs at once can interfere, and each sees the other&apos;s replies. Disconnect the other program first, or connect anyway.</source>
+        <translation>两个程序同时发送命令可能互相干扰，且各自会看到对方的回复。请先断开另一个程序，或仍然连接。</translation>
+    </message>
+    <message>
+        <source>Connect Anyway</source>
+        <translation>仍然连接</translation>
+    </message>
+    <message>
+        <source>Cannot listen for machines on UDP port %1 (%2): type the machine&apos;s address.</source>
+        <translation>无法在 UDP 端口 %1 上侦听机器（%2）：请输入机器的地址。</translation>
+    </message>
+    <message>
+        <source>%1 is busy: another program is connected to it.</source>
+        <translation>%1 正忙：另一个程序已连接到它。</translation>
+    </message>
+    <message>
+        <source>Listening for machines on the network… None heard yet: a Carvera announces itself once a second when its Wi-Fi is on. Or type its address.</source>
+        <translation>正在侦听网络中的机器… 尚未发现：Carvera 在 Wi-Fi 开启时每秒广播一次。也可输入它的地址。</translation>
+    </message>
+    <message>
+        <source>One machine heard on the network.</source>
+        <translation>在网络中发现一台机器。</translation>
+    </message>
+    <message>
+        <source>%1 machines heard on the network.</source>
+        <translation>在网络中发现 %1 台机器。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleCheck</name>
@@ -3116,6 +3192,34 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>Emptying the spindle…</source>
         <translation>正在清空主轴…</translation>
     </message>
+    <message>
+        <source>an unknown tool</source>
+        <translation>未知刀具</translation>
+    </message>
+    <message>
+        <source>no tool</source>
+        <translation>无刀具</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Before &quot;%1&quot; the machine had %2 in the spindle with TLO %3; now it has %4 with TLO %5.</source>
+        <translation>在“%1”之前，机器主轴中为 %2，刀长补偿 %3；现在为 %4，刀长补偿 %5。</translation>
+    </message>
+    <message>
+        <source>Toffee cannot tell whether it ran. Nothing of it was recorded; check the machine and run it again.</source>
+        <translation>Toffee 无法判断它是否已执行。未记录任何内容；请检查机器后重新执行。</translation>
+    </message>
+    <message>
+        <source>It ran on the machine, at least in part, but the machine&apos;s confirmation was lost: nothing of it was recorded. Run it again to record it.</source>
+        <translation>它已在机器上执行（至少部分执行），但机器的确认丢失了：未记录任何内容。请重新执行以记录。</translation>
+    </message>
+    <message>
+        <source>Nothing changed on the machine: it did not run, or it measured exactly the length held before. Nothing of it was recorded; run it again.</source>
+        <translation>机器上没有任何变化：它没有执行，或测得的长度与之前完全相同。未记录任何内容；请重新执行。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -3208,10 +3312,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine answered but sent no status report; is this a Carvera?</source>
         <translation>机床有回应，但没有发送状态报告；这是 Carvera 吗？</translation>
-    </message>
-    <message>
-        <source>The port did not open within 5 s.</source>
-        <translation>端口在 5 秒内未能打开。</translation>
     </message>
     <message>
         <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
@@ -3356,6 +3456,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Unlocked, but the stored TLO (%1 mm) could not be set back: %2 The length the break test measured is still in force; do not cut.</source>
         <translation>已解锁，但无法恢复已存的 TLO（%1 mm）：%2 断刀检测测得的长度仍在生效；请勿切削。</translation>
+    </message>
+    <message>
+        <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
+        <translation>与 %1 的连接未能在 %2 秒内打开。请检查机器和连接后重试。</translation>
     </message>
 </context>
 <context>
@@ -3932,6 +4036,30 @@ Save anyway?</source>
     <message>
         <source>&amp;About Toffee</source>
         <translation>关于 Toffee(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Connected again</source>
+        <translation>已重新连接</translation>
+    </message>
+    <message>
+        <source>The link to the machine was lost</source>
+        <translation>与机器的连接已断开</translation>
+    </message>
+    <message>
+        <source>The link to the machine was lost during &quot;%1&quot;: %2</source>
+        <translation>在“%1”期间与机器的连接断开：%2</translation>
+    </message>
+    <message>
+        <source>Nothing of it was written to the tool table or the history: the machine did not confirm it. Reconnect to read the machine&apos;s offsets back; Toffee then says whether it happened.</source>
+        <translation>未向刀具表或历史写入任何内容：机器没有确认。请重新连接以读回机器的偏置；Toffee 随后会告知它是否已执行。</translation>
+    </message>
+    <message>
+        <source>Reconnect</source>
+        <translation>重新连接</translation>
+    </message>
+    <message>
+        <source>Not Now</source>
+        <translation>暂不</translation>
     </message>
 </context>
 <context>

@@ -21,6 +21,8 @@ const auto LastDirectory = u"files/lastDirectory"_s;
 const auto RecentFiles = u"files/recent"_s;
 const auto ConnectionPort = u"machine/port"_s;
 const auto ConnectionBaud = u"machine/baud"_s;
+const auto ConnectionKind = u"machine/link"_s;
+const auto ConnectionHost = u"machine/host"_s;
 const auto Tolerance = u"machine/breakTestTolerance"_s;
 const auto DarkPalette = u"view/darkPalette"_s;
 const auto Library = u"history/library"_s;
@@ -90,6 +92,26 @@ QString AppSettings::connectionPort() const
 void AppSettings::setConnectionPort(const QString &port)
 {
     m_settings.setValue(Key::ConnectionPort, port);
+}
+
+QString AppSettings::connectionKind() const
+{
+    return m_settings.value(Key::ConnectionKind).toString();
+}
+
+void AppSettings::setConnectionKind(const QString &kind)
+{
+    m_settings.setValue(Key::ConnectionKind, kind);
+}
+
+QString AppSettings::connectionHost() const
+{
+    return m_settings.value(Key::ConnectionHost).toString();
+}
+
+void AppSettings::setConnectionHost(const QString &address)
+{
+    m_settings.setValue(Key::ConnectionHost, address);
 }
 
 int AppSettings::connectionBaud() const

@@ -27,6 +27,12 @@ public:
     // "emulator", or a serial port's path.
     [[nodiscard]] QString connectionPort() const;
     void setConnectionPort(const QString &port);
+    // How the machine was last reached: "serial", "wifi" or "emulator" (empty before any: connectionPort()
+    // says it then), and the last machine on the network as HOST:PORT.
+    [[nodiscard]] QString connectionKind() const;
+    void setConnectionKind(const QString &kind);
+    [[nodiscard]] QString connectionHost() const;
+    void setConnectionHost(const QString &address);
     [[nodiscard]] int connectionBaud() const;
     void setConnectionBaud(int baud);
     [[nodiscard]] double breakTestTolerance() const;

@@ -208,7 +208,9 @@ void BreakTestPanel::showResult(const SessionResult &r)
         return;
     }
     m_verdict->setText(r.message);
-    if (window()->isVisible()) // not after the operator stopped it to quit
+    // Not after the operator stopped it to quit; nor when the link went, which the window says itself and
+    // offers to reconnect.
+    if (window()->isVisible() && !m_connection->linkLostDuringOperation())
         QMessageBox::warning(this, tr("The break test did not run"), r.message);
 }
 

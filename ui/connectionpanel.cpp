@@ -3,10 +3,15 @@
 
 #include <QComboBox>
 #include <QGridLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSerialPortInfo>
+#include <QStackedWidget>
 
 #include "serial/machineconnection.h"
+#include "serial/transport/beaconlistener.h"
 #include "ui/appearance.h"
 #include "ui/appsettings.h"
 
@@ -16,58 +21,150 @@ namespace Toffee {
 
 namespace {
 const auto kEmulator = u"emulator"_s;
+const auto kSerial = u"serial"_s;
+const auto kWiFi = u"wifi"_s;
+// The Wi-Fi list's items: the machine's name and whether it said it is busy, beside its HOST:PORT (the data).
+constexpr int kNameRole = Qt::UserRole + 1;
+constexpr int kBusyRole = Qt::UserRole + 2;
+
+QString addressText(const QString &host, quint16 port)
+{
+    return (host.contains(u':') ? u'[' + host + u']' : host) + u':' + QString::number(port);
 }
+} // namespace
 
 ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
     : QWidget(parent)
     , m_connection(connection)
+    , m_kind(new QComboBox(this))
+    , m_where(new QStackedWidget(this))
     , m_port(new QComboBox(this))
+    , m_machine(new QComboBox(this))
+    , m_emulatorLabel(new QLabel(tr("Toffee's own Carvera, for trying things out"), this))
     , m_baud(new QComboBox(this))
+    , m_hint(new QLabel(this))
+    , m_listener(new BeaconListener(this))
     , m_refresh(new QPushButton(tr("Refresh"), this))
     , m_connect(new QPushButton(this))
 {
+    m_kind->setObjectName(u"linkCombo"_s);
+    m_kind->setAccessibleName(tr("How to reach the machine"));
+    m_kind->addItem(tr("Serial port (USB)"), kSerial);
+    m_kind->addItem(tr("Wi-Fi"), kWiFi);
+    m_kind->addItem(tr("Built-in emulator"), kEmulator);
     m_port->setObjectName(u"portCombo"_s);
     m_port->setAccessibleName(tr("Machine port"));
     m_port->setEditable(true); // a pty or a port the system does not list can be typed in
     m_port->setMinimumContentsLength(16);
+    m_machine->setObjectName(u"wifiMachineCombo"_s);
+    m_machine->setAccessibleName(tr("Machine on the network"));
+    m_machine->setEditable(true); // an address typed in: a machine on another network sends no beacon here
+    m_machine->setMinimumContentsLength(16);
+    m_machine->setInsertPolicy(QComboBox::NoInsert);
+    m_machine->lineEdit()->setPlaceholderText(tr("Address, such as 192.168.1.57"));
+    m_emulatorLabel->setObjectName(u"emulatorLabel"_s);
+    m_emulatorLabel->setWordWrap(true);
+    m_where->addWidget(m_port);
+    m_where->addWidget(m_machine);
+    m_where->addWidget(m_emulatorLabel);
     m_baud->setObjectName(u"baudCombo"_s);
     m_baud->setAccessibleName(tr("Baud rate"));
     for (int baud : { 9600, 19200, 38400, 57600, 115200, 230400, 250000 })
         m_baud->addItem(QString::number(baud), baud);
+    m_hint->setObjectName(u"connectionHint"_s);
+    m_hint->setWordWrap(true);
     m_refresh->setObjectName(u"refreshPortsButton"_s);
     m_refresh->setAccessibleName(tr("Refresh the list of ports"));
     m_connect->setObjectName(u"connectButton"_s);
     m_connect->setIcon(themeIcon(u"connect"_s));
 
-    // Two rows, so that the panel stays narrow in every language: the port, then the rest.
+    // Rows, so that the panel stays narrow in every language: how, where, then the rest; a hint below.
     auto *layout = new QGridLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_port, 0, 0, 1, 3);
-    layout->addWidget(m_baud, 1, 0);
-    layout->addWidget(m_refresh, 1, 1);
-    layout->addWidget(m_connect, 1, 2);
+    layout->addWidget(m_kind, 0, 0, 1, 3);
+    layout->addWidget(m_where, 1, 0, 1, 3);
+    layout->addWidget(m_baud, 2, 0);
+    layout->addWidget(m_refresh, 2, 1);
+    layout->addWidget(m_connect, 2, 2);
+    layout->addWidget(m_hint, 3, 0, 1, 3);
     layout->setColumnStretch(2, 1);
 
     connect(m_refresh, &QPushButton::clicked, this, &ConnectionPanel::refreshPorts);
     connect(m_connect, &QPushButton::clicked, this, &ConnectionPanel::toggleConnection);
-    connect(m_port, &QComboBox::currentIndexChanged, this, &ConnectionPanel::updateState);
-    connect(m_connection, &MachineConnection::stateChanged, this, &ConnectionPanel::updateState);
+    connect(m_kind, &QComboBox::currentIndexChanged, this, [this] {
+        m_where->setCurrentIndex(m_kind->currentIndex());
+        updateListening();
+        updateState();
+    });
+    connect(m_machine, &QComboBox::currentIndexChanged, this, &ConnectionPanel::updateState);
+    connect(m_machine, &QComboBox::editTextChanged, this, &ConnectionPanel::updateState);
+    connect(m_listener, &BeaconListener::machinesChanged, this, &ConnectionPanel::updateMachines);
+    connect(m_connection, &MachineConnection::stateChanged, this, [this] {
+        updateListening();
+        updateState();
+    });
 
     refreshPorts();
     AppSettings settings;
+    QString kind = settings.connectionKind();
+    if (kind.isEmpty()) // remembered before there was Wi-Fi
+        kind = settings.connectionPort().isEmpty() || settings.connectionPort() == kEmulator ? kEmulator
+                                                                                             : kSerial;
     ConnectionTarget remembered;
-    remembered.emulator = settings.connectionPort().isEmpty() || settings.connectionPort() == kEmulator;
-    remembered.port = remembered.emulator ? QString() : settings.connectionPort();
+    remembered.emulator = kind == kEmulator;
+    if (kind == kWiFi) {
+        if (const auto address = TcpTransport::parseAddress(settings.connectionHost()); address.ok()) {
+            remembered.host = address.value().host;
+            remembered.tcpPort = address.value().port;
+        }
+    } else if (kind == kSerial) {
+        remembered.port = settings.connectionPort() == kEmulator ? QString() : settings.connectionPort();
+    }
     remembered.baud = settings.connectionBaud();
     setTarget(remembered);
+    if (kind == kWiFi)
+        setKind(Kind::WiFi); // even with no address remembered
+    updateListening();
     updateState();
+}
+
+ConnectionPanel::Kind ConnectionPanel::kind() const
+{
+    return Kind(m_kind->currentIndex());
+}
+
+void ConnectionPanel::setKind(Kind kind)
+{
+    m_kind->setCurrentIndex(int(kind));
+}
+
+void ConnectionPanel::setDiscoveryPort(quint16 port)
+{
+    m_discoveryPort = port;
+    m_listener->close();
+    updateListening();
+}
+
+void ConnectionPanel::updateListening()
+{
+    const bool wanted
+        = kind() == Kind::WiFi && m_connection->state() == MachineConnection::State::Disconnected;
+    if (!wanted) {
+        m_listener->close(); // no port held, and no beacon of our own connection's machine read as "busy"
+        return;
+    }
+    if (m_listener->isListening())
+        return;
+    m_listenError.clear();
+    if (!m_listener->listen(m_discoveryPort))
+        m_listenError = m_listener->errorString();
+    updateMachines();
 }
 
 void ConnectionPanel::refreshPorts()
 {
     const QString current = m_port->currentData().toString();
     m_port->clear();
-    m_port->addItem(tr("Built-in emulator"), kEmulator);
     const auto ports = QSerialPortInfo::availablePorts();
     for (const QSerialPortInfo &info : ports) {
         const QString label = info.description().isEmpty()
@@ -79,31 +176,110 @@ void ConnectionPanel::refreshPorts()
     m_port->setCurrentIndex(index < 0 ? 0 : index);
 }
 
+void ConnectionPanel::updateMachines()
+{
+    // Rebuilt from what is heard, keeping the choice, or what was typed, as it was.
+    const QString typed = m_machine->currentText();
+    const bool wasTyped
+        = m_machine->currentIndex() < 0 || typed != m_machine->itemText(m_machine->currentIndex());
+    const QString chosen = m_machine->currentData().toString();
+    const QSignalBlocker blocker(m_machine);
+    m_machine->clear();
+    for (const BeaconListener::Machine &heard : m_listener->machines()) {
+        const Beacon &b = heard.beacon;
+        const QString address = addressText(b.address, b.port);
+        const QString label
+            = b.busy ? tr("%1 — %2 (busy)").arg(b.name, address) : tr("%1 — %2").arg(b.name, address);
+        m_machine->addItem(label, address);
+        m_machine->setItemData(m_machine->count() - 1, b.name, kNameRole);
+        m_machine->setItemData(m_machine->count() - 1, b.busy, kBusyRole);
+    }
+    const int index = wasTyped ? -1 : m_machine->findData(chosen);
+    m_machine->setCurrentIndex(index);
+    if (index < 0)
+        m_machine->setEditText(wasTyped ? typed : chosen); // a machine no longer heard stays, as an address
+    updateState();
+}
+
+std::optional<Beacon> ConnectionPanel::heardAt(const QString &address) const
+{
+    for (const BeaconListener::Machine &heard : m_listener->machines()) {
+        if (addressText(heard.beacon.address, heard.beacon.port) == address)
+            return heard.beacon;
+    }
+    return std::nullopt;
+}
+
 ConnectionTarget ConnectionPanel::target() const
 {
-    QString port = m_port->currentData().toString();
-    if (m_port->currentText() != m_port->itemText(m_port->currentIndex()) || port.isEmpty())
-        port = m_port->currentText().trimmed(); // typed in
     ConnectionTarget t;
-    t.emulator = port == kEmulator;
-    t.port = t.emulator ? QString() : port;
     t.baud = m_baud->currentData().toInt();
     t.emulatorStock = m_emulatorStock;
     t.emulatorPaced = m_emulatorPaced;
+    t.protocol = StreamTransport::Protocol(m_protocol);
+    switch (kind()) {
+    case Kind::Emulator:
+        break;
+    case Kind::Serial: {
+        QString port = m_port->currentData().toString();
+        if (m_port->currentIndex() < 0 || m_port->currentText() != m_port->itemText(m_port->currentIndex())
+            || port.isEmpty())
+            port = m_port->currentText().trimmed(); // typed in
+        t.emulator = false;
+        t.port = port;
+        break;
+    }
+    case Kind::WiFi: {
+        t.emulator = false;
+        QString address = m_machine->currentText().trimmed();
+        if (m_machine->currentIndex() >= 0 && address == m_machine->itemText(m_machine->currentIndex()))
+            address = m_machine->currentData().toString();
+        if (const auto parsed = TcpTransport::parseAddress(address); parsed.ok()) {
+            t.host = parsed.value().host;
+            t.tcpPort = parsed.value().port;
+        }
+        break;
+    }
+    }
     return t;
 }
 
 void ConnectionPanel::setTarget(const ConnectionTarget &target)
 {
-    const QString port = target.emulator ? kEmulator : target.port;
+    {
+        // One update when all is set, not one per field (each would read a half-set target).
+        const QSignalBlocker machine(m_machine);
+        const QSignalBlocker kindBlocker(m_kind);
+        setFields(target);
+    }
+    m_where->setCurrentIndex(m_kind->currentIndex());
+    updateListening();
+    updateState();
+}
+
+void ConnectionPanel::setFields(const ConnectionTarget &target)
+{
     m_emulatorStock = target.emulatorStock;
     m_emulatorPaced = target.emulatorPaced;
-    int index = m_port->findData(port);
-    if (index < 0) {
-        m_port->addItem(port, port);
-        index = m_port->count() - 1;
+    m_protocol = int(target.protocol);
+    if (target.emulator) {
+        setKind(Kind::Emulator);
+    } else if (target.isNetwork()) {
+        const QString address = addressText(target.host, target.tcpPort);
+        const int index = m_machine->findData(address);
+        m_machine->setCurrentIndex(index);
+        if (index < 0)
+            m_machine->setEditText(address);
+        setKind(Kind::WiFi);
+    } else {
+        int index = m_port->findData(target.port);
+        if (index < 0) {
+            m_port->addItem(target.port, target.port);
+            index = m_port->count() - 1;
+        }
+        m_port->setCurrentIndex(index);
+        setKind(Kind::Serial);
     }
-    m_port->setCurrentIndex(index);
     const int baud = m_baud->findData(target.baud);
     m_baud->setCurrentIndex(baud < 0 ? m_baud->findData(115200) : baud);
 }
@@ -115,8 +291,40 @@ void ConnectionPanel::toggleConnection()
         return;
     }
     const ConnectionTarget t = target();
+    if (kind() == Kind::WiFi && !t.isNetwork()) {
+        const auto parsed = TcpTransport::parseAddress(m_machine->currentText().trimmed());
+        QMessageBox::warning(this, tr("Cannot connect to the machine"),
+            m_machine->currentText().trimmed().isEmpty()
+                ? tr("No machine chosen. Choose one of the machines heard on the network, or type the "
+                     "machine's address as its screen shows it (such as 192.168.1.57).")
+                : parsed.error().message);
+        return;
+    }
+    if (t.isNetwork()) {
+        if (const auto heard = heardAt(addressText(t.host, t.tcpPort)); heard && heard->busy) {
+            QMessageBox box(QMessageBox::Warning, tr("The machine is busy"),
+                tr("%1 says it is busy: another program is connected to it (Makera's controller, a phone, "
+                   "another computer).")
+                    .arg(heard->name),
+                QMessageBox::Cancel, this);
+            box.setInformativeText(tr("Commands from two programs at once can interfere, and each sees the "
+                                      "other's replies. Disconnect the other program first, or connect "
+                                      "anyway."));
+            QPushButton *anyway = box.addButton(tr("Connect Anyway"), QMessageBox::AcceptRole);
+            anyway->setObjectName(u"connectAnywayButton"_s);
+            box.setDefaultButton(QMessageBox::Cancel);
+            box.exec();
+            if (box.clickedButton() != anyway)
+                return;
+        }
+    }
     AppSettings settings;
-    settings.setConnectionPort(t.emulator ? kEmulator : t.port);
+    const Kind k = kind();
+    settings.setConnectionKind(k == Kind::Emulator ? kEmulator : k == Kind::WiFi ? kWiFi : kSerial);
+    if (k == Kind::Serial)
+        settings.setConnectionPort(t.port);
+    if (k == Kind::WiFi)
+        settings.setConnectionHost(addressText(t.host, t.tcpPort));
     settings.setConnectionBaud(t.baud);
     m_connection->connectTo(t);
 }
@@ -126,16 +334,50 @@ void ConnectionPanel::updateState()
     const auto state = m_connection->state();
     const bool idle = state == MachineConnection::State::Disconnected;
     // The machine it is connected to, however the connection was made (the command line, a script).
-    if (!idle)
-        setTarget(m_connection->target());
+    if (!idle) {
+        const ConnectionTarget connected = m_connection->target();
+        if (connected.name() != target().name() || connected.emulator != (kind() == Kind::Emulator)) {
+            const QSignalBlocker machine(m_machine);
+            const QSignalBlocker kindBlocker(m_kind);
+            setFields(connected);
+            m_where->setCurrentIndex(m_kind->currentIndex());
+        }
+    }
+    m_kind->setEnabled(idle);
     m_port->setEnabled(idle);
-    m_baud->setEnabled(idle && m_port->currentData().toString() != kEmulator);
+    m_machine->setEnabled(idle);
+    m_baud->setEnabled(idle && kind() == Kind::Serial);
+    m_baud->setVisible(kind() == Kind::Serial);
     m_refresh->setEnabled(idle);
+    m_refresh->setVisible(kind() == Kind::Serial);
     m_connect->setText(state == MachineConnection::State::Connected ? tr("Disconnect")
             : state == MachineConnection::State::Connecting         ? tr("Connecting…")
                                                                     : tr("Connect"));
     m_connect->setAccessibleName(m_connect->text());
     m_connect->setEnabled(state != MachineConnection::State::Connecting);
+
+    // What the Wi-Fi choice has heard, or why it cannot hear.
+    QString hint;
+    if (kind() == Kind::WiFi && idle) {
+        const ConnectionTarget t = target();
+        const auto heard = t.isNetwork() ? heardAt(addressText(t.host, t.tcpPort)) : std::nullopt;
+        const int count = m_machine->count();
+        if (!m_listenError.isEmpty())
+            hint = tr("Cannot listen for machines on UDP port %1 (%2): type the machine's address.")
+                       .arg(m_discoveryPort)
+                       .arg(m_listenError);
+        else if (heard && heard->busy)
+            hint = tr("%1 is busy: another program is connected to it.").arg(heard->name);
+        else if (count == 0)
+            hint = tr("Listening for machines on the network… None heard yet: a Carvera announces itself "
+                      "once a second when its Wi-Fi is on. Or type its address.");
+        else if (count == 1)
+            hint = tr("One machine heard on the network.");
+        else
+            hint = tr("%1 machines heard on the network.").arg(count);
+    }
+    m_hint->setText(hint);
+    m_hint->setVisible(!hint.isEmpty());
 }
 
 } // namespace Toffee

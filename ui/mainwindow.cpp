@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QScreen>
 #include <QStatusBar>
 #include <QTableView>
@@ -174,11 +175,41 @@ void MainWindow::connectMachine()
     connect(m_connection, &MachineConnection::disconnected, this, [this](const QString &reason) {
         statusBar()->showMessage(tr("Disconnected: %1").arg(reason), 10000);
     });
+    // Queued: the box waits for the operator, and reconnecting replaces the link whose closing said this.
+    connect(
+        m_connection, &MachineConnection::linkLost, this, &MainWindow::offerReconnect, Qt::QueuedConnection);
+    connect(m_connection, &MachineConnection::interruptionChecked, this, [this](const QString &verdict) {
+        statusBar()->showMessage(verdict, 30000);
+        if (isVisible())
+            QMessageBox::information(this, tr("Connected again"), verdict);
+    });
     connect(m_tablePanel->view()->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
         const QList<int> selected = m_tablePanel->selectedToolNumbers();
         m_machineDock->probePanel()->setSelectedTool(selected.size() == 1 ? selected.front() : -1);
     });
     updateMachineStatus();
+}
+
+// The link went while an operation ran: nothing of it was recorded, and only the machine can say whether it
+// happened. Reconnecting reads its offsets back (MachineConnection::interruptionChecked says what they show).
+void MainWindow::offerReconnect(const QString &operation, const QString &reason)
+{
+    if (!isVisible())
+        return;
+    QMessageBox box(QMessageBox::Warning, tr("The link to the machine was lost"),
+        tr("The link to the machine was lost during \"%1\": %2").arg(operation, reason),
+        QMessageBox::NoButton, this);
+    box.setInformativeText(
+        tr("Nothing of it was written to the tool table or the history: the machine did "
+           "not confirm it. Reconnect to read the machine's offsets back; Toffee then says "
+           "whether it happened."));
+    QPushButton *reconnect = box.addButton(tr("Reconnect"), QMessageBox::AcceptRole);
+    reconnect->setObjectName(u"reconnectButton"_s);
+    box.addButton(tr("Not Now"), QMessageBox::RejectRole);
+    box.setDefaultButton(reconnect);
+    box.exec();
+    if (box.clickedButton() == reconnect && m_connection->state() == MachineConnection::State::Disconnected)
+        m_connection->connectTo(m_connection->target());
 }
 
 // The tool count, the title, the file on disk, autosave and the table's own warnings.

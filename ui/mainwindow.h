@@ -91,6 +91,7 @@ private:
     void createMachineStrip();
     void createRackDock();
     void connectMachine();
+    void offerReconnect(const QString &operation, const QString &reason);
     void connectDocument();
     void updateMachineStatus();
     void fileChangedOnDisk(const QString &path);

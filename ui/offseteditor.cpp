@@ -163,6 +163,8 @@ void OffsetEditor::send(bool confirm)
         return;
     auto done = [this, mode](const SessionResult &r) {
         if (!r.ok()) {
+            if (m_connection->linkLostDuringOperation())
+                return; // the window says so, and offers to reconnect
             QMessageBox::warning(this, tr("The offset was not set"),
                 r.message + u"\n\n"_s + tr("Nothing was written to the tool table."));
             return;

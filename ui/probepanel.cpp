@@ -109,8 +109,9 @@ void ProbePanel::report(const SessionResult &result, const QString &title)
     if (result.ok())
         return;
     m_result->setText(result.message);
-    // Stopped because the operator quit: the window is gone, and no box pops up after it.
-    if (!window()->isVisible())
+    // Stopped because the operator quit: the window is gone, and no box pops up after it. The link went: the
+    // window says so itself, and offers to reconnect.
+    if (!window()->isVisible() || m_connection->linkLostDuringOperation())
         return;
     QMessageBox::warning(
         this, title, result.message + u"\n\n"_s + tr("Nothing was written to the tool table."));

@@ -40,6 +40,8 @@ public:
     // A client is connected (the beacon's BUSY).
     [[nodiscard]] bool isBusy() const { return !m_clients.isEmpty(); }
     [[nodiscard]] int clientCount() const { return int(m_clients.size()); }
+    // Drops every connection at once, as a machine that leaves the network (a close fault, and tests).
+    void dropAll();
 
 Q_SIGNALS:
     void busyChanged(bool busy);
@@ -48,7 +50,6 @@ private:
     void accept();
     void send(const QByteArray &line);
     void drop(QTcpSocket *client);
-    void dropAll();
 
     CarveraEmulator *m_emulator;
     EmulatorWire m_wire;

@@ -20,6 +20,11 @@ bool BeaconListener::listen(quint16 port)
         QHostAddress::AnyIPv4, port, QUdpSocket::ShareAddress | QUdpSocket::ReuseAddressHint);
 }
 
+void BeaconListener::close()
+{
+    m_socket.close();
+}
+
 void BeaconListener::readPending()
 {
     while (m_socket.hasPendingDatagrams()) {

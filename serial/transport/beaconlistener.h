@@ -34,6 +34,9 @@ public:
     // Binds UDP `port` on every address, shared with other listeners; false, with errorString(), when it
     // cannot.
     bool listen(quint16 port = Beacon::kDiscoveryPort);
+    [[nodiscard]] bool isListening() const { return m_socket.state() == QAbstractSocket::BoundState; }
+    // Stops listening; the machines heard are forgotten as ever, kForgetAfterMs after their last beacon.
+    void close();
     [[nodiscard]] QString errorString() const { return m_socket.errorString(); }
     [[nodiscard]] quint16 port() const { return m_socket.localPort(); }
     // By name; those silent for longer than kForgetAfterMs are left out.

@@ -26,6 +26,9 @@ public:
     virtual void writeRealtime(char c) = 0;
     // What the link is, for the status bar and the console ("/dev/ttyUSB0 at 115200", "emulator").
     [[nodiscard]] virtual QString description() const = 0;
+    // The longest opening can take before the transport says itself that it failed (a connect limit, the
+    // protocol found); whoever waits for `opened` waits a little longer, only as a backstop.
+    [[nodiscard]] virtual int openLimitMs() const { return 5000; }
 
 Q_SIGNALS:
     void opened();

@@ -43,6 +43,8 @@ public:
     [[nodiscard]] std::optional<Protocol> otherProtocolLikely() const;
 
     [[nodiscard]] bool isOpen() const override;
+    // The tries to find the protocol, and the flush of a plain firmware's leftover line.
+    [[nodiscard]] int openLimitMs() const override { return (kDetectTries + 1) * kDetectTryMs; }
     void writeLine(const QByteArray &line) override;
     void writeRealtime(char c) override;
 

@@ -43,6 +43,12 @@ public:
     void open() override;
     void close() override;
     [[nodiscard]] QString description() const override;
+    // Connecting, then finding the protocol.
+    [[nodiscard]] int openLimitMs() const override
+    {
+        return (m_connectTimeoutMs > 0 ? m_connectTimeoutMs : kConnectTimeoutMs)
+            + StreamTransport::openLimitMs();
+    }
 
 protected:
     [[nodiscard]] QString name() const override;

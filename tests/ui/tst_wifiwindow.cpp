@@ -1,0 +1,390 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The window over Wi-Fi, as an owner reaches a Carvera: the connection panel's Wi-Fi choice lists the
+// machines heard announcing themselves (name, address, busy), connects to one chosen or typed, remembers it,
+// names a busy machine before connecting; a link lost in the middle of a probe records nothing, offers to
+// reconnect, and on reconnecting says whether the probe happened. The emulator serves TCP in this process
+// (its beacons to a port of the test's own); the Carvera's real firmware (TOFFEE_CARVERA_PEER), framed as
+// Makera's firmware, is found by its own beacon on UDP 3333, connected to, and probes and break-tests a tool.
+// With TOFFEE_SCREENSHOTS set, the window is saved there.
+#include <QAbstractButton>
+#include <QComboBox>
+#include <QDir>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QUdpSocket>
+
+#include "serial/emulator/beaconsender.h"
+#include "serial/emulator/tcpserver.h"
+#include "serial/transport/beaconlistener.h"
+#include "tests/support/carverapeer.h"
+#include "tests/support/station.h"
+#include "ui/appsettings.h"
+#include "ui/connectionpanel.h"
+
+using namespace Toffee;
+using namespace Toffee::Test;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// A UDP port nobody uses now: the test's own discovery port (never the machines' 3333).
+quint16 freeUdpPort()
+{
+    QUdpSocket probe;
+    if (!probe.bind(QHostAddress::LocalHost, 0))
+        qFatal("cannot bind a UDP port on 127.0.0.1");
+    return probe.localPort();
+}
+
+// A Carvera on the network, as this test's own: the emulator behind a TCP port, announcing itself.
+struct NetworkMachine
+{
+    CarveraEmulator emulator;
+    TcpServer server;
+    std::unique_ptr<BeaconSender> beacon;
+
+    NetworkMachine(const QString &name, quint16 discoveryPort, bool framed)
+        : server(&emulator, framed)
+    {
+        if (!server.listen(QHostAddress::LocalHost, 0))
+            qFatal("cannot listen on 127.0.0.1: %s", qPrintable(server.errorString()));
+        Beacon b;
+        b.name = name;
+        b.address = u"127.0.0.1"_s;
+        b.port = server.port();
+        beacon = std::make_unique<BeaconSender>(b, QHostAddress::LocalHost, discoveryPort);
+        QObject::connect(&server, &TcpServer::busyChanged, beacon.get(), &BeaconSender::setBusy);
+        beacon->start();
+    }
+    QString address() const { return u"127.0.0.1:"_s + QString::number(server.port()); }
+};
+
+ConnectionPanel *panelOf(Station &s)
+{
+    return s.window.findChild<ConnectionPanel *>();
+}
+
+// The Wi-Fi list's entries as the operator reads them.
+QStringList heard(Station &s)
+{
+    auto *combo = s.find<QComboBox>(u"wifiMachineCombo"_s);
+    QStringList items;
+    for (int i = 0; i < combo->count(); ++i)
+        items << combo->itemText(i);
+    return items;
+}
+
+void chooseHeard(Station &s, const QString &startsWith)
+{
+    auto *combo = s.find<QComboBox>(u"wifiMachineCombo"_s);
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(heard(s).cbegin(), heard(s).cend(),
+                                 [&](const QString &i) { return i.startsWith(startsWith); }),
+        5000);
+    for (int i = 0; i < combo->count(); ++i) {
+        if (combo->itemText(i).startsWith(startsWith))
+            combo->setCurrentIndex(i);
+    }
+}
+
+bool waitConnected(Station &s, int ms = 20000)
+{
+    return QTest::qWaitFor(
+        [&s] { return s.window.connection()->state() == MachineConnection::State::Connected; }, ms);
+}
+
+bool waitIdle(Station &s, int ms = 30000)
+{
+    return QTest::qWaitFor([&s] { return s.idle() && !QApplication::activeModalWidget(); }, ms);
+}
+
+void screenshot(QWidget &widget, const QString &name)
+{
+    const QString folder = qEnvironmentVariable("TOFFEE_SCREENSHOTS");
+    if (!folder.isEmpty() && QDir().mkpath(folder))
+        QVERIFY(widget.grab().save(QDir(folder).filePath(name)));
+}
+
+// Clicks the button named `button` (none: the default one) in the next message box whose title is `title`,
+// keeping its text.
+void answerBoxTitled(const QString &title, const QString &button, QString *text, int attempts = 1000)
+{
+    QTimer::singleShot(10, [=] {
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        if (!box || box->windowTitle() != title) {
+            if (attempts > 0)
+                answerBoxTitled(title, button, text, attempts - 1);
+            return;
+        }
+        *text = box->text() + u'\n' + box->informativeText();
+        QAbstractButton *b = !button.isEmpty() ? box->findChild<QAbstractButton *>(button)
+            : box->defaultButton()             ? box->defaultButton()
+                                               : box->buttons().value(0);
+        QVERIFY(b);
+        b->click();
+    });
+}
+
+} // namespace
+
+class TestWifiWindow : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QApplication::setOrganizationName(u"ToffeeTest"_s);
+        QApplication::setApplicationName(u"tst_wifiwindow"_s);
+    }
+    void init() { QSettings().clear(); }
+
+    // Heard, chosen, connected, probed; the next start remembers the machine.
+    void aMachineHeardIsConnectedByWifiAndRemembered()
+    {
+        const quint16 discovery = freeUdpPort();
+        NetworkMachine machine(u"Carvera_Shop"_s, discovery, true);
+        {
+            Station s;
+            panelOf(s)->setDiscoveryPort(discovery);
+            auto *link = s.find<QComboBox>(u"linkCombo"_s);
+            QCOMPARE(link->currentText(), u"Built-in emulator"_s); // a first start: nothing remembered
+            link->setCurrentIndex(link->findText(u"Wi-Fi"_s));
+            QVERIFY(s.find<QComboBox>(u"wifiMachineCombo"_s)->isVisible());
+            QVERIFY(!s.find<QComboBox>(u"baudCombo"_s)->isVisible()); // a network has no baud rate
+
+            // The list fills as the beacon arrives: name, address, not busy.
+            chooseHeard(s, u"Carvera_Shop"_s);
+            QCOMPARE(heard(s), QStringList { u"Carvera_Shop — "_s + machine.address() });
+            QTRY_COMPARE(s.text(u"connectionHint"_s), u"One machine heard on the network."_s);
+
+            QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+            QVERIFY(waitConnected(s));
+            QCOMPARE(s.window.connection()->target().name(), machine.address());
+            QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
+            QVERIFY2(s.window.connection()->description().contains(u"(framed)"_s),
+                qPrintable(s.window.connection()->description()));
+            QVERIFY(!s.find<QComboBox>(u"linkCombo"_s)->isEnabled());
+            QVERIFY(!panelOf(s)->listener()->isListening()); // nothing heard while connected: it is us
+
+            // T1 in the spindle, probed over Wi-Fi: the table has its TLO, as on a cable.
+            QVERIFY(s.window.openFile(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json")));
+            QVERIFY(s.window.connection()->selectTool(1, {}));
+            QVERIFY(waitIdle(s));
+            s.probe();
+            QVERIFY(waitIdle(s));
+            QVERIFY(s.table().find(1)->measuredTlo.has_value());
+            QCOMPARE(*s.table().find(1)->measuredTlo, machine.emulator.tlo());
+            screenshot(s.window, u"wifi-connected.png"_s);
+            s.window.connection()->disconnectFromMachine();
+        }
+        // The next start shows the same machine, by its address, ready to connect.
+        Station again;
+        panelOf(again)->setDiscoveryPort(discovery);
+        QCOMPARE(again.find<QComboBox>(u"linkCombo"_s)->currentText(), u"Wi-Fi"_s);
+        QVERIFY2(again.find<QComboBox>(u"wifiMachineCombo"_s)->currentText().contains(machine.address()),
+            qPrintable(again.find<QComboBox>(u"wifiMachineCombo"_s)->currentText()));
+        QCOMPARE(panelOf(again)->target().name(), machine.address());
+        QTest::mouseClick(again.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QVERIFY(waitConnected(again));
+    }
+
+    // A typed address works without a beacon; a wrong one is said in words, and nothing hangs.
+    void aTypedAddress()
+    {
+        NetworkMachine machine(u"Quiet"_s, freeUdpPort(), false); // its beacon goes where nobody listens
+        Station s;
+        panelOf(s)->setDiscoveryPort(freeUdpPort());
+        panelOf(s)->setKind(ConnectionPanel::Kind::WiFi);
+        QTRY_VERIFY(s.text(u"connectionHint"_s).contains(u"None heard yet"_s));
+        auto *combo = s.find<QComboBox>(u"wifiMachineCombo"_s);
+
+        QString said;
+        combo->setEditText(u"127.0.0.1:99999"_s);
+        answerBoxTitled(u"Cannot connect to the machine"_s, {}, &said);
+        QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QTRY_VERIFY(!said.isEmpty());
+        QVERIFY2(said.contains(u"127.0.0.1:99999"_s) && said.contains(u"HOST:PORT"_s), qPrintable(said));
+        QCOMPARE(s.window.connection()->state(), MachineConnection::State::Disconnected);
+
+        // Nothing listens there: refused, in words, at once.
+        QTcpServer closed;
+        QVERIFY(closed.listen(QHostAddress::LocalHost, 0));
+        const quint16 nobody = closed.serverPort();
+        closed.close();
+        said.clear();
+        combo->setEditText(u"127.0.0.1:"_s + QString::number(nobody));
+        answerBoxTitled(u"Cannot connect to the machine"_s, {}, &said);
+        QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!said.isEmpty(), 10000);
+        QVERIFY2(said.contains(u"connection was refused"_s), qPrintable(said));
+
+        combo->setEditText(machine.address());
+        QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QVERIFY(waitConnected(s));
+        QVERIFY2(!s.window.connection()->description().contains(u"(framed)"_s),
+            qPrintable(s.window.connection()->description()));
+        QCOMPARE(AppSettings().connectionHost(), machine.address());
+    }
+
+    // Another program holds the machine: the list and the hint say so, and connecting asks first.
+    void aBusyMachineIsNamedBeforeConnecting()
+    {
+        const quint16 discovery = freeUdpPort();
+        NetworkMachine machine(u"Carvera_Busy"_s, discovery, true);
+        QTcpSocket other; // Makera's controller on another computer
+        other.connectToHost(QHostAddress::LocalHost, machine.server.port());
+        QVERIFY(other.waitForConnected(5000));
+        QTRY_VERIFY(machine.server.isBusy());
+
+        Station s;
+        panelOf(s)->setDiscoveryPort(discovery);
+        panelOf(s)->setKind(ConnectionPanel::Kind::WiFi);
+        QTRY_VERIFY_WITH_TIMEOUT(heard(s).value(0).endsWith(u"(busy)"_s), 5000);
+        chooseHeard(s, u"Carvera_Busy"_s);
+        QTRY_COMPARE(
+            s.text(u"connectionHint"_s), u"Carvera_Busy is busy: another program is connected to it."_s);
+
+        QString said;
+        answerBoxTitled(u"The machine is busy"_s, {}, &said); // Cancel, the first button
+        QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QTRY_VERIFY(!said.isEmpty());
+        QVERIFY2(said.contains(u"Carvera_Busy says it is busy"_s), qPrintable(said));
+        QTest::qWait(100);
+        QCOMPARE(s.window.connection()->state(), MachineConnection::State::Disconnected);
+
+        said.clear();
+        answerBoxTitled(u"The machine is busy"_s, u"connectAnywayButton"_s, &said);
+        QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QTRY_VERIFY(!said.isEmpty());
+        QVERIFY(waitConnected(s));
+    }
+
+    // The machine leaves the network in the middle of a probe: nothing recorded, a reconnect offered, and
+    // on reconnecting the window says whether the probe happened, from the offsets the machine reads back.
+    void aLinkLostMidProbe_data()
+    {
+        QTest::addColumn<bool>("probeRuns");
+        QTest::newRow("the machine went on and probed") << true;
+        QTest::newRow("the probe never reached the machine") << false;
+    }
+    void aLinkLostMidProbe()
+    {
+        QFETCH(bool, probeRuns);
+        NetworkMachine machine(u"Carvera_Lost"_s, freeUdpPort(), true);
+        Station s;
+        QVERIFY(s.window.openFile(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json")));
+        ConnectionTarget target;
+        target.emulator = false;
+        target.host = u"127.0.0.1"_s;
+        target.tcpPort = machine.server.port();
+        QString refused;
+        QObject::connect(s.window.connection(), &MachineConnection::connectFailed, &s.window,
+            [&refused](const QString &m) { refused = m; });
+        answerBoxTitled(u"Cannot connect to the machine"_s, {}, &refused);
+        s.window.connection()->connectTo(target);
+        QVERIFY2(waitConnected(s) || refused.isEmpty(), qPrintable(refused));
+        QVERIFY(waitConnected(s));
+        QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
+
+        // T1 measured first (the reference), then T2 goes in.
+        QVERIFY(s.window.connection()->selectTool(1, {}));
+        QVERIFY(waitIdle(s));
+        s.probe();
+        QVERIFY(waitIdle(s));
+        QVERIFY(s.window.connection()->selectTool(2, {}));
+        QVERIFY(waitIdle(s));
+        QTRY_COMPARE(s.text(u"activeToolLabel"_s), u"T2"_s);
+        const ToolTable before = s.table();
+        const double tloBefore = machine.emulator.tlo();
+
+        if (probeRuns) // a probe that takes a while, and the link drops in the middle of it
+            machine.emulator.setTiming({ 1500, 0, 0 });
+        else // the link drops as the probe's first command arrives
+            machine.emulator.injectFault(CarveraEmulator::Fault::CloseLink, "M491");
+
+        QString lost;
+        QString verdict;
+        answerNextBox(QMessageBox::Yes); // Probe T2?
+        // One box: the link was lost, nothing written, Reconnect? Then what the machine holds now.
+        answerBoxTitled(u"The link to the machine was lost"_s, u"reconnectButton"_s, &lost);
+        s.trigger(u"actionProbe"_s);
+        if (probeRuns) {
+            QTRY_VERIFY(machine.emulator.isBusy());
+            machine.server.dropAll();
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(!lost.isEmpty(), 10000);
+        QVERIFY2(lost.contains(u"during \"Probing T2…\""_s) && lost.contains(u"Nothing of it was written"_s)
+                && lost.contains(u"Reconnect"_s),
+            qPrintable(lost));
+        QCOMPARE(s.table(), before); // nothing the machine did not confirm
+
+        answerBoxTitled(u"Connected again"_s, {}, &verdict);
+        refused.clear();
+        answerBoxTitled(u"Cannot connect to the machine"_s, {}, &refused);
+        QTRY_VERIFY_WITH_TIMEOUT(!verdict.isEmpty() || !refused.isEmpty(), 15000);
+        QVERIFY2(refused.isEmpty(), qPrintable(refused));
+        QVERIFY(waitConnected(s));
+        if (probeRuns) {
+            QTRY_VERIFY(!machine.emulator.isBusy());
+            QVERIFY(machine.emulator.tlo() != tloBefore);
+            QVERIFY2(verdict.contains(u"It ran on the machine"_s), qPrintable(verdict));
+        } else {
+            QCOMPARE(machine.emulator.tlo(), tloBefore);
+            QVERIFY2(verdict.contains(u"Nothing changed on the machine"_s), qPrintable(verdict));
+        }
+        QVERIFY2(verdict.contains(u"Before \"Probing T2…\" the machine had T2"_s), qPrintable(verdict));
+        QVERIFY(!s.window.connection()->interruption());
+        QCOMPARE(s.table(), before); // still nothing recorded: probing again records it
+        s.probe();
+        QVERIFY(waitIdle(s));
+        QCOMPARE(*s.table().find(2)->measuredTlo, machine.emulator.tlo());
+    }
+
+    // The Carvera's real firmware, framed as Makera's current firmware: found by its beacon on UDP 3333 (the
+    // machines' own port: this test holds a lock on it), connected over Wi-Fi, a probe and a break test.
+    void theRealFirmwareFoundByItsBeacon()
+    {
+        if (CarveraPeer::script().isEmpty())
+            QSKIP(qPrintable(CarveraPeer::skipReason()));
+        CarveraPeer peer({}, u"makera"_s);
+        QVERIFY2(peer.started(), qPrintable(peer.errors()));
+        Station s;
+        s.window.resize(1280, 720);
+        QVERIFY(s.window.openFile(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json")));
+        panelOf(s)->setKind(ConnectionPanel::Kind::WiFi);
+        QVERIFY2(panelOf(s)->listener()->isListening(), qPrintable(s.text(u"connectionHint"_s)));
+        chooseHeard(s, u"CARVERA_C1_SIM"_s);
+        QVERIFY2(heard(s).contains(u"CARVERA_C1_SIM — "_s + peer.wifi()), qPrintable(heard(s).join(u", "_s)));
+        screenshot(s.window, u"wifi-machines-heard.png"_s);
+        QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QVERIFY(waitConnected(s));
+        QCOMPARE(s.window.connection()->target().name(), peer.wifi());
+        QVERIFY2(s.window.connection()->description().contains(u"(framed)"_s),
+            qPrintable(s.window.connection()->description()));
+        QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
+
+        // T1 by hand, probed against the machine's reference, then break-tested: it passes.
+        QVERIFY(s.window.connection()->selectTool(1, {}));
+        QVERIFY(waitIdle(s));
+        QTRY_COMPARE(s.text(u"activeToolLabel"_s), u"T1"_s);
+        s.probe();
+        QVERIFY(waitIdle(s, 60000));
+        QVERIFY(s.table().find(1)->measuredTlo.has_value());
+        QCOMPARE(*s.table().find(1)->referenceMz, -115.34);
+        QCOMPARE(s.text(u"tloLabel"_s), QString::number(*s.table().find(1)->measuredTlo, 'f', 3) + u" mm"_s);
+        answerNextBox(QMessageBox::Yes);
+        s.trigger(u"actionBreakTest"_s);
+        QVERIFY(waitIdle(s, 60000));
+        QTRY_VERIFY(s.text(u"breakVerdictLabel"_s).contains(u"OK"_s));
+        QVERIFY(!s.table().find(1)->breakTestFailed);
+        screenshot(s.window, u"wifi-real-firmware-after-a-break-test.png"_s);
+    }
+};
+
+QTEST_MAIN(TestWifiWindow)
+#include "tst_wifiwindow.moc"
