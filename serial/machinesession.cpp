@@ -151,7 +151,7 @@ void MachineSession::readOffsets(Done done, SessionResult result)
             SessionResult bad;
             bad.outcome = SessionResult::Outcome::LinkFailure;
             bad.message = tr("The machine sent no status report within 2 s, and the TLO in force is read "
-                             "from it. Nothing was recorded; check the cable and try again.");
+                             "from it. Nothing was recorded; check the cable or the Wi-Fi and try again.");
             done(bad);
             return;
         }
@@ -192,7 +192,7 @@ void MachineSession::readOffsets(Done done, SessionResult result)
                 } else {
                     bad.message
                         = tr("The machine's offset report (M493.4) could not be read%1. Nothing was "
-                             "recorded; try again, and check the cable if it happens twice.")
+                             "recorded; try again, and check the cable or the Wi-Fi if it happens twice.")
                               .arg(reply.lines.isEmpty() ? QString()
                                                          : u": \""_s + excerpt(reply.lines.front()) + u'"')
                         + floodNote(reply);

@@ -172,14 +172,16 @@ MachineSession::Done MachineSession::withDeadline(int limitMs, Done done)
         } else if (const auto command = m_link->currentCommand(); command && command->size() > 1) {
             // (not the opening flush, "" or ";", which would say nothing to an operator)
             late.outcome = SessionResult::Outcome::LinkFailure;
-            late.message = tr("The machine did not answer \"%1\" within the %2 s allowed for connecting. "
-                              "Check that it is on and the cable, then connect again (or allow longer).")
-                               .arg(QString::fromUtf8(*command), seconds(limitMs));
+            late.message
+                = tr("The machine did not answer \"%1\" within the %2 s allowed for connecting. "
+                     "Check that it is on, and the cable or the Wi-Fi, then connect again (or allow longer).")
+                      .arg(QString::fromUtf8(*command), seconds(limitMs));
         } else {
             late.outcome = SessionResult::Outcome::LinkFailure;
-            late.message = tr("The machine did not finish connecting within the %1 s allowed: it answered "
-                              "too slowly, or not at all. Check that it is on and the cable, then connect "
-                              "again (or allow longer).")
+            late.message = tr(
+                "The machine did not finish connecting within the %1 s allowed: it answered "
+                "too slowly, or not at all. Check that it is on, and the cable or the Wi-Fi, then connect "
+                "again (or allow longer).")
                                .arg(seconds(limitMs));
         }
         once(late);

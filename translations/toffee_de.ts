@@ -3314,10 +3314,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die Maschine hat geantwortet, aber keinen Statusbericht gesendet; ist das eine Carvera?</translation>
     </message>
     <message>
-        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
-        <translation>Der Korrekturbericht der Maschine (M493.4) war nicht lesbar%1. Nichts wurde gespeichert; versuchen Sie es erneut und prüfen Sie das Kabel, wenn es wieder passiert.</translation>
-    </message>
-    <message>
         <source>The machine sent no status report within 2 s.</source>
         <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet.</translation>
     </message>
@@ -3348,14 +3344,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine printed %1 lines before its answer; only the last %2 were kept, and the result may have been among the others.</source>
         <translation>Die Maschine hat vor ihrer Antwort %1 Zeilen ausgegeben; nur die letzten %2 wurden behalten, und das Ergebnis war vielleicht unter den anderen.</translation>
-    </message>
-    <message>
-        <source>The machine did not answer &quot;%1&quot; within the %2 s allowed for connecting. Check that it is on and the cable, then connect again (or allow longer).</source>
-        <translation>Die Maschine hat auf „%1“ nicht innerhalb der %2 s geantwortet, die zum Verbinden erlaubt sind. Prüfen Sie, ob sie eingeschaltet ist, und das Kabel; verbinden Sie dann erneut (oder erlauben Sie mehr Zeit).</translation>
-    </message>
-    <message>
-        <source>The machine did not finish connecting within the %1 s allowed: it answered too slowly, or not at all. Check that it is on and the cable, then connect again (or allow longer).</source>
-        <translation>Die Maschine hat die Verbindung nicht innerhalb der erlaubten %1 s hergestellt: Sie antwortete zu langsam oder gar nicht. Prüfen Sie, ob sie eingeschaltet ist, und das Kabel; verbinden Sie dann erneut (oder erlauben Sie mehr Zeit).</translation>
     </message>
     <message>
         <source>The machine stayed busy (%1) for the %2 s allowed for connecting. Wait for it to finish, or stop it, then connect again.</source>
@@ -3392,10 +3380,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
         <translation>Auf der Maschine läuft %1, die M493.3 stillschweigend ignoriert: Eine von Hand gesetzte TLO würde nicht verwendet. Vermessen Sie stattdessen das Werkzeug, oder wechseln Sie mit seiner TLO zu ihm (ein manueller Wechsel).</translation>
-    </message>
-    <message>
-        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable and try again.</source>
-        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet, und aus ihm wird die gültige Längenkorrektur gelesen. Nichts wurde aufgezeichnet; prüfen Sie das Kabel und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>The machine measured the tool, but its two reports disagree: the TLO in force is %1 mm, and its offset report does not add up to it. Nothing was recorded; probe again.</source>
@@ -3460,6 +3444,22 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
         <translation>Die Verbindung zu %1 wurde nicht innerhalb von %2 s geöffnet. Prüfen Sie die Maschine und die Verbindung und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable or the Wi-Fi and try again.</source>
+        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet, und die wirksame Längenkorrektur wird daraus gelesen. Nichts wurde aufgezeichnet; prüfen Sie das Kabel oder das WLAN und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable or the Wi-Fi if it happens twice.</source>
+        <translation>Der Korrekturbericht der Maschine (M493.4) konnte nicht gelesen werden%1. Nichts wurde aufgezeichnet; versuchen Sie es erneut, und prüfen Sie das Kabel oder das WLAN, wenn es zweimal passiert.</translation>
+    </message>
+    <message>
+        <source>The machine did not answer &quot;%1&quot; within the %2 s allowed for connecting. Check that it is on, and the cable or the Wi-Fi, then connect again (or allow longer).</source>
+        <translation>Die Maschine hat „%1“ nicht innerhalb der %2 s beantwortet, die für das Verbinden vorgesehen sind. Prüfen Sie, ob sie eingeschaltet ist, und das Kabel oder das WLAN, und verbinden Sie sich erneut (oder lassen Sie mehr Zeit).</translation>
+    </message>
+    <message>
+        <source>The machine did not finish connecting within the %1 s allowed: it answered too slowly, or not at all. Check that it is on, and the cable or the Wi-Fi, then connect again (or allow longer).</source>
+        <translation>Die Maschine hat das Verbinden nicht innerhalb der vorgesehenen %1 s abgeschlossen: Sie antwortete zu langsam oder gar nicht. Prüfen Sie, ob sie eingeschaltet ist, und das Kabel oder das WLAN, und verbinden Sie sich erneut (oder lassen Sie mehr Zeit).</translation>
     </message>
 </context>
 <context>

@@ -3314,10 +3314,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>机床有回应，但没有发送状态报告；这是 Carvera 吗？</translation>
     </message>
     <message>
-        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable if it happens twice.</source>
-        <translation>无法读取机床的补偿报告（M493.4）%1。未记录任何内容；请重试，如果再次发生请检查线缆。</translation>
-    </message>
-    <message>
         <source>The machine sent no status report within 2 s.</source>
         <translation>机床在 2 秒内没有发送状态报告。</translation>
     </message>
@@ -3348,14 +3344,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine printed %1 lines before its answer; only the last %2 were kept, and the result may have been among the others.</source>
         <translation>机器在回应之前输出了 %1 行；只保留了最后 %2 行，结果可能在其余行中。</translation>
-    </message>
-    <message>
-        <source>The machine did not answer &quot;%1&quot; within the %2 s allowed for connecting. Check that it is on and the cable, then connect again (or allow longer).</source>
-        <translation>机器未在连接允许的 %2 秒内回应“%1”。请检查机器是否开启以及电缆，然后重新连接（或允许更长时间）。</translation>
-    </message>
-    <message>
-        <source>The machine did not finish connecting within the %1 s allowed: it answered too slowly, or not at all. Check that it is on and the cable, then connect again (or allow longer).</source>
-        <translation>机器未在允许的 %1 秒内完成连接：回应太慢或没有回应。请检查机器是否开启以及电缆，然后重新连接（或允许更长时间）。</translation>
     </message>
     <message>
         <source>The machine stayed busy (%1) for the %2 s allowed for connecting. Wait for it to finish, or stop it, then connect again.</source>
@@ -3392,10 +3380,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
         <translation>机床运行的是 %1，它会不加提示地忽略 M493.3：手动设置的 TLO 不会被使用。请改为对刀，或带着其 TLO 换到该刀具（手动换刀）。</translation>
-    </message>
-    <message>
-        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable and try again.</source>
-        <translation>机床在 2 秒内没有发送状态报告，而生效的 TLO 需从中读取。未记录任何内容；请检查线缆后重试。</translation>
     </message>
     <message>
         <source>The machine measured the tool, but its two reports disagree: the TLO in force is %1 mm, and its offset report does not add up to it. Nothing was recorded; probe again.</source>
@@ -3460,6 +3444,22 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
         <translation>与 %1 的连接未能在 %2 秒内打开。请检查机器和连接后重试。</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable or the Wi-Fi and try again.</source>
+        <translation>机器在 2 秒内没有发送状态报告，而生效的刀长补偿要从中读取。未记录任何内容；请检查数据线或 Wi-Fi 后重试。</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable or the Wi-Fi if it happens twice.</source>
+        <translation>无法读取机器的偏置报告（M493.4）%1。未记录任何内容；请重试，若再次发生请检查数据线或 Wi-Fi。</translation>
+    </message>
+    <message>
+        <source>The machine did not answer &quot;%1&quot; within the %2 s allowed for connecting. Check that it is on, and the cable or the Wi-Fi, then connect again (or allow longer).</source>
+        <translation>机器未在连接允许的 %2 秒内应答“%1”。请检查它是否已开机，以及数据线或 Wi-Fi，然后重新连接（或允许更长时间）。</translation>
+    </message>
+    <message>
+        <source>The machine did not finish connecting within the %1 s allowed: it answered too slowly, or not at all. Check that it is on, and the cable or the Wi-Fi, then connect again (or allow longer).</source>
+        <translation>机器未在允许的 %1 秒内完成连接：它应答太慢或根本没有应答。请检查它是否已开机，以及数据线或 Wi-Fi，然后重新连接（或允许更长时间）。</translation>
     </message>
 </context>
 <context>

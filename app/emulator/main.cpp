@@ -105,7 +105,10 @@ struct Options
     QCommandLineOption framed { u"framed"_s,
         u"Frame every byte as Makera's current firmware does (86 68 ... 55 AA), on the terminal and TCP "
         u"alike; "
-        u"with --firmware stock, version 1.0.5."_s };
+        u"--firmware stock does it unless --plain."_s };
+    QCommandLineOption plain { u"plain"_s,
+        u"With --firmware stock: Makera's firmware before 1.0.4, in plain text, version 1.0.1 (the stock "
+        u"firmware is otherwise its current one: framed, version 1.0.5)."_s };
     QCommandLineOption announce { u"announce"_s,
         u"Send the Wi-Fi beacon (NAME,IP,PORT,BUSY) once a second to UDP 127.0.0.1:PORT (a machine's is "
         u"3333); "
@@ -121,7 +124,7 @@ struct Options
     void addTo(QCommandLineParser &parser) const
     {
         parser.addOptions({ link, tool, broken, probeMs, changeMs, moveMs, firmware, slotFile, repeatability,
-            reference, notHomed, emptyRack, spindle, halted, listen, framed, announce, name, fault });
+            reference, notHomed, emptyRack, spindle, halted, listen, framed, plain, announce, name, fault });
     }
 };
 
@@ -283,8 +286,12 @@ int main(int argc, char *argv[])
         if (const Problem problem = configure(emulator, parser, options))
             return usageError(*problem);
     }
-    const bool framed = parser.isSet(options.framed);
-    if (framed && parser.value(options.firmware) == u"stock")
+    // Makera's current firmware frames every byte; --plain is the one before 1.0.4.
+    const bool stock = parser.value(options.firmware) == u"stock";
+    if (parser.isSet(options.plain) && (!stock || parser.isSet(options.framed)))
+        return usageError(u"--plain goes with --firmware stock, and not with --framed."_s);
+    const bool framed = parser.isSet(options.framed) || (stock && !parser.isSet(options.plain));
+    if (framed && stock)
         emulator.setVersion(CarveraEmulator::kFramedStockVersion);
     Toffee::PtyServer server(&emulator, parser.value(options.link));
     server.setFramed(framed);

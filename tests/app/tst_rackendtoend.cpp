@@ -160,9 +160,21 @@ private Q_SLOTS:
         QCOMPARE(machine({ u"restore"_s, u"1"_s }).exitCode, 2);
     }
 
+    // Makera's current firmware (framed, found as such) and the one before 1.0.4 (plain text): the same
+    // limits.
+    void theStockFirmwareHasNoRackCheck_data()
+    {
+        QTest::addColumn<QStringList>("options");
+        QTest::addColumn<QString>("version");
+        QTest::newRow("current, framed") << QStringList { u"--firmware"_s, u"stock"_s } << u"1.0.5"_s;
+        QTest::newRow("before 1.0.4, plain")
+            << QStringList { u"--firmware"_s, u"stock"_s, u"--plain"_s } << u"1.0.1"_s;
+    }
     void theStockFirmwareHasNoRackCheck()
     {
-        Emulator emulator(tty(), { u"--firmware"_s, u"stock"_s });
+        QFETCH(QStringList, options);
+        QFETCH(QString, version);
+        Emulator emulator(tty(), options);
         QVERIFY(emulator.started());
         Run run = machine({ u"measure-rack"_s });
         QCOMPARE(run.exitCode, 0);
@@ -173,10 +185,11 @@ private Q_SLOTS:
         QCOMPARE(json(run)[u"firmware"_s][u"break_test"_s].toBool(), false);
         run = machine({ u"status"_s });
         QCOMPARE(json(run)[u"firmware"_s][u"kind"_s].toString(), u"stock"_s);
-        QCOMPARE(json(run)[u"firmware"_s][u"version"_s].toString(), u"1.0.1"_s);
+        QCOMPARE(json(run)[u"firmware"_s][u"version"_s].toString(), version);
         QCOMPARE(json(run)[u"firmware"_s][u"manual_offset"_s].toBool(), false);
         run = machine({ u"status"_s }, false);
-        QVERIFY2(run.out.contains("Makera stock firmware 1.0.1: no break test, no manual offset"),
+        QVERIFY2(run.out.contains(QByteArray(
+                     "Makera stock firmware " + version.toUtf8() + ": no break test, no manual offset")),
             run.out.constData());
         // It reports no reference: a stored TLO cannot be checked against it, so a manual change probes.
         QCOMPARE(machine({ u"change-tool"_s, u"8"_s }).exitCode, 0);
