@@ -2,7 +2,7 @@
 # Fails when a source file includes from a layer above its own. Run as
 #   cmake -DROOT=<source root> -P tests/layers.cmake
 # The layers, lowest first: model ← formats, gcode, library, camimport, job ← document; wire ← transport;
-# model, gcode, wire ← emulator; transport, emulator ← serial; ui; app.
+# model, gcode, wire ← emulator; model ← grblhal; transport, emulator, grblhal ← serial; ui; app.
 # Includes are written from the source root ("serial/machinesession.h"), so the first folders name the layer.
 
 cmake_minimum_required(VERSION 3.25)
@@ -15,7 +15,8 @@ endif()
 function(layer_of path out)
     foreach(pair "model/document:document" "model/formats:formats" "model/gcode:gcode" "model/library:library"
             "model/camimport:camimport" "model/job:job" "model:model"
-            "serial/wire:wire" "serial/transport:transport" "serial/emulator:emulator" "serial:serial" "ui:ui" "app:app")
+            "serial/wire:wire" "serial/transport:transport" "serial/emulator:emulator"
+            "serial/grblhal:grblhal" "serial:serial" "ui:ui" "app:app")
         string(REPLACE ":" ";" pair "${pair}")
         list(GET pair 0 prefix)
         list(GET pair 1 name)
@@ -38,9 +39,11 @@ set(allowed_job model formats gcode library job)
 set(allowed_wire wire)
 set(allowed_transport model wire transport)
 set(allowed_emulator model gcode wire emulator)
-set(allowed_serial model gcode wire transport emulator serial)
-set(allowed_ui model formats gcode document library camimport job wire transport emulator serial ui)
-set(allowed_app model formats gcode document library camimport job wire transport emulator serial ui app)
+set(allowed_grblhal model grblhal)
+set(allowed_serial model gcode wire transport emulator grblhal serial)
+set(allowed_ui model formats gcode document library camimport job wire transport emulator grblhal serial ui)
+set(allowed_app model formats gcode document library camimport job wire transport emulator grblhal serial ui
+    app)
 
 file(GLOB_RECURSE sources RELATIVE ${ROOT}
     ${ROOT}/model/*.h ${ROOT}/model/*.cpp ${ROOT}/serial/*.h ${ROOT}/serial/*.cpp

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// grblHAL itself (the real controller firmware built to run here, ../shared/peers/grblhal) as a test peer:
+// started from the script TOFFEE_GRBLHAL_PEER names, on raw TCP ("telnet") at a free port of 127.0.0.1, with
+// a tool setter the test writes (setter <Z> and T<n> <length> lines, read again at every probe) and its
+// EEPROM in a state folder (kept between starts when the test passes one: a controller switched off and on),
+// stopped by SIGTERM when it goes. Without TOFFEE_GRBLHAL_PEER a test skips and says so: a bare clone still
+// passes `make test`; .ci/run sets it from ../shared.
+#pragma once
+
+#include <csignal>
+#include <map>
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QHostAddress>
+#include <QProcess>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace Toffee::Test {
+
+class GrblHalPeer
+{
+    Q_DISABLE_COPY_MOVE(GrblHalPeer)
+
+public:
+    // The script, or empty when the environment does not name one.
+    static QString script() { return qEnvironmentVariable("TOFFEE_GRBLHAL_PEER"); }
+    static QString skipReason()
+    {
+        return QStringLiteral("TOFFEE_GRBLHAL_PEER is not set (.ci/run sets it to ../shared/peers/grblhal/"
+                              "start): the tests against grblHAL itself are skipped");
+    }
+
+    // A port nobody listens on now: bound, read and let go (another program may take it in between; rare).
+    static quint16 freePort()
+    {
+        QTcpServer server;
+        if (!server.listen(QHostAddress::LocalHost, 0))
+            return 0;
+        return server.serverPort();
+    }
+
+    // `state`: the folder of the controller's EEPROM (settings and tool table), kept between starts; empty: a
+    // fresh one of this peer's own. The setter file starts empty (no setter: a probe touches nothing) until
+    // writeSetter().
+    explicit GrblHalPeer(QString state = {})
+        : m_state(state.isEmpty() ? m_ownState.path() : std::move(state))
+        , m_setter(m_files.filePath(QStringLiteral("setter.txt")))
+        , m_port(freePort())
+    {
+        if (script().isEmpty() || m_port == 0 || !writeSetterFile({}))
+            return;
+        m_process.setProgram(script());
+        m_process.setArguments({ QStringLiteral("--tcp"), QString::number(m_port), QStringLiteral("--setter"),
+            m_setter, QStringLiteral("--state"), m_state });
+        m_process.setProcessChannelMode(QProcess::SeparateChannels);
+        m_process.start();
+        m_ready = m_process.waitForStarted(5000) && waitUntilAnswering(10000);
+    }
+    ~GrblHalPeer() { stop(); }
+
+    // Running and answering a status query on its port.
+    [[nodiscard]] bool started() const { return m_ready && m_process.state() == QProcess::Running; }
+    [[nodiscard]] quint16 port() const { return m_port; }
+    [[nodiscard]] QString state() const { return m_state; }
+    [[nodiscard]] QString setterPath() const { return m_setter; }
+    [[nodiscard]] qint64 startupMs() const { return m_startupMs; }
+    [[nodiscard]] QString errors() { return QString::fromUtf8(m_process.readAllStandardError()); }
+
+    // The setter at machine Z `setterZ` (where a tool of length 0 touches it) and each tool's length below
+    // the spindle nose. Rewrite it between probes to model a worn or broken tool.
+    bool writeSetter(double setterZ, const std::map<int, double> &toolLengths)
+    {
+        QByteArray text = "setter " + QByteArray::number(setterZ, 'f', 3) + '\n';
+        for (const auto &[tool, length] : toolLengths)
+            text += 'T' + QByteArray::number(tool) + ' ' + QByteArray::number(length, 'f', 3) + '\n';
+        return writeSetterFile(text);
+    }
+
+    void stop()
+    {
+        if (m_process.state() == QProcess::NotRunning)
+            return;
+        // The script execs grblHAL: SIGTERM closes its EEPROM and ends it (about a second here).
+        ::kill(pid_t(m_process.processId()), SIGTERM);
+        if (!m_process.waitForFinished(10000))
+            m_process.kill();
+        m_process.waitForFinished(2000);
+    }
+
+private:
+    bool writeSetterFile(const QByteArray &text)
+    {
+        QFile file(m_setter);
+        return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size();
+    }
+
+    // The port accepts before grblHAL has booted (about a second): ready once a status query is answered.
+    bool waitUntilAnswering(int limitMs)
+    {
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < limitMs && m_process.state() == QProcess::Running) {
+            QTcpSocket socket;
+            socket.connectToHost(QHostAddress::LocalHost, m_port);
+            if (!socket.waitForConnected(200)) {
+                QTest::qSleep(50);
+                continue;
+            }
+            QByteArray heard;
+            while (clock.elapsed() < limitMs && socket.state() == QAbstractSocket::ConnectedState) {
+                socket.write("?");
+                if (socket.waitForReadyRead(100))
+                    heard += socket.readAll();
+                if (heard.contains("<") && heard.indexOf('>', heard.indexOf('<')) >= 0) {
+                    m_startupMs = clock.elapsed();
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    QTemporaryDir m_ownState;
+    QTemporaryDir m_files;
+    QString m_state;
+    QString m_setter;
+    quint16 m_port = 0;
+    QProcess m_process;
+    bool m_ready = false;
+    qint64 m_startupMs = 0;
+};
+
+} // namespace Toffee::Test
