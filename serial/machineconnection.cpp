@@ -137,8 +137,7 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
             const std::optional<Interruption> lost = m_interruption;
             setState(State::Disconnected);
             Q_EMIT disconnected(reason);
-            if (lost)
-                Q_EMIT linkLost(lost->operation, reason);
+            Q_EMIT linkLost(lost ? lost->operation : QString(), reason);
         }
     });
     setState(State::Connecting);
@@ -191,6 +190,11 @@ QString MachineConnection::interruptionVerdict(const Interruption &before, const
         return held + u' '
             + tr("Toffee cannot tell whether it ran. Nothing of it was recorded; check the machine and run "
                  "it again.");
+    // A machine switched off and on again holds no TLO: the operation's traces are gone with it.
+    if (std::abs(*tlo) < 0.0005 && std::abs(*before.tloInForce) >= 0.0005 && !currentMz)
+        return held + u' '
+            + tr("The machine holds no TLO now, as after a restart: Toffee cannot tell whether it ran. "
+                 "Nothing of it was recorded; check the tool in the spindle and measure it again.");
     if (tool != before.tool || differs(tlo, before.tloInForce) || differs(currentMz, before.currentMz))
         return held + u' '
             + tr("It ran on the machine, at least in part, but the machine's confirmation was lost: "
@@ -422,7 +426,7 @@ void MachineConnection::disconnectFromMachine()
     setState(State::Disconnected);
     teardown();
     if (wasConnected)
-        Q_EMIT disconnected(tr("Disconnected."));
+        Q_EMIT disconnected(tr("as asked."));
 }
 
 } // namespace Toffee

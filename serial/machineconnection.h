@@ -158,7 +158,8 @@ Q_SIGNALS:
     void haltedChanged(bool halted);
     // Offsets learned from any operation (M493.4 and M493.3 replies).
     void offsetsChanged(const Toffee::TloReading &offsets, int tool);
-    // The link was lost while `operation` ran (interruption() says what the machine held before it).
+    // The link went without being asked to: while `operation` ran (interruption() says what the machine held
+    // before it), or while idle (`operation` empty).
     void linkLost(const QString &operation, const QString &reason);
     // Connected again to the machine of interruption(): what the machine holds now says whether it ran.
     void interruptionChecked(const QString &verdict);

@@ -23,6 +23,7 @@ const auto ConnectionPort = u"machine/port"_s;
 const auto ConnectionBaud = u"machine/baud"_s;
 const auto ConnectionKind = u"machine/link"_s;
 const auto ConnectionHost = u"machine/host"_s;
+const auto ConnectionHostName = u"machine/hostName"_s;
 const auto Tolerance = u"machine/breakTestTolerance"_s;
 const auto DarkPalette = u"view/darkPalette"_s;
 const auto Library = u"history/library"_s;
@@ -112,6 +113,16 @@ QString AppSettings::connectionHost() const
 void AppSettings::setConnectionHost(const QString &address)
 {
     m_settings.setValue(Key::ConnectionHost, address);
+}
+
+QString AppSettings::connectionHostName() const
+{
+    return m_settings.value(Key::ConnectionHostName).toString();
+}
+
+void AppSettings::setConnectionHostName(const QString &name)
+{
+    m_settings.setValue(Key::ConnectionHostName, name);
 }
 
 int AppSettings::connectionBaud() const

@@ -33,6 +33,10 @@ public:
     void setConnectionKind(const QString &kind);
     [[nodiscard]] QString connectionHost() const;
     void setConnectionHost(const QString &address);
+    // The name the last machine on the network announced itself by (empty: typed, never heard), so that it
+    // is found again at a new address.
+    [[nodiscard]] QString connectionHostName() const;
+    void setConnectionHostName(const QString &name);
     [[nodiscard]] int connectionBaud() const;
     void setConnectionBaud(int baud);
     [[nodiscard]] double breakTestTolerance() const;

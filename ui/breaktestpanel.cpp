@@ -84,6 +84,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, ToolDocument *docu
             clearResult();
     });
     connect(m_connection, &MachineConnection::stateChanged, this, &BreakTestPanel::clearResult);
+    updateState(); // disabled until connected, from the first picture
 }
 
 void BreakTestPanel::clearResult()

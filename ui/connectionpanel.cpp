@@ -97,6 +97,13 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
         updateState();
     });
     connect(m_machine, &QComboBox::currentIndexChanged, this, &ConnectionPanel::updateState);
+    // Enter in a typed address or port connects, as the button does.
+    for (QComboBox *typed : { m_machine, m_port }) {
+        connect(typed->lineEdit(), &QLineEdit::returnPressed, this, [this] {
+            if (m_connection->state() == MachineConnection::State::Disconnected)
+                toggleConnection();
+        });
+    }
     connect(m_machine, &QComboBox::editTextChanged, this, &ConnectionPanel::updateState);
     connect(m_listener, &BeaconListener::machinesChanged, this, &ConnectionPanel::updateMachines);
     connect(m_connection, &MachineConnection::stateChanged, this, [this] {
@@ -113,7 +120,9 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
     ConnectionTarget remembered;
     remembered.emulator = kind == kEmulator;
     if (kind == kWiFi) {
+        m_rememberedName = settings.connectionHostName();
         if (const auto address = TcpTransport::parseAddress(settings.connectionHost()); address.ok()) {
+            m_rememberedAddress = addressText(address.value().host, address.value().port);
             remembered.host = address.value().host;
             remembered.tcpPort = address.value().port;
         }
@@ -151,6 +160,16 @@ void ConnectionPanel::updateListening()
         = kind() == Kind::WiFi && m_connection->state() == MachineConnection::State::Disconnected;
     if (!wanted) {
         m_listener->close(); // no port held, and no beacon of our own connection's machine read as "busy"
+        // Connected: the machine is busy with us now, which is not what "(busy)" warned of.
+        const QSignalBlocker blocker(m_machine);
+        for (int i = 0; i < m_machine->count(); ++i) {
+            if (m_machine->itemData(i, kBusyRole).toBool()) {
+                m_machine->setItemText(i,
+                    tr("%1 — %2").arg(
+                        m_machine->itemData(i, kNameRole).toString(), m_machine->itemData(i).toString()));
+                m_machine->setItemData(i, false, kBusyRole);
+            }
+        }
         return;
     }
     if (m_listener->isListening())
@@ -179,10 +198,10 @@ void ConnectionPanel::refreshPorts()
 void ConnectionPanel::updateMachines()
 {
     // Rebuilt from what is heard, keeping the choice, or what was typed, as it was.
-    const QString typed = m_machine->currentText();
-    const bool wasTyped
-        = m_machine->currentIndex() < 0 || typed != m_machine->itemText(m_machine->currentIndex());
-    const QString chosen = m_machine->currentData().toString();
+    const QString text = m_machine->currentText().trimmed();
+    const bool onItem
+        = m_machine->currentIndex() >= 0 && text == m_machine->itemText(m_machine->currentIndex());
+    const QString chosen = onItem ? m_machine->currentData().toString() : text; // HOST:PORT, or as typed
     const QSignalBlocker blocker(m_machine);
     m_machine->clear();
     for (const BeaconListener::Machine &heard : m_listener->machines()) {
@@ -194,10 +213,16 @@ void ConnectionPanel::updateMachines()
         m_machine->setItemData(m_machine->count() - 1, b.name, kNameRole);
         m_machine->setItemData(m_machine->count() - 1, b.busy, kBusyRole);
     }
-    const int index = wasTyped ? -1 : m_machine->findData(chosen);
+    // The same machine heard; or the last one, by its name, at a new address; or, nothing chosen yet, the
+    // first.
+    int index = m_machine->findData(chosen);
+    if (index < 0 && !m_rememberedName.isEmpty() && (chosen.isEmpty() || chosen == m_rememberedAddress))
+        index = m_machine->findData(m_rememberedName, kNameRole);
+    if (index < 0 && chosen.isEmpty() && m_machine->count() > 0)
+        index = 0;
     m_machine->setCurrentIndex(index);
     if (index < 0)
-        m_machine->setEditText(wasTyped ? typed : chosen); // a machine no longer heard stays, as an address
+        m_machine->setEditText(chosen); // a machine no longer heard stays, as an address
     updateState();
 }
 
@@ -323,8 +348,17 @@ void ConnectionPanel::toggleConnection()
     settings.setConnectionKind(k == Kind::Emulator ? kEmulator : k == Kind::WiFi ? kWiFi : kSerial);
     if (k == Kind::Serial)
         settings.setConnectionPort(t.port);
-    if (k == Kind::WiFi)
-        settings.setConnectionHost(addressText(t.host, t.tcpPort));
+    if (k == Kind::WiFi) {
+        const QString address = addressText(t.host, t.tcpPort);
+        const auto heard = heardAt(address);
+        // Not heard (yet): the name stays the one this address was heard by before.
+        m_rememberedName = heard             ? heard->name
+            : address == m_rememberedAddress ? m_rememberedName
+                                             : QString();
+        m_rememberedAddress = address;
+        settings.setConnectionHost(address);
+        settings.setConnectionHostName(m_rememberedName);
+    }
     settings.setConnectionBaud(t.baud);
     m_connection->connectTo(t);
 }

@@ -65,6 +65,9 @@ private:
     BeaconListener *m_listener;
     quint16 m_discoveryPort = Beacon::kDiscoveryPort;
     QString m_listenError;
+    // The last machine connected to over the network: found again by its name when it moved.
+    QString m_rememberedAddress;
+    QString m_rememberedName;
     // How the built-in emulator was asked for (toffee --emulator-firmware, --emulator): kept for a reconnect.
     bool m_emulatorStock = false;
     bool m_emulatorPaced = false;

@@ -197,12 +197,13 @@ void MainWindow::offerReconnect(const QString &operation, const QString &reason)
     if (!isVisible())
         return;
     QMessageBox box(QMessageBox::Warning, tr("The link to the machine was lost"),
-        tr("The link to the machine was lost during \"%1\": %2").arg(operation, reason),
+        operation.isEmpty() ? tr("The link to the machine was lost: %1").arg(reason)
+                            : tr("The link to the machine was lost during \"%1\": %2").arg(operation, reason),
         QMessageBox::NoButton, this);
-    box.setInformativeText(
-        tr("Nothing of it was written to the tool table or the history: the machine did "
-           "not confirm it. Reconnect to read the machine's offsets back; Toffee then says "
-           "whether it happened."));
+    box.setInformativeText(operation.isEmpty()
+            ? tr("Nothing was running. Reconnect to read the machine's tool and TLO again.")
+            : tr("Nothing of it was written to the tool table or the history: the machine did not confirm "
+                 "it. Reconnect to read the machine's offsets back; Toffee then says whether it happened."));
     QPushButton *reconnect = box.addButton(tr("Reconnect"), QMessageBox::AcceptRole);
     reconnect->setObjectName(u"reconnectButton"_s);
     box.addButton(tr("Not Now"), QMessageBox::RejectRole);

@@ -62,6 +62,11 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     connect(m_restore, &QPushButton::clicked, this, [this] { restore(); });
     connect(m_cancel, &QPushButton::clicked, this, &ProbePanel::cancel);
     connect(m_connection, &MachineConnection::stateChanged, this, &ProbePanel::updateState);
+    // A result belongs to the connection it came on: connected again, the window says what became of it.
+    connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State state) {
+        if (state == MachineConnection::State::Connecting)
+            m_result->clear();
+    });
     connect(m_connection, &MachineConnection::busyChanged, this, &ProbePanel::updateState);
     connect(m_connection, &MachineConnection::haltedChanged, this, &ProbePanel::updateState);
     connect(m_connection, &MachineConnection::statusChanged, this, &ProbePanel::updateState);

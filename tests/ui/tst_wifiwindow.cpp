@@ -10,6 +10,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
@@ -156,10 +157,12 @@ private Q_SLOTS:
             link->setCurrentIndex(link->findText(u"Wi-Fi"_s));
             QVERIFY(s.find<QComboBox>(u"wifiMachineCombo"_s)->isVisible());
             QVERIFY(!s.find<QComboBox>(u"baudCombo"_s)->isVisible()); // a network has no baud rate
+            QVERIFY(!s.find<QPushButton>(u"runBreakTestButton"_s)->isEnabled()); // nothing to test yet
 
-            // The list fills as the beacon arrives: name, address, not busy.
-            chooseHeard(s, u"Carvera_Shop"_s);
-            QCOMPARE(heard(s), QStringList { u"Carvera_Shop — "_s + machine.address() });
+            // The list fills as the beacon arrives: name, address, not busy; the one machine heard is chosen.
+            QTRY_COMPARE_WITH_TIMEOUT(
+                heard(s), QStringList { u"Carvera_Shop — "_s + machine.address() }, 5000);
+            QCOMPARE(s.find<QComboBox>(u"wifiMachineCombo"_s)->currentText(), heard(s).front());
             QTRY_COMPARE(s.text(u"connectionHint"_s), u"One machine heard on the network."_s);
 
             QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
@@ -182,15 +185,28 @@ private Q_SLOTS:
             screenshot(s.window, u"wifi-connected.png"_s);
             s.window.connection()->disconnectFromMachine();
         }
-        // The next start shows the same machine, by its address, ready to connect.
-        Station again;
-        panelOf(again)->setDiscoveryPort(discovery);
-        QCOMPARE(again.find<QComboBox>(u"linkCombo"_s)->currentText(), u"Wi-Fi"_s);
-        QVERIFY2(again.find<QComboBox>(u"wifiMachineCombo"_s)->currentText().contains(machine.address()),
-            qPrintable(again.find<QComboBox>(u"wifiMachineCombo"_s)->currentText()));
-        QCOMPARE(panelOf(again)->target().name(), machine.address());
-        QTest::mouseClick(again.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
-        QVERIFY(waitConnected(again));
+        QCOMPARE(AppSettings().connectionHostName(), u"Carvera_Shop"_s);
+        {
+            // The next start shows the same machine, by its address, ready to connect.
+            Station again;
+            panelOf(again)->setDiscoveryPort(discovery);
+            QCOMPARE(again.find<QComboBox>(u"linkCombo"_s)->currentText(), u"Wi-Fi"_s);
+            QVERIFY2(again.find<QComboBox>(u"wifiMachineCombo"_s)->currentText().contains(machine.address()),
+                qPrintable(again.find<QComboBox>(u"wifiMachineCombo"_s)->currentText()));
+            QCOMPARE(panelOf(again)->target().name(), machine.address());
+            // Enter in the address connects, as the button does.
+            QTest::keyClick(again.find<QComboBox>(u"wifiMachineCombo"_s)->lineEdit(), Qt::Key_Return);
+            QVERIFY(waitConnected(again));
+        }
+        // The machine got another address (its router's DHCP): found again by its name.
+        NetworkMachine moved(u"Carvera_Shop"_s, discovery, true);
+        QVERIFY(moved.address() != machine.address());
+        machine.beacon.reset(); // the old address is heard no more
+        Station third;
+        panelOf(third)->setDiscoveryPort(discovery);
+        QTRY_COMPARE_WITH_TIMEOUT(panelOf(third)->target().name(), moved.address(), 5000);
+        QCOMPARE(third.find<QComboBox>(u"wifiMachineCombo"_s)->currentText(),
+            u"Carvera_Shop — "_s + moved.address());
     }
 
     // A typed address works without a beacon; a wrong one is said in words, and nothing hangs.
@@ -262,6 +278,59 @@ private Q_SLOTS:
         QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
         QTRY_VERIFY(!said.isEmpty());
         QVERIFY(waitConnected(s));
+        // Busy with us now: not shown as another program's.
+        QCOMPARE(s.find<QComboBox>(u"wifiMachineCombo"_s)->currentText(),
+            u"Carvera_Busy — "_s + machine.address());
+    }
+
+    // The link goes while nothing runs: the window says so and offers to reconnect all the same.
+    void aLinkLostWhileIdle()
+    {
+        NetworkMachine machine(u"Carvera_Idle"_s, freeUdpPort(), false);
+        Station s;
+        ConnectionTarget target;
+        target.emulator = false;
+        target.host = u"127.0.0.1"_s;
+        target.tcpPort = machine.server.port();
+        s.window.connection()->connectTo(target);
+        QVERIFY(waitConnected(s));
+        QString lost;
+        answerBoxTitled(u"The link to the machine was lost"_s, u"reconnectButton"_s, &lost);
+        machine.server.dropAll();
+        QTRY_VERIFY_WITH_TIMEOUT(!lost.isEmpty(), 10000);
+        QVERIFY2(lost.contains(u"closed the connection"_s) && lost.contains(u"Nothing was running"_s),
+            qPrintable(lost));
+        QVERIFY(waitConnected(s));
+        QVERIFY(!s.window.connection()->interruption());
+    }
+
+    // What the machine holds after a lost link, against what it held before, in words.
+    void theVerdictAfterALostLink_data()
+    {
+        QTest::addColumn<double>("tloBefore");
+        QTest::addColumn<double>("tloNow");
+        QTest::addColumn<bool>("currentMzNow");
+        QTest::addColumn<QString>("says");
+        QTest::newRow("changed") << -30.2 << -30.488 << true << u"It ran on the machine"_s;
+        QTest::newRow("the same") << -30.2 << -30.2 << true << u"Nothing changed on the machine"_s;
+        QTest::newRow("restarted") << -30.2 << 0.0 << false << u"as after a restart"_s;
+        QTest::newRow("nothing before") << 0.0 << 0.0 << false << u"Nothing changed on the machine"_s;
+    }
+    void theVerdictAfterALostLink()
+    {
+        QFETCH(double, tloBefore);
+        QFETCH(double, tloNow);
+        QFETCH(bool, currentMzNow);
+        QFETCH(QString, says);
+        const MachineConnection::Interruption before { u"Probing T2…"_s, u"127.0.0.1:2222"_s, 2, tloBefore,
+            std::nullopt };
+        SessionResult now;
+        now.tool = 2;
+        now.tlo
+            = TloReading { tloNow, -115.34, currentMzNow ? std::optional(-115.34 + tloNow) : std::nullopt };
+        const QString verdict = MachineConnection::interruptionVerdict(before, now);
+        QVERIFY2(verdict.contains(says), qPrintable(verdict));
+        QVERIFY2(verdict.contains(u"Before \"Probing T2…\" the machine had T2"_s), qPrintable(verdict));
     }
 
     // The machine leaves the network in the middle of a probe: nothing recorded, a reconnect offered, and

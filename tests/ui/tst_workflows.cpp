@@ -607,9 +607,14 @@ private Q_SLOTS:
     {
         Station s;
         s.connect();
-        s.window.connection()->link()->close(); // the cable comes out
+        // The cable comes out: the window says so and offers to reconnect; the operator does.
+        QString offer;
+        answerNextBox(QMessageBox::NoButton, &offer, u"reconnectButton"_s);
+        s.window.connection()->link()->close();
         QTRY_VERIFY(s.window.statusBar()->currentMessage().startsWith(u"Disconnected"_s));
-        s.connect();
+        QTRY_VERIFY(!offer.isEmpty());
+        QVERIFY2(offer.contains(u"Nothing was running"_s), qPrintable(offer));
+        QTRY_COMPARE(s.window.connection()->state(), MachineConnection::State::Connected);
         QVERIFY(!s.window.statusBar()->currentMessage().contains(u"Disconnected"_s));
     }
 };
