@@ -1777,6 +1777,201 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
 </context>
 <context>
+    <name>Toffee::GrblHal</name>
+    <message>
+        <source>A limit switch was hit while moving: the machine stopped at once and may have lost its position. Clear the switch, unlock ($X) and home the machine ($H) before going on.</source>
+        <translation>Während der Bewegung wurde ein Endschalter ausgelöst: Die Maschine hat sofort angehalten und ihre Position möglicherweise verloren. Fahren Sie den Endschalter frei, entsperren Sie ($X) und führen Sie eine Referenzfahrt ($H) durch, bevor Sie weiterarbeiten.</translation>
+    </message>
+    <message>
+        <source>A move would have gone beyond the machine&apos;s travel: nothing moved and the position is kept. Unlock ($X) and check the target (for a probe: the setter&apos;s position and the lowest Z to search to).</source>
+        <translation>Eine Bewegung hätte den Verfahrweg der Maschine überschritten: Es wurde nichts bewegt, die Position bleibt erhalten. Entsperren Sie ($X) und prüfen Sie das Ziel (bei einer Längenmessung: die Position des Werkzeuglängensensors und die tiefste Z-Position für die Suche).</translation>
+    </message>
+    <message>
+        <source>The controller was reset or stopped while moving: the position may be lost. Unlock ($X) and home the machine ($H) before going on.</source>
+        <translation>Die Steuerung wurde während der Bewegung zurückgesetzt oder angehalten: Die Position ist möglicherweise verloren. Entsperren Sie ($X) und führen Sie eine Referenzfahrt ($H) durch, bevor Sie weiterarbeiten.</translation>
+    </message>
+    <message>
+        <source>Probe already touching: the probe input was triggered before the probe moved, so nothing was measured. Unlock ($X), then check that the tool is not resting on the setter and that the setter is clean and wired right.</source>
+        <translation>Taster bereits ausgelöst: Der Tastereingang war schon vor der Messbewegung aktiv, daher wurde nichts gemessen. Entsperren Sie ($X) und prüfen Sie dann, dass das Werkzeug nicht auf dem Werkzeuglängensensor aufliegt und dass der Sensor sauber und richtig angeschlossen ist.</translation>
+    </message>
+    <message>
+        <source>Probe found nothing: the tool never touched the setter within the travel allowed, so nothing was measured. Unlock ($X), then check the setter and the tool: the right tool in the spindle, the setter under it, the lowest Z deep enough.</source>
+        <translation>Messung ohne Kontakt: Das Werkzeug hat den Werkzeuglängensensor innerhalb des zulässigen Wegs nicht berührt, daher wurde nichts gemessen. Entsperren Sie ($X) und prüfen Sie dann Sensor und Werkzeug: das richtige Werkzeug in der Spindel, der Sensor darunter, die tiefste Z-Position tief genug.</translation>
+    </message>
+    <message>
+        <source>Homing was interrupted by a reset. Unlock ($X) or home the machine again ($H).</source>
+        <translation>Die Referenzfahrt wurde durch einen Reset unterbrochen. Entsperren Sie ($X) oder führen Sie die Referenzfahrt erneut durch ($H).</translation>
+    </message>
+    <message>
+        <source>Homing stopped because the safety door was opened. Close the door and home again ($H).</source>
+        <translation>Die Referenzfahrt wurde abgebrochen, weil die Schutztür geöffnet wurde. Schließen Sie die Tür und führen Sie die Referenzfahrt erneut durch ($H).</translation>
+    </message>
+    <message>
+        <source>Homing failed: the machine could not move off a limit switch. Check the switch and its wiring (or the pull-off distance), then home again ($H).</source>
+        <translation>Referenzfahrt fehlgeschlagen: Die Maschine konnte nicht von einem Endschalter freifahren. Prüfen Sie den Schalter und seine Verdrahtung (oder den Freifahrweg) und führen Sie dann die Referenzfahrt erneut durch ($H).</translation>
+    </message>
+    <message>
+        <source>Homing failed: a limit switch was not found within the search distance. Check the switches and their wiring, then home again ($H).</source>
+        <translation>Referenzfahrt fehlgeschlagen: Innerhalb des Suchwegs wurde kein Endschalter gefunden. Prüfen Sie die Schalter und ihre Verdrahtung und führen Sie dann die Referenzfahrt erneut durch ($H).</translation>
+    </message>
+    <message>
+        <source>The emergency stop is engaged. Make the machine safe, release the stop, then reset the controller and unlock ($X).</source>
+        <translation>Der Not-Halt ist ausgelöst. Bringen Sie die Maschine in einen sicheren Zustand, entriegeln Sie den Not-Halt, setzen Sie dann die Steuerung zurück und entsperren Sie ($X).</translation>
+    </message>
+    <message>
+        <source>The machine must be homed before it moves: home it ($H).</source>
+        <translation>Die Maschine braucht vor jeder Bewegung eine Referenzfahrt: Führen Sie sie durch ($H).</translation>
+    </message>
+    <message>
+        <source>A limit switch is pressed. Unlock ($X), move the machine off the switch, then go on.</source>
+        <translation>Ein Endschalter ist betätigt. Entsperren Sie ($X), fahren Sie die Maschine vom Schalter frei und arbeiten Sie dann weiter.</translation>
+    </message>
+    <message>
+        <source>The probe&apos;s protection tripped: the probe was touched while the machine moved. Check the probe, then unlock ($X).</source>
+        <translation>Der Tasterschutz hat angesprochen: Der Taster wurde während einer Maschinenbewegung berührt. Prüfen Sie den Taster und entsperren Sie dann ($X).</translation>
+    </message>
+    <message>
+        <source>The spindle did not reach its speed in time. Check the spindle and its drive, then unlock ($X).</source>
+        <translation>Die Spindel hat ihre Drehzahl nicht rechtzeitig erreicht. Prüfen Sie die Spindel und ihren Antrieb und entsperren Sie dann ($X).</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s power-on self test failed. Switch the controller off and on; if it happens again, check its wiring.</source>
+        <translation>Der Selbsttest der Steuerung beim Einschalten ist fehlgeschlagen. Schalten Sie die Steuerung aus und wieder ein; tritt der Fehler erneut auf, prüfen Sie ihre Verdrahtung.</translation>
+    </message>
+    <message>
+        <source>A motor driver reported a fault. Check the drivers and the motors, then reset the controller.</source>
+        <translation>Ein Motortreiber hat einen Fehler gemeldet. Prüfen Sie die Treiber und die Motoren und setzen Sie dann die Steuerung zurück.</translation>
+    </message>
+    <message>
+        <source>Homing failed: the homing settings do not fit the machine. Check them ($$), then home again ($H).</source>
+        <translation>Referenzfahrt fehlgeschlagen: Die Einstellungen für die Referenzfahrt passen nicht zur Maschine. Prüfen Sie sie ($$) und führen Sie dann die Referenzfahrt erneut durch ($H).</translation>
+    </message>
+    <message>
+        <source>A Modbus device (often the spindle&apos;s drive) did not answer or answered wrong. Check its cable and settings, then reset the controller.</source>
+        <translation>Ein Modbus-Gerät (oft der Spindelantrieb) hat nicht oder fehlerhaft geantwortet. Prüfen Sie sein Kabel und seine Einstellungen und setzen Sie dann die Steuerung zurück.</translation>
+    </message>
+    <message>
+        <source>The controller lost contact with an input/output expander. Check it and its cable, then reset the controller.</source>
+        <translation>Die Steuerung hat die Verbindung zu einer Ein-/Ausgangserweiterung verloren. Prüfen Sie die Erweiterung und ihr Kabel und setzen Sie dann die Steuerung zurück.</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s settings memory failed: its settings and tool table may be lost. Check them ($$ and $#) before going on.</source>
+        <translation>Der Einstellungsspeicher der Steuerung ist ausgefallen: Einstellungen und Werkzeugtabelle sind möglicherweise verloren. Prüfen Sie sie ($$ und $#), bevor Sie weiterarbeiten.</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s buffer overflowed. Reset the controller and send the work again.</source>
+        <translation>Der Puffer der Steuerung ist übergelaufen. Setzen Sie die Steuerung zurück und senden Sie den Auftrag erneut.</translation>
+    </message>
+    <message>
+        <source>The controller halted (ALARM:%1). Make the machine safe, then unlock ($X) or reset the controller; the controller&apos;s documentation says what this alarm means.</source>
+        <translation>Die Steuerung hat angehalten (ALARM:%1). Bringen Sie die Maschine in einen sicheren Zustand, entsperren Sie dann ($X) oder setzen Sie die Steuerung zurück; die Bedeutung dieses Alarms steht in der Dokumentation der Steuerung.</translation>
+    </message>
+    <message>
+        <source>The controller could not read a word of the line (a letter and a number each). Check the line.</source>
+        <translation>Die Steuerung konnte ein Wort der Zeile nicht lesen (jeweils ein Buchstabe und eine Zahl). Prüfen Sie die Zeile.</translation>
+    </message>
+    <message>
+        <source>The controller does not know this $ command.</source>
+        <translation>Die Steuerung kennt diesen $-Befehl nicht.</translation>
+    </message>
+    <message>
+        <source>The controller takes this $ command only while idle: wait for the machine to stop, then try again.</source>
+        <translation>Die Steuerung nimmt diesen $-Befehl nur im Stillstand an: Warten Sie, bis die Maschine steht, und versuchen Sie es dann erneut.</translation>
+    </message>
+    <message>
+        <source>G-code locked out during alarm or jog state: the controller is halted. Find out why it halted, unlock ($X), then try again.</source>
+        <translation>G-Code ist im Alarm- oder Tippbetrieb gesperrt: Die Steuerung ist angehalten. Ermitteln Sie die Ursache, entsperren Sie ($X) und versuchen Sie es dann erneut.</translation>
+    </message>
+    <message>
+        <source>The line is too long for the controller; it was not carried out.</source>
+        <translation>Die Zeile ist für die Steuerung zu lang; sie wurde nicht ausgeführt.</translation>
+    </message>
+    <message>
+        <source>The safety door is open. Close it and go on.</source>
+        <translation>Die Schutztür ist offen. Schließen Sie sie und arbeiten Sie weiter.</translation>
+    </message>
+    <message>
+        <source>The jog would go beyond the machine&apos;s travel; the machine did not move.</source>
+        <translation>Die Tippbewegung würde den Verfahrweg der Maschine überschreiten; die Maschine hat sich nicht bewegt.</translation>
+    </message>
+    <message>
+        <source>The controller was reset; the line was not carried out.</source>
+        <translation>Die Steuerung wurde zurückgesetzt; die Zeile wurde nicht ausgeführt.</translation>
+    </message>
+    <message>
+        <source>The controller does not support a command in the line (or the command is not valid there).</source>
+        <translation>Die Steuerung unterstützt einen Befehl in der Zeile nicht (oder der Befehl ist dort nicht zulässig).</translation>
+    </message>
+    <message>
+        <source>The line holds words that cannot go together. Check the line.</source>
+        <translation>Die Zeile enthält Wörter, die nicht zusammen stehen dürfen. Prüfen Sie die Zeile.</translation>
+    </message>
+    <message>
+        <source>No feed rate is set for the move: give one with F.</source>
+        <translation>Für die Bewegung ist kein Vorschub gesetzt: Geben Sie einen mit F an.</translation>
+    </message>
+    <message>
+        <source>A command in the line lacks a value or needs a whole number. Check the line.</source>
+        <translation>Einem Befehl in der Zeile fehlt ein Wert, oder er erfordert eine ganze Zahl. Prüfen Sie die Zeile.</translation>
+    </message>
+    <message>
+        <source>The move has no valid target. Check its axis words.</source>
+        <translation>Die Bewegung hat kein gültiges Ziel. Prüfen Sie ihre Achswörter.</translation>
+    </message>
+    <message>
+        <source>G43.1 was given for an axis that is not the controller&apos;s tool length axis (Z).</source>
+        <translation>G43.1 wurde für eine Achse angegeben, die nicht die Werkzeuglängenachse der Steuerung (Z) ist.</translation>
+    </message>
+    <message>
+        <source>No such tool in the controller: the number is beyond its tool table, or the tool is not in it. Check the table&apos;s size ($I) and the tool&apos;s number.</source>
+        <translation>Dieses Werkzeug gibt es in der Steuerung nicht: Die Nummer liegt außerhalb ihrer Werkzeugtabelle, oder das Werkzeug ist nicht darin eingetragen. Prüfen Sie die Größe der Tabelle ($I) und die Werkzeugnummer.</translation>
+    </message>
+    <message>
+        <source>A value in the line is out of the range the controller takes.</source>
+        <translation>Ein Wert in der Zeile liegt außerhalb des Bereichs, den die Steuerung annimmt.</translation>
+    </message>
+    <message>
+        <source>A tool change is waiting to be finished: finish it (cycle start) before sending more.</source>
+        <translation>Ein Werkzeugwechsel wartet auf seinen Abschluss: Schließen Sie ihn ab (Zyklusstart), bevor Sie weitere Befehle senden.</translation>
+    </message>
+    <message>
+        <source>A limit switch is pressed: only homing is allowed. Move off the switch or home ($H).</source>
+        <translation>Ein Endschalter ist betätigt: Nur eine Referenzfahrt ist erlaubt. Fahren Sie vom Schalter frei oder führen Sie eine Referenzfahrt durch ($H).</translation>
+    </message>
+    <message>
+        <source>The machine must be homed first: home it ($H).</source>
+        <translation>Die Maschine braucht zuerst eine Referenzfahrt: Führen Sie sie durch ($H).</translation>
+    </message>
+    <message>
+        <source>The controller does not know which tool is in the spindle: tell it with M61 Q&lt;n&gt;.</source>
+        <translation>Die Steuerung weiß nicht, welches Werkzeug in der Spindel ist: Teilen Sie es ihr mit M61 Q&lt;n&gt; mit.</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s power-on self test failed: switch it off and on.</source>
+        <translation>Der Selbsttest der Steuerung beim Einschalten ist fehlgeschlagen: Schalten Sie sie aus und wieder ein.</translation>
+    </message>
+    <message>
+        <source>The emergency stop is engaged. Release it and reset the controller.</source>
+        <translation>Der Not-Halt ist ausgelöst. Entriegeln Sie ihn und setzen Sie die Steuerung zurück.</translation>
+    </message>
+    <message>
+        <source>Not allowed while a critical event is active (an emergency stop, a hard limit or a motor fault). Clear it and reset the controller.</source>
+        <translation>Nicht erlaubt, solange ein kritisches Ereignis aktiv ist (Not-Halt, ausgelöster Hardware-Endschalter oder Motorfehler). Beheben Sie es und setzen Sie die Steuerung zurück.</translation>
+    </message>
+    <message>
+        <source>There is already a tool in the spindle: remove it first.</source>
+        <translation>Es ist bereits ein Werkzeug in der Spindel: Entnehmen Sie es zuerst.</translation>
+    </message>
+    <message>
+        <source>There is no tool in the spindle: put one in (or tell the controller with M61 Q&lt;n&gt;).</source>
+        <translation>Es ist kein Werkzeug in der Spindel: Setzen Sie eines ein (oder teilen Sie es der Steuerung mit M61 Q&lt;n&gt; mit).</translation>
+    </message>
+    <message>
+        <source>The controller refused the line (error:%1).</source>
+        <translation>Die Steuerung hat die Zeile abgelehnt (error:%1).</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::HistoryDock</name>
     <message>
         <source>probe</source>
@@ -3137,10 +3332,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
 <context>
     <name>Toffee::MachineConnection</name>
     <message>
-        <source>Disconnected.</source>
-        <translation>Getrennt.</translation>
-    </message>
-    <message>
         <source>Reading the offsets…</source>
         <translation>Korrekturen werden gelesen …</translation>
     </message>
@@ -3219,6 +3410,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Nothing changed on the machine: it did not run, or it measured exactly the length held before. Nothing of it was recorded; run it again.</source>
         <translation>An der Maschine hat sich nichts geändert: Es lief nicht, oder es hat genau die vorherige Länge gemessen. Nichts davon wurde aufgezeichnet; führen Sie es erneut aus.</translation>
+    </message>
+    <message>
+        <source>The machine holds no TLO now, as after a restart: Toffee cannot tell whether it ran. Nothing of it was recorded; check the tool in the spindle and measure it again.</source>
+        <translation>Die Maschine hat jetzt keine Längenkorrektur, wie nach einem Neustart: Toffee kann nicht erkennen, ob es ausgeführt wurde. Nichts davon wurde aufgezeichnet; prüfen Sie das Werkzeug in der Spindel und messen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>as asked.</source>
+        <translation>wie gewünscht.</translation>
     </message>
 </context>
 <context>
@@ -4060,6 +4259,14 @@ Trotzdem speichern?</translation>
     <message>
         <source>Not Now</source>
         <translation>Nicht jetzt</translation>
+    </message>
+    <message>
+        <source>The link to the machine was lost: %1</source>
+        <translation>Die Verbindung zur Maschine ist abgerissen: %1</translation>
+    </message>
+    <message>
+        <source>Nothing was running. Reconnect to read the machine&apos;s tool and TLO again.</source>
+        <translation>Es lief nichts. Verbinden Sie sich erneut, um Werkzeug und Längenkorrektur der Maschine wieder zu lesen.</translation>
     </message>
 </context>
 <context>

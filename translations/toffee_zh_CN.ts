@@ -1777,6 +1777,201 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
 </context>
 <context>
+    <name>Toffee::GrblHal</name>
+    <message>
+        <source>A limit switch was hit while moving: the machine stopped at once and may have lost its position. Clear the switch, unlock ($X) and home the machine ($H) before going on.</source>
+        <translation>移动过程中触发了限位开关：机器已立即停止，可能已丢失位置。请先让限位开关复位，解锁（$X）并回零（$H），然后再继续。</translation>
+    </message>
+    <message>
+        <source>A move would have gone beyond the machine&apos;s travel: nothing moved and the position is kept. Unlock ($X) and check the target (for a probe: the setter&apos;s position and the lowest Z to search to).</source>
+        <translation>某次移动将超出机器行程：机器未移动，位置保持不变。请解锁（$X）并检查目标位置（对于探测：对刀仪的位置以及搜索到的最低 Z）。</translation>
+    </message>
+    <message>
+        <source>The controller was reset or stopped while moving: the position may be lost. Unlock ($X) and home the machine ($H) before going on.</source>
+        <translation>控制器在移动过程中被复位或停止：位置可能已丢失。请解锁（$X）并回零（$H），然后再继续。</translation>
+    </message>
+    <message>
+        <source>Probe already touching: the probe input was triggered before the probe moved, so nothing was measured. Unlock ($X), then check that the tool is not resting on the setter and that the setter is clean and wired right.</source>
+        <translation>探针已处于触发状态：探测移动开始前探针输入已被触发，因此未测得任何数据。请解锁（$X），然后检查刀具没有压在对刀仪上，且对刀仪清洁、接线正确。</translation>
+    </message>
+    <message>
+        <source>Probe found nothing: the tool never touched the setter within the travel allowed, so nothing was measured. Unlock ($X), then check the setter and the tool: the right tool in the spindle, the setter under it, the lowest Z deep enough.</source>
+        <translation>探测未触碰：在允许的行程内刀具始终未碰到对刀仪，因此未测得任何数据。请解锁（$X），然后检查对刀仪和刀具：主轴中是正确的刀具，对刀仪位于其下方，最低 Z 足够深。</translation>
+    </message>
+    <message>
+        <source>Homing was interrupted by a reset. Unlock ($X) or home the machine again ($H).</source>
+        <translation>回零被复位中断。请解锁（$X）或重新回零（$H）。</translation>
+    </message>
+    <message>
+        <source>Homing stopped because the safety door was opened. Close the door and home again ($H).</source>
+        <translation>因安全门被打开，回零已停止。请关闭安全门并重新回零（$H）。</translation>
+    </message>
+    <message>
+        <source>Homing failed: the machine could not move off a limit switch. Check the switch and its wiring (or the pull-off distance), then home again ($H).</source>
+        <translation>回零失败：机器无法离开限位开关。请检查该开关及其接线（或回退距离），然后重新回零（$H）。</translation>
+    </message>
+    <message>
+        <source>Homing failed: a limit switch was not found within the search distance. Check the switches and their wiring, then home again ($H).</source>
+        <translation>回零失败：在搜索距离内未找到限位开关。请检查限位开关及其接线，然后重新回零（$H）。</translation>
+    </message>
+    <message>
+        <source>The emergency stop is engaged. Make the machine safe, release the stop, then reset the controller and unlock ($X).</source>
+        <translation>急停已触发。请确保机器处于安全状态，释放急停，然后复位控制器并解锁（$X）。</translation>
+    </message>
+    <message>
+        <source>The machine must be homed before it moves: home it ($H).</source>
+        <translation>机器在移动前必须先回零：请回零（$H）。</translation>
+    </message>
+    <message>
+        <source>A limit switch is pressed. Unlock ($X), move the machine off the switch, then go on.</source>
+        <translation>有限位开关处于触发状态。请解锁（$X），将机器移离该开关，然后继续。</translation>
+    </message>
+    <message>
+        <source>The probe&apos;s protection tripped: the probe was touched while the machine moved. Check the probe, then unlock ($X).</source>
+        <translation>探针保护已触发：机器移动时探针被触碰。请检查探针，然后解锁（$X）。</translation>
+    </message>
+    <message>
+        <source>The spindle did not reach its speed in time. Check the spindle and its drive, then unlock ($X).</source>
+        <translation>主轴未能及时达到设定转速。请检查主轴及其驱动器，然后解锁（$X）。</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s power-on self test failed. Switch the controller off and on; if it happens again, check its wiring.</source>
+        <translation>控制器上电自检失败。请将控制器断电后重新上电；如果再次出现，请检查其接线。</translation>
+    </message>
+    <message>
+        <source>A motor driver reported a fault. Check the drivers and the motors, then reset the controller.</source>
+        <translation>某个电机驱动器报告了故障。请检查驱动器和电机，然后复位控制器。</translation>
+    </message>
+    <message>
+        <source>Homing failed: the homing settings do not fit the machine. Check them ($$), then home again ($H).</source>
+        <translation>回零失败：回零设置与机器不符。请检查这些设置（$$），然后重新回零（$H）。</translation>
+    </message>
+    <message>
+        <source>A Modbus device (often the spindle&apos;s drive) did not answer or answered wrong. Check its cable and settings, then reset the controller.</source>
+        <translation>某个 Modbus 设备（通常是主轴驱动器）无应答或应答错误。请检查其线缆和设置，然后复位控制器。</translation>
+    </message>
+    <message>
+        <source>The controller lost contact with an input/output expander. Check it and its cable, then reset the controller.</source>
+        <translation>控制器与输入/输出扩展模块失去联系。请检查该模块及其线缆，然后复位控制器。</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s settings memory failed: its settings and tool table may be lost. Check them ($$ and $#) before going on.</source>
+        <translation>控制器的设置存储器出错：其设置和刀具表可能已丢失。请先检查（$$ 和 $#）再继续。</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s buffer overflowed. Reset the controller and send the work again.</source>
+        <translation>控制器缓冲区溢出。请复位控制器并重新发送加工任务。</translation>
+    </message>
+    <message>
+        <source>The controller halted (ALARM:%1). Make the machine safe, then unlock ($X) or reset the controller; the controller&apos;s documentation says what this alarm means.</source>
+        <translation>控制器已停机（ALARM:%1）。请确保机器处于安全状态，然后解锁（$X）或复位控制器；该报警的含义请参阅控制器文档。</translation>
+    </message>
+    <message>
+        <source>The controller could not read a word of the line (a letter and a number each). Check the line.</source>
+        <translation>控制器无法读取该行中的某个字（每个字由一个字母和一个数字组成）。请检查该行。</translation>
+    </message>
+    <message>
+        <source>The controller does not know this $ command.</source>
+        <translation>控制器不认识此 $ 命令。</translation>
+    </message>
+    <message>
+        <source>The controller takes this $ command only while idle: wait for the machine to stop, then try again.</source>
+        <translation>控制器仅在空闲时接受此 $ 命令：请等待机器停止，然后重试。</translation>
+    </message>
+    <message>
+        <source>G-code locked out during alarm or jog state: the controller is halted. Find out why it halted, unlock ($X), then try again.</source>
+        <translation>在报警或点动状态下 G 代码被锁定：控制器已停机。请查明停机原因，解锁（$X），然后重试。</translation>
+    </message>
+    <message>
+        <source>The line is too long for the controller; it was not carried out.</source>
+        <translation>该行对控制器而言过长；未被执行。</translation>
+    </message>
+    <message>
+        <source>The safety door is open. Close it and go on.</source>
+        <translation>安全门已打开。请关闭安全门后继续。</translation>
+    </message>
+    <message>
+        <source>The jog would go beyond the machine&apos;s travel; the machine did not move.</source>
+        <translation>点动将超出机器行程；机器未移动。</translation>
+    </message>
+    <message>
+        <source>The controller was reset; the line was not carried out.</source>
+        <translation>控制器已复位；该行未被执行。</translation>
+    </message>
+    <message>
+        <source>The controller does not support a command in the line (or the command is not valid there).</source>
+        <translation>控制器不支持该行中的某个命令（或该命令在此处无效）。</translation>
+    </message>
+    <message>
+        <source>The line holds words that cannot go together. Check the line.</source>
+        <translation>该行包含不能同时使用的字。请检查该行。</translation>
+    </message>
+    <message>
+        <source>No feed rate is set for the move: give one with F.</source>
+        <translation>该移动未设置进给速度：请用 F 指定。</translation>
+    </message>
+    <message>
+        <source>A command in the line lacks a value or needs a whole number. Check the line.</source>
+        <translation>该行中的某个命令缺少数值或需要整数。请检查该行。</translation>
+    </message>
+    <message>
+        <source>The move has no valid target. Check its axis words.</source>
+        <translation>该移动没有有效的目标位置。请检查其轴字。</translation>
+    </message>
+    <message>
+        <source>G43.1 was given for an axis that is not the controller&apos;s tool length axis (Z).</source>
+        <translation>G43.1 指定的轴不是控制器的刀长轴（Z）。</translation>
+    </message>
+    <message>
+        <source>No such tool in the controller: the number is beyond its tool table, or the tool is not in it. Check the table&apos;s size ($I) and the tool&apos;s number.</source>
+        <translation>控制器中没有此刀具：编号超出其刀具表范围，或刀具表中没有该刀具。请检查刀具表大小（$I）和刀具编号。</translation>
+    </message>
+    <message>
+        <source>A value in the line is out of the range the controller takes.</source>
+        <translation>该行中的某个数值超出了控制器接受的范围。</translation>
+    </message>
+    <message>
+        <source>A tool change is waiting to be finished: finish it (cycle start) before sending more.</source>
+        <translation>有换刀操作等待完成：请先完成换刀（循环启动），再发送后续内容。</translation>
+    </message>
+    <message>
+        <source>A limit switch is pressed: only homing is allowed. Move off the switch or home ($H).</source>
+        <translation>有限位开关处于触发状态：只允许回零。请移离该开关或回零（$H）。</translation>
+    </message>
+    <message>
+        <source>The machine must be homed first: home it ($H).</source>
+        <translation>机器必须先回零：请回零（$H）。</translation>
+    </message>
+    <message>
+        <source>The controller does not know which tool is in the spindle: tell it with M61 Q&lt;n&gt;.</source>
+        <translation>控制器不知道主轴中是哪把刀具：请用 M61 Q&lt;n&gt; 告知。</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s power-on self test failed: switch it off and on.</source>
+        <translation>控制器上电自检失败：请将其断电后重新上电。</translation>
+    </message>
+    <message>
+        <source>The emergency stop is engaged. Release it and reset the controller.</source>
+        <translation>急停已触发。请释放急停并复位控制器。</translation>
+    </message>
+    <message>
+        <source>Not allowed while a critical event is active (an emergency stop, a hard limit or a motor fault). Clear it and reset the controller.</source>
+        <translation>存在严重事件（急停、硬限位或电机故障）时不允许此操作。请排除该事件并复位控制器。</translation>
+    </message>
+    <message>
+        <source>There is already a tool in the spindle: remove it first.</source>
+        <translation>主轴中已有刀具：请先将其取下。</translation>
+    </message>
+    <message>
+        <source>There is no tool in the spindle: put one in (or tell the controller with M61 Q&lt;n&gt;).</source>
+        <translation>主轴中没有刀具：请装入一把刀具（或用 M61 Q&lt;n&gt; 告知控制器）。</translation>
+    </message>
+    <message>
+        <source>The controller refused the line (error:%1).</source>
+        <translation>控制器拒绝了该行（error:%1）。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::HistoryDock</name>
     <message>
         <source>probe</source>
@@ -3137,10 +3332,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
 <context>
     <name>Toffee::MachineConnection</name>
     <message>
-        <source>Disconnected.</source>
-        <translation>已断开。</translation>
-    </message>
-    <message>
         <source>Reading the offsets…</source>
         <translation>正在读取补偿…</translation>
     </message>
@@ -3219,6 +3410,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Nothing changed on the machine: it did not run, or it measured exactly the length held before. Nothing of it was recorded; run it again.</source>
         <translation>机器上没有任何变化：它没有执行，或测得的长度与之前完全相同。未记录任何内容；请重新执行。</translation>
+    </message>
+    <message>
+        <source>The machine holds no TLO now, as after a restart: Toffee cannot tell whether it ran. Nothing of it was recorded; check the tool in the spindle and measure it again.</source>
+        <translation>机器现在没有刀长补偿，就像重启之后：Toffee 无法判断它是否已执行。未记录任何内容；请检查主轴中的刀具并重新测量。</translation>
+    </message>
+    <message>
+        <source>as asked.</source>
+        <translation>按要求断开。</translation>
     </message>
 </context>
 <context>
@@ -4060,6 +4259,14 @@ Save anyway?</source>
     <message>
         <source>Not Now</source>
         <translation>暂不</translation>
+    </message>
+    <message>
+        <source>The link to the machine was lost: %1</source>
+        <translation>与机器的连接已断开：%1</translation>
+    </message>
+    <message>
+        <source>Nothing was running. Reconnect to read the machine&apos;s tool and TLO again.</source>
+        <translation>当时没有正在执行的操作。请重新连接以再次读取机器的刀具和刀长补偿。</translation>
     </message>
 </context>
 <context>

@@ -3,9 +3,17 @@
 // means by them are grblHAL's (alarms.h, errors.h); the words are Toffee's.
 #include "serial/grblhal/grblhalreplies.h"
 
-#include "model/translate.h"
+#include <QCoreApplication>
 
 namespace Toffee::GrblHal {
+
+namespace {
+// lupdate files a free function's tr() under its namespace: these are translated in that context.
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("Toffee::GrblHal", text);
+}
+} // namespace
 
 QString alarmMeaning(int alarm)
 {
