@@ -10,7 +10,7 @@
 
 #include "model/gcode/carvera.h"
 #include "model/gcode/gcodewords.h"
-#include "serial/machinesession.h"
+#include "serial/machinecontroller.h"
 
 using namespace Qt::StringLiterals;
 
@@ -98,8 +98,8 @@ std::optional<ConsoleCheck> ConsoleCheck::checkOffsets(const GCodeBlock &block, 
     if (block.has('G', 20))
         return refuse(tr("The Carvera works in millimetres only: G20 (inches) halts it. Use G21."));
     if (block.has('M', 491.1)) {
-        const double tolerance = block.value('H').value_or(MachineSession::kDefaultTolerance);
-        if (auto r = MachineSession::validateTolerance(tolerance); !r)
+        const double tolerance = block.value('H').value_or(MachineController::kDefaultTolerance);
+        if (auto r = MachineController::validateTolerance(tolerance); !r)
             return refuse(r.error().message);
         return confirm(
             tr("M491.1 runs a break test: the machine moves to the tool setter and probes the tool. "
@@ -119,7 +119,7 @@ std::optional<ConsoleCheck> ConsoleCheck::checkOffsets(const GCodeBlock &block, 
                "firmware measures H from the TLO instead of the tool's height. Under \"Set the offset "
                "by hand\", choose Gauge height above Z0: Toffee works the TLO out from the position "
                "and sends it as M493.3 Z."));
-    if (auto r = MachineSession::validateOffset(tr("The tool length offset"), *z); !r)
+    if (auto r = MachineController::validateOffset(tr("The tool length offset"), *z); !r)
         return refuse(r.error().message);
     ConsoleCheck c = confirm(
         tr("%1 changes the tool length offset the next cut uses. The table records it as set by hand.")
@@ -134,7 +134,7 @@ QString ConsoleCheck::toolProblem(const GCodeWord *t, const QString &missing)
     if (!t)
         return missing;
     if (t->value != std::floor(t->value) || t->value < Limits::kEmptySpindle
-        || t->value > Limits::kMaxToolNumber || !MachineSession::validateToolNumber(int(t->value)))
+        || t->value > Limits::kMaxToolNumber || !MachineController::validateToolNumber(int(t->value)))
         return tr("%1 is not a tool number; use %2 to %3 (%4 for an empty spindle).")
             .arg(QString::fromLatin1(t->text).toUpper())
             .arg(Limits::kMinToolNumber)

@@ -6,6 +6,7 @@
 
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulatortransport.h"
+#include "serial/machinesession.h"
 #include "serial/transport/serialporttransport.h"
 #include "serial/transport/tcptransport.h"
 
@@ -96,6 +97,11 @@ std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target)
     return transport;
 }
 
+std::unique_ptr<MachineController> makeController(MachineLink *link)
+{
+    return std::make_unique<MachineSession>(link);
+}
+
 QString ConnectionTarget::name() const
 {
     if (emulator)
@@ -112,7 +118,7 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
     m_transport = makeTransport(target);
     m_link = std::make_unique<MachineLink>(m_transport.get());
     m_link->setTimeoutOverride(target.timeoutMs);
-    m_session = std::make_unique<MachineSession>(m_link.get());
+    m_session = makeController(m_link.get());
     connect(m_link.get(), &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
         setHalt(status.isAlarm(), status.haltReason);
         Q_EMIT statusChanged(status);
@@ -219,7 +225,7 @@ bool MachineConnection::canOperate() const
 }
 
 bool MachineConnection::perform(const QString &what, bool evenIfHalted,
-    const std::function<void(MachineSession *, Done)> &operation, Done done)
+    const std::function<void(MachineController *, Done)> &operation, Done done)
 {
     if ((m_halted && !evenIfHalted) || !beginOperation(what))
         return false;
@@ -248,14 +254,14 @@ QString MachineConnection::activeToolName() const
 bool MachineConnection::status(Done done)
 {
     return perform(
-        tr("Reading the status…"), true, [](MachineSession *s, Done d) { s->status(std::move(d)); },
+        tr("Reading the status…"), true, [](MachineController *s, Done d) { s->status(std::move(d)); },
         std::move(done));
 }
 
 bool MachineConnection::report(Done done)
 {
     return perform(
-        tr("Reading the offsets…"), false, [](MachineSession *s, Done d) { s->report(std::move(d)); },
+        tr("Reading the offsets…"), false, [](MachineController *s, Done d) { s->report(std::move(d)); },
         std::move(done));
 }
 
@@ -263,14 +269,14 @@ bool MachineConnection::selectTool(int tool, Done done)
 {
     return perform(
         tr("Selecting T%1…").arg(tool), false,
-        [tool](MachineSession *s, Done d) { s->selectTool(tool, std::move(d)); }, std::move(done));
+        [tool](MachineController *s, Done d) { s->selectTool(tool, std::move(d)); }, std::move(done));
 }
 
 bool MachineConnection::changeTool(int tool, Done done, std::optional<double> storedTlo)
 {
     return perform(
         tool == Limits::kEmptySpindle ? tr("Emptying the spindle…") : tr("Changing to T%1…").arg(tool), false,
-        [tool, storedTlo](MachineSession *s, Done d) { s->changeTool(tool, std::move(d), storedTlo); },
+        [tool, storedTlo](MachineController *s, Done d) { s->changeTool(tool, std::move(d), storedTlo); },
         std::move(done));
 }
 
@@ -291,7 +297,7 @@ bool MachineConnection::probe(Done done)
 {
     return perform(
         tr("Probing %1…").arg(activeToolName()), false,
-        [](MachineSession *s, Done d) { s->probe(std::move(d)); }, std::move(done));
+        [](MachineController *s, Done d) { s->probe(std::move(d)); }, std::move(done));
 }
 
 bool MachineConnection::breakTest(double tolerance, Done done, std::optional<double> storedTlo)
@@ -299,7 +305,7 @@ bool MachineConnection::breakTest(double tolerance, Done done, std::optional<dou
     return perform(
         tr("Break-testing %1…").arg(activeToolName()), false,
         [tolerance, storedTlo](
-            MachineSession *s, Done d) { s->breakTest(tolerance, std::move(d), storedTlo); },
+            MachineController *s, Done d) { s->breakTest(tolerance, std::move(d), storedTlo); },
         std::move(done));
 }
 
@@ -307,28 +313,29 @@ bool MachineConnection::setTlo(double tlo, Done done)
 {
     return perform(
         tr("Setting %1's TLO…").arg(activeToolName()), false,
-        [tlo](MachineSession *s, Done d) { s->setTlo(tlo, std::move(d)); }, std::move(done));
+        [tlo](MachineController *s, Done d) { s->setTlo(tlo, std::move(d)); }, std::move(done));
 }
 
 bool MachineConnection::setTloAboveZ0(double height, Done done)
 {
     return perform(
         tr("Setting %1's TLO…").arg(activeToolName()), false,
-        [height](MachineSession *s, Done d) { s->setTloAboveZ0(height, std::move(d)); }, std::move(done));
+        [height](MachineController *s, Done d) { s->setTloAboveZ0(height, std::move(d)); }, std::move(done));
 }
 
 bool MachineConnection::restoreTlo(int tool, double tlo, Done done)
 {
     return perform(
         tr("Restoring T%1…").arg(tool), false,
-        [tool, tlo](MachineSession *s, Done d) { s->restoreTlo(tool, tlo, std::move(d)); }, std::move(done));
+        [tool, tlo](MachineController *s, Done d) { s->restoreTlo(tool, tlo, std::move(d)); },
+        std::move(done));
 }
 
 bool MachineConnection::unlock(Done done, std::optional<double> brokenToolTlo)
 {
     return perform(
         tr("Unlock"), true,
-        [brokenToolTlo](MachineSession *s, Done d) { s->unlock(std::move(d), brokenToolTlo); },
+        [brokenToolTlo](MachineController *s, Done d) { s->unlock(std::move(d), brokenToolTlo); },
         std::move(done));
 }
 

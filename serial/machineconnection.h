@@ -5,7 +5,8 @@
 
 #include <QObject>
 
-#include "serial/machinesession.h"
+#include "serial/machinecontroller.h"
+#include "serial/machinelink.h"
 #include "serial/transport/tcptransport.h"
 
 namespace Toffee {
@@ -39,6 +40,8 @@ struct ConnectionTarget
 // The transport a target names: a serial port at its baud rate, or a new built-in emulator. The window's
 // connection and the CLI both make theirs here.
 [[nodiscard]] std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target);
+// The controller that speaks to the machine on `link`: the Carvera's (MachineSession), the only one yet.
+[[nodiscard]] std::unique_ptr<MachineController> makeController(MachineLink *link);
 
 // The window's one machine: it builds the transport, the link and the session for a target, keeps them for
 // the connection's lifetime, and says what state the link is in. No widgets: the panels watch it.
@@ -60,7 +63,7 @@ public:
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] QString description() const;
     // Null while disconnected.
-    [[nodiscard]] MachineSession *session() const { return m_session.get(); }
+    [[nodiscard]] MachineController *session() const { return m_session.get(); }
     [[nodiscard]] MachineLink *link() const { return m_link.get(); }
     // The built-in emulator while connected to it, else null (for tests and the self-test).
     [[nodiscard]] CarveraEmulator *emulator() const;
@@ -73,11 +76,11 @@ public:
     // The machine's operations, by name. Each runs only when the machine can take it (canOperate; unlock
     // needs only a connection), shows as the one operation running, and reports one result; false when it
     // did not start. Panels reach the machine through these, never through the session.
-    using Done = MachineSession::Done;
+    using Done = MachineController::Done;
     bool status(Done done); // also while halted: it only reads
     bool report(Done done);
     bool selectTool(int tool, Done done);
-    // With `storedTlo`, a manual change takes it instead of probing (MachineSession::changeTool).
+    // With `storedTlo`, a manual change takes it instead of probing (MachineController::changeTool).
     bool changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt);
     bool probe(Done done);
     // `storedTlo`: the table's TLO for the tool, which the firmware is to compare with (set first when the
@@ -86,7 +89,7 @@ public:
     bool setTlo(double tlo, Done done);
     bool setTloAboveZ0(double height, Done done);
     bool restoreTlo(int tool, double tlo, Done done);
-    // `brokenToolTlo`: MachineSession::unlock's.
+    // `brokenToolTlo`: MachineController::unlock's.
     bool unlock(Done done, std::optional<double> brokenToolTlo = std::nullopt);
     // A line typed in the console, sent as it is (ConsoleCheck has judged it first); offsets in its reply are
     // announced like any operation's.
@@ -169,13 +172,13 @@ private:
     void setHalt(bool halted, std::optional<int> reason);
     // Runs `operation` on the session as the one operation `what`, ending it with the result before `done`.
     bool perform(const QString &what, bool evenIfHalted,
-        const std::function<void(MachineSession *, Done)> &operation, Done done);
+        const std::function<void(MachineController *, Done)> &operation, Done done);
     void teardown();
 
     State m_state = State::Disconnected;
     std::unique_ptr<LineTransport> m_transport;
     std::unique_ptr<MachineLink> m_link;
-    std::unique_ptr<MachineSession> m_session;
+    std::unique_ptr<MachineController> m_session;
     SessionResult m_connectResult;
     QString m_operation;
     bool m_halted = false;

@@ -52,7 +52,7 @@ QString floodNote(const CommandReply &reply)
 } // namespace
 
 MachineSession::MachineSession(MachineLink *link, QObject *parent)
-    : QObject(parent)
+    : MachineController(parent)
     , m_link(link)
 {
     connect(m_link, &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
@@ -61,41 +61,6 @@ MachineSession::MachineSession(MachineLink *link, QObject *parent)
         else if (m_firmware.kind == FirmwareInfo::Kind::Stock)
             m_tool = Limits::kEmptySpindle; // the stock firmware leaves T: out for an empty spindle
     });
-}
-
-Result<void> MachineSession::validateTolerance(double tolerance)
-{
-    if (!std::isfinite(tolerance))
-        return Error { tr("The break-test tolerance is not a number; enter a value such as 0.1 mm.") };
-    if (tolerance < kMinTolerance)
-        return Error {
-            tr("A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm "
-               "or more (%3 mm is the default).")
-                .arg(toleranceText(tolerance), toleranceText(kMinTolerance), toleranceText(kDefaultTolerance))
-        };
-    if (tolerance > kMaxOffset)
-        return Error {
-            tr("A break-test tolerance of %1 mm is larger than any tool.").arg(toleranceText(tolerance))
-        };
-    return {};
-}
-
-Result<void> MachineSession::validateOffset(const QString &what, double value)
-{
-    if (!std::isfinite(value) || std::fabs(value) > kMaxOffset)
-        return Error { tr("%1 must be a number from -%2 to %2 mm.").arg(what).arg(kMaxOffset) };
-    return {};
-}
-
-Result<void> MachineSession::validateToolNumber(int tool)
-{
-    if (tool < Limits::kEmptySpindle || tool > Limits::kMaxToolNumber)
-        return Error { tr("Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).")
-                           .arg(tool)
-                           .arg(Limits::kMinToolNumber)
-                           .arg(Limits::kMaxToolNumber)
-                           .arg(Limits::kEmptySpindle) };
-    return {};
 }
 
 QByteArray MachineSession::number(double value)

@@ -9,91 +9,60 @@
 #include "model/limits.h"
 #include "model/recording.h"
 #include "model/result.h"
+#include "serial/machinecontroller.h"
 #include "serial/machinelink.h"
 #include "serial/machinereplies.h"
 
 namespace Toffee {
 
-// One operation's outcome, for an operator: success with the new values, or a failure with what to do.
-struct SessionResult
-{
-    enum class Outcome {
-        Success,
-        Refused, // the input was refused before anything was sent
-        ToolBroken, // the break test found the tool shorter or longer than its TLO
-        MachineError, // the machine refused, halted, or sent what could not be read
-        LinkFailure, // no answer in time, or the connection was lost
-    };
-    Outcome outcome = Outcome::Success;
-    QString message;
-    std::optional<int> tool;
-    std::optional<TloReading> tlo;
-    std::optional<BreakTestReading> breakTest;
-    double tolerance = 0.0;
-    std::optional<MachineStatus> status;
-    // What the table should record of this result (a TLO with its source, or a break test's verdict), when
-    // the operation measured or set something for a tool in the spindle.
-    std::optional<Recording> recording;
-
-    [[nodiscard]] bool ok() const { return outcome == Outcome::Success; }
-};
-
-// Turns operator intents into command sequences and results. It validates before sending (a tolerance under
-// 0.02 never leaves the computer), tracks the active tool from the status reports, and reports each
-// operation's outcome as one value. It writes no table: callers record a measurement only from a successful
-// result.
-class MachineSession final : public QObject
+// The Carvera's MachineController. Turns operator intents into command sequences and results. It validates
+// before sending (a tolerance under 0.02 never leaves the computer), tracks the active tool from the status
+// reports, and reports each operation's outcome as one value. It writes no table: callers record a
+// measurement only from a successful result.
+class MachineSession final : public MachineController
 {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(MachineSession)
 
 public:
-    using Done = std::function<void(const SessionResult &result)>;
-    static constexpr double kMinTolerance = Limits::kMinBreakTolerance; // the firmware halts below this
-    static constexpr double kDefaultTolerance = Limits::kDefaultBreakTolerance;
-    static constexpr double kMaxOffset = Limits::kMaxMachineOffsetMm;
     // M6: a manual change waits for the operator to take one tool out and put the next in, and a rack change
     // drops, picks and measures; either may take minutes.
     static constexpr int kToolChangeTimeoutMs = 600000;
 
     explicit MachineSession(MachineLink *link, QObject *parent = nullptr);
 
-    [[nodiscard]] MachineLink *link() const { return m_link; }
-    [[nodiscard]] std::optional<int> activeTool() const { return m_tool; }
+    [[nodiscard]] MachineLink *link() const override { return m_link; }
+    [[nodiscard]] std::optional<int> activeTool() const override { return m_tool; }
     // What the machine said it runs when it connected (`version`); Unknown before.
-    [[nodiscard]] const FirmwareInfo &firmware() const { return m_firmware; }
+    [[nodiscard]] const FirmwareInfo &firmware() const override { return m_firmware; }
 
     // Opens the link, flushes the controller's buffer, reads the status and, unless halted, the offsets.
-    void connectToMachine(Done done);
-    void status(Done done);
-    void report(Done done);
-    void probe(Done done);
+    void connectToMachine(Done done) override;
+    void status(Done done) override;
+    void report(Done done) override;
+    void probe(Done done) override;
     // M491.1 compares with the TLO in force: with `storedTlo` (the table's), that is set first when the
     // machine has another one (after M493.2 the firmware still has the previous tool's).
-    void breakTest(double tolerance, Done done, std::optional<double> storedTlo = std::nullopt);
-    void setTlo(double tlo, Done done);
-    void setTloAboveZ0(double height, Done done);
-    void selectTool(int tool, Done done);
+    void breakTest(double tolerance, Done done, std::optional<double> storedTlo = std::nullopt) override;
+    void setTlo(double tlo, Done done) override;
+    void setTloAboveZ0(double height, Done done) override;
+    void selectTool(int tool, Done done) override;
     // M6 T: the machine changes and measures the tool. With `storedTlo` (a manual change only: the firmware
     // always measures a rack tool), M6 T H takes that TLO instead of probing. The tool already in the spindle
     // is measured where it is (M491): the firmware ignores a change to it.
-    void changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt);
+    void changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt) override;
     // $X when the machine is halted (it says nothing to $X otherwise), then, after a failed break test, the
     // stored TLO set back before anything can move: the firmware halts with the broken length in force.
     // `brokenToolTlo`: the table's stored TLO for the tool in the spindle when the table marks it broken (a
     // break test in an earlier session): set back too when the machine has another TLO in force.
-    void unlock(Done done, std::optional<double> brokenToolTlo = std::nullopt);
+    void unlock(Done done, std::optional<double> brokenToolTlo = std::nullopt) override;
     // The TLO a failed break test left the machine without (the firmware keeps the new, broken length in
     // force while it halts): set back by unlock().
-    [[nodiscard]] std::optional<double> tloToRestore() const { return m_restoreOnUnlock; }
+    [[nodiscard]] std::optional<double> tloToRestore() const override { return m_restoreOnUnlock; }
     // Makes `tool` active with a TLO already known (from the table), without probing.
-    void restoreTlo(int tool, double tlo, Done done);
+    void restoreTlo(int tool, double tlo, Done done) override;
     // Ctrl-X: stops whatever the machine is doing. It halts; Unlock afterwards.
-    void abort();
-
-    [[nodiscard]] static Result<void> validateTolerance(double tolerance);
-    [[nodiscard]] static Result<void> validateOffset(const QString &what, double value);
-    [[nodiscard]] static Result<void> validateToolNumber(int tool);
+    void abort() override;
 
 private:
     void run(const QByteArray &command, int timeoutMs, Done done,

@@ -54,7 +54,7 @@ std::optional<QString> RackSequence::refusal(const Plan &plan, const FirmwareInf
             : tr("The machine did not say which firmware it runs, so Toffee cannot tell whether its M491.1 "
                  "compares a tool with its TLO. The rack was not checked.");
     }
-    if (auto r = MachineSession::validateTolerance(plan.tolerance); !r)
+    if (auto r = MachineController::validateTolerance(plan.tolerance); !r)
         return r.error().message;
     QList<int> unmeasured;
     for (const RackStep &step : plan.steps) {
@@ -139,7 +139,7 @@ void RackSequence::next()
 }
 
 // A step's callback: nothing once the sequence is gone; the offsets a result reports are announced first.
-template<typename Next> MachineSession::Done RackSequence::step(Next next)
+template<typename Next> MachineController::Done RackSequence::step(Next next)
 {
     QPointer<RackSequence> self(this);
     return [self, next](const SessionResult &r) {

@@ -84,7 +84,7 @@ Q_SIGNALS:
     void finished(const Toffee::SessionResult &outcome);
 
 private:
-    template<typename Next> [[nodiscard]] MachineSession::Done step(Next next);
+    template<typename Next> [[nodiscard]] MachineController::Done step(Next next);
     void next();
     void measure(int index);
     void check(int index);

@@ -3421,6 +3421,29 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
 </context>
 <context>
+    <name>Toffee::MachineController</name>
+    <message>
+        <source>The break-test tolerance is not a number; enter a value such as 0.1 mm.</source>
+        <translation>Die Toleranz des Bruchtests ist keine Zahl; geben Sie einen Wert wie 0,1 mm ein.</translation>
+    </message>
+    <message>
+        <source>A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm or more (%3 mm is the default).</source>
+        <translation>Eine Bruchtest-Toleranz von %1 mm ist zu klein: Unter %2 mm hält die Maschine an. Verwenden Sie %2 mm oder mehr (Standard: %3 mm).</translation>
+    </message>
+    <message>
+        <source>A break-test tolerance of %1 mm is larger than any tool.</source>
+        <translation>Eine Bruchtest-Toleranz von %1 mm ist größer als jedes Werkzeug.</translation>
+    </message>
+    <message>
+        <source>%1 must be a number from -%2 to %2 mm.</source>
+        <translation>%1 muss eine Zahl von -%2 bis %2 mm sein.</translation>
+    </message>
+    <message>
+        <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
+        <translation>Werkzeug %1 ist keine Werkzeugnummer; verwenden Sie %2 bis %3 (%4 für eine leere Spindel).</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::MachineDock</name>
     <message>
         <source>Machine</source>
@@ -3493,22 +3516,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
 <context>
     <name>Toffee::MachineSession</name>
     <message>
-        <source>The break-test tolerance is not a number; enter a value such as 0.1 mm.</source>
-        <translation>Die Toleranz des Bruchtests ist keine Zahl; geben Sie einen Wert wie 0,1 mm ein.</translation>
-    </message>
-    <message>
-        <source>A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm or more (%3 mm is the default).</source>
-        <translation>Eine Bruchtest-Toleranz von %1 mm ist zu klein: Unter %2 mm hält die Maschine an. Verwenden Sie %2 mm oder mehr (Standard: %3 mm).</translation>
-    </message>
-    <message>
-        <source>A break-test tolerance of %1 mm is larger than any tool.</source>
-        <translation>Eine Bruchtest-Toleranz von %1 mm ist größer als jedes Werkzeug.</translation>
-    </message>
-    <message>
-        <source>%1 must be a number from -%2 to %2 mm.</source>
-        <translation>%1 muss eine Zahl von -%2 bis %2 mm sein.</translation>
-    </message>
-    <message>
         <source>The machine answered but sent no status report; is this a Carvera?</source>
         <translation>Die Maschine hat geantwortet, aber keinen Statusbericht gesendet; ist das eine Carvera?</translation>
     </message>
@@ -3551,10 +3558,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine&apos;s offset report (M493.4) holds values no machine can have: &quot;%1&quot;. Nothing was recorded; check the offsets on the machine before you cut.</source>
         <translation>Der Korrekturbericht der Maschine (M493.4) enthält Werte, die keine Maschine haben kann: „%1“. Nichts wurde gespeichert; prüfen Sie die Korrekturen an der Maschine, bevor Sie schneiden.</translation>
-    </message>
-    <message>
-        <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
-        <translation>Werkzeug %1 ist keine Werkzeugnummer; verwenden Sie %2 bis %3 (%4 für eine leere Spindel).</translation>
     </message>
     <message>
         <source>none</source>

@@ -3421,6 +3421,29 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
 </context>
 <context>
+    <name>Toffee::MachineController</name>
+    <message>
+        <source>The break-test tolerance is not a number; enter a value such as 0.1 mm.</source>
+        <translation>断刀检测公差不是数字；请输入例如 0.1 mm 的值。</translation>
+    </message>
+    <message>
+        <source>A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm or more (%3 mm is the default).</source>
+        <translation>断刀检测公差 %1 mm 太小：低于 %2 mm 时机床会停机。请使用 %2 mm 或以上（默认为 %3 mm）。</translation>
+    </message>
+    <message>
+        <source>A break-test tolerance of %1 mm is larger than any tool.</source>
+        <translation>断刀检测公差 %1 mm 比任何刀具都大。</translation>
+    </message>
+    <message>
+        <source>%1 must be a number from -%2 to %2 mm.</source>
+        <translation>%1 必须是 -%2 到 %2 mm 之间的数字。</translation>
+    </message>
+    <message>
+        <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
+        <translation>刀具 %1 不是刀具号；请使用 %2 到 %3（%4 表示主轴为空）。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::MachineDock</name>
     <message>
         <source>Machine</source>
@@ -3493,22 +3516,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
 <context>
     <name>Toffee::MachineSession</name>
     <message>
-        <source>The break-test tolerance is not a number; enter a value such as 0.1 mm.</source>
-        <translation>断刀检测公差不是数字；请输入例如 0.1 mm 的值。</translation>
-    </message>
-    <message>
-        <source>A break-test tolerance of %1 mm is too small: the machine halts below %2 mm. Use %2 mm or more (%3 mm is the default).</source>
-        <translation>断刀检测公差 %1 mm 太小：低于 %2 mm 时机床会停机。请使用 %2 mm 或以上（默认为 %3 mm）。</translation>
-    </message>
-    <message>
-        <source>A break-test tolerance of %1 mm is larger than any tool.</source>
-        <translation>断刀检测公差 %1 mm 比任何刀具都大。</translation>
-    </message>
-    <message>
-        <source>%1 must be a number from -%2 to %2 mm.</source>
-        <translation>%1 必须是 -%2 到 %2 mm 之间的数字。</translation>
-    </message>
-    <message>
         <source>The machine answered but sent no status report; is this a Carvera?</source>
         <translation>机床有回应，但没有发送状态报告；这是 Carvera 吗？</translation>
     </message>
@@ -3551,10 +3558,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine&apos;s offset report (M493.4) holds values no machine can have: &quot;%1&quot;. Nothing was recorded; check the offsets on the machine before you cut.</source>
         <translation>机器的偏置报告（M493.4）含有任何机器都不可能有的数值：“%1”。未记录任何内容；切削前请在机器上检查偏置。</translation>
-    </message>
-    <message>
-        <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
-        <translation>刀具 %1 不是刀具号；请使用 %2 到 %3（%4 表示主轴为空）。</translation>
     </message>
     <message>
         <source>none</source>

@@ -35,7 +35,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, ToolDocument *docu
     m_tolerance->setAccessibleName(tr("Break-test tolerance in millimetres"));
     // Below the machine's minimum the field still takes what is typed, so that Run can refuse it with the
     // reason; a field that quietly turned 0.01 into 0.02 tested against a tolerance nobody chose.
-    m_tolerance->setRange(0.001, MachineSession::kMaxOffset);
+    m_tolerance->setRange(0.001, MachineController::kMaxOffset);
     m_tolerance->setDecimals(3);
     m_tolerance->setSingleStep(0.01);
     m_tolerance->setSuffix(u" mm"_s);
@@ -43,11 +43,11 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, ToolDocument *docu
     takeWheelOnlyWhenFocused(m_tolerance);
     m_tolerance->setToolTip(tr("How far the new measurement may differ from the stored TLO; at least %1 mm, "
                                "%2 mm by default.")
-                                .arg(MachineSession::kMinTolerance)
-                                .arg(MachineSession::kDefaultTolerance));
+                                .arg(MachineController::kMinTolerance)
+                                .arg(MachineController::kDefaultTolerance));
     const double remembered = AppSettings().breakTestTolerance();
     m_tolerance->setValue(
-        MachineSession::validateTolerance(remembered) ? remembered : MachineSession::kDefaultTolerance);
+        MachineController::validateTolerance(remembered) ? remembered : MachineController::kDefaultTolerance);
     m_run->setObjectName(u"runBreakTestButton"_s);
     m_run->setIcon(themeIcon(u"breaktest"_s));
     m_run->setAccessibleName(tr("Run the tool break test"));
@@ -71,7 +71,7 @@ BreakTestPanel::BreakTestPanel(MachineConnection *connection, ToolDocument *docu
 
     connect(m_run, &QPushButton::clicked, this, [this] { run(); });
     connect(m_tolerance, &QDoubleSpinBox::valueChanged, this, [](double v) {
-        if (MachineSession::validateTolerance(v)) // only a tolerance the machine takes is remembered
+        if (MachineController::validateTolerance(v)) // only a tolerance the machine takes is remembered
             AppSettings().setBreakTestTolerance(v);
     });
     connect(m_connection, &MachineConnection::stateChanged, this, &BreakTestPanel::updateState);
@@ -141,7 +141,7 @@ void BreakTestPanel::run(bool confirm)
         return;
     m_tolerance->interpretText(); // what is typed counts
     const double tolerance = m_tolerance->value();
-    if (auto valid = MachineSession::validateTolerance(tolerance); !valid) {
+    if (auto valid = MachineController::validateTolerance(tolerance); !valid) {
         QMessageBox::warning(this, tr("The break test did not run"), valid.error().message);
         m_tolerance->setFocus();
         m_tolerance->selectAll();

@@ -8,7 +8,7 @@
 #include <QVBoxLayout>
 
 #include "serial/machineconnection.h"
-#include "serial/machinesession.h"
+#include "serial/machinecontroller.h"
 #include "ui/breaktestpanel.h"
 #include "ui/connectionpanel.h"
 #include "ui/offseteditor.h"

@@ -35,7 +35,7 @@ OffsetEditor::OffsetEditor(MachineConnection *connection, ToolDocument *document
     m_mode->addItem(tr("Gauge height above Z0"), AboveZ0);
     m_value->setObjectName(u"offsetValueSpin"_s);
     m_value->setAccessibleName(tr("Offset value in millimetres"));
-    m_value->setRange(-MachineSession::kMaxOffset, MachineSession::kMaxOffset);
+    m_value->setRange(-MachineController::kMaxOffset, MachineController::kMaxOffset);
     m_value->setDecimals(3);
     m_value->setSingleStep(0.01);
     m_value->setSuffix(u" mm"_s);
@@ -66,7 +66,7 @@ OffsetEditor::OffsetEditor(MachineConnection *connection, ToolDocument *document
     // (the current TLO to set, 0 to add), and a gauge height is never below Z0.
     connect(m_mode, &QComboBox::currentIndexChanged, this, [this] {
         const Mode mode = Mode(m_mode->currentData().toInt());
-        m_value->setMinimum(mode == AboveZ0 ? 0.0 : -MachineSession::kMaxOffset);
+        m_value->setMinimum(mode == AboveZ0 ? 0.0 : -MachineController::kMaxOffset);
         m_value->setValue(mode == SetTlo && m_currentTlo ? *m_currentTlo : 0.0);
         updatePreview();
     });

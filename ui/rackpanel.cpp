@@ -137,7 +137,7 @@ void RackPanel::connectSignals()
     connect(m_check, &QPushButton::clicked, this, [this] { checkRack(); });
     connect(m_cancel, &QPushButton::clicked, this, &RackPanel::cancel);
     connect(m_tolerance, &QDoubleSpinBox::valueChanged, this, [this](double v) {
-        if (MachineSession::validateTolerance(v)) // only a tolerance the machine takes is remembered
+        if (MachineController::validateTolerance(v)) // only a tolerance the machine takes is remembered
             AppSettings().setRackTolerance(v);
         updateState();
     });

@@ -19,8 +19,8 @@
 #include "model/limits.h"
 #include "model/numberformat.h"
 #include "serial/machineconnection.h"
+#include "serial/machinecontroller.h"
 #include "serial/machinelink.h"
-#include "serial/machinesession.h"
 #include "serial/transport/streamtransport.h"
 
 using namespace Qt::StringLiterals;

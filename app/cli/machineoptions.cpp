@@ -11,7 +11,7 @@
 #include "model/formats/tablefile.h"
 #include "model/job/jobchecker.h"
 #include "model/textparsing.h"
-#include "serial/machinesession.h"
+#include "serial/machinecontroller.h"
 #include "serial/transport/serialporttransport.h"
 #include "serial/transport/tcptransport.h"
 
@@ -97,18 +97,18 @@ Result<void> readTool(const Invocation &call, MachineOptions &o)
     if (!n || *n < INT_MIN || *n > INT_MAX)
         return Error { u"\"%1\" is not a tool number."_s.arg(call.arguments.front()) };
     o.tool = int(*n);
-    return MachineSession::validateToolNumber(o.tool);
+    return MachineController::validateToolNumber(o.tool);
 }
 
 Result<void> readCommandOptions(const Invocation &call, MachineOptions &o)
 {
-    o.tolerance = MachineSession::kDefaultTolerance;
+    o.tolerance = MachineController::kDefaultTolerance;
     if ((call.command == u"break-test" || call.command == u"check-rack") && call.has(u"tolerance"_s)) {
         const auto t = decimalOption(call, u"tolerance"_s);
         if (!t)
             return Error { u"--tolerance must be a number of millimetres, such as 0.05."_s };
         o.tolerance = *t;
-        if (auto r = MachineSession::validateTolerance(o.tolerance); !r)
+        if (auto r = MachineController::validateTolerance(o.tolerance); !r)
             return r;
     }
     if (call.command == u"set-tlo") {
@@ -118,7 +118,7 @@ Result<void> readCommandOptions(const Invocation &call, MachineOptions &o)
         const auto v = decimalOption(call, name);
         if (!v)
             return Error { u"--%1 must be a number of millimetres."_s.arg(name) };
-        if (auto r = MachineSession::validateOffset(u"--"_s + name, *v); !r)
+        if (auto r = MachineController::validateOffset(u"--"_s + name, *v); !r)
             return r;
         (name == u"z" ? o.z : o.aboveZ0) = *v;
     }
