@@ -4271,6 +4271,26 @@ Trotzdem speichern?</translation>
         <source>Nothing was running. Reconnect to read the machine&apos;s tool and TLO again.</source>
         <translation>Es lief nichts. Verbinden Sie sich erneut, um Werkzeug und Längenkorrektur der Maschine wieder zu lesen.</translation>
     </message>
+    <message>
+        <source>Remove T%1?</source>
+        <translation>T%1 entfernen?</translation>
+    </message>
+    <message>
+        <source>Remove %1 tools?</source>
+        <translation>%1 Werkzeuge entfernen?</translation>
+    </message>
+    <message>
+        <source>%1 has a measured TLO, which goes with it from the table (the history keeps its measurements).</source>
+        <translation>%1 hat eine gemessene Längenkorrektur, die mit ihm aus der Tabelle verschwindet (der Verlauf behält seine Messungen).</translation>
+    </message>
+    <message>
+        <source>Edit ▸ Undo brings it back.</source>
+        <translation>Bearbeiten ▸ Rückgängig holt es zurück.</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>

@@ -4271,6 +4271,26 @@ Save anyway?</source>
         <source>Nothing was running. Reconnect to read the machine&apos;s tool and TLO again.</source>
         <translation>当时没有正在执行的操作。请重新连接以再次读取机器的刀具和刀长补偿。</translation>
     </message>
+    <message>
+        <source>Remove T%1?</source>
+        <translation>移除 T%1？</translation>
+    </message>
+    <message>
+        <source>Remove %1 tools?</source>
+        <translation>移除 %1 把刀具？</translation>
+    </message>
+    <message>
+        <source>%1 has a measured TLO, which goes with it from the table (the history keeps its measurements).</source>
+        <translation>%1 有已测量的刀长补偿，将随之从刀具表中移除（历史记录会保留其测量）。</translation>
+    </message>
+    <message>
+        <source>Edit ▸ Undo brings it back.</source>
+        <translation>编辑 ▸ 撤销 可以恢复。</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>

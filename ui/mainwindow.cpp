@@ -464,9 +464,33 @@ void MainWindow::addTool()
     m_tablePanel->view()->setFocus();
 }
 
+// A tool with a measured TLO is an operator's measurement: removing it asks first (naming them); a tool
+// without one goes at once. Either way Undo brings it back.
 void MainWindow::removeTools()
 {
-    m_document->removeTools(m_tablePanel->selectedToolNumbers());
+    const QList<int> numbers = m_tablePanel->selectedToolNumbers();
+    QStringList measured;
+    for (int number : numbers) {
+        if (const Tool *tool = m_document->table().find(number); tool && tool->measuredTlo)
+            measured << u"T"_s + QString::number(number);
+    }
+    if (!measured.isEmpty()) {
+        QMessageBox box(QMessageBox::Question,
+            numbers.size() == 1 ? tr("Remove T%1?").arg(numbers.front())
+                                : tr("Remove %1 tools?").arg(numbers.size()),
+            tr("%1 has a measured TLO, which goes with it from the table (the history keeps its "
+               "measurements).")
+                .arg(measured.join(u", "_s)),
+            QMessageBox::Cancel, this);
+        box.setInformativeText(tr("Edit ▸ Undo brings it back."));
+        QPushButton *remove = box.addButton(tr("Remove"), QMessageBox::DestructiveRole);
+        remove->setObjectName(u"removeToolsButton"_s);
+        box.setDefaultButton(QMessageBox::Cancel);
+        box.exec();
+        if (box.clickedButton() != remove)
+            return;
+    }
+    m_document->removeTools(numbers);
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

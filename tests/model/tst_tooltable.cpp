@@ -29,6 +29,19 @@ private Q_SLOTS:
         QCOMPARE(*inch.find(2)->measuredTlo, 1.3145);
     }
 
+    void aTotalLengthHasNoBinaryNoise()
+    {
+        // 41.3 + -0.02 in doubles is 41.279999999999994, which toffee-cli's JSON and the table printed.
+        QVERIFY(41.3 + -0.02 != 41.28);
+        Tool t;
+        t.lengthGeometry = 41.3;
+        t.lengthWear = -0.02;
+        QVERIFY(t.totalLength() == 41.28);
+        t.lengthGeometry = 38.1;
+        t.lengthWear = 0.0;
+        QVERIFY(t.totalLength() == 38.1);
+    }
+
     void keepsToolsSortedByNumber()
     {
         ToolTable table;

@@ -117,9 +117,25 @@ private Q_SLOTS:
         QCOMPARE(window.document()->table().size(), 7);
         QVERIFY(window.document()->table().contains(7));
         QCOMPARE(window.toolTablePanel()->selectedToolNumbers(), QList<int> { 7 });
-        window.findChild<QAction *>(u"actionRemoveTool"_s)->trigger();
+        window.findChild<QAction *>(u"actionRemoveTool"_s)->trigger(); // nothing measured: no question
         QCOMPARE(window.document()->table().size(), 6);
         QVERIFY(!window.document()->table().contains(7));
+
+        // T1 holds a measured TLO: Delete asks, naming it; Cancel keeps it, Remove removes it, Undo brings it
+        // back.
+        QVERIFY(window.document()->table().find(1)->measuredTlo.has_value());
+        window.toolTablePanel()->view()->selectRow(0);
+        QCOMPARE(window.toolTablePanel()->selectedToolNumbers(), QList<int> { 1 });
+        QString question;
+        answerNextBox(QMessageBox::Cancel, &question);
+        window.findChild<QAction *>(u"actionRemoveTool"_s)->trigger();
+        QVERIFY2(question.contains(u"T1 has a measured TLO"_s), qPrintable(question));
+        QVERIFY(window.document()->table().contains(1));
+        answerNextBox(QMessageBox::NoButton, &question, u"removeToolsButton"_s);
+        window.findChild<QAction *>(u"actionRemoveTool"_s)->trigger();
+        QVERIFY(!window.document()->table().contains(1));
+        window.findChild<QAction *>(u"actionUndo"_s)->trigger();
+        QVERIFY(window.document()->table().find(1)->measuredTlo.has_value());
     }
 
     void filtersTheTable()
