@@ -82,9 +82,12 @@ QStringList heard(Station &s)
 void chooseHeard(Station &s, const QString &startsWith)
 {
     auto *combo = s.find<QComboBox>(u"wifiMachineCombo"_s);
-    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(heard(s).cbegin(), heard(s).cend(),
-                                 [&](const QString &i) { return i.startsWith(startsWith); }),
-        5000);
+    auto isHeard = [&] {
+        const QStringList items = heard(s); // one list: begin and end of the same one
+        return std::any_of(
+            items.cbegin(), items.cend(), [&](const QString &i) { return i.startsWith(startsWith); });
+    };
+    QTRY_VERIFY2_WITH_TIMEOUT(isHeard(), qPrintable(u"heard: "_s + heard(s).join(u" | "_s)), 10000);
     for (int i = 0; i < combo->count(); ++i) {
         if (combo->itemText(i).startsWith(startsWith))
             combo->setCurrentIndex(i);
