@@ -77,7 +77,8 @@ Result<void> JobPreparer::writeOriginal(
     return {};
 }
 
-// M491.1 on the tool in the spindle, after its last cut: the spindle stopped first.
+// M491.1 on the tool in the spindle, after its cutting before the next change (not its "last" cut: the
+// program may load it again later, and it is tested again then): the spindle stopped first.
 Result<void> JobPreparer::breakTest(const LineSink &sink)
 {
     const int tool = m_tool;
@@ -115,7 +116,7 @@ Result<void> JobPreparer::breakTest(const LineSink &sink)
             return r;
     }
     return insertLine(u"M491.1 H"_s + commandNumber(m_options.tolerance) + u' '
-            + comment(u"break test of T%1 after its last cut at original line %2, tolerance %3 mm"_s.arg(tool)
+            + comment(u"break test of T%1 after its cuts up to original line %2, tolerance %3 mm"_s.arg(tool)
                           .arg(lastCut)
                           .arg(commandNumber(m_options.tolerance))),
         sink, true);

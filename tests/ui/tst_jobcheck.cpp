@@ -206,7 +206,7 @@ private Q_SLOTS:
             QVERIFY2(inserted.size() == 3, qPrintable(inserted.join(u'\n')));
             QVERIFY(inserted.at(0).startsWith(u"M5 (Toffee: the spindle stops for T2's break test)"_s));
             QVERIFY(inserted.at(1).startsWith(
-                u"M491.1 H0.1 (Toffee: break test of T2 after its last cut at original line 7"_s));
+                u"M491.1 H0.1 (Toffee: break test of T2 after its cuts up to original line 7"_s));
             // Unticking the break test leaves nothing to do: T2 is a rack tool, measured at its change.
             prep->findChild<QCheckBox *>(u"prepareBreakTestCheck"_s)->setChecked(false);
             QVERIFY(QTest::qWaitFor([prep] { return !prep->isRunning() && prep->summary(); }, 30000));

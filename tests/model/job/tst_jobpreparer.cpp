@@ -199,6 +199,23 @@ private Q_SLOTS:
         QVERIFY(manual.value().notes.join(u'\n').contains(u"T7's TLO was set by hand"_s));
     }
 
+    // A tool loaded twice is tested after each of its stints, and neither comment calls its cut the last.
+    void aToolLoadedAgainIsTestedAfterEachStint()
+    {
+        PrepareOptions o;
+        o.breakTest = true;
+        o.tolerance = 0.05;
+        const QByteArray job = "M6 T2\nG1 Z-1 F100\nM6 T7\nG1 Z-1 F100\nM6 T2\nG1 X5 F100\nM30\n";
+        const QByteArray prepared = prepare(job, o);
+        QVERIFY2(!prepared.contains("last cut"), prepared.constData());
+        QCOMPARE(
+            prepared.count("M491.1 H0.05 (Toffee: break test of T2 after its cuts up to original line "), 2);
+        QVERIFY2(prepared.contains("break test of T2 after its cuts up to original line 2,"),
+            prepared.constData());
+        QVERIFY2(prepared.contains("break test of T2 after its cuts up to original line 6,"),
+            prepared.constData());
+    }
+
     void theCarveraBreakTestsEachToolAfterItsLastCut()
     {
         PrepareOptions o;
@@ -211,18 +228,18 @@ private Q_SLOTS:
         const qsizetype t7 = lines.indexOf("M6 T7 (the chamfer)");
         QCOMPARE(lines.at(t7 - 2), "M5 (Toffee: the spindle stops for T2's break test)");
         QCOMPARE(lines.at(t7 - 1),
-            "M491.1 H0.05 (Toffee: break test of T2 after its last cut at original line 6, "
+            "M491.1 H0.05 (Toffee: break test of T2 after its cuts up to original line 6, "
             "tolerance 0.05 mm)");
         // T7: the program stopped the spindle itself.
         const qsizetype t8 = lines.indexOf("M6 T8");
         QCOMPARE(lines.at(t8 - 1),
-            "M491.1 H0.05 (Toffee: break test of T7 after its last cut at original line 10, "
+            "M491.1 H0.05 (Toffee: break test of T7 after its cuts up to original line 10, "
             "tolerance 0.05 mm)");
         QCOMPARE(lines.at(t8 - 2), "M5");
         // T8: before the end.
         const qsizetype end = lines.indexOf("M30");
         QVERIFY(lines.at(end - 1).startsWith(
-            "M491.1 H0.05 (Toffee: break test of T8 after its last cut at original line 14"));
+            "M491.1 H0.05 (Toffee: break test of T8 after its cuts up to original line 14"));
         QCOMPARE(summary.inserted, 4);
         verifyEveryNewLineSaysWhy(kCarveraJob, prepared);
         verifyCutsWithEachToolsOffset(kCarveraJob, prepared, Dialect::Carvera);
