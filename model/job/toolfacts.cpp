@@ -40,7 +40,9 @@ Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &
                           "that does not say), so T%1's stored TLO cannot be checked against it: it is "
                           "measured at its change.")
                            .arg(tool) };
-    if (check == ReferenceCheck::Required && !facts.referenceMz)
+    // A TLO is a difference to the reference it was measured against: without that reference nobody can
+    // tell whether it still holds, at the machine or at a desk (the window's Restore refuses it too).
+    if (!facts.referenceMz)
         return Error { tr("T%1's stored TLO does not say which reference it was measured against: it is "
                           "measured at its change.")
                            .arg(tool) };

@@ -38,8 +38,9 @@ struct ToolFacts
     static constexpr qint64 kClockSkewSeconds = 300;
 };
 
-// How a stored TLO's reference is checked: against the machine's when both are known (a program prepared at a
-// desk), or required to be known on both sides and equal (a change made now, on the machine).
+// How a stored TLO's reference is checked: the TLO's own reference must be known either way; against the
+// machine's when that is known too (a program prepared at a desk), or required to be known and equal (a
+// change made now, on the machine).
 enum class ReferenceCheck { IfKnown, Required };
 
 // The TLO a change to `tool` may take instead of a probe: stored, measured (not set by hand), not failed in a

@@ -199,6 +199,39 @@ private Q_SLOTS:
         QVERIFY(manual.value().notes.join(u'\n').contains(u"T7's TLO was set by hand"_s));
     }
 
+    // A stored TLO that does not say which reference it was measured against is not restored (as the window's
+    // Restore refuses it): the tool is measured at its change, and the note says why.
+    void aTloWithoutItsReferenceIsNotRestored()
+    {
+        ToolTable unknown = table();
+        Tool t7 = *unknown.find(7);
+        t7.referenceMz.reset();
+        QVERIFY(unknown.replace(7, t7).ok());
+        QTemporaryDir dir;
+        const QString in = dir.filePath(u"job.nc"_s);
+        QFile file(in);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(kCarveraJob);
+        file.close();
+        PrepareOptions o;
+        o.useStoredTlo = true;
+        o.rack = { 1, 2, 3, 4, 5, 6 };
+        o.now = kNow;
+        const QString out = dir.filePath(u"out.nc"_s);
+        const auto summary = prepareJobFile(in, unknown, o, out);
+        QVERIFY(summary);
+        QCOMPARE(summary.value().inserted, 0);
+        QCOMPARE(summary.value().changed, 0);
+        QVERIFY2(summary.value().notes.join(u'\n').contains(
+                     u"T7's stored TLO does not say which reference it was measured against"_s),
+            qPrintable(summary.value().notes.join(u'\n')));
+        QFile written(out);
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        const QByteArray prepared = written.readAll();
+        QVERIFY2(
+            prepared.contains("M6 T7 (the chamfer)\n") && !prepared.contains("M493.3"), prepared.constData());
+    }
+
     // A tool loaded twice is tested after each of its stints, and neither comment calls its cut the last.
     void aToolLoadedAgainIsTestedAfterEachStint()
     {
