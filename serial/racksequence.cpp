@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "serial/racksequence.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QPointer>
 #include <QStringList>
 
+#include "model/breaktestrule.h"
 #include "model/numberformat.h"
 #include "model/tooltable.h"
 #include "serial/machineconnection.h"
@@ -58,7 +60,7 @@ std::optional<QString> RackSequence::refusal(const Plan &plan, const FirmwareInf
         return r.error().message;
     QList<int> unmeasured;
     for (const RackStep &step : plan.steps) {
-        if (!step.storedTlo)
+        if (!step.storedTlo && !breakTestExclusion(step.tool, step.storedTlo)) // a tool skipped needs none
             unmeasured.append(step.tool);
     }
     if (!unmeasured.isEmpty())
@@ -127,8 +129,11 @@ void RackSequence::next()
                   .arg(m_plan.steps.at(m_current - 1).tool);
         return finish(stopped);
     }
+    // A check that tested nothing (every tool skipped) changed no tool: there is none to put back.
+    const bool tested = std::any_of(m_plan.steps.cbegin(), m_plan.steps.cend(),
+        [](const RackStep &s) { return s.state == RackStep::State::Passed; });
     if (done)
-        return m_plan.mode == Mode::Check ? putBack() : finish(SessionResult {});
+        return m_plan.mode == Mode::Check && tested ? putBack() : finish(SessionResult {});
     m_plan.steps[m_current].state = RackStep::State::Running;
     m_connection->updateOperation(progressText(m_current));
     Q_EMIT stepChanged(m_current);
@@ -165,6 +170,15 @@ void RackSequence::measure(int index)
 void RackSequence::check(int index)
 {
     const int tool = m_plan.steps.at(index).tool;
+    // A tool the firmware's break test cannot test is skipped, as Prepare skips it, and said why; the rack
+    // goes on with the next.
+    if (const auto why = breakTestExclusion(tool, m_plan.steps.at(index).storedTlo)) {
+        RackStep &skipped = m_plan.steps[index];
+        skipped.state = RackStep::State::Skipped;
+        skipped.message = breakTestExclusionText(*why, tool);
+        Q_EMIT stepChanged(index);
+        return next();
+    }
     const auto &offsets = m_connection->lastOffsets();
     const bool hasReference = offsets && (!offsets->referenceMz || *offsets->referenceMz != 0.0);
     if (m_connection->activeTool() == tool && hasReference)

@@ -26,6 +26,7 @@ struct RackStep
         Broken, // Check: outside it; the machine halted
         Failed, // the machine or the link failed on this tool: nothing was recorded for it
         NotRun, // the sequence stopped before this tool
+        Skipped, // Check: the firmware's break test cannot test it (breakTestExclusion); `message` says why
     };
     int tool = 0;
     State state = State::Waiting;

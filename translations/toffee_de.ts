@@ -815,6 +815,14 @@
         <source>Unlock, home the machine, then try again.</source>
         <translation>Entsperren, die Maschine referenzieren, dann erneut versuchen.</translation>
     </message>
+    <message>
+        <source>T%1 is not break-tested: the firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt.</source>
+        <translation>T%1 wird nicht auf Bruch geprüft: Der Bruchtest der Firmware nimmt T0 und jedes Werkzeug ab T9 für ihren Funktaster und würde anhalten.</translation>
+    </message>
+    <message>
+        <source>T%1 is not break-tested: its TLO is 0.000 mm (the reference tool&apos;s), which the firmware&apos;s break test takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
+        <translation>T%1 wird nicht auf Bruch geprüft: Seine Längenkorrektur ist 0,000 mm (die des Referenzwerkzeugs), die der Bruchtest der Firmware als keine nimmt („No previous TLO included“): Er würde das Werkzeug messen, ohne zu vergleichen.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::About</name>
@@ -2798,14 +2806,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1 more notes like these, one for each further tool (the first of them T%2): counted, not listed.</source>
         <translation>%1 weitere solche Hinweise, einer je weiteres Werkzeug (das erste davon T%2): gezählt, nicht aufgeführt.</translation>
-    </message>
-    <message>
-        <source>T%1 is not break-tested: the community firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt the program.</source>
-        <translation>T%1 wird nicht auf Bruch geprüft: Die Bruchprüfung der Community-Firmware hält T0 und jedes Werkzeug ab T9 für ihren Funktaster und würde das Programm anhalten.</translation>
-    </message>
-    <message>
-        <source>T%1 is not break-tested: its TLO is 0.000 mm, which the community firmware takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
-        <translation>T%1 wird nicht auf Bruch geprüft: Seine Längenkorrektur ist 0,000 mm, was die Community-Firmware für keine hält („No previous TLO included“): Sie würde das Werkzeug vermessen, ohne zu vergleichen.</translation>
     </message>
     <message>
         <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (its calibration): check it before running the program.</source>
@@ -4965,6 +4965,10 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     <message>
         <source>The machine stopped during T%1&apos;s step: look which tool is in the spindle and that the rack holds the others before you Unlock, then measure the tool in the spindle.</source>
         <translation>Die Maschine hat während des Schritts von T%1 angehalten: Sehen Sie nach, welches Werkzeug in der Spindel steckt und ob das Magazin die übrigen hält, bevor Sie entsperren; vermessen Sie dann das Werkzeug in der Spindel.</translation>
+    </message>
+    <message>
+        <source>Skipped</source>
+        <translation>Übersprungen</translation>
     </message>
 </context>
 <context>

@@ -815,6 +815,14 @@
         <source>Unlock, home the machine, then try again.</source>
         <translation>请解锁、让机床回原点，然后重试。</translation>
     </message>
+    <message>
+        <source>T%1 is not break-tested: the firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt.</source>
+        <translation>T%1 不做断刀检测：固件的断刀检测把 T0 及 T9 以上的每把刀都当作其无线探头，并会停机。</translation>
+    </message>
+    <message>
+        <source>T%1 is not break-tested: its TLO is 0.000 mm (the reference tool&apos;s), which the firmware&apos;s break test takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
+        <translation>T%1 不做断刀检测：其刀长补偿为 0.000 mm（基准刀的），固件的断刀检测将其视为无（“No previous TLO included”）：它只会测量刀具而不比较。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::About</name>
@@ -2798,14 +2806,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1 more notes like these, one for each further tool (the first of them T%2): counted, not listed.</source>
         <translation>另有 %1 条类似说明，每把后续刀具一条（其中第一把为 T%2）：只计数，不列出。</translation>
-    </message>
-    <message>
-        <source>T%1 is not break-tested: the community firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt the program.</source>
-        <translation>T%1 不做断刀检测：社区固件的断刀检测把 T0 和 T9 及以上的刀具当作无线探头，会使程序停机。</translation>
-    </message>
-    <message>
-        <source>T%1 is not break-tested: its TLO is 0.000 mm, which the community firmware takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
-        <translation>T%1 不做断刀检测：其 TLO 为 0.000 mm，社区固件将其视为没有（“No previous TLO included”）：它只会测量刀具而不作比较。</translation>
     </message>
     <message>
         <source>The stored TLOs hold only while the machine&apos;s reference MCS Z is %1 (its calibration): check it before running the program.</source>
@@ -4965,6 +4965,10 @@ when it is fresh (no probe)</source>
     <message>
         <source>The machine stopped during T%1&apos;s step: look which tool is in the spindle and that the rack holds the others before you Unlock, then measure the tool in the spindle.</source>
         <translation>机床在 T%1 的步骤中停止：解锁前请目视检查主轴上是哪把刀、刀库是否装有其余刀具，然后对主轴上的刀具对刀。</translation>
+    </message>
+    <message>
+        <source>Skipped</source>
+        <translation>已跳过</translation>
     </message>
 </context>
 <context>

@@ -135,8 +135,13 @@ void RackPanel::sequenceFinished(const SessionResult &outcome)
     refreshTable();
     const QList<RackStep> &steps = sequence->steps();
     const QList<int> notRun = toolsIn(steps, RackStep::State::NotRun);
-    const QString notDone
+    QString notDone
         = notRun.isEmpty() ? QString() : u" "_s + tr("Not run: %1.").arg(RackSequence::toolNames(notRun));
+    // Which tools the check skipped, and why: the firmware's break test cannot test them.
+    for (const RackStep &step : steps) {
+        if (step.state == RackStep::State::Skipped)
+            notDone += u" "_s + step.message;
+    }
     const bool check = sequence->mode() == RackSequence::Mode::Check;
     if (!m_recordFailure.isEmpty()) {
         const QString text = tr("A measurement could not be stored in the table, so the rack was stopped: %1")

@@ -108,6 +108,8 @@ QString RackPanel::resultText(const RackStep &step) const
         return tr("Failed");
     case RackStep::State::NotRun:
         return tr("Not run");
+    case RackStep::State::Skipped:
+        return tr("Skipped");
     }
     return {};
 }

@@ -45,6 +45,8 @@ QString stateKey(RackStep::State state)
         return u"failed"_s;
     case RackStep::State::NotRun:
         return u"not_run"_s;
+    case RackStep::State::Skipped:
+        return u"skipped"_s;
     }
     return {};
 }
@@ -103,6 +105,8 @@ void printStep(Invocation &call, const RackStep &step, RackSequence::Mode mode)
     if (step.storedTlo && step.state != RackStep::State::NotRun)
         call.out << (mode == RackSequence::Mode::Check ? " (stored " : " (was ") << mm(*step.storedTlo)
                  << ")";
+    if (step.state == RackStep::State::Skipped)
+        call.out << ": " << step.message;
     call.out << Qt::endl;
 }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "model/breaktestrule.h"
 #include "model/gcode/gcodewords.h"
 #include "model/job/jobchecker.h"
 #include "model/numberformat.h"
@@ -91,23 +92,11 @@ Result<void> JobPreparer::breakTest(const LineSink &sink)
                 .arg(lastCut));
         return {};
     }
-    // The firmware's own rules (seen on the community firmware, ATCHandler): M491.1 takes T0 and every tool
-    // from T9 up for its wireless probe and halts, and a TLO of exactly 0 for none (it measures without
-    // comparing).
-    if (tool == 0 || tool >= 9) {
-        noteOnce(tool,
-            tr("T%1 is not break-tested: the community firmware's break test takes T0 and every tool from T9 "
-               "up "
-               "for its wireless probe, and would halt the program.")
-                .arg(tool));
-        return {};
-    }
-    if (const ToolFacts facts = m_facts.value(tool); facts.measuredTlo && *facts.measuredTlo == 0.0) {
-        noteOnce(tool,
-            tr("T%1 is not break-tested: its TLO is 0.000 mm, which the community firmware takes for none "
-               "(\"No previous TLO included\"): it would measure the tool without comparing.")
-                .arg(tool));
-        return {};
+    // The firmware's own rules, as Check Rack and the Break Test panel follow them (breakTestExclusion): the
+    // preview's note and a comment where the test would have gone say which tool was skipped, and why.
+    if (const auto why = breakTestExclusion(tool, m_facts.value(tool).measuredTlo)) {
+        noteOnce(tool, breakTestExclusionText(*why, tool));
+        return insertLine(comment(breakTestExclusionText(*why, tool, false)), sink, true);
     }
     if (m_prepared.spindleOn()) {
         if (auto r = insertLine(

@@ -148,6 +148,31 @@ private Q_SLOTS:
             QCOMPARE(s.table.find(t)->measuredTlo, measured.find(t)->measuredTlo);
     }
 
+    // The reference tool (a stored TLO of 0.000) cannot be break-tested: the firmware's M491.1 takes 0 for
+    // "No previous TLO" and measures without comparing. The check skips it, as Prepare does, says why, and
+    // goes on with the others.
+    void theReferenceToolIsSkippedAndTheCheckGoesOn()
+    {
+        Station s;
+        s.measureAll();
+        s.recordings.clear();
+        Tool reference = *s.table.find(2);
+        reference.measuredTlo = 0.0;
+        QVERIFY(s.table.replace(2, reference).ok());
+        s.sent.clear();
+        RackSequence check(&s.connection, RackSequence::plan(Mode::Check, kRack, s.table, 0.05));
+        QVERIFY(s.run(check));
+        QVERIFY2(check.outcome().ok(), qPrintable(check.outcome().message));
+        QCOMPARE(s.states(check),
+            (QList<State> {
+                State::Passed, State::Skipped, State::Passed, State::Passed, State::Passed, State::Passed }));
+        QVERIFY2(check.steps().at(1).message.contains(u"T2 is not break-tested: its TLO is 0.000 mm"_s),
+            qPrintable(check.steps().at(1).message));
+        QVERIFY(!s.sent.contains("M6 T2")); // not even picked
+        QCOMPARE(s.sent.last(), QByteArray("M6 T-1"));
+        QCOMPARE(s.recordings.size(), 5);
+    }
+
     void aBrokenToolStopsTheCheck()
     {
         Station s;

@@ -307,8 +307,9 @@ private Q_SLOTS:
             const auto summary = preparer.finish(sink);
             QVERIFY(summary.ok());
             const PrepareSummary &s = summary.value();
-            QCOMPARE(s.inserted, 0);
-            QCOMPARE(written, 601);
+            // No break test from T9 up: a comment says so in its place at each change (kept nowhere).
+            QCOMPARE(s.inserted, 300);
+            QCOMPARE(written, 901);
             // The first notes, then how many more.
             QCOMPARE(s.notes.size(), JobPreparer::kMaxNotes + 1);
             QCOMPARE(s.notes.front(), u"T10 is not in the table: it is measured at its change."_s);
@@ -381,6 +382,10 @@ private Q_SLOTS:
         const QByteArray withT1 = prepare("M6 T1\nG1 Z-1 F100\nM6 T2\nG1 Z-1\nM30\n", test, &summary);
         QCOMPARE(withT1.count("M491.1"), 1);
         QVERIFY(summary.notes.join(u'\n').contains(u"T1 is not break-tested: its TLO is 0.000 mm"_s));
+        // ... and where the test would have gone, the program says so too.
+        QVERIFY2(
+            withT1.contains("(Toffee: T1 is not break-tested: its TLO is 0.000 mm [the reference tool's]"),
+            withT1.constData());
         // T9 on: the firmware's break test takes them for its wireless probe and halts (seen on it).
         summary = {};
         const QByteArray withT9 = prepare("M6 T2\nG1 Z-1 F100\nM6 T9\nG1 Z-1\nM30\n", test, &summary);
