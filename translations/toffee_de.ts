@@ -4291,6 +4291,18 @@ Trotzdem speichern?</translation>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
+    <message>
+        <source>R&amp;ack</source>
+        <translation>Ma&amp;gazin</translation>
+    </message>
+    <message>
+        <source>&amp;Measure Rack…</source>
+        <translation>Magazin &amp;vermessen …</translation>
+    </message>
+    <message>
+        <source>&amp;Check Rack…</source>
+        <translation>Magazin &amp;prüfen …</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>

@@ -4291,6 +4291,18 @@ Save anyway?</source>
         <source>Remove</source>
         <translation>移除</translation>
     </message>
+    <message>
+        <source>R&amp;ack</source>
+        <translation>刀库(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Measure Rack…</source>
+        <translation>测量刀库(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>&amp;Check Rack…</source>
+        <translation>检查刀库(&amp;C)…</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>

@@ -362,6 +362,24 @@ void MainWindow::createMachineActions()
         [this] { m_machineDock->tloPanel()->unlock(); }));
     toolBar->addAction(add(u"actionStop"_s, tr("&Stop the Machine"), QKeySequence(Qt::CTRL | Qt::Key_Period),
         [this] { m_machineDock->probePanel()->cancel(); }));
+    // The rack's sequences, from the keyboard too; the Rack panel comes forward to show their progress.
+    machine->addSeparator();
+    QMenu *rack = machine->addMenu(tr("R&ack"));
+    rack->setObjectName(u"menuRack"_s);
+    QAction *measureRack = addMenuAction(rack, u"actionMeasureRack"_s, tr("&Measure Rack…"), {}, [this] {
+        m_rackDock->raise();
+        m_rackPanel->measureRack();
+    });
+    QAction *checkRack = addMenuAction(rack, u"actionCheckRack"_s, tr("&Check Rack…"), {}, [this] {
+        m_rackDock->raise();
+        m_rackPanel->checkRack();
+    });
+    auto rackState = [this, measureRack, checkRack] {
+        measureRack->setEnabled(m_rackPanel->canMeasure());
+        checkRack->setEnabled(m_rackPanel->canCheck());
+    };
+    connect(m_rackPanel, &RackPanel::stateChanged, this, rackState);
+    rackState();
     machine->addSeparator();
     add(u"actionRecordRun"_s, tr("&Record a Program Run…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
         [this] { recordProgramRun(); });

@@ -203,6 +203,17 @@ void RackPanel::updateState()
     m_load->setToolTip(tr("Change to the tool: the machine puts the one in the spindle back first."));
     for (QWidget *w : std::initializer_list<QWidget *> { m_holds, m_toolSpin, m_tolerance, m_useStored })
         w->setEnabled(!ours);
+    Q_EMIT stateChanged();
+}
+
+bool RackPanel::canMeasure() const
+{
+    return m_measure->isEnabled();
+}
+
+bool RackPanel::canCheck() const
+{
+    return m_check->isEnabled();
 }
 
 void RackPanel::updateSpindle()

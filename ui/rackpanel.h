@@ -43,6 +43,13 @@ public:
     void measureRack(bool confirm = true);
     void checkRack(bool confirm = true);
     void cancel();
+    // What the Machine menu's Rack actions may do now, as the panel's buttons (their tooltips say why not).
+    [[nodiscard]] bool canMeasure() const;
+    [[nodiscard]] bool canCheck() const;
+
+Q_SIGNALS:
+    // The buttons' enabled state may have changed.
+    void stateChanged();
 
 private:
     void buildLayout();

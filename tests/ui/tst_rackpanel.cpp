@@ -51,7 +51,10 @@ private Q_SLOTS:
         RackStation s;
         QCOMPARE(s.text(u"rackSpindleLabel"_s), u"Spindle: unknown"_s);
         QVERIFY(!s.find<QPushButton>(u"rackMeasureButton"_s)->isEnabled());
+        QVERIFY(!s.find<QAction>(u"actionMeasureRack"_s)->isEnabled()); // Machine ▸ Rack follows the panel
+        QVERIFY(!s.find<QAction>(u"actionCheckRack"_s)->isEnabled());
         s.connect();
+        QVERIFY(s.find<QAction>(u"actionMeasureRack"_s)->isEnabled());
         QCOMPARE(s.text(u"rackSpindleLabel"_s), u"Spindle: T1"_s);
         QCOMPARE(s.text(u"rackFirmwareLabel"_s), u"Community firmware 2.1.0c-emulator"_s);
         QCOMPARE(s.find<QLineEdit>(u"rackHoldsEdit"_s)->text(), u"1-6"_s);
@@ -114,9 +117,11 @@ private Q_SLOTS:
         QVERIFY(!check->isEnabled());
         QVERIFY2(check->toolTip().contains(u"would pass a broken tool"_s), qPrintable(check->toolTip()));
         QVERIFY(s.find<QPushButton>(u"rackMeasureButton"_s)->isEnabled()); // measuring is the same on both
-        // Measured there, the TLO comes from the status report alone: the strip claims no MCS Z.
+        QVERIFY(!s.find<QAction>(u"actionCheckRack"_s)->isEnabled());
+        // Measured there (from the Machine menu, as from the panel), the TLO comes from the status report
+        // alone: the strip claims no MCS Z.
         answerNextBox(QMessageBox::Yes);
-        s.click(u"rackMeasureButton"_s);
+        s.trigger(u"actionMeasureRack"_s);
         QVERIFY(QTest::qWaitFor([&s] { return s.idle(); }, kLongWaitMs));
         QCOMPARE(s.rackCell(1, RackPanel::StoredColumn), u"9.652"_s);
         QVERIFY(!s.table().find(2)->referenceMz);
