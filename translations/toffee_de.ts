@@ -2,6 +2,21 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>BrokenTool</name>
+    <message>
+        <source>T%1 is marked broken: it failed its break test. Probing measures it as it is now, records that TLO and clears the mark: replace the tool first if it is broken.</source>
+        <translation>T%1 ist als gebrochen markiert: Es hat seinen Bruchtest nicht bestanden. Das Messen erfasst es, wie es jetzt ist, zeichnet diese Längenkorrektur auf und hebt die Markierung auf: Ersetzen Sie das Werkzeug zuerst, wenn es gebrochen ist.</translation>
+    </message>
+    <message>
+        <source>T%1 is marked broken: it failed its break test. A TLO set by hand does not clear the mark; measure the tool (Probe) once it is checked or replaced.</source>
+        <translation>T%1 ist als gebrochen markiert: Es hat seinen Bruchtest nicht bestanden. Eine von Hand gesetzte Längenkorrektur hebt die Markierung nicht auf; messen Sie das Werkzeug (Messen), sobald es geprüft oder ersetzt ist.</translation>
+    </message>
+    <message>
+        <source>T%1 is marked broken: it failed its last break test. Testing it again compares it with its stored TLO; a pass clears the mark.</source>
+        <translation>T%1 ist als gebrochen markiert: Es hat seinen letzten Bruchtest nicht bestanden. Ein erneuter Test vergleicht es mit seiner gespeicherten Längenkorrektur; ein Bestehen hebt die Markierung auf.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee</name>
     <message>
         <source>tool number %1 is out of range; use %2 to %3.</source>
@@ -5509,6 +5524,22 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>its TLO</source>
         <translation>seine Längenkorrektur</translation>
+    </message>
+    <message>
+        <source>Unlock with T%1 marked broken?</source>
+        <translation>Entsperren, obwohl T%1 als gebrochen markiert ist?</translation>
+    </message>
+    <message>
+        <source>T%1 failed its break test: it may be broken, and the machine halted so that it cuts nothing more.</source>
+        <translation>T%1 hat seinen Bruchtest nicht bestanden: Es könnte gebrochen sein, und die Maschine hat angehalten, damit es nichts mehr schneidet.</translation>
+    </message>
+    <message>
+        <source>Look at the tool first, and replace it if it is broken. Unlock sets T%1&apos;s stored TLO, %2, back before anything can move; the mark stays until T%1 is measured again (Probe).</source>
+        <translation>Sehen Sie sich zuerst das Werkzeug an und ersetzen Sie es, wenn es gebrochen ist. Entsperren setzt die gespeicherte Längenkorrektur von T%1, %2, zurück, bevor sich etwas bewegen kann; die Markierung bleibt, bis T%1 erneut gemessen wird (Messen).</translation>
+    </message>
+    <message>
+        <source>Look at the tool first, and replace it if it is broken. The mark stays until T%1 is measured again (Probe).</source>
+        <translation>Sehen Sie sich zuerst das Werkzeug an und ersetzen Sie es, wenn es gebrochen ist. Die Markierung bleibt, bis T%1 erneut gemessen wird (Messen).</translation>
     </message>
 </context>
 <context>

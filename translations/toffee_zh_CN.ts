@@ -2,6 +2,21 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>BrokenTool</name>
+    <message>
+        <source>T%1 is marked broken: it failed its break test. Probing measures it as it is now, records that TLO and clears the mark: replace the tool first if it is broken.</source>
+        <translation>T%1 被标记为断刀：它未通过断刀检测。测量会按其当前状态测量、记录该刀长补偿并清除标记：如果刀具已断，请先更换。</translation>
+    </message>
+    <message>
+        <source>T%1 is marked broken: it failed its break test. A TLO set by hand does not clear the mark; measure the tool (Probe) once it is checked or replaced.</source>
+        <translation>T%1 被标记为断刀：它未通过断刀检测。手动设置的刀长补偿不会清除标记；请在检查或更换刀具后测量（测量）。</translation>
+    </message>
+    <message>
+        <source>T%1 is marked broken: it failed its last break test. Testing it again compares it with its stored TLO; a pass clears the mark.</source>
+        <translation>T%1 被标记为断刀：它未通过上次断刀检测。再次检测会与其已存的刀长补偿比较；通过即清除标记。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee</name>
     <message>
         <source>tool number %1 is out of range; use %2 to %3.</source>
@@ -5509,6 +5524,22 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>its TLO</source>
         <translation>其 TLO</translation>
+    </message>
+    <message>
+        <source>Unlock with T%1 marked broken?</source>
+        <translation>在 T%1 被标记为断刀时解锁？</translation>
+    </message>
+    <message>
+        <source>T%1 failed its break test: it may be broken, and the machine halted so that it cuts nothing more.</source>
+        <translation>T%1 未通过断刀检测：它可能已断，机器已停机，以免它继续切削。</translation>
+    </message>
+    <message>
+        <source>Look at the tool first, and replace it if it is broken. Unlock sets T%1&apos;s stored TLO, %2, back before anything can move; the mark stays until T%1 is measured again (Probe).</source>
+        <translation>请先查看刀具，如已断请更换。解锁会在任何运动之前恢复 T%1 的已存刀长补偿 %2；标记会保留，直到重新测量 T%1（测量）。</translation>
+    </message>
+    <message>
+        <source>Look at the tool first, and replace it if it is broken. The mark stays until T%1 is measured again (Probe).</source>
+        <translation>请先查看刀具，如已断请更换。标记会保留，直到重新测量 T%1（测量）。</translation>
     </message>
 </context>
 <context>

@@ -14,6 +14,7 @@
 #include "serial/machineconnection.h"
 #include "ui/appearance.h"
 #include "ui/appsettings.h"
+#include "ui/brokentool.h"
 
 using namespace Qt::StringLiterals;
 
@@ -158,9 +159,15 @@ void BreakTestPanel::run(bool confirm)
         box.setObjectName(u"breakTestConfirmation"_s);
         box.setDefaultButton(QMessageBox::Cancel);
         // Told before the machine moves, not after it halts.
-        if (const QString warning = referenceWarning(); !warning.isEmpty()) {
+        QStringList warnings;
+        for (const QString &w : { brokenToolWarning(m_document, m_connection, BrokenToolAction::BreakTest),
+                 referenceWarning() }) {
+            if (!w.isEmpty())
+                warnings << w;
+        }
+        if (!warnings.isEmpty()) {
             box.setIcon(QMessageBox::Warning);
-            box.setInformativeText(warning);
+            box.setInformativeText(warnings.join(u"\n\n"_s));
         }
         if (box.exec() != QMessageBox::Yes)
             return;

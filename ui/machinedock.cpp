@@ -57,7 +57,7 @@ MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, 
     layout->addWidget(m_offsetsGroup);
     layout->addWidget(m_breakTestGroup);
     layout->addStretch(1);
-    connect(m_breakTest, &BreakTestPanel::unlockRequested, m_tlo, &TloPanel::unlock);
+    connect(m_breakTest, &BreakTestPanel::unlockRequested, m_tlo, [this] { m_tlo->unlock(false); });
     // A probe measures the tool again: the last break test's verdict no longer holds.
     connect(m_probe, &ProbePanel::finished, m_breakTest, [this](const SessionResult &r) {
         if (r.ok())

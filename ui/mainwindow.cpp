@@ -366,14 +366,16 @@ void MainWindow::createMachineActions()
     machine->addSeparator();
     QMenu *rack = machine->addMenu(tr("R&ack"));
     rack->setObjectName(u"menuRack"_s);
-    QAction *measureRack = addMenuAction(rack, u"actionMeasureRack"_s, tr("&Measure Rack…"), {}, [this] {
-        m_rackDock->raise();
-        m_rackPanel->measureRack();
-    });
-    QAction *checkRack = addMenuAction(rack, u"actionCheckRack"_s, tr("&Check Rack…"), {}, [this] {
-        m_rackDock->raise();
-        m_rackPanel->checkRack();
-    });
+    QAction *measureRack = addMenuAction(rack, u"actionMeasureRack"_s, tr("&Measure Rack…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F5), [this] {
+            m_rackDock->raise();
+            m_rackPanel->measureRack();
+        });
+    QAction *checkRack = addMenuAction(rack, u"actionCheckRack"_s, tr("&Check Rack…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F6), [this] {
+            m_rackDock->raise();
+            m_rackPanel->checkRack();
+        });
     auto rackState = [this, measureRack, checkRack] {
         measureRack->setEnabled(m_rackPanel->canMeasure());
         checkRack->setEnabled(m_rackPanel->canCheck());

@@ -13,6 +13,7 @@
 #include "model/document/tooldocument.h"
 #include "serial/machineconnection.h"
 #include "ui/appearance.h"
+#include "ui/brokentool.h"
 
 using namespace Qt::StringLiterals;
 
@@ -157,7 +158,9 @@ void OffsetEditor::send(bool confirm)
         && QMessageBox::question(this, tr("Change %1's tool length offset?").arg(name),
                tr("Send %1 for %2?\nTLO %3\n\nThe next cut uses the new offset. The table records it as "
                   "set by hand, not measured.")
-                   .arg(commandPreview(), name, resultPreview()),
+                       .arg(commandPreview(), name, resultPreview())
+                   + brokenParagraph(
+                       brokenToolWarning(m_document, m_connection, BrokenToolAction::SetByHand)),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;

@@ -13,6 +13,7 @@
 #include "model/document/tooldocument.h"
 #include "serial/machineconnection.h"
 #include "ui/appearance.h"
+#include "ui/brokentool.h"
 
 using namespace Qt::StringLiterals;
 
@@ -132,7 +133,8 @@ void ProbePanel::probe(bool confirm)
                tr("The machine will move: up to clearance, over the tool setter, then down until "
                   "%1 touches it. Keep hands clear.\n\nThe machine says %1 is in the spindle: the "
                   "measurement is recorded as %1's TLO.\n\nProbe now?")
-                   .arg(name),
+                       .arg(name)
+                   + brokenParagraph(brokenToolWarning(m_document, m_connection, BrokenToolAction::Probe)),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;

@@ -115,7 +115,7 @@ TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidge
     connect(m_document->model(), &QAbstractItemModel::dataChanged, this, &TloPanel::updateTlo);
     connect(m_document->model(), &QAbstractItemModel::rowsInserted, this, &TloPanel::updateTlo);
     connect(m_document->model(), &QAbstractItemModel::rowsRemoved, this, &TloPanel::updateTlo);
-    connect(m_unlock, &QPushButton::clicked, this, &TloPanel::unlock);
+    connect(m_unlock, &QPushButton::clicked, this, [this] { unlock(); });
     connect(&m_staleTimer, &QTimer::timeout, this, &TloPanel::checkStale);
     m_staleTimer.start(500);
     clear();
@@ -295,7 +295,7 @@ void TloPanel::checkStale()
         l->setEnabled(!stale);
 }
 
-void TloPanel::unlock()
+void TloPanel::unlock(bool confirm)
 {
     // A tool the table marks broken: the failed break test left its new length in force, and its stored TLO
     // goes back first.
@@ -303,6 +303,29 @@ void TloPanel::unlock()
     const Tool *stored = tool ? m_document->table().find(*tool) : nullptr;
     const std::optional<double> brokenTlo
         = stored && stored->breakTestFailed ? stored->measuredTlo : std::nullopt;
+    // One click must not carry on with a tool that may be broken: the operator says the tool was looked at.
+    if (confirm && stored && stored->breakTestFailed && window()->isVisible()) {
+        QMessageBox box(QMessageBox::Warning, tr("Unlock with T%1 marked broken?").arg(stored->number),
+            tr("T%1 failed its break test: it may be broken, and the machine halted so that it cuts nothing "
+               "more.")
+                .arg(stored->number),
+            QMessageBox::Cancel, this);
+        box.setInformativeText(brokenTlo
+                ? tr("Look at the tool first, and replace it if it is broken. Unlock sets T%1's stored TLO, "
+                     "%2, "
+                     "back before anything can move; the mark stays until T%1 is measured again (Probe).")
+                      .arg(stored->number)
+                      .arg(millimetres(*brokenTlo))
+                : tr("Look at the tool first, and replace it if it is broken. The mark stays until T%1 is "
+                     "measured again (Probe).")
+                      .arg(stored->number));
+        QPushButton *unlock = box.addButton(tr("Unlock"), QMessageBox::AcceptRole);
+        unlock->setObjectName(u"unlockBrokenButton"_s);
+        box.setDefaultButton(QMessageBox::Cancel);
+        box.exec();
+        if (box.clickedButton() != unlock)
+            return;
+    }
     m_connection->unlock(
         [this](const SessionResult &r) {
             if (!r.ok())

@@ -34,7 +34,9 @@ public:
     [[nodiscard]] bool isStale() const { return m_stale; }
     // What the TLO readout's note says: "measured …", "set by hand …", "not measured", …
     [[nodiscard]] QString tloNote() const;
-    void unlock();
+    // Asks first when the tool in the spindle is marked broken, unless `confirm` is false (the broken-tool
+    // alarm's own Unlock, which is that question).
+    void unlock(bool confirm = true);
 
 private:
     void showStatus(const MachineStatus &status);

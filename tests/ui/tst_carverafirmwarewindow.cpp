@@ -176,8 +176,11 @@ private Q_SLOTS:
             realFirmware ? u"carvera-firmware-after-a-failed-break-test.png"_s
                          : u"carvera-emulator-after-a-failed-break-test.png"_s);
 
-        // Unlock: the stored 6.5 goes back before anything can move.
+        // Unlock (after a look at the tool: it asks): the stored 6.5 goes back before anything can move.
+        QString unlock;
+        answerNextBox(QMessageBox::NoButton, &unlock, u"unlockBrokenButton"_s);
         s.trigger(u"actionUnlock"_s);
+        QVERIFY2(unlock.contains(u"T1 failed its break test"_s), qPrintable(unlock));
         QVERIFY(waitIdle(s));
         QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
         QTRY_COMPARE(s.text(u"tloLabel"_s), u"6.500 mm"_s);

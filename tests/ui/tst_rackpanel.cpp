@@ -216,7 +216,10 @@ private:
     void replaceTheBrokenToolAndLoadIt(RackStation &s)
     {
         s.machine()->breakTool(3, -0.5); // a new T3, as long as the old one was
+        QString unlock;
+        answerNextBox(QMessageBox::NoButton, &unlock, u"unlockBrokenButton"_s); // the tool was replaced
         s.trigger(u"actionUnlock"_s);
+        QVERIFY2(unlock.contains(u"T3 failed its break test"_s), qPrintable(unlock));
         QVERIFY(QTest::qWaitFor([&s] { return !s.window.connection()->isHalted() && s.idle(); }, 10000));
         QCOMPARE(s.text(u"rackSpindleLabel"_s), u"Spindle: T3"_s);
         s.rackTable()->selectRow(2);

@@ -210,13 +210,22 @@ void unlockAndProbeAgain(Station &s, const QTemporaryDir &dir)
     // goes back before anything else; then probe T2 again: measured, and the mark is gone.
     QCOMPARE(s.machine()->tlo(), 9.652);
     s.window.activateWindow();
+    // Unlock asks first, naming the mark; Cancel leaves the machine halted.
+    QString question;
+    answerNextBox(QMessageBox::Cancel, &question);
+    s.trigger(u"actionUnlock"_s);
+    QVERIFY2(question.contains(u"T2 failed its break test"_s) && question.contains(u"12.552 mm"_s),
+        qPrintable(question));
+    QVERIFY(s.machine()->isHalted());
+    answerNextBox(QMessageBox::NoButton, &question, u"unlockBrokenButton"_s);
     s.trigger(u"actionUnlock"_s);
     QVERIFY(QTest::qWaitFor([&s] { return s.idle() && !s.machine()->isHalted(); }, 5000));
     QCOMPARE(s.machine()->tlo(), 12.552);
     QVERIFY(s.sent.contains("M493.3 Z12.552"));
     QTRY_VERIFY(s.find<QAction>(u"actionProbe"_s)->isEnabled());
     QTRY_VERIFY(!s.find<QLabel>(u"haltLabel"_s)->isVisible());
-    s.probe();
+    // Probing the tool still marked says so before it moves.
+    QVERIFY2(s.probe().contains(u"T2 is marked broken"_s), "the probe question says nothing of the mark");
     QCOMPARE(*s.table().find(2)->measuredTlo, 9.652);
     QVERIFY(!s.table().find(2)->breakTestFailed);
     QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
