@@ -5639,10 +5639,6 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
         <translation>Radiusverschleiß</translation>
     </message>
     <message>
-        <source>Measured TLO</source>
-        <translation>Gemessene TLO</translation>
-    </message>
-    <message>
         <source>Notes</source>
         <translation>Notizen</translation>
     </message>
@@ -5699,12 +5695,24 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
         <translation>%1 (veraltet)</translation>
     </message>
     <message>
-        <source>Last measured</source>
-        <translation>Zuletzt gemessen</translation>
-    </message>
-    <message>
         <source>Cutting time</source>
         <translation>Schnittzeit</translation>
+    </message>
+    <message>
+        <source>The tool length offset: measured on the tool setter, or set by hand (marked &quot;by hand&quot;).</source>
+        <translation>Die Werkzeuglängenkorrektur: am Werkzeuglängensensor gemessen oder von Hand gesetzt (markiert mit „von Hand“).</translation>
+    </message>
+    <message>
+        <source>When the TLO was measured or set.</source>
+        <translation>Wann die TLO gemessen oder gesetzt wurde.</translation>
+    </message>
+    <message>
+        <source>TLO</source>
+        <translation>TLO</translation>
+    </message>
+    <message>
+        <source>TLO recorded</source>
+        <translation>TLO erfasst</translation>
     </message>
 </context>
 <context>

@@ -5639,10 +5639,6 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
         <translation>半径磨损</translation>
     </message>
     <message>
-        <source>Measured TLO</source>
-        <translation>测得 TLO</translation>
-    </message>
-    <message>
         <source>Notes</source>
         <translation>备注</translation>
     </message>
@@ -5699,12 +5695,24 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
         <translation>%1（已过期）</translation>
     </message>
     <message>
-        <source>Last measured</source>
-        <translation>上次测量</translation>
-    </message>
-    <message>
         <source>Cutting time</source>
         <translation>切削时间</translation>
+    </message>
+    <message>
+        <source>The tool length offset: measured on the tool setter, or set by hand (marked &quot;by hand&quot;).</source>
+        <translation>刀长补偿：在对刀仪上测量，或手动设置（标有“手动”）。</translation>
+    </message>
+    <message>
+        <source>When the TLO was measured or set.</source>
+        <translation>刀长补偿测量或设置的时间。</translation>
+    </message>
+    <message>
+        <source>TLO</source>
+        <translation>TLO</translation>
+    </message>
+    <message>
+        <source>TLO recorded</source>
+        <translation>TLO 记录时间</translation>
     </message>
 </context>
 <context>

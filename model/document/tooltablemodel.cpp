@@ -186,6 +186,13 @@ QString ToolTableModel::tloToolTip(const Tool &tool) const
 
 QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
+    // The TLO column holds what the machine measured and what was set on it by hand (marked so): not only
+    // measurements, which its name once said.
+    if (orientation == Qt::Horizontal && role == Qt::ToolTipRole && section == MeasuredTloColumn)
+        return tr(
+            "The tool length offset: measured on the tool setter, or set by hand (marked \"by hand\").");
+    if (orientation == Qt::Horizontal && role == Qt::ToolTipRole && section == MeasuredAtColumn)
+        return tr("When the TLO was measured or set.");
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
         return QAbstractTableModel::headerData(section, orientation, role);
     switch (section) {
@@ -206,9 +213,9 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
     case RadiusWearColumn:
         return tr("Radius wear");
     case MeasuredTloColumn:
-        return tr("Measured TLO");
+        return tr("TLO");
     case MeasuredAtColumn:
-        return tr("Last measured");
+        return tr("TLO recorded");
     case CuttingTimeColumn:
         return tr("Cutting time");
     case NotesColumn:

@@ -283,6 +283,11 @@ private Q_SLOTS:
             u"Total length"_s);
         QCOMPARE(model.columnCount(), int(ToolTableModel::ColumnCount));
         QCOMPARE(model.rowCount(model.index(0, 0)), 0);
+        // Issue 30: the column holds TLOs set by hand too (marked so), so its name no longer says "Measured".
+        QCOMPARE(model.headerData(ToolTableModel::MeasuredTloColumn, Qt::Horizontal).toString(), u"TLO"_s);
+        QVERIFY(model.headerData(ToolTableModel::MeasuredTloColumn, Qt::Horizontal, Qt::ToolTipRole)
+                    .toString()
+                    .contains(u"set by hand"_s));
     }
 };
 
