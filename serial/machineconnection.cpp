@@ -107,7 +107,7 @@ QString ConnectionTarget::name() const
     if (emulator)
         return u"emulator"_s;
     if (isNetwork())
-        return (host.contains(u':') ? u'[' + host + u']' : host) + u':' + QString::number(tcpPort);
+        return TcpTransport::Address { host, tcpPort }.text();
     return port;
 }
 

@@ -29,7 +29,7 @@ constexpr int kBusyRole = Qt::UserRole + 2;
 
 QString addressText(const QString &host, quint16 port)
 {
-    return (host.contains(u':') ? u'[' + host + u']' : host) + u':' + QString::number(port);
+    return TcpTransport::Address { host, port }.text();
 }
 } // namespace
 

@@ -81,8 +81,7 @@ TcpTransport::~TcpTransport()
 
 QString TcpTransport::name() const
 {
-    const bool v6 = QHostAddress(m_address.host).protocol() == QAbstractSocket::IPv6Protocol;
-    return (v6 ? u'[' + m_address.host + u']' : m_address.host) + u':' + QString::number(m_address.port);
+    return m_address.text();
 }
 
 QString TcpTransport::description() const

@@ -31,6 +31,11 @@ public:
     {
         QString host;
         quint16 port = kDefaultPort;
+        // "HOST:PORT", an IPv6 address in brackets: as parseAddress reads it back.
+        [[nodiscard]] QString text() const
+        {
+            return (host.contains(u':') ? u'[' + host + u']' : host) + u':' + QString::number(port);
+        }
     };
     // "HOST", "HOST:PORT", "[IPv6]" or "[IPv6]:PORT".
     [[nodiscard]] static Result<Address> parseAddress(const QString &text);
