@@ -10,7 +10,7 @@
 
 #include "model/gcode/carvera.h"
 #include "model/gcode/gcodewords.h"
-#include "serial/machinecontroller.h"
+#include "serial/machine/machinecontroller.h"
 
 using namespace Qt::StringLiterals;
 

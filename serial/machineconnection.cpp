@@ -4,9 +4,9 @@
 #include <cmath>
 #include <utility>
 
+#include "serial/carvera/machinesession.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulatortransport.h"
-#include "serial/machinesession.h"
 #include "serial/transport/serialporttransport.h"
 #include "serial/transport/tcptransport.h"
 
@@ -132,7 +132,7 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
     connect(m_link.get(), &MachineLink::lineSent, this,
         [this](const QByteArray &l) { Q_EMIT consoleLine(l, true); });
     connect(m_link.get(), &MachineLink::lineReceived, this, [this](const QByteArray &l) {
-        if (classifyReply(l) != ReplyKind::Status) // four a second would drown the console
+        if (m_link->grammar().classify(l) != ReplyKind::Status) // four a second would drown the console
             Q_EMIT consoleLine(l, false);
     });
     connect(m_link.get(), &MachineLink::closed, this, [this](const QString &reason) {

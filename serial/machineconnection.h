@@ -5,8 +5,8 @@
 
 #include <QObject>
 
-#include "serial/machinecontroller.h"
-#include "serial/machinelink.h"
+#include "serial/machine/machinecontroller.h"
+#include "serial/machine/machinelink.h"
 #include "serial/transport/tcptransport.h"
 
 namespace Toffee {

@@ -8,7 +8,7 @@
 #include <QObject>
 
 #include "model/limits.h"
-#include "serial/machinesession.h"
+#include "serial/carvera/machinesession.h"
 
 namespace Toffee {
 

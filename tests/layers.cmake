@@ -2,8 +2,9 @@
 # Fails when a source file includes from a layer above its own. Run as
 #   cmake -DROOT=<source root> -P tests/layers.cmake
 # The layers, lowest first: model ← formats, gcode, library, camimport, job ← document; wire ← transport;
-# model, gcode, wire ← emulator; model ← grblhal; transport, emulator, grblhal ← serial; ui; app.
-# Includes are written from the source root ("serial/machinesession.h"), so the first folders name the layer.
+# model, gcode, wire ← emulator; transport ← machine ← carvera, grblhal (the two controllers, neither reaching
+# the other); emulator, carvera, grblhal ← serial; ui; app.
+# Includes are written from the source root ("serial/carvera/machinesession.h"), so the first folders name the layer.
 
 cmake_minimum_required(VERSION 3.25)
 
@@ -16,7 +17,7 @@ function(layer_of path out)
     foreach(pair "model/document:document" "model/formats:formats" "model/gcode:gcode" "model/library:library"
             "model/camimport:camimport" "model/job:job" "model:model"
             "serial/wire:wire" "serial/transport:transport" "serial/emulator:emulator"
-            "serial/grblhal:grblhal" "serial:serial" "ui:ui" "app:app")
+            "serial/machine:machine" "serial/carvera:carvera" "serial/grblhal:grblhal" "serial:serial" "ui:ui" "app:app")
         string(REPLACE ":" ";" pair "${pair}")
         list(GET pair 0 prefix)
         list(GET pair 1 name)
@@ -39,11 +40,14 @@ set(allowed_job model formats gcode library job)
 set(allowed_wire wire)
 set(allowed_transport model wire transport)
 set(allowed_emulator model gcode wire emulator)
-set(allowed_grblhal model grblhal)
-set(allowed_serial model gcode wire transport emulator grblhal serial)
-set(allowed_ui model formats gcode document library camimport job wire transport emulator grblhal serial ui)
-set(allowed_app model formats gcode document library camimport job wire transport emulator grblhal serial ui
-    app)
+set(allowed_machine model wire transport machine)
+set(allowed_carvera model gcode wire transport machine carvera)
+set(allowed_grblhal model wire transport machine grblhal)
+set(allowed_serial model gcode wire transport emulator machine carvera grblhal serial)
+set(allowed_ui model formats gcode document library camimport job wire transport emulator machine carvera grblhal
+    serial ui)
+set(allowed_app model formats gcode document library camimport job wire transport emulator machine carvera
+    grblhal serial ui app)
 
 file(GLOB_RECURSE sources RELATIVE ${ROOT}
     ${ROOT}/model/*.h ${ROOT}/model/*.cpp ${ROOT}/serial/*.h ${ROOT}/serial/*.cpp

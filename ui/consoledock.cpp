@@ -9,6 +9,7 @@
 #include <QVBoxLayout>
 
 #include "model/document/tooldocument.h"
+#include "serial/carvera/carverareplies.h"
 #include "serial/consolecheck.h"
 #include "serial/machineconnection.h"
 #include "ui/appearance.h"

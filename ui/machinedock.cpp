@@ -7,8 +7,8 @@
 #include <QScrollBar>
 #include <QVBoxLayout>
 
+#include "serial/machine/machinecontroller.h"
 #include "serial/machineconnection.h"
-#include "serial/machinecontroller.h"
 #include "ui/breaktestpanel.h"
 #include "ui/connectionpanel.h"
 #include "ui/offseteditor.h"

@@ -6,7 +6,7 @@
 #include <QTimer>
 #include <QWidget>
 
-#include "serial/machinereplies.h"
+#include "serial/carvera/carverareplies.h"
 
 class QLabel;
 class QPushButton;

@@ -18,9 +18,10 @@
 #include "model/library/weartrend.h"
 #include "model/limits.h"
 #include "model/numberformat.h"
+#include "serial/carvera/carverareplies.h"
+#include "serial/machine/machinecontroller.h"
+#include "serial/machine/machinelink.h"
 #include "serial/machineconnection.h"
-#include "serial/machinecontroller.h"
-#include "serial/machinelink.h"
 #include "serial/transport/streamtransport.h"
 
 using namespace Qt::StringLiterals;

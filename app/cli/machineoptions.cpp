@@ -11,7 +11,7 @@
 #include "model/formats/tablefile.h"
 #include "model/job/jobchecker.h"
 #include "model/textparsing.h"
-#include "serial/machinecontroller.h"
+#include "serial/machine/machinecontroller.h"
 #include "serial/transport/serialporttransport.h"
 #include "serial/transport/tcptransport.h"
 

@@ -31,9 +31,10 @@
 #include <QTcpSocket>
 #include <QTimer>
 
+#include "serial/carvera/carverareplies.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulator/tcpserver.h"
-#include "serial/machinelink.h"
+#include "serial/machine/machinelink.h"
 #include "serial/transport/tcptransport.h"
 #include "serial/wire/makeraframe.h"
 
@@ -124,6 +125,7 @@ public:
         m_transport->setProtocol(
             framed ? StreamTransport::Protocol::Framed : StreamTransport::Protocol::Text);
         m_link = std::make_unique<MachineLink>(m_transport.get());
+        m_link->setGrammar(carveraGrammar());
         m_link->setPollInterval(0); // the command's round trip alone, no status reports between
         bool opened = false;
         QObject::connect(m_link.get(), &MachineLink::opened, m_link.get(), [&opened] { opened = true; });

@@ -9,8 +9,8 @@
 
 #include <QCoreApplication>
 
+#include "serial/carvera/carverareplies.h"
 #include "serial/emulator/carveraemulator.h"
-#include "serial/machinereplies.h"
 #include "tests/fuzz/fuzzcheck.h"
 
 using namespace Toffee;

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "model/textparsing.h"
-#include "serial/machinereplies.h"
+#include "serial/carvera/carverareplies.h"
 #include "tests/fuzz/fuzzcheck.h"
 
 using namespace Toffee;

@@ -6,8 +6,8 @@
 #include <QTest>
 
 #include "model/gcode/gcodeinterpreter.h"
+#include "serial/carvera/carverareplies.h"
 #include "serial/emulator/carveraemulator.h"
-#include "serial/machinereplies.h"
 #include "tests/support/emulatorlines.h"
 
 using namespace Toffee;

@@ -3,8 +3,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include "serial/carvera/carverareplies.h"
 #include "serial/emulator/carveraemulator.h"
-#include "serial/machinereplies.h"
 #include "tests/support/emulatorlines.h"
 
 using namespace Toffee;

@@ -3,8 +3,9 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include "serial/carvera/carverareplies.h"
+#include "serial/machine/machinelink.h"
 #include "serial/transport/linetransport.h"
-#include "serial/machinelink.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
@@ -46,6 +47,7 @@ struct Fixture
 
     Fixture()
     {
+        link.setGrammar(carveraGrammar());
         link.setPollInterval(0);
         link.open();
         if (!QTest::qWaitFor([this] { return link.isOpen(); }))
@@ -161,6 +163,7 @@ private Q_SLOTS:
     {
         ScriptedTransport transport;
         MachineLink link(&transport);
+        link.setGrammar(carveraGrammar());
         std::optional<CommandReply> reply;
         link.send("G90", 1000, [&](const CommandReply &r) { reply = r; });
         QTRY_VERIFY(reply.has_value());
@@ -247,6 +250,7 @@ private Q_SLOTS:
     {
         ScriptedTransport transport;
         MachineLink link(&transport);
+        link.setGrammar(carveraGrammar());
         link.open();
         QTRY_VERIFY(transport.realtime.count('?') >= 2); // about every 200 ms
         QVERIFY(transport.written.isEmpty()); // never as a command line

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <QTest>
 
-#include "serial/machinereplies.h"
+#include "serial/carvera/carverareplies.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -11,9 +11,9 @@
 
 #include <QTest>
 
+#include "serial/carvera/carverareplies.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulator/ptyserver.h"
-#include "serial/machinereplies.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

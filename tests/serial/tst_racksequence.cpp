@@ -8,8 +8,8 @@
 #include "model/numberformat.h"
 #include "model/tooltable.h"
 #include "serial/emulator/carveraemulator.h"
+#include "serial/machine/machinelink.h"
 #include "serial/machineconnection.h"
-#include "serial/machinelink.h"
 #include "serial/racksequence.h"
 
 using namespace Toffee;

@@ -21,7 +21,8 @@
 #include <QTest>
 #include <QTimer>
 
-#include "serial/machinelink.h"
+#include "serial/carvera/carverareplies.h"
+#include "serial/machine/machinelink.h"
 #include "serial/transport/tcptransport.h"
 #include "serial/wire/makeraframe.h"
 #include "tests/support/silentlistener.h"
@@ -308,6 +309,7 @@ private Q_SLOTS:
         TcpTransport transport(peer.address());
         transport.setProtocol(StreamTransport::Protocol::Text);
         MachineLink link(&transport);
+        link.setGrammar(carveraGrammar());
         QVERIFY(openLink(peer, link));
         QSignalSpy closed(&link, &MachineLink::closed);
         std::optional<CommandReply> reply;
@@ -337,6 +339,7 @@ private Q_SLOTS:
         TcpTransport transport(peer.address());
         transport.setProtocol(StreamTransport::Protocol::Text);
         MachineLink link(&transport);
+        link.setGrammar(carveraGrammar());
         QVERIFY(openLink(peer, link));
         std::optional<CommandReply> reply;
         link.send(
@@ -373,6 +376,7 @@ private Q_SLOTS:
         TcpTransport transport(peer.address());
         transport.setProtocol(StreamTransport::Protocol::Text);
         MachineLink link(&transport);
+        link.setGrammar(carveraGrammar());
         QVERIFY(openLink(peer, link));
         std::optional<CommandReply> reply;
         QElapsedTimer clock;
@@ -397,6 +401,7 @@ private Q_SLOTS:
         Peer peer;
         TcpTransport transport(peer.address());
         MachineLink link(&transport);
+        link.setGrammar(carveraGrammar());
         link.setPollInterval(0);
         QSignalSpy opened(&link, &MachineLink::opened);
         QSignalSpy lines(&link, &MachineLink::lineReceived);

@@ -4,8 +4,8 @@
 
 #include <QTest>
 
+#include "serial/carvera/carverareplies.h"
 #include "serial/emulator/carveraemulator.h"
-#include "serial/machinereplies.h"
 
 namespace Toffee::Test {
 

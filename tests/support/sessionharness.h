@@ -11,11 +11,11 @@
 #include <QTest>
 #include <QTimer>
 
+#include "serial/carvera/machinesession.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulator/tcpserver.h"
 #include "serial/emulatortransport.h"
-#include "serial/machinelink.h"
-#include "serial/machinesession.h"
+#include "serial/machine/machinelink.h"
 #include "serial/transport/tcptransport.h"
 
 namespace Toffee::Test {

@@ -1,2 +1,2 @@
 // A model header that reaches up into the serial layer: tests/layers.cmake must refuse it.
-#include "serial/machinesession.h"
+#include "serial/carvera/machinesession.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Which firmware the machine runs, and what follows from it: the stock firmware has neither a break test nor
 // a manual offset, and no offset report (docs/CARVERA.md).
-#include "serial/machinesession.h"
+#include "serial/carvera/machinesession.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// What a controller's replies say, as plain values every controller's words are read into (the Carvera's in
+// serial/carvera/carverareplies.h, grblHAL's in serial/grblhal/grblhalreplies.h).
 #pragma once
 
 #include <array>
@@ -68,29 +70,37 @@ struct BreakTestReading
     double newTlo = 0.0;
 };
 
-// Which firmware the controller runs, from its answer to `version` ("version = %s"). Makera's stock firmware
-// says a plain release number (1.0.1, 1.0.5); the community firmware says whatever its build was named
-// (2.1.0c, 2.1.0c-simulator, Dev-78afb9f, pr-355-78afb9f, vcommunity_1.0.5alpha6, v1.0.3c1.0.6), so anything
-// but a plain release number is the community's. What each can do differs (docs/CARVERA.md); a machine that
-// says nothing is offered only what both do.
+// Which controller and firmware the machine runs, and what it can do, as it said on connecting. The Carvera
+// answers `version` ("version = %s"): Makera's stock firmware a plain release number (1.0.1, 1.0.5), the
+// community firmware whatever its build was named (2.1.0c, 2.1.0c-simulator, Dev-78afb9f, pr-355-78afb9f,
+// vcommunity_1.0.5alpha6, v1.0.3c1.0.6), so anything but a plain release number is the community's
+// (parseVersion, serial/carvera). grblHAL answers `$I` ([VER:…], [OPT:…] with its tool table's size,
+// [FIRMWARE:grblHAL]). What each can do differs (docs/CARVERA.md, docs/GRBLHAL.md); a machine that says
+// nothing is offered only what all do.
 struct FirmwareInfo
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::FirmwareInfo)
 
 public:
-    enum class Kind { Unknown, Community, Stock };
+    enum class Kind { Unknown, Community, Stock, GrblHal };
     Kind kind = Kind::Unknown;
     QString version; // as the machine printed it; empty when it did not say
+    int toolTableSize = 0; // grblHAL: how many tools its own table holds (0: none; then G43.1 applies TLOs)
 
-    // M491.1 compares and halts (stock: a plain calibration that adopts whatever it measures).
-    [[nodiscard]] bool hasBreakTest() const { return kind == Kind::Community; }
-    // M493.3 sets the TLO and M493.4 reports it (stock: both ignored without a word).
+    [[nodiscard]] bool isCarvera() const { return kind == Kind::Community || kind == Kind::Stock; }
+    [[nodiscard]] bool isGrblHal() const { return kind == Kind::GrblHal; }
+    // A break test that compares and stops: the community firmware's M491.1; grblHAL's as Toffee runs it (a
+    // probe compared here). Makera's stock M491.1 is a plain calibration that adopts whatever it measures.
+    [[nodiscard]] bool hasBreakTest() const { return kind == Kind::Community || kind == Kind::GrblHal; }
+    // A TLO can be set by hand: M493.3 (stock: ignored without a word), grblHAL's G10 L1 or G43.1.
     [[nodiscard]] bool hasManualOffset() const { return kind != Kind::Stock; }
-    // "Makera stock firmware 1.0.1", for people.
+    // The controller keeps a table of tools of its own (grblHAL built with N_TOOLS).
+    [[nodiscard]] bool hasToolTable() const { return kind == Kind::GrblHal && toolTableSize > 0; }
+    // The Carvera's automatic tool changer, with its rack of six.
+    [[nodiscard]] bool hasRack() const { return isCarvera(); }
+    // "Makera stock firmware 1.0.1", "grblHAL 1.1f.20260817", for people.
     [[nodiscard]] QString description() const;
 };
-
-[[nodiscard]] std::optional<FirmwareInfo> parseVersion(QByteArrayView line);
 
 // What kind of line the controller sent.
 enum class ReplyKind {
@@ -102,9 +112,6 @@ enum class ReplyKind {
     Other, // anything else: echo, information, or garbage; kept for the console
 };
 
-[[nodiscard]] ReplyKind classifyReply(QByteArrayView line);
-// "Done ATC": the end of a script the firmware ran (M491, M491.1, M6).
-[[nodiscard]] bool isScriptDone(QByteArrayView line);
 // How a command's reply ends, as the controller answers that kind of command (replyEndFor() says which, for
 // the Carvera's words).
 enum class ReplyEnd {
@@ -120,31 +127,5 @@ enum class ReplyEnd {
     // "error:", or when the machine has been silent for kQuietMs.
     Quiet,
 };
-
-// How the Carvera's reply to `line` ends: a script for M491, M491.1 and M6, one line for `version`, possibly
-// nothing for its other shell commands ($X, a lower-case word), "ok" for the rest.
-[[nodiscard]] ReplyEnd replyEndFor(QByteArrayView line);
-// The text after "error:", "ALARM:" or "ERROR:", trimmed.
-[[nodiscard]] QString replyMessage(QByteArrayView line);
-
-[[nodiscard]] std::optional<MachineStatus> parseStatusReport(QByteArrayView line);
-// Refuses values beyond kMaxMachineMillimetres, as no machine has them.
-[[nodiscard]] std::optional<OffsetReport> parseTloReport(QByteArrayView line);
-// Whether `line` is a well-formed offset report whose values no machine can have.
-[[nodiscard]] bool isImplausibleTloReport(QByteArrayView line);
-[[nodiscard]] std::optional<ProbeResult> parseProbeResult(QByteArrayView line);
-// Refuses values beyond kMaxMachineMillimetres, like parseTloReport.
-[[nodiscard]] std::optional<BreakTestReading> parseBreakTest(QByteArrayView line);
-
-// "PROBE_FAIL (3)" for an operator; the firmware's halt reasons 1-16, 21-26 and 41.
-[[nodiscard]] QString haltReasonName(int reason);
-// What the halt means, in words an operator acts on (not the firmware's name).
-[[nodiscard]] QString haltMeaning(int reason);
-// Whether $X clears it (1-16), or it needs a reset (21-26) or a power cycle (41).
-[[nodiscard]] QString haltRecovery(int reason);
-// What a halting line the firmware prints means and what to do, for the lines Toffee knows ("Calibrate
-// fail!", "Probe failed to trigger …", "Machine has not been homed …", "Invalid tool: T…"); empty for others,
-// whose meaning the status report's halt reason gives.
-[[nodiscard]] QString haltLineMeaning(QStringView message);
 
 } // namespace Toffee

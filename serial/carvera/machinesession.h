@@ -9,9 +9,9 @@
 #include "model/limits.h"
 #include "model/recording.h"
 #include "model/result.h"
-#include "serial/machinecontroller.h"
-#include "serial/machinelink.h"
-#include "serial/machinereplies.h"
+#include "serial/carvera/carverareplies.h"
+#include "serial/machine/machinecontroller.h"
+#include "serial/machine/machinelink.h"
 
 namespace Toffee {
 

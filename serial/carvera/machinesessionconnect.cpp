@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Connecting: open the link, flush the controller, wait out a machine still busy with an earlier command,
 // read the status and the offsets, each within its time limit.
-#include "serial/machinesession.h"
+#include "serial/carvera/machinesession.h"
 
 #include <QDateTime>
 #include <QPointer>

@@ -9,7 +9,7 @@
 #include "model/limits.h"
 #include "model/recording.h"
 #include "model/result.h"
-#include "serial/machinereplies.h"
+#include "serial/machine/machinereplies.h"
 
 namespace Toffee {
 

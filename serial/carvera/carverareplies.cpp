@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/machinereplies.h"
+#include "serial/carvera/carverareplies.h"
 
 #include <algorithm>
 #include <cctype>
@@ -200,18 +200,6 @@ bool isImplausibleTloReport(QByteArrayView line)
     return report && !plausible(*report);
 }
 
-TloReading TloReading::from(double tloInForce, const std::optional<OffsetReport> &report)
-{
-    TloReading reading { tloInForce, std::nullopt, std::nullopt };
-    if (report) {
-        reading.referenceMz = report->referenceMz;
-        // At the report's resolution: 0.001 mm either way.
-        if (std::fabs(report->currentMz - report->referenceMz - tloInForce) < 0.0015)
-            reading.currentMz = report->currentMz;
-    }
-    return reading;
-}
-
 std::optional<ProbeResult> parseProbeResult(QByteArrayView line)
 {
     line = line.trimmed();
@@ -356,18 +344,11 @@ std::optional<FirmwareInfo> parseVersion(QByteArrayView line)
     return info;
 }
 
-QString FirmwareInfo::description() const
+ReplyGrammar carveraGrammar()
 {
-    switch (kind) {
-    case Kind::Community:
-        return tr("Community firmware %1").arg(version);
-    case Kind::Stock:
-        return tr("Makera stock firmware %1").arg(version);
-    case Kind::Unknown:
-        break;
-    }
-    return version.isEmpty() ? tr("Unknown firmware (it did not answer \"version\")")
-                             : tr("Unknown firmware %1").arg(version);
+    return { classifyReply,
+        [](QByteArrayView line, const std::optional<MachineStatus> &) { return parseStatusReport(line); },
+        isScriptDone, replyMessage, haltLineMeaning };
 }
 
 } // namespace Toffee

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/machinesession.h"
+#include "serial/carvera/machinesession.h"
 
 #include <cmath>
 
@@ -55,6 +55,7 @@ MachineSession::MachineSession(MachineLink *link, QObject *parent)
     : MachineController(parent)
     , m_link(link)
 {
+    m_link->setGrammar(carveraGrammar());
     connect(m_link, &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
         if (status.tool)
             m_tool = status.tool;

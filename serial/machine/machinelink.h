@@ -9,7 +9,7 @@
 #include <QObject>
 #include <QTimer>
 
-#include "serial/machinereplies.h"
+#include "serial/machine/machinereplies.h"
 
 namespace Toffee {
 
@@ -31,6 +31,27 @@ struct CommandReply
     QString message; // for an operator, on failure
     qint64 droppedLines = 0; // printed before `lines`, and not kept
     [[nodiscard]] bool ok() const { return status == Status::Ok; }
+};
+
+// How one controller's lines read, which MachineLink matches replies by: which line ends a command, which
+// halts the machine, which is a status report and what it says. Each controller gives its own
+// (carveraGrammar(), serial/carvera; GrblHal::grammar(), serial/grblhal); basic() knows only "ok", "error:",
+// "ALARM:" and "<…>" without reading the report.
+struct ReplyGrammar
+{
+    ReplyKind (*classify)(QByteArrayView line) = nullptr;
+    // A status report as the neutral status. `previous`: the last one, for fields a controller sends only
+    // when they change (grblHAL's tool and offset).
+    std::optional<MachineStatus> (*status)(QByteArrayView line, const std::optional<MachineStatus> &previous)
+        = nullptr;
+    // The line that ends a script the controller runs (ReplyEnd::Script).
+    bool (*scriptDone)(QByteArrayView line) = nullptr;
+    // What an "error:" or alarm line says, for people.
+    QString (*message)(QByteArrayView line) = nullptr;
+    // What a halt the controller named means and what to do; empty when the message says it already.
+    QString (*haltMeaning)(QStringView message) = nullptr;
+
+    [[nodiscard]] static ReplyGrammar basic();
 };
 
 // Sends command lines to the controller one at a time and matches each reply to its command (ReplyEnd:
@@ -58,6 +79,9 @@ public:
     explicit MachineLink(LineTransport *transport, QObject *parent = nullptr);
 
     [[nodiscard]] LineTransport *transport() const { return m_transport; }
+    // The controller's words (the controller sets its own when it takes the link).
+    void setGrammar(const ReplyGrammar &grammar) { m_grammar = grammar; }
+    [[nodiscard]] const ReplyGrammar &grammar() const { return m_grammar; }
     [[nodiscard]] bool isOpen() const;
     void open();
     void close();
@@ -116,6 +140,7 @@ private:
     [[nodiscard]] QString haltedMessage() const;
 
     LineTransport *m_transport;
+    ReplyGrammar m_grammar = ReplyGrammar::basic();
     QList<Pending> m_queue;
     std::optional<Pending> m_current;
     QList<QByteArray> m_lines;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/machinecontroller.h"
+#include "serial/machine/machinecontroller.h"
 
 #include <cmath>
 

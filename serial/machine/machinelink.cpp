@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/machinelink.h"
+#include "serial/machine/machinelink.h"
 
 #include "model/numberformat.h"
 #include "serial/transport/linetransport.h"
@@ -15,7 +15,40 @@ QString excerpt(const QString &text)
     return text.size() <= kMaxChars ? text : text.first(kMaxChars) + u'\u2026';
 }
 
+ReplyKind basicKind(QByteArrayView line)
+{
+    const QByteArrayView t = line.trimmed();
+    if (t == "ok")
+        return ReplyKind::Ok;
+    if (t.startsWith("error:"))
+        return ReplyKind::Error;
+    if (t.startsWith("ALARM:"))
+        return ReplyKind::Alarm;
+    if (t.startsWith('<') && t.endsWith('>'))
+        return ReplyKind::Status;
+    return ReplyKind::Other;
+}
+
+QString basicMessage(QByteArrayView line)
+{
+    const QByteArrayView t = line.trimmed();
+    const qsizetype colon = t.indexOf(':');
+    return QString::fromUtf8(colon < 0 ? t : t.sliced(colon + 1).trimmed());
+}
+
 } // namespace
+
+ReplyGrammar ReplyGrammar::basic()
+{
+    return { basicKind,
+        [](QByteArrayView, const std::optional<MachineStatus> &) -> std::optional<MachineStatus> {
+            return std::nullopt;
+        },
+        [](QByteArrayView) { return false; }, basicMessage,
+        [](QStringView) {
+            return QString();
+        } };
+}
 
 MachineLink::MachineLink(LineTransport *transport, QObject *parent)
     : QObject(parent)
@@ -133,9 +166,9 @@ void MachineLink::startNext()
 void MachineLink::handleLine(const QByteArray &line)
 {
     Q_EMIT lineReceived(line);
-    const ReplyKind kind = classifyReply(line);
+    const ReplyKind kind = m_grammar.classify(line);
     if (kind == ReplyKind::Status) {
-        if (auto status = parseStatusReport(line)) {
+        if (auto status = m_grammar.status(line, m_status)) {
             m_status = *status;
             m_statusClock.start();
             Q_EMIT statusChanged(*status);
@@ -145,7 +178,7 @@ void MachineLink::handleLine(const QByteArray &line)
     // Said at once, whether or not a command is waiting: the machine is halted from this line on, not from
     // the next status report (a window would otherwise show "Run" beside a box that says halted).
     if (kind == ReplyKind::Alarm || kind == ReplyKind::HaltError)
-        Q_EMIT alarmRaised(replyMessage(line));
+        Q_EMIT alarmRaised(m_grammar.message(line));
     if (!m_current)
         return; // stray output, kept for the console only
     handleReplyLine(line, kind);
@@ -169,13 +202,13 @@ void MachineLink::handleReplyLine(const QByteArray &line, ReplyKind kind)
     case ReplyKind::Error:
         complete(CommandReply::Status::Refused,
             tr("The machine refused \"%1\": %2")
-                .arg(QString::fromUtf8(m_current->line), excerpt(replyMessage(line))));
+                .arg(QString::fromUtf8(m_current->line), excerpt(m_grammar.message(line))));
         break;
     case ReplyKind::Alarm:
     case ReplyKind::HaltError:
         keep(line);
         if (m_alarm.isEmpty())
-            m_alarm = excerpt(replyMessage(line));
+            m_alarm = excerpt(m_grammar.message(line));
         m_grace.start(int(kAlarmGraceMs * m_timeoutScale));
         break;
     default:
@@ -183,7 +216,7 @@ void MachineLink::handleReplyLine(const QByteArray &line, ReplyKind kind)
         if (end == ReplyEnd::Line && m_alarm.isEmpty()) {
             complete(CommandReply::Status::Ok, {});
         } else if (end == ReplyEnd::Script) {
-            if (isScriptDone(line) && m_alarm.isEmpty())
+            if (m_grammar.scriptDone(line) && m_alarm.isEmpty())
                 complete(CommandReply::Status::Ok, {});
             else
                 m_scriptRunning = true;
@@ -246,7 +279,7 @@ void MachineLink::keep(const QByteArray &line)
 // The firmware's own words, and what they mean when Toffee knows the line.
 QString MachineLink::haltedMessage() const
 {
-    const QString meaning = haltLineMeaning(m_alarm);
+    const QString meaning = m_grammar.haltMeaning(m_alarm);
     const QString said = tr("The machine halted: %1").arg(m_alarm);
     return meaning.isEmpty() ? said : said + u' ' + meaning;
 }
