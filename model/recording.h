@@ -10,7 +10,8 @@
 namespace Toffee {
 
 // What kind of operation a recording comes from: the history library keeps them apart.
-enum class RecordingKind : quint8 { Probe, ManualSet, Restore, BreakTest };
+// Pulled: a TLO read from the controller's own table (grblHAL's), which Toffee did not measure.
+enum class RecordingKind : quint8 { Probe, ManualSet, Restore, BreakTest, Pulled };
 
 // What an operation on the machine means for the tool table and its history, carried by its result so that the
 // window and the CLI record it with one call (ToolTable::record, ToolDocument::record): a tool's new TLO (probed

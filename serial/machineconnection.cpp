@@ -7,6 +7,7 @@
 #include "serial/carvera/machinesession.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulatortransport.h"
+#include "serial/grblhal/grblhalcontroller.h"
 #include "serial/transport/serialporttransport.h"
 #include "serial/transport/tcptransport.h"
 
@@ -85,21 +86,47 @@ std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target)
             machine->setTiming(CarveraEmulator::realisticTiming());
         return transport;
     }
+    // grblHAL speaks plain text only: a frame's bytes are real-time commands to it.
+    const auto protocol = target.resolvedController() == ControllerKind::GrblHal
+        ? StreamTransport::Protocol::Text
+        : target.protocol;
     if (target.isNetwork()) {
         auto transport
             = std::make_unique<TcpTransport>(TcpTransport::Address { target.host, target.tcpPort });
         transport->setConnectTimeoutMs(target.timeoutMs);
-        transport->setProtocol(target.protocol);
+        transport->setProtocol(protocol);
         return transport;
     }
     auto transport = std::make_unique<SerialPortTransport>(target.port, target.baud);
-    transport->setProtocol(target.protocol);
+    transport->setProtocol(protocol);
     return transport;
 }
 
-std::unique_ptr<MachineController> makeController(MachineLink *link)
+std::unique_ptr<MachineController> makeController(MachineLink *link, ControllerKind kind)
 {
+    if (kind == ControllerKind::GrblHal)
+        return std::make_unique<GrblHalController>(link);
     return std::make_unique<MachineSession>(link);
+}
+
+std::optional<ControllerKind> controllerKindFromName(const QString &name)
+{
+    if (name == u"auto")
+        return ControllerKind::Auto;
+    if (name == u"carvera")
+        return ControllerKind::Carvera;
+    if (name == u"grblhal")
+        return ControllerKind::GrblHal;
+    return std::nullopt;
+}
+
+ControllerKind ConnectionTarget::resolvedController() const
+{
+    if (emulator)
+        return ControllerKind::Carvera;
+    if (controller != ControllerKind::Auto)
+        return controller;
+    return isNetwork() && tcpPort == kGrblHalTcpPort ? ControllerKind::GrblHal : ControllerKind::Carvera;
 }
 
 QString ConnectionTarget::name() const
@@ -118,7 +145,11 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
     m_transport = makeTransport(target);
     m_link = std::make_unique<MachineLink>(m_transport.get());
     m_link->setTimeoutOverride(target.timeoutMs);
-    m_session = makeController(m_link.get());
+    m_session = makeController(m_link.get(), target.resolvedController());
+    if (target.setter)
+        m_session->setToolSetter(*target.setter);
+    if (!m_session->keepsReference())
+        m_session->adoptReference(target.reference);
     connect(m_link.get(), &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
         setHalt(status.isAlarm(), status.haltReason);
         Q_EMIT statusChanged(status);
@@ -256,6 +287,20 @@ bool MachineConnection::status(Done done)
     return perform(
         tr("Reading the status…"), true, [](MachineController *s, Done d) { s->status(std::move(d)); },
         std::move(done));
+}
+
+bool MachineConnection::readToolTable(Done done)
+{
+    return perform(
+        tr("Reading the controller's tool table…"), false,
+        [](MachineController *s, Done d) { s->readToolTable(std::move(d)); }, std::move(done));
+}
+
+bool MachineConnection::writeToolTable(const QList<ControllerTool> &tools, Done done)
+{
+    return perform(
+        tr("Writing the controller's tool table…"), false,
+        [tools](MachineController *s, Done d) { s->writeToolTable(tools, std::move(d)); }, std::move(done));
 }
 
 bool MachineConnection::report(Done done)

@@ -5,6 +5,7 @@
 
 #include <QObject>
 
+#include "model/toolsetter.h"
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
 #include "serial/transport/tcptransport.h"
@@ -13,6 +14,15 @@ namespace Toffee {
 
 class CarveraEmulator;
 class LineTransport;
+
+// Which controller the machine runs. Auto: grblHAL on its network port (23), the Carvera otherwise. It is
+// not found by asking, because each one's question harms the other: the frame Toffee asks a Carvera with
+// toggles grblHAL's mist coolant (0xA1 is a real-time command there), and plain text silences Makera's framed
+// firmware over Wi-Fi. The controller chosen then checks what answers ($I must say grblHAL; a Carvera must
+// answer `version`) and says which to choose when it is the other.
+enum class ControllerKind { Auto, Carvera, GrblHal };
+// grblHAL's network builds listen for raw TCP ("telnet") here.
+inline constexpr quint16 kGrblHalTcpPort = 23;
 
 // Where to find the machine: a serial port at a baud rate, a host on the network (Wi-Fi), or the built-in
 // emulator.
@@ -31,8 +41,15 @@ struct ConnectionTarget
     quint16 tcpPort = TcpTransport::kDefaultPort;
     // Plain text or Makera's frames, found on connecting unless forced (serial port and network alike).
     StreamTransport::Protocol protocol = StreamTransport::Protocol::Auto;
+    ControllerKind controller = ControllerKind::Auto;
+    // For a controller whose probing cycle is Toffee's (grblHAL): where its tool setter is.
+    std::optional<ToolSetter> setter;
+    // For a controller that keeps no reference tool (grblHAL): the one Toffee kept for this machine.
+    std::optional<double> reference;
 
     [[nodiscard]] bool isNetwork() const { return !emulator && !host.isEmpty(); }
+    // The controller Auto stands for here; the built-in emulator is a Carvera.
+    [[nodiscard]] ControllerKind resolvedController() const;
     // "192.168.1.57:2222", "/dev/ttyACM0" or "emulator", as the history and the settings name it.
     [[nodiscard]] QString name() const;
 };
@@ -40,8 +57,11 @@ struct ConnectionTarget
 // The transport a target names: a serial port at its baud rate, or a new built-in emulator. The window's
 // connection and the CLI both make theirs here.
 [[nodiscard]] std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target);
-// The controller that speaks to the machine on `link`: the Carvera's (MachineSession), the only one yet.
-[[nodiscard]] std::unique_ptr<MachineController> makeController(MachineLink *link);
+// The controller that speaks to the machine on `link`: the Carvera's (MachineSession) or grblHAL's.
+[[nodiscard]] std::unique_ptr<MachineController> makeController(
+    MachineLink *link, ControllerKind kind = ControllerKind::Carvera);
+// "auto", "carvera", "grblhal" (toffee-cli --controller); nothing for another word.
+[[nodiscard]] std::optional<ControllerKind> controllerKindFromName(const QString &name);
 
 // The window's one machine: it builds the transport, the link and the session for a target, keeps them for
 // the connection's lifetime, and says what state the link is in. No widgets: the panels watch it.
@@ -79,6 +99,9 @@ public:
     using Done = MachineController::Done;
     bool status(Done done); // also while halted: it only reads
     bool report(Done done);
+    // The controller's own tool table (grblHAL's), read, or written and read back.
+    bool readToolTable(Done done);
+    bool writeToolTable(const QList<ControllerTool> &tools, Done done);
     bool selectTool(int tool, Done done);
     // With `storedTlo`, a manual change takes it instead of probing (MachineController::changeTool).
     bool changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt);

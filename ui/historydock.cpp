@@ -71,7 +71,7 @@ QString kindText(EventKind kind)
     case EventKind::Restore:
         return HistoryDock::tr("restored");
     case EventKind::Import:
-        return HistoryDock::tr("imported");
+        return HistoryDock::tr("read in");
     }
     return {};
 }

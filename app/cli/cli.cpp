@@ -33,6 +33,11 @@ The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator
                  COMMAND
   --host                     the machine over Wi-Fi: its console on TCP port PORT (default 2222)
   --protocol auto|text|framed  plain text, or Makera's frames (its firmware from 1.0.4); auto finds out
+  --controller auto|carvera|grblhal
+                             the controller the machine runs; auto: grblHAL on TCP port 23, else the Carvera
+  --setter X,Y,ZMIN[,SEEK,LATCH[,BACKOFF]]
+                             grblHAL: the tool setter in machine coordinates (mm), the lowest Z to search to,
+                             the feeds (mm/min, default 500 and 40) and the back-off between touches (2 mm)
   status                     state, active tool, TLO, positions
   report                     the tool length offsets (M493.4)
   probe                      measure the current tool on the tool setter (M491); the machine moves
@@ -55,6 +60,10 @@ The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator
                              when it was measured against the machine's reference
   unlock                     clear a halt ($X)
   link-test --count N        N round trips; median, p99 and max in milliseconds
+  push-offsets --table FILE  grblHAL: every tool of the table with a TLO into the controller's own table
+                             (G10 L1 P Z R), read back with $#; tools beyond its table refused by name
+  pull-offsets --table FILE  grblHAL: the controller's table into the file (new tools added; a changed TLO
+                             marked as read from the controller, with a history event)
   probe, break-test, set-tlo, change-tool, restore, measure-rack and check-rack record every measurement in the
   history library (--machine NAME, default Carvera), and warn when a probe is off its tool's wear trend
 
@@ -117,7 +126,7 @@ QString usage()
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
     u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s, u"library"_s,
     u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s, u"host"_s,
-    u"protocol"_s, u"seconds"_s, u"discovery-port"_s };
+    u"protocol"_s, u"seconds"_s, u"discovery-port"_s, u"controller"_s, u"setter"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"version"_s, u"emulator"_s, u"no-history"_s,
     u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s };
 

@@ -32,7 +32,7 @@ namespace {
 
 const QStringList kMachineCommands = { u"status"_s, u"report"_s, u"probe"_s, u"break-test"_s, u"set-tlo"_s,
     u"select-tool"_s, u"change-tool"_s, u"restore"_s, u"unlock"_s, u"link-test"_s, u"rack"_s,
-    u"measure-rack"_s, u"check-rack"_s };
+    u"measure-rack"_s, u"check-rack"_s, u"push-offsets"_s, u"pull-offsets"_s };
 
 ExitCode exitCodeFor(SessionResult::Outcome outcome)
 {
@@ -191,6 +191,9 @@ private:
     using Done = MachineConnection::Done;
 
     void operate();
+    // push-offsets: the table's TLOs into the controller's own table; pull-offsets: back into the file.
+    bool pushOffsets();
+    void pulled(const SessionResult &r);
     void linkTest();
     // Sets the table's TLO for the tool back on the machine, when it was measured against the machine's
     // reference.
@@ -375,6 +378,10 @@ void MachineRun::operate()
         started = c.probe(recorded());
     else if (command == u"change-tool")
         started = c.changeTool(m_options.tool, recorded(), storedTloForChange(m_call, m_options, c));
+    else if (isRackCommand(command) && !c.firmware().hasRack())
+        finishWith(SessionResult::failed(SessionResult::Outcome::Refused,
+            u"%1 has no tool rack; %2 is for the Carvera's. Change tools with change-tool N."_s.arg(
+                c.firmware().description(), command)));
     else if (isRackCommand(command))
         started = startRackCommand(
             m_call, m_options, c, [this](const SessionResult &r) { return record(r); },
@@ -398,12 +405,113 @@ void MachineRun::operate()
         started = c.unlock(status, brokenToolTloInSpindle());
     else if (command == u"link-test")
         linkTest();
+    else if (command == u"push-offsets")
+        started = pushOffsets();
+    else if (command == u"pull-offsets")
+        started = c.readToolTable([this](const SessionResult &r) { pulled(r); });
     if (!started) {
         SessionResult refused;
         refused.outcome = SessionResult::Outcome::MachineError;
         refused.message = c.haltedMessage();
         finishWith(refused);
     }
+}
+
+bool MachineRun::pushOffsets()
+{
+    const double scale = m_options.table->units() == Units::Inch ? 25.4 : 1.0;
+    QList<ControllerTool> tools;
+    for (const Tool &t : m_options.table->tools()) {
+        if (t.measuredTlo)
+            tools.append({ t.number, *t.measuredTlo * scale, std::max(0.0, t.totalRadius() * scale) });
+    }
+    if (tools.isEmpty()) {
+        finishWith(SessionResult::failed(SessionResult::Outcome::Refused,
+            u"%1 holds no tool with a TLO: nothing to write."_s.arg(m_options.tablePath)));
+        return true;
+    }
+    // What the controller held before, to say what changed.
+    const QList<ControllerTool> before
+        = m_connection.connectResult().controllerTools.value_or(QList<ControllerTool> {});
+    return m_connection.writeToolTable(tools, [this, tools, before](const SessionResult &r) {
+        if (!r.ok())
+            return finishWith(r);
+        QJsonArray written;
+        for (const ControllerTool &t : tools) {
+            const auto found = std::find_if(
+                before.cbegin(), before.cend(), [&t](const ControllerTool &b) { return b.tool == t.tool; });
+            const bool known = found != before.cend();
+            const double was = known ? found->tlo : 0.0;
+            written.append(QJsonObject { { u"tool"_s, t.tool }, { u"tlo"_s, t.tlo },
+                { u"was"_s, known ? QJsonValue(was) : QJsonValue() } });
+            if (!m_call.json) {
+                m_call.out << "T" << t.tool << ": " << mm(t.tlo) << " mm";
+                if (known && std::fabs(was - t.tlo) > 0.0005)
+                    m_call.out << " (was " << mm(was) << ")";
+                else if (known)
+                    m_call.out << " (unchanged)";
+                m_call.out << Qt::endl;
+            }
+        }
+        if (m_call.json)
+            printJson(m_call, QJsonObject { { u"written"_s, written }, { u"read_back"_s, u"agrees"_s } });
+        else
+            m_call.out << tools.size()
+                       << " tools written into the controller's table and read back ($#): all agree."
+                       << Qt::endl;
+        finishWith(r);
+    });
+}
+
+// pull-offsets: each entry of the controller's table that holds a TLO goes into the file: a new tool added,
+// a changed TLO taken as set on the controller (not measured by Toffee: TloSource::Manual, with no
+// reference), with a history event. An entry of 0.000 is an empty one, left alone.
+void MachineRun::pulled(const SessionResult &r)
+{
+    if (!r.ok() || !r.controllerTools)
+        return finishWith(r);
+    const double scale = m_options.table->units() == Units::Inch ? 1.0 / 25.4 : 1.0;
+    QJsonArray changes;
+    int unchanged = 0;
+    int empty = 0;
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    for (const ControllerTool &entry : *r.controllerTools) {
+        if (std::fabs(entry.tlo) < 0.0005) {
+            ++empty;
+            continue;
+        }
+        const double tlo = entry.tlo * scale;
+        const Tool *tool = m_options.table->find(entry.tool);
+        if (tool && tool->measuredTlo && std::fabs(*tool->measuredTlo - tlo) < 0.0005) {
+            ++unchanged;
+            continue;
+        }
+        const bool known = tool && tool->measuredTlo;
+        const double was = known ? *tool->measuredTlo : 0.0;
+        const bool isNew = tool == nullptr;
+        SessionResult one;
+        one.tool = entry.tool;
+        one.tlo = TloReading { tlo, std::nullopt, std::nullopt };
+        one.recording = Recording { entry.tool, tlo, TloSource::Manual, std::nullopt, std::nullopt, now,
+            RecordingKind::Pulled };
+        if (!record(one))
+            return finishWith(SessionResult::failed(SessionResult::Outcome::MachineError, {}), true);
+        changes.append(QJsonObject { { u"tool"_s, entry.tool }, { u"tlo"_s, tlo },
+            { u"was"_s, known ? QJsonValue(was) : QJsonValue() }, { u"new_tool"_s, isNew } });
+        if (!m_call.json) {
+            m_call.out << "T" << entry.tool << ": " << mm(tlo) << (isNew ? " (new tool)" : "");
+            if (known)
+                m_call.out << " (was " << mm(was) << ")";
+            m_call.out << " read from the controller" << Qt::endl;
+        }
+    }
+    if (m_call.json)
+        printJson(m_call,
+            QJsonObject { { u"changed"_s, changes }, { u"unchanged"_s, unchanged }, { u"empty"_s, empty } });
+    else
+        m_call.out << changes.size() << " changed, " << unchanged << " unchanged, " << empty
+                   << " empty entries left alone." << Qt::endl;
+    finishWith(SessionResult {});
 }
 
 // The table's TLO for the tool in the spindle, which a break test compares with (none without --table).

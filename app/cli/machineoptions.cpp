@@ -61,6 +61,22 @@ Result<void> readTarget(const Invocation &call, MachineOptions &o)
             return Error { u"--protocol is for --port and --host: the built-in emulator has no wire."_s };
         o.target.protocol = *protocol;
     }
+    if (call.has(u"controller"_s)) {
+        const auto kind = controllerKindFromName(call.option(u"controller"_s).trimmed());
+        if (!kind)
+            return Error { u"--controller must be auto, carvera or grblhal."_s };
+        if (o.target.emulator && *kind == ControllerKind::GrblHal)
+            return Error {
+                u"the built-in emulator is a Carvera; grblHAL is reached with --port or --host."_s
+            };
+        o.target.controller = *kind;
+    }
+    if (call.has(u"setter"_s)) {
+        auto setter = ToolSetter::parse(call.option(u"setter"_s).trimmed());
+        if (!setter)
+            return Error { u"--setter: "_s + setter.error().message };
+        o.target.setter = setter.value();
+    }
     if (call.has(u"baud"_s)) {
         const auto b = parseInteger(call.option(u"baud"_s).toUtf8());
         if (!b || *b < 50 || *b > 4000000)
@@ -167,7 +183,9 @@ Result<void> readRack(const Invocation &call, MachineOptions &o)
             return Error { u"--stale-days must be a whole number of days from 0 to 3650."_s };
         o.staleDays = int(*days);
     }
-    const bool needsTable = isRackCommand(call.command) || (call.command == u"change-tool" && o.useStoredTlo);
+    const bool offsets = call.command == u"push-offsets" || call.command == u"pull-offsets";
+    const bool needsTable
+        = isRackCommand(call.command) || offsets || (call.command == u"change-tool" && o.useStoredTlo);
     if (needsTable && !o.table)
         return Error { u"%1 reads the stored TLOs from the table: name it with --table FILE."_s.arg(
             call.command == u"change-tool" ? u"change-tool --use-stored-tlo"_s : call.command) };
@@ -192,7 +210,7 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
     // Only what records needs the library: status, report, select-tool, unlock and link-test work without
     // one.
     static const QStringList kRecording = { u"probe"_s, u"break-test"_s, u"set-tlo"_s, u"change-tool"_s,
-        u"restore"_s, u"measure-rack"_s, u"check-rack"_s };
+        u"restore"_s, u"measure-rack"_s, u"check-rack"_s, u"pull-offsets"_s };
     if (!kRecording.contains(call.command))
         return {};
     o.machine = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
@@ -210,7 +228,10 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
         const QString connection = o.target.emulator ? u"emulator"_s
             : o.target.isNetwork()                   ? o.target.name()
                                                      : o.target.port + u' ' + QString::number(o.target.baud);
-        if (auto added = o.library->addMachine({ o.machine, u"carvera"_s, connection }); !added) {
+        // grblHAL's programs use G43 H after M6 as LinuxCNC's do.
+        const QString dialect
+            = o.target.resolvedController() == ControllerKind::GrblHal ? u"linuxcnc"_s : u"carvera"_s;
+        if (auto added = o.library->addMachine({ o.machine, dialect, connection }); !added) {
             // Another program holds the library for now: the machine may still measure, and what it measures
             // is kept on this computer and sent later, as any measurement the library cannot take now.
             if (added.error().code != Library::kBusy)
@@ -220,6 +241,40 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
                         "free."_s
                      << Qt::endl;
         }
+    }
+    return {};
+}
+
+// A controller that keeps no reference tool (grblHAL) is given the one Toffee kept for the machine: the
+// newest probe's in the history, else the newest measured tool's in the table. Without either, the next probe
+// makes its tool the reference.
+Result<void> readReference(const Invocation &call, MachineOptions &o)
+{
+    Q_UNUSED(call)
+    if (o.target.resolvedController() != ControllerKind::GrblHal)
+        return {};
+    if (o.library) {
+        HistoryQuery query;
+        query.machine = o.machine;
+        query.kinds = { EventKind::Probe };
+        if (const auto events = o.library->history(query)) {
+            for (auto it = events.value().crbegin(); it != events.value().crend(); ++it) {
+                if (it->referenceMz) {
+                    o.target.reference = it->referenceMz;
+                    return {};
+                }
+            }
+        }
+    }
+    if (o.table) {
+        const Tool *newest = nullptr;
+        for (const Tool &tool : o.table->tools()) {
+            if (tool.referenceMz && tool.measuredAt.isValid()
+                && (!newest || tool.measuredAt > newest->measuredAt))
+                newest = &tool;
+        }
+        if (newest)
+            o.target.reference = newest->referenceMz;
     }
     return {};
 }
@@ -284,7 +339,7 @@ Result<MachineOptions> readMachineOptions(const Invocation &call)
 {
     MachineOptions o;
     for (auto read : { countArguments, choosePort, readTool, readTarget, readCommandOptions, openTable,
-             readRack, checkRestore, openHistory }) {
+             readRack, checkRestore, openHistory, readReference }) {
         if (auto r = read(call, o); !r)
             return r.error();
     }

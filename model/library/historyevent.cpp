@@ -64,6 +64,9 @@ HistoryEvent historyEvent(const Recording &r, const QString &machine)
     case RecordingKind::BreakTest:
         e.kind = EventKind::BreakTest;
         break;
+    case RecordingKind::Pulled:
+        e.kind = EventKind::Import; // read in from the controller's own table
+        break;
     }
     // A break test leaves the tool at the TLO it measured when it passed; a failed one changes nothing.
     e.tlo = r.kind == RecordingKind::BreakTest ? (r.breakTestFailed.value_or(false) ? r.oldTlo : r.newTlo)

@@ -13,6 +13,8 @@ namespace Toffee {
 
 // What happened to a tool's length: measured on the tool setter, break-tested, set by hand, restored from the
 // table, or imported from elsewhere. Stored by these names (docs/LIBRARY.md).
+// Import: a TLO read in from elsewhere, as from a controller's own table (grblHAL's, pull-offsets), set there
+// by someone else and not measured by Toffee.
 enum class EventKind { Probe, BreakTest, ManualSet, Restore, Import };
 
 [[nodiscard]] QString eventKindName(

@@ -63,6 +63,13 @@ std::optional<Recording> recordingOf(const HistoryEvent &event)
         r.source = event.kind == EventKind::ManualSet ? TloSource::Manual : TloSource::Probe;
         r.kind = event.kind == EventKind::ManualSet ? RecordingKind::ManualSet : RecordingKind::Probe;
         return r;
+    case EventKind::Import:
+        if (!event.tlo)
+            return std::nullopt;
+        r.tlo = event.tlo;
+        r.source = TloSource::Manual; // set on the controller, not measured by Toffee
+        r.kind = RecordingKind::Pulled;
+        return r;
     case EventKind::BreakTest:
         if (!event.failed)
             return std::nullopt;
@@ -70,8 +77,7 @@ std::optional<Recording> recordingOf(const HistoryEvent &event)
         r.kind = RecordingKind::BreakTest;
         return r;
     case EventKind::Restore:
-    case EventKind::Import:
-        return std::nullopt; // the table already holds what was restored or imported
+        return std::nullopt; // the table already holds what was restored
     }
     return std::nullopt;
 }

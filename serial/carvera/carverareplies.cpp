@@ -348,7 +348,7 @@ ReplyGrammar carveraGrammar()
 {
     return { classifyReply,
         [](QByteArrayView line, const std::optional<MachineStatus> &) { return parseStatusReport(line); },
-        isScriptDone, replyMessage, haltLineMeaning };
+        isScriptDone, replyMessage, haltLineMeaning, nullptr };
 }
 
 } // namespace Toffee

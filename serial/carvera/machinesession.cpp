@@ -69,29 +69,6 @@ QByteArray MachineSession::number(double value)
     return numberBytes(value, NumberFormat::command());
 }
 
-void MachineSession::refuse(Done done, const QString &message)
-{
-    SessionResult result;
-    result.outcome = SessionResult::Outcome::Refused;
-    result.message = message;
-    QTimer::singleShot(0, [done, result] { done(result); });
-}
-
-SessionResult MachineSession::failure(const CommandReply &reply)
-{
-    SessionResult result;
-    result.message = reply.message;
-    switch (reply.status) {
-    case CommandReply::Status::Timeout:
-    case CommandReply::Status::LinkLost:
-        result.outcome = SessionResult::Outcome::LinkFailure;
-        break;
-    default:
-        result.outcome = SessionResult::Outcome::MachineError;
-    }
-    return result;
-}
-
 void MachineSession::run(const QByteArray &command, int timeoutMs, Done done,
     std::function<void(const CommandReply &)> next, ReplyEnd end)
 {
@@ -188,33 +165,6 @@ void MachineSession::status(Done done)
 void MachineSession::report(Done done)
 {
     readOffsets(done, SessionResult {});
-}
-
-MachineSession::Done MachineSession::recording(Done done, RecordingKind kind)
-{
-    return [done = std::move(done), kind](const SessionResult &r) {
-        if (!r.ok() || !r.tlo || !r.tool || *r.tool < 0)
-            return done(r);
-        SessionResult recorded = r;
-        const TloSource source = kind == RecordingKind::Probe ? TloSource::Probe : TloSource::Manual;
-        recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, r.tlo->knownReferenceMz(),
-            std::nullopt, QDateTime::currentDateTimeUtc(), kind, r.tlo->knownCurrentMz() };
-        done(recorded);
-    };
-}
-
-MachineSession::Done MachineSession::recordingVerdict(Done done)
-{
-    return [done = std::move(done)](const SessionResult &r) {
-        const bool broken = r.outcome == SessionResult::Outcome::ToolBroken;
-        if (!r.breakTest || !r.tool || *r.tool < 0 || !(r.ok() || broken))
-            return done(r);
-        SessionResult recorded = r;
-        recorded.recording = Recording { *r.tool, std::nullopt, TloSource::Probe, std::nullopt, broken,
-            QDateTime::currentDateTimeUtc(), RecordingKind::BreakTest, std::nullopt, r.tolerance,
-            r.breakTest->oldTlo, r.breakTest->newTlo };
-        done(recorded);
-    };
 }
 
 namespace {

@@ -82,7 +82,6 @@ private:
     // Why an operation this firmware does not have is refused, or nothing.
     [[nodiscard]] std::optional<QString> unsupported(bool breakTest) const;
     void runBreakTest(double tolerance, Done done, std::optional<double> storedTlo);
-    void awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next);
     // Polls until the machine is no longer running a command (a late answer of a timed-out command would
     // otherwise be taken for the next command's), then lets stray output settle. `next` gets false on
     // give-up.
@@ -91,11 +90,7 @@ private:
     // closed).
     [[nodiscard]] Done withDeadline(int limitMs, Done done);
     [[nodiscard]] static SessionResult stayedBusy(const QString &state, qint64 waitedMs);
-    static void refuse(Done done, const QString &message);
-    static SessionResult failure(const CommandReply &reply);
     // `done`, with the recording a successful result carries: the TLO as `source`, or a break test's verdict.
-    [[nodiscard]] static Done recording(Done done, RecordingKind kind);
-    [[nodiscard]] static Done recordingVerdict(Done done);
     static QByteArray number(double value);
 
     MachineLink *m_link;

@@ -28,25 +28,6 @@ QString seconds(qint64 ms)
 
 } // namespace
 
-void MachineSession::awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next)
-{
-    auto *timer = new QTimer(this);
-    timer->setSingleShot(true);
-    timer->setTimerType(Qt::PreciseTimer);
-    auto connection = std::make_shared<QMetaObject::Connection>();
-    auto finish = [timer, connection, next](std::optional<MachineStatus> status) {
-        QObject::disconnect(*connection);
-        timer->stop();
-        timer->deleteLater();
-        next(status);
-    };
-    *connection = connect(
-        m_link, &MachineLink::statusChanged, timer, [finish](const MachineStatus &s) { finish(s); });
-    connect(timer, &QTimer::timeout, timer, [finish] { finish(std::nullopt); });
-    timer->start(timeoutMs);
-    m_link->requestStatus();
-}
-
 void MachineSession::awaitIdle(qint64 deadlineMs, std::function<void(bool, const QString &)> next)
 {
     awaitStatus(2000, [this, deadlineMs, next](std::optional<MachineStatus> status) {
@@ -88,43 +69,7 @@ void MachineSession::connectToMachine(Done done)
             });
         });
     };
-    if (m_link->isOpen()) {
-        afterOpen();
-        return;
-    }
-    auto opened = std::make_shared<QMetaObject::Connection>();
-    auto failed = std::make_shared<QMetaObject::Connection>();
-    auto *guard = new QTimer(this);
-    guard->setSingleShot(true);
-    auto cleanup = [opened, failed, guard] {
-        QObject::disconnect(*opened);
-        QObject::disconnect(*failed);
-        guard->stop();
-        guard->deleteLater();
-    };
-    *opened = connect(m_link, &MachineLink::opened, guard, [cleanup, afterOpen] {
-        cleanup();
-        afterOpen();
-    });
-    auto fail = [cleanup, done](const QString &message) {
-        cleanup();
-        SessionResult result;
-        result.outcome = SessionResult::Outcome::LinkFailure;
-        result.message = message;
-        done(result);
-    };
-    *failed = connect(m_link->transport(), &LineTransport::errorOccurred, guard, fail);
-    // A backstop: the transport says itself why it did not open, within its own limit.
-    const int openLimitMs = m_link->transport()->openLimitMs() + 1000;
-    connect(guard, &QTimer::timeout, guard, [this, fail, openLimitMs] {
-        fail(tr("The link to %1 did not open within %2 s. Check the machine and the connection, then try "
-                "again.")
-                 .arg(m_link->transport()->description())
-                 .arg(openLimitMs / 1000));
-    });
-    guard->setTimerType(Qt::PreciseTimer);
-    guard->start(openLimitMs);
-    m_link->open();
+    openLink(done, afterOpen);
 }
 
 void MachineSession::readStatusAfterConnect(Done done)

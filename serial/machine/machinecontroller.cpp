@@ -3,7 +3,13 @@
 
 #include <cmath>
 
+#include <QDateTime>
+#include <QPointer>
+#include <QTimer>
+
 #include "model/numberformat.h"
+#include "serial/machine/machinelink.h"
+#include "serial/transport/linetransport.h"
 
 namespace Toffee {
 
@@ -18,6 +24,129 @@ QString toleranceText(double tolerance)
 } // namespace
 
 MachineController::~MachineController() = default;
+
+void MachineController::readToolTable(Done done)
+{
+    refuse(std::move(done),
+        tr("%1 keeps no tool table of its own: its tools' TLOs are Toffee's table's alone.")
+            .arg(firmware().description()));
+}
+
+void MachineController::writeToolTable(const QList<ControllerTool> &tools, Done done)
+{
+    Q_UNUSED(tools)
+    readToolTable(std::move(done));
+}
+
+void MachineController::refuse(Done done, const QString &message)
+{
+    SessionResult result;
+    result.outcome = SessionResult::Outcome::Refused;
+    result.message = message;
+    QTimer::singleShot(0, [done, result] { done(result); });
+}
+
+SessionResult MachineController::failure(const CommandReply &reply)
+{
+    SessionResult result;
+    result.message = reply.message;
+    switch (reply.status) {
+    case CommandReply::Status::Timeout:
+    case CommandReply::Status::LinkLost:
+        result.outcome = SessionResult::Outcome::LinkFailure;
+        break;
+    default:
+        result.outcome = SessionResult::Outcome::MachineError;
+    }
+    return result;
+}
+
+MachineController::Done MachineController::recording(Done done, RecordingKind kind)
+{
+    return [done = std::move(done), kind](const SessionResult &r) {
+        if (!r.ok() || !r.tlo || !r.tool || *r.tool < 0)
+            return done(r);
+        SessionResult recorded = r;
+        const TloSource source = kind == RecordingKind::Probe ? TloSource::Probe : TloSource::Manual;
+        recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, r.tlo->knownReferenceMz(),
+            std::nullopt, QDateTime::currentDateTimeUtc(), kind, r.tlo->knownCurrentMz() };
+        done(recorded);
+    };
+}
+
+MachineController::Done MachineController::recordingVerdict(Done done)
+{
+    return [done = std::move(done)](const SessionResult &r) {
+        const bool broken = r.outcome == SessionResult::Outcome::ToolBroken;
+        if (!r.breakTest || !r.tool || *r.tool < 0 || !(r.ok() || broken))
+            return done(r);
+        SessionResult recorded = r;
+        recorded.recording = Recording { *r.tool, std::nullopt, TloSource::Probe, std::nullopt, broken,
+            QDateTime::currentDateTimeUtc(), RecordingKind::BreakTest, std::nullopt, r.tolerance,
+            r.breakTest->oldTlo, r.breakTest->newTlo };
+        done(recorded);
+    };
+}
+
+void MachineController::awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next)
+{
+    auto *timer = new QTimer(this);
+    timer->setSingleShot(true);
+    timer->setTimerType(Qt::PreciseTimer);
+    auto connection = std::make_shared<QMetaObject::Connection>();
+    auto finish = [timer, connection, next](std::optional<MachineStatus> status) {
+        QObject::disconnect(*connection);
+        timer->stop();
+        timer->deleteLater();
+        next(status);
+    };
+    *connection = connect(
+        link(), &MachineLink::statusChanged, timer, [finish](const MachineStatus &s) { finish(s); });
+    connect(timer, &QTimer::timeout, timer, [finish] { finish(std::nullopt); });
+    timer->start(timeoutMs);
+    link()->requestStatus();
+}
+
+void MachineController::openLink(Done done, std::function<void()> afterOpen)
+{
+    if (link()->isOpen()) {
+        afterOpen();
+        return;
+    }
+    auto opened = std::make_shared<QMetaObject::Connection>();
+    auto failed = std::make_shared<QMetaObject::Connection>();
+    auto *guard = new QTimer(this);
+    guard->setSingleShot(true);
+    auto cleanup = [opened, failed, guard] {
+        QObject::disconnect(*opened);
+        QObject::disconnect(*failed);
+        guard->stop();
+        guard->deleteLater();
+    };
+    *opened = connect(link(), &MachineLink::opened, guard, [cleanup, afterOpen] {
+        cleanup();
+        afterOpen();
+    });
+    auto fail = [cleanup, done](const QString &message) {
+        cleanup();
+        SessionResult result;
+        result.outcome = SessionResult::Outcome::LinkFailure;
+        result.message = message;
+        done(result);
+    };
+    *failed = connect(link()->transport(), &LineTransport::errorOccurred, guard, fail);
+    // A backstop: the transport says itself why it did not open, within its own limit.
+    const int openLimitMs = link()->transport()->openLimitMs() + 1000;
+    connect(guard, &QTimer::timeout, guard, [this, fail, openLimitMs] {
+        fail(tr("The link to %1 did not open within %2 s. Check the machine and the connection, then try "
+                "again.")
+                 .arg(link()->transport()->description())
+                 .arg(openLimitMs / 1000));
+    });
+    guard->setTimerType(Qt::PreciseTimer);
+    guard->start(openLimitMs);
+    link()->open();
+}
 
 Result<void> MachineController::validateTolerance(double tolerance)
 {

@@ -4,16 +4,19 @@
 #include <functional>
 #include <optional>
 
+#include <QList>
 #include <QObject>
 
 #include "model/limits.h"
 #include "model/recording.h"
 #include "model/result.h"
+#include "model/toolsetter.h"
 #include "serial/machine/machinereplies.h"
 
 namespace Toffee {
 
 class MachineLink;
+struct CommandReply;
 
 // One operation's outcome, for an operator: success with the new values, or a failure with what to do.
 struct SessionResult
@@ -32,11 +35,20 @@ struct SessionResult
     std::optional<BreakTestReading> breakTest;
     double tolerance = 0.0;
     std::optional<MachineStatus> status;
+    // The controller's own tool table, as read back (a controller that keeps one: grblHAL).
+    std::optional<QList<ControllerTool>> controllerTools;
     // What the table should record of this result (a TLO with its source, or a break test's verdict), when
     // the operation measured or set something for a tool in the spindle.
     std::optional<Recording> recording;
 
     [[nodiscard]] bool ok() const { return outcome == Outcome::Success; }
+    [[nodiscard]] static SessionResult failed(Outcome outcome, const QString &message)
+    {
+        SessionResult result;
+        result.outcome = outcome;
+        result.message = message;
+        return result;
+    }
 };
 
 // What the window and the CLI ask of a machine, whatever controller it runs: connect, read the status and the
@@ -93,9 +105,41 @@ public:
     // Stops whatever the machine is doing at once; it halts, and Unlock follows.
     virtual void abort() = 0;
 
+    // What only some controllers need or have; the others' defaults say so. A controller whose probing cycle
+    // is Toffee's (grblHAL) must be told where the setter is; one whose firmware keeps no reference tool
+    // (grblHAL) is given the reference Toffee kept for the machine (the first tool measured on it), before
+    // connecting: its TLOs are measured against it, and a probe without one makes the tool the reference.
+    [[nodiscard]] virtual bool needsToolSetter() const { return false; }
+    virtual void setToolSetter(const ToolSetter &setter) { Q_UNUSED(setter) }
+    [[nodiscard]] virtual std::optional<ToolSetter> toolSetter() const { return std::nullopt; }
+    [[nodiscard]] virtual bool keepsReference() const { return true; }
+    virtual void adoptReference(std::optional<double> referenceMz) { Q_UNUSED(referenceMz) }
+    // A manual tool change waiting for the operator (state Tool): the tool is in, go on (grblHAL's cycle
+    // start). Nothing where the firmware asks on its own.
+    virtual void resumeToolChange() { }
+    // The controller's own tool table (firmware().hasToolTable()): read it, or write `tools` into it and
+    // read it back. A controller without one refuses by name.
+    virtual void readToolTable(Done done);
+    virtual void writeToolTable(const QList<ControllerTool> &tools, Done done);
+
     [[nodiscard]] static Result<void> validateTolerance(double tolerance);
     [[nodiscard]] static Result<void> validateOffset(const QString &what, double value);
     [[nodiscard]] static Result<void> validateToolNumber(int tool);
+
+protected:
+    // Opens the link (unless open) and calls `afterOpen`, or `done` with why it did not open within the
+    // transport's own limit.
+    void openLink(Done done, std::function<void()> afterOpen);
+    // The next status report, or nothing after `timeoutMs`.
+    void awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next);
+    // `done` with a Refused result, from the event loop (never inside the caller's call).
+    static void refuse(Done done, const QString &message);
+    // A failed command as an operation's result: the link's failures as LinkFailure, the machine's as
+    // MachineError.
+    static SessionResult failure(const CommandReply &reply);
+    // `done`, with the recording a successful result carries: the TLO as `kind`, or a break test's verdict.
+    [[nodiscard]] static Done recording(Done done, RecordingKind kind);
+    [[nodiscard]] static Done recordingVerdict(Done done);
 };
 
 } // namespace Toffee

@@ -44,10 +44,7 @@ ReplyGrammar ReplyGrammar::basic()
         [](QByteArrayView, const std::optional<MachineStatus> &) -> std::optional<MachineStatus> {
             return std::nullopt;
         },
-        [](QByteArrayView) { return false; }, basicMessage,
-        [](QStringView) {
-            return QString();
-        } };
+        [](QByteArrayView) { return false; }, basicMessage, [](QStringView) { return QString(); }, nullptr };
 }
 
 MachineLink::MachineLink(LineTransport *transport, QObject *parent)
@@ -199,11 +196,13 @@ void MachineLink::handleReplyLine(const QByteArray &line, ReplyKind kind)
             complete(CommandReply::Status::Ok, {});
         }
         break;
-    case ReplyKind::Error:
+    case ReplyKind::Error: {
+        const QString said = excerpt(m_grammar.message(line));
+        const QString meaning = m_grammar.refusalMeaning ? m_grammar.refusalMeaning(said) : QString();
         complete(CommandReply::Status::Refused,
-            tr("The machine refused \"%1\": %2")
-                .arg(QString::fromUtf8(m_current->line), excerpt(m_grammar.message(line))));
-        break;
+            tr("The machine refused \"%1\": %2").arg(QString::fromUtf8(m_current->line), said)
+                + (meaning.isEmpty() ? QString() : u' ' + meaning));
+    } break;
     case ReplyKind::Alarm:
     case ReplyKind::HaltError:
         keep(line);

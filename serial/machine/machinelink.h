@@ -39,17 +39,20 @@ struct CommandReply
 // "ALARM:" and "<…>" without reading the report.
 struct ReplyGrammar
 {
-    ReplyKind (*classify)(QByteArrayView line) = nullptr;
+    std::function<ReplyKind(QByteArrayView line)> classify;
     // A status report as the neutral status. `previous`: the last one, for fields a controller sends only
     // when they change (grblHAL's tool and offset).
-    std::optional<MachineStatus> (*status)(QByteArrayView line, const std::optional<MachineStatus> &previous)
-        = nullptr;
+    std::function<std::optional<MachineStatus>(
+        QByteArrayView line, const std::optional<MachineStatus> &previous)>
+        status;
     // The line that ends a script the controller runs (ReplyEnd::Script).
-    bool (*scriptDone)(QByteArrayView line) = nullptr;
+    std::function<bool(QByteArrayView line)> scriptDone;
     // What an "error:" or alarm line says, for people.
-    QString (*message)(QByteArrayView line) = nullptr;
+    std::function<QString(QByteArrayView line)> message;
     // What a halt the controller named means and what to do; empty when the message says it already.
-    QString (*haltMeaning)(QStringView message) = nullptr;
+    std::function<QString(QStringView message)> haltMeaning;
+    // What a refusal ("error:N") means and what to do, when the controller says only a number; may be empty.
+    std::function<QString(QStringView message)> refusalMeaning;
 
     [[nodiscard]] static ReplyGrammar basic();
 };

@@ -102,6 +102,15 @@ public:
     [[nodiscard]] QString description() const;
 };
 
+// One tool of a controller's own table (grblHAL's G10 L1 entries, read back with $#).
+struct ControllerTool
+{
+    int tool = 0;
+    double tlo = 0.0;
+    double radius = 0.0;
+    friend bool operator==(const ControllerTool &, const ControllerTool &) = default;
+};
+
 // What kind of line the controller sent.
 enum class ReplyKind {
     Ok, // exactly "ok"

@@ -9,9 +9,11 @@
 
 #include <csignal>
 #include <map>
+#include <optional>
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QHostAddress>
 #include <QProcess>
 #include <QTcpServer>
@@ -43,28 +45,94 @@ public:
         return server.serverPort();
     }
 
+    // How the controller is reached: raw TCP on 127.0.0.1, or a pseudo-terminal as its USB serial port
+    // (through socat, which `make test` installs).
+    enum class Link { Tcp, Pty };
+
     // `state`: the folder of the controller's EEPROM (settings and tool table), kept between starts; empty: a
     // fresh one of this peer's own. The setter file starts empty (no setter: a probe touches nothing) until
     // writeSetter().
-    explicit GrblHalPeer(QString state = {})
+    explicit GrblHalPeer(QString state = {}, Link link = Link::Tcp)
         : m_state(state.isEmpty() ? m_ownState.path() : std::move(state))
         , m_setter(m_files.filePath(QStringLiteral("setter.txt")))
-        , m_port(freePort())
+        , m_pty(m_files.filePath(QStringLiteral("tty")))
+        , m_port(link == Link::Tcp ? freePort() : 0)
+        , m_link(link)
     {
-        if (script().isEmpty() || m_port == 0 || !writeSetterFile({}))
+        if (script().isEmpty() || (link == Link::Tcp && m_port == 0) || !writeSetterFile({}))
             return;
         m_process.setProgram(script());
-        m_process.setArguments({ QStringLiteral("--tcp"), QString::number(m_port), QStringLiteral("--setter"),
-            m_setter, QStringLiteral("--state"), m_state });
+        const QStringList where = link == Link::Tcp
+            ? QStringList { QStringLiteral("--tcp"), QString::number(m_port) }
+            : QStringList { QStringLiteral("--pty"), m_pty };
+        m_process.setArguments(
+            where + QStringList { QStringLiteral("--setter"), m_setter, QStringLiteral("--state"), m_state });
         m_process.setProcessChannelMode(QProcess::SeparateChannels);
         m_process.start();
-        m_ready = m_process.waitForStarted(5000) && waitUntilAnswering(10000);
+        m_ready = m_process.waitForStarted(5000)
+            && (link == Link::Tcp ? waitUntilAnswering(10000) : waitForPty(10000));
     }
     ~GrblHalPeer() { stop(); }
 
     // Running and answering a status query on its port.
     [[nodiscard]] bool started() const { return m_ready && m_process.state() == QProcess::Running; }
     [[nodiscard]] quint16 port() const { return m_port; }
+    // The pseudo-terminal's path (Link::Pty).
+    [[nodiscard]] QString pty() const { return m_pty; }
+    // What toffee-cli is given to reach it.
+    [[nodiscard]] QStringList cliTarget() const
+    {
+        return m_link == Link::Tcp
+            ? QStringList { QStringLiteral("--host"), QStringLiteral("127.0.0.1:%1").arg(m_port) }
+            : QStringList { QStringLiteral("--port"), m_pty };
+    }
+
+    // One line sent as a client of its own (TCP only, while no other client is connected), and every line
+    // it answered up to "ok" or "error:": how a test reads grblHAL's own table ($#) itself.
+    [[nodiscard]] QList<QByteArray> ask(const QByteArray &line, int limitMs = 5000) const
+    {
+        QList<QByteArray> lines;
+        QTcpSocket socket;
+        socket.connectToHost(QHostAddress::LocalHost, m_port);
+        if (!socket.waitForConnected(2000))
+            return lines;
+        socket.write(line + '\n');
+        QByteArray buffer;
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < limitMs) {
+            if (socket.bytesAvailable() == 0 && !socket.waitForReadyRead(100))
+                continue;
+            buffer += socket.readAll();
+            qsizetype end = -1;
+            while ((end = buffer.indexOf('\n')) >= 0) {
+                const QByteArray one = buffer.left(end).trimmed();
+                buffer.remove(0, end + 1);
+                if (one.isEmpty() || one.startsWith('<'))
+                    continue;
+                lines.append(one);
+                if (one == "ok" || one.startsWith("error:"))
+                    return lines;
+            }
+        }
+        return lines;
+    }
+    // Tool n's Z offset in grblHAL's own table, as $# reports it ("[T:n|x,y,z|…"), or nothing.
+    [[nodiscard]] std::optional<double> tableZ(int tool) const
+    {
+        const QByteArray prefix = "[T:" + QByteArray::number(tool) + '|';
+        for (const QByteArray &line : ask("$#")) {
+            if (!line.startsWith(prefix))
+                continue;
+            const QList<QByteArray> fields = line.split('|');
+            const QList<QByteArray> axes = fields.value(1).split(',');
+            bool ok = false;
+            const double z = axes.value(2).toDouble(&ok);
+            if (ok)
+                return z;
+        }
+        return std::nullopt;
+    }
     [[nodiscard]] QString state() const { return m_state; }
     [[nodiscard]] QString setterPath() const { return m_setter; }
     [[nodiscard]] qint64 startupMs() const { return m_startupMs; }
@@ -124,11 +192,30 @@ private:
         return false;
     }
 
+    // socat makes the link once grblHAL runs; grblHAL is booted about a second later. Opening the terminal to
+    // ask would leave its greeting unread by the test's client, so it waits.
+    bool waitForPty(int limitMs)
+    {
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < limitMs && m_process.state() == QProcess::Running) {
+            if (QFileInfo::exists(m_pty)) {
+                QTest::qSleep(1500);
+                m_startupMs = clock.elapsed();
+                return m_process.state() == QProcess::Running;
+            }
+            QTest::qSleep(50);
+        }
+        return false;
+    }
+
     QTemporaryDir m_ownState;
     QTemporaryDir m_files;
     QString m_state;
     QString m_setter;
+    QString m_pty;
     quint16 m_port = 0;
+    Link m_link = Link::Tcp;
     QProcess m_process;
     bool m_ready = false;
     qint64 m_startupMs = 0;
