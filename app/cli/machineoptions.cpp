@@ -228,9 +228,9 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
         const QString connection = o.target.emulator ? u"emulator"_s
             : o.target.isNetwork()                   ? o.target.name()
                                                      : o.target.port + u' ' + QString::number(o.target.baud);
-        // grblHAL's programs use G43 H after M6 as LinuxCNC's do.
+        // The dialect its programs are checked in.
         const QString dialect
-            = o.target.resolvedController() == ControllerKind::GrblHal ? u"linuxcnc"_s : u"carvera"_s;
+            = o.target.resolvedController() == ControllerKind::GrblHal ? u"grblhal"_s : u"carvera"_s;
         if (auto added = o.library->addMachine({ o.machine, dialect, connection }); !added) {
             // Another program holds the library for now: the machine may still measure, and what it measures
             // is kept on this computer and sent later, as any measurement the library cannot take now.

@@ -61,6 +61,7 @@ const QList<DialectInfo> &dialects()
         { Dialect::Aerotech, u"aerotech"_s, u"Aerotech Automation1"_s,
             u"G44 axes, CutterCompensationSetOffsets for one tool"_s, false },
         { Dialect::LinuxCnc, u"linuxcnc"_s, u"LinuxCNC"_s, u"G10 L1"_s, true },
+        { Dialect::GrblHal, u"grblhal"_s, u"grblHAL"_s, u"G10 L1 with the measured TLOs"_s, true },
     };
     return all;
 }
@@ -86,7 +87,17 @@ std::optional<Dialect> dialectFromKey(QStringView key)
 bool usesG43(Dialect dialect)
 {
     return dialect == Dialect::Fanuc || dialect == Dialect::Fagor8055M || dialect == Dialect::AllenBradley9
-        || dialect == Dialect::LinuxCnc;
+        || usesToolTableWords(dialect);
+}
+
+bool measuresTlos(Dialect dialect)
+{
+    return dialect == Dialect::Carvera || dialect == Dialect::GrblHal;
+}
+
+bool usesToolTableWords(Dialect dialect)
+{
+    return dialect == Dialect::LinuxCnc || dialect == Dialect::GrblHal;
 }
 
 Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::optional<int> tool)
@@ -119,6 +130,28 @@ Result<QString> exportProgram(const ToolTable &table, Dialect dialect, std::opti
                 + value(t.totalRadius(), u) + u'\n';
         }
         return QString(out + u"M2\n"_s);
+    }
+    case Dialect::GrblHal: {
+        // Toffee's measured TLOs (against the machine's reference tool) into grblHAL's table; a tool without
+        // one is left out, as its entry would be a guess.
+        QString body;
+        int written = 0;
+        for (const Tool &t : tools) {
+            if (!t.measuredTlo)
+                continue;
+            if (t.number < 1)
+                return Error {
+                    tr("T%1 cannot be written: grblHAL's G10 L1 needs a tool number from 1 up.").arg(t.number)
+                };
+            body += u"G10 L1 P"_s + QString::number(t.number) + u" Z"_s + value(*t.measuredTlo, u) + u" R"_s
+                + value(t.totalRadius(), u) + u'\n';
+            ++written;
+        }
+        if (written == 0)
+            return Error { tool ? tr("T%1 has no measured TLO to write; probe it first.").arg(*tool)
+                                : tr("No tool has a measured TLO to write; probe the tools first.") };
+        return QString(header(written, u, u"grblHAL"_s) + (u == Units::Inch ? u"G20\n"_s : u"G21\n"_s) + body
+            + u"M2\n"_s);
     }
     case Dialect::Carvera: {
         QString body;

@@ -214,7 +214,7 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
         ++m_lengthCalls;
     if (m_dialect == Dialect::Aerotech && w.hasG(44))
         return aerotechWords(w, line); // G44 X Y Z names the axes: nothing moves
-    if (auto r = m_dialect == Dialect::LinuxCnc ? linuxCncLength(w, line)
+    if (auto r = usesToolTableWords(m_dialect) ? linuxCncLength(w, line)
             : m_dialect == Dialect::Aerotech    ? aerotechWords(w, line)
                                                 : lengthWords(w, line);
         !r)
@@ -261,7 +261,7 @@ Result<void> GCodeInterpreter::motionOf(const Words &w, int line, bool motion)
 {
     // LinuxCNC's G43.1 takes Z as the offset, and so does the Carvera's M493.3; a dwell's X (FANUC's G4 X) is
     // its time.
-    const bool consumedZ = (m_dialect == Dialect::LinuxCnc && w.hasG(43.1))
+    const bool consumedZ = (usesToolTableWords(m_dialect) && w.hasG(43.1))
         || (m_dialect == Dialect::Carvera && w.hasM(493.3));
     const bool dwell = w.hasG(4);
     // G30's second reference point is the machine's own setting: Toffee takes it as home, as G28.

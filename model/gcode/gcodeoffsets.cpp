@@ -165,7 +165,7 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
     const double l = w.get('L');
     if (same(l, 2) || same(l, 20))
         return g10WorkOffset(w, l, line);
-    if (m_dialect == Dialect::LinuxCnc)
+    if (usesToolTableWords(m_dialect))
         return g10ToolTable(w, l, line);
     return g10Register(w, l, line);
 }
@@ -175,7 +175,7 @@ Result<void> GCodeInterpreter::g10(const Words &w, int line)
 Result<void> GCodeInterpreter::g10WorkOffset(const Words &w, double l, int line)
 {
     const double p = w.word('P') ? w.get('P') : 1.0;
-    const int highest = m_dialect == Dialect::LinuxCnc ? 9 : 6; // LinuxCNC adds G59.1 to G59.3
+    const int highest = usesToolTableWords(m_dialect) ? 9 : 6; // LinuxCNC adds G59.1 to G59.3
     if (p != std::floor(p) || p < 0 || p > highest)
         return error(line,
             tr("G10 L%1 P%2: the work offsets are G54 to G59 (P1 to P6; LinuxCNC's G59.1 to G59.3 are P7 to "

@@ -37,6 +37,9 @@ struct JobCheckSetup
     // known (no finding either way).
     std::optional<QList<int>> rack;
     QDateTime now = QDateTime::currentDateTimeUtc();
+    // What the controller's own table holds (grblHAL's, read with $# on a connected machine): each tool's
+    // TLO by number. Nothing: not read (no finding either way).
+    std::optional<QHash<int, double>> controllerTlos;
 
     // Everything `table` says, for `dialect`.
     void useTable(const ToolTable &table);

@@ -24,6 +24,7 @@ Severity findingSeverity(FindingKind kind)
     case FindingKind::NoLengthCompensation:
     case FindingKind::NoToolLoaded:
     case FindingKind::ProgramSetsTlo:
+    case FindingKind::ControllerTableDiffers:
         return Severity::Warning;
     }
     return Severity::Error;
@@ -58,6 +59,8 @@ QString findingKey(FindingKind kind)
         return u"below_floor"_s;
     case FindingKind::ProgramSetsTlo:
         return u"program_sets_tlo"_s;
+    case FindingKind::ControllerTableDiffers:
+        return u"controller_table_differs"_s;
     }
     return {};
 }

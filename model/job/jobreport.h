@@ -30,6 +30,7 @@ enum class FindingKind : quint8 {
     ProgramError, // what the controller would refuse or alarm on (error)
     BelowFloor, // a feed move below the Z floor (error)
     ProgramSetsTlo, // the Carvera program sets a tool's TLO to another value than the table's (warning)
+    ControllerTableDiffers, // grblHAL's own table holds another TLO for the tool than the file (warning)
 };
 
 [[nodiscard]] Severity findingSeverity(FindingKind kind);

@@ -3,6 +3,7 @@
 #include "model/job/jobchecker.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "model/numberformat.h"
 #include "model/timetext.h"
@@ -22,9 +23,9 @@ JobReport JobChecker::finish(const QString &program, bool cancelled)
     for (JobTool tool : std::as_const(m_tools)) {
         const ToolFacts facts = m_setup.facts.value(tool.number);
         tool.inTable = facts.inTable;
-        tool.tlo = m_setup.dialect == Dialect::Carvera ? facts.measuredTlo
-            : facts.inTable                            ? std::optional(facts.length)
-                                                       : std::nullopt;
+        tool.tlo = measuresTlos(m_setup.dialect) ? facts.measuredTlo
+            : facts.inTable                      ? std::optional(facts.length)
+                                                 : std::nullopt;
         tool.measuredAt = facts.measuredAt;
         tool.setByHand = facts.measuredTlo && facts.source == TloSource::Manual;
         report.tools.append(tool);
@@ -84,14 +85,15 @@ template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &fact
                       "probe it.")
                 .arg(n);
         });
-    const bool measured
-        = carvera ? facts.measuredTlo.has_value() : (facts.measuredTlo || facts.length != 0.0);
+    // The Carvera and grblHAL take the TLO Toffee measured; the other controllers the table's length.
+    const bool tlos = measuresTlos(m_setup.dialect);
+    const bool measured = tlos ? facts.measuredTlo.has_value() : (facts.measuredTlo || facts.length != 0.0);
     if (!measured) {
-        found(FindingKind::NotMeasured, [n, carvera] {
-            return carvera ? tr("T%1 has no measured TLO.").arg(n)
-                           : tr("T%1 has no length in the table: G43 would apply 0.").arg(n);
+        found(FindingKind::NotMeasured, [n, tlos] {
+            return tlos ? tr("T%1 has no measured TLO.").arg(n)
+                        : tr("T%1 has no length in the table: G43 would apply 0.").arg(n);
         });
-    } else if (carvera && facts.source == TloSource::Manual) {
+    } else if (tlos && facts.source == TloSource::Manual) {
         found(FindingKind::NotMeasured, [n] {
             return tr("T%1's TLO was set by hand, not measured on the tool setter: probe it before the job.")
                 .arg(n);
@@ -111,6 +113,25 @@ template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &fact
                 .arg(ageText(facts.measuredAt, m_setup.now))
                 .arg(m_setup.staleDays);
         });
+    }
+    if (m_setup.controllerTlos && facts.measuredTlo) {
+        const auto entry = m_setup.controllerTlos->constFind(n);
+        const double tlo = *facts.measuredTlo;
+        if (entry == m_setup.controllerTlos->cend())
+            found(FindingKind::ControllerTableDiffers, [n] {
+                return tr("The controller's own table has no T%1: G43 H%1 is refused. Renumber the tool, or "
+                          "apply its TLO with G43.1.")
+                    .arg(n);
+            });
+        else if (std::fabs(*entry - tlo) > 0.0005)
+            found(FindingKind::ControllerTableDiffers, [this, n, tlo, value = *entry] {
+                return tr("The controller's own table holds %1 for T%2, the table file %3: G43 H%2 would "
+                          "apply the controller's. Push the offsets (Machine ▸ Push Offsets…, toffee-cli "
+                          "push-offsets) or probe T%2 before the job.")
+                    .arg(displayNumber(value, m_setup.tableUnits))
+                    .arg(n)
+                    .arg(displayNumber(tlo, m_setup.tableUnits));
+            });
     }
     if (facts.libraryTlo)
         found(FindingKind::StaleTlo, [this, n, &facts] {
@@ -180,6 +201,9 @@ QString JobChecker::moreMessage(const Finding &summary) const
         break;
     case FindingKind::ProgramSetsTlo:
         what = tr("%1 more tools have their TLO set by the program to another value than the table's").arg(n);
+        break;
+    case FindingKind::ControllerTableDiffers:
+        what = tr("%1 more tools whose TLO in the controller's own table is not the file's").arg(n);
         break;
     default: // not a tool's finding: never summed up
         what = u"%1 more tools: %2"_s.arg(n).arg(findingKey(summary.kind));

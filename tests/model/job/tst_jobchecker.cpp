@@ -39,7 +39,8 @@ ToolTable shopTable()
 }
 
 JobReport check(const QByteArray &program, Dialect dialect, const ToolTable &table,
-    std::optional<double> zFloor = {}, std::optional<QList<int>> rack = {})
+    std::optional<double> zFloor = {}, std::optional<QList<int>> rack = {},
+    std::optional<QHash<int, double>> controllerTlos = {})
 {
     JobCheckSetup setup;
     setup.dialect = dialect;
@@ -47,6 +48,7 @@ JobReport check(const QByteArray &program, Dialect dialect, const ToolTable &tab
     setup.zFloor = zFloor;
     setup.rack = rack;
     setup.now = kNow;
+    setup.controllerTlos = controllerTlos;
     JobChecker checker(setup);
     int line = 0;
     for (const QByteArray &text : program.split('\n'))
@@ -247,6 +249,40 @@ private Q_SLOTS:
         QCOMPARE(f->line, 1);
         QCOMPARE(f->count, 2);
         QCOMPARE(r.exitCode(), 1);
+    }
+
+    void grblHalProgramsAreCheckedAgainstTheMeasuredTlosAndTheControllersTable()
+    {
+        // LinuxCNC's words (M6 T, then G43 H): a change without its own G43 H is a finding (the H before
+        // stays in force), as on any G43 controller.
+        const QByteArray program = "G21 G90\nM6 T2\nG43 H2\nG1 Z-1 F100\nM6 T7\nG1 Z-1\nM6 T3\nG43 H3\n"
+                                   "G1 Z-1\nM30\n";
+        const JobReport plain = check(program, Dialect::GrblHal, shopTable());
+        const Finding *stale = find(plain, FindingKind::LengthOffsetMismatch, 7);
+        QVERIFY(stale);
+        QCOMPARE(stale->line, 6);
+        // The TLO is Toffee's measured one, as on the Carvera: T3 has a length but no measured TLO.
+        QVERIFY(find(plain, FindingKind::NotMeasured, 3));
+        QCOMPARE(plain.tools.at(0).tlo, std::optional(-33.388));
+        QVERIFY(!find(plain, FindingKind::ControllerTableDiffers));
+
+        // Read from the controller: T2's entry differs, T7's agrees; T3 has no TLO to compare.
+        const JobReport read = check(program, Dialect::GrblHal, shopTable(), {}, {},
+            QHash<int, double> { { 2, -30.0 }, { 7, -5.0 }, { 3, 0.0 } });
+        const Finding *differs = find(read, FindingKind::ControllerTableDiffers, 2);
+        QVERIFY(differs);
+        QCOMPARE(differs->severity(), Severity::Warning);
+        QCOMPARE(differs->line, 2);
+        QVERIFY2(differs->message.contains(u"-30.000"_s) && differs->message.contains(u"-33.388"_s),
+            qPrintable(differs->message));
+        QVERIFY(!find(read, FindingKind::ControllerTableDiffers, 7));
+        QVERIFY(!find(read, FindingKind::ControllerTableDiffers, 3));
+        // A tool beyond the controller's table is said too.
+        const JobReport beyond = check("M6 T2\nG43 H2\nG1 Z-1 F100\nM30\n", Dialect::GrblHal, shopTable(), {},
+            {}, QHash<int, double> {});
+        const Finding *missing = find(beyond, FindingKind::ControllerTableDiffers, 2);
+        QVERIFY(missing);
+        QVERIFY(missing->message.contains(u"has no T2"_s));
     }
 
     void aTloTheProgramSetsAZeroToolAndAFutureDateAreToldApart()
