@@ -247,12 +247,22 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
 
 // A controller that keeps no reference tool (grblHAL) is given the one Toffee kept for the machine: the
 // newest probe's in the history, else the newest measured tool's in the table. Without either, the next probe
-// makes its tool the reference.
+// makes its tool the reference. Its tool setter likewise: --setter, kept in the library, or the library's.
 Result<void> readReference(const Invocation &call, MachineOptions &o)
 {
-    Q_UNUSED(call)
     if (o.target.resolvedController() != ControllerKind::GrblHal)
         return {};
+    // The setter is the machine's: --setter is kept in the library for the next time, which it comes from
+    // when not given.
+    if (o.library && o.target.setter) {
+        if (auto kept = o.library->setToolSetter(o.machine, *o.target.setter); !kept)
+            call.err << u"toffee-cli: warning: "_s << kept.error().message << Qt::endl;
+    } else if (o.library) {
+        auto kept = o.library->toolSetter(o.machine);
+        if (!kept)
+            return Error { kept.error().message };
+        o.target.setter = kept.value();
+    }
     if (o.library) {
         HistoryQuery query;
         query.machine = o.machine;

@@ -71,6 +71,42 @@ Result<QList<MachineRecord>> Library::machines() const
     return out;
 }
 
+Result<void> Library::setToolSetter(const QString &machine, const ToolSetter &setter)
+{
+    if (auto writable = checkWritable(); !writable)
+        return writable;
+    if (auto valid = setter.validate(); !valid)
+        return valid;
+    QSqlQuery query(database());
+    query.prepare(
+        u"INSERT INTO machines (name, setter) VALUES (?, ?) ON CONFLICT (name) DO UPDATE SET setter = "
+        "excluded.setter"_s);
+    query.addBindValue(machine);
+    query.addBindValue(setter.text());
+    if (!query.exec())
+        return failure(tr("Keeping %1's tool setter").arg(machine), query);
+    return {};
+}
+
+Result<std::optional<ToolSetter>> Library::toolSetter(const QString &machine) const
+{
+    QSqlQuery query(database());
+    query.prepare(u"SELECT setter FROM machines WHERE name = ?"_s);
+    query.addBindValue(machine);
+    if (!query.exec())
+        return failure(tr("Reading %1's tool setter").arg(machine), query);
+    if (!query.next() || query.value(0).toString().isEmpty())
+        return std::optional<ToolSetter> {};
+    // A value another program wrote that does not read is no setter: the operator sets it again.
+    auto setter = ToolSetter::parse(query.value(0).toString());
+    if (!setter)
+        return Error { tr(
+            "%1's tool setter in the library (\"%2\") does not read: %3 Set it again (Machine ▸ "
+            "Tool Setter…).")
+                           .arg(machine, query.value(0).toString(), setter.error().message) };
+    return std::optional<ToolSetter>(setter.value());
+}
+
 Result<void> Library::ensureMachines(const QStringList &names)
 {
     QSqlQuery query(database());

@@ -13,6 +13,7 @@
 #include "model/library/librarylocation.h"
 #include "model/library/storedtable.h"
 #include "model/result.h"
+#include "model/toolsetter.h"
 
 class QSqlDatabase;
 class QSqlDriver;
@@ -32,7 +33,7 @@ class Library
 
 public:
     // The schema this Toffee writes. A library with a higher version is refused, never altered.
-    static constexpr int kSchemaVersion = 2;
+    static constexpr int kSchemaVersion = 3;
     // The channel a shared library's changes are announced on; the payload names the machine, the station and
     // the time (LibraryWatcher::announced).
     static constexpr QLatin1StringView kChannel { "toffee_library" };
@@ -81,6 +82,10 @@ public:
     // Adds the machine, or updates its dialect and connection.
     [[nodiscard]] Result<void> addMachine(const MachineRecord &machine);
     [[nodiscard]] Result<QList<MachineRecord>> machines() const;
+    // Where the machine's tool setter is (grblHAL's probing cycle is Toffee's): kept with the machine, the
+    // machine added when new. Nothing when never set.
+    [[nodiscard]] Result<void> setToolSetter(const QString &machine, const ToolSetter &setter);
+    [[nodiscard]] Result<std::optional<ToolSetter>> toolSetter(const QString &machine) const;
     // Appends the events in one transaction (their machines added as needed): all or none. An event whose id
     // is already there is skipped, so writing a batch again after an unclear failure duplicates nothing.
     // Each new event also updates its tool in the machine's table, when the library holds one. Returns how

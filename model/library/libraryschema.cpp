@@ -48,6 +48,11 @@ const QList<QStringList> kMigrations = {
         u"CREATE TABLE outbox (id TEXT PRIMARY KEY, library TEXT NOT NULL, kind TEXT NOT NULL CHECK (kind IN "
         "('events', 'tools')), payload TEXT NOT NULL, created_at TEXT NOT NULL)"_s,
     },
+    {
+        // Where each machine's tool setter is, for a controller whose probing cycle is Toffee's (grblHAL):
+        // ToolSetter::text(), empty when not set.
+        u"ALTER TABLE machines ADD COLUMN setter TEXT NOT NULL DEFAULT ''"_s,
+    },
 };
 
 // PostgreSQL before 14 is past its end of life; ON CONFLICT and pg_notify are older than that.
@@ -56,7 +61,7 @@ constexpr int kOldestServer = 140000;
 // Every table of the schema this Toffee writes, with the columns it reads and writes: a library that lacks
 // one was damaged, or altered by another program, and is not written into.
 const QList<std::pair<QString, QStringList>> kTables = {
-    { u"machines"_s, { u"name"_s, u"dialect"_s, u"connection"_s } },
+    { u"machines"_s, { u"name"_s, u"dialect"_s, u"connection"_s, u"setter"_s } },
     { u"events"_s,
         { u"id"_s, u"machine"_s, u"tool"_s, u"measured_at"_s, u"kind"_s, u"tlo"_s, u"reference_mz"_s,
             u"current_mz"_s, u"tolerance"_s, u"old_tlo"_s, u"new_tlo"_s, u"failed"_s } },

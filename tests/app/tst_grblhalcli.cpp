@@ -134,8 +134,12 @@ private Q_SLOTS:
         QVERIFY(peer->ask("$#").contains("[TLO:0.000,0.000,15.300]"));
         QCOMPARE(historyOf(2).last()[u"kind"_s].toString(), u"restore"_s);
 
-        // A break test of the intact tool passes and changes nothing.
-        run = machine({ u"break-test"_s });
+        // A break test of the intact tool passes and changes nothing. The setter is the machine's, kept in
+        // the library from the last --setter: not given again.
+        run = cli(QStringList { u"--json"_s, u"--library"_s, m_dir.filePath(u"library.sqlite"_s),
+                      u"--machine"_s, u"LongMill"_s, u"--controller"_s, u"grblhal"_s, u"--table"_s, table() }
+                + m_target + QStringList { u"break-test"_s },
+            90000);
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QCOMPARE(json(run)[u"broken"_s].toBool(), false);
         QCOMPARE(json(run)[u"new_tlo"_s].toDouble(), 15.3);

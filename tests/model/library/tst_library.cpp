@@ -17,6 +17,7 @@
 #include "model/library/historyrecorder.h"
 #include "model/library/library.h"
 #include "model/library/spool.h"
+#include "model/toolsetter.h"
 #include "tests/support/fulldisk.h"
 
 using namespace Toffee;
@@ -176,6 +177,47 @@ private Q_SLOTS:
         QCOMPARE(library.value()->appendUse({ use, use }).value(), 1);
         QCOMPARE(library.value()->uses(u"Carvera"_s, 3).value(), QList<ToolUse> { use });
         QVERIFY(library.value()->uses(u"Carvera"_s, 4).value().isEmpty());
+    }
+
+    void aVersionTwoLibraryIsBroughtUpToDateAndKeepsEachMachinesToolSetter()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        {
+            auto library = Library::open({ path });
+            QVERIFY(library.value()->append({ makeEvent(1, EventKind::Probe, 0, -3.5) }));
+        }
+        {
+            // As Toffee wrote it before machines had a tool setter.
+            RawConnection raw(path, u"raw-v2"_s);
+            QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN setter"_s));
+            QVERIFY(raw.exec(u"UPDATE toffee_schema SET version = 2"_s));
+        }
+        auto library = Library::open({ path });
+        QVERIFY2(library, qPrintable(library ? QString() : library.error().message));
+        QCOMPARE(library.value()->history({}).value().size(), 1); // nothing lost on the way
+        QCOMPARE(library.value()->toolSetter(u"Carvera"_s).value(), std::nullopt);
+        const ToolSetter setter = ToolSetter::parse(u"12.5,-40,-120,800,50,1.5"_s).value();
+        QVERIFY(library.value()->setToolSetter(u"Carvera"_s, setter));
+        QVERIFY(library.value()->setToolSetter(u"LongMill"_s, ToolSetter::parse(u"0,0,-90"_s).value()));
+        QCOMPARE(library.value()->toolSetter(u"Carvera"_s).value(), std::optional(setter));
+        QCOMPARE(library.value()->toolSetter(u"LongMill"_s).value()->zMin, -90.0);
+        // A machine's dialect written again keeps its setter.
+        QVERIFY(library.value()->addMachine({ u"LongMill"_s, u"grblhal"_s, u"127.0.0.1:23"_s }));
+        QCOMPARE(library.value()->toolSetter(u"LongMill"_s).value()->zMin, -90.0);
+        library.value().reset();
+        {
+            RawConnection raw(path, u"raw-v3"_s);
+            QCOMPARE(raw.value(u"SELECT version FROM toffee_schema"_s).toInt(), 3);
+            QCOMPARE(raw.value(u"SELECT setter FROM machines WHERE name = 'Carvera'"_s).toString(),
+                u"12.5,-40,-120,800,50,1.5"_s);
+            QVERIFY(raw.exec(u"UPDATE machines SET setter = 'over there' WHERE name = 'LongMill'"_s));
+        }
+        // Another program's value that does not read is said, not guessed at.
+        library = Library::open({ path });
+        const auto garbled = library.value()->toolSetter(u"LongMill"_s);
+        QVERIFY(!garbled);
+        QVERIFY2(garbled.error().message.contains(u"Set it again"_s), qPrintable(garbled.error().message));
     }
 
     void refusesANewerLibraryAndLeavesItAsItIs()
