@@ -24,11 +24,11 @@ QString mm(double v)
 Result<ToolSetter> ToolSetter::parse(const QString &text)
 {
     const QStringList parts = text.split(u',');
-    if (parts.size() != 3 && parts.size() != 5 && parts.size() != 6)
+    if (parts.size() != 3 && parts.size() != 5 && parts.size() != 6 && parts.size() != 7)
         return Error { tr("The tool setter \"%1\" is not X,Y,ZMIN (machine coordinates in mm, e.g. 0,0,-120) "
                           "nor X,Y,ZMIN,SEEK,LATCH[,BACKOFF] (feeds in mm/min, back-off in mm).")
                            .arg(text) };
-    std::array<double, 6> v {};
+    std::array<double, 7> v {};
     for (qsizetype i = 0; i < parts.size(); ++i) {
         const auto value = parseDecimal(QByteArrayView(parts[i].trimmed().toLatin1()));
         if (!value)
@@ -45,8 +45,10 @@ Result<ToolSetter> ToolSetter::parse(const QString &text)
         setter.seekFeed = v[3];
         setter.latchFeed = v[4];
     }
-    if (parts.size() == 6)
+    if (parts.size() >= 6)
         setter.backoff = v[5];
+    if (parts.size() == 7)
+        setter.safeZ = v[6];
     if (auto valid = setter.validate(); !valid)
         return valid.error();
     return setter;
@@ -54,7 +56,10 @@ Result<ToolSetter> ToolSetter::parse(const QString &text)
 
 QString ToolSetter::text() const
 {
-    return QStringList { mm(x), mm(y), mm(zMin), mm(seekFeed), mm(latchFeed), mm(backoff) }.join(u',');
+    QStringList fields { mm(x), mm(y), mm(zMin), mm(seekFeed), mm(latchFeed), mm(backoff) };
+    if (safeZ != 0.0)
+        fields << mm(safeZ);
+    return fields.join(u',');
 }
 
 Result<void> ToolSetter::validate() const

@@ -31,7 +31,7 @@ public:
     double backoff = kDefaultBackoff;
     double safeZ = 0.0; // the machine Z it lifts to before moving over the setter and after (0: the top)
 
-    // "X,Y,ZMIN" or "X,Y,ZMIN,SEEK,LATCH[,BACKOFF]" (toffee-cli --setter), each checked.
+    // "X,Y,ZMIN" or "X,Y,ZMIN,SEEK,LATCH[,BACKOFF[,SAFEZ]]" (toffee-cli --setter), each checked.
     [[nodiscard]] static Result<ToolSetter> parse(const QString &text);
     // The same form, every field: what parse() reads back.
     [[nodiscard]] QString text() const;

@@ -24,6 +24,8 @@ const auto ConnectionBaud = u"machine/baud"_s;
 const auto ConnectionKind = u"machine/link"_s;
 const auto ConnectionHost = u"machine/host"_s;
 const auto ConnectionHostName = u"machine/hostName"_s;
+const auto ConnectionController = u"machine/controller"_s;
+const auto ToolSetters = u"machine/toolSetters"_s; // a group: one key per machine name
 const auto Tolerance = u"machine/breakTestTolerance"_s;
 const auto DarkPalette = u"view/darkPalette"_s;
 const auto Library = u"history/library"_s;
@@ -103,6 +105,33 @@ QString AppSettings::connectionKind() const
 void AppSettings::setConnectionKind(const QString &kind)
 {
     m_settings.setValue(Key::ConnectionKind, kind);
+}
+
+QString AppSettings::connectionController() const
+{
+    return m_settings.value(Key::ConnectionController).toString();
+}
+
+void AppSettings::setConnectionController(const QString &controller)
+{
+    m_settings.setValue(Key::ConnectionController, controller);
+}
+
+std::optional<ToolSetter> AppSettings::toolSetter(const QString &machine) const
+{
+    const QString text
+        = m_settings.value(Key::ToolSetters + u'/' + QString::fromLatin1(machine.toUtf8().toHex()))
+              .toString();
+    if (text.isEmpty())
+        return std::nullopt;
+    auto setter = ToolSetter::parse(text);
+    return setter ? std::optional(setter.value()) : std::nullopt;
+}
+
+void AppSettings::setToolSetter(const QString &machine, const ToolSetter &setter)
+{
+    m_settings.setValue(
+        Key::ToolSetters + u'/' + QString::fromLatin1(machine.toUtf8().toHex()), setter.text());
 }
 
 QString AppSettings::connectionHost() const

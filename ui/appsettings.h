@@ -7,6 +7,8 @@
 #include <QSettings>
 #include <QStringList>
 
+#include "model/toolsetter.h"
+
 namespace Toffee {
 
 // Every remembered setting, typed, with its key in one place. Tests enable QStandardPaths' test mode so
@@ -31,6 +33,12 @@ public:
     // says it then), and the last machine on the network as HOST:PORT.
     [[nodiscard]] QString connectionKind() const;
     void setConnectionKind(const QString &kind);
+    // "carvera" or "grblhal": the controller chosen for a serial port or an address typed in.
+    [[nodiscard]] QString connectionController() const;
+    void setConnectionController(const QString &controller);
+    // A machine's tool setter, on this computer (the library keeps it too, when there is one).
+    [[nodiscard]] std::optional<ToolSetter> toolSetter(const QString &machine) const;
+    void setToolSetter(const QString &machine, const ToolSetter &setter);
     [[nodiscard]] QString connectionHost() const;
     void setConnectionHost(const QString &address);
     // The name the last machine on the network announced itself by (empty: typed, never heard), so that it

@@ -42,6 +42,7 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
     , m_machine(new QComboBox(this))
     , m_emulatorLabel(new QLabel(tr("Toffee's own Carvera, for trying things out"), this))
     , m_baud(new QComboBox(this))
+    , m_controller(new QComboBox(this))
     , m_hint(new QLabel(this))
     , m_listener(new BeaconListener(this))
     , m_refresh(new QPushButton(tr("Refresh"), this))
@@ -71,6 +72,12 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
     m_baud->setAccessibleName(tr("Baud rate"));
     for (int baud : { 9600, 19200, 38400, 57600, 115200, 230400, 250000 })
         m_baud->addItem(QString::number(baud), baud);
+    m_controller->setObjectName(u"controllerCombo"_s);
+    m_controller->setAccessibleName(tr("Controller the machine runs"));
+    m_controller->addItem(tr("Carvera"), u"carvera"_s);
+    m_controller->addItem(tr("grblHAL"), u"grblhal"_s);
+    m_controller->setToolTip(tr("Which controller the machine runs. Toffee does not ask the machine first: "
+                                "each controller's question would upset the other."));
     m_hint->setObjectName(u"connectionHint"_s);
     m_hint->setWordWrap(true);
     m_refresh->setObjectName(u"refreshPortsButton"_s);
@@ -83,10 +90,11 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_kind, 0, 0, 1, 3);
     layout->addWidget(m_where, 1, 0, 1, 3);
-    layout->addWidget(m_baud, 2, 0);
-    layout->addWidget(m_refresh, 2, 1);
-    layout->addWidget(m_connect, 2, 2);
-    layout->addWidget(m_hint, 3, 0, 1, 3);
+    layout->addWidget(m_controller, 2, 0, 1, 3);
+    layout->addWidget(m_baud, 3, 0);
+    layout->addWidget(m_refresh, 3, 1);
+    layout->addWidget(m_connect, 3, 2);
+    layout->addWidget(m_hint, 4, 0, 1, 3);
     layout->setColumnStretch(2, 1);
 
     connect(m_refresh, &QPushButton::clicked, this, &ConnectionPanel::refreshPorts);
@@ -130,6 +138,8 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
         remembered.port = settings.connectionPort() == kEmulator ? QString() : settings.connectionPort();
     }
     remembered.baud = settings.connectionBaud();
+    remembered.controller
+        = settings.connectionController() == u"grblhal" ? ControllerKind::GrblHal : ControllerKind::Carvera;
     setTarget(remembered);
     if (kind == kWiFi)
         setKind(Kind::WiFi); // even with no address remembered
@@ -242,6 +252,8 @@ ConnectionTarget ConnectionPanel::target() const
     t.emulatorStock = m_emulatorStock;
     t.emulatorPaced = m_emulatorPaced;
     t.protocol = StreamTransport::Protocol(m_protocol);
+    t.controller = m_controller->currentData().toString() == u"grblhal" ? ControllerKind::GrblHal
+                                                                        : ControllerKind::Carvera;
     switch (kind()) {
     case Kind::Emulator:
         break;
@@ -257,8 +269,10 @@ ConnectionTarget ConnectionPanel::target() const
     case Kind::WiFi: {
         t.emulator = false;
         QString address = m_machine->currentText().trimmed();
-        if (m_machine->currentIndex() >= 0 && address == m_machine->itemText(m_machine->currentIndex()))
+        if (m_machine->currentIndex() >= 0 && address == m_machine->itemText(m_machine->currentIndex())) {
             address = m_machine->currentData().toString();
+            t.controller = ControllerKind::Carvera; // heard by its beacon: a Carvera
+        }
         if (const auto parsed = TcpTransport::parseAddress(address); parsed.ok()) {
             t.host = parsed.value().host;
             t.tcpPort = parsed.value().port;
@@ -305,6 +319,8 @@ void ConnectionPanel::setFields(const ConnectionTarget &target)
         m_port->setCurrentIndex(index);
         setKind(Kind::Serial);
     }
+    if (!target.emulator && target.controller != ControllerKind::Auto)
+        m_controller->setCurrentIndex(target.controller == ControllerKind::GrblHal ? 1 : 0);
     const int baud = m_baud->findData(target.baud);
     m_baud->setCurrentIndex(baud < 0 ? m_baud->findData(115200) : baud);
 }
@@ -315,7 +331,7 @@ void ConnectionPanel::toggleConnection()
         m_connection->disconnectFromMachine();
         return;
     }
-    const ConnectionTarget t = target();
+    ConnectionTarget t = target();
     if (kind() == Kind::WiFi && !t.isNetwork()) {
         const auto parsed = TcpTransport::parseAddress(m_machine->currentText().trimmed());
         QMessageBox::warning(this, tr("Cannot connect to the machine"),
@@ -360,6 +376,10 @@ void ConnectionPanel::toggleConnection()
         settings.setConnectionHostName(m_rememberedName);
     }
     settings.setConnectionBaud(t.baud);
+    if (k != Kind::Emulator)
+        settings.setConnectionController(m_controller->currentData().toString());
+    if (m_prepare)
+        m_prepare(t);
     m_connection->connectTo(t);
 }
 
@@ -381,6 +401,14 @@ void ConnectionPanel::updateState()
     m_port->setEnabled(idle);
     m_machine->setEnabled(idle);
     m_baud->setEnabled(idle && kind() == Kind::Serial);
+    // A machine heard announcing itself is a Carvera; the emulator is one.
+    const bool heard = kind() == Kind::WiFi && m_machine->currentIndex() >= 0
+        && m_machine->currentText().trimmed() == m_machine->itemText(m_machine->currentIndex());
+    m_controller->setVisible(kind() != Kind::Emulator);
+    m_controller->setEnabled(idle && !heard);
+    if (!idle)
+        m_controller->setCurrentIndex(
+            m_connection->target().resolvedController() == ControllerKind::GrblHal ? 1 : 0);
     m_baud->setVisible(kind() == Kind::Serial);
     m_refresh->setEnabled(idle);
     m_refresh->setVisible(kind() == Kind::Serial);

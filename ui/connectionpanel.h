@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include <QWidget>
@@ -19,8 +20,10 @@ class MachineConnection;
 struct ConnectionTarget;
 
 // Which machine: a serial port (discovered, refreshable) at a baud rate; a Carvera on the network (Wi-Fi),
-// one of those heard announcing themselves or an address typed in; or the built-in emulator. The last one is
-// remembered. Machines are listened for only while the Wi-Fi choice is shown and nothing is connected.
+// one of those heard announcing themselves or an address typed in; or the built-in emulator. On a port or a
+// typed address, which controller it runs: the Carvera or grblHAL (a machine heard is a Carvera, the
+// emulator is one). The last one is remembered. Machines are listened for only while the Wi-Fi choice is
+// shown and nothing is connected.
 class ConnectionPanel final : public QWidget
 {
     Q_OBJECT
@@ -44,6 +47,11 @@ public:
     // there.
     void setDiscoveryPort(quint16 port);
     [[nodiscard]] const BeaconListener *listener() const { return m_listener; }
+    // What the window adds to a target before it connects (a grblHAL machine's tool setter and reference).
+    void setTargetPreparer(std::function<void(ConnectionTarget &)> prepare)
+    {
+        m_prepare = std::move(prepare);
+    }
 
 private:
     // The widgets only, without a signal.
@@ -61,6 +69,8 @@ private:
     QComboBox *m_machine;
     QLabel *m_emulatorLabel;
     QComboBox *m_baud;
+    QComboBox *m_controller; // Carvera or grblHAL, for a serial port or an address typed in
+    std::function<void(ConnectionTarget &)> m_prepare;
     QLabel *m_hint;
     BeaconListener *m_listener;
     quint16 m_discoveryPort = Beacon::kDiscoveryPort;

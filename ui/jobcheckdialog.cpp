@@ -127,13 +127,23 @@ JobCheckDialog::JobCheckDialog(Sources sources, QWidget *parent)
 
 JobCheckDialog::~JobCheckDialog() = default;
 
+void JobCheckDialog::setSources(Sources sources)
+{
+    m_sources = std::move(sources);
+    if (m_sources.machineDialect)
+        m_dialect->setCurrentIndex(
+            std::max(0, m_dialect->findData(dialectInfo(*m_sources.machineDialect).key)));
+}
+
 void JobCheckDialog::buildControls()
 {
     m_dialect->setObjectName(u"jobDialectCombo"_s);
     m_dialect->setAccessibleName(tr("Controller"));
     for (const DialectInfo &info : dialects())
         m_dialect->addItem(info.name, info.key);
-    m_dialect->setCurrentIndex(std::max(0, m_dialect->findData(AppSettings().jobDialect())));
+    m_dialect->setCurrentIndex(std::max(0,
+        m_dialect->findData(m_sources.machineDialect ? dialectInfo(*m_sources.machineDialect).key
+                                                     : AppSettings().jobDialect())));
     m_useFloor->setObjectName(u"jobFloorCheck"_s);
     m_floor->setObjectName(u"jobFloorSpin"_s);
     m_floor->setAccessibleName(tr("Lowest work Z a feed move may reach"));
@@ -230,6 +240,7 @@ void JobCheckDialog::check(const QString &path)
     input.setup.dialect = dialectFromKey(m_dialect->currentData().toString()).value_or(Dialect::Carvera);
     input.setup.useTable(m_sources.table);
     input.setup.staleDays = m_sources.staleDays;
+    input.setup.controllerTlos = m_sources.controllerTlos;
     if (m_useFloor->isChecked())
         input.setup.zFloor = m_floor->value();
     if (input.setup.dialect == Dialect::Carvera)

@@ -40,7 +40,7 @@ public:
     ~JobCheckDialog() override;
 
     // What the next check reads (the window's table as it is now, …).
-    void setSources(Sources sources) { m_sources = std::move(sources); }
+    void setSources(Sources sources);
     // Checks `path`; a check already running is cancelled first.
     void check(const QString &path);
     void cancel();

@@ -3,8 +3,11 @@
 
 #include <optional>
 
+#include <QHash>
+
 #include <QString>
 
+#include "model/gcode/dialect.h"
 #include "model/job/jobcheck.h"
 #include "model/library/librarylocation.h"
 #include "model/tooltable.h"
@@ -22,6 +25,10 @@ struct JobSources
     QString machine;
     int staleDays = 7;
     std::optional<double> machineReferenceMz;
+    // What the connected controller's own table holds (grblHAL's), by tool: the check compares.
+    std::optional<QHash<int, double>> controllerTlos;
+    // The connected machine's dialect when it says it (grblHAL's), over the remembered choice.
+    std::optional<Dialect> machineDialect;
 };
 
 // The library's facts for a job's tools, read on the thread that calls it (a library connection belongs to

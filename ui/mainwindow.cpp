@@ -119,6 +119,7 @@ void MainWindow::build()
     createMachineActions();
     createMachineStrip();
     connectMachine();
+    connectControllerSettings();
     connectDocument();
     connectHistory();
     connectLibrary();
@@ -382,6 +383,13 @@ void MainWindow::createMachineActions()
     };
     connect(m_rackPanel, &RackPanel::stateChanged, this, rackState);
     rackState();
+    // What only a controller with a setter cycle of Toffee's and a table of its own (grblHAL) has.
+    machine->addSeparator();
+    add(u"actionToolSetter"_s, tr("Tool &Setter…"), QKeySequence(), [this] { editToolSetter(); });
+    m_pushOffsetsAction = add(u"actionPushOffsets"_s, tr("Push &Offsets to the Controller…"), QKeySequence(),
+        [this] { pushOffsets(); });
+    m_pullOffsetsAction = add(u"actionPullOffsets"_s, tr("P&ull Offsets from the Controller…"),
+        QKeySequence(), [this] { pullOffsets(); });
     machine->addSeparator();
     add(u"actionRecordRun"_s, tr("&Record a Program Run…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
         [this] { recordProgramRun(); });

@@ -7,6 +7,7 @@
 #include "model/library/historyevent.h"
 #include "model/library/librarylocation.h"
 #include "model/library/storedtable.h"
+#include "model/toolsetter.h"
 
 class QAction;
 class QDockWidget;
@@ -123,6 +124,13 @@ private:
     void exportHistory();
     void checkJob();
     [[nodiscard]] std::optional<double> machineReference() const;
+    // A grblHAL machine's setter and reference, and its own table (mainwindowcontroller.cpp).
+    void connectControllerSettings();
+    [[nodiscard]] std::optional<double> keptReference() const;
+    [[nodiscard]] std::optional<ToolSetter> machineToolSetter() const;
+    void editToolSetter();
+    void pushOffsets();
+    void pullOffsets();
     void restoreWindowGeometry();
     void restoreDockState();
     void writeSettings();
@@ -160,6 +168,8 @@ private:
     HistoryRecorder *m_history = nullptr;
     HistoryDock *m_historyDock = nullptr;
     RackPanel *m_rackPanel = nullptr;
+    QAction *m_pushOffsetsAction = nullptr;
+    QAction *m_pullOffsetsAction = nullptr;
     QDockWidget *m_rackDock = nullptr;
     QMenu *m_recentMenu = nullptr;
     QAction *m_removeAction = nullptr;

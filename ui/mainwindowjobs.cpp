@@ -51,9 +51,19 @@ JobCheckDialog *MainWindow::openJobCheck(const QString &path)
 {
     AppSettings settings;
     JobSources sources { m_document->table(), m_document->filePath(), m_history->location(), machineName(),
-        settings.staleAfterDays(), machineReference() };
+        settings.staleAfterDays(), machineReference(), std::nullopt, std::nullopt };
     if (!sources.library->isSet())
         sources.library.reset();
+    if (m_connection->firmware().isGrblHal())
+        sources.machineDialect = Dialect::GrblHal;
+    if (const MachineController *controller = m_connection->session()) {
+        if (const auto table = controller->controllerTable()) {
+            QHash<int, double> tlos;
+            for (const ControllerTool &entry : *table)
+                tlos.insert(entry.tool, entry.tlo);
+            sources.controllerTlos = tlos;
+        }
+    }
     if (!m_jobDialog) {
         m_jobDialog = new JobCheckDialog(std::move(sources), this);
         m_jobDialog->setAttribute(Qt::WA_DeleteOnClose);

@@ -116,11 +116,16 @@ std::optional<double> OffsetEditor::targetTlo() const
 
 QString OffsetEditor::commandPreview() const
 {
+    // The connected controller's own words; the Carvera's while none is connected.
+    const MachineController *controller = m_connection->session();
     if (Mode(m_mode->currentData().toInt()) == AboveZ0)
-        return u"M493.3 H"_s + formatNumber(m_value->value(), NumberFormat::command());
+        return controller ? controller->aboveZ0Command(m_value->value())
+                          : u"M493.3 H"_s + formatNumber(m_value->value(), NumberFormat::command());
     const auto target = targetTlo();
-    return target ? u"M493.3 Z"_s + formatNumber(*target, NumberFormat::command())
-                  : tr("(the current TLO is not known yet)");
+    if (!target)
+        return tr("(the current TLO is not known yet)");
+    return controller ? controller->setTloCommand(*target)
+                      : u"M493.3 Z"_s + formatNumber(*target, NumberFormat::command());
 }
 
 QString OffsetEditor::resultPreview() const

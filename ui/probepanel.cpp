@@ -203,9 +203,7 @@ void ProbePanel::restore(bool confirm)
                 "reference it was measured from.");
         if (tool->breakTestFailed)
             details << tr("T%1 failed its last break test.").arg(number);
-        details << tr("Sends: M493.2 T%1, then M493.3 Z%2")
-                       .arg(number)
-                       .arg(formatNumber(tlo, NumberFormat::command()));
+        details << tr("Sends: %1").arg(m_connection->session()->restoreCommand(number, tlo));
         box.setInformativeText(details.join(u"\n\n"_s));
         if (details.size() > 2)
             box.setIcon(QMessageBox::Warning);

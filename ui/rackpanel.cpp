@@ -152,6 +152,7 @@ void RackPanel::connectSignals()
     connect(m_document->model(), &QAbstractItemModel::rowsInserted, this, &RackPanel::refreshTable);
     connect(m_document->model(), &QAbstractItemModel::rowsRemoved, this, &RackPanel::refreshTable);
     connect(m_connection, &MachineConnection::stateChanged, this, &RackPanel::updateSpindle);
+    connect(m_connection, &MachineConnection::stateChanged, this, &RackPanel::updateState);
     connect(m_connection, &MachineConnection::statusChanged, this, &RackPanel::updateSpindle);
     connect(m_connection, &MachineConnection::offsetsChanged, this, &RackPanel::updateSpindle);
     connect(m_connection, &MachineConnection::haltedChanged, this, &RackPanel::updateState);
@@ -189,7 +190,10 @@ std::optional<QString> RackPanel::checkRefusal() const
 void RackPanel::updateState()
 {
     const bool ours = m_sequence || m_loading;
-    const bool ready = m_connection->canOperate() && m_rack && !ours;
+    // The rack is the Carvera's: another controller (grblHAL) is told so, not offered it.
+    const bool connected = m_connection->state() == MachineConnection::State::Connected;
+    const bool rackless = connected && !m_connection->firmware().hasRack();
+    const bool ready = m_connection->canOperate() && m_rack && !ours && !rackless;
     m_load->setText(m_toolSpin->value() == Limits::kEmptySpindle ? tr("Empty the Spindle…")
                                                                  : tr("Load T%1…").arg(m_toolSpin->value()));
     m_load->setEnabled(ready);
@@ -201,6 +205,12 @@ void RackPanel::updateState()
                                      "on a broken one."));
     m_measure->setToolTip(tr("Change to every rack tool in turn and measure it on the tool setter."));
     m_load->setToolTip(tr("Change to the tool: the machine puts the one in the spindle back first."));
+    if (rackless) {
+        const QString why = tr("%1 has no tool rack: the rack is the Carvera's.")
+                                .arg(m_connection->firmware().description());
+        for (QWidget *w : std::initializer_list<QWidget *> { m_load, m_measure, m_check })
+            w->setToolTip(why);
+    }
     for (QWidget *w : std::initializer_list<QWidget *> { m_holds, m_toolSpin, m_tolerance, m_useStored })
         w->setEnabled(!ours);
     Q_EMIT stateChanged();

@@ -64,6 +64,21 @@ MachineSession::MachineSession(MachineLink *link, QObject *parent)
     });
 }
 
+QString MachineSession::setTloCommand(double tlo) const
+{
+    return u"M493.3 Z"_s + QString::fromLatin1(number(tlo));
+}
+
+QString MachineSession::aboveZ0Command(double height) const
+{
+    return u"M493.3 H"_s + QString::fromLatin1(number(height));
+}
+
+QString MachineSession::restoreCommand(int tool, double tlo) const
+{
+    return tr("M493.2 T%1, then M493.3 Z%2").arg(tool).arg(QString::fromLatin1(number(tlo)));
+}
+
 QByteArray MachineSession::number(double value)
 {
     return numberBytes(value, NumberFormat::command());

@@ -63,6 +63,9 @@ public:
     void restoreTlo(int tool, double tlo, Done done) override;
     // Ctrl-X: stops whatever the machine is doing. It halts; Unlock afterwards.
     void abort() override;
+    [[nodiscard]] QString setTloCommand(double tlo) const override;
+    [[nodiscard]] QString aboveZ0Command(double height) const override;
+    [[nodiscard]] QString restoreCommand(int tool, double tlo) const override;
 
 private:
     void run(const QByteArray &command, int timeoutMs, Done done,

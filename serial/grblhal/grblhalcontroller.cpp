@@ -667,6 +667,26 @@ void GrblHalController::restoreTlo(int tool, double tlo, Done done)
         });
 }
 
+QString GrblHalController::setTloCommand(double tlo) const
+{
+    const int tool = m_tool.value_or(0);
+    const QString value = QString::fromLatin1(number(atResolution(tlo)));
+    return fitsTable(tool) ? u"G10 L1 P%1 Z%2, G43 H%1"_s.arg(tool).arg(value) : u"G43.1 Z"_s + value;
+}
+
+QString GrblHalController::aboveZ0Command(double height) const
+{
+    return tr("%1 (the TLO that puts the tip %2 mm above Z0, from where it is)")
+        .arg(setTloCommand(0.0).replace(u"Z0"_s, u"Z…"_s), QString::fromLatin1(number(height)));
+}
+
+QString GrblHalController::restoreCommand(int tool, double tlo) const
+{
+    const QString value = QString::fromLatin1(number(atResolution(tlo)));
+    return fitsTable(tool) ? u"M61 Q%1, G10 L1 P%1 Z%2, G43 H%1"_s.arg(tool).arg(value)
+                           : u"M61 Q%1, G43.1 Z%2"_s.arg(tool).arg(value);
+}
+
 void GrblHalController::abort()
 {
     m_link->sendRealtime('\x18');

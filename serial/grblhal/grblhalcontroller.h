@@ -57,6 +57,9 @@ public:
     // Ctrl-X, grblHAL's soft reset: it stops at once, and forgets the offset in force.
     void abort() override;
 
+    [[nodiscard]] QString setTloCommand(double tlo) const override;
+    [[nodiscard]] QString aboveZ0Command(double height) const override;
+    [[nodiscard]] QString restoreCommand(int tool, double tlo) const override;
     [[nodiscard]] bool needsToolSetter() const override { return true; }
     void setToolSetter(const ToolSetter &setter) override { m_setter = setter; }
     [[nodiscard]] std::optional<ToolSetter> toolSetter() const override { return m_setter; }
@@ -65,6 +68,10 @@ public:
     [[nodiscard]] std::optional<double> reference() const { return m_reference; }
     void resumeToolChange() override;
     void readToolTable(Done done) override;
+    [[nodiscard]] std::optional<QList<ControllerTool>> controllerTable() const override
+    {
+        return m_firmware.hasToolTable() ? std::optional(m_table) : std::nullopt;
+    }
     // Refuses the whole list, naming them, when a tool is beyond the controller's table; otherwise writes
     // each (G10 L1 P Z R), reads $# back and fails naming every entry that differs.
     void writeToolTable(const QList<ControllerTool> &tools, Done done) override;

@@ -117,9 +117,19 @@ public:
     // A manual tool change waiting for the operator (state Tool): the tool is in, go on (grblHAL's cycle
     // start). Nothing where the firmware asks on its own.
     virtual void resumeToolChange() { }
+    // What setTlo(), setTloAboveZ0() and restoreTlo() send, for the operator to read before they are sent
+    // ("M493.3 Z-12.5"; "G10 L1 P3 Z-12.5, G43 H3").
+    [[nodiscard]] virtual QString setTloCommand(double tlo) const = 0;
+    [[nodiscard]] virtual QString aboveZ0Command(double height) const = 0;
+    [[nodiscard]] virtual QString restoreCommand(int tool, double tlo) const = 0;
     // The controller's own tool table (firmware().hasToolTable()): read it, or write `tools` into it and
     // read it back. A controller without one refuses by name.
     virtual void readToolTable(Done done);
+    // The controller's own table as last read (on connecting, after a probe, a push), without asking it.
+    [[nodiscard]] virtual std::optional<QList<ControllerTool>> controllerTable() const
+    {
+        return std::nullopt;
+    }
     virtual void writeToolTable(const QList<ControllerTool> &tools, Done done);
 
     [[nodiscard]] static Result<void> validateTolerance(double tolerance);

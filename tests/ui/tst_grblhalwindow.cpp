@@ -1,0 +1,272 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The window on grblHAL itself (TOFFEE_GRBLHAL_PEER), as a LongMill owner runs it: the connection panel's
+// Wi-Fi choice with an address typed and grblHAL chosen, Machine ▸ Tool Setter… kept for the machine, the
+// first tool probed as the reference and a second against it (in the table and in grblHAL's own table), a
+// break test that finds a tool 0.5 mm shorter with nothing overwritten, Pull Offsets and Push Offsets each
+// through their preview, the rack refused by name, and Check Job warning of a table that differs from the
+// controller's. With TOFFEE_SCREENSHOTS set, the window and the previews are saved there.
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTableWidget>
+
+#include "model/library/library.h"
+#include "tests/support/grblhalpeer.h"
+#include "tests/support/station.h"
+#include "ui/appsettings.h"
+#include "ui/connectionpanel.h"
+#include "ui/jobcheckdialog.h"
+#include "ui/offsetsyncdialog.h"
+#include "ui/rackpanel.h"
+#include "ui/toolsetterdialog.h"
+
+using namespace Toffee;
+using namespace Toffee::Test;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+bool waitConnected(Station &s, int ms = 20000)
+{
+    return QTest::qWaitFor(
+        [&s] { return s.window.connection()->state() == MachineConnection::State::Connected; }, ms);
+}
+
+bool waitIdle(Station &s, int ms = 60000)
+{
+    return QTest::qWaitFor([&s] { return s.idle() && !QApplication::activeModalWidget(); }, ms);
+}
+
+void screenshot(QWidget &widget, const QString &name)
+{
+    const QString folder = qEnvironmentVariable("TOFFEE_SCREENSHOTS");
+    if (!folder.isEmpty() && QDir().mkpath(folder))
+        QVERIFY(widget.grab().save(QDir(folder).filePath(name)));
+}
+
+// In the next modal dialog of type D: `act` on it (it accepts or rejects it).
+template<typename D> void inNextDialog(std::function<void(D *)> act, int attempts = 2000)
+{
+    QTimer::singleShot(10, [=] {
+        auto *dialog = qobject_cast<D *>(QApplication::activeModalWidget());
+        if (!dialog) {
+            if (attempts > 0)
+                inNextDialog<D>(act, attempts - 1);
+            return;
+        }
+        act(dialog);
+    });
+}
+
+// The next message box's text, answered with its default button (or its only one), once it is up.
+void answerAnyBox(QString *text, int attempts = 1000)
+{
+    QTimer::singleShot(10, [=] {
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        if (!box) {
+            if (attempts > 0)
+                answerAnyBox(text, attempts - 1);
+            return;
+        }
+        *text = box->text() + u'\n' + box->informativeText();
+        QAbstractButton *b = box->defaultButton() ? box->defaultButton() : box->buttons().value(0);
+        QVERIFY(b);
+        b->click();
+    });
+}
+
+// The preview's rows as "T2|15.300|7.000|written".
+QStringList rowsOf(QTableWidget *table)
+{
+    QStringList rows;
+    for (int r = 0; r < table->rowCount(); ++r) {
+        QStringList cells;
+        for (int c = 0; c < table->columnCount(); ++c)
+            cells << table->item(r, c)->text();
+        rows << cells.join(u'|');
+    }
+    return rows;
+}
+
+void connectTo(Station &s, const GrblHalPeer &peer)
+{
+    auto *panel = s.window.findChild<ConnectionPanel *>();
+    panel->setKind(ConnectionPanel::Kind::WiFi);
+    auto *machine = s.find<QComboBox>(u"wifiMachineCombo"_s);
+    machine->setEditText(u"127.0.0.1:%1"_s.arg(peer.port()));
+    auto *controller = s.find<QComboBox>(u"controllerCombo"_s);
+    QVERIFY(controller->isVisible() && controller->isEnabled());
+    controller->setCurrentIndex(controller->findData(u"grblhal"_s));
+    QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+    QVERIFY(waitConnected(s));
+    QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
+}
+
+} // namespace
+
+class TestGrblHalWindow : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        if (GrblHalPeer::script().isEmpty())
+            QSKIP(qPrintable(GrblHalPeer::skipReason()));
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
+    void aLongMillOwnersDay()
+    {
+        GrblHalPeer peer;
+        QVERIFY2(peer.started(), qPrintable(peer.errors()));
+        QVERIFY(peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }));
+        // Set on the controller by someone else before Toffee: T5's entry.
+        QVERIFY(peer.ask("G10 L1 P5 Z2.5").contains("ok"));
+        Station s;
+        s.window.resize(1280, 720);
+        connectTo(s, peer);
+        QCOMPARE(s.window.connection()->firmware().kind, FirmwareInfo::Kind::GrblHal);
+        QCOMPARE(s.window.connection()->firmware().toolTableSize, 16);
+        // A probe before the setter is known is refused with where to set it.
+        QVERIFY(s.window.connection()->selectTool(1, {}));
+        QVERIFY(waitIdle(s));
+        QTRY_COMPARE(s.text(u"activeToolLabel"_s), u"T1"_s);
+        QString refusal;
+        QString question;
+        answerNextBox(QMessageBox::Yes, &question);
+        QTimer::singleShot(300, [&refusal] { answerAnyBox(&refusal); });
+        s.trigger(u"actionProbe"_s);
+        QVERIFY(waitIdle(s));
+        QTRY_VERIFY2(refusal.contains(u"Tool Setter"_s), qPrintable(question + u" / "_s + refusal));
+        QVERIFY(!s.table().find(1) || !s.table().find(1)->measuredTlo);
+
+        // Machine ▸ Tool Setter…: kept for the machine in the library, given to the controller at once.
+        inNextDialog<ToolSetterDialog>([](ToolSetterDialog *d) {
+            d->findChild<QDoubleSpinBox *>(u"setterZMin"_s)->setValue(-120.0);
+            d->findChild<QDoubleSpinBox *>(u"setterSeekFeed"_s)->setValue(3000.0);
+            // A latch faster than the search is refused in the dialog, OK disabled, with why.
+            d->findChild<QDoubleSpinBox *>(u"setterLatchFeed"_s)->setValue(5000.0);
+            auto *ok = d->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok);
+            QVERIFY(!ok->isEnabled());
+            QVERIFY(d->findChild<QLabel *>(u"setterProblem"_s)->text().contains(u"latch feed"_s));
+            d->findChild<QDoubleSpinBox *>(u"setterLatchFeed"_s)->setValue(300.0);
+            QVERIFY(ok->isEnabled());
+            ok->click();
+        });
+        s.trigger(u"actionToolSetter"_s);
+        QTRY_VERIFY(s.window.connection()->session()->toolSetter().has_value());
+        QCOMPARE(s.window.connection()->session()->toolSetter()->zMin, -120.0);
+        {
+            auto library = Library::open({ s.libraryPath() });
+            const auto kept = library.value()->toolSetter(AppSettings().machineName());
+            QVERIFY(kept && kept.value());
+            QCOMPARE(kept.value()->seekFeed, 3000.0);
+        }
+
+        // The first tool measured is the reference; the second against it.
+        s.probe();
+        QVERIFY(waitIdle(s));
+        QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
+        QCOMPARE(*s.table().find(1)->referenceMz, -70.0);
+        QVERIFY(s.window.connection()->selectTool(2, {}));
+        QVERIFY(waitIdle(s));
+        s.probe();
+        QVERIFY(waitIdle(s));
+        QCOMPARE(*s.table().find(2)->measuredTlo, 15.3);
+        QCOMPARE(s.text(u"tloLabel"_s), u"15.300 mm"_s);
+        // The offset panel shows what grblHAL is sent, in its words.
+        s.find<QDoubleSpinBox>(u"offsetValueSpin"_s)->setValue(15.5);
+        QTRY_COMPARE(s.text(u"offsetCommandPreview"_s), u"G10 L1 P2 Z15.5, G43 H2"_s);
+        screenshot(s.window, u"grblhal-probed.png"_s);
+
+        // 0.5 mm shorter: broken; the stored TLO kept.
+        QVERIFY(peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 44.8 } }));
+        answerNextBox(QMessageBox::Yes);
+        QString box;
+        QTimer::singleShot(300, [&box] { answerAnyBox(&box); });
+        s.trigger(u"actionBreakTest"_s);
+        QVERIFY(waitIdle(s));
+        QTRY_VERIFY2(box.contains(u"kept in the table and in grblHAL"_s), qPrintable(box));
+        QTRY_VERIFY(s.text(u"breakVerdictLabel"_s).contains(u"BROKEN"_s, Qt::CaseInsensitive));
+        QVERIFY(s.table().find(2)->breakTestFailed);
+        QCOMPARE(*s.table().find(2)->measuredTlo, 15.3);
+
+        // The rack is the Carvera's: not offered, and said why.
+        QVERIFY(!s.find<QAction>(u"actionMeasureRack"_s)->isEnabled());
+
+        // Pull: T5, set on the controller, comes in as set there (not measured), after its preview.
+        QVERIFY(s.find<QAction>(u"actionPullOffsets"_s)->isEnabled());
+        QStringList pullRows;
+        inNextDialog<OffsetSyncDialog>([&](OffsetSyncDialog *d) {
+            pullRows = rowsOf(d->table());
+            screenshot(*d, u"grblhal-pull-preview.png"_s);
+            d->findChild<QPushButton *>(u"offsetsGoButton"_s)->click();
+        });
+        s.trigger(u"actionPullOffsets"_s);
+        QVERIFY(waitIdle(s));
+        QVERIFY2(pullRows.contains(u"T5|—|2.500|new tool"_s), qPrintable(pullRows.join(u'\n')));
+        QVERIFY2(pullRows.contains(u"T2|15.300|15.300|unchanged"_s), qPrintable(pullRows.join(u'\n')));
+        QVERIFY2(pullRows.contains(u"T1|0.000|0.000|unchanged"_s), qPrintable(pullRows.join(u'\n')));
+        QCOMPARE(*s.table().find(5)->measuredTlo, 2.5);
+        QCOMPARE(s.table().find(5)->tloSource, TloSource::Manual);
+        QVERIFY(!s.table().find(5)->referenceMz);
+        // One undo takes the pull back.
+        s.window.document()->undoStack()->undo();
+        QVERIFY(!s.table().find(5));
+        s.window.document()->undoStack()->redo();
+        QCOMPARE(*s.table().find(5)->measuredTlo, 2.5);
+
+        // Push: T1's entry changed on the controller behind Toffee's back is written back from the file.
+        s.window.connection()->disconnectFromMachine();
+        QVERIFY(peer.ask("G10 L1 P1 Z7").contains("ok"));
+        connectTo(s, peer);
+        // Check Job reads grblHAL's table as connected: T1's entry is not the file's.
+        QTemporaryDir dir;
+        const QString program = dir.filePath(u"job.nc"_s);
+        {
+            QFile f(program);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("G21 G90\nM6 T1\nG43 H1\nG1 Z-1 F100\nM30\n");
+        }
+        JobCheckDialog *check = s.window.openJobCheck(program);
+        QTRY_VERIFY(check->report().has_value() && !check->isRunning());
+        QCOMPARE(check->report()->dialect, Dialect::GrblHal);
+        const auto differs = [&] {
+            const QList<Finding> findings = check->report()->findings;
+            return std::any_of(findings.cbegin(), findings.cend(), [](const Finding &f) {
+                return f.kind == FindingKind::ControllerTableDiffers && f.tool == 1;
+            });
+        };
+        QVERIFY(differs());
+        check->close();
+        QStringList pushRows;
+        inNextDialog<OffsetSyncDialog>([&](OffsetSyncDialog *d) {
+            pushRows = rowsOf(d->table());
+            screenshot(*d, u"grblhal-push-preview.png"_s);
+            d->findChild<QPushButton *>(u"offsetsGoButton"_s)->click();
+        });
+        s.trigger(u"actionPushOffsets"_s);
+        QVERIFY(waitIdle(s));
+        QVERIFY2(pushRows.contains(u"T1|0.000|7.000|written"_s), qPrintable(pushRows.join(u'\n')));
+        QVERIFY2(pushRows.contains(u"T5|2.500|2.500|unchanged"_s), qPrintable(pushRows.join(u'\n')));
+
+        // Checked again: in step now.
+        check = s.window.openJobCheck(program);
+        QTRY_VERIFY(check->report().has_value() && !check->isRunning());
+        QVERIFY(!differs());
+        check->close();
+        s.window.connection()->disconnectFromMachine();
+        QCOMPARE(peer.tableZ(1), std::optional(0.0));
+        QCOMPARE(peer.tableZ(2), std::optional(15.3));
+    }
+};
+
+QTEST_MAIN(TestGrblHalWindow)
+#include "tst_grblhalwindow.moc"

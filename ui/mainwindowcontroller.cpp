@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What only some controllers need, in the window: a grblHAL machine's tool setter (Machine ▸ Tool Setter…)
+// and reference, given to it on connecting, and its own tool table pushed from the file or pulled into it
+// (Machine ▸ Push Offsets…, Pull Offsets…), each with a preview of the differences first.
+#include "ui/mainwindow.h"
+
+#include <cmath>
+
+#include <QAction>
+#include <QMessageBox>
+#include <QStatusBar>
+
+#include "model/document/tooldocument.h"
+#include "model/library/historyrecorder.h"
+#include "model/library/library.h"
+#include "model/numberformat.h"
+#include "serial/machineconnection.h"
+#include "ui/appsettings.h"
+#include "ui/connectionpanel.h"
+#include "ui/machinedock.h"
+#include "ui/offsetsyncdialog.h"
+#include "ui/toolsetterdialog.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+constexpr double kSame = 0.0005; // grblHAL prints 0.001 mm
+
+QString controllerName(const MachineConnection *connection)
+{
+    return connection->firmware().isGrblHal() ? u"grblHAL"_s : connection->firmware().description();
+}
+
+} // namespace
+
+void MainWindow::connectControllerSettings()
+{
+    m_machineDock->connectionPanel()->setTargetPreparer([this](ConnectionTarget &target) {
+        if (target.resolvedController() != ControllerKind::GrblHal)
+            return;
+        target.setter = machineToolSetter();
+        target.reference = keptReference();
+    });
+    auto update = [this] {
+        const MachineController *controller = m_connection->session();
+        const bool connected = m_connection->state() == MachineConnection::State::Connected;
+        const bool table = connected && controller && m_connection->firmware().hasToolTable();
+        for (QAction *action : { m_pushOffsetsAction, m_pullOffsetsAction }) {
+            action->setEnabled(table && m_connection->canOperate());
+            action->setToolTip(table ? action->text().remove(u'&')
+                                     : tr("For a controller that keeps a tool table of its own (grblHAL): "
+                                          "connect to one first."));
+        }
+    };
+    connect(m_connection, &MachineConnection::stateChanged, this, update);
+    connect(m_connection, &MachineConnection::busyChanged, this, update);
+    connect(m_connection, &MachineConnection::haltedChanged, this, update);
+    update();
+}
+
+// The reference Toffee kept for this machine: the newest probe's in the history, else the newest measured
+// tool's in the table. Nothing: the next probe makes its tool the reference.
+std::optional<double> MainWindow::keptReference() const
+{
+    if (Library *library = m_history->library()) {
+        HistoryQuery query;
+        query.machine = machineName();
+        query.kinds = { EventKind::Probe };
+        if (const auto events = library->history(query)) {
+            for (auto it = events.value().crbegin(); it != events.value().crend(); ++it) {
+                if (it->referenceMz)
+                    return it->referenceMz;
+            }
+        }
+    }
+    const Tool *newest = nullptr;
+    const QList<Tool> tools = m_document->table().tools();
+    for (const Tool &tool : tools) {
+        if (tool.referenceMz && tool.measuredAt.isValid()
+            && (!newest || tool.measuredAt > newest->measuredAt))
+            newest = &tool;
+    }
+    return newest ? newest->referenceMz : std::nullopt;
+}
+
+// The machine's setter: the library's, else this computer's.
+std::optional<ToolSetter> MainWindow::machineToolSetter() const
+{
+    if (Library *library = m_history->library()) {
+        if (const auto kept = library->toolSetter(machineName()); kept && kept.value())
+            return kept.value();
+    }
+    return AppSettings().toolSetter(machineName());
+}
+
+void MainWindow::editToolSetter()
+{
+    ToolSetterDialog dialog(machineName(), machineToolSetter().value_or(ToolSetter {}), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const ToolSetter setter = dialog.setter();
+    AppSettings().setToolSetter(machineName(), setter);
+    if (Library *library = m_history->library()) {
+        if (auto kept = library->setToolSetter(machineName(), setter); !kept)
+            statusBar()->showMessage(
+                tr("The tool setter is kept on this computer only: %1").arg(kept.error().message), 10000);
+    }
+    if (MachineController *controller = m_connection->session(); controller && controller->needsToolSetter())
+        controller->setToolSetter(setter);
+    statusBar()->showMessage(tr("%1's tool setter: X %2, Y %3, lowest Z %4 mm.")
+                                 .arg(machineName(), formatNumber(setter.x, NumberFormat::upTo(3).inLocale()),
+                                     formatNumber(setter.y, NumberFormat::upTo(3).inLocale()),
+                                     formatNumber(setter.zMin, NumberFormat::upTo(3).inLocale())),
+        10000);
+}
+
+void MainWindow::pushOffsets()
+{
+    // Read first, so that the preview shows what grblHAL holds now, not at connecting.
+    m_connection->readToolTable([this](const SessionResult &read) {
+        if (!read.ok() || !read.controllerTools)
+            return showError(tr("Cannot read the controller's tool table"), read.message);
+        const QList<ControllerTool> held = *read.controllerTools;
+        const int size = m_connection->firmware().toolTableSize;
+        const double toMm = m_document->table().units() == Units::Inch ? 25.4 : 1.0;
+        QList<OffsetDifference> rows;
+        QList<ControllerTool> writes;
+        QStringList beyond;
+        const QList<Tool> tools = m_document->table().tools();
+        for (const Tool &tool : tools) {
+            if (!tool.measuredTlo)
+                continue;
+            OffsetDifference row { tool.number, *tool.measuredTlo * toMm, std::nullopt, false, {} };
+            for (const ControllerTool &entry : held) {
+                if (entry.tool == tool.number)
+                    row.inController = entry.tlo;
+            }
+            if (tool.number < 1 || tool.number > size) {
+                row.what = tr("beyond its table (T1 to T%1)").arg(size);
+                beyond << u"T%1"_s.arg(tool.number);
+            } else if (row.inController && std::fabs(*row.inController - *row.inFile) < kSame) {
+                row.what = tr("unchanged");
+            } else {
+                row.changes = true;
+                row.what = tr("written");
+                writes.append({ tool.number, *row.inFile, std::max(0.0, tool.totalRadius() * toMm) });
+            }
+            rows.append(row);
+        }
+        const QString refusal = beyond.isEmpty()
+            ? QString()
+            : tr("%1 cannot go into grblHAL's table of %2 tools: nothing is pushed. Renumber them, or remove "
+                 "their TLOs, and push again.")
+                  .arg(beyond.join(u", "_s))
+                  .arg(size);
+        OffsetSyncDialog dialog(
+            OffsetSyncDialog::Direction::Push, controllerName(m_connection), rows, refusal, this);
+        if (dialog.exec() != QDialog::Accepted || writes.isEmpty())
+            return;
+        m_connection->writeToolTable(writes, [this, count = writes.size()](const SessionResult &r) {
+            if (!r.ok())
+                return showError(tr("The offsets were not all pushed"), r.message);
+            statusBar()->showMessage(
+                tr("Written into grblHAL's table and read back, all agreeing: %1 TLOs.").arg(count), 10000);
+        });
+    });
+}
+
+void MainWindow::pullOffsets()
+{
+    m_connection->readToolTable([this](const SessionResult &read) {
+        if (!read.ok() || !read.controllerTools)
+            return showError(tr("Cannot read the controller's tool table"), read.message);
+        const double fromMm = m_document->table().units() == Units::Inch ? 1.0 / 25.4 : 1.0;
+        QList<OffsetDifference> rows;
+        for (const ControllerTool &entry : *read.controllerTools) {
+            const Tool *tool = m_document->table().find(entry.tool);
+            OffsetDifference row { entry.tool, tool ? tool->measuredTlo : std::nullopt, entry.tlo * fromMm,
+                false, {} };
+            if (row.inFile && std::fabs(*row.inFile - *row.inController) < kSame) {
+                row.what = tr("unchanged");
+            } else if (std::fabs(entry.tlo) < kSame) {
+                if (!tool)
+                    continue; // an empty entry of a tool the file does not have: nothing to say
+                row.what = tr("empty in the controller: left alone");
+            } else {
+                row.changes = true;
+                row.what = tool ? tr("taken, as set on the controller") : tr("new tool");
+            }
+            rows.append(row);
+        }
+        OffsetSyncDialog dialog(
+            OffsetSyncDialog::Direction::Pull, controllerName(m_connection), rows, {}, this);
+        if (dialog.exec() != QDialog::Accepted)
+            return;
+        const QDateTime now = QDateTime::currentDateTimeUtc();
+        m_document->undoStack()->beginMacro(tr("Pull Offsets from %1").arg(controllerName(m_connection)));
+        int taken = 0;
+        QStringList failed;
+        for (const OffsetDifference &row : std::as_const(rows)) {
+            if (!row.changes)
+                continue;
+            // Set on the controller, not measured by Toffee: no reference, so never restored.
+            const Recording recording { row.tool, *row.inController, TloSource::Manual, std::nullopt,
+                std::nullopt, now, RecordingKind::Pulled };
+            if (auto recorded = m_document->record(recording); recorded)
+                ++taken;
+            else
+                failed << recorded.error().message;
+        }
+        m_document->undoStack()->endMacro();
+        if (!failed.isEmpty())
+            showError(tr("Not every offset could be taken"), failed.join(u'\n'));
+        statusBar()->showMessage(
+            tr("Taken from the controller's table into the file: %1 TLOs.").arg(taken), 10000);
+    });
+}
+
+} // namespace Toffee
