@@ -88,6 +88,8 @@ bench: build
 	$(BUILD_DIR)/bin/toffee-bench-jobcheck 5000000
 	$(BUILD_DIR)/bin/toffee-bench-camimport
 	$(BUILD_DIR)/bin/toffee-bench-wire
+	TOFFEE_GRBLHAL_PEER=$${TOFFEE_GRBLHAL_PEER:-$(wildcard $(CURDIR)/../shared/peers/grblhal/start)} \
+		$(BUILD_DIR)/bin/toffee-bench-grblhal-probe
 	$(BUILD_DIR)/bin/toffee-cli --emulator link-test --count 10000
 	@link=$$(mktemp -u /tmp/toffee-bench-tty.XXXXXX); \
 	$(BUILD_DIR)/bin/toffee-emulator --link $$link > /dev/null & pid=$$!; \
