@@ -295,22 +295,6 @@
         <translation>Diese Zeile ist in %1, die Zeilen darüber aber in %2; eine Tabelle hat eine Einheit.</translation>
     </message>
     <message>
-        <source>halt reason %1</source>
-        <translation>Haltgrund %1</translation>
-    </message>
-    <message>
-        <source>This halt needs a reset of the controller.</source>
-        <translation>Dieser Halt erfordert einen Reset der Steuerung.</translation>
-    </message>
-    <message>
-        <source>This halt needs the machine switched off and on again.</source>
-        <translation>Dieser Halt erfordert, die Maschine aus- und wieder einzuschalten.</translation>
-    </message>
-    <message>
-        <source>Check the machine, then Unlock ($X).</source>
-        <translation>Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
-    </message>
-    <message>
         <source>T%1 cannot be written: %2 offset numbers go from 1 to %3.</source>
         <translation>T%1 lässt sich nicht schreiben: %2-Korrekturnummern gehen von 1 bis %3.</translation>
     </message>
@@ -457,70 +441,6 @@
     <message>
         <source>break_test &quot;%1&quot; must be failed, passed or empty.</source>
         <translation>break_test &quot;%1&quot; muss failed, passed oder leer sein.</translation>
-    </message>
-    <message>
-        <source>The machine was stopped (Stop, Ctrl-X or the stop button).</source>
-        <translation>Die Maschine wurde angehalten (Stopp, Strg-X oder die Stopp-Taste).</translation>
-    </message>
-    <message>
-        <source>Homing failed, or the machine has not been homed.</source>
-        <translation>Die Referenzfahrt ist fehlgeschlagen, oder die Maschine wurde nicht referenziert.</translation>
-    </message>
-    <message>
-        <source>The probe did not touch within its safety margin: the tool may be missing, broken or much shorter than expected.</source>
-        <translation>Der Taster hat innerhalb seines Sicherheitsabstands nicht ausgelöst: Das Werkzeug fehlt möglicherweise, ist gebrochen oder viel kürzer als erwartet.</translation>
-    </message>
-    <message>
-        <source>The tool changer could not home.</source>
-        <translation>Der Werkzeugwechsler konnte keine Referenzfahrt ausführen.</translation>
-    </message>
-    <message>
-        <source>The tool asked for is not a valid tool.</source>
-        <translation>Das angeforderte Werkzeug ist kein gültiges Werkzeug.</translation>
-    </message>
-    <message>
-        <source>No tool was given to the tool change.</source>
-        <translation>Für den Werkzeugwechsel wurde kein Werkzeug angegeben.</translation>
-    </message>
-    <message>
-        <source>The spindle already holds a tool.</source>
-        <translation>In der Spindel ist bereits ein Werkzeug.</translation>
-    </message>
-    <message>
-        <source>The spindle overheated.</source>
-        <translation>Die Spindel ist überhitzt.</translation>
-    </message>
-    <message>
-        <source>A move went beyond the machine&apos;s travel (soft limit).</source>
-        <translation>Eine Bewegung ging über den Verfahrweg der Maschine hinaus (Software-Endschalter).</translation>
-    </message>
-    <message>
-        <source>The cover is open.</source>
-        <translation>Die Abdeckung ist offen.</translation>
-    </message>
-    <message>
-        <source>The probe is not valid.</source>
-        <translation>Der Taster ist nicht gültig.</translation>
-    </message>
-    <message>
-        <source>The emergency stop is pressed.</source>
-        <translation>Der Not-Halt ist gedrückt.</translation>
-    </message>
-    <message>
-        <source>The power supply overheated.</source>
-        <translation>Das Netzteil ist überhitzt.</translation>
-    </message>
-    <message>
-        <source>The machine has not been homed.</source>
-        <translation>Die Maschine wurde nicht referenziert.</translation>
-    </message>
-    <message>
-        <source>A crash was detected.</source>
-        <translation>Eine Kollision wurde erkannt.</translation>
-    </message>
-    <message>
-        <source>The machine halted (reason %1).</source>
-        <translation>Die Maschine hat angehalten (Grund %1).</translation>
     </message>
     <message>
         <source>reference MCS Z</source>
@@ -819,8 +739,100 @@
         <translation>die Maschine meldet keine Referenz (eine unkalibrierte Referenz von 0 oder eine Firmware, die sie nicht nennt), daher kann die gespeicherte Längenkorrektur von T%1 nicht mit ihr geprüft werden: T%1 wird beim Wechsel vermessen.</translation>
     </message>
     <message>
+        <source>T%1 is not break-tested: the firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt.</source>
+        <translation>T%1 wird nicht auf Bruch geprüft: Der Bruchtest der Firmware nimmt T0 und jedes Werkzeug ab T9 für ihren Funktaster und würde anhalten.</translation>
+    </message>
+    <message>
+        <source>T%1 is not break-tested: its TLO is 0.000 mm (the reference tool&apos;s), which the firmware&apos;s break test takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
+        <translation>T%1 wird nicht auf Bruch geprüft: Seine Längenkorrektur ist 0,000 mm (die des Referenzwerkzeugs), die der Bruchtest der Firmware als keine nimmt („No previous TLO included“): Er würde das Werkzeug messen, ohne zu vergleichen.</translation>
+    </message>
+    <message>
+        <source>T%1 cannot be written: grblHAL&apos;s G10 L1 needs a tool number from 1 up.</source>
+        <translation>T%1 lässt sich nicht schreiben: G10 L1 von grblHAL braucht eine Werkzeugnummer ab 1.</translation>
+    </message>
+    <message>
+        <source>halt reason %1</source>
+        <translation>Haltgrund %1</translation>
+    </message>
+    <message>
+        <source>The machine was stopped (Stop, Ctrl-X or the stop button).</source>
+        <translation>Die Maschine wurde angehalten (Stopp, Strg-X oder die Stopp-Taste).</translation>
+    </message>
+    <message>
+        <source>Homing failed, or the machine has not been homed.</source>
+        <translation>Die Referenzfahrt ist fehlgeschlagen, oder die Maschine wurde nicht referenziert.</translation>
+    </message>
+    <message>
+        <source>The probe did not touch within its safety margin: the tool may be missing, broken or much shorter than expected.</source>
+        <translation>Der Taster hat innerhalb seines Sicherheitsabstands nicht ausgelöst: Das Werkzeug fehlt möglicherweise, ist gebrochen oder viel kürzer als erwartet.</translation>
+    </message>
+    <message>
         <source>Measuring on the tool setter failed: the setter was not touched (the tool may be missing or much shorter than expected), a break test found the tool broken, or the tolerance was too small.</source>
         <translation>Das Vermessen am Werkzeugtaster ist fehlgeschlagen: Der Taster wurde nicht berührt (das Werkzeug fehlt vielleicht oder ist viel kürzer als erwartet), eine Bruchprüfung hat das Werkzeug als gebrochen erkannt, oder die Toleranz war zu klein.</translation>
+    </message>
+    <message>
+        <source>The tool changer could not home.</source>
+        <translation>Der Werkzeugwechsler konnte keine Referenzfahrt ausführen.</translation>
+    </message>
+    <message>
+        <source>The tool asked for is not a valid tool.</source>
+        <translation>Das angeforderte Werkzeug ist kein gültiges Werkzeug.</translation>
+    </message>
+    <message>
+        <source>No tool was given to the tool change.</source>
+        <translation>Für den Werkzeugwechsel wurde kein Werkzeug angegeben.</translation>
+    </message>
+    <message>
+        <source>The spindle already holds a tool.</source>
+        <translation>In der Spindel ist bereits ein Werkzeug.</translation>
+    </message>
+    <message>
+        <source>The spindle overheated.</source>
+        <translation>Die Spindel ist überhitzt.</translation>
+    </message>
+    <message>
+        <source>A move went beyond the machine&apos;s travel (soft limit).</source>
+        <translation>Eine Bewegung ging über den Verfahrweg der Maschine hinaus (Software-Endschalter).</translation>
+    </message>
+    <message>
+        <source>The cover is open.</source>
+        <translation>Die Abdeckung ist offen.</translation>
+    </message>
+    <message>
+        <source>The probe is not valid.</source>
+        <translation>Der Taster ist nicht gültig.</translation>
+    </message>
+    <message>
+        <source>The emergency stop is pressed.</source>
+        <translation>Der Not-Halt ist gedrückt.</translation>
+    </message>
+    <message>
+        <source>The power supply overheated.</source>
+        <translation>Das Netzteil ist überhitzt.</translation>
+    </message>
+    <message>
+        <source>The machine has not been homed.</source>
+        <translation>Die Maschine wurde nicht referenziert.</translation>
+    </message>
+    <message>
+        <source>A crash was detected.</source>
+        <translation>Eine Kollision wurde erkannt.</translation>
+    </message>
+    <message>
+        <source>The machine halted (reason %1).</source>
+        <translation>Die Maschine hat angehalten (Grund %1).</translation>
+    </message>
+    <message>
+        <source>This halt needs a reset of the controller.</source>
+        <translation>Dieser Halt erfordert einen Reset der Steuerung.</translation>
+    </message>
+    <message>
+        <source>This halt needs the machine switched off and on again.</source>
+        <translation>Dieser Halt erfordert, die Maschine aus- und wieder einzuschalten.</translation>
+    </message>
+    <message>
+        <source>Check the machine, then Unlock ($X).</source>
+        <translation>Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
     </message>
     <message>
         <source>The tool setter was never touched: the tool may be missing, broken or much shorter than expected. Check the spindle, then Unlock.</source>
@@ -829,14 +841,6 @@
     <message>
         <source>Unlock, home the machine, then try again.</source>
         <translation>Entsperren, die Maschine referenzieren, dann erneut versuchen.</translation>
-    </message>
-    <message>
-        <source>T%1 is not break-tested: the firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt.</source>
-        <translation>T%1 wird nicht auf Bruch geprüft: Der Bruchtest der Firmware nimmt T0 und jedes Werkzeug ab T9 für ihren Funktaster und würde anhalten.</translation>
-    </message>
-    <message>
-        <source>T%1 is not break-tested: its TLO is 0.000 mm (the reference tool&apos;s), which the firmware&apos;s break test takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
-        <translation>T%1 wird nicht auf Bruch geprüft: Seine Längenkorrektur ist 0,000 mm (die des Referenzwerkzeugs), die der Bruchtest der Firmware als keine nimmt („No previous TLO included“): Er würde das Werkzeug messen, ohne zu vergleichen.</translation>
     </message>
 </context>
 <context>
@@ -1268,6 +1272,22 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>%1 machines heard on the network.</source>
         <translation>%1 Maschinen im Netzwerk gehört.</translation>
     </message>
+    <message>
+        <source>Controller the machine runs</source>
+        <translation>Steuerung, mit der die Maschine läuft</translation>
+    </message>
+    <message>
+        <source>Carvera</source>
+        <translation>Carvera</translation>
+    </message>
+    <message>
+        <source>grblHAL</source>
+        <translation>grblHAL</translation>
+    </message>
+    <message>
+        <source>Which controller the machine runs. Toffee does not ask the machine first: each controller&apos;s question would upset the other.</source>
+        <translation>Mit welcher Steuerung die Maschine läuft. Toffee fragt die Maschine nicht vorher: Die Abfrage der einen Steuerung würde die andere stören.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleCheck</name>
@@ -1528,6 +1548,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Makera stock firmware %1</source>
         <translation>Makera-Originalfirmware %1</translation>
+    </message>
+    <message>
+        <source>grblHAL %1</source>
+        <translation>grblHAL %1</translation>
     </message>
     <message>
         <source>Unknown firmware (it did not answer &quot;version&quot;)</source>
@@ -1995,6 +2019,145 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
 </context>
 <context>
+    <name>Toffee::GrblHalController</name>
+    <message>
+        <source>grblHAL answered $G without its modal state ([GC:…]); is this grblHAL?</source>
+        <translation>grblHAL hat auf $G ohne seinen modalen Zustand ([GC:…]) geantwortet; ist das grblHAL?</translation>
+    </message>
+    <message>
+        <source>The machine answered but sent no status report when asked; is it grblHAL? If it is a Carvera, choose the Carvera (--controller carvera).</source>
+        <translation>Die Maschine hat geantwortet, auf Anfrage aber keinen Statusbericht gesendet; ist es grblHAL? Ist es eine Carvera, wählen Sie die Carvera (--controller carvera).</translation>
+    </message>
+    <message>
+        <source>This controller answered $I as Grbl does but did not say it is grblHAL ([FIRMWARE:grblHAL]); it may be classic Grbl, which keeps no tool table. Toffee manages grblHAL and the Carvera.</source>
+        <translation>Diese Steuerung hat auf $I wie Grbl geantwortet, sich aber nicht als grblHAL ausgewiesen ([FIRMWARE:grblHAL]); vielleicht ist es das klassische Grbl, das keine Werkzeugtabelle führt. Toffee verwaltet grblHAL und die Carvera.</translation>
+    </message>
+    <message>
+        <source>This machine did not answer $I as grblHAL does. If it is a Carvera, connect with the Carvera chosen (--controller carvera).</source>
+        <translation>Diese Maschine hat auf $I nicht wie grblHAL geantwortet. Ist es eine Carvera, verbinden Sie sich mit ausgewählter Carvera (--controller carvera).</translation>
+    </message>
+    <message>
+        <source>grblHAL sent no status report within 2 s.</source>
+        <translation>grblHAL hat innerhalb von 2 s keinen Statusbericht gesendet.</translation>
+    </message>
+    <message>
+        <source>grblHAL says no tool is in the spindle (T0), so there is nothing to %1. Say which tool is in (Select Tool, M61 Q&lt;n&gt;) first.</source>
+        <translation>grblHAL meldet kein Werkzeug in der Spindel (T0), daher lässt sich nichts %1. Geben Sie zuerst an, welches Werkzeug eingesetzt ist (Werkzeug auswählen, M61 Q&lt;n&gt;).</translation>
+    </message>
+    <message>
+        <source>Toffee does not know where this machine&apos;s tool setter is. Set it first (Machine ▸ Tool Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates).</source>
+        <translation>Toffee weiß nicht, wo der Werkzeugtaster dieser Maschine ist. Legen Sie ihn zuerst fest (Maschine ▸ Werkzeugtaster …, oder toffee-cli --setter X,Y,ZMIN in Maschinenkoordinaten).</translation>
+    </message>
+    <message>
+        <source>grblHAL is in inches (G20). Toffee probes in millimetres: send G21, then probe again.</source>
+        <translation>grblHAL ist auf Zoll eingestellt (G20). Toffee misst in Millimetern: Senden Sie G21 und messen Sie dann erneut.</translation>
+    </message>
+    <message>
+        <source>The probe did not report a touch. Nothing was measured.</source>
+        <translation>Der Taster hat keine Berührung gemeldet. Es wurde nichts gemessen.</translation>
+    </message>
+    <message>
+        <source>the offset in force reads %1 mm</source>
+        <translation>die wirksame Korrektur lautet %1 mm</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nichts</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s entry reads %2 mm</source>
+        <translation>der Eintrag von T%1 lautet %2 mm</translation>
+    </message>
+    <message>
+        <source>grblHAL was given T%1&apos;s TLO %2 mm, but read back %3. Nothing was recorded; check the controller&apos;s offsets ($#) before you cut.</source>
+        <translation>grblHAL wurde die TLO %2 mm von T%1 übergeben, zurückgelesen wurde aber: %3. Es wurde nichts aufgezeichnet; prüfen Sie die Korrekturen der Steuerung ($#), bevor Sie zerspanen.</translation>
+    </message>
+    <message>
+        <source>T%1 is beyond grblHAL&apos;s table of %2 tools: its TLO is in force (G43.1) but not stored in the controller.</source>
+        <translation>T%1 liegt außerhalb der Tabelle von grblHAL mit %2 Werkzeugen: Seine TLO ist wirksam (G43.1), aber nicht in der Steuerung gespeichert.</translation>
+    </message>
+    <message>
+        <source>This grblHAL keeps no tool table: the TLO is in force (G43.1) until a reset.</source>
+        <translation>Dieses grblHAL führt keine Werkzeugtabelle: Die TLO ist bis zu einem Reset wirksam (G43.1).</translation>
+    </message>
+    <message>
+        <source>measure</source>
+        <translation>vermessen</translation>
+    </message>
+    <message>
+        <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
+        <translation>T%1 ist das Referenzwerkzeug dieser Maschine (seine TLO ist 0): Jedes Werkzeug wird gegen dessen Kontakt bei Maschinen-Z %2 mm gemessen.</translation>
+    </message>
+    <message>
+        <source>break-test</source>
+        <translation>auf Bruch prüfen</translation>
+    </message>
+    <message>
+        <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
+        <translation>Diese Maschine hat noch kein Referenzwerkzeug, daher lässt sich keine neue Länge vergleichen. Vermessen Sie zuerst ein Werkzeug: Das erste gemessene wird zur Referenz.</translation>
+    </message>
+    <message>
+        <source>T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is kept in the table and in grblHAL. Look at the tool and replace it before you cut.</source>
+        <translation>T%1 hat %2 mm gemessen, gegenüber seiner gespeicherten TLO %3 mm: %4 mm Abweichung, mehr als die Toleranz %5 mm. Es ist vielleicht gebrochen oder verschlissen. Die Spindel ist gestoppt und hochgefahren; seine gespeicherte TLO bleibt in der Tabelle und in grblHAL erhalten. Sehen Sie sich das Werkzeug an und ersetzen Sie es, bevor Sie zerspanen.</translation>
+    </message>
+    <message>
+        <source>The TLO</source>
+        <translation>Die TLO</translation>
+    </message>
+    <message>
+        <source>set a TLO for</source>
+        <translation>mit einer TLO versehen</translation>
+    </message>
+    <message>
+        <source>The height above Z0</source>
+        <translation>Die Höhe über Z0</translation>
+    </message>
+    <message>
+        <source>grblHAL sent no status report, so the tool&apos;s height is not known.</source>
+        <translation>grblHAL hat keinen Statusbericht gesendet, daher ist die Höhe des Werkzeugs nicht bekannt.</translation>
+    </message>
+    <message>
+        <source>grblHAL was told T%1 is in the spindle but reports T%2.</source>
+        <translation>grblHAL wurde mitgeteilt, dass T%1 in der Spindel ist, meldet aber T%2.</translation>
+    </message>
+    <message>
+        <source>grblHAL changes to a tool, not to an empty spindle: use Select Tool with T0.</source>
+        <translation>grblHAL wechselt zu einem Werkzeug, nicht zu einer leeren Spindel: Verwenden Sie „Werkzeug auswählen“ mit T0.</translation>
+    </message>
+    <message>
+        <source>The tool change to T%1 was not finished in time: press cycle start once the tool is in, then measure it.</source>
+        <translation>Der Werkzeugwechsel zu T%1 wurde nicht rechtzeitig abgeschlossen: Drücken Sie Zyklusstart, sobald das Werkzeug eingesetzt ist, und vermessen Sie es dann.</translation>
+    </message>
+    <message>
+        <source>A TLO is restored for a tool, not for an empty spindle.</source>
+        <translation>Eine TLO wird für ein Werkzeug wiederhergestellt, nicht für eine leere Spindel.</translation>
+    </message>
+    <message>
+        <source>%1 (the TLO that puts the tip %2 mm above Z0, from where it is)</source>
+        <translation>%1 (die TLO, die die Spitze von ihrer jetzigen Position aus %2 mm über Z0 setzt)</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO</source>
+        <translation>Die TLO von T%1</translation>
+    </message>
+    <message>
+        <source>grblHAL&apos;s table holds T1 to T%1; %2 cannot be written. Nothing was written: renumber them or leave them out.</source>
+        <translation>Die Tabelle von grblHAL umfasst T1 bis T%1; nicht schreibbar sind: %2. Es wurde nichts geschrieben: Nummerieren Sie sie um oder lassen Sie sie weg.</translation>
+    </message>
+    <message>
+        <source>T%1 reads %2 mm, not %3 mm</source>
+        <translation>T%1 lautet %2 mm, nicht %3 mm</translation>
+    </message>
+    <message>
+        <source>grblHAL&apos;s table does not read back as written: %1.</source>
+        <translation>Die Tabelle von grblHAL liest sich nicht so zurück, wie sie geschrieben wurde: %1.</translation>
+    </message>
+    <message>
+        <source>grblHAL&apos;s offsets ($#) could not be read whole: lines were malformed or repeated (%1). Nothing was changed; check the connection and try again.</source>
+        <translation>Die Korrekturen von grblHAL ($#) ließen sich nicht vollständig lesen: Zeilen waren fehlerhaft oder doppelt (%1). Nichts wurde geändert; prüfen Sie die Verbindung und versuchen Sie es erneut.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::HistoryDock</name>
     <message>
         <source>probe</source>
@@ -2011,10 +2174,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>restored</source>
         <translation>wiederhergestellt</translation>
-    </message>
-    <message>
-        <source>imported</source>
-        <translation>importiert</translation>
     </message>
     <message>
         <source>History</source>
@@ -2135,6 +2294,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The chart cannot be drawn: Toffee&apos;s chart module %1 cannot be loaded (%2). Reinstall Toffee; the measurements are in the table below.</source>
         <translation>Das Diagramm kann nicht gezeichnet werden: Toffees Diagrammmodul %1 kann nicht geladen werden (%2). Installieren Sie Toffee neu; die Messungen stehen in der Tabelle darunter.</translation>
+    </message>
+    <message>
+        <source>read in</source>
+        <translation>eingelesen</translation>
     </message>
 </context>
 <context>
@@ -2624,6 +2787,18 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1, beyond the first %2 tools the program loads; the first of them is T%3. Counted, not listed.</source>
         <translation>%1, über die ersten %2 Werkzeuge hinaus, die das Programm einwechselt; das erste davon ist T%3. Gezählt, nicht aufgeführt.</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s own table has no T%1: G43 H%1 is refused. Renumber the tool, or apply its TLO with G43.1.</source>
+        <translation>Die eigene Tabelle der Steuerung hat kein T%1: G43 H%1 wird abgelehnt. Nummerieren Sie das Werkzeug um oder wenden Sie seine TLO mit G43.1 an.</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s own table holds %1 for T%2, the table file %3: G43 H%2 would apply the controller&apos;s. Push the offsets (Machine ▸ Push Offsets…, toffee-cli push-offsets) or probe T%2 before the job.</source>
+        <translation>Die eigene Tabelle der Steuerung hat für T%2 den Wert %1, die Tabellendatei %3: G43 H%2 würde den der Steuerung anwenden. Übertragen Sie die Korrekturen (Maschine ▸ Korrekturen an die Steuerung übertragen …, toffee-cli push-offsets) oder vermessen Sie T%2 vor dem Job.</translation>
+    </message>
+    <message>
+        <source>%1 more tools whose TLO in the controller&apos;s own table is not the file&apos;s</source>
+        <translation>%1 weitere Werkzeuge, deren TLO in der eigenen Tabelle der Steuerung nicht der in der Datei entspricht</translation>
     </message>
 </context>
 <context>
@@ -3238,6 +3413,18 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>and %1 more</source>
         <translation>und %1 weitere</translation>
     </message>
+    <message>
+        <source>Keeping %1&apos;s tool setter</source>
+        <translation>Das Speichern des Werkzeugtasters von %1</translation>
+    </message>
+    <message>
+        <source>Reading %1&apos;s tool setter</source>
+        <translation>Das Lesen des Werkzeugtasters von %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s tool setter in the library (&quot;%2&quot;) does not read: %3 Set it again (Machine ▸ Tool Setter…).</source>
+        <translation>Der Werkzeugtaster von %1 in der Bibliothek („%2“) lässt sich nicht lesen: %3 Legen Sie ihn erneut fest (Maschine ▸ Werkzeugtaster …).</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
@@ -3434,9 +3621,25 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>as asked.</source>
         <translation>wie gewünscht.</translation>
     </message>
+    <message>
+        <source>Reading the controller&apos;s tool table…</source>
+        <translation>Werkzeugtabelle der Steuerung wird gelesen …</translation>
+    </message>
+    <message>
+        <source>Writing the controller&apos;s tool table…</source>
+        <translation>Werkzeugtabelle der Steuerung wird geschrieben …</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineController</name>
+    <message>
+        <source>%1 keeps no tool table of its own: its tools&apos; TLOs are Toffee&apos;s table&apos;s alone.</source>
+        <translation>%1 führt keine eigene Werkzeugtabelle: Die TLOs seiner Werkzeuge stehen allein in Toffees Tabelle.</translation>
+    </message>
+    <message>
+        <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
+        <translation>Die Verbindung zu %1 wurde nicht innerhalb von %2 s geöffnet. Prüfen Sie die Maschine und die Verbindung und versuchen Sie es erneut.</translation>
+    </message>
     <message>
         <source>The break-test tolerance is not a number; enter a value such as 0.1 mm.</source>
         <translation>Die Toleranz des Bruchtests ist keine Zahl; geben Sie einen Wert wie 0,1 mm ein.</translation>
@@ -3496,8 +3699,8 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
 <context>
     <name>Toffee::MachineLink</name>
     <message>
-        <source>The machine halted: %1</source>
-        <translation>Die Maschine hat angehalten: %1</translation>
+        <source>The machine did not answer &quot;%1&quot; within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
+        <translation>Die Maschine hat auf „%1“ nicht innerhalb von %2 s geantwortet. Die Verbindung wurde geschlossen, weil eine späte Antwort für die des nächsten Befehls gehalten werden könnte. Verbinden Sie erneut und prüfen Sie die Maschine, bevor Sie weitermachen.%3</translation>
     </message>
     <message>
         <source>Not connected to the machine; connect first.</source>
@@ -3520,8 +3723,8 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die Verbindung zur Maschine ging verloren: %1</translation>
     </message>
     <message>
-        <source>The machine did not answer &quot;%1&quot; within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
-        <translation>Die Maschine hat auf „%1“ nicht innerhalb von %2 s geantwortet. Die Verbindung wurde geschlossen, weil eine späte Antwort für die des nächsten Befehls gehalten werden könnte. Verbinden Sie erneut und prüfen Sie die Maschine, bevor Sie weitermachen.%3</translation>
+        <source>The machine halted: %1</source>
+        <translation>Die Maschine hat angehalten: %1</translation>
     </message>
     <message>
         <source>Meanwhile it printed %1 lines that were no answer; only the last %2 were kept. A machine that prints that much is not well: check its firmware and the cable.</source>
@@ -3531,8 +3734,24 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
 <context>
     <name>Toffee::MachineSession</name>
     <message>
-        <source>The machine answered but sent no status report; is this a Carvera?</source>
-        <translation>Die Maschine hat geantwortet, aber keinen Statusbericht gesendet; ist das eine Carvera?</translation>
+        <source>The machine printed %1 lines before its answer; only the last %2 were kept, and the result may have been among the others.</source>
+        <translation>Die Maschine hat vor ihrer Antwort %1 Zeilen ausgegeben; nur die letzten %2 wurden behalten, und das Ergebnis war vielleicht unter den anderen.</translation>
+    </message>
+    <message>
+        <source>M493.2 T%1, then M493.3 Z%2</source>
+        <translation>M493.2 T%1, dann M493.3 Z%2</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable or the Wi-Fi and try again.</source>
+        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet, und die wirksame Längenkorrektur wird daraus gelesen. Nichts wurde aufgezeichnet; prüfen Sie das Kabel oder das WLAN und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: &quot;%1&quot;. Nothing was recorded; check the offsets on the machine before you cut.</source>
+        <translation>Der Korrekturbericht der Maschine (M493.4) enthält Werte, die keine Maschine haben kann: „%1“. Nichts wurde gespeichert; prüfen Sie die Korrekturen an der Maschine, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable or the Wi-Fi if it happens twice.</source>
+        <translation>Der Korrekturbericht der Maschine (M493.4) konnte nicht gelesen werden%1. Nichts wurde aufgezeichnet; versuchen Sie es erneut, und prüfen Sie das Kabel oder das WLAN, wenn es zweimal passiert.</translation>
     </message>
     <message>
         <source>The machine sent no status report within 2 s.</source>
@@ -3541,62 +3760,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine finished probing but its probe result ([PRB:…]) could not be read. Nothing was recorded; check the offsets (Report) before you cut.</source>
         <translation>Die Maschine hat die Messung beendet, aber das Messergebnis ([PRB:…]) war nicht lesbar. Nichts wurde gespeichert; prüfen Sie die Korrekturen (Bericht), bevor Sie schneiden.</translation>
-    </message>
-    <message>
-        <source>The break test ran but its result (&quot;Old: … , new: …&quot;) could not be read. Run it again before you trust the tool.</source>
-        <translation>Der Bruchtest ist gelaufen, aber sein Ergebnis („Old: … , new: …“) war nicht lesbar. Starten Sie ihn erneut, bevor Sie dem Werkzeug trauen.</translation>
-    </message>
-    <message>
-        <source>Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.</source>
-        <translation>Werkzeug T%1 hat %2 mm gemessen, vorher %3 mm, mehr als die Toleranz von %4 mm.</translation>
-    </message>
-    <message>
-        <source>The tool length offset</source>
-        <translation>Die Werkzeuglängenkorrektur</translation>
-    </message>
-    <message>
-        <source>The height above Z0</source>
-        <translation>Die Höhe über Z0</translation>
-    </message>
-    <message>
-        <source>The machine did not confirm the unlock; check its state before you go on.</source>
-        <translation>Die Maschine hat das Entsperren nicht bestätigt; prüfen Sie ihren Zustand, bevor Sie weitermachen.</translation>
-    </message>
-    <message>
-        <source>The machine printed %1 lines before its answer; only the last %2 were kept, and the result may have been among the others.</source>
-        <translation>Die Maschine hat vor ihrer Antwort %1 Zeilen ausgegeben; nur die letzten %2 wurden behalten, und das Ergebnis war vielleicht unter den anderen.</translation>
-    </message>
-    <message>
-        <source>The machine stayed busy (%1) for the %2 s allowed for connecting. Wait for it to finish, or stop it, then connect again.</source>
-        <translation>Die Maschine blieb während der %2 s, die zum Verbinden erlaubt sind, beschäftigt (%1). Warten Sie, bis sie fertig ist, oder halten Sie sie an, und verbinden Sie dann erneut.</translation>
-    </message>
-    <message>
-        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: &quot;%1&quot;. Nothing was recorded; check the offsets on the machine before you cut.</source>
-        <translation>Der Korrekturbericht der Maschine (M493.4) enthält Werte, die keine Maschine haben kann: „%1“. Nichts wurde gespeichert; prüfen Sie die Korrekturen an der Maschine, bevor Sie schneiden.</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-    <message>
-        <source>The machine was told to put its tool back, but it reports T%1 in the spindle. Check the spindle and the rack before you go on.</source>
-        <translation>Die Maschine sollte ihr Werkzeug zurücklegen, meldet aber T%1 in der Spindel. Prüfen Sie Spindel und Magazin, bevor Sie fortfahren.</translation>
-    </message>
-    <message>
-        <source>The machine was told to put its tool back but did not report an empty spindle. Check the spindle and the rack before you go on.</source>
-        <translation>Die Maschine sollte ihr Werkzeug zurücklegen, hat aber keine leere Spindel gemeldet. Prüfen Sie Spindel und Magazin, bevor Sie fortfahren.</translation>
-    </message>
-    <message>
-        <source>The machine runs %1: its M491.1 only measures the tool again and takes the new length without comparing, so a broken tool would pass. Probe the tool and compare its TLO with the table, or install the community firmware for break tests.</source>
-        <translation>Auf der Maschine läuft %1: Ihr M491.1 vermisst das Werkzeug nur erneut und übernimmt die neue Länge ohne Vergleich, ein gebrochenes Werkzeug würde also bestehen. Vermessen Sie das Werkzeug und vergleichen Sie seine TLO mit der Tabelle, oder installieren Sie die Community-Firmware für Bruchtests.</translation>
-    </message>
-    <message>
-        <source>The machine did not say which firmware it runs (%1), so Toffee cannot tell whether its M491.1 compares the tool or only measures it again. No break test was run; probe the tool and compare its TLO with the table.</source>
-        <translation>Die Maschine hat nicht angegeben, welche Firmware sie verwendet (%1), daher kann Toffee nicht erkennen, ob ihr M491.1 das Werkzeug vergleicht oder nur erneut vermisst. Es wurde kein Bruchtest ausgeführt; vermessen Sie das Werkzeug und vergleichen Sie seine TLO mit der Tabelle.</translation>
-    </message>
-    <message>
-        <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
-        <translation>Auf der Maschine läuft %1, die M493.3 stillschweigend ignoriert: Eine von Hand gesetzte TLO würde nicht verwendet. Vermessen Sie stattdessen das Werkzeug, oder wechseln Sie mit seiner TLO zu ihm (ein manueller Wechsel).</translation>
     </message>
     <message>
         <source>The machine measured the tool, but its two reports disagree: the TLO in force is %1 mm, and its offset report does not add up to it. Nothing was recorded; probe again.</source>
@@ -3631,8 +3794,28 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die Maschine hatte für dieses Werkzeug keine Längenkorrektur zum Vergleich: Sie hat das Werkzeug vermessen und die neue Länge ohne Vergleich übernommen. Prüfen Sie die gemeldete Längenkorrektur anhand der Tabelle, bevor Sie schneiden.</translation>
     </message>
     <message>
+        <source>The break test ran but its result (&quot;Old: … , new: …&quot;) could not be read. Run it again before you trust the tool.</source>
+        <translation>Der Bruchtest ist gelaufen, aber sein Ergebnis („Old: … , new: …“) war nicht lesbar. Starten Sie ihn erneut, bevor Sie dem Werkzeug trauen.</translation>
+    </message>
+    <message>
+        <source>Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.</source>
+        <translation>Werkzeug T%1 hat %2 mm gemessen, vorher %3 mm, mehr als die Toleranz von %4 mm.</translation>
+    </message>
+    <message>
         <source>The machine was told TLO %1 mm but reports %2 mm in force. Check the offsets before you cut.</source>
         <translation>Der Maschine wurde die Längenkorrektur %1 mm gesendet, sie meldet aber %2 mm in Kraft. Prüfen Sie die Korrekturen, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keins</translation>
+    </message>
+    <message>
+        <source>The tool length offset</source>
+        <translation>Die Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>The height above Z0</source>
+        <translation>Die Höhe über Z0</translation>
     </message>
     <message>
         <source>The machine sent no status report within 2 s; its TLO was not set.</source>
@@ -3651,6 +3834,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die Maschine war nicht angehalten.</translation>
     </message>
     <message>
+        <source>The machine did not confirm the unlock; check its state before you go on.</source>
+        <translation>Die Maschine hat das Entsperren nicht bestätigt; prüfen Sie ihren Zustand, bevor Sie weitermachen.</translation>
+    </message>
+    <message>
         <source>Unlocked. T%1&apos;s stored TLO, %2 mm, is in force again (the break test had left the new length in force).</source>
         <translation>Entsperrt. Die gespeicherte Längenkorrektur von T%1, %2 mm, ist wieder in Kraft (die Bruchprüfung hatte die neue Länge in Kraft gelassen).</translation>
     </message>
@@ -3659,16 +3846,8 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Entsperrt, aber die gespeicherte Längenkorrektur (%1 mm) ließ sich nicht zurücksetzen: %2 Die bei der Bruchprüfung gemessene Länge ist noch in Kraft; schneiden Sie nicht.</translation>
     </message>
     <message>
-        <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
-        <translation>Die Verbindung zu %1 wurde nicht innerhalb von %2 s geöffnet. Prüfen Sie die Maschine und die Verbindung und versuchen Sie es erneut.</translation>
-    </message>
-    <message>
-        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable or the Wi-Fi and try again.</source>
-        <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet, und die wirksame Längenkorrektur wird daraus gelesen. Nichts wurde aufgezeichnet; prüfen Sie das Kabel oder das WLAN und versuchen Sie es erneut.</translation>
-    </message>
-    <message>
-        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable or the Wi-Fi if it happens twice.</source>
-        <translation>Der Korrekturbericht der Maschine (M493.4) konnte nicht gelesen werden%1. Nichts wurde aufgezeichnet; versuchen Sie es erneut, und prüfen Sie das Kabel oder das WLAN, wenn es zweimal passiert.</translation>
+        <source>The machine answered but sent no status report; is this a Carvera?</source>
+        <translation>Die Maschine hat geantwortet, aber keinen Statusbericht gesendet; ist das eine Carvera?</translation>
     </message>
     <message>
         <source>The machine did not answer &quot;%1&quot; within the %2 s allowed for connecting. Check that it is on, and the cable or the Wi-Fi, then connect again (or allow longer).</source>
@@ -3677,6 +3856,30 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine did not finish connecting within the %1 s allowed: it answered too slowly, or not at all. Check that it is on, and the cable or the Wi-Fi, then connect again (or allow longer).</source>
         <translation>Die Maschine hat das Verbinden nicht innerhalb der vorgesehenen %1 s abgeschlossen: Sie antwortete zu langsam oder gar nicht. Prüfen Sie, ob sie eingeschaltet ist, und das Kabel oder das WLAN, und verbinden Sie sich erneut (oder lassen Sie mehr Zeit).</translation>
+    </message>
+    <message>
+        <source>The machine stayed busy (%1) for the %2 s allowed for connecting. Wait for it to finish, or stop it, then connect again.</source>
+        <translation>Die Maschine blieb während der %2 s, die zum Verbinden erlaubt sind, beschäftigt (%1). Warten Sie, bis sie fertig ist, oder halten Sie sie an, und verbinden Sie dann erneut.</translation>
+    </message>
+    <message>
+        <source>The machine was told to put its tool back, but it reports T%1 in the spindle. Check the spindle and the rack before you go on.</source>
+        <translation>Die Maschine sollte ihr Werkzeug zurücklegen, meldet aber T%1 in der Spindel. Prüfen Sie Spindel und Magazin, bevor Sie fortfahren.</translation>
+    </message>
+    <message>
+        <source>The machine was told to put its tool back but did not report an empty spindle. Check the spindle and the rack before you go on.</source>
+        <translation>Die Maschine sollte ihr Werkzeug zurücklegen, hat aber keine leere Spindel gemeldet. Prüfen Sie Spindel und Magazin, bevor Sie fortfahren.</translation>
+    </message>
+    <message>
+        <source>The machine runs %1: its M491.1 only measures the tool again and takes the new length without comparing, so a broken tool would pass. Probe the tool and compare its TLO with the table, or install the community firmware for break tests.</source>
+        <translation>Auf der Maschine läuft %1: Ihr M491.1 vermisst das Werkzeug nur erneut und übernimmt die neue Länge ohne Vergleich, ein gebrochenes Werkzeug würde also bestehen. Vermessen Sie das Werkzeug und vergleichen Sie seine TLO mit der Tabelle, oder installieren Sie die Community-Firmware für Bruchtests.</translation>
+    </message>
+    <message>
+        <source>The machine did not say which firmware it runs (%1), so Toffee cannot tell whether its M491.1 compares the tool or only measures it again. No break test was run; probe the tool and compare its TLO with the table.</source>
+        <translation>Die Maschine hat nicht angegeben, welche Firmware sie verwendet (%1), daher kann Toffee nicht erkennen, ob ihr M491.1 das Werkzeug vergleicht oder nur erneut vermisst. Es wurde kein Bruchtest ausgeführt; vermessen Sie das Werkzeug und vergleichen Sie seine TLO mit der Tabelle.</translation>
+    </message>
+    <message>
+        <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
+        <translation>Auf der Maschine läuft %1, die M493.3 stillschweigend ignoriert: Eine von Hand gesetzte TLO würde nicht verwendet. Vermessen Sie stattdessen das Werkzeug, oder wechseln Sie mit seiner TLO zu ihm (ein manueller Wechsel).</translation>
     </message>
 </context>
 <context>
@@ -4318,6 +4521,82 @@ Trotzdem speichern?</translation>
         <source>&amp;Check Rack…</source>
         <translation>Magazin &amp;prüfen …</translation>
     </message>
+    <message>
+        <source>Tool &amp;Setter…</source>
+        <translation>&amp;Werkzeugtaster …</translation>
+    </message>
+    <message>
+        <source>Push &amp;Offsets to the Controller…</source>
+        <translation>&amp;Korrekturen an die Steuerung übertragen …</translation>
+    </message>
+    <message>
+        <source>P&amp;ull Offsets from the Controller…</source>
+        <translation>Korrekturen von der Steuerung über&amp;nehmen …</translation>
+    </message>
+    <message>
+        <source>For a controller that keeps a tool table of its own (grblHAL): connect to one first.</source>
+        <translation>Für eine Steuerung mit eigener Werkzeugtabelle (grblHAL): Verbinden Sie sich zuerst mit einer.</translation>
+    </message>
+    <message>
+        <source>The tool setter is kept on this computer only: %1</source>
+        <translation>Der Werkzeugtaster wird nur auf diesem Computer gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s tool setter: X %2, Y %3, lowest Z %4 mm.</source>
+        <translation>Werkzeugtaster von %1: X %2, Y %3, tiefstes Z %4 mm.</translation>
+    </message>
+    <message>
+        <source>Cannot read the controller&apos;s tool table</source>
+        <translation>Die Werkzeugtabelle der Steuerung lässt sich nicht lesen</translation>
+    </message>
+    <message>
+        <source>beyond its table (T1 to T%1)</source>
+        <translation>außerhalb ihrer Tabelle (T1 bis T%1)</translation>
+    </message>
+    <message>
+        <source>unchanged</source>
+        <translation>unverändert</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>geschrieben</translation>
+    </message>
+    <message>
+        <source>%1 cannot go into grblHAL&apos;s table of %2 tools: nothing is pushed. Renumber them, or remove their TLOs, and push again.</source>
+        <translation>Nicht in die Tabelle von grblHAL mit %2 Werkzeugen passen: %1. Es wird nichts übertragen. Nummerieren Sie sie um oder entfernen Sie ihre TLOs und übertragen Sie erneut.</translation>
+    </message>
+    <message>
+        <source>The offsets were not all pushed</source>
+        <translation>Nicht alle Korrekturen wurden übertragen</translation>
+    </message>
+    <message>
+        <source>Written into grblHAL&apos;s table and read back, all agreeing: %1 TLOs.</source>
+        <translation>In die Tabelle von grblHAL geschrieben und zurückgelesen, alle übereinstimmend: %1 TLOs.</translation>
+    </message>
+    <message>
+        <source>empty in the controller: left alone</source>
+        <translation>in der Steuerung leer: unberührt gelassen</translation>
+    </message>
+    <message>
+        <source>taken, as set on the controller</source>
+        <translation>übernommen, wie in der Steuerung gesetzt</translation>
+    </message>
+    <message>
+        <source>new tool</source>
+        <translation>neues Werkzeug</translation>
+    </message>
+    <message>
+        <source>Pull Offsets from %1</source>
+        <translation>Korrekturen von %1 übernehmen</translation>
+    </message>
+    <message>
+        <source>Not every offset could be taken</source>
+        <translation>Nicht jede Korrektur ließ sich übernehmen</translation>
+    </message>
+    <message>
+        <source>Taken from the controller&apos;s table into the file: %1 TLOs.</source>
+        <translation>Aus der Tabelle der Steuerung in die Datei übernommen: %1 TLOs.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -4410,6 +4689,57 @@ Der nächste Schnitt verwendet die neue Korrektur. Die Tabelle speichert sie als
     <message>
         <source>The machine now has TLO %1, but the table could not record it: %2</source>
         <translation>Die Maschine hat jetzt TLO %1, aber die Tabelle konnte sie nicht speichern: %2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::OffsetSyncDialog</name>
+    <message>
+        <source>Push Offsets to %1</source>
+        <translation>Korrekturen an %1 übertragen</translation>
+    </message>
+    <message>
+        <source>Pull Offsets from %1</source>
+        <translation>Korrekturen von %1 übernehmen</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>TLO in the file</source>
+        <translation>TLO in der Datei</translation>
+    </message>
+    <message>
+        <source>TLO in %1</source>
+        <translation>TLO in %1</translation>
+    </message>
+    <message>
+        <source>Pushing</source>
+        <translation>Übertragung</translation>
+    </message>
+    <message>
+        <source>Pulling</source>
+        <translation>Übernahme</translation>
+    </message>
+    <message>
+        <source>Nothing to change: the file and %1 agree.</source>
+        <translation>Nichts zu ändern: Die Datei und %1 stimmen überein.</translation>
+    </message>
+    <message>
+        <source>The TLOs in bold (%1) will be written into %2&apos;s own table and read back. The file does not change.</source>
+        <translation>Die fett gedruckten TLOs (%1) werden in die eigene Tabelle von %2 geschrieben und zurückgelesen. Die Datei ändert sich nicht.</translation>
+    </message>
+    <message>
+        <source>The TLOs in bold (%1) will be taken into the file as set on %2, not measured by Toffee, each with a history event. %2 does not change.</source>
+        <translation>Die fett gedruckten TLOs (%1) werden so in die Datei übernommen, wie sie in %2 gesetzt sind, nicht von Toffee gemessen, jede mit einem Verlaufseintrag. %2 ändert sich nicht.</translation>
+    </message>
+    <message>
+        <source>&amp;Push</source>
+        <translation>Ü&amp;bertragen</translation>
+    </message>
+    <message>
+        <source>P&amp;ull</source>
+        <translation>Über&amp;nehmen</translation>
     </message>
 </context>
 <context>
@@ -4511,10 +4841,6 @@ Der nächste Schnitt verwendet die neue Korrektur. Die Tabelle speichert sie als
         <translation>T%1 hat seinen letzten Bruchtest nicht bestanden.</translation>
     </message>
     <message>
-        <source>Sends: M493.2 T%1, then M493.3 Z%2</source>
-        <translation>Sendet: M493.2 T%1, dann M493.3 Z%2</translation>
-    </message>
-    <message>
         <source>T%1 Is in the Spindle</source>
         <translation>T%1 ist in der Spindel</translation>
     </message>
@@ -4557,6 +4883,10 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>The machine reports no reference tool MCS Z: a stored TLO is only right against the reference it was measured from.</source>
         <translation>Die Maschine meldet keine Referenz-MCS-Z: Eine gespeicherte Längenkorrektur stimmt nur gegen die Referenz, gegen die sie gemessen wurde.</translation>
+    </message>
+    <message>
+        <source>Sends: %1</source>
+        <translation>Sendet: %1</translation>
     </message>
 </context>
 <context>
@@ -4996,6 +5326,10 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     <message>
         <source>Skipped</source>
         <translation>Übersprungen</translation>
+    </message>
+    <message>
+        <source>%1 has no tool rack: the rack is the Carvera&apos;s.</source>
+        <translation>%1 hat kein Werkzeugmagazin: Das Magazin gehört zur Carvera.</translation>
     </message>
 </context>
 <context>
@@ -5595,6 +5929,84 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>Take T%1 from %2</source>
         <translation>T%1 von %2 übernehmen</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolSetter</name>
+    <message>
+        <source>The tool setter &quot;%1&quot; is not X,Y,ZMIN (machine coordinates in mm, e.g. 0,0,-120) nor X,Y,ZMIN,SEEK,LATCH[,BACKOFF] (feeds in mm/min, back-off in mm).</source>
+        <translation>Der Werkzeugtaster „%1“ ist weder X,Y,ZMIN (Maschinenkoordinaten in mm, z. B. 0,0,-120) noch X,Y,ZMIN,SEEK,LATCH[,BACKOFF] (Vorschübe in mm/min, Rückzug in mm).</translation>
+    </message>
+    <message>
+        <source>The tool setter &quot;%1&quot;: &quot;%2&quot; is not a number.</source>
+        <translation>Werkzeugtaster „%1“: „%2“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>The tool setter&apos;s position must be machine coordinates from -%1 to %1 mm.</source>
+        <translation>Die Position des Werkzeugtasters muss in Maschinenkoordinaten zwischen -%1 und %1 mm liegen.</translation>
+    </message>
+    <message>
+        <source>The tool setter&apos;s lowest Z (%1 mm) must be below the Z it lifts to (%2 mm): the search goes down.</source>
+        <translation>Das tiefste Z des Werkzeugtasters (%1 mm) muss unter dem Z liegen, auf das hochgefahren wird (%2 mm): Die Suche geht nach unten.</translation>
+    </message>
+    <message>
+        <source>A probing feed must be more than 0 and at most %1 mm/min.</source>
+        <translation>Ein Messvorschub muss größer als 0 und höchstens %1 mm/min sein.</translation>
+    </message>
+    <message>
+        <source>The latch feed (%1 mm/min) must not be faster than the search feed (%2 mm/min): the second touch is the slow, precise one.</source>
+        <translation>Der Feinvorschub (%1 mm/min) darf nicht schneller sein als der Suchvorschub (%2 mm/min): Die zweite Berührung ist die langsame, genaue.</translation>
+    </message>
+    <message>
+        <source>The back-off between the two touches must be more than 0 and at most %1 mm.</source>
+        <translation>Der Rückzug zwischen den beiden Berührungen muss größer als 0 und höchstens %1 mm sein.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolSetterDialog</name>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> mm/min</source>
+        <translation> mm/min</translation>
+    </message>
+    <message>
+        <source>Tool Setter of %1</source>
+        <translation>Werkzeugtaster von %1</translation>
+    </message>
+    <message>
+        <source>Where the tool setter is, in machine coordinates, and how Toffee touches it: it lifts to the safe Z, moves over the setter, searches down to the lowest Z at the search feed, backs off, and touches again at the latch feed.</source>
+        <translation>Wo der Werkzeugtaster in Maschinenkoordinaten liegt und wie Toffee ihn antastet: Die Maschine fährt auf das sichere Z hoch, fährt über den Taster, sucht mit dem Suchvorschub abwärts bis zum tiefsten Z, fährt zurück und tastet mit dem Feinvorschub erneut an.</translation>
+    </message>
+    <message>
+        <source>Setter &amp;X:</source>
+        <translation>Taster &amp;X:</translation>
+    </message>
+    <message>
+        <source>Setter &amp;Y:</source>
+        <translation>Taster &amp;Y:</translation>
+    </message>
+    <message>
+        <source>&amp;Lowest Z to search to:</source>
+        <translation>&amp;Tiefstes Z für die Suche:</translation>
+    </message>
+    <message>
+        <source>Safe Z to &amp;lift to:</source>
+        <translation>Sicheres Z zum &amp;Hochfahren:</translation>
+    </message>
+    <message>
+        <source>&amp;Search feed:</source>
+        <translation>&amp;Suchvorschub:</translation>
+    </message>
+    <message>
+        <source>L&amp;atch feed:</source>
+        <translation>&amp;Feinvorschub:</translation>
+    </message>
+    <message>
+        <source>&amp;Back-off between touches:</source>
+        <translation>&amp;Rückzug zwischen den Berührungen:</translation>
     </message>
 </context>
 <context>

@@ -295,22 +295,6 @@
         <translation>此行单位为 %1，但上面各行为 %2；一张表只能有一种单位。</translation>
     </message>
     <message>
-        <source>halt reason %1</source>
-        <translation>停机原因 %1</translation>
-    </message>
-    <message>
-        <source>This halt needs a reset of the controller.</source>
-        <translation>此次停机需要复位控制器。</translation>
-    </message>
-    <message>
-        <source>This halt needs the machine switched off and on again.</source>
-        <translation>此次停机需要关闭机床电源后重新开启。</translation>
-    </message>
-    <message>
-        <source>Check the machine, then Unlock ($X).</source>
-        <translation>请检查机床，然后解锁（$X）。</translation>
-    </message>
-    <message>
         <source>T%1 cannot be written: %2 offset numbers go from 1 to %3.</source>
         <translation>无法写入 T%1：%2 的补偿号为 1 到 %3。</translation>
     </message>
@@ -457,70 +441,6 @@
     <message>
         <source>break_test &quot;%1&quot; must be failed, passed or empty.</source>
         <translation>break_test &quot;%1&quot; 必须是 failed、passed 或留空。</translation>
-    </message>
-    <message>
-        <source>The machine was stopped (Stop, Ctrl-X or the stop button).</source>
-        <translation>机床已被停止（停止命令、Ctrl-X 或停止按钮）。</translation>
-    </message>
-    <message>
-        <source>Homing failed, or the machine has not been homed.</source>
-        <translation>回零失败，或机床尚未回零。</translation>
-    </message>
-    <message>
-        <source>The probe did not touch within its safety margin: the tool may be missing, broken or much shorter than expected.</source>
-        <translation>探针在安全余量内未触发：刀具可能缺失、已断，或比预期短得多。</translation>
-    </message>
-    <message>
-        <source>The tool changer could not home.</source>
-        <translation>换刀装置无法回零。</translation>
-    </message>
-    <message>
-        <source>The tool asked for is not a valid tool.</source>
-        <translation>请求的刀具不是有效刀具。</translation>
-    </message>
-    <message>
-        <source>No tool was given to the tool change.</source>
-        <translation>换刀时未指定刀具。</translation>
-    </message>
-    <message>
-        <source>The spindle already holds a tool.</source>
-        <translation>主轴上已有刀具。</translation>
-    </message>
-    <message>
-        <source>The spindle overheated.</source>
-        <translation>主轴过热。</translation>
-    </message>
-    <message>
-        <source>A move went beyond the machine&apos;s travel (soft limit).</source>
-        <translation>某个移动超出了机床行程（软限位）。</translation>
-    </message>
-    <message>
-        <source>The cover is open.</source>
-        <translation>防护罩已打开。</translation>
-    </message>
-    <message>
-        <source>The probe is not valid.</source>
-        <translation>探针无效。</translation>
-    </message>
-    <message>
-        <source>The emergency stop is pressed.</source>
-        <translation>急停按钮已按下。</translation>
-    </message>
-    <message>
-        <source>The power supply overheated.</source>
-        <translation>电源过热。</translation>
-    </message>
-    <message>
-        <source>The machine has not been homed.</source>
-        <translation>机床尚未回零。</translation>
-    </message>
-    <message>
-        <source>A crash was detected.</source>
-        <translation>检测到碰撞。</translation>
-    </message>
-    <message>
-        <source>The machine halted (reason %1).</source>
-        <translation>机床已停机（原因 %1）。</translation>
     </message>
     <message>
         <source>reference MCS Z</source>
@@ -819,8 +739,100 @@
         <translation>机床未报告基准（基准为 0 即未校准，或固件不报告），因此无法据此检查 T%1 的已存 TLO：换刀时将对其测量。</translation>
     </message>
     <message>
+        <source>T%1 is not break-tested: the firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt.</source>
+        <translation>T%1 不做断刀检测：固件的断刀检测把 T0 及 T9 以上的每把刀都当作其无线探头，并会停机。</translation>
+    </message>
+    <message>
+        <source>T%1 is not break-tested: its TLO is 0.000 mm (the reference tool&apos;s), which the firmware&apos;s break test takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
+        <translation>T%1 不做断刀检测：其刀长补偿为 0.000 mm（基准刀的），固件的断刀检测将其视为无（“No previous TLO included”）：它只会测量刀具而不比较。</translation>
+    </message>
+    <message>
+        <source>T%1 cannot be written: grblHAL&apos;s G10 L1 needs a tool number from 1 up.</source>
+        <translation>无法写入 T%1：grblHAL 的 G10 L1 需要从 1 起的刀具号。</translation>
+    </message>
+    <message>
+        <source>halt reason %1</source>
+        <translation>停机原因 %1</translation>
+    </message>
+    <message>
+        <source>The machine was stopped (Stop, Ctrl-X or the stop button).</source>
+        <translation>机床已被停止（停止命令、Ctrl-X 或停止按钮）。</translation>
+    </message>
+    <message>
+        <source>Homing failed, or the machine has not been homed.</source>
+        <translation>回零失败，或机床尚未回零。</translation>
+    </message>
+    <message>
+        <source>The probe did not touch within its safety margin: the tool may be missing, broken or much shorter than expected.</source>
+        <translation>探针在安全余量内未触发：刀具可能缺失、已断，或比预期短得多。</translation>
+    </message>
+    <message>
         <source>Measuring on the tool setter failed: the setter was not touched (the tool may be missing or much shorter than expected), a break test found the tool broken, or the tolerance was too small.</source>
         <translation>在对刀仪上测量失败：对刀仪未被触碰（刀具可能缺失或比预期短得多）、断刀检测判定刀具已断，或公差过小。</translation>
+    </message>
+    <message>
+        <source>The tool changer could not home.</source>
+        <translation>换刀装置无法回零。</translation>
+    </message>
+    <message>
+        <source>The tool asked for is not a valid tool.</source>
+        <translation>请求的刀具不是有效刀具。</translation>
+    </message>
+    <message>
+        <source>No tool was given to the tool change.</source>
+        <translation>换刀时未指定刀具。</translation>
+    </message>
+    <message>
+        <source>The spindle already holds a tool.</source>
+        <translation>主轴上已有刀具。</translation>
+    </message>
+    <message>
+        <source>The spindle overheated.</source>
+        <translation>主轴过热。</translation>
+    </message>
+    <message>
+        <source>A move went beyond the machine&apos;s travel (soft limit).</source>
+        <translation>某个移动超出了机床行程（软限位）。</translation>
+    </message>
+    <message>
+        <source>The cover is open.</source>
+        <translation>防护罩已打开。</translation>
+    </message>
+    <message>
+        <source>The probe is not valid.</source>
+        <translation>探针无效。</translation>
+    </message>
+    <message>
+        <source>The emergency stop is pressed.</source>
+        <translation>急停按钮已按下。</translation>
+    </message>
+    <message>
+        <source>The power supply overheated.</source>
+        <translation>电源过热。</translation>
+    </message>
+    <message>
+        <source>The machine has not been homed.</source>
+        <translation>机床尚未回零。</translation>
+    </message>
+    <message>
+        <source>A crash was detected.</source>
+        <translation>检测到碰撞。</translation>
+    </message>
+    <message>
+        <source>The machine halted (reason %1).</source>
+        <translation>机床已停机（原因 %1）。</translation>
+    </message>
+    <message>
+        <source>This halt needs a reset of the controller.</source>
+        <translation>此次停机需要复位控制器。</translation>
+    </message>
+    <message>
+        <source>This halt needs the machine switched off and on again.</source>
+        <translation>此次停机需要关闭机床电源后重新开启。</translation>
+    </message>
+    <message>
+        <source>Check the machine, then Unlock ($X).</source>
+        <translation>检查机床，然后解锁（$X）。</translation>
     </message>
     <message>
         <source>The tool setter was never touched: the tool may be missing, broken or much shorter than expected. Check the spindle, then Unlock.</source>
@@ -829,14 +841,6 @@
     <message>
         <source>Unlock, home the machine, then try again.</source>
         <translation>请解锁、让机床回原点，然后重试。</translation>
-    </message>
-    <message>
-        <source>T%1 is not break-tested: the firmware&apos;s break test takes T0 and every tool from T9 up for its wireless probe, and would halt.</source>
-        <translation>T%1 不做断刀检测：固件的断刀检测把 T0 及 T9 以上的每把刀都当作其无线探头，并会停机。</translation>
-    </message>
-    <message>
-        <source>T%1 is not break-tested: its TLO is 0.000 mm (the reference tool&apos;s), which the firmware&apos;s break test takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
-        <translation>T%1 不做断刀检测：其刀长补偿为 0.000 mm（基准刀的），固件的断刀检测将其视为无（“No previous TLO included”）：它只会测量刀具而不比较。</translation>
     </message>
 </context>
 <context>
@@ -1268,6 +1272,22 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>%1 machines heard on the network.</source>
         <translation>在网络中发现 %1 台机器。</translation>
     </message>
+    <message>
+        <source>Controller the machine runs</source>
+        <translation>机床所用的控制器</translation>
+    </message>
+    <message>
+        <source>Carvera</source>
+        <translation>Carvera</translation>
+    </message>
+    <message>
+        <source>grblHAL</source>
+        <translation>grblHAL</translation>
+    </message>
+    <message>
+        <source>Which controller the machine runs. Toffee does not ask the machine first: each controller&apos;s question would upset the other.</source>
+        <translation>机床所用的控制器。Toffee 不会先询问机床：每种控制器的查询都会干扰另一种。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleCheck</name>
@@ -1528,6 +1548,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Makera stock firmware %1</source>
         <translation>Makera 原厂固件 %1</translation>
+    </message>
+    <message>
+        <source>grblHAL %1</source>
+        <translation>grblHAL %1</translation>
     </message>
     <message>
         <source>Unknown firmware (it did not answer &quot;version&quot;)</source>
@@ -1995,6 +2019,145 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
 </context>
 <context>
+    <name>Toffee::GrblHalController</name>
+    <message>
+        <source>grblHAL answered $G without its modal state ([GC:…]); is this grblHAL?</source>
+        <translation>grblHAL 对 $G 的应答中没有模态状态（[GC:…]）；这是 grblHAL 吗？</translation>
+    </message>
+    <message>
+        <source>The machine answered but sent no status report when asked; is it grblHAL? If it is a Carvera, choose the Carvera (--controller carvera).</source>
+        <translation>机床有应答，但在询问时没有发送状态报告；它是 grblHAL 吗？如果是 Carvera，请选择 Carvera（--controller carvera）。</translation>
+    </message>
+    <message>
+        <source>This controller answered $I as Grbl does but did not say it is grblHAL ([FIRMWARE:grblHAL]); it may be classic Grbl, which keeps no tool table. Toffee manages grblHAL and the Carvera.</source>
+        <translation>该控制器像 Grbl 一样应答了 $I，但没有表明自己是 grblHAL（[FIRMWARE:grblHAL]）；它可能是经典 Grbl，不保存刀具表。Toffee 管理的是 grblHAL 和 Carvera。</translation>
+    </message>
+    <message>
+        <source>This machine did not answer $I as grblHAL does. If it is a Carvera, connect with the Carvera chosen (--controller carvera).</source>
+        <translation>该机床没有像 grblHAL 那样应答 $I。如果是 Carvera，请选择 Carvera 后再连接（--controller carvera）。</translation>
+    </message>
+    <message>
+        <source>grblHAL sent no status report within 2 s.</source>
+        <translation>grblHAL 在 2 秒内没有发送状态报告。</translation>
+    </message>
+    <message>
+        <source>grblHAL says no tool is in the spindle (T0), so there is nothing to %1. Say which tool is in (Select Tool, M61 Q&lt;n&gt;) first.</source>
+        <translation>grblHAL 报告主轴中没有刀具（T0），因此无法%1。请先指明装的是哪把刀具（选择刀具，M61 Q&lt;n&gt;）。</translation>
+    </message>
+    <message>
+        <source>Toffee does not know where this machine&apos;s tool setter is. Set it first (Machine ▸ Tool Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates).</source>
+        <translation>Toffee 不知道这台机床的对刀仪在哪里。请先设置（机床 ▸ 对刀仪…，或用 toffee-cli --setter X,Y,ZMIN 以机床坐标指定）。</translation>
+    </message>
+    <message>
+        <source>grblHAL is in inches (G20). Toffee probes in millimetres: send G21, then probe again.</source>
+        <translation>grblHAL 处于英寸模式（G20）。Toffee 以毫米对刀：请发送 G21，然后重新对刀。</translation>
+    </message>
+    <message>
+        <source>The probe did not report a touch. Nothing was measured.</source>
+        <translation>探针没有报告触碰。未测得任何数据。</translation>
+    </message>
+    <message>
+        <source>the offset in force reads %1 mm</source>
+        <translation>生效的补偿读数为 %1 mm</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s entry reads %2 mm</source>
+        <translation>T%1 的条目读数为 %2 mm</translation>
+    </message>
+    <message>
+        <source>grblHAL was given T%1&apos;s TLO %2 mm, but read back %3. Nothing was recorded; check the controller&apos;s offsets ($#) before you cut.</source>
+        <translation>已将 T%1 的 TLO %2 mm 写入 grblHAL，但读回的结果是：%3。未记录任何内容；切削前请检查控制器的补偿（$#）。</translation>
+    </message>
+    <message>
+        <source>T%1 is beyond grblHAL&apos;s table of %2 tools: its TLO is in force (G43.1) but not stored in the controller.</source>
+        <translation>T%1 超出了 grblHAL 的刀具表（共 %2 把刀具）：其 TLO 已生效（G43.1），但未保存在控制器中。</translation>
+    </message>
+    <message>
+        <source>This grblHAL keeps no tool table: the TLO is in force (G43.1) until a reset.</source>
+        <translation>此 grblHAL 不保存刀具表：TLO 在复位之前一直生效（G43.1）。</translation>
+    </message>
+    <message>
+        <source>measure</source>
+        <translation>测量</translation>
+    </message>
+    <message>
+        <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
+        <translation>T%1 是这台机床的基准刀具（其 TLO 为 0）：所有刀具都相对于它在机床 Z %2 mm 处的触碰点测量。</translation>
+    </message>
+    <message>
+        <source>break-test</source>
+        <translation>进行断刀检测</translation>
+    </message>
+    <message>
+        <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
+        <translation>这台机床还没有基准刀具，因此无法比较新的长度。请先对一把刀具对刀：第一把测量的刀具即成为基准。</translation>
+    </message>
+    <message>
+        <source>T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is kept in the table and in grblHAL. Look at the tool and replace it before you cut.</source>
+        <translation>T%1 测得 %2 mm，其已存 TLO 为 %3 mm：相差 %4 mm，超过公差 %5 mm。刀具可能已断或磨损。主轴已停止并抬起；其已存 TLO 仍保留在刀具表和 grblHAL 中。请查看刀具，并在切削前更换它。</translation>
+    </message>
+    <message>
+        <source>The TLO</source>
+        <translation>TLO</translation>
+    </message>
+    <message>
+        <source>set a TLO for</source>
+        <translation>设置 TLO</translation>
+    </message>
+    <message>
+        <source>The height above Z0</source>
+        <translation>Z0 以上的高度</translation>
+    </message>
+    <message>
+        <source>grblHAL sent no status report, so the tool&apos;s height is not known.</source>
+        <translation>grblHAL 没有发送状态报告，因此不知道刀具的高度。</translation>
+    </message>
+    <message>
+        <source>grblHAL was told T%1 is in the spindle but reports T%2.</source>
+        <translation>已告知 grblHAL 主轴中是 T%1，但它报告的是 T%2。</translation>
+    </message>
+    <message>
+        <source>grblHAL changes to a tool, not to an empty spindle: use Select Tool with T0.</source>
+        <translation>grblHAL 只能换到某把刀具，不能换成空主轴：请使用“选择刀具”并选 T0。</translation>
+    </message>
+    <message>
+        <source>The tool change to T%1 was not finished in time: press cycle start once the tool is in, then measure it.</source>
+        <translation>换到 T%1 的换刀未能及时完成：装好刀具后请按循环启动，然后测量它。</translation>
+    </message>
+    <message>
+        <source>A TLO is restored for a tool, not for an empty spindle.</source>
+        <translation>TLO 只能为刀具恢复，不能为空主轴恢复。</translation>
+    </message>
+    <message>
+        <source>%1 (the TLO that puts the tip %2 mm above Z0, from where it is)</source>
+        <translation>%1（以当前位置为准，使刀尖位于 Z0 以上 %2 mm 的 TLO）</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO</source>
+        <translation>T%1 的 TLO</translation>
+    </message>
+    <message>
+        <source>grblHAL&apos;s table holds T1 to T%1; %2 cannot be written. Nothing was written: renumber them or leave them out.</source>
+        <translation>grblHAL 的刀具表只容纳 T1 到 T%1；%2 无法写入。未写入任何内容：请为它们重新编号，或将其略去。</translation>
+    </message>
+    <message>
+        <source>T%1 reads %2 mm, not %3 mm</source>
+        <translation>T%1 读数为 %2 mm，而不是 %3 mm</translation>
+    </message>
+    <message>
+        <source>grblHAL&apos;s table does not read back as written: %1.</source>
+        <translation>grblHAL 的刀具表读回的值与写入的不符：%1。</translation>
+    </message>
+    <message>
+        <source>grblHAL&apos;s offsets ($#) could not be read whole: lines were malformed or repeated (%1). Nothing was changed; check the connection and try again.</source>
+        <translation>无法完整读取 grblHAL 的补偿（$#）：有行格式错误或重复（%1）。未做任何更改；请检查连接后重试。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::HistoryDock</name>
     <message>
         <source>probe</source>
@@ -2011,10 +2174,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>restored</source>
         <translation>已恢复</translation>
-    </message>
-    <message>
-        <source>imported</source>
-        <translation>已导入</translation>
     </message>
     <message>
         <source>History</source>
@@ -2135,6 +2294,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The chart cannot be drawn: Toffee&apos;s chart module %1 cannot be loaded (%2). Reinstall Toffee; the measurements are in the table below.</source>
         <translation>无法绘制图表：无法加载 Toffee 的图表模块 %1（%2）。请重新安装 Toffee；测量值见下方表格。</translation>
+    </message>
+    <message>
+        <source>read in</source>
+        <translation>已读入</translation>
     </message>
 </context>
 <context>
@@ -2624,6 +2787,18 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1, beyond the first %2 tools the program loads; the first of them is T%3. Counted, not listed.</source>
         <translation>%1，超出程序装入的前 %2 把刀具；其中第一把是 T%3。只计数，不列出。</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s own table has no T%1: G43 H%1 is refused. Renumber the tool, or apply its TLO with G43.1.</source>
+        <translation>控制器自身的刀具表中没有 T%1：G43 H%1 会被拒绝。请为该刀具重新编号，或用 G43.1 应用其 TLO。</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s own table holds %1 for T%2, the table file %3: G43 H%2 would apply the controller&apos;s. Push the offsets (Machine ▸ Push Offsets…, toffee-cli push-offsets) or probe T%2 before the job.</source>
+        <translation>控制器自身的刀具表中 T%2 为 %1，而刀具表文件中为 %3：G43 H%2 将应用控制器中的值。请在作业前推送补偿（机床 ▸ 向控制器推送补偿…，toffee-cli push-offsets），或对 T%2 对刀。</translation>
+    </message>
+    <message>
+        <source>%1 more tools whose TLO in the controller&apos;s own table is not the file&apos;s</source>
+        <translation>另有 %1 把刀具在控制器自身刀具表中的 TLO 与文件中的不一致</translation>
     </message>
 </context>
 <context>
@@ -3238,6 +3413,18 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>and %1 more</source>
         <translation>以及另外 %1 个</translation>
     </message>
+    <message>
+        <source>Keeping %1&apos;s tool setter</source>
+        <translation>保存 %1 的对刀仪</translation>
+    </message>
+    <message>
+        <source>Reading %1&apos;s tool setter</source>
+        <translation>读取 %1 的对刀仪</translation>
+    </message>
+    <message>
+        <source>%1&apos;s tool setter in the library (&quot;%2&quot;) does not read: %3 Set it again (Machine ▸ Tool Setter…).</source>
+        <translation>刀具库中 %1 的对刀仪（“%2”）无法读取：%3 请重新设置（机床 ▸ 对刀仪…）。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
@@ -3434,9 +3621,25 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>as asked.</source>
         <translation>按要求断开。</translation>
     </message>
+    <message>
+        <source>Reading the controller&apos;s tool table…</source>
+        <translation>正在读取控制器的刀具表…</translation>
+    </message>
+    <message>
+        <source>Writing the controller&apos;s tool table…</source>
+        <translation>正在写入控制器的刀具表…</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineController</name>
+    <message>
+        <source>%1 keeps no tool table of its own: its tools&apos; TLOs are Toffee&apos;s table&apos;s alone.</source>
+        <translation>%1 没有自己的刀具表：其刀具的 TLO 只保存在 Toffee 的刀具表中。</translation>
+    </message>
+    <message>
+        <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
+        <translation>与 %1 的连接未能在 %2 秒内打开。请检查机器和连接后重试。</translation>
+    </message>
     <message>
         <source>The break-test tolerance is not a number; enter a value such as 0.1 mm.</source>
         <translation>断刀检测公差不是数字；请输入例如 0.1 mm 的值。</translation>
@@ -3496,8 +3699,8 @@ Licensed under the GNU General Public License, version 3 or later.</source>
 <context>
     <name>Toffee::MachineLink</name>
     <message>
-        <source>The machine halted: %1</source>
-        <translation>机床已停机：%1</translation>
+        <source>The machine did not answer &quot;%1&quot; within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
+        <translation>机器未在 %2 秒内回应“%1”。连接已关闭，因为迟到的回应可能被当作下一条命令的回应。请重新连接，并在继续之前检查机器。%3</translation>
     </message>
     <message>
         <source>Not connected to the machine; connect first.</source>
@@ -3520,8 +3723,8 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>与机床的连接丢失：%1</translation>
     </message>
     <message>
-        <source>The machine did not answer &quot;%1&quot; within %2 s. The link was closed, because a late answer could be taken for the next command&apos;s. Reconnect, and check the machine before you go on.%3</source>
-        <translation>机器未在 %2 秒内回应“%1”。连接已关闭，因为迟到的回应可能被当作下一条命令的回应。请重新连接，并在继续之前检查机器。%3</translation>
+        <source>The machine halted: %1</source>
+        <translation>机床已停机：%1</translation>
     </message>
     <message>
         <source>Meanwhile it printed %1 lines that were no answer; only the last %2 were kept. A machine that prints that much is not well: check its firmware and the cable.</source>
@@ -3531,8 +3734,24 @@ Licensed under the GNU General Public License, version 3 or later.</source>
 <context>
     <name>Toffee::MachineSession</name>
     <message>
-        <source>The machine answered but sent no status report; is this a Carvera?</source>
-        <translation>机床有回应，但没有发送状态报告；这是 Carvera 吗？</translation>
+        <source>The machine printed %1 lines before its answer; only the last %2 were kept, and the result may have been among the others.</source>
+        <translation>机器在回应之前输出了 %1 行；只保留了最后 %2 行，结果可能在其余行中。</translation>
+    </message>
+    <message>
+        <source>M493.2 T%1, then M493.3 Z%2</source>
+        <translation>M493.2 T%1，然后 M493.3 Z%2</translation>
+    </message>
+    <message>
+        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable or the Wi-Fi and try again.</source>
+        <translation>机器在 2 秒内没有发送状态报告，而生效的刀长补偿要从中读取。未记录任何内容；请检查数据线或 Wi-Fi 后重试。</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: &quot;%1&quot;. Nothing was recorded; check the offsets on the machine before you cut.</source>
+        <translation>机器的偏置报告（M493.4）含有任何机器都不可能有的数值：“%1”。未记录任何内容；切削前请在机器上检查偏置。</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable or the Wi-Fi if it happens twice.</source>
+        <translation>无法读取机器的偏置报告（M493.4）%1。未记录任何内容；请重试，若再次发生请检查数据线或 Wi-Fi。</translation>
     </message>
     <message>
         <source>The machine sent no status report within 2 s.</source>
@@ -3541,62 +3760,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine finished probing but its probe result ([PRB:…]) could not be read. Nothing was recorded; check the offsets (Report) before you cut.</source>
         <translation>机床已完成对刀，但无法读取对刀结果（[PRB:…]）。未记录任何内容；切削前请检查补偿（报告）。</translation>
-    </message>
-    <message>
-        <source>The break test ran but its result (&quot;Old: … , new: …&quot;) could not be read. Run it again before you trust the tool.</source>
-        <translation>断刀检测已运行，但无法读取其结果（“Old: … , new: …”）。在信任该刀具之前请重新运行。</translation>
-    </message>
-    <message>
-        <source>Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.</source>
-        <translation>刀具 T%1 测得 %2 mm，之前为 %3 mm，超出了 %4 mm 的公差。</translation>
-    </message>
-    <message>
-        <source>The tool length offset</source>
-        <translation>刀具长度补偿</translation>
-    </message>
-    <message>
-        <source>The height above Z0</source>
-        <translation>Z0 以上的高度</translation>
-    </message>
-    <message>
-        <source>The machine did not confirm the unlock; check its state before you go on.</source>
-        <translation>机床未确认解锁；继续之前请检查其状态。</translation>
-    </message>
-    <message>
-        <source>The machine printed %1 lines before its answer; only the last %2 were kept, and the result may have been among the others.</source>
-        <translation>机器在回应之前输出了 %1 行；只保留了最后 %2 行，结果可能在其余行中。</translation>
-    </message>
-    <message>
-        <source>The machine stayed busy (%1) for the %2 s allowed for connecting. Wait for it to finish, or stop it, then connect again.</source>
-        <translation>在连接允许的 %2 秒内机器一直忙碌（%1）。请等待其完成或将其停止，然后重新连接。</translation>
-    </message>
-    <message>
-        <source>The machine&apos;s offset report (M493.4) holds values no machine can have: &quot;%1&quot;. Nothing was recorded; check the offsets on the machine before you cut.</source>
-        <translation>机器的偏置报告（M493.4）含有任何机器都不可能有的数值：“%1”。未记录任何内容；切削前请在机器上检查偏置。</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>无</translation>
-    </message>
-    <message>
-        <source>The machine was told to put its tool back, but it reports T%1 in the spindle. Check the spindle and the rack before you go on.</source>
-        <translation>已让机床放回刀具，但它报告主轴上是 T%1。继续之前请检查主轴和刀库。</translation>
-    </message>
-    <message>
-        <source>The machine was told to put its tool back but did not report an empty spindle. Check the spindle and the rack before you go on.</source>
-        <translation>已让机床放回刀具，但它没有报告主轴为空。继续之前请检查主轴和刀库。</translation>
-    </message>
-    <message>
-        <source>The machine runs %1: its M491.1 only measures the tool again and takes the new length without comparing, so a broken tool would pass. Probe the tool and compare its TLO with the table, or install the community firmware for break tests.</source>
-        <translation>机床运行的是 %1：其 M491.1 只会重新测量刀具并直接采用新长度而不作比较，因此断刀也会通过。请对刀并将其 TLO 与刀具表比较，或安装社区固件以进行断刀检测。</translation>
-    </message>
-    <message>
-        <source>The machine did not say which firmware it runs (%1), so Toffee cannot tell whether its M491.1 compares the tool or only measures it again. No break test was run; probe the tool and compare its TLO with the table.</source>
-        <translation>机床未说明其运行的固件（%1），因此 Toffee 无法判断其 M491.1 是会比较刀具，还是只会重新测量。未执行断刀检测；请对刀并将其 TLO 与刀具表比较。</translation>
-    </message>
-    <message>
-        <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
-        <translation>机床运行的是 %1，它会不加提示地忽略 M493.3：手动设置的 TLO 不会被使用。请改为对刀，或带着其 TLO 换到该刀具（手动换刀）。</translation>
     </message>
     <message>
         <source>The machine measured the tool, but its two reports disagree: the TLO in force is %1 mm, and its offset report does not add up to it. Nothing was recorded; probe again.</source>
@@ -3631,8 +3794,28 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>机床没有此刀具的 TLO 可供比较：它测量了刀具并在未比较的情况下采用了新长度。切削前请将其报告的 TLO 与刀具表核对。</translation>
     </message>
     <message>
+        <source>The break test ran but its result (&quot;Old: … , new: …&quot;) could not be read. Run it again before you trust the tool.</source>
+        <translation>断刀检测已运行，但无法读取其结果（“Old: … , new: …”）。在信任该刀具之前请重新运行。</translation>
+    </message>
+    <message>
+        <source>Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.</source>
+        <translation>刀具 T%1 测得 %2 mm，之前为 %3 mm，超出了 %4 mm 的公差。</translation>
+    </message>
+    <message>
         <source>The machine was told TLO %1 mm but reports %2 mm in force. Check the offsets before you cut.</source>
         <translation>已向机床发送 TLO %1 mm，但其报告生效的是 %2 mm。切削前请检查偏置。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>The tool length offset</source>
+        <translation>刀具长度补偿</translation>
+    </message>
+    <message>
+        <source>The height above Z0</source>
+        <translation>Z0 以上的高度</translation>
     </message>
     <message>
         <source>The machine sent no status report within 2 s; its TLO was not set.</source>
@@ -3651,6 +3834,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>机床并未停机。</translation>
     </message>
     <message>
+        <source>The machine did not confirm the unlock; check its state before you go on.</source>
+        <translation>机床未确认解锁；继续之前请检查其状态。</translation>
+    </message>
+    <message>
         <source>Unlocked. T%1&apos;s stored TLO, %2 mm, is in force again (the break test had left the new length in force).</source>
         <translation>已解锁。T%1 的已存 TLO %2 mm 重新生效（断刀检测曾使新长度生效）。</translation>
     </message>
@@ -3659,16 +3846,8 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>已解锁，但无法恢复已存的 TLO（%1 mm）：%2 断刀检测测得的长度仍在生效；请勿切削。</translation>
     </message>
     <message>
-        <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
-        <translation>与 %1 的连接未能在 %2 秒内打开。请检查机器和连接后重试。</translation>
-    </message>
-    <message>
-        <source>The machine sent no status report within 2 s, and the TLO in force is read from it. Nothing was recorded; check the cable or the Wi-Fi and try again.</source>
-        <translation>机器在 2 秒内没有发送状态报告，而生效的刀长补偿要从中读取。未记录任何内容；请检查数据线或 Wi-Fi 后重试。</translation>
-    </message>
-    <message>
-        <source>The machine&apos;s offset report (M493.4) could not be read%1. Nothing was recorded; try again, and check the cable or the Wi-Fi if it happens twice.</source>
-        <translation>无法读取机器的偏置报告（M493.4）%1。未记录任何内容；请重试，若再次发生请检查数据线或 Wi-Fi。</translation>
+        <source>The machine answered but sent no status report; is this a Carvera?</source>
+        <translation>机床有回应，但没有发送状态报告；这是 Carvera 吗？</translation>
     </message>
     <message>
         <source>The machine did not answer &quot;%1&quot; within the %2 s allowed for connecting. Check that it is on, and the cable or the Wi-Fi, then connect again (or allow longer).</source>
@@ -3677,6 +3856,30 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine did not finish connecting within the %1 s allowed: it answered too slowly, or not at all. Check that it is on, and the cable or the Wi-Fi, then connect again (or allow longer).</source>
         <translation>机器未在允许的 %1 秒内完成连接：它应答太慢或根本没有应答。请检查它是否已开机，以及数据线或 Wi-Fi，然后重新连接（或允许更长时间）。</translation>
+    </message>
+    <message>
+        <source>The machine stayed busy (%1) for the %2 s allowed for connecting. Wait for it to finish, or stop it, then connect again.</source>
+        <translation>在连接允许的 %2 秒内机器一直忙碌（%1）。请等待其完成或将其停止，然后重新连接。</translation>
+    </message>
+    <message>
+        <source>The machine was told to put its tool back, but it reports T%1 in the spindle. Check the spindle and the rack before you go on.</source>
+        <translation>已让机床放回刀具，但它报告主轴上是 T%1。继续之前请检查主轴和刀库。</translation>
+    </message>
+    <message>
+        <source>The machine was told to put its tool back but did not report an empty spindle. Check the spindle and the rack before you go on.</source>
+        <translation>已让机床放回刀具，但它没有报告主轴为空。继续之前请检查主轴和刀库。</translation>
+    </message>
+    <message>
+        <source>The machine runs %1: its M491.1 only measures the tool again and takes the new length without comparing, so a broken tool would pass. Probe the tool and compare its TLO with the table, or install the community firmware for break tests.</source>
+        <translation>机床运行的是 %1：其 M491.1 只会重新测量刀具并直接采用新长度而不作比较，因此断刀也会通过。请对刀并将其 TLO 与刀具表比较，或安装社区固件以进行断刀检测。</translation>
+    </message>
+    <message>
+        <source>The machine did not say which firmware it runs (%1), so Toffee cannot tell whether its M491.1 compares the tool or only measures it again. No break test was run; probe the tool and compare its TLO with the table.</source>
+        <translation>机床未说明其运行的固件（%1），因此 Toffee 无法判断其 M491.1 是会比较刀具，还是只会重新测量。未执行断刀检测；请对刀并将其 TLO 与刀具表比较。</translation>
+    </message>
+    <message>
+        <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
+        <translation>机床运行的是 %1，它会不加提示地忽略 M493.3：手动设置的 TLO 不会被使用。请改为对刀，或带着其 TLO 换到该刀具（手动换刀）。</translation>
     </message>
 </context>
 <context>
@@ -4318,6 +4521,82 @@ Save anyway?</source>
         <source>&amp;Check Rack…</source>
         <translation>检查刀库(&amp;C)…</translation>
     </message>
+    <message>
+        <source>Tool &amp;Setter…</source>
+        <translation>对刀仪(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Push &amp;Offsets to the Controller…</source>
+        <translation>向控制器推送补偿(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>P&amp;ull Offsets from the Controller…</source>
+        <translation>从控制器拉取补偿(&amp;U)…</translation>
+    </message>
+    <message>
+        <source>For a controller that keeps a tool table of its own (grblHAL): connect to one first.</source>
+        <translation>适用于自带刀具表的控制器（grblHAL）：请先连接一台。</translation>
+    </message>
+    <message>
+        <source>The tool setter is kept on this computer only: %1</source>
+        <translation>对刀仪设置仅保存在这台计算机上：%1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s tool setter: X %2, Y %3, lowest Z %4 mm.</source>
+        <translation>%1 的对刀仪：X %2，Y %3，最低 Z %4 mm。</translation>
+    </message>
+    <message>
+        <source>Cannot read the controller&apos;s tool table</source>
+        <translation>无法读取控制器的刀具表</translation>
+    </message>
+    <message>
+        <source>beyond its table (T1 to T%1)</source>
+        <translation>超出其刀具表（T1 到 T%1）</translation>
+    </message>
+    <message>
+        <source>unchanged</source>
+        <translation>未更改</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>已写入</translation>
+    </message>
+    <message>
+        <source>%1 cannot go into grblHAL&apos;s table of %2 tools: nothing is pushed. Renumber them, or remove their TLOs, and push again.</source>
+        <translation>%1 无法放入 grblHAL 的刀具表（共 %2 把刀具）：未推送任何内容。请为它们重新编号，或删除它们的 TLO，然后重新推送。</translation>
+    </message>
+    <message>
+        <source>The offsets were not all pushed</source>
+        <translation>并非所有补偿都已推送</translation>
+    </message>
+    <message>
+        <source>Written into grblHAL&apos;s table and read back, all agreeing: %1 TLOs.</source>
+        <translation>已写入 grblHAL 的刀具表并读回，全部一致：%1 个 TLO。</translation>
+    </message>
+    <message>
+        <source>empty in the controller: left alone</source>
+        <translation>控制器中为空：保持不变</translation>
+    </message>
+    <message>
+        <source>taken, as set on the controller</source>
+        <translation>已采用，按控制器中的设置</translation>
+    </message>
+    <message>
+        <source>new tool</source>
+        <translation>新刀具</translation>
+    </message>
+    <message>
+        <source>Pull Offsets from %1</source>
+        <translation>从 %1 拉取补偿</translation>
+    </message>
+    <message>
+        <source>Not every offset could be taken</source>
+        <translation>并非所有补偿都能采用</translation>
+    </message>
+    <message>
+        <source>Taken from the controller&apos;s table into the file: %1 TLOs.</source>
+        <translation>已从控制器的刀具表采用到文件中：%1 个 TLO。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -4410,6 +4689,57 @@ TLO %3
     <message>
         <source>The machine now has TLO %1, but the table could not record it: %2</source>
         <translation>机床现在的 TLO 为 %1，但刀具表无法记录：%2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::OffsetSyncDialog</name>
+    <message>
+        <source>Push Offsets to %1</source>
+        <translation>向 %1 推送补偿</translation>
+    </message>
+    <message>
+        <source>Pull Offsets from %1</source>
+        <translation>从 %1 拉取补偿</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>刀具</translation>
+    </message>
+    <message>
+        <source>TLO in the file</source>
+        <translation>文件中的 TLO</translation>
+    </message>
+    <message>
+        <source>TLO in %1</source>
+        <translation>%1 中的 TLO</translation>
+    </message>
+    <message>
+        <source>Pushing</source>
+        <translation>推送</translation>
+    </message>
+    <message>
+        <source>Pulling</source>
+        <translation>拉取</translation>
+    </message>
+    <message>
+        <source>Nothing to change: the file and %1 agree.</source>
+        <translation>无需更改：文件与 %1 一致。</translation>
+    </message>
+    <message>
+        <source>The TLOs in bold (%1) will be written into %2&apos;s own table and read back. The file does not change.</source>
+        <translation>粗体的 TLO（%1）将写入 %2 自身的刀具表并读回。文件不会更改。</translation>
+    </message>
+    <message>
+        <source>The TLOs in bold (%1) will be taken into the file as set on %2, not measured by Toffee, each with a history event. %2 does not change.</source>
+        <translation>粗体的 TLO（%1）将按 %2 中的设置采用到文件中，而非由 Toffee 测得，每个都附带一条历史记录。%2 不会更改。</translation>
+    </message>
+    <message>
+        <source>&amp;Push</source>
+        <translation>推送(&amp;P)</translation>
+    </message>
+    <message>
+        <source>P&amp;ull</source>
+        <translation>拉取(&amp;U)</translation>
     </message>
 </context>
 <context>
@@ -4511,10 +4841,6 @@ TLO %3
         <translation>T%1 未通过上次断刀检测。</translation>
     </message>
     <message>
-        <source>Sends: M493.2 T%1, then M493.3 Z%2</source>
-        <translation>发送：M493.2 T%1，然后 M493.3 Z%2</translation>
-    </message>
-    <message>
         <source>T%1 Is in the Spindle</source>
         <translation>T%1 在主轴上</translation>
     </message>
@@ -4557,6 +4883,10 @@ Probe T%1 instead.</source>
     <message>
         <source>The machine reports no reference tool MCS Z: a stored TLO is only right against the reference it was measured from.</source>
         <translation>机床未报告基准刀 MCS Z：已存 TLO 仅相对其测量时的基准才正确。</translation>
+    </message>
+    <message>
+        <source>Sends: %1</source>
+        <translation>发送：%1</translation>
     </message>
 </context>
 <context>
@@ -4996,6 +5326,10 @@ when it is fresh (no probe)</source>
     <message>
         <source>Skipped</source>
         <translation>已跳过</translation>
+    </message>
+    <message>
+        <source>%1 has no tool rack: the rack is the Carvera&apos;s.</source>
+        <translation>%1 没有刀库：刀库是 Carvera 的功能。</translation>
     </message>
 </context>
 <context>
@@ -5595,6 +5929,84 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>Take T%1 from %2</source>
         <translation>采用 %2 的 T%1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolSetter</name>
+    <message>
+        <source>The tool setter &quot;%1&quot; is not X,Y,ZMIN (machine coordinates in mm, e.g. 0,0,-120) nor X,Y,ZMIN,SEEK,LATCH[,BACKOFF] (feeds in mm/min, back-off in mm).</source>
+        <translation>对刀仪“%1”既不是 X,Y,ZMIN（机床坐标，单位 mm，例如 0,0,-120），也不是 X,Y,ZMIN,SEEK,LATCH[,BACKOFF]（进给单位 mm/min，回退距离单位 mm）。</translation>
+    </message>
+    <message>
+        <source>The tool setter &quot;%1&quot;: &quot;%2&quot; is not a number.</source>
+        <translation>对刀仪“%1”：“%2”不是数字。</translation>
+    </message>
+    <message>
+        <source>The tool setter&apos;s position must be machine coordinates from -%1 to %1 mm.</source>
+        <translation>对刀仪的位置必须是 -%1 到 %1 mm 之间的机床坐标。</translation>
+    </message>
+    <message>
+        <source>The tool setter&apos;s lowest Z (%1 mm) must be below the Z it lifts to (%2 mm): the search goes down.</source>
+        <translation>对刀仪的最低 Z（%1 mm）必须低于抬起到的 Z（%2 mm）：搜索是向下进行的。</translation>
+    </message>
+    <message>
+        <source>A probing feed must be more than 0 and at most %1 mm/min.</source>
+        <translation>探测进给必须大于 0 且不超过 %1 mm/min。</translation>
+    </message>
+    <message>
+        <source>The latch feed (%1 mm/min) must not be faster than the search feed (%2 mm/min): the second touch is the slow, precise one.</source>
+        <translation>精测进给（%1 mm/min）不得快于搜索进给（%2 mm/min）：第二次触碰才是缓慢而精确的那次。</translation>
+    </message>
+    <message>
+        <source>The back-off between the two touches must be more than 0 and at most %1 mm.</source>
+        <translation>两次触碰之间的回退距离必须大于 0 且不超过 %1 mm。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolSetterDialog</name>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> mm/min</source>
+        <translation> mm/min</translation>
+    </message>
+    <message>
+        <source>Tool Setter of %1</source>
+        <translation>%1 的对刀仪</translation>
+    </message>
+    <message>
+        <source>Where the tool setter is, in machine coordinates, and how Toffee touches it: it lifts to the safe Z, moves over the setter, searches down to the lowest Z at the search feed, backs off, and touches again at the latch feed.</source>
+        <translation>对刀仪在机床坐标中的位置，以及 Toffee 如何触碰它：先抬起到安全 Z，移到对刀仪上方，以搜索进给向下搜索至最低 Z，回退，再以精测进给再次触碰。</translation>
+    </message>
+    <message>
+        <source>Setter &amp;X:</source>
+        <translation>对刀仪 X(&amp;X)：</translation>
+    </message>
+    <message>
+        <source>Setter &amp;Y:</source>
+        <translation>对刀仪 Y(&amp;Y)：</translation>
+    </message>
+    <message>
+        <source>&amp;Lowest Z to search to:</source>
+        <translation>搜索到的最低 Z(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>Safe Z to &amp;lift to:</source>
+        <translation>抬起到的安全 Z(&amp;Z)：</translation>
+    </message>
+    <message>
+        <source>&amp;Search feed:</source>
+        <translation>搜索进给(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>L&amp;atch feed:</source>
+        <translation>精测进给(&amp;A)：</translation>
+    </message>
+    <message>
+        <source>&amp;Back-off between touches:</source>
+        <translation>两次触碰之间的回退(&amp;B)：</translation>
     </message>
 </context>
 <context>

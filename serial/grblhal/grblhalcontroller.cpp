@@ -167,9 +167,9 @@ void GrblHalController::readParameters(Done done, std::function<void(const GrblH
             SessionResult result;
             result.outcome = SessionResult::Outcome::MachineError;
             result.message
-                = tr("grblHAL's offsets ($#) could not be read whole: %n line(s) were malformed or "
-                     "repeated. Nothing was changed; check the connection and try again.",
-                    nullptr, int(report.refusedLines + reply.droppedLines));
+                = tr("grblHAL's offsets ($#) could not be read whole: lines were malformed or repeated (%1). "
+                     "Nothing was changed; check the connection and try again.")
+                      .arg(report.refusedLines + reply.droppedLines);
             done(result);
             return;
         }
