@@ -4,10 +4,13 @@
 #include <cmath>
 #include <numeric>
 
+#include <unistd.h>
+
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QSocketNotifier>
 #include <QTimer>
 
 #include "app/cli/cli.h"
@@ -376,9 +379,25 @@ void MachineRun::operate()
         started = c.report(printed([this](const SessionResult &r) { printTlo(m_call, r); }));
     else if (command == u"probe")
         started = c.probe(recorded());
-    else if (command == u"change-tool")
+    else if (command == u"change-tool") {
+        // A manual change that waits for the operator (grblHAL): said, and Enter here goes on as the
+        // machine's cycle start does.
+        MachineController *controller = c.session();
+        QObject::connect(
+            controller, &MachineController::waitingForToolChange, &m_loop, [this, controller](int tool) {
+                m_call.err << "toffee-cli: put T" << tool
+                           << " in the spindle, then press the machine's cycle start, or Enter here."
+                           << Qt::endl;
+                auto *input = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, &m_loop);
+                QObject::connect(input, &QSocketNotifier::activated, &m_loop, [controller, input] {
+                    char buffer[256];
+                    (void)::read(STDIN_FILENO, buffer, sizeof buffer);
+                    input->setEnabled(false);
+                    controller->resumeToolChange();
+                });
+            });
         started = c.changeTool(m_options.tool, recorded(), storedTloForChange(m_call, m_options, c));
-    else if (isRackCommand(command) && !c.firmware().hasRack())
+    } else if (isRackCommand(command) && !c.firmware().hasRack())
         finishWith(SessionResult::failed(SessionResult::Outcome::Refused,
             u"%1 has no tool rack; %2 is for the Carvera's. Change tools with change-tool N."_s.arg(
                 c.firmware().description(), command)));

@@ -600,13 +600,16 @@ void GrblHalController::changeTool(int tool, Done done, std::optional<double> st
         [this, done, tool, storedTlo](const CommandReply &) {
             // A manual change holds in state Tool until the operator presses cycle start.
             const qint64 deadline = QDateTime::currentMSecsSinceEpoch() + kToolChangeTimeoutMs;
+            auto told = std::make_shared<bool>(false);
             auto waitChanged = std::make_shared<std::function<void()>>();
             // Each poll holds the function; it holds itself only weakly, so it goes with the last poll.
-            *waitChanged = [this, done, tool, storedTlo, deadline, self = std::weak_ptr(waitChanged)] {
+            *waitChanged = [this, done, tool, storedTlo, deadline, told, self = std::weak_ptr(waitChanged)] {
                 awaitStatus(2000,
-                    [this, done, tool, storedTlo, deadline, waitChanged = self.lock()](
+                    [this, done, tool, storedTlo, deadline, told, waitChanged = self.lock()](
                         std::optional<MachineStatus> s) {
                         if (s && s->state == u"Tool" && QDateTime::currentMSecsSinceEpoch() < deadline) {
+                            if (!std::exchange(*told, true))
+                                Q_EMIT waitingForToolChange(tool);
                             QTimer::singleShot(
                                 MachineLink::kPollIntervalMs, this, [waitChanged] { (*waitChanged)(); });
                             return;

@@ -132,6 +132,12 @@ public:
     }
     virtual void writeToolTable(const QList<ControllerTool> &tools, Done done);
 
+Q_SIGNALS:
+    // A manual tool change waits for the operator to put `tool` in (grblHAL's state Tool): resumeToolChange()
+    // goes on, as the machine's cycle start does.
+    void waitingForToolChange(int tool);
+
+public:
     [[nodiscard]] static Result<void> validateTolerance(double tolerance);
     [[nodiscard]] static Result<void> validateOffset(const QString &what, double value);
     [[nodiscard]] static Result<void> validateToolNumber(int tool);

@@ -8,6 +8,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 
 #include "tests/support/grblhalpeer.h"
@@ -234,6 +235,35 @@ private Q_SLOTS:
         run = machine({ u"pull-offsets"_s }, pulled);
         QCOMPARE(json(run)[u"changed"_s].toArray().size(), 0);
         QCOMPARE(json(run)[u"unchanged"_s].toInt(), 2);
+
+        // A manual change: M6 T1 holds grblHAL in state Tool until the operator says the tool is in (Enter
+        // here, or the machine's cycle start); then T1 is measured against the reference.
+        {
+            QProcess change;
+            change.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"),
+                QStringList { u"--json"_s, u"--library"_s, m_dir.filePath(u"library.sqlite"_s),
+                    u"--machine"_s, u"LongMill"_s, u"--controller"_s, u"grblhal"_s, u"--table"_s, table() }
+                    + m_target + QStringList { u"change-tool"_s, u"1"_s });
+            QVERIFY(change.waitForStarted());
+            QByteArray said;
+            QElapsedTimer clock;
+            clock.start();
+            while (!said.contains("press the machine's cycle start") && clock.elapsed() < 20000) {
+                change.waitForReadyRead(100);
+                said += change.readAllStandardError();
+            }
+            QVERIFY2(said.contains("put T1 in the spindle"), said.constData());
+            change.write("\n");
+            QVERIFY(change.waitForFinished(60000));
+            const QByteArray out = change.readAllStandardOutput();
+            QVERIFY2(change.exitCode() == 0, QByteArray(said + change.readAllStandardError()).constData());
+            QCOMPARE(
+                QJsonDocument::fromJson(out.trimmed().split('\n').last()).object()[u"tool"_s].toInt(), 1);
+            QCOMPARE(
+                QJsonDocument::fromJson(out.trimmed().split('\n').last()).object()[u"tlo"_s].toDouble(), 0.0);
+            const QList<QByteArray> modal = peer->ask("$G");
+            QVERIFY(!modal.isEmpty() && modal.first().contains(" T1 ") && modal.first().contains(" G43 "));
+        }
 
         // The rack is the Carvera's: refused by name.
         run = machine({ u"measure-rack"_s });
