@@ -46,6 +46,7 @@ OffsetEditor::OffsetEditor(MachineConnection *connection, ToolDocument *document
     m_command->setObjectName(u"offsetCommandPreview"_s);
     m_command->setAccessibleName(tr("Command that will be sent"));
     m_command->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_command->setWordWrap(true); // grblHAL's G10 L1 and G43 H are longer than the Carvera's M493.3
     useMonospace(m_command);
     m_result->setObjectName(u"offsetResultPreview"_s);
     m_result->setWordWrap(true); // "set by the machine from the spindle's position" must not widen the panel
