@@ -23,6 +23,7 @@
 
 #include "serial/carvera/carverareplies.h"
 #include "serial/machine/machinelink.h"
+#include "serial/machineconnection.h"
 #include "serial/transport/tcptransport.h"
 #include "serial/wire/makeraframe.h"
 #include "tests/support/silentlistener.h"
@@ -123,6 +124,51 @@ class TestTcpTransport : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    // Which controller a target is: chosen, or by the port (grblHAL's 23), never by asking; and grblHAL is
+    // always spoken to in plain text (a frame's bytes are real-time commands to it).
+    void theControllerIsTheTargetsNotAsked_data()
+    {
+        QTest::addColumn<QString>("host");
+        QTest::addColumn<int>("port");
+        QTest::addColumn<int>("chosen");
+        QTest::addColumn<int>("expected");
+        const int autoKind = int(ControllerKind::Auto);
+        const int carvera = int(ControllerKind::Carvera);
+        const int grblhal = int(ControllerKind::GrblHal);
+        QTest::newRow("serial port, auto") << QString() << 0 << autoKind << carvera;
+        QTest::newRow("serial port, grblHAL chosen") << QString() << 0 << grblhal << grblhal;
+        QTest::newRow("TCP 2222, auto") << u"192.168.1.57"_s << 2222 << autoKind << carvera;
+        QTest::newRow("TCP 23, auto") << u"192.168.1.60"_s << 23 << autoKind << grblhal;
+        QTest::newRow("TCP 23, the Carvera chosen") << u"192.168.1.60"_s << 23 << carvera << carvera;
+        QTest::newRow("TCP 8080, grblHAL chosen") << u"10.0.0.5"_s << 8080 << grblhal << grblhal;
+    }
+    void theControllerIsTheTargetsNotAsked()
+    {
+        QFETCH(QString, host);
+        QFETCH(int, port);
+        QFETCH(int, chosen);
+        QFETCH(int, expected);
+        ConnectionTarget target;
+        target.emulator = false;
+        target.host = host;
+        target.port = host.isEmpty() ? u"/dev/ttyACM0"_s : QString();
+        if (port > 0)
+            target.tcpPort = quint16(port);
+        target.controller = ControllerKind(chosen);
+        QCOMPARE(int(target.resolvedController()), expected);
+        const auto transport = makeTransport(target);
+        const auto *stream = qobject_cast<const StreamTransport *>(transport.get());
+        QVERIFY(stream);
+        QCOMPARE(stream->protocol(), expected == int(ControllerKind::GrblHal) ? StreamTransport::Protocol::Text
+                                                                             : StreamTransport::Protocol::Auto);
+        MachineLink link(transport.get());
+        const auto controller = makeController(&link, target.resolvedController());
+        QCOMPARE(controller->keepsReference(), expected != int(ControllerKind::GrblHal));
+        // The built-in emulator is a Carvera whatever is chosen.
+        target.emulator = true;
+        QCOMPARE(target.resolvedController(), ControllerKind::Carvera);
+    }
+
     void parsesAddresses_data()
     {
         QTest::addColumn<QString>("text");
