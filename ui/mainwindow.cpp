@@ -385,11 +385,12 @@ void MainWindow::createMachineActions()
     rackState();
     // What only a controller with a setter cycle of Toffee's and a table of its own (grblHAL) has.
     machine->addSeparator();
-    add(u"actionToolSetter"_s, tr("Tool &Setter…"), QKeySequence(), [this] { editToolSetter(); });
-    m_pushOffsetsAction = add(u"actionPushOffsets"_s, tr("Push &Offsets to the Controller…"), QKeySequence(),
-        [this] { pushOffsets(); });
+    add(u"actionToolSetter"_s, tr("Tool &Setter…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T),
+        [this] { editToolSetter(); });
+    m_pushOffsetsAction = add(u"actionPushOffsets"_s, tr("Push &Offsets to the Controller…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), [this] { pushOffsets(); });
     m_pullOffsetsAction = add(u"actionPullOffsets"_s, tr("P&ull Offsets from the Controller…"),
-        QKeySequence(), [this] { pullOffsets(); });
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G), [this] { pullOffsets(); });
     machine->addSeparator();
     add(u"actionRecordRun"_s, tr("&Record a Program Run…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
         [this] { recordProgramRun(); });
