@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// GrblHalController on a grblHAL build the test peer is not: one built without a tool table ([OPT:…,0]),
+// which only G43.1 can give a TLO. The peer (tst_grblhalcli) is the reference for everything it can show;
+// this controller answers on TCP as grblHAL 1.1f does (the replies are the peer's, taken from its README and
+// tst_grblhalpeer), with a table size of 0, and keeps the offset a G43.1 sets.
+#include <QEventLoop>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QTest>
+#include <QTimer>
+
+#include "serial/grblhal/grblhalcontroller.h"
+#include "serial/machine/machinelink.h"
+#include "serial/transport/tcptransport.h"
+
+using namespace Toffee;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// grblHAL without a tool table, on a port of 127.0.0.1: what it answers to each line Toffee sends.
+class TablelessGrblHal : public QObject
+{
+public:
+    QTcpServer server;
+    QList<QByteArray> received;
+    double tlo = 0.0;
+    int tool = 2;
+
+    TablelessGrblHal()
+    {
+        server.listen(QHostAddress::LocalHost, 0);
+        connect(&server, &QTcpServer::newConnection, this, [this] {
+            QTcpSocket *socket = server.nextPendingConnection();
+            connect(socket, &QTcpSocket::readyRead, this, [this, socket] {
+                m_buffer += socket->readAll();
+                for (;;) {
+                    if (m_buffer.startsWith('?')) {
+                        m_buffer.remove(0, 1);
+                        socket->write(QByteArray("<Idle|MPos:0.000,0.000,0.000|Bf:100,1023|FS:0,0|T:")
+                            + QByteArray::number(tool) + ">\r\n");
+                        continue;
+                    }
+                    const qsizetype end = m_buffer.indexOf('\n');
+                    if (end < 0)
+                        break;
+                    const QByteArray line = m_buffer.left(end).trimmed();
+                    m_buffer.remove(0, end + 1);
+                    received << line;
+                    socket->write(answer(line));
+                }
+            });
+        });
+    }
+    [[nodiscard]] quint16 port() const { return server.serverPort(); }
+
+private:
+    QByteArray answer(const QByteArray &line)
+    {
+        if (line == "$I")
+            return "[VER:1.1f.20260817:]\r\n[OPT:VNML+,100,1024,3,0]\r\n[AXS:3:XYZ]\r\n[NEWOPT:ENUMS,RT+,TC,"
+                   "SED]\r\n"
+                   "[FIRMWARE:grblHAL]\r\nok\r\n";
+        if (line == "$G")
+            return "[GC:G0 G54 G17 G21 G90 G94 G40 G49 G98 G50 M5 M9 T" + QByteArray::number(tool)
+                + " F0 S0.]\r\nok\r\n";
+        if (line == "$#")
+            return "[G54:0.000,0.000,0.000]\r\n[G92:0.000,0.000,0.000]\r\n[TLO:0.000,0.000,"
+                + QByteArray::number(tlo, 'f', 3) + "]\r\n[PRB:0.000,0.000,0.000:0]\r\nok\r\n";
+        if (line.startsWith("G43.1 Z")) {
+            tlo = line.mid(7).toDouble();
+            return "ok\r\n";
+        }
+        if (line.startsWith("G10 L1") || line.startsWith("G43 H"))
+            return "error:38\r\n"; // no such tool: the build has no table
+        return "ok\r\n";
+    }
+    QByteArray m_buffer;
+};
+
+SessionResult await(const std::function<void(MachineController::Done)> &start)
+{
+    QEventLoop loop;
+    SessionResult result;
+    bool done = false;
+    QTimer::singleShot(10000, &loop, &QEventLoop::quit);
+    start([&](const SessionResult &r) {
+        result = r;
+        done = true;
+        loop.quit();
+    });
+    if (!done)
+        loop.exec();
+    return result;
+}
+
+} // namespace
+
+class TestGrblHalController : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void aBuildWithoutAToolTableGetsItsTloWithG431()
+    {
+        TablelessGrblHal machine;
+        TcpTransport transport(TcpTransport::Address { u"127.0.0.1"_s, machine.port() });
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        MachineLink link(&transport);
+        GrblHalController controller(&link);
+        controller.adoptReference(-70.0);
+        const SessionResult connected = await([&](auto done) { controller.connectToMachine(done); });
+        QVERIFY2(connected.ok(), qPrintable(connected.message));
+        QCOMPARE(controller.firmware().kind, FirmwareInfo::Kind::GrblHal);
+        QCOMPARE(controller.firmware().toolTableSize, 0);
+        QVERIFY(!controller.firmware().hasToolTable());
+        QCOMPARE(controller.activeTool(), std::optional(2));
+        QCOMPARE(controller.setTloCommand(12.5), u"G43.1 Z12.5"_s);
+
+        // Set by hand: G43.1, read back, said; never G10 L1 (which this build refuses).
+        const SessionResult set = await([&](auto done) { controller.setTlo(12.5, done); });
+        QVERIFY2(set.ok(), qPrintable(set.message));
+        QVERIFY2(set.message.contains(u"keeps no tool table"_s), qPrintable(set.message));
+        QCOMPARE(set.tlo->tlo(), 12.5);
+        QVERIFY(set.recording.has_value());
+        QCOMPARE(*set.recording->tlo, 12.5);
+        QVERIFY(machine.received.contains("G43.1 Z12.5"));
+        QVERIFY(!std::any_of(machine.received.cbegin(), machine.received.cend(),
+            [](const QByteArray &l) { return l.startsWith("G10"); }));
+
+        // Its table cannot be read or written: refused by name, nothing sent.
+        const qsizetype before = machine.received.size();
+        const SessionResult pushed = await([&](auto done) {
+            controller.writeToolTable({ { 2, 12.5, 0.0 } }, done);
+        });
+        QCOMPARE(pushed.outcome, SessionResult::Outcome::Refused);
+        QVERIFY2(pushed.message.contains(u"keeps no tool table"_s), qPrintable(pushed.message));
+        QCOMPARE(machine.received.size(), before);
+        QVERIFY(!controller.controllerTable().has_value());
+
+        // A restore after a reset: M61 and G43.1, read back.
+        machine.tlo = 0.0;
+        const SessionResult restored = await([&](auto done) { controller.restoreTlo(2, 12.5, done); });
+        QVERIFY2(restored.ok(), qPrintable(restored.message));
+        QCOMPARE(machine.tlo, 12.5);
+        QCOMPARE(controller.restoreCommand(2, 12.5), u"M61 Q2, G43.1 Z12.5"_s);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestGrblHalController)
+#include "tst_grblhalcontroller.moc"
