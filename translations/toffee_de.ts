@@ -2156,6 +2156,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>grblHAL&apos;s offsets ($#) could not be read whole: lines were malformed or repeated (%1). Nothing was changed; check the connection and try again.</source>
         <translation>Die Korrekturen von grblHAL ($#) ließen sich nicht vollständig lesen: Zeilen waren fehlerhaft oder doppelt (%1). Nichts wurde geändert; prüfen Sie die Verbindung und versuchen Sie es erneut.</translation>
     </message>
+    <message>
+        <source>T%1 has no stored TLO to compare with, in the table or in grblHAL&apos;s own: probe it first.</source>
+        <translation>T%1 hat keine gespeicherte TLO zum Vergleich, weder in der Tabelle noch in der von grblHAL: Messen Sie es zuerst.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryDock</name>

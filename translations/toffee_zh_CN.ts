@@ -2156,6 +2156,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>grblHAL&apos;s offsets ($#) could not be read whole: lines were malformed or repeated (%1). Nothing was changed; check the connection and try again.</source>
         <translation>无法完整读取 grblHAL 的补偿（$#）：有行格式错误或重复（%1）。未做任何更改；请检查连接后重试。</translation>
     </message>
+    <message>
+        <source>T%1 has no stored TLO to compare with, in the table or in grblHAL&apos;s own: probe it first.</source>
+        <translation>T%1 没有可供比较的已存 TLO（刀具表和 grblHAL 自己的表中都没有）：请先测量它。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryDock</name>

@@ -496,17 +496,20 @@ void GrblHalController::breakTest(double tolerance, Done done, std::optional<dou
                "first: the first one measured becomes the reference."));
         return;
     }
-    measure(done, [this, done, tolerance, storedTlo, tool = *tool](double contact) {
-        // The stored TLO: the table's; else the controller's entry; else the offset in force.
-        std::optional<double> stored = storedTlo;
-        if (!stored) {
-            for (const ControllerTool &entry : std::as_const(m_table)) {
-                if (entry.tool == tool && fitsTable(tool))
-                    stored = entry.tlo;
-            }
-        }
-        if (!stored)
-            stored = m_tloInForce;
+    // The stored TLO: the table's; else the controller's own entry for the tool, unless it is empty (0.000,
+    // as pull-offsets reads it). Never the offset in force, which after M61 is another tool's.
+    std::optional<double> stored = storedTlo;
+    for (const ControllerTool &entry : std::as_const(m_table)) {
+        if (!stored && entry.tool == *tool && fitsTable(*tool) && std::fabs(entry.tlo) >= kReadBackTolerance)
+            stored = entry.tlo;
+    }
+    if (!stored) {
+        refuse(done,
+            tr("T%1 has no stored TLO to compare with, in the table or in grblHAL's own: probe it first.")
+                .arg(*tool));
+        return;
+    }
+    measure(done, [this, done, tolerance, stored, tool = *tool](double contact) {
         SessionResult result;
         result.tool = tool;
         result.tolerance = tolerance;

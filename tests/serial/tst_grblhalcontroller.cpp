@@ -138,6 +138,14 @@ private Q_SLOTS:
         QCOMPARE(machine.received.size(), before);
         QVERIFY(!controller.controllerTable().has_value());
 
+        // A break test of a tool with no stored TLO (no table here, none given) is refused before anything
+        // moves: the offset in force could be another tool's.
+        const qsizetype sent = machine.received.size();
+        const SessionResult test = await([&](auto done) { controller.breakTest(0.1, done); });
+        QCOMPARE(test.outcome, SessionResult::Outcome::Refused);
+        QVERIFY2(test.message.contains(u"no stored TLO"_s), qPrintable(test.message));
+        QCOMPARE(machine.received.size(), sent);
+
         // A restore after a reset: M61 and G43.1, read back.
         machine.tlo = 0.0;
         const SessionResult restored = await([&](auto done) { controller.restoreTlo(2, 12.5, done); });
