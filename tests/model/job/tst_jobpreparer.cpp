@@ -427,6 +427,10 @@ private Q_SLOTS:
             << QByteArray("G21 G90\nT1 M6\nG43\nG1 Z-1 F100\nT2 M6\nG53 G0 Z0\nG0 X10\n"
                           "G0 Z5\nG1 Z-2 F100\nM2\n")
             << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at original line 5)");
+        QTest::newRow("grblHAL")
+            << int(Dialect::GrblHal)
+            << QByteArray("G21 G90\nM6 T1\nG43 H1\nG1 Z-1 F100\nM6 T2\nG0 X10\nG1 Z-2 F100\nM30\n")
+            << QByteArray("G43 H2 (Toffee: no G43 for T2 after its change at original line 5)");
     }
 
     void theG43ControllersGetTheMissingG43AndNothingElse()
