@@ -181,6 +181,11 @@ private Q_SLOTS:
         QVERIFY(waitIdle(s));
         QCOMPARE(*s.table().find(2)->measuredTlo, 15.3);
         QCOMPARE(s.text(u"tloLabel"_s), u"15.300 mm"_s);
+        // The strip shows the TLO whole at 1280 px (it was cut to "15.300 mr").
+        auto *tloLabel = s.find<QLabel>(u"tloLabel"_s);
+        QTRY_VERIFY2(tloLabel->width() >= tloLabel->fontMetrics().horizontalAdvance(tloLabel->text()),
+            qPrintable(u"%1 px for %2 px of text"_s.arg(tloLabel->width())
+                           .arg(tloLabel->fontMetrics().horizontalAdvance(tloLabel->text()))));
         // The offset panel shows what grblHAL is sent, in its words.
         s.find<QDoubleSpinBox>(u"offsetValueSpin"_s)->setValue(15.5);
         QTRY_COMPARE(s.text(u"offsetCommandPreview"_s), u"G10 L1 P2 Z15.5, G43 H2"_s);
