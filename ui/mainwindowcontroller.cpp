@@ -15,6 +15,7 @@
 #include "model/library/library.h"
 #include "model/numberformat.h"
 #include "serial/machineconnection.h"
+#include "serial/offsetpull.h"
 #include "ui/appsettings.h"
 #include "ui/connectionpanel.h"
 #include "ui/machinedock.h"
@@ -65,25 +66,7 @@ void MainWindow::connectControllerSettings()
 // tool's in the table. Nothing: the next probe makes its tool the reference.
 std::optional<double> MainWindow::keptReference() const
 {
-    if (Library *library = m_history->library()) {
-        HistoryQuery query;
-        query.machine = machineName();
-        query.kinds = { EventKind::Probe };
-        if (const auto events = library->history(query)) {
-            for (auto it = events.value().crbegin(); it != events.value().crend(); ++it) {
-                if (it->referenceMz)
-                    return it->referenceMz;
-            }
-        }
-    }
-    const Tool *newest = nullptr;
-    const QList<Tool> tools = m_document->table().tools();
-    for (const Tool &tool : tools) {
-        if (tool.referenceMz && tool.measuredAt.isValid()
-            && (!newest || tool.measuredAt > newest->measuredAt))
-            newest = &tool;
-    }
-    return newest ? newest->referenceMz : std::nullopt;
+    return keptReferenceMz(m_history->library(), machineName(), m_document->table());
 }
 
 // The machine's setter: the library's, else this computer's.
@@ -174,21 +157,24 @@ void MainWindow::pullOffsets()
     m_connection->readToolTable([this](const SessionResult &read) {
         if (!read.ok() || !read.controllerTools)
             return showError(tr("Cannot read the controller's tool table"), read.message);
-        const double fromMm = m_document->table().units() == Units::Inch ? 1.0 / 25.4 : 1.0;
         QList<OffsetDifference> rows;
-        for (const ControllerTool &entry : *read.controllerTools) {
-            const Tool *tool = m_document->table().find(entry.tool);
-            OffsetDifference row { entry.tool, tool ? tool->measuredTlo : std::nullopt, entry.tlo * fromMm,
-                false, {} };
-            if (row.inFile && std::fabs(*row.inFile - *row.inController) < kSame) {
+        for (const PulledEntry &entry : planPull(m_document->table(), *read.controllerTools)) {
+            OffsetDifference row { entry.tool, entry.inFile, entry.inController, entry.changes(), {} };
+            switch (entry.action) {
+            case PulledEntry::Action::Unchanged:
                 row.what = tr("unchanged");
-            } else if (std::fabs(entry.tlo) < kSame) {
-                if (!tool)
+                break;
+            case PulledEntry::Action::Empty:
+                if (!m_document->table().find(entry.tool))
                     continue; // an empty entry of a tool the file does not have: nothing to say
                 row.what = tr("empty in the controller: left alone");
-            } else {
-                row.changes = true;
-                row.what = tool ? tr("taken, as set on the controller") : tr("new tool");
+                break;
+            case PulledEntry::Action::Take:
+                row.what = tr("taken, as set on the controller");
+                break;
+            case PulledEntry::Action::NewTool:
+                row.what = tr("new tool");
+                break;
             }
             rows.append(row);
         }

@@ -25,6 +25,7 @@
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
 #include "serial/machineconnection.h"
+#include "serial/offsetpull.h"
 #include "serial/transport/streamtransport.h"
 
 using namespace Qt::StringLiterals;
@@ -489,25 +490,17 @@ void MachineRun::pulled(const SessionResult &r)
 {
     if (!r.ok() || !r.controllerTools)
         return finishWith(r);
-    const double scale = m_options.table->units() == Units::Inch ? 1.0 / 25.4 : 1.0;
     QJsonArray changes;
     int unchanged = 0;
     int empty = 0;
     const QDateTime now = QDateTime::currentDateTimeUtc();
-    for (const ControllerTool &entry : *r.controllerTools) {
-        if (std::fabs(entry.tlo) < 0.0005) {
-            ++empty;
+    for (const PulledEntry &entry : planPull(*m_options.table, *r.controllerTools)) {
+        unchanged += entry.action == PulledEntry::Action::Unchanged ? 1 : 0;
+        empty += entry.action == PulledEntry::Action::Empty ? 1 : 0;
+        if (!entry.changes())
             continue;
-        }
-        const double tlo = entry.tlo * scale;
-        const Tool *tool = m_options.table->find(entry.tool);
-        if (tool && tool->measuredTlo && std::fabs(*tool->measuredTlo - tlo) < 0.0005) {
-            ++unchanged;
-            continue;
-        }
-        const bool known = tool && tool->measuredTlo;
-        const double was = known ? *tool->measuredTlo : 0.0;
-        const bool isNew = tool == nullptr;
+        const double tlo = entry.inController;
+        const bool isNew = entry.action == PulledEntry::Action::NewTool;
         SessionResult one;
         one.tool = entry.tool;
         one.tlo = TloReading { tlo, std::nullopt, std::nullopt };
@@ -516,11 +509,12 @@ void MachineRun::pulled(const SessionResult &r)
         if (!record(one))
             return finishWith(SessionResult::failed(SessionResult::Outcome::MachineError, {}), true);
         changes.append(QJsonObject { { u"tool"_s, entry.tool }, { u"tlo"_s, tlo },
-            { u"was"_s, known ? QJsonValue(was) : QJsonValue() }, { u"new_tool"_s, isNew } });
+            { u"was"_s, entry.inFile ? QJsonValue(*entry.inFile) : QJsonValue() },
+            { u"new_tool"_s, isNew } });
         if (!m_call.json) {
             m_call.out << "T" << entry.tool << ": " << mm(tlo) << (isNew ? " (new tool)" : "");
-            if (known)
-                m_call.out << " (was " << mm(was) << ")";
+            if (const auto was = entry.inFile)
+                m_call.out << " (was " << mm(*was) << ")";
             m_call.out << " read from the controller" << Qt::endl;
         }
     }

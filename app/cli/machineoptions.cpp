@@ -263,29 +263,8 @@ Result<void> readReference(const Invocation &call, MachineOptions &o)
             return Error { kept.error().message };
         o.target.setter = kept.value();
     }
-    if (o.library) {
-        HistoryQuery query;
-        query.machine = o.machine;
-        query.kinds = { EventKind::Probe };
-        if (const auto events = o.library->history(query)) {
-            for (auto it = events.value().crbegin(); it != events.value().crend(); ++it) {
-                if (it->referenceMz) {
-                    o.target.reference = it->referenceMz;
-                    return {};
-                }
-            }
-        }
-    }
-    if (o.table) {
-        const Tool *newest = nullptr;
-        for (const Tool &tool : o.table->tools()) {
-            if (tool.referenceMz && tool.measuredAt.isValid()
-                && (!newest || tool.measuredAt > newest->measuredAt))
-                newest = &tool;
-        }
-        if (newest)
-            o.target.reference = newest->referenceMz;
-    }
+    static const ToolTable kNoTable;
+    o.target.reference = keptReferenceMz(o.library.get(), o.machine, o.table ? *o.table : kNoTable);
     return {};
 }
 

@@ -4,6 +4,7 @@
 
 #include "model/library/rowreader.h"
 #include "model/limits.h"
+#include "model/tooltable.h"
 
 #include <QAtomicInt>
 #include <QDir>
@@ -315,6 +316,29 @@ Result<QHash<int, double>> Library::cuttingTotals(const QString &machine) const
             out.insert(int(*tool), *seconds);
     }
     return out;
+}
+
+std::optional<double> keptReferenceMz(const Library *library, const QString &machine, const ToolTable &table)
+{
+    if (library) {
+        HistoryQuery query;
+        query.machine = machine;
+        query.kinds = { EventKind::Probe };
+        query.limit = 50; // the newest: every probe carries its reference
+        if (const auto events = library->history(query)) {
+            for (auto it = events.value().crbegin(); it != events.value().crend(); ++it) {
+                if (it->referenceMz)
+                    return it->referenceMz;
+            }
+        }
+    }
+    const Tool *newest = nullptr;
+    for (const Tool &tool : table.tools()) {
+        if (tool.referenceMz && tool.measuredAt.isValid()
+            && (!newest || tool.measuredAt > newest->measuredAt))
+            newest = &tool;
+    }
+    return newest ? newest->referenceMz : std::nullopt;
 }
 
 } // namespace Toffee

@@ -22,6 +22,8 @@ class QSqlQuery;
 
 namespace Toffee {
 
+class ToolTable;
+
 // The library: machines, their tool tables, every measurement event, and what each tool cut, in an SQLite
 // file or a shared PostgreSQL database through Qt SQL (docs/LIBRARY.md has every table and column). Both run
 // the same SQL, every statement prepared. One Library is one connection, for the thread that opened it; the
@@ -157,5 +159,11 @@ private:
     Options m_options;
     bool m_readOnly = false;
 };
+
+// The reference MCS Z Toffee kept for `machine`, for a controller that keeps none itself (grblHAL): the
+// newest probe's in `library` (when there is one), else the newest measured tool's in `table`. Nothing: the
+// next probe makes its tool the reference.
+[[nodiscard]] std::optional<double> keptReferenceMz(
+    const Library *library, const QString &machine, const ToolTable &table);
 
 } // namespace Toffee
