@@ -11,11 +11,13 @@
 #include <map>
 #include <optional>
 
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QHostAddress>
 #include <QProcess>
+#include <QSet>
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTemporaryDir>
@@ -194,10 +196,40 @@ private:
                     heard += socket.readAll();
                 if (heard.contains("<") && heard.indexOf('>', heard.indexOf('<')) >= 0) {
                     m_startupMs = clock.elapsed();
-                    // grblHAL's report has its buffer field; a Carvera's (another test's) has none.
-                    return heard.contains("|Bf:") && m_process.state() == QProcess::Running;
+                    // grblHAL's report has its buffer field (a Carvera's, another test's, has none), and the
+                    // port must be this grblHAL's: another test's grblHAL may hold it, and this one fail to
+                    // bind.
+                    return heard.contains("|Bf:") && m_process.state() == QProcess::Running && ownsPort();
                 }
             }
+        }
+        return false;
+    }
+
+    // Whether the port's listening socket (/proc/net/tcp, state 0A) is one of this process's open files (the
+    // script execs grblHAL: the same process).
+    bool ownsPort() const
+    {
+        QSet<QByteArray> inodes;
+        for (const char *table : { "/proc/net/tcp", "/proc/net/tcp6" }) {
+            QFile file(QString::fromLatin1(table));
+            if (!file.open(QIODevice::ReadOnly))
+                continue;
+            const QList<QByteArray> lines = file.readAll().split('\n');
+            for (const QByteArray &line : lines) {
+                const QList<QByteArray> f = line.simplified().split(' ');
+                if (f.size() < 10 || f.at(3) != "0A")
+                    continue;
+                bool ok = false;
+                if (f.at(1).mid(f.at(1).indexOf(':') + 1).toUInt(&ok, 16) == m_port && ok)
+                    inodes.insert("socket:[" + f.at(9) + ']');
+            }
+        }
+        const QDir fds(QStringLiteral("/proc/%1/fd").arg(m_process.processId()));
+        const QStringList entries = fds.entryList(QDir::NoDotAndDotDot | QDir::AllEntries | QDir::System);
+        for (const QString &fd : entries) {
+            if (inodes.contains(QFile::symLinkTarget(fds.filePath(fd)).section(u'/', -1).toLatin1()))
+                return true;
         }
         return false;
     }
