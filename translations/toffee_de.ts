@@ -990,6 +990,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>The machine holds TLO %1 but the table holds %2 for T%3: Toffee sets the table&apos;s %2 first, and the machine compares the tool with it.</source>
         <translation>Die Maschine hat die Längenkorrektur %1, die Tabelle aber %2 für T%3: Toffee setzt zuerst %2 aus der Tabelle, und die Maschine vergleicht das Werkzeug damit.</translation>
     </message>
+    <message>
+        <source>%1 may be broken. The machine is stopped and lifted (not halted), and the table marks %1 until it is probed again.</source>
+        <translation>%1 ist möglicherweise gebrochen. Die Maschine ist gestoppt und angehoben (nicht angehalten), und die Tabelle markiert %1, bis es erneut gemessen wird.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConflictDialog</name>

@@ -990,6 +990,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>The machine holds TLO %1 but the table holds %2 for T%3: Toffee sets the table&apos;s %2 first, and the machine compares the tool with it.</source>
         <translation>机床的 TLO 为 %1，但刀具表中 T%3 为 %2：Toffee 会先设置刀具表中的 %2，机床再用它与刀具比较。</translation>
     </message>
+    <message>
+        <source>%1 may be broken. The machine is stopped and lifted (not halted), and the table marks %1 until it is probed again.</source>
+        <translation>%1 可能已断。机床已停止并抬起（未停机锁定），刀具表会标记 %1，直到再次测量。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConflictDialog</name>

@@ -225,9 +225,16 @@ void BreakTestPanel::showResult(const SessionResult &r)
 void BreakTestPanel::raiseBrokenAlarm(const SessionResult &r)
 {
     const QString name = r.tool && *r.tool >= 0 ? u"T"_s + QString::number(*r.tool) : tr("The tool");
+    // The Carvera's firmware halts on a broken tool; grblHAL, whose test is Toffee's, is left stopped and
+    // lifted but not halted: the box says what the machine did, and offers Unlock only when there is a halt.
+    const bool halted = m_connection->isHalted();
     QMessageBox box(QMessageBox::Critical, tr("Broken tool"),
-        tr("%1 may be broken. The machine has halted, and the table marks %1 until it is probed again.")
-            .arg(name),
+        halted
+            ? tr("%1 may be broken. The machine has halted, and the table marks %1 until it is probed again.")
+                  .arg(name)
+            : tr("%1 may be broken. The machine is stopped and lifted (not halted), and the table marks %1 "
+                 "until it is probed again.")
+                  .arg(name),
         QMessageBox::NoButton, this);
     box.setObjectName(u"brokenToolAlarm"_s);
     // A TLO set by hand that was not the tool's length looks exactly like a broken tool: say which it may be.
@@ -238,6 +245,11 @@ void BreakTestPanel::raiseBrokenAlarm(const SessionResult &r)
                     "tool's real length, the tool may be whole. Look at the tool before you replace it, then "
                     "probe it.")
                                                  : r.message);
+    if (!halted) {
+        box.addButton(QMessageBox::Ok);
+        box.exec();
+        return;
+    }
     QPushButton *unlock = box.addButton(tr("Unlock"), QMessageBox::AcceptRole);
     unlock->setObjectName(u"alarmUnlockButton"_s);
     QPushButton *leave = box.addButton(tr("Leave Halted"), QMessageBox::RejectRole);

@@ -199,6 +199,9 @@ private Q_SLOTS:
         s.trigger(u"actionBreakTest"_s);
         QVERIFY(waitIdle(s));
         QTRY_VERIFY2(box.contains(u"kept in the table and in grblHAL"_s), qPrintable(box));
+        // grblHAL is not halted by Toffee's break test, and the box does not say it is.
+        QVERIFY2(box.contains(u"not halted"_s), qPrintable(box));
+        QVERIFY(!s.window.connection()->isHalted());
         QTRY_VERIFY(s.text(u"breakVerdictLabel"_s).contains(u"BROKEN"_s, Qt::CaseInsensitive));
         QVERIFY(s.table().find(2)->breakTestFailed);
         QCOMPARE(*s.table().find(2)->measuredTlo, 15.3);
