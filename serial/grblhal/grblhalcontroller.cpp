@@ -350,7 +350,7 @@ void GrblHalController::measure(Done done, std::function<void(double)> next)
                 return number(machineZ - wco);
             };
             const int motion = MachineLink::kMotionTimeoutMs;
-            auto touch = [this, done](const CommandReply &reply) -> std::optional<double> {
+            auto touch = [done](const CommandReply &reply) -> std::optional<double> {
                 std::optional<GrblHal::ProbeReport> found;
                 for (const QByteArray &line : reply.lines) {
                     if (auto p = GrblHal::parseProbeReport(line))
