@@ -11,11 +11,13 @@ namespace Toffee {
 
 // What kind of operation a recording comes from: the history library keeps them apart.
 // Pulled: a TLO read from the controller's own table (grblHAL's), which Toffee did not measure.
-enum class RecordingKind : quint8 { Probe, ManualSet, Restore, BreakTest, Pulled };
+// NewCutter: another cutter in the tool's pocket: the old cutter's TLO (in oldTlo), wear and break mark end.
+enum class RecordingKind : quint8 { Probe, ManualSet, Restore, BreakTest, Pulled, NewCutter };
 
-// What an operation on the machine means for the tool table and its history, carried by its result so that the
-// window and the CLI record it with one call (ToolTable::record, ToolDocument::record): a tool's new TLO (probed
-// or set by hand) with the reference it is measured against, a break test's verdict, or a stored TLO restored.
+// What an operation on the machine means for the tool table and its history, carried by its result so that
+// the window and the CLI record it with one call (ToolTable::record, ToolDocument::record): a tool's new TLO
+// (probed or set by hand) with the reference it is measured against, a break test's verdict, or a stored TLO
+// restored.
 struct Recording
 {
     int tool = -1;

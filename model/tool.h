@@ -37,10 +37,32 @@ struct Tool
     // The reference tool's MCS Z the TLO was measured (or set) against: a stored TLO is only right on a
     // machine whose reference is still there. Unknown for tables from before Toffee kept it.
     std::optional<double> referenceMz = std::nullopt;
+    // The cutter as a CAM library last described it (an import sets them): its type ("flat end mill") and
+    // overall length, in the table's units. An import that finds another type, diameter or overall length
+    // puts a new cutter in the pocket (ToolTable::newCutter).
+    QString cutterType = {};
+    std::optional<double> overallLength = std::nullopt;
+    // Tool life, as FANUC's tool-life management counts it: at most this many minutes of cutting, or this
+    // many programs, on one cutter. Empty: no limit.
+    std::optional<double> lifeLimitMinutes = std::nullopt;
+    std::optional<int> lifeLimitUses = std::nullopt;
 
     // At a micrometre's thousandth: 41.3 − 0.02 is 41.28, not 41.279999999999994.
     [[nodiscard]] double totalLength() const { return std::round((lengthGeometry + lengthWear) * 1e6) / 1e6; }
     [[nodiscard]] double totalRadius() const { return radiusGeometry + radiusWear; }
+
+    // Another cutter in this tool's pocket: the old cutter's TLO (its time, source and reference), its wear
+    // and its break mark no longer hold. Everything else stays.
+    void endCutter()
+    {
+        measuredTlo.reset();
+        measuredAt = {};
+        tloSource = TloSource::Probe;
+        referenceMz.reset();
+        breakTestFailed = false;
+        lengthWear = 0.0;
+        radiusWear = 0.0;
+    }
 
     friend bool operator==(const Tool &, const Tool &) = default;
 };

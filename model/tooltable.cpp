@@ -165,10 +165,22 @@ Result<void> ToolTable::recordBreakTest(int number, bool failed)
     return contains(number) ? replace(number, tool) : insert(tool);
 }
 
+Result<void> ToolTable::newCutter(int number)
+{
+    const Tool *found = find(number);
+    if (!found)
+        return Error { tr("T%1 is not in the table.").arg(number) };
+    Tool tool = *found;
+    tool.endCutter();
+    return replace(number, tool);
+}
+
 Result<void> ToolTable::record(const Recording &r)
 {
     if (r.kind == RecordingKind::Restore)
         return {}; // the table already holds the TLO that was set back: history only
+    if (r.kind == RecordingKind::NewCutter)
+        return newCutter(r.tool);
     if (r.tlo)
         return recordMeasurement(r.tool, *r.tlo, r.at, r.source, r.referenceMz);
     if (r.breakTestFailed)

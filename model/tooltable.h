@@ -68,6 +68,10 @@ public:
         TloSource source = TloSource::Probe, std::optional<double> referenceMz = std::nullopt);
     // Marks tool `number` as failed (or passed) by a break test, adding the tool when the table has none.
     Result<void> recordBreakTest(int number, bool failed);
+    // Another cutter in tool `number`'s pocket: the old cutter's TLO (with its time, source and reference),
+    // its wear and its break mark no longer hold, and the tool must be measured before it cuts. Its number,
+    // pocket, description, geometry, notes and life limits stay.
+    Result<void> newCutter(int number);
     // What an operation on the machine carries (a TLO, or a break test's verdict), recorded as the two above
     // do.
     Result<void> record(const Recording &recording);

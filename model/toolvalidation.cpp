@@ -94,6 +94,10 @@ Result<void> validateLinuxCncExtra(const QString &extra)
 
 namespace {
 
+// A cutter lasts hours, not years: a limit beyond these is a typing slip.
+constexpr double kMaxLifeMinutes = 100000.0;
+constexpr int kMaxLifeUses = 1000000;
+
 bool withinLimit(double value, double limit)
 {
     return std::isfinite(value) && std::fabs(value) <= limit;
@@ -112,7 +116,13 @@ bool isPlainlyValid(const Tool &tool, Units units)
         || !withinLimit(tool.radiusGeometry, geometry) || !withinLimit(tool.radiusWear, wear)
         || (tool.measuredTlo && !withinLimit(*tool.measuredTlo, geometry))
         || (!tool.measuredTlo && tool.tloSource != TloSource::Probe)
-        || (tool.referenceMz && !withinLimit(*tool.referenceMz, geometry)))
+        || (tool.referenceMz && !withinLimit(*tool.referenceMz, geometry))
+        || tool.cutterType.size() > Limits::kMaxDescriptionLength
+        || (tool.overallLength && (!withinLimit(*tool.overallLength, geometry) || *tool.overallLength < 0.0))
+        || (tool.lifeLimitMinutes
+            && (!std::isfinite(*tool.lifeLimitMinutes) || *tool.lifeLimitMinutes <= 0.0
+                || *tool.lifeLimitMinutes > kMaxLifeMinutes))
+        || (tool.lifeLimitUses && (*tool.lifeLimitUses < 1 || *tool.lifeLimitUses > kMaxLifeUses)))
         return false;
     for (QChar c : tool.description) {
         if (c.unicode() < 0x20 || (c.unicode() >= 0x7f && c.category() == QChar::Other_Control))
@@ -176,6 +186,27 @@ Result<void> validateTool(const Tool &tool, Units units)
     }
     if (auto r = validateLinuxCncExtra(tool.linuxCncExtra); !r)
         return withPrefix(r);
+    if (tool.cutterType.size() > Limits::kMaxDescriptionLength)
+        return Error { prefix
+            + tr("the cutter type is %1 characters long; keep it to %2.")
+                  .arg(tool.cutterType.size())
+                  .arg(Limits::kMaxDescriptionLength) };
+    if (tool.overallLength) {
+        if (auto r = validateLength(tr("overall length"), *tool.overallLength, geometry, units); !r)
+            return withPrefix(r);
+        if (*tool.overallLength < 0.0)
+            return Error { prefix + tr("the overall length cannot be negative.") };
+    }
+    if (tool.lifeLimitMinutes
+        && (!std::isfinite(*tool.lifeLimitMinutes) || *tool.lifeLimitMinutes <= 0.0
+            || *tool.lifeLimitMinutes > kMaxLifeMinutes))
+        return Error { prefix
+            + tr("a life limit in minutes must be more than 0 and at most %1; leave it empty for none.")
+                  .arg(kMaxLifeMinutes) };
+    if (tool.lifeLimitUses && (*tool.lifeLimitUses < 1 || *tool.lifeLimitUses > kMaxLifeUses))
+        return Error { prefix
+            + tr("a life limit in uses must be a whole number from 1 to %1; leave it empty for none.")
+                  .arg(kMaxLifeUses) };
     return {};
 }
 

@@ -72,6 +72,8 @@ QString kindText(EventKind kind)
         return HistoryDock::tr("restored");
     case EventKind::Import:
         return HistoryDock::tr("read in");
+    case EventKind::NewCutter:
+        return HistoryDock::tr("new cutter (old one ended)");
     }
     return {};
 }
@@ -292,8 +294,8 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
         m_chartPlace = nullptr;
     }
     HistoryChartInput input { &m_events, trend, points, m_tolerance, palette(), alarmColor(palette()),
-        { tr("Probes"), tr("Break test passed"), tr("Break test failed"), tr("Set by hand"), tr("Wear trend"),
-            tr("± %1 mm").arg(formatNumber(m_tolerance, NumberFormat::upTo(3).inLocale())),
+        { tr("Probes"), tr("Break test passed"), tr("Break test failed"), tr("Set by hand"), tr("Old cutter"),
+            tr("Wear trend"), tr("± %1 mm").arg(formatNumber(m_tolerance, NumberFormat::upTo(3).inLocale())),
             m_events.isEmpty() && m_tool >= 0 ? tr("No measurements of T%1 yet").arg(m_tool) : QString(),
             tr("TLO (mm)") } };
     module.value().fill(m_view, input);

@@ -14,6 +14,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QResizeEvent>
 #include <QScreen>
 #include <QStatusBar>
 #include <QTableView>
@@ -334,6 +335,10 @@ void MainWindow::createActions()
     m_removeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_tablePanel->view()->addAction(m_removeAction);
     toolBar->addAction(m_removeAction);
+    m_newCutterAction = add(edit, u"actionNewCutter"_s, tr("New &Cutter…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N), &MainWindow::newCutter);
+    m_newCutterAction->setToolTip(tr("The selected tool's pocket holds another cutter: its TLO, wear and "
+                                     "break mark end, and it is measured before it cuts"));
     edit->addSeparator();
     add(edit, u"actionFind"_s, tr("&Filter…"), QKeySequence::Find, [this] {
         m_tablePanel->filterEdit()->setFocus();
@@ -520,6 +525,77 @@ void MainWindow::removeTools()
             return;
     }
     m_document->removeTools(numbers);
+}
+
+void MainWindow::newCutter()
+{
+    const QList<int> numbers = m_tablePanel->selectedToolNumbers();
+    if (numbers.size() != 1) {
+        statusBar()->showMessage(tr("Select the one tool whose cutter was changed."), 5000);
+        return;
+    }
+    const int number = numbers.front();
+    const Tool *tool = m_document->table().find(number);
+    if (!tool)
+        return;
+    const Units units = m_document->table().units();
+    QStringList ends;
+    if (tool->measuredTlo)
+        ends << tr("its TLO %1 %2 (%3)")
+                    .arg(displayNumber(*tool->measuredTlo, units), unitsSymbol(units),
+                        tool->tloSource == TloSource::Manual ? tr("set by hand") : tr("measured"));
+    if (tool->lengthWear != 0.0 || tool->radiusWear != 0.0)
+        ends << tr("its wear (length %1, radius %2)")
+                    .arg(displayNumber(tool->lengthWear, units), displayNumber(tool->radiusWear, units));
+    if (tool->breakTestFailed)
+        ends << tr("its broken mark");
+    if (tool->lifeLimitMinutes || tool->lifeLimitUses || m_document->model()->usedLife(number).uses > 0)
+        ends << tr("its used life");
+    QMessageBox box(QMessageBox::Question, tr("New cutter in T%1?").arg(number),
+        ends.isEmpty()
+            ? tr("T%1 gets a new cutter. Measure it on the tool setter before it cuts.").arg(number)
+            : tr("T%1 gets a new cutter: %2 belong to the old one and end here (the history keeps "
+                 "them as the old cutter's). Measure T%1 on the tool setter before it cuts.")
+                  .arg(number)
+                  .arg(ends.join(u", "_s)),
+        QMessageBox::Cancel, this);
+    box.setInformativeText(tr("Edit ▸ Undo puts the old values back in the table."));
+    QPushButton *confirm = box.addButton(tr("New Cutter"), QMessageBox::AcceptRole);
+    confirm->setObjectName(u"newCutterButton"_s);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.setObjectName(u"newCutterBox"_s);
+    box.exec();
+    if (box.clickedButton() != confirm)
+        return;
+    Recording ended;
+    ended.tool = number;
+    ended.at = QDateTime::currentDateTimeUtc();
+    ended.kind = RecordingKind::NewCutter;
+    ended.oldTlo = tool->measuredTlo;
+    if (auto r = m_document->record(ended); !r) {
+        showError(tr("Cannot put in a new cutter"), r.error().text());
+        return;
+    }
+    refreshToolLife();
+    statusBar()->showMessage(tr("T%1 has a new cutter: measure it before it cuts.").arg(number), 8000);
+}
+
+void MainWindow::resizeEvent(QResizeEvent *event)
+{
+    QMainWindow::resizeEvent(event);
+    const int was = event->oldSize().height();
+    const int is = event->size().height();
+    if (was <= 0 || is <= 0 || was == is || !isVisible())
+        return;
+    for (QDockWidget *dock :
+        { static_cast<QDockWidget *>(m_consoleDock), static_cast<QDockWidget *>(m_historyDock) }) {
+        if (dock && dock->isVisible() && !dock->isFloating()
+            && dockWidgetArea(dock) == Qt::BottomDockWidgetArea) {
+            resizeDocks({ dock }, { std::max(dock->minimumSizeHint().height(), dock->height() * is / was) },
+                Qt::Vertical);
+            break; // tabbed together: one height
+        }
+    }
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

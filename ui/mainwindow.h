@@ -80,6 +80,9 @@ public:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    // The panels below the table (console, history) keep their share of the height as the window grows or
+    // shrinks: the History chart grows with the window, not only the table.
+    void resizeEvent(QResizeEvent *event) override;
     void dragEnterEvent(QDragEnterEvent *event) override;
     void dropEvent(QDropEvent *event) override;
 
@@ -105,6 +108,8 @@ private:
     void exportTable();
     void addTool();
     void removeTools();
+    // Edit ▸ New Cutter…: the selected tool's pocket holds another cutter (asked first).
+    void newCutter();
     bool maybeSave();
     bool confirmLossySave(const QString &path);
     void updateTitle();
@@ -172,6 +177,7 @@ private:
     QAction *m_pullOffsetsAction = nullptr;
     QDockWidget *m_rackDock = nullptr;
     QMenu *m_recentMenu = nullptr;
+    QAction *m_newCutterAction = nullptr;
     QAction *m_removeAction = nullptr;
     QLabel *m_countLabel = nullptr;
     LibraryStatusLabel *m_libraryLabel = nullptr;

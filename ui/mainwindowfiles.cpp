@@ -204,6 +204,17 @@ bool MainWindow::importCamLibrary(const QString &path)
         return false;
     m_document->replaceTable(
         preview.value().merged(), tr("Import tools from %1").arg(QFileInfo(path).fileName()));
+    // A tool whose cutter the library changed: the old cutter ends in the history too.
+    for (const ImportedTool &changed : preview.value().newCutters()) {
+        Recording ended;
+        ended.tool = changed.number;
+        ended.at = QDateTime::currentDateTimeUtc();
+        ended.kind = RecordingKind::NewCutter;
+        ended.oldTlo = changed.endedTlo;
+        recordHistory(ended);
+    }
+    if (!preview.value().newCutters().isEmpty())
+        refreshToolLife();
     statusBar()->showMessage(tr("Imported from %1: %2").arg(path, preview.value().summary()), 5000);
     return true;
 }

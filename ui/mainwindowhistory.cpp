@@ -99,12 +99,10 @@ void MainWindow::setLibrary(const LibraryLocation &location, const QString &stat
     m_askedLibrary = location;
     // The window opens a shared library on its own thread: a server that does not answer holds it up for the
     // connect timeout, so that is short. (Reconnecting is asked from another thread: HistoryRecorder.)
-    const Library::Options options {
-        .busyTimeoutMs = kWindowBusyTimeoutMs,
+    const Library::Options options { .busyTimeoutMs = kWindowBusyTimeoutMs,
         .statementTimeoutMs = kWindowStatementTimeoutMs,
         .connectTimeoutS = 2,
-        .station = m_station
-    };
+        .station = m_station };
     // A failure is told by the recorder's unavailable(); the measurements wait for a library that opens, and
     // a shared one's wait in the station's own library (the outbox).
     auto opened = m_history->setLocation(location, options);
@@ -144,8 +142,8 @@ void MainWindow::refreshToolLife()
 {
     if (!m_history->library())
         return;
-    if (auto totals = m_history->library()->cuttingTotals(machineName()))
-        m_document->model()->setCuttingTimes(totals.value());
+    if (auto used = m_history->library()->usedLife(machineName()))
+        m_document->model()->setUsedLife(used.value());
 }
 
 Result<int> MainWindow::recordProgramRun(const QString &path)

@@ -19,6 +19,8 @@ const QString kUsage = uR"(usage: toffee-cli [--json] COMMAND [ARGS]
 Tool tables:
   show TABLE                 print a tool table (.json, .tbl or .csv)
   convert IN OUT             convert between formats, by extension or --to json|tbl|csv
+  new-cutter N --table FILE  another cutter in T N's pocket: its TLO, wear and break mark end (kept in the
+                             history as the old cutter's, --machine NAME); measure it before it cuts
   export --dialect D TABLE   the program that loads TABLE into a controller (--tool N for one tool)
   simulate --dialect D PROGRAM [--table FILE] [--samples N]
                              run PROGRAM as controller D would: where each move ends, and the offsets after
@@ -27,7 +29,8 @@ Tool tables:
                              tools from a CAM library (Fusion .json or .tools, .hsmlib, or a program with
                              Makera CAM's tool header) into TABLE, created (in --units, default mm) when
                              missing: what is new, what changes and how, what is unchanged; measured TLOs,
-                             wear and notes are kept, inch libraries converted
+                             wear and notes are kept, inch libraries converted; a tool whose cutter is
+                             another (type, diameter, overall length) gets a new cutter, as new-cutter
 
 The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator) [--protocol P] [--table FILE]
                  COMMAND
@@ -195,6 +198,7 @@ using Command = int (*)(Invocation &);
 const std::pair<QStringView, Command> kTableCommands[] = {
     { u"show", showTable },
     { u"convert", convertTable },
+    { u"new-cutter", newCutter },
     { u"export", exportOffsets },
     { u"simulate", simulateProgram },
     { u"import", importTools },

@@ -33,6 +33,8 @@ QJsonObject eventJson(const HistoryEvent &e)
         { u"at"_s, e.at.toString(Qt::ISODateWithMs) }, { u"kind"_s, eventKindName(e.kind) },
         { u"tlo"_s, jsonNumber(e.tlo) }, { u"reference_mz"_s, jsonNumber(e.referenceMz) },
         { u"current_mz"_s, jsonNumber(e.currentMz) } };
+    if (e.kind == EventKind::NewCutter)
+        o.insert(u"old_tlo"_s, jsonNumber(e.oldTlo)); // the ended cutter's TLO
     if (e.kind == EventKind::BreakTest) {
         o.insert(u"tolerance"_s, jsonNumber(e.tolerance));
         o.insert(u"old_tlo"_s, jsonNumber(e.oldTlo));
@@ -49,6 +51,8 @@ void printText(Invocation &call, const QList<HistoryEvent> &events)
                  << eventKindName(e.kind);
         if (e.tlo)
             call.out << "  TLO " << formatNumber(*e.tlo, NumberFormat::fixed(3));
+        if (e.kind == EventKind::NewCutter && e.oldTlo)
+            call.out << "  old cutter's TLO " << formatNumber(*e.oldTlo, NumberFormat::fixed(3)) << " ended";
         if (e.kind == EventKind::BreakTest && e.failed)
             call.out << (*e.failed ? "  FAILED" : "  passed");
         call.out << '\n';

@@ -7,12 +7,15 @@
 #include <QJsonObject>
 
 #include "app/cli/cli.h"
+#include "app/cli/machineoptions.h"
 #include "model/camimport/camlibrary.h"
 #include "model/camimport/camreaders.h"
 #include "model/camimport/importpreview.h"
 #include "model/formats/fileio.h"
 #include "model/formats/jsonscanner.h"
 #include "model/formats/tablefile.h"
+#include "model/library/historyevent.h"
+#include "model/library/library.h"
 
 using namespace Qt::StringLiterals;
 
@@ -56,7 +59,10 @@ QJsonObject previewJson(const CamLibrary &library, const QString &table, const I
     QJsonArray changed;
     QJsonArray unchanged;
     QJsonArray notes;
+    QJsonArray newCutters;
     for (const ImportedTool &tool : preview.tools()) {
+        if (tool.newCutter)
+            newCutters.append(tool.number);
         if (!tool.notes.isEmpty())
             notes.append(QJsonObject {
                 { u"number"_s, tool.number }, { u"notes"_s, QJsonArray::fromStringList(tool.notes) } });
@@ -70,7 +76,7 @@ QJsonObject previewJson(const CamLibrary &library, const QString &table, const I
     }
     return QJsonObject { { u"source"_s, library.path }, { u"format"_s, camFormatName(library.format) },
         { u"table"_s, table }, { u"new"_s, added }, { u"changed"_s, changed }, { u"unchanged"_s, unchanged },
-        { u"notes"_s, notes } };
+        { u"notes"_s, notes }, { u"new_cutters"_s, newCutters } };
 }
 
 // Why `path`, given as --into, is no tool table though it exists: a CAM library or program, or JSON that is
@@ -155,9 +161,32 @@ int importTools(Invocation &call)
     const ImportPreview &p = preview.value();
     const bool write = !call.has(u"dry-run"_s) && (isNew || p.changesAnything());
     const QStringList losses = write ? formatLosses(p.merged(), *format) : QStringList();
+    // The history first: a library that cannot be opened is said before the table changes.
+    auto history = write && !p.newCutters().isEmpty() ? openLibraryOption(call)
+                                                      : Result<std::unique_ptr<Library>>(nullptr);
+    if (!history)
+        return fail(call, history.error().message, BadInput);
     if (write) {
         if (auto saved = saveTableFile(tablePath, p.merged(), *format); !saved)
             return fail(call, saved.error().text(), BadInput);
+    }
+    if (history.value()) {
+        // Each tool the library gave a new cutter: the old cutter ends in the history, on --machine.
+        const QString machine
+            = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
+        QList<HistoryEvent> ended;
+        for (const ImportedTool &tool : p.newCutters()) {
+            Recording r;
+            r.tool = tool.number;
+            r.at = QDateTime::currentDateTimeUtc();
+            r.kind = RecordingKind::NewCutter;
+            r.oldTlo = tool.endedTlo;
+            ended << historyEvent(r, machine);
+        }
+        if (auto written = history.value()->append(ended); !written)
+            call.err << "toffee-cli: warning: the table is written, but the history could not take the new "
+                        "cutters: "
+                     << written.error().message << Qt::endl;
     }
     for (const QString &loss : losses)
         call.err << "toffee-cli: warning: " << loss << Qt::endl;

@@ -4,8 +4,14 @@
 #include <QJsonObject>
 
 #include "app/cli/cli.h"
+#include "app/cli/machineoptions.h"
 #include "model/formats/tablefile.h"
+#include "model/library/historyevent.h"
+#include "model/library/library.h"
+#include "model/library/spool.h"
+#include "model/limits.h"
 #include "model/numberformat.h"
+#include "model/textparsing.h"
 #include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
@@ -143,6 +149,87 @@ int convertTable(Invocation &call)
         call.out << "wrote " << table.value().size() << " tools to " << out << " (" << formatName(*format)
                  << ")" << Qt::endl;
     }
+    return Success;
+}
+
+int newCutter(Invocation &call)
+{
+    const QString usage = u"usage: toffee-cli new-cutter N --table FILE [--machine NAME] [--no-history]"_s;
+    const QString path = call.option(u"table"_s);
+    if (call.arguments.size() != 1 || path.isEmpty())
+        return fail(call, usage, BadInput);
+    const auto number = parseInteger(call.arguments.front().toUtf8());
+    if (!number || *number < Limits::kMinToolNumber || *number > Limits::kMaxToolNumber)
+        return fail(
+            call, u"new-cutter: \"%1\" is not a tool number."_s.arg(call.arguments.front()), BadInput);
+    const int tool = int(*number);
+    const auto units = tblUnits(call);
+    if (!units)
+        return fail(call, u"--units must be mm or in."_s, BadInput);
+    const auto format = formatForPath(path);
+    if (!format)
+        return fail(call,
+            u"%1: cannot tell the table's format from its name (.json, .tbl or .csv)."_s.arg(path), BadInput);
+    auto table = loadTableFile(path, format, *units);
+    if (!table)
+        return fail(call, table.error().text(), BadInput);
+    const Tool *before = table.value().find(tool);
+    if (!before)
+        return fail(call, u"T%1 is not in %2: nothing was changed."_s.arg(tool).arg(path), BadInput);
+    const Tool old = *before;
+    // The library first: a history that cannot be opened is said before the file changes.
+    auto library = openLibraryOption(call);
+    if (!library)
+        return fail(call, library.error().message, BadInput);
+    if (auto changed = table.value().newCutter(tool); !changed)
+        return fail(call, changed.error().text(), BadInput);
+    if (auto saved = saveTableFile(path, table.value(), *format); !saved)
+        return fail(call, saved.error().text(), BadInput);
+    QString history = u"not_recorded"_s;
+    if (library.value()) {
+        const QString machine
+            = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
+        Recording ended;
+        ended.tool = tool;
+        ended.at = QDateTime::currentDateTimeUtc();
+        ended.kind = RecordingKind::NewCutter;
+        ended.oldTlo = old.measuredTlo;
+        const HistoryEvent event = historyEvent(ended, machine);
+        const auto kept = Spool().keep(library.value()->location(), { event });
+        if (auto written = library.value()->append({ event }); written) {
+            history = u"recorded"_s;
+            if (kept)
+                (void)Spool().remove(kept.value());
+        } else {
+            history = kept ? u"kept"_s : u"not_recorded"_s;
+            call.err << "toffee-cli: " << written.error().message << Qt::endl;
+            if (kept)
+                call.err << "toffee-cli: the new cutter is kept on this computer (" << kept.value()
+                         << ") and goes into the history the next time it opens." << Qt::endl;
+        }
+    }
+    const auto n = [&table](double v) {
+        return displayNumber(v, table.value().units());
+    };
+    if (call.json) {
+        printJson(call,
+            QJsonObject { { u"tool"_s, tool }, { u"table"_s, path },
+                { u"old_tlo"_s, old.measuredTlo ? QJsonValue(*old.measuredTlo) : QJsonValue() },
+                { u"old_length_wear"_s, old.lengthWear }, { u"old_radius_wear"_s, old.radiusWear },
+                { u"old_break_test_failed"_s, old.breakTestFailed }, { u"history"_s, history } });
+        return Success;
+    }
+    call.out << "T" << tool << " has a new cutter in " << path << ".\n";
+    if (old.measuredTlo)
+        call.out << "  the old cutter's TLO " << n(*old.measuredTlo) << " "
+                 << unitsSymbol(table.value().units())
+                 << " is no longer stored (kept in the history as the old cutter's)\n";
+    if (old.lengthWear != 0.0 || old.radiusWear != 0.0)
+        call.out << "  its wear (length " << n(old.lengthWear) << ", radius " << n(old.radiusWear)
+                 << ") is reset to 0\n";
+    if (old.breakTestFailed)
+        call.out << "  its break-test mark is cleared\n";
+    call.out << "  measure T" << tool << " on the tool setter before it cuts." << Qt::endl;
     return Success;
 }
 

@@ -102,7 +102,39 @@ QStringList changes(const Tool &before, const Tool &after, Units units)
         fields << (wasLine.isEmpty()
                 ? ImportPreview::tr("CAM lengths added to the notes (%1)").arg(isLine)
                 : ImportPreview::tr("CAM lengths in the notes: %1 → %2").arg(wasLine, isLine));
+    if (before.cutterType.isEmpty() && !after.cutterType.isEmpty())
+        fields << ImportPreview::tr("cutter type “%1” kept").arg(after.cutterType);
+    if (!before.overallLength && after.overallLength)
+        fields << ImportPreview::tr("overall length %1 %2 kept")
+                      .arg(displayNumber(*after.overallLength, units), unitsSymbol(units));
     return fields;
+}
+
+// Why the library's cutter is not the one the table's tool describes, in words; nothing when it is the same,
+// or when the table knows too little to tell (a tool never imported has no type or overall length; a radius
+// of 0 is none given).
+QStringList cutterChanges(const Tool &before, const Tool &after, Units units)
+{
+    QStringList why;
+    const QString was = before.cutterType.simplified();
+    const QString is = after.cutterType.simplified();
+    if (!was.isEmpty() && !is.isEmpty() && was.compare(is, Qt::CaseInsensitive) != 0)
+        why << ImportPreview::tr("type “%1” → “%2”")
+                   .arg(excerpt(was, Limits::kMaxDescriptionLength),
+                       excerpt(is, Limits::kMaxDescriptionLength));
+    const double diameterTolerance = units == Units::Inch ? 0.0005 : 0.01;
+    if (before.radiusGeometry > 0.0
+        && std::fabs(before.radiusGeometry - after.radiusGeometry) * 2.0 > diameterTolerance + 1e-9)
+        why << ImportPreview::tr("diameter %1 → %2 %3")
+                   .arg(displayNumber(before.radiusGeometry * 2.0, units),
+                       displayNumber(after.radiusGeometry * 2.0, units), unitsSymbol(units));
+    const double lengthTolerance = units == Units::Inch ? 0.004 : 0.1;
+    if (before.overallLength && after.overallLength
+        && std::fabs(*before.overallLength - *after.overallLength) > lengthTolerance + 1e-9)
+        why << ImportPreview::tr("overall length %1 → %2 %3")
+                   .arg(displayNumber(*before.overallLength, units),
+                       displayNumber(*after.overallLength, units), unitsSymbol(units));
+    return why;
 }
 
 // "flat end mill, 6 mm": a new tool's description when the library gives none.
@@ -173,6 +205,10 @@ Tool mergedTool(const CamTool &cam, const Tool *existing, Units units, int pocke
         tool.description = cam.description;
     if (cam.diameter)
         tool.radiusGeometry = converted(*cam.diameter / 2.0, cam.units, units);
+    if (!cam.type.simplified().isEmpty())
+        tool.cutterType = excerpt(cam.type.simplified(), Limits::kMaxDescriptionLength);
+    if (cam.overallLength)
+        tool.overallLength = converted(*cam.overallLength, cam.units, units);
     tool.notes = notesWith(tool.notes, camLine(cam, units));
     return tool;
 }
@@ -199,10 +235,27 @@ Result<ImportPreview> ImportPreview::build(const ToolTable &current, const CamLi
         seen.insert(cam.number);
         const qsizetype at = current.indexOf(cam.number);
         const Tool *existing = at >= 0 ? &current.at(at) : nullptr;
-        const Tool tool = mergedTool(cam, existing, units, pockets.value(cam.number));
+        Tool tool = mergedTool(cam, existing, units, pockets.value(cam.number));
+        const QStringList cutter = existing ? cutterChanges(*existing, tool, units) : QStringList();
+        if (!cutter.isEmpty()) {
+            tool.endCutter(); // as ToolTable::newCutter
+        }
         if (auto r = validateTool(tool, units); !r)
             return refuse(r.error().message);
         ImportedTool item { cam.number, tool.description, ImportChange::New, {}, {} };
+        if (!cutter.isEmpty()) {
+            item.newCutter = true;
+            item.endedTlo = existing->measuredTlo;
+            item.notes << (existing->measuredTlo
+                    ? tr("a new cutter (%1): the old cutter's TLO %2 %3, its wear and break mark end; "
+                         "measure it "
+                         "before it cuts")
+                          .arg(cutter.join(u", "_s), displayNumber(*existing->measuredTlo, units),
+                              unitsSymbol(units))
+                    : tr("a new cutter (%1): the old cutter's wear and break mark end; measure it before it "
+                         "cuts")
+                          .arg(cutter.join(u", "_s)));
+        }
         if (!existing)
             item.notes << tr("pocket %1; no tool length yet (0 in the table): measure it before use")
                               .arg(tool.pocket);
@@ -237,10 +290,21 @@ qsizetype ImportPreview::count(ImportChange change) const
 
 QString ImportPreview::summary() const
 {
-    return tr("%1 new, %2 changed, %3 unchanged")
-        .arg(count(ImportChange::New))
-        .arg(count(ImportChange::Changed))
-        .arg(count(ImportChange::Unchanged));
+    const auto cutters
+        = std::count_if(m_tools.cbegin(), m_tools.cend(), [](const ImportedTool &t) { return t.newCutter; });
+    const QString counts = tr("%1 new, %2 changed, %3 unchanged")
+                               .arg(count(ImportChange::New))
+                               .arg(count(ImportChange::Changed))
+                               .arg(count(ImportChange::Unchanged));
+    return cutters == 0 ? counts : tr("%1; a new cutter in %2 (measure before use)").arg(counts).arg(cutters);
+}
+
+QList<ImportedTool> ImportPreview::newCutters() const
+{
+    QList<ImportedTool> out;
+    std::copy_if(m_tools.cbegin(), m_tools.cend(), std::back_inserter(out),
+        [](const ImportedTool &t) { return t.newCutter; });
+    return out;
 }
 
 } // namespace Toffee

@@ -22,11 +22,18 @@ struct ImportedTool
     // What the operator should know besides: a new tool's pocket and that it has no length yet, a length
     // offset (H) in the library that Toffee does not take.
     QStringList notes;
+    // The library describes another cutter than the table's (type, diameter or overall length): the import
+    // puts a new cutter in the pocket, as ToolTable::newCutter does, ending the old one's TLO (endedTlo),
+    // wear and break mark. `fields` says why, first.
+    bool newCutter = false;
+    std::optional<double> endedTlo = std::nullopt;
 };
 
 // A CAM library merged into a table, before anything is applied: what happens to each of the library's tools,
 // and the table it makes. Only what the CAM owns changes: the description, the radius geometry (half the
-// diameter) and the CAM's own line in the notes. The measured TLO, its time, source and reference, the
+// diameter), the cutter's type and overall length, and the CAM's own line in the notes; except that a tool
+// whose cutter is another (its type, its diameter beyond 0.01 mm or its overall length beyond 0.1 mm) is a
+// new cutter, whose TLO, wear and break mark end. The measured TLO, its time, source and reference, the
 // break-test mark, the wear, the pocket, the length geometry and the operator's notes stay as they are, and a
 // library tool without a description keeps the table's. A new tool gets the pocket the table gives a tool of
 // its number, or the lowest pocket no other tool has when that one is taken; it has no length until measured.
@@ -43,8 +50,10 @@ public:
     [[nodiscard]] const ToolTable &merged() const { return m_merged; }
     [[nodiscard]] qsizetype count(ImportChange change) const;
     [[nodiscard]] bool changesAnything() const { return count(ImportChange::Unchanged) < m_tools.size(); }
-    // "2 new, 1 changed, 3 unchanged"
+    // "2 new, 1 changed, 3 unchanged", and how many are new cutters
     [[nodiscard]] QString summary() const;
+    // The tools the import puts a new cutter in: each needs its history's NewCutter event.
+    [[nodiscard]] QList<ImportedTool> newCutters() const;
 
     // The notes line an import owns starts with this (never translated, so that it is found again in any
     // language); the operator's other lines are never touched.

@@ -188,6 +188,16 @@ Result<void> ToolDocument::recordBreakTest(int number, bool failed)
 
 Result<void> ToolDocument::record(const Recording &r)
 {
+    if (r.kind == RecordingKind::NewCutter) {
+        // Not the machine's doing: only a tool of the table can take a new cutter, and only then is it
+        // history.
+        ToolTable next = table();
+        if (auto changed = next.newCutter(r.tool); !changed)
+            return changed;
+        Q_EMIT recorded(r);
+        pushChange(*next.find(r.tool), tr("New cutter in T%1").arg(r.tool));
+        return {};
+    }
     // The history keeps what the machine did whether or not the table could take it.
     Q_EMIT recorded(r);
     if (r.kind == RecordingKind::Restore)

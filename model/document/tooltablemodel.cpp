@@ -90,12 +90,16 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
         if (role == Qt::ToolTipRole)
             return QLocale().toString(tool.measuredAt.toLocalTime(), QLocale::LongFormat);
         return isStale(tool) ? tr("%1 (stale)").arg(ageText(tool.measuredAt)) : ageText(tool.measuredAt);
-    case CuttingTimeColumn: {
-        const auto seconds = m_cuttingSeconds.constFind(tool.number);
-        if (seconds == m_cuttingSeconds.cend())
-            return role == SortRole ? QVariant(0.0) : QVariant();
-        return role == SortRole || role == Qt::EditRole ? QVariant(*seconds)
-                                                        : QVariant(durationText(*seconds));
+    case ToolLifeColumn: {
+        if (role == Qt::EditRole)
+            return ToolLife::limitText(tool);
+        const auto used = m_usedLife.constFind(tool.number);
+        const UsedLife u = used == m_usedLife.cend() ? UsedLife() : *used;
+        if (role == SortRole)
+            return ToolLife::fraction(tool, u).value_or(0.0) * 1e9 + u.seconds;
+        if (used == m_usedLife.cend() && !tool.lifeLimitMinutes && !tool.lifeLimitUses)
+            return {};
+        return ToolLife::usedText(tool, u);
     }
     case NotesColumn:
         return role == Qt::DisplayRole ? QString(tool.notes).replace(u'\n', u' ') : tool.notes;
@@ -122,6 +126,26 @@ QVariant ToolTableModel::decoration(const Tool &tool, int column, int role) cons
         return QColor(0xb0, 0x50, 0x00); // stale: measure it again before trusting it
     if (role == Qt::ToolTipRole && column == MeasuredTloColumn)
         return tloToolTip(tool);
+    if (column == ToolLifeColumn && (role == Qt::ForegroundRole || role == Qt::ToolTipRole)) {
+        const UsedLife used = m_usedLife.value(tool.number);
+        const LifeState state = ToolLife::state(tool, used);
+        if (role == Qt::ForegroundRole)
+            return state == LifeState::Exceeded ? QColor(0xc0, 0x1c, 0x28)
+                : state == LifeState::Near      ? QColor(0xb0, 0x50, 0x00)
+                                                : QVariant();
+        const QString done = tr("T%1's cutter has cut %2 in %3 recorded program runs since it went in.")
+                                 .arg(tool.number)
+                                 .arg(durationText(used.seconds))
+                                 .arg(used.uses);
+        const QString limit = ToolLife::limitText(tool).isEmpty()
+            ? tr("It has no life limit: type one here, as \"90 min\", \"40 uses\" or both.")
+            : tr("Its life limit is %1.").arg(ToolLife::limitText(tool));
+        const QString what = state == LifeState::Exceeded
+            ? tr("It is past its limit: put in a new cutter (Edit ▸ New Cutter…).")
+            : state == LifeState::Near ? tr("It is near its limit: have a new cutter ready.")
+                                       : QString();
+        return QStringList { done, limit, what }.join(u' ').trimmed();
+    }
     if (column == PocketColumn && (role == Qt::ForegroundRole || role == Qt::ToolTipRole)
         && pocketCount(tool.pocket) > 1) {
         if (role == Qt::ForegroundRole)
@@ -139,11 +163,11 @@ QVariant ToolTableModel::decoration(const Tool &tool, int column, int role) cons
     return {};
 }
 
-void ToolTableModel::setCuttingTimes(const QHash<int, double> &seconds)
+void ToolTableModel::setUsedLife(const QHash<int, UsedLife> &used)
 {
-    m_cuttingSeconds = seconds;
+    m_usedLife = used;
     if (rowCount() > 0)
-        Q_EMIT dataChanged(index(0, CuttingTimeColumn), index(rowCount() - 1, CuttingTimeColumn));
+        Q_EMIT dataChanged(index(0, ToolLifeColumn), index(rowCount() - 1, ToolLifeColumn));
 }
 
 void ToolTableModel::setStaleAfterDays(int days)
@@ -216,8 +240,8 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
         return tr("TLO");
     case MeasuredAtColumn:
         return tr("TLO recorded");
-    case CuttingTimeColumn:
-        return tr("Cutting time");
+    case ToolLifeColumn:
+        return tr("Tool life");
     case NotesColumn:
         return tr("Notes");
     default:
@@ -232,7 +256,7 @@ Qt::ItemFlags ToolTableModel::flags(const QModelIndex &index) const
         return f;
     // The total is computed and the measurement comes from the tool setter: neither is typed in.
     const int c = index.column();
-    if (c != TotalLengthColumn && c != MeasuredTloColumn && c != MeasuredAtColumn && c != CuttingTimeColumn)
+    if (c != TotalLengthColumn && c != MeasuredTloColumn && c != MeasuredAtColumn)
         f |= Qt::ItemIsEditable;
     return f;
 }
@@ -286,6 +310,9 @@ Result<Tool> ToolTableModel::editedTool(const Tool &tool, int column, const QVar
         break;
     case NotesColumn:
         edited.notes = value.toString();
+        break;
+    case ToolLifeColumn:
+        parsed = ToolLife::parseLimit(text, edited);
         break;
     default:
         return Error { tr("this column cannot be edited.") };

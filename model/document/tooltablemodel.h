@@ -6,6 +6,7 @@
 #include <QAbstractTableModel>
 #include <QHash>
 
+#include "model/toollife.h"
 #include "model/tooltable.h"
 
 namespace Toffee {
@@ -29,7 +30,9 @@ public:
         RadiusWearColumn,
         MeasuredTloColumn,
         MeasuredAtColumn, // shown as an age ("3 h ago"), marked stale when older than the limit
-        CuttingTimeColumn, // the history library's total for the tool, when known
+        // What the cutter has cut since it went in (the history library's program runs), against its life
+        // limit; the limit is what is edited ("90 min, 40 uses").
+        ToolLifeColumn,
         NotesColumn,
         ColumnCount
     };
@@ -64,9 +67,10 @@ public:
     // The other tools in `pocket` (pocket 0, the spindle of a random changer, is never shared).
     [[nodiscard]] QList<int> toolsSharingPocket(int pocket, int except) const;
 
-    // Tool life from the history library: each tool's total cutting time in seconds (a tool missing has
-    // none).
-    void setCuttingTimes(const QHash<int, double> &seconds);
+    // Tool life from the history library: what each tool's cutter has done since it went in (a tool missing
+    // has done nothing recorded).
+    void setUsedLife(const QHash<int, UsedLife> &used);
+    [[nodiscard]] UsedLife usedLife(int number) const { return m_usedLife.value(number); }
     // A measurement older than this many days is stale; "now" moves on, so the ages are redrawn on
     // refreshAges.
     void setStaleAfterDays(int days);
@@ -95,7 +99,7 @@ private:
     ToolTable m_table;
     EditHandler m_editHandler;
     mutable QHash<int, int> m_pocketCounts; // built when first needed after a change
-    QHash<int, double> m_cuttingSeconds;
+    QHash<int, UsedLife> m_usedLife;
     int m_staleAfterDays = kDefaultStaleDays;
     mutable bool m_pocketsDirty = true;
 };

@@ -36,6 +36,10 @@ enum Column {
     ReferenceMzColumn,
     UnitsColumn,
     LinuxCnc,
+    CutterTypeColumn,
+    OverallLengthColumn,
+    LifeLimitMinutesColumn,
+    LifeLimitUsesColumn,
     ColumnCount
 };
 
@@ -55,6 +59,10 @@ constexpr const char *kColumnNames[ColumnCount] = {
     "reference_mz",
     "units",
     "linuxcnc",
+    "cutter_type",
+    "overall_length",
+    "life_limit_minutes",
+    "life_limit_uses",
 };
 
 QString fromUtf8(QByteArrayView v)
@@ -242,6 +250,13 @@ Tool toolFrom(Row &row)
     tool.notes = row.text(Notes);
     readMarks(row, tool);
     tool.linuxCncExtra = row.text(LinuxCnc);
+    tool.cutterType = row.text(CutterTypeColumn);
+    if (!row.cell(OverallLengthColumn).isEmpty())
+        tool.overallLength = decimal(row, OverallLengthColumn, 0.0);
+    if (!row.cell(LifeLimitMinutesColumn).isEmpty())
+        tool.lifeLimitMinutes = decimal(row, LifeLimitMinutesColumn, 0.0);
+    if (!row.cell(LifeLimitUsesColumn).isEmpty())
+        tool.lifeLimitUses = integer(row, LifeLimitUsesColumn, 0);
     return tool;
 }
 
@@ -373,6 +388,17 @@ bool writeCsvTable(const ToolTable &table, const ByteSink &sink)
         out += units;
         out += ',';
         appendField(out, tool.linuxCncExtra);
+        out += ',';
+        appendField(out, tool.cutterType);
+        out += ',';
+        if (tool.overallLength)
+            appendNumber(out, *tool.overallLength);
+        out += ',';
+        if (tool.lifeLimitMinutes)
+            appendNumber(out, *tool.lifeLimitMinutes);
+        out += ',';
+        if (tool.lifeLimitUses)
+            out += QByteArray::number(*tool.lifeLimitUses);
         out += '\n';
         if (!w.next())
             return false;

@@ -24,8 +24,10 @@ namespace {
 
 // Version 2 added "tlo_source", "break_test_failed" and "reference_mz". A table without them is still written
 // as version 1, so that an older Toffee keeps reading it; one with them is version 2, which an older Toffee
-// refuses rather than silently dropping a broken tool's mark.
-constexpr int kJsonVersion = 2;
+// refuses rather than silently dropping a broken tool's mark. Version 3 added the cutter ("cutter_type",
+// "overall_length") and the tool life's limits ("life_limit_minutes", "life_limit_uses"); written only when a
+// tool has one, for the same reason.
+constexpr int kJsonVersion = 3;
 const auto kFormatId = "toffee-tool-table"_L1;
 
 // What the table's own fields said so far.
@@ -222,8 +224,11 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
     QByteArray &out = w.out;
     const bool marks = std::any_of(table.tools().cbegin(), table.tools().cend(),
         [](const Tool &t) { return t.tloSource != TloSource::Probe || t.breakTestFailed || t.referenceMz; });
+    const bool cutters = std::any_of(table.tools().cbegin(), table.tools().cend(), [](const Tool &t) {
+        return !t.cutterType.isEmpty() || t.overallLength || t.lifeLimitMinutes || t.lifeLimitUses;
+    });
     out += "{\n  \"format\": \"toffee-tool-table\",\n  \"version\": ";
-    out += QByteArray::number(marks ? kJsonVersion : 1);
+    out += QByteArray::number(cutters ? kJsonVersion : marks ? 2 : 1);
     out += ",\n  \"units\": \"";
     out += unitsSymbol(table.units()).toLatin1();
     out += "\",\n  \"tools\": [";
@@ -261,6 +266,18 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
         if (!tool.linuxCncExtra.isEmpty()) {
             out += ", \"linuxcnc\": ";
             appendString(out, tool.linuxCncExtra);
+        }
+        if (!tool.cutterType.isEmpty()) {
+            out += ", \"cutter_type\": ";
+            appendString(out, tool.cutterType);
+        }
+        if (tool.overallLength)
+            appendField(out, JsonKey::OverallLength, *tool.overallLength);
+        if (tool.lifeLimitMinutes)
+            appendField(out, JsonKey::LifeLimitMinutes, *tool.lifeLimitMinutes);
+        if (tool.lifeLimitUses) {
+            out += ", \"life_limit_uses\": ";
+            out += QByteArray::number(*tool.lifeLimitUses);
         }
         out += '}';
         if (!w.next())

@@ -65,6 +65,16 @@ bool optionalDecimal(JsonScanner &json, const Scalar &v, QLatin1StringView key, 
     return ok;
 }
 
+bool optionalWholeNumber(JsonScanner &json, const Scalar &v, QLatin1StringView key, std::optional<int> &out)
+{
+    if (v.kind == Scalar::Null)
+        return true;
+    if (v.kind != Scalar::Number || v.number != std::floor(v.number) || std::fabs(v.number) > 2e9)
+        return json.fail(tr("\"%1\" must be a whole number.").arg(key));
+    out = int(v.number);
+    return true;
+}
+
 bool measuredAt(JsonScanner &json, const Scalar &v, QLatin1StringView key, QDateTime &out)
 {
     QString at;
@@ -115,11 +125,16 @@ enum class ToolKey {
     BreakTestFailed,
     ReferenceMz,
     LinuxCnc,
+    CutterType,
+    OverallLength,
+    LifeLimitMinutes,
+    LifeLimitUses,
 };
 constexpr QLatin1StringView kToolKeys[] = { JsonKey::Number, JsonKey::Pocket, JsonKey::Description,
     JsonKey::LengthGeometry, JsonKey::LengthWear, JsonKey::RadiusGeometry, JsonKey::RadiusWear,
     JsonKey::MeasuredTlo, JsonKey::MeasuredAt, JsonKey::Notes, JsonKey::TloSource, JsonKey::BreakTestFailed,
-    JsonKey::ReferenceMz, JsonKey::LinuxCnc };
+    JsonKey::ReferenceMz, JsonKey::LinuxCnc, JsonKey::CutterType, JsonKey::OverallLength,
+    JsonKey::LifeLimitMinutes, JsonKey::LifeLimitUses };
 
 constexpr quint32 seenBit(ToolKey key)
 {
@@ -159,6 +174,14 @@ bool readToolField(JsonScanner &json, ToolKey key, const Scalar &v, Tool &tool)
         return optionalDecimal(json, v, k, tool.referenceMz);
     case ToolKey::LinuxCnc:
         return text(json, v, k, tool.linuxCncExtra);
+    case ToolKey::CutterType:
+        return text(json, v, k, tool.cutterType);
+    case ToolKey::OverallLength:
+        return optionalDecimal(json, v, k, tool.overallLength);
+    case ToolKey::LifeLimitMinutes:
+        return optionalDecimal(json, v, k, tool.lifeLimitMinutes);
+    case ToolKey::LifeLimitUses:
+        return optionalWholeNumber(json, v, k, tool.lifeLimitUses);
     }
     Q_UNREACHABLE();
     return false;

@@ -29,6 +29,10 @@ inline constexpr QLatin1StringView TloSource("tlo_source");
 inline constexpr QLatin1StringView BreakTestFailed("break_test_failed");
 inline constexpr QLatin1StringView ReferenceMz("reference_mz");
 inline constexpr QLatin1StringView LinuxCnc("linuxcnc");
+inline constexpr QLatin1StringView CutterType("cutter_type");
+inline constexpr QLatin1StringView OverallLength("overall_length");
+inline constexpr QLatin1StringView LifeLimitMinutes("life_limit_minutes");
+inline constexpr QLatin1StringView LifeLimitUses("life_limit_uses");
 } // namespace JsonKey
 
 // One tool object, `json` at its '{'. False when it is not a tool Toffee reads, the reason in `json.error()`.

@@ -106,6 +106,8 @@ QStringList formatLosses(const ToolTable &table, TableFormat format)
     bool wear = false;
     bool tlo = false;
     bool notes = false;
+    bool life = false;
+    bool cutter = false;
     QStringList broken;
     for (const Tool &tool : table.tools()) {
         if (tool.breakTestFailed)
@@ -113,6 +115,8 @@ QStringList formatLosses(const ToolTable &table, TableFormat format)
         wear = wear || tool.lengthWear != 0.0 || tool.radiusWear != 0.0;
         tlo = tlo || tool.measuredTlo.has_value();
         notes = notes || !tool.notes.isEmpty();
+        life = life || tool.lifeLimitMinutes || tool.lifeLimitUses;
+        cutter = cutter || !tool.cutterType.isEmpty() || tool.overallLength;
     }
     QStringList losses;
     if (!broken.isEmpty())
@@ -125,6 +129,11 @@ QStringList formatLosses(const ToolTable &table, TableFormat format)
         losses << tr("A LinuxCNC table has no place for measured TLOs: they are not saved.");
     if (notes)
         losses << tr("A LinuxCNC table has no place for notes: they are not saved.");
+    if (life)
+        losses << tr("A LinuxCNC table has no place for tool life limits: they are not saved.");
+    if (cutter)
+        losses << tr("A LinuxCNC table has no place for the cutter's type and overall length: they are not "
+                     "saved, and an import can then tell a new cutter only by its diameter.");
     if (table.units() == Units::Inch)
         losses << tr("A LinuxCNC table does not record its units: the numbers are written in inches.");
     return losses;

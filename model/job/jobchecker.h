@@ -99,6 +99,7 @@ private:
     // it.
     template<typename Found> void judgeTool(int number, const ToolFacts &facts, Found found) const;
     void toolFindings(const JobTool &tool);
+    void lifeFinding(const JobTool &tool, const ToolFacts &facts);
     // A tool beyond the list loaded at `line`: its findings from the table, counted.
     void countMoreTool(int number, int line, bool first);
     void noteForTool(FindingKind kind, const JobTool &tool, const QString &message);

@@ -25,6 +25,7 @@ Severity findingSeverity(FindingKind kind)
     case FindingKind::NoToolLoaded:
     case FindingKind::ProgramSetsTlo:
     case FindingKind::ControllerTableDiffers:
+    case FindingKind::LifeExceeded:
         return Severity::Warning;
     }
     return Severity::Error;
@@ -61,6 +62,8 @@ QString findingKey(FindingKind kind)
         return u"program_sets_tlo"_s;
     case FindingKind::ControllerTableDiffers:
         return u"controller_table_differs"_s;
+    case FindingKind::LifeExceeded:
+        return u"life_exceeded"_s;
     }
     return {};
 }

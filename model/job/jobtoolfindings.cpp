@@ -150,6 +150,36 @@ void JobChecker::toolFindings(const JobTool &tool)
     const ToolFacts facts = m_setup.facts.value(tool.number);
     judgeTool(tool.number, facts,
         [this, &tool](FindingKind kind, const auto &message) { noteForTool(kind, tool, message()); });
+    lifeFinding(tool, facts);
+}
+
+// As FANUC's tool-life management counts: the minutes of cutting and the programs since the cutter went in,
+// with this program's added, against the tool's limits.
+void JobChecker::lifeFinding(const JobTool &tool, const ToolFacts &facts)
+{
+    if (!facts.inTable || (!facts.lifeLimitMinutes && !facts.lifeLimitUses))
+        return;
+    const int n = tool.number;
+    const double after = facts.used.seconds + tool.cuttingSeconds;
+    if (facts.lifeLimitMinutes && after > *facts.lifeLimitMinutes * 60.0 + 1e-6) {
+        noteForTool(FindingKind::LifeExceeded, tool,
+            tr("T%1 would pass its life limit of %2 min in this program: its cutter has cut %3 since it went "
+               "in, and the program cuts %4 more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli "
+               "new-cutter %1) or raise the limit.")
+                .arg(n)
+                .arg(formatNumber(*facts.lifeLimitMinutes, NumberFormat::upTo(1)))
+                .arg(durationText(facts.used.seconds), durationText(tool.cuttingSeconds)));
+        return;
+    }
+    if (facts.lifeLimitUses && facts.used.uses + 1 > *facts.lifeLimitUses)
+        noteForTool(FindingKind::LifeExceeded, tool,
+            tr("T%1 would pass its life limit of %2 uses: its cutter has cut in %3 programs since it went "
+               "in, "
+               "and this is one more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or "
+               "raise the limit.")
+                .arg(n)
+                .arg(*facts.lifeLimitUses)
+                .arg(facts.used.uses));
 }
 
 void JobChecker::countMoreTool(int number, int line, bool first)

@@ -70,6 +70,8 @@ QHash<int, ToolFacts> factsFromTable(const ToolTable &table)
         f.length = tool.totalLength();
         f.measuredAt = tool.measuredTlo ? tool.measuredAt : QDateTime();
         f.broken = tool.breakTestFailed;
+        f.lifeLimitMinutes = tool.lifeLimitMinutes;
+        f.lifeLimitUses = tool.lifeLimitUses;
     }
     return facts;
 }
@@ -109,12 +111,27 @@ Result<void> addLibraryFacts(
     QHash<int, ToolFacts> &facts, const Library &library, const QString &machine, const QList<int> &tools)
 {
     for (int tool : tools) {
-        auto measured = newest(library, machine, tool, { EventKind::Probe, EventKind::ManualSet });
+        auto measured = newest(
+            library, machine, tool, { EventKind::Probe, EventKind::ManualSet, EventKind::NewCutter });
         if (!measured)
             return measured.error();
         auto tested = newest(library, machine, tool, { EventKind::BreakTest });
         if (!tested)
             return tested.error();
+        // A new cutter ends what the history knew of the old one: its TLO and its break tests. The table's
+        // own values are the table's (a new cutter cleared them; an undo put them back on purpose).
+        if (measured.value() && measured.value()->kind == EventKind::NewCutter) {
+            if (tested.value() && tested.value()->at <= measured.value()->at)
+                tested.value().reset();
+            measured.value().reset();
+        }
+        if (const auto it = facts.find(tool);
+            it != facts.end() && (it->lifeLimitMinutes || it->lifeLimitUses)) {
+            auto used = library.usedLife(machine, tool);
+            if (!used)
+                return used.error();
+            it->used = used.value().value(tool);
+        }
         if (!measured.value() && !tested.value())
             continue; // nothing to add: no entry made for it
         ToolFacts &f = facts[tool];

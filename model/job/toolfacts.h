@@ -10,6 +10,7 @@
 
 #include "model/result.h"
 #include "model/tool.h"
+#include "model/toollife.h"
 
 namespace Toffee {
 
@@ -32,6 +33,10 @@ struct ToolFacts
     // The last break test failed and the tool was not measured since (the table's mark, or the library's
     // newest break test when no probe came after it).
     bool broken = false;
+    // Tool life: the table's limits, and what the cutter did since it went in (the history's program runs).
+    std::optional<double> lifeLimitMinutes;
+    std::optional<int> lifeLimitUses;
+    UsedLife used;
 
     // Measured within `staleDays` of `now`, and not after it (beyond a few minutes of clocks that differ).
     [[nodiscard]] bool isFresh(const QDateTime &now, int staleDays) const;

@@ -22,6 +22,7 @@ constexpr KindName kKindNames[] = {
     { EventKind::ManualSet, u"manual_set" },
     { EventKind::Restore, u"restore" },
     { EventKind::Import, u"import" },
+    { EventKind::NewCutter, u"new_cutter" },
 };
 
 } // namespace
@@ -66,6 +67,9 @@ HistoryEvent historyEvent(const Recording &r, const QString &machine)
         break;
     case RecordingKind::Pulled:
         e.kind = EventKind::Import; // read in from the controller's own table
+        break;
+    case RecordingKind::NewCutter:
+        e.kind = EventKind::NewCutter;
         break;
     }
     // A break test leaves the tool at the TLO it measured when it passed; a failed one changes nothing.

@@ -15,10 +15,12 @@ namespace Toffee {
 // table, or imported from elsewhere. Stored by these names (docs/LIBRARY.md).
 // Import: a TLO read in from elsewhere, as from a controller's own table (grblHAL's, pull-offsets), set there
 // by someone else and not measured by Toffee.
-enum class EventKind { Probe, BreakTest, ManualSet, Restore, Import };
+// NewCutter: another cutter went into the tool's number: the events before it are the old cutter's (its TLO
+// in old_tlo), and its trend, uses and break mark end there.
+enum class EventKind { Probe, BreakTest, ManualSet, Restore, Import, NewCutter };
 
 [[nodiscard]] QString eventKindName(
-    EventKind kind); // "probe", "break_test", "manual_set", "restore", "import"
+    EventKind kind); // "probe", "break_test", "manual_set", "restore", "import", "new_cutter"
 [[nodiscard]] std::optional<EventKind> eventKindFromName(QStringView name);
 
 // One measurement event, as the history library keeps it. Lengths in millimetres; what the machine did not

@@ -295,25 +295,31 @@ Result<QList<ToolUse>> Library::uses(const QString &machine, std::optional<int> 
     return out;
 }
 
-Result<QHash<int, double>> Library::cuttingTotals(const QString &machine) const
+Result<QHash<int, UsedLife>> Library::usedLife(const QString &machine, std::optional<int> tool) const
 {
     QSqlQuery query(database());
     query.setForwardOnly(true);
-    // Only times a program could take (text, infinities and NaN sort above 1e9 in both databases).
-    query.prepare(
-        u"SELECT tool, SUM(cutting_seconds) FROM tool_use WHERE machine = ? AND cutting_seconds >= 0 "
-        "AND cutting_seconds <= 1e9 GROUP BY tool"_s);
+    // Only times a program could take (text, infinities and NaN sort above 1e9 in both databases); only the
+    // runs after the tool's newest new cutter (times are ISO 8601 UTC text, which sorts as time does).
+    query.prepare(u"SELECT u.tool, SUM(u.cutting_seconds), COUNT(*) FROM tool_use u WHERE u.machine = ? "
+                  "AND u.cutting_seconds >= 0 AND u.cutting_seconds <= 1e9"_s
+        + (tool ? u" AND u.tool = ?"_s : QString())
+        + u" AND u.recorded_at > COALESCE((SELECT MAX(e.measured_at) FROM events e WHERE e.machine = "
+          "u.machine AND e.tool = u.tool AND e.kind = 'new_cutter'), '') GROUP BY u.tool"_s);
     query.addBindValue(machine);
+    if (tool)
+        query.addBindValue(*tool);
     if (!query.exec())
         return failure(tr("Reading the tools' use"), query);
-    QHash<int, double> out;
+    QHash<int, UsedLife> out;
     while (query.next()) {
         // A sum over rows someone else wrote: a tool or a total that is not one is left out.
-        const auto tool = RowReader::wholeNumber(query.value(0));
+        const auto number = RowReader::wholeNumber(query.value(0));
         const auto seconds = RowReader::finiteNumber(query.value(1));
-        if (tool && *tool >= Limits::kMinToolNumber && *tool <= Limits::kMaxToolNumber && seconds
-            && *seconds >= 0)
-            out.insert(int(*tool), *seconds);
+        const auto uses = RowReader::wholeNumber(query.value(2));
+        if (number && *number >= Limits::kMinToolNumber && *number <= Limits::kMaxToolNumber && seconds
+            && *seconds >= 0 && uses && *uses >= 0)
+            out.insert(int(*number), UsedLife { *seconds, int(std::min<qint64>(*uses, INT_MAX)) });
     }
     return out;
 }

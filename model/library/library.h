@@ -13,6 +13,7 @@
 #include "model/library/librarylocation.h"
 #include "model/library/storedtable.h"
 #include "model/result.h"
+#include "model/toollife.h"
 #include "model/toolsetter.h"
 
 class QSqlDatabase;
@@ -35,7 +36,7 @@ class Library
 
 public:
     // The schema this Toffee writes. A library with a higher version is refused, never altered.
-    static constexpr int kSchemaVersion = 3;
+    static constexpr int kSchemaVersion = 4;
     // The channel a shared library's changes are announced on; the payload names the machine, the station and
     // the time (LibraryWatcher::announced).
     static constexpr QLatin1StringView kChannel { "toffee_library" };
@@ -100,8 +101,10 @@ public:
         const HistoryQuery &query, QStringList *unreadable = nullptr) const;
     static constexpr qsizetype kMaxUnreadableNamed = 20;
     [[nodiscard]] Result<QList<ToolUse>> uses(const QString &machine, std::optional<int> tool) const;
-    // Each tool's total cutting time on the machine, in seconds.
-    [[nodiscard]] Result<QHash<int, double>> cuttingTotals(const QString &machine) const;
+    // What each tool's cutter has done on the machine since it went in: the cutting time and the programs of
+    // the runs recorded after the tool's newest new cutter (all of them when it has none). One tool, or all.
+    [[nodiscard]] Result<QHash<int, UsedLife>> usedLife(
+        const QString &machine, std::optional<int> tool = std::nullopt) const;
 
     // Machine tables (librarytables.cpp). The machines that have one, by name.
     [[nodiscard]] Result<QStringList> tableMachines() const;

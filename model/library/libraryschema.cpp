@@ -53,6 +53,26 @@ const QList<QStringList> kMigrations = {
         // ToolSetter::text(), empty when not set.
         u"ALTER TABLE machines ADD COLUMN setter TEXT NOT NULL DEFAULT ''"_s,
     },
+    {
+        // A new cutter in a tool's pocket is an event ('new_cutter'): the events table is made again with the
+        // kind allowed (neither SQLite nor, in one statement both run, PostgreSQL alters a CHECK), every row
+        // copied across.
+        u"CREATE TABLE events_v4 (id TEXT PRIMARY KEY, machine TEXT NOT NULL REFERENCES machines (name), "
+        "tool INTEGER NOT NULL, measured_at TEXT NOT NULL, kind TEXT NOT NULL CHECK (kind IN ('probe', "
+        "'break_test', 'manual_set', 'restore', 'import', 'new_cutter')), tlo DOUBLE PRECISION, reference_mz "
+        "DOUBLE PRECISION, current_mz DOUBLE PRECISION, tolerance DOUBLE PRECISION, old_tlo DOUBLE "
+        "PRECISION, "
+        "new_tlo DOUBLE PRECISION, failed INTEGER CHECK (failed IN (0, 1)))"_s,
+        u"INSERT INTO events_v4 (id, machine, tool, measured_at, kind, tlo, reference_mz, current_mz, "
+        u"tolerance, "
+        "old_tlo, new_tlo, failed) SELECT id, machine, tool, measured_at, kind, tlo, reference_mz, "
+        "current_mz, "
+        "tolerance, old_tlo, new_tlo, failed FROM events"_s,
+        u"DROP TABLE events"_s,
+        u"ALTER TABLE events_v4 RENAME TO events"_s,
+        u"CREATE INDEX events_by_tool ON events (machine, tool, measured_at)"_s,
+        u"CREATE INDEX events_by_time ON events (measured_at)"_s,
+    },
 };
 
 // PostgreSQL before 14 is past its end of life; ON CONFLICT and pg_notify are older than that.

@@ -78,6 +78,10 @@ std::optional<Recording> recordingOf(const HistoryEvent &event)
         return r;
     case EventKind::Restore:
         return std::nullopt; // the table already holds what was restored
+    case EventKind::NewCutter:
+        r.kind = RecordingKind::NewCutter;
+        r.oldTlo = event.oldTlo;
+        return r;
     }
     return std::nullopt;
 }
@@ -100,18 +104,20 @@ template<typename Member> Field field(Member member)
 const QList<Field> &fields()
 {
     // A TLO goes with when and against what it was measured, and whether it was probed: one field.
-    static const QList<Field> all = { field(&Tool::pocket), field(&Tool::description),
-        field(&Tool::lengthGeometry), field(&Tool::lengthWear), field(&Tool::radiusGeometry),
-        field(&Tool::radiusWear), field(&Tool::notes), field(&Tool::linuxCncExtra),
-        field(&Tool::breakTestFailed), [](Tool &into, const Tool &from, const Tool &base) {
-            const auto tlo = [](const Tool &t) {
-                return std::tuple(t.measuredTlo, t.measuredAt, t.tloSource, t.referenceMz);
-            };
-            if (tlo(from) == tlo(base))
-                return false;
-            std::tie(into.measuredTlo, into.measuredAt, into.tloSource, into.referenceMz) = tlo(from);
-            return true;
-        } };
+    static const QList<Field> all
+        = { field(&Tool::pocket), field(&Tool::description), field(&Tool::lengthGeometry),
+              field(&Tool::lengthWear), field(&Tool::radiusGeometry), field(&Tool::radiusWear),
+              field(&Tool::notes), field(&Tool::linuxCncExtra), field(&Tool::breakTestFailed),
+              field(&Tool::cutterType), field(&Tool::overallLength), field(&Tool::lifeLimitMinutes),
+              field(&Tool::lifeLimitUses), [](Tool &into, const Tool &from, const Tool &base) {
+                  const auto tlo = [](const Tool &t) {
+                      return std::tuple(t.measuredTlo, t.measuredAt, t.tloSource, t.referenceMz);
+                  };
+                  if (tlo(from) == tlo(base))
+                      return false;
+                  std::tie(into.measuredTlo, into.measuredAt, into.tloSource, into.referenceMz) = tlo(from);
+                  return true;
+              } };
     return all;
 }
 

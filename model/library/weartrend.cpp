@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/library/weartrend.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "model/library/library.h"
@@ -11,20 +12,27 @@ namespace Toffee {
 QList<TrendPoint> WearTrend::pointsOf(
     const QList<HistoryEvent> &events, const QList<ToolUse> &uses, bool *overCuttingTime)
 {
-    const bool cutting = !uses.isEmpty();
+    // Only the cutter in the pocket now: a new cutter ends the old one's trend and its cutting time.
+    QDateTime since;
+    for (const HistoryEvent &e : events) {
+        if (e.kind == EventKind::NewCutter && (!since.isValid() || e.at > since))
+            since = e.at;
+    }
+    const bool cutting = std::any_of(
+        uses.cbegin(), uses.cend(), [&since](const ToolUse &u) { return !since.isValid() || u.at > since; });
     if (overCuttingTime)
         *overCuttingTime = cutting;
     QList<TrendPoint> out;
     QDateTime first;
     for (const HistoryEvent &e : events) {
-        if (e.kind != EventKind::Probe || !e.tlo)
+        if (e.kind != EventKind::Probe || !e.tlo || (since.isValid() && e.at <= since))
             continue;
         if (!first.isValid())
             first = e.at;
         double x = 0.0;
         if (cutting) {
             for (const ToolUse &u : uses) {
-                if (u.at <= e.at)
+                if (u.at <= e.at && (!since.isValid() || u.at > since))
                     x += u.cuttingSeconds;
             }
         } else {

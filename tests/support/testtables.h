@@ -65,6 +65,10 @@ inline ToolTable awkwardTable(Units units = Units::Millimetre)
     t2.tloSource = TloSource::Manual; // set by hand on the machine
     t2.breakTestFailed = true; // and found broken since
     t2.referenceMz = -72.3; // against the reference tool T1
+    t2.cutterType = u"flat end mill, \"2F\""_s; // as the CAM library said
+    t2.overallLength = 50.8;
+    t2.lifeLimitMinutes = 90.5;
+    t2.lifeLimitUses = 40;
     tools << t2;
     Tool t3;
     t3.number = 99999;
@@ -95,6 +99,10 @@ inline ToolTable linuxCncTable()
         tool.breakTestFailed = false;
         tool.referenceMz.reset();
         tool.notes.clear();
+        tool.cutterType.clear();
+        tool.overallLength.reset();
+        tool.lifeLimitMinutes.reset();
+        tool.lifeLimitUses.reset();
     }
     return ToolTable::fromTools(tools, Units::Millimetre).takeValue();
 }

@@ -596,10 +596,9 @@ private Q_SLOTS:
         const auto recorded = s.window.recordProgramRun(program);
         QVERIFY2(recorded, qPrintable(recorded.error().message));
         QCOMPARE(recorded.value(), 2);
-        QCOMPARE(s.cell(2, ToolTableModel::CuttingTimeColumn), u"1 min"_s); // 600 mm at 600 mm/min
-        QCOMPARE(
-            s.cell(3, ToolTableModel::CuttingTimeColumn), u"32 s"_s); // 600 mm and a 10π mm circle at 1200
-        QVERIFY(s.cell(1, ToolTableModel::CuttingTimeColumn).isEmpty());
+        QCOMPARE(s.cell(2, ToolTableModel::ToolLifeColumn), u"1 min"_s); // 600 mm at 600 mm/min
+        QCOMPARE(s.cell(3, ToolTableModel::ToolLifeColumn), u"32 s"_s); // 600 mm and a 10π mm circle at 1200
+        QVERIFY(s.cell(1, ToolTableModel::ToolLifeColumn).isEmpty());
         QCOMPARE(
             s.window.history()->library()->uses(u"Carvera"_s, 2).value().front().program, u"pocket.nc"_s);
         // A program the interpreter refuses records nothing.
@@ -609,7 +608,7 @@ private Q_SLOTS:
         const auto refused = s.window.recordProgramRun(program);
         QVERIFY(!refused);
         QVERIFY(refused.error().message.contains(u"Nothing was recorded"_s));
-        QCOMPARE(s.cell(2, ToolTableModel::CuttingTimeColumn), u"1 min"_s);
+        QCOMPARE(s.cell(2, ToolTableModel::ToolLifeColumn), u"1 min"_s);
     }
 
     void theStatusBarNeverSaysDisconnectedWhileConnected()

@@ -74,17 +74,31 @@ QList<QAbstractSeries *> measurementSeries(const HistoryChartInput &in, QList<QP
     auto *passed = markers(in.words.passed, MarkerShape::Triangle, QColor(0x26, 0xa2, 0x69), 11);
     auto *failed = markers(in.words.failed, MarkerShape::Triangle, in.alarm, 13);
     auto *manual = markers(in.words.manual, MarkerShape::Square, QColor(0x98, 0x6a, 0x44), 9);
+    auto *old = markers(in.words.oldCutter, MarkerShape::Circle, QColor(0x9a, 0x99, 0x96), 7);
+    // The probes of a cutter that a new one ended are drawn apart, and are not on the trend.
+    QDateTime cutterSince;
+    for (const HistoryEvent &e : *in.events) {
+        if (e.kind == EventKind::NewCutter && (!cutterSince.isValid() || e.at > cutterSince))
+            cutterSince = e.at;
+    }
     for (const HistoryEvent &e : *in.events) {
         const qreal t = qreal(e.at.toMSecsSinceEpoch());
         if (e.kind == EventKind::BreakTest && (e.newTlo || e.tlo))
             (e.failed.value_or(false) ? failed : passed)->append(t, e.newTlo.value_or(*e.tlo));
+        else if (e.kind == EventKind::Probe && e.tlo && cutterSince.isValid() && e.at <= cutterSince)
+            old->append(t, *e.tlo);
         else if (e.kind == EventKind::Probe && e.tlo)
             probeTimes.append({ t, *e.tlo });
         else if (e.tlo)
             manual->append(t, *e.tlo);
     }
     probes->replace(probeTimes);
-    return { probes, passed, failed, manual };
+    QList<QAbstractSeries *> out { probes, passed, failed, manual };
+    if (old->count() > 0)
+        out.append(old);
+    else
+        delete old;
+    return out;
 }
 
 // The trend at each probe's place in the tool's life, drawn at the probe's time, with ± the tolerance.
@@ -154,16 +168,24 @@ void addAxes(QChart *chart, const QList<QAbstractSeries *> &all, const HistoryCh
         x1 = x0;
         y0 = y1 = 0.0;
     }
-    const qreal hour = 3600.0 * 1000.0;
-    const qreal xPad = std::max(hour, (x1 - x0) * 0.03);
+    // The measurements fill the axis: four probes a minute apart are not lost on an axis of hours. A lone
+    // one sits in the middle of ten minutes.
+    const qreal minute = 60.0 * 1000.0;
+    const qreal hour = 60.0 * minute;
+    const qreal xPad = std::max(x1 > x0 ? minute / 2.0 : 5.0 * minute, (x1 - x0) * 0.05);
     const qreal yPad = std::max(0.05, (y1 - y0) * 0.1);
     time->setRange(
         QDateTime::fromMSecsSinceEpoch(qint64(x0 - xPad)), QDateTime::fromMSecsSinceEpoch(qint64(x1 + xPad)));
     tlo->setRange(y0 - yPad, y1 + yPad);
     tlo->applyNiceNumbers(); // ticks at round millimetres, not at the data's own edges
-    // Within a few days the dates repeat: show the times. With nothing to draw, no axes at all.
-    if (x1 + xPad - (x0 - xPad) < 3 * 24 * hour)
+    // Within a few days the dates repeat: show the times, with seconds within the hour. With nothing to
+    // draw, no axes at all.
+    const qreal span = x1 + xPad - (x0 - xPad);
+    if (span < hour)
+        time->setFormat(u"HH:mm:ss"_s);
+    else if (span < 3 * 24 * hour)
         time->setFormat(QLocale().timeFormat(QLocale::ShortFormat));
+    time->setTickCount(span < 3 * 24 * hour ? 4 : 5);
     time->setVisible(!in.events->isEmpty());
     tlo->setVisible(!in.events->isEmpty());
 }

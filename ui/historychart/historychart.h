@@ -25,6 +25,7 @@ struct HistoryChartWords
     QString passed;
     QString failed;
     QString manual;
+    QString oldCutter; // probes of a cutter a new cutter ended
     QString trend;
     QString band; // "± 0.1 mm"
     QString title; // empty: none

@@ -268,12 +268,40 @@ private Q_SLOTS:
         ToolTableModel model;
         model.resetTable(
             ToolTable::fromTools({ Test::tool(4), Test::tool(5) }, Units::Millimetre).takeValue());
-        model.setCuttingTimes({ { model.table().tools().front().number, 754.5 } });
-        QCOMPARE(model.index(0, ToolTableModel::CuttingTimeColumn).data().toString(), u"13 min"_s);
-        QCOMPARE(model.index(0, ToolTableModel::CuttingTimeColumn).data(ToolTableModel::SortRole).toDouble(),
-            754.5);
-        QVERIFY(!model.index(1, ToolTableModel::CuttingTimeColumn).data().isValid()); // none recorded
-        QVERIFY(!(model.flags(model.index(0, ToolTableModel::CuttingTimeColumn)) & Qt::ItemIsEditable));
+        model.setUsedLife({ { model.table().tools().front().number, UsedLife { 754.5, 3 } } });
+        const QModelIndex life = model.index(0, ToolTableModel::ToolLifeColumn);
+        QCOMPARE(life.data().toString(), u"13 min"_s);
+        QCOMPARE(life.data(ToolTableModel::SortRole).toDouble(), 754.5);
+        QVERIFY(!model.index(1, ToolTableModel::ToolLifeColumn).data().isValid()); // none recorded
+        QVERIFY(!life.data(Qt::ForegroundRole).isValid()); // no limit, no warning
+
+        // The limit is what is typed into the column.
+        QVERIFY(model.flags(life) & Qt::ItemIsEditable);
+        QVERIFY(model.setData(life, u"13.5 min, 10 uses"_s));
+        QCOMPARE(model.table().at(0).lifeLimitMinutes, std::optional(13.5));
+        QCOMPARE(model.table().at(0).lifeLimitUses, std::optional(10));
+        QCOMPARE(life.data(Qt::EditRole).toString(), u"13.5 min, 10 uses"_s);
+        QCOMPARE(life.data().toString(), u"13 min of 13.5 min · 3 of 10 uses"_s);
+        // 754.5 s of 810 s is 93 %: near its limit, said in orange and in words.
+        QCOMPARE(life.data(Qt::ForegroundRole).value<QColor>(), QColor(0xb0, 0x50, 0x00));
+        QVERIFY2(life.data(Qt::ToolTipRole).toString().contains(u"near its limit"_s),
+            qPrintable(life.data(Qt::ToolTipRole).toString()));
+        QVERIFY(model.setData(life, u"12 min"_s));
+        QCOMPARE(model.table().at(0).lifeLimitUses, std::nullopt);
+        QCOMPARE(life.data(Qt::ForegroundRole).value<QColor>(), QColor(0xc0, 0x1c, 0x28));
+        QVERIFY(life.data(Qt::ToolTipRole).toString().contains(u"past its limit"_s));
+        QVERIFY(model.setData(life, u"40 uses"_s));
+        QCOMPARE(life.data().toString(), u"13 min · 3 of 40 uses"_s);
+        QVERIFY(!life.data(Qt::ForegroundRole).isValid());
+        // What is no life is refused, saying what to type; the limit stays.
+        QSignalSpy rejected(&model, &ToolTableModel::editRejected);
+        for (const QString &bad : { u"soon"_s, u"-5 min"_s, u"2.5 uses"_s, u"90 h"_s, u"0 min"_s })
+            QVERIFY2(!model.setData(life, bad), qPrintable(bad));
+        QCOMPARE(rejected.size(), 5);
+        QVERIFY(rejected.constLast().at(0).toString().contains(u"\"40 uses\""_s));
+        QCOMPARE(model.table().at(0).lifeLimitUses, std::optional(40));
+        QVERIFY(model.setData(life, QString()));
+        QCOMPARE(model.table().at(0).lifeLimitUses, std::nullopt);
     }
 
     void headersAreTranslatable()

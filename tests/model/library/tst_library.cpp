@@ -208,7 +208,7 @@ private Q_SLOTS:
         library.value().reset();
         {
             RawConnection raw(path, u"raw-v3"_s);
-            QCOMPARE(raw.value(u"SELECT version FROM toffee_schema"_s).toInt(), 3);
+            QCOMPARE(raw.value(u"SELECT version FROM toffee_schema"_s).toInt(), Library::kSchemaVersion);
             QCOMPARE(raw.value(u"SELECT setter FROM machines WHERE name = 'Carvera'"_s).toString(),
                 u"12.5,-40,-120,800,50,1.5"_s);
             QVERIFY(raw.exec(u"UPDATE machines SET setter = 'over there' WHERE name = 'LongMill'"_s));
@@ -218,6 +218,50 @@ private Q_SLOTS:
         const auto garbled = library.value()->toolSetter(u"LongMill"_s);
         QVERIFY(!garbled);
         QVERIFY2(garbled.error().message.contains(u"Set it again"_s), qPrintable(garbled.error().message));
+    }
+
+    void aVersionThreeLibraryTakesNewCuttersAndKeepsEveryEvent()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        {
+            auto library = Library::open({ path });
+            QVERIFY(library.value()->append(
+                { makeEvent(3, EventKind::Probe, 0, -30.2), makeEvent(3, EventKind::BreakTest, 5, -30.2) }));
+        }
+        {
+            // As Toffee wrote it before a new cutter was an event: its CHECK refuses the kind.
+            RawConnection raw(path, u"raw-v3"_s);
+            QVERIFY(raw.exec(u"DROP TABLE events"_s));
+            QVERIFY(
+                raw.exec(u"CREATE TABLE events (id TEXT PRIMARY KEY, machine TEXT NOT NULL REFERENCES "
+                         "machines (name), tool INTEGER NOT NULL, measured_at TEXT NOT NULL, kind TEXT NOT "
+                         "NULL CHECK (kind IN ('probe', 'break_test', 'manual_set', 'restore', 'import')), "
+                         "tlo DOUBLE PRECISION, reference_mz DOUBLE PRECISION, current_mz DOUBLE "
+                         "PRECISION, tolerance DOUBLE PRECISION, old_tlo DOUBLE PRECISION, new_tlo DOUBLE "
+                         "PRECISION, failed INTEGER CHECK (failed IN (0, 1)))"_s));
+            QVERIFY(raw.exec(u"INSERT INTO events (id, machine, tool, measured_at, kind, tlo) VALUES ('a', "
+                             "'Carvera', 3, '2026-11-23T08:00:00.125Z', 'probe', -30.2)"_s));
+            QVERIFY(!raw.exec(u"INSERT INTO events (id, machine, tool, measured_at, kind) VALUES ('b', "
+                              "'Carvera', 3, '2026-11-23T09:00:00.000Z', 'new_cutter')"_s));
+            QVERIFY(raw.exec(u"UPDATE toffee_schema SET version = 3"_s));
+        }
+        auto library = Library::open({ path });
+        QVERIFY2(library, qPrintable(library ? QString() : library.error().message));
+        QCOMPARE(library.value()->history({}).value().size(), 1); // nothing lost on the way
+        HistoryEvent ended = makeEvent(3, EventKind::NewCutter, 90, 0.0);
+        ended.tlo.reset();
+        ended.oldTlo = -30.2;
+        QVERIFY(library.value()->append({ ended }));
+        const QList<HistoryEvent> events = library.value()->history({}).value();
+        QCOMPARE(events.size(), 2);
+        QCOMPARE(events.last(), ended);
+        // Program runs before the new cutter are the old cutter's life.
+        ToolUse before { HistoryEvent::newId(), u"Carvera"_s, 3, at(60), u"a.nc"_s, 600.0, 6000.0 };
+        ToolUse after { HistoryEvent::newId(), u"Carvera"_s, 3, at(120), u"b.nc"_s, 90.0, 900.0 };
+        QVERIFY(library.value()->appendUse({ before, after }));
+        QCOMPARE(library.value()->usedLife(u"Carvera"_s, 3).value().value(3), (UsedLife { 90.0, 1 }));
+        QCOMPARE(library.value()->usedLife(u"Carvera"_s).value().value(3), (UsedLife { 90.0, 1 }));
     }
 
     void refusesANewerLibraryAndLeavesItAsItIs()

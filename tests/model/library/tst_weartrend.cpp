@@ -112,6 +112,32 @@ private Q_SLOTS:
         QCOMPARE(cut.at(1).x, 1800.0); // what was cut before the probe at 48 h, not after
     }
 
+    void aNewCutterStartsTheTrendAndTheCuttingTimeAgain()
+    {
+        HistoryEvent ended = probe(30, -10.0);
+        ended.kind = EventKind::NewCutter;
+        ended.tlo.reset();
+        ended.oldTlo = -10.02;
+        const QList<HistoryEvent> events { probe(0, -10.0), probe(24, -10.02), ended, probe(40, -25.5),
+            probe(50, -25.51) };
+        const QList<ToolUse> uses { use(10, 1200), use(35, 600), use(45, 300) };
+        bool cutting = false;
+        const QList<TrendPoint> points = WearTrend::pointsOf(events, uses, &cutting);
+        // Only the new cutter's probes, and only what it cut: the old cutter's 1200 s are not its wear.
+        QVERIFY(cutting);
+        QCOMPARE(points.size(), 2);
+        QCOMPARE(points.at(0).tlo, -25.5);
+        QCOMPARE(points.at(0).x, 600.0);
+        QCOMPARE(points.at(1).x, 900.0);
+        // A new cutter's first probe, 15 mm away from the old one's, is no warning of a broken tip.
+        QTemporaryDir dir;
+        auto library = Library::open({ dir.filePath(u"l.sqlite"_s) });
+        QVERIFY(library.value()->append({ probe(0, -10.0), probe(24, -10.02), ended }));
+        const HistoryEvent first = probe(40, -25.5);
+        QVERIFY(library.value()->append({ first }));
+        QVERIFY(!checkProbeAgainstTrend(*library.value(), first, 0.05));
+    }
+
     void checksANewProbeAgainstTheLibrarysHistory()
     {
         QTemporaryDir dir;
