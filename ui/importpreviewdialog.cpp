@@ -62,11 +62,16 @@ ImportPreviewDialog::ImportPreviewDialog(
     m_summary->setWordWrap(true);
     m_summary->setTextFormat(Qt::PlainText);
     const QString counts = tr("%1 (%2): %3.").arg(source, formatName, preview.summary());
-    m_summary->setText(preview.changesAnything()
-            ? counts + u' '
+    m_summary->setText(!preview.changesAnything()
+            ? counts + u' ' + tr("The table already has these tools as the library describes them.")
+            : preview.newCutters().isEmpty() ? counts + u' '
                 + tr("Only descriptions, radii and the CAM's line in the notes change; measured TLOs, wear, "
                      "pockets and your notes stay as they are.")
-            : counts + u' ' + tr("The table already has these tools as the library describes them."));
+                                             : counts + u' '
+                + tr("Only descriptions, radii and the CAM's line in the notes change, except where the "
+                     "library "
+                     "describes another cutter: that tool's TLO, wear and break mark end (the history keeps "
+                     "them) and it is measured before it cuts. Pockets and your notes stay as they are."));
     m_tools->setObjectName(u"importToolList"_s);
     m_tools->setAccessibleName(tr("Tools in the library"));
     m_tools->setRootIsDecorated(false);

@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QStatusBar>
 
 #include "model/camimport/camlibrary.h"
@@ -193,7 +194,37 @@ bool MainWindow::importFile(const QString &path)
 bool MainWindow::importCamLibrary(const QString &path)
 {
     auto library = loadCamLibrary(path);
-    auto preview = library ? ImportPreview::build(m_document->table(), library.value())
+    // Tools that give no unit: the operator says which, or nothing is imported; never a guess.
+    std::optional<Units> assumed;
+    if (library) {
+        if (const QList<int> without = ImportPreview::toolsWithoutUnit(library.value()); !without.isEmpty()) {
+            QStringList names;
+            for (int n : without.first(std::min<qsizetype>(without.size(), 10)))
+                names << u"T"_s + QString::number(n);
+            if (without.size() > 10)
+                names << u"…"_s;
+            QMessageBox box(QMessageBox::Question, tr("Which unit?"),
+                tr("%1 in %2 give no unit (Fusion writes \"unit\" on every tool). Their diameters and "
+                   "lengths "
+                   "are read in the unit you choose; the preview shows each of them before anything changes.")
+                    .arg(names.join(u", "_s), QFileInfo(path).fileName()),
+                QMessageBox::Cancel, this);
+            box.setObjectName(u"camUnitsBox"_s);
+            QPushButton *mm = box.addButton(tr("Millimetres"), QMessageBox::AcceptRole);
+            mm->setObjectName(u"camUnitsMillimetres"_s);
+            QPushButton *in = box.addButton(tr("Inches"), QMessageBox::AcceptRole);
+            in->setObjectName(u"camUnitsInches"_s);
+            box.setDefaultButton(QMessageBox::Cancel);
+            box.exec();
+            if (box.clickedButton() == mm)
+                assumed = Units::Millimetre;
+            else if (box.clickedButton() == in)
+                assumed = Units::Inch;
+            else
+                return false;
+        }
+    }
+    auto preview = library ? ImportPreview::build(m_document->table(), library.value(), assumed)
                            : Result<ImportPreview>(library.error());
     if (!preview) {
         showError(tr("Cannot import"), preview.error().text() + u"\n\n"_s + tr("Nothing was imported."));

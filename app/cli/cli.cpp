@@ -25,12 +25,13 @@ Tool tables:
   simulate --dialect D PROGRAM [--table FILE] [--samples N]
                              run PROGRAM as controller D would: where each move ends, and the offsets after
   dialects: carvera, fanuc, fagor, ab9, aerotech, linuxcnc
-  import SOURCE --into TABLE [--dry-run]
+  import SOURCE --into TABLE [--dry-run] [--cam-units mm|in]
                              tools from a CAM library (Fusion .json or .tools, .hsmlib, or a program with
                              Makera CAM's tool header) into TABLE, created (in --units, default mm) when
                              missing: what is new, what changes and how, what is unchanged; measured TLOs,
                              wear and notes are kept, inch libraries converted; a tool whose cutter is
-                             another (type, diameter, overall length) gets a new cutter, as new-cutter
+                             another (type, diameter, overall length) gets a new cutter, as new-cutter;
+                             --cam-units: the unit of the library's tools that give none
 
 The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator) [--protocol P] [--table FILE]
                  COMMAND
@@ -134,7 +135,7 @@ const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"version"_s, u"emula
     u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s };
 
 // toffee-cli import's own options.
-const QSet<QString> kImportValueOptions = { u"into"_s };
+const QSet<QString> kImportValueOptions = { u"into"_s, u"cam-units"_s };
 const QSet<QString> kImportFlagOptions = { u"dry-run"_s };
 
 int usageError(Invocation &call, const QString &message)

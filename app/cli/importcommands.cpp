@@ -154,7 +154,13 @@ int importTools(Invocation &call)
     auto table = isNew ? Result<ToolTable>(ToolTable(*units)) : loadTableFile(tablePath, {}, *units);
     if (!table)
         return fail(call, table.error().text(), BadInput);
-    auto preview = ImportPreview::build(table.value(), library.value());
+    std::optional<Units> assumed;
+    if (call.has(u"cam-units"_s)) {
+        assumed = unitsFromSymbol(call.option(u"cam-units"_s));
+        if (!assumed)
+            return fail(call, u"--cam-units must be mm or in."_s, BadInput);
+    }
+    auto preview = ImportPreview::build(table.value(), library.value(), assumed);
     if (!preview)
         return fail(call, preview.error().text(), BadInput);
 

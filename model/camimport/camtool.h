@@ -18,6 +18,9 @@ struct CamTool
     QString description; // one line; empty when the library gives none (the import then names a new tool)
     QString type; // "flat end mill", "drill", …
     Units units = Units::Millimetre;
+    // False when the library gives no unit (a Fusion tool without "unit"): its numbers are read in units the
+    // operator says (ImportPreview::build's `assumed`), never guessed.
+    bool unitGiven = true;
     std::optional<double> diameter; // absent: the library says nothing about the radius
     std::optional<double> fluteLength;
     std::optional<double> stickOut; // below the holder (Fusion LB, Makera sticklength)

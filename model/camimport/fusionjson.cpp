@@ -265,10 +265,11 @@ private:
             m_tool.units = Units::Inch;
         else if (const auto units = unitsFromSymbol(unit))
             m_tool.units = *units;
+        else if (unit.isEmpty())
+            m_tool.unitGiven
+                = false; // the import asks which; the lengths are checked as millimetres meanwhile
         else
-            failed(unit.isEmpty()
-                    ? tr("it has no \"unit\" (millimeters or inches).")
-                    : tr("its \"unit\" is \"%1\"; Toffee reads millimeters or inches.").arg(excerpt(unit)));
+            failed(tr("its \"unit\" is \"%1\"; Toffee reads millimeters or inches.").arg(excerpt(unit)));
     }
 
     CamTool m_tool;

@@ -102,11 +102,6 @@ QStringList changes(const Tool &before, const Tool &after, Units units)
         fields << (wasLine.isEmpty()
                 ? ImportPreview::tr("CAM lengths added to the notes (%1)").arg(isLine)
                 : ImportPreview::tr("CAM lengths in the notes: %1 → %2").arg(wasLine, isLine));
-    if (before.cutterType.isEmpty() && !after.cutterType.isEmpty())
-        fields << ImportPreview::tr("cutter type “%1” kept").arg(after.cutterType);
-    if (!before.overallLength && after.overallLength)
-        fields << ImportPreview::tr("overall length %1 %2 kept")
-                      .arg(displayNumber(*after.overallLength, units), unitsSymbol(units));
     return fields;
 }
 
@@ -215,8 +210,34 @@ Tool mergedTool(const CamTool &cam, const Tool *existing, Units units, int pocke
 
 } // namespace
 
-Result<ImportPreview> ImportPreview::build(const ToolTable &current, const CamLibrary &library)
+QList<int> ImportPreview::toolsWithoutUnit(const CamLibrary &library)
 {
+    QList<int> out;
+    for (const CamTool &cam : library.tools) {
+        if (!cam.unitGiven)
+            out << cam.number;
+    }
+    return out;
+}
+
+Result<ImportPreview> ImportPreview::build(
+    const ToolTable &current, const CamLibrary &library, std::optional<Units> assumed)
+{
+    if (const QList<int> without = toolsWithoutUnit(library); !without.isEmpty() && !assumed) {
+        QStringList names;
+        for (int n : without.first(std::min<qsizetype>(without.size(), 10)))
+            names << u"T"_s + QString::number(n);
+        if (without.size() > 10)
+            names << u"…"_s;
+        return Error {
+            tr("%1 in this library give no \"unit\" (millimeters or inches), so their diameters and "
+               "lengths cannot be read. Fusion writes one on every tool: export the library from "
+               "Fusion again, or add \"unit\": \"millimeters\" (or \"inches\") to each of them, or "
+               "say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).")
+                .arg(names.join(u", "_s)),
+            0, library.path
+        };
+    }
     ImportPreview preview;
     const Units units = current.units();
     // The table's tools, replaced in place or added after, and sorted once at the end: a library of a hundred
@@ -225,7 +246,9 @@ Result<ImportPreview> ImportPreview::build(const ToolTable &current, const CamLi
     QSet<int> seen;
     const QHash<int, int> pockets = newPockets(current, library.tools);
     preview.m_tools.reserve(library.tools.size());
-    for (const CamTool &cam : library.tools) {
+    for (CamTool cam : library.tools) {
+        if (!cam.unitGiven)
+            cam.units = *assumed;
         auto refuse = [&cam, &library](const QString &message) {
             return Error { cam.place.isEmpty() ? message : cam.place + u": "_s + message, cam.line,
                 library.path };
@@ -259,6 +282,9 @@ Result<ImportPreview> ImportPreview::build(const ToolTable &current, const CamLi
         if (!existing)
             item.notes << tr("pocket %1; no tool length yet (0 in the table): measure it before use")
                               .arg(tool.pocket);
+        if (!cam.unitGiven)
+            item.notes << tr("the library gives no unit: its lengths are read in %1, as you said")
+                              .arg(cam.units == Units::Inch ? tr("inches") : tr("millimetres"));
         if (cam.lengthOffset && *cam.lengthOffset != cam.number)
             item.notes << tr("the library gives length offset H%1; Toffee always uses H = T (H%2), so it is "
                              "not imported")
@@ -266,7 +292,14 @@ Result<ImportPreview> ImportPreview::build(const ToolTable &current, const CamLi
                               .arg(cam.number);
         if (existing) {
             item.fields = changes(*existing, tool, units);
-            item.change = *existing == tool ? ImportChange::Unchanged : ImportChange::Changed;
+            // The cutter's type and overall length, taken the first time, are the CAM's own facts kept for
+            // the next import: not a change the operator needs to look at.
+            Tool seen = tool;
+            if (existing->cutterType.isEmpty())
+                seen.cutterType.clear();
+            if (!existing->overallLength)
+                seen.overallLength.reset();
+            item.change = *existing == seen ? ImportChange::Unchanged : ImportChange::Changed;
             if (item.change == ImportChange::Changed && item.fields.isEmpty())
                 item.fields << tr("the CAM lengths line in the notes");
             tools[at] = tool;

@@ -44,7 +44,12 @@ class ImportPreview
 public:
     // Converts the library's units into the table's; refuses the whole library when one tool would not be a
     // valid tool of the table, naming it.
-    [[nodiscard]] static Result<ImportPreview> build(const ToolTable &current, const CamLibrary &library);
+    // A library's tools that give no unit are read in `assumed`, the operator's answer; without one they are
+    // refused by name, with what the file needs.
+    [[nodiscard]] static Result<ImportPreview> build(
+        const ToolTable &current, const CamLibrary &library, std::optional<Units> assumed = std::nullopt);
+    // The numbers of the library's tools that give no unit.
+    [[nodiscard]] static QList<int> toolsWithoutUnit(const CamLibrary &library);
 
     [[nodiscard]] const QList<ImportedTool> &tools() const { return m_tools; }
     [[nodiscard]] const ToolTable &merged() const { return m_merged; }

@@ -73,7 +73,7 @@ private Q_SLOTS:
         const QString table = dir.filePath(u"tools.json"_s);
         QVERIFY(saveTableFile(table, measuredTable(), TableFormat::Json).ok());
         QVERIFY(Test::writeFile(source,
-            Test::hsmLibrary(Test::hsmTool(1, u"diameter=\"8\""_s, u"millimeters"_s, u"6 mm flat"_s)
+            Test::hsmLibrary(Test::hsmTool(1, u"diameter=\"6\""_s, u"millimeters"_s, u"6 mm flat, 3 flutes"_s)
                 + Test::hsmTool(5, u"diameter=\"2\""_s, u"millimeters"_s, u"Flat 5"_s) + Test::hsmTool(9))));
 
         const QByteArray before = Test::readFile(table);
@@ -86,16 +86,19 @@ private Q_SLOTS:
         const QJsonArray changed = preview.value(u"changed"_s).toArray();
         QCOMPARE(changed.size(), 1);
         QCOMPARE(changed.at(0)[u"number"_s].toInt(), 1);
-        QCOMPARE(changed.at(0)[u"fields"_s].toArray(), QJsonArray { u"radius 3.000 → 4.000 mm"_s });
+        QCOMPARE(changed.at(0)[u"fields"_s].toArray(),
+            QJsonArray { u"description “6 mm flat” → “6 mm flat, 3 flutes”"_s });
+        QCOMPARE(preview.value(u"new_cutters"_s).toArray(), QJsonArray()); // the same 6 mm cutter
         QCOMPARE(preview.value(u"written"_s).toBool(), false);
 
         run = cli({ u"import"_s, source, u"--into"_s, table });
         QVERIFY2(run.exitCode == 0, run.err.constData());
-        QVERIFY2(run.out.contains("radius 3.000 → 4.000 mm"), run.out.constData());
+        QVERIFY2(run.out.contains("description “6 mm flat” → “6 mm flat, 3 flutes”"), run.out.constData());
         const auto after = loadTableFile(table);
         QVERIFY(after.ok());
         const Tool &t1 = *after.value().find(1);
-        QCOMPARE(t1.radiusGeometry, 4.0);
+        QCOMPARE(t1.radiusGeometry, 3.0);
+        QCOMPARE(t1.description, u"6 mm flat, 3 flutes"_s);
         QCOMPARE(t1.measuredTlo, -33.388);
         QCOMPARE(t1.measuredAt, measuredTable().find(1)->measuredAt);
         QCOMPARE(t1.referenceMz, -101.5);

@@ -174,6 +174,36 @@ private Q_SLOTS:
         QCOMPARE(events(library, 3).size(), 2);
     }
 
+    void aFusionToolWithoutUnitIsPreviewedInTheUnitTheOperatorSays()
+    {
+        QTemporaryDir dir;
+        const QString table = dir.filePath(u"shop.json"_s);
+        const QString source = dir.filePath(u"library.json"_s);
+        QVERIFY(saveTableFile(table, shopTable(), TableFormat::Json).ok());
+        const QByteArray noUnit = QByteArray(
+            Test::fusionTool(8, "1/4 in flat", "millimeters", R"("DC": 0.25, "OAL": 2.5, "LCF": 1)"))
+                                      .replace(R"("unit": "millimeters",)", "");
+        QVERIFY(Test::writeFile(source, Test::fusionLibrary({ noUnit })));
+        const QByteArray before = Test::readFile(table);
+        // Without an answer: what the file needs and how to go on, nothing written.
+        Run run = cli({ u"import"_s, source, u"--into"_s, table });
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains("T8 in this library give no \"unit\""), run.err.constData());
+        QVERIFY(run.err.contains("--cam-units mm|in"));
+        QCOMPARE(Test::readFile(table), before);
+        // With one: the preview first (a dry run), the tool read in inches, and said so.
+        run = cli({ u"import"_s, source, u"--into"_s, table, u"--cam-units"_s, u"in"_s, u"--dry-run"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QVERIFY2(
+            run.out.contains("note: the library gives no unit: its lengths are read in inches, as you said"),
+            run.out.constData());
+        QCOMPARE(Test::readFile(table), before);
+        run = cli({ u"import"_s, source, u"--into"_s, table, u"--cam-units"_s, u"in"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QCOMPARE(loadTableFile(table).value().find(8)->radiusGeometry, 3.175); // 1/4 in across, in a mm table
+        QCOMPARE(cli({ u"import"_s, source, u"--into"_s, table, u"--cam-units"_s, u"cm"_s }).exitCode, 2);
+    }
+
     void toolLifeCountsTheCuttersRunsAndANewCutterStartsItAgain()
     {
         QTemporaryDir dir;

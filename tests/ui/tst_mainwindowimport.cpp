@@ -120,15 +120,20 @@ private Q_SLOTS:
         answerPreview(u"importButton"_s, &rows);
         QVERIFY(window.importFile(path));
         QCOMPARE(rows,
-            (QStringList { u"T2 Changed radius 3.000 → 4.000 mm"_s, u"T3 Unchanged "_s,
+            (QStringList {
+                u"T2 Changed radius 3.000 → 4.000 mm\na new cutter (diameter 6.000 → 8.000 mm): the old "
+                u"cutter's TLO 9.652 mm, its wear and break mark end; measure it before it cuts"_s,
+                u"T3 Unchanged "_s,
                 u"T12 New pocket 12; no tool length yet (0 in the table): measure it before use"_s }));
         QCOMPARE(view->model()->rowCount(), 7);
         QCOMPARE(shown(view, 2, ToolTableModel::RadiusGeometryColumn), u"4.000"_s);
-        QCOMPARE(shown(view, 2, ToolTableModel::MeasuredTloColumn), u"9.652"_s);
+        // T2 is now an 8 mm cutter: the 6 mm cutter's TLO is not its own.
+        QCOMPARE(shown(view, 2, ToolTableModel::MeasuredTloColumn), u"not measured"_s);
         QCOMPARE(shown(view, 12, ToolTableModel::DescriptionColumn), u"10 mm roughing"_s);
         QCOMPARE(shown(view, 12, ToolTableModel::LengthGeometryColumn), u"0.000"_s);
-        QCOMPARE(*window.document()->table().find(2)->measuredTlo, 9.652);
-        QVERIFY2(window.statusBar()->currentMessage().contains(u"1 new, 1 changed, 1 unchanged"_s),
+        QCOMPARE(window.document()->table().find(2)->measuredTlo, std::nullopt);
+        QVERIFY2(window.statusBar()->currentMessage().contains(
+                     u"1 new, 1 changed, 1 unchanged; a new cutter in 1 (measure before use)"_s),
             qPrintable(window.statusBar()->currentMessage()));
 
         auto *undo = window.findChild<QAction *>(u"actionUndo"_s);

@@ -10,6 +10,7 @@
 #include <QTest>
 
 #include "model/camimport/camreaders.h"
+#include "model/camimport/importpreview.h"
 #include "tests/support/camfiles.h"
 
 using namespace Toffee;
@@ -93,6 +94,32 @@ private Q_SLOTS:
         QCOMPARE(t7.stickOut, std::nullopt);
     }
 
+    void aToolWithoutUnitIsReadAndItsUnitAskedForNeverGuessed()
+    {
+        const QByteArray noUnit
+            = QByteArray(Test::fusionTool(3, "6 mm flat")).replace(R"("unit": "millimeters",)", "");
+        const auto read = readFusionJson(Test::fusionLibrary({ Test::fusionTool(1), noUnit }));
+        QVERIFY2(read, qPrintable(read ? QString() : read.error().text()));
+        QVERIFY(read.value().at(0).unitGiven);
+        QVERIFY(!read.value().at(1).unitGiven);
+        CamLibrary library { u"lib.json"_s, CamFormat::FusionJson, read.value() };
+        QCOMPARE(ImportPreview::toolsWithoutUnit(library), QList<int> { 3 });
+        // Without an answer: refused by name, saying what the file needs and how to go on.
+        const auto refused = ImportPreview::build(ToolTable(), library);
+        QVERIFY(!refused);
+        QVERIFY2(refused.error().message.startsWith(u"T3 in this library give no \"unit\""_s),
+            qPrintable(refused.error().message));
+        QVERIFY(refused.error().message.contains(u"add \"unit\": \"millimeters\""_s));
+        QVERIFY(refused.error().message.contains(u"--cam-units mm|in"_s));
+        // In inches, as the operator said: 6 in across, a 3 in radius in an inch table, with a note.
+        const auto inches = ImportPreview::build(ToolTable(Units::Inch), library, Units::Inch);
+        QVERIFY(inches);
+        QCOMPARE(inches.value().merged().find(3)->radiusGeometry, 3.0);
+        QCOMPARE(inches.value().merged().find(1)->radiusGeometry, 0.11811); // T1 gives millimetres: converted
+        QVERIFY(inches.value().tools().at(1).notes.contains(
+            u"the library gives no unit: its lengths are read in inches, as you said"_s));
+    }
+
     void aToolWithoutDescriptionHasNone()
     {
         // The import names a new tool by its type and size, and keeps an existing tool's description.
@@ -165,9 +192,6 @@ private Q_SLOTS:
         QTest::newRow("repeated number") << Test::fusionLibrary({ good, Test::fusionTool(2), good }) << 0
                                          << u"tool 3 in \"data\" (T1): number 1 is taken already (tool 1 in "
                                             u"\"data\")"_s;
-        QTest::newRow("no unit") << Test::fusionLibrary(
-            { QByteArray(good).replace(R"("unit": "millimeters",)", "") })
-                                 << 0 << u"no \"unit\""_s;
         QTest::newRow("unknown unit") << Test::fusionLibrary({ Test::fusionTool(1, "x", "furlongs") }) << 0
                                       << u"\"unit\" is \"furlongs\""_s;
         QTest::newRow("geometry is a number") << Test::fusionLibrary(

@@ -77,8 +77,18 @@ private Q_SLOTS:
         QCOMPARE(p.tools().at(0).change, ImportChange::Unchanged);
         QCOMPARE(p.tools().at(1).change, ImportChange::Changed);
         QCOMPARE(p.tools().at(1).fields, QStringList { u"radius 1.000 → 3.000 mm"_s });
+        // T2 was a 2 mm cutter and the library's is 6 mm: another cutter, whose TLO is not the old one's.
+        QVERIFY(p.tools().at(1).newCutter);
+        QCOMPARE(p.tools().at(1).endedTlo, std::optional(-33.388));
+        QVERIFY(
+            p.tools().at(1).notes.contains(u"a new cutter (diameter 2.000 → 6.000 mm): the old cutter's TLO "
+                                           "-33.388 mm, its wear and break mark end; measure it before it "
+                                           "cuts"_s));
+        QCOMPARE(p.merged().find(2)->measuredTlo, std::nullopt);
+        QVERIFY(!p.merged().find(2)->breakTestFailed);
+        QVERIFY(!p.tools().at(0).newCutter);
         QCOMPARE(p.tools().at(2).change, ImportChange::New);
-        QCOMPARE(p.summary(), u"1 new, 1 changed, 1 unchanged"_s);
+        QCOMPARE(p.summary(), u"1 new, 1 changed, 1 unchanged; a new cutter in 1 (measure before use)"_s);
         QVERIFY(p.changesAnything());
         QCOMPARE(p.merged().size(), 3);
         const Tool *added = p.merged().find(30);
@@ -92,7 +102,8 @@ private Q_SLOTS:
 
     void keepsEverythingTheMachineAndTheOperatorGaveATool()
     {
-        const Tool before = measuredTool(2);
+        Tool before = measuredTool(2);
+        before.radiusGeometry = 3.0; // the library's cutter: 6 mm across
         auto table = ToolTable::fromTools({ before }, Units::Millimetre);
         CamTool cam = camTool(2, 6.0, Units::Millimetre, u"6 mm flat, 3 flutes"_s);
         cam.fluteLength = 20;
@@ -114,8 +125,10 @@ private Q_SLOTS:
         QCOMPARE(after.notes,
             u"reground twice\nkeep for aluminium\nFrom CAM: flute length 20 mm, overall length 50 mm"_s);
         QCOMPARE(p.tools().front().fields,
-            (QStringList { u"description “Flat 2” → “6 mm flat, 3 flutes”"_s, u"radius 1.000 → 3.000 mm"_s,
+            (QStringList { u"description “Flat 2” → “6 mm flat, 3 flutes”"_s,
                 u"CAM lengths added to the notes (flute length 20 mm, overall length 50 mm)"_s }));
+        QCOMPARE(after.overallLength, std::optional(50.0)); // for the next import to compare
+        QVERIFY(!p.tools().front().newCutter);
 
         // Imported again with other lengths: the CAM's line is replaced, the operator's lines stay.
         cam.fluteLength = 22;
@@ -219,6 +232,7 @@ private Q_SLOTS:
         QCOMPARE(p.merged().find(2)->description, u"the good drill"_s);
         QCOMPARE(p.tools().at(0).description, u"the good drill"_s);
         QCOMPARE(p.tools().at(0).fields, QStringList { u"radius 1.000 → 1.500 mm"_s });
+        QCOMPARE(p.merged().find(2)->cutterType, u"drill"_s);
         // Only a new tool is named by the library's type and size.
         QCOMPARE(p.merged().find(4)->description, u"drill, 3 mm"_s);
     }
