@@ -237,9 +237,14 @@ void AppSettings::setJobDialect(const QString &key)
 
 std::optional<double> AppSettings::jobZFloor() const
 {
+    // On until the operator turns it off: a feed below the stock is the crash the check exists for.
+    if (!m_settings.contains(Key::JobZFloor))
+        return kDefaultJobZFloor;
+    if (m_settings.value(Key::JobZFloor).toString() == u"off"_s)
+        return std::nullopt;
     bool ok = false;
     const double z = m_settings.value(Key::JobZFloor).toDouble(&ok);
-    return ok && std::isfinite(z) ? std::optional(z) : std::nullopt;
+    return ok && std::isfinite(z) ? std::optional(z) : kDefaultJobZFloor;
 }
 
 void AppSettings::setJobZFloor(std::optional<double> z)
@@ -247,7 +252,7 @@ void AppSettings::setJobZFloor(std::optional<double> z)
     if (z)
         m_settings.setValue(Key::JobZFloor, *z);
     else
-        m_settings.remove(Key::JobZFloor);
+        m_settings.setValue(Key::JobZFloor, u"off"_s);
 }
 
 QString AppSettings::jobRack() const

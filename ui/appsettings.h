@@ -65,6 +65,9 @@ public:
     [[nodiscard]] QString jobDialect() const;
     void setJobDialect(const QString &key);
     [[nodiscard]] std::optional<double> jobZFloor() const;
+    // The floor until one is chosen: on, 20 mm below work Z0 (deeper than the stock of most jobs on a desktop
+    // machine); turned off, it stays off.
+    static constexpr double kDefaultJobZFloor = -20.0;
     void setJobZFloor(std::optional<double> z);
     // The Carvera's rack, as written in the dialog ("1-6", "none").
     [[nodiscard]] QString jobRack() const;

@@ -187,6 +187,7 @@ void TloPanel::showHalt()
     const bool halted = m_connection->isHalted();
     const auto status = m_connection->link() ? m_connection->link()->lastStatus() : std::nullopt;
     QString state = halted ? tr("HALTED") : status ? machineStateName(status->state) : tr("Connected");
+    m_lastStateText = state;
     m_state->setText(state);
     // Style sheets, not palettes: a toolbar's style repaints its widgets with its own palette.
     const QString red = alarmColor(palette()).name();
@@ -288,10 +289,21 @@ void TloPanel::checkStale()
     if (m_connection->state() != MachineConnection::State::Connected)
         return;
     const bool stale = m_connection->isStatusStale();
-    if (stale && !m_stale)
-        m_state->setText(tr("%1 (stale: no status report)").arg(m_state->text()));
+    const bool halted = m_connection->isHalted();
+    if (stale) {
+        // How long, in whole seconds, redrawn as it grows. A halt is what the machine last said and what it
+        // stays in until unlocked: it is shown as known, not greyed as if the link were gone.
+        const qint64 age = m_connection->link() ? m_connection->link()->statusAgeMs() : -1;
+        const QString since = age < 0 ? tr("no status report yet")
+                                      : tr("no status report for %1 s").arg(std::max<qint64>(1, age / 1000));
+        m_state->setText(halted ? tr("HALTED (%1; it stays halted until unlocked)").arg(since)
+                                : tr("%1 (stale: %2)").arg(m_lastStateText, since));
+    } else if (m_stale) {
+        showHalt();
+    }
     m_stale = stale;
-    for (QLabel *l : { m_state, m_tool, m_reference, m_current, m_tlo, m_tloNote })
+    m_state->setEnabled(!stale || halted);
+    for (QLabel *l : { m_tool, m_reference, m_current, m_tlo, m_tloNote })
         l->setEnabled(!stale);
 }
 

@@ -58,6 +58,7 @@ private:
     QLabel *m_halt;
     QPushButton *m_unlock;
     QTimer m_staleTimer;
+    QString m_lastStateText; // the state as the last report said it, before any note of its age
     bool m_stale = true;
     std::optional<int> m_activeTool;
     std::optional<double> m_machineTlo;

@@ -100,6 +100,14 @@ private Q_SLOTS:
         QCOMPARE(window.findChild<QAction *>(u"actionCheckJob"_s)->shortcut(), QKeySequence(u"Ctrl+J"_s));
         JobCheckDialog *dialog = window.openJobCheck(write(m_dir, u"pocket.nc"_s, kProgram));
         QVERIFY(waitForCheck(dialog));
+        // The floor is on from the first check, 20 mm below work Z0: T9's plunge to Z-22 is below it. Off, it
+        // is checked again without it (and stays off: remembered).
+        auto *floorCheck = dialog->findChild<QCheckBox *>(u"jobFloorCheck"_s);
+        QVERIFY(floorCheck->isChecked());
+        QCOMPARE(dialog->findChild<QDoubleSpinBox *>(u"jobFloorSpin"_s)->value(), -20.0);
+        QCOMPARE(dialog->report()->errors(), 2);
+        floorCheck->setChecked(false);
+        QVERIFY(waitForCheck(dialog));
         auto *tools = dialog->findChild<QTableView *>(u"jobToolsView"_s)->model();
         QCOMPARE(column(tools, JobToolsModel::NumberColumn), u"T2|T3|T9"_s);
         QCOMPARE(column(tools, JobToolsModel::LoadedColumn), u"3|9|11"_s);

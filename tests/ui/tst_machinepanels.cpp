@@ -302,6 +302,33 @@ private Q_SLOTS:
         f.window.connection()->disconnectFromMachine();
         QCOMPARE(state->text(), u"Not connected"_s);
     }
+
+    // A halted machine whose reports stop is still shown as halted, in red and not greyed as a dead link,
+    // with how long it has been silent (issue 30, item 6).
+    void aHaltedMachineThatGoesQuietIsStillShownHalted()
+    {
+        Fixture f;
+        auto *state = f.find<QLabel>(u"machineStateLabel"_s);
+        QTRY_COMPARE(state->text(), u"Idle"_s);
+        f.window.connection()->emulator()->halt(1);
+        f.window.connection()->link()->sendRealtime('?');
+        QTRY_VERIFY(f.window.connection()->isHalted() || state->text().startsWith(u"Alarm"_s));
+        // The firmware says it is halted as a reply to a command: send one, as the operator's console would.
+        if (!f.window.connection()->isHalted()) {
+            f.window.connection()->link()->send("G0 X1", 2000, [](const CommandReply &) {});
+            QTRY_VERIFY(f.window.connection()->isHalted());
+        }
+        QTRY_VERIFY(state->text().startsWith(u"HALTED"_s));
+        f.window.connection()->link()->setPollInterval(0);
+        QTRY_VERIFY_WITH_TIMEOUT(state->text().contains(u"no status report for"_s), 5000);
+        QVERIFY2(state->text().startsWith(u"HALTED (no status report for "_s)
+                && state->text().endsWith(u"s; it stays halted until unlocked)"_s),
+            qPrintable(state->text()));
+        QVERIFY(!state->text().contains(u"stale"_s));
+        QVERIFY(state->isEnabled());
+        f.window.connection()->link()->setPollInterval(200);
+        QTRY_COMPARE(state->text(), u"HALTED"_s);
+    }
 };
 
 QTEST_MAIN(TestMachinePanels)
