@@ -842,6 +842,34 @@
         <source>Unlock, home the machine, then try again.</source>
         <translation>Entsperren, die Maschine referenzieren, dann erneut versuchen.</translation>
     </message>
+    <message>
+        <source>the cutter type is %1 characters long; keep it to %2.</source>
+        <translation>der Fräsertyp ist %1 Zeichen lang; höchstens %2 sind erlaubt.</translation>
+    </message>
+    <message>
+        <source>overall length</source>
+        <translation>Gesamtlänge</translation>
+    </message>
+    <message>
+        <source>the overall length cannot be negative.</source>
+        <translation>die Gesamtlänge kann nicht negativ sein.</translation>
+    </message>
+    <message>
+        <source>a life limit in minutes must be more than 0 and at most %1; leave it empty for none.</source>
+        <translation>eine Standzeit in Minuten muss größer als 0 und höchstens %1 sein; leer lassen für keine.</translation>
+    </message>
+    <message>
+        <source>a life limit in uses must be a whole number from 1 to %1; leave it empty for none.</source>
+        <translation>eine Standzeit in Einsätzen muss eine ganze Zahl von 1 bis %1 sein; leer lassen für keine.</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for tool life limits: they are not saved.</source>
+        <translation>Eine LinuxCNC-Tabelle hat keinen Platz für Standzeiten: Sie werden nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for the cutter&apos;s type and overall length: they are not saved, and an import can then tell a new cutter only by its diameter.</source>
+        <translation>Eine LinuxCNC-Tabelle hat keinen Platz für Typ und Gesamtlänge des Fräsers: Sie werden nicht gespeichert, und ein Import erkennt einen neuen Fräser dann nur an seinem Durchmesser.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::About</name>
@@ -1597,10 +1625,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>seine „number“ %1 liegt außerhalb des Bereichs; verwenden Sie %2 bis %3.</translation>
     </message>
     <message>
-        <source>it has no &quot;unit&quot; (millimeters or inches).</source>
-        <translation>es hat keine „unit“ (millimeters oder inches).</translation>
-    </message>
-    <message>
         <source>its &quot;unit&quot; is &quot;%1&quot;; Toffee reads millimeters or inches.</source>
         <translation>seine „unit“ ist „%1“; Toffee liest millimeters oder inches.</translation>
     </message>
@@ -2307,6 +2331,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>read in</source>
         <translation>eingelesen</translation>
     </message>
+    <message>
+        <source>new cutter (old one ended)</source>
+        <translation>neuer Fräser (alter beendet)</translation>
+    </message>
+    <message>
+        <source>Old cutter</source>
+        <translation>Alter Fräser</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryRecorder</name>
@@ -2376,6 +2408,18 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Library file or URL:</source>
         <translation>Bibliotheksdatei oder URL:</translation>
+    </message>
+    <message>
+        <source>This station&apos;s name</source>
+        <translation>Name dieses Arbeitsplatzes</translation>
+    </message>
+    <message>
+        <source>Who this computer&apos;s changes are from in a shared library, as the other stations see it; empty: the computer&apos;s name.</source>
+        <translation>Von wem die Änderungen dieses Computers in einer gemeinsamen Bibliothek stammen, wie die anderen Arbeitsplätze es sehen; leer: der Name des Computers.</translation>
+    </message>
+    <message>
+        <source>This station&apos;s name:</source>
+        <translation>Name dieses Arbeitsplatzes:</translation>
     </message>
 </context>
 <context>
@@ -2471,6 +2515,46 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>%1 new, %2 changed, %3 unchanged</source>
         <translation>%1 neu, %2 geändert, %3 unverändert</translation>
     </message>
+    <message>
+        <source>type “%1” → “%2”</source>
+        <translation>Typ „%1“ → „%2“</translation>
+    </message>
+    <message>
+        <source>diameter %1 → %2 %3</source>
+        <translation>Durchmesser %1 → %2 %3</translation>
+    </message>
+    <message>
+        <source>overall length %1 → %2 %3</source>
+        <translation>Gesamtlänge %1 → %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 in this library give no &quot;unit&quot; (millimeters or inches), so their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each of them, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
+        <translation>%1 in dieser Bibliothek geben keine „unit“ (millimeters oder inches) an, daher lassen sich ihre Durchmesser und Längen nicht lesen. Fusion schreibt sie an jedes Werkzeug: Exportieren Sie die Bibliothek erneut aus Fusion, ergänzen Sie bei jedem &quot;unit&quot;: &quot;millimeters&quot; (oder &quot;inches&quot;), oder geben Sie an, in welcher Einheit sie sind (das Fenster fragt; toffee-cli import --cam-units mm|in).</translation>
+    </message>
+    <message>
+        <source>a new cutter (%1): the old cutter&apos;s TLO %2 %3, its wear and break mark end; measure it before it cuts</source>
+        <translation>ein neuer Fräser (%1): TLO %2 %3, Verschleiß und Bruchmarkierung des alten Fräsers enden; vor dem Zerspanen vermessen</translation>
+    </message>
+    <message>
+        <source>a new cutter (%1): the old cutter&apos;s wear and break mark end; measure it before it cuts</source>
+        <translation>ein neuer Fräser (%1): Verschleiß und Bruchmarkierung des alten Fräsers enden; vor dem Zerspanen vermessen</translation>
+    </message>
+    <message>
+        <source>the library gives no unit: its lengths are read in %1, as you said</source>
+        <translation>die Bibliothek gibt keine Einheit an: Die Längen werden wie angegeben in %1 gelesen</translation>
+    </message>
+    <message>
+        <source>inches</source>
+        <translation>Zoll</translation>
+    </message>
+    <message>
+        <source>millimetres</source>
+        <translation>Millimetern</translation>
+    </message>
+    <message>
+        <source>%1; a new cutter in %2 (measure before use)</source>
+        <translation>%1; ein neuer Fräser bei %2 (vor Gebrauch vermessen)</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ImportPreviewDialog</name>
@@ -2561,6 +2645,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Import or cancel</source>
         <translation>Importieren oder abbrechen</translation>
+    </message>
+    <message>
+        <source>Only descriptions, radii and the CAM&apos;s line in the notes change, except where the library describes another cutter: that tool&apos;s TLO, wear and break mark end (the history keeps them) and it is measured before it cuts. Pockets and your notes stay as they are.</source>
+        <translation>Nur Beschreibungen, Radien und die CAM-Zeile in den Notizen ändern sich, außer wo die Bibliothek einen anderen Fräser beschreibt: TLO, Verschleiß und Bruchmarkierung dieses Werkzeugs enden (der Verlauf behält sie), und es wird vor dem Zerspanen vermessen. Plätze und Ihre Notizen bleiben, wie sie sind.</translation>
     </message>
 </context>
 <context>
@@ -2807,6 +2895,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1 more tools whose TLO in the controller&apos;s own table is not the file&apos;s</source>
         <translation>%1 weitere Werkzeuge, deren TLO in der eigenen Tabelle der Steuerung nicht der in der Datei entspricht</translation>
+    </message>
+    <message>
+        <source>T%1 would pass its life limit of %2 min in this program: its cutter has cut %3 since it went in, and the program cuts %4 more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
+        <translation>T%1 würde in diesem Programm seine Standzeit von %2 min überschreiten: Sein Fräser hat seit dem Einsetzen %3 zerspant, und das Programm zerspant %4 mehr. Setzen Sie einen neuen Fräser ein (Bearbeiten ▸ Neuer Fräser …, toffee-cli new-cutter %1) oder erhöhen Sie die Standzeit.</translation>
+    </message>
+    <message>
+        <source>T%1 would pass its life limit of %2 uses: its cutter has cut in %3 programs since it went in, and this is one more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
+        <translation>T%1 würde seine Standzeit von %2 Einsätzen überschreiten: Sein Fräser hat seit dem Einsetzen in %3 Programmen zerspant, und dies ist eines mehr. Setzen Sie einen neuen Fräser ein (Bearbeiten ▸ Neuer Fräser …, toffee-cli new-cutter %1) oder erhöhen Sie die Standzeit.</translation>
     </message>
 </context>
 <context>
@@ -4605,6 +4701,90 @@ Trotzdem speichern?</translation>
         <source>Taken from the controller&apos;s table into the file: %1 TLOs.</source>
         <translation>Aus der Tabelle der Steuerung in die Datei übernommen: %1 TLOs.</translation>
     </message>
+    <message>
+        <source>New &amp;Cutter…</source>
+        <translation>Neuer &amp;Fräser…</translation>
+    </message>
+    <message>
+        <source>The selected tool&apos;s pocket holds another cutter: its TLO, wear and break mark end, and it is measured before it cuts</source>
+        <translation>Im Platz des gewählten Werkzeugs steckt ein anderer Fräser: TLO, Verschleiß und Bruchmarkierung enden, und er wird vor dem Zerspanen vermessen</translation>
+    </message>
+    <message>
+        <source>Select the one tool whose cutter was changed.</source>
+        <translation>Wählen Sie das eine Werkzeug, dessen Fräser gewechselt wurde.</translation>
+    </message>
+    <message>
+        <source>its TLO %1 %2 (%3)</source>
+        <translation>seine TLO %1 %2 (%3)</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>von Hand gesetzt</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <source>its wear (length %1, radius %2)</source>
+        <translation>sein Verschleiß (Länge %1, Radius %2)</translation>
+    </message>
+    <message>
+        <source>its broken mark</source>
+        <translation>seine Bruchmarkierung</translation>
+    </message>
+    <message>
+        <source>its used life</source>
+        <translation>seine verbrauchte Standzeit</translation>
+    </message>
+    <message>
+        <source>New cutter in T%1?</source>
+        <translation>Neuer Fräser in T%1?</translation>
+    </message>
+    <message>
+        <source>T%1 gets a new cutter. Measure it on the tool setter before it cuts.</source>
+        <translation>T%1 bekommt einen neuen Fräser. Vermessen Sie ihn vor dem Zerspanen am Werkzeugtaster.</translation>
+    </message>
+    <message>
+        <source>T%1 gets a new cutter: %2 belong to the old one and end here (the history keeps them as the old cutter&apos;s). Measure T%1 on the tool setter before it cuts.</source>
+        <translation>T%1 bekommt einen neuen Fräser: %2 gehören zum alten und enden hier (der Verlauf behält sie als die des alten Fräsers). Vermessen Sie T%1 vor dem Zerspanen am Werkzeugtaster.</translation>
+    </message>
+    <message>
+        <source>Edit ▸ Undo puts the old values back in the table.</source>
+        <translation>Bearbeiten ▸ Rückgängig setzt die alten Werte wieder in die Tabelle.</translation>
+    </message>
+    <message>
+        <source>New Cutter</source>
+        <translation>Neuer Fräser</translation>
+    </message>
+    <message>
+        <source>Cannot put in a new cutter</source>
+        <translation>Neuer Fräser nicht möglich</translation>
+    </message>
+    <message>
+        <source>T%1 has a new cutter: measure it before it cuts.</source>
+        <translation>T%1 hat einen neuen Fräser: vor dem Zerspanen vermessen.</translation>
+    </message>
+    <message>
+        <source>Which unit?</source>
+        <translation>Welche Einheit?</translation>
+    </message>
+    <message>
+        <source>%1 in %2 give no unit (Fusion writes &quot;unit&quot; on every tool). Their diameters and lengths are read in the unit you choose; the preview shows each of them before anything changes.</source>
+        <translation>%1 in %2 geben keine Einheit an (Fusion schreibt „unit“ an jedes Werkzeug). Ihre Durchmesser und Längen werden in der gewählten Einheit gelesen; die Vorschau zeigt jedes davon, bevor sich etwas ändert.</translation>
+    </message>
+    <message>
+        <source>Millimetres</source>
+        <translation>Millimeter</translation>
+    </message>
+    <message>
+        <source>Inches</source>
+        <translation>Zoll</translation>
+    </message>
+    <message>
+        <source>This table is read-only here, so a measurement could not be kept in it. Open a table you may change to probe, set or test tools.</source>
+        <translation>Diese Tabelle ist hier schreibgeschützt, eine Messung ließe sich darin nicht behalten. Öffnen Sie eine Tabelle, die Sie ändern dürfen, um Werkzeuge zu vermessen, zu setzen oder zu prüfen.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -4618,11 +4798,11 @@ Trotzdem speichern?</translation>
     </message>
     <message>
         <source>Set TLO to</source>
-        <translation>Längenkorrektur setzen auf</translation>
+        <translation>TLO setzen auf</translation>
     </message>
     <message>
         <source>Change TLO by</source>
-        <translation>Längenkorrektur ändern um</translation>
+        <translation>TLO ändern um</translation>
     </message>
     <message>
         <source>Gauge height above Z0</source>
@@ -5730,10 +5910,6 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation>Nicht verbunden</translation>
     </message>
     <message>
-        <source>%1 (stale: no status report)</source>
-        <translation>%1 (veraltet: kein Statusbericht)</translation>
-    </message>
-    <message>
         <source>Unlock failed</source>
         <translation>Entsperren fehlgeschlagen</translation>
     </message>
@@ -5883,6 +6059,22 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
         <source>Look at the tool first, and replace it if it is broken. The mark stays until T%1 is measured again (Probe).</source>
         <translation>Sehen Sie sich zuerst das Werkzeug an und ersetzen Sie es, wenn es gebrochen ist. Die Markierung bleibt, bis T%1 erneut gemessen wird (Messen).</translation>
     </message>
+    <message>
+        <source>no status report yet</source>
+        <translation>noch kein Statusbericht</translation>
+    </message>
+    <message>
+        <source>no status report for %1 s</source>
+        <translation>seit %1 s kein Statusbericht</translation>
+    </message>
+    <message>
+        <source>HALTED (%1; it stays halted until unlocked)</source>
+        <translation>ANGEHALTEN (%1; bleibt angehalten bis zum Entsperren)</translation>
+    </message>
+    <message>
+        <source>%1 (stale: %2)</source>
+        <translation>%1 (veraltet: %2)</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolDocument</name>
@@ -5937,6 +6129,45 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>Take T%1 from %2</source>
         <translation>T%1 von %2 übernehmen</translation>
+    </message>
+    <message>
+        <source>New cutter in T%1</source>
+        <translation>Neuer Fräser in T%1</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolLife</name>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>%1 uses</source>
+        <translation>%1 Einsätze</translation>
+    </message>
+    <message>
+        <source>Type the tool&apos;s life as minutes of cutting, uses (programs), or both: &quot;90 min&quot;, &quot;40 uses&quot;, &quot;90 min, 40 uses&quot;; leave it empty for no limit.</source>
+        <translation>Geben Sie die Standzeit als Zerspanminuten, Einsätze (Programme) oder beides ein: „90 min“, „40 Einsätze“, „90 min, 40 Einsätze“; leer lassen für keine Grenze.</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>uses</source>
+        <translation>Einsätze</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a tool life. %2</source>
+        <translation>„%1“ ist keine Standzeit. %2</translation>
+    </message>
+    <message>
+        <source>%1 of %2 min</source>
+        <translation>%1 von %2 min</translation>
+    </message>
+    <message>
+        <source>%1 of %2 uses</source>
+        <translation>%1 von %2 Einsätzen</translation>
     </message>
 </context>
 <context>
@@ -6022,6 +6253,10 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>there is no tool %1 in the table.</source>
         <translation>Es gibt kein Werkzeug %1 in der Tabelle.</translation>
+    </message>
+    <message>
+        <source>T%1 is not in the table.</source>
+        <translation>T%1 ist nicht in der Tabelle.</translation>
     </message>
 </context>
 <context>
@@ -6115,10 +6350,6 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
         <translation>%1 (veraltet)</translation>
     </message>
     <message>
-        <source>Cutting time</source>
-        <translation>Schnittzeit</translation>
-    </message>
-    <message>
         <source>The tool length offset: measured on the tool setter, or set by hand (marked &quot;by hand&quot;).</source>
         <translation>Die Werkzeuglängenkorrektur: am Werkzeuglängensensor gemessen oder von Hand gesetzt (markiert mit „von Hand“).</translation>
     </message>
@@ -6133,6 +6364,30 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>TLO recorded</source>
         <translation>TLO erfasst</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s cutter has cut %2 in %3 recorded program runs since it went in.</source>
+        <translation>Der Fräser von T%1 hat seit dem Einsetzen %2 in %3 aufgezeichneten Programmläufen zerspant.</translation>
+    </message>
+    <message>
+        <source>It has no life limit: type one here, as &quot;90 min&quot;, &quot;40 uses&quot; or both.</source>
+        <translation>Es hat keine Standzeit: Geben Sie hier eine ein, etwa „90 min“, „40 Einsätze“ oder beides.</translation>
+    </message>
+    <message>
+        <source>Its life limit is %1.</source>
+        <translation>Seine Standzeit ist %1.</translation>
+    </message>
+    <message>
+        <source>It is past its limit: put in a new cutter (Edit ▸ New Cutter…).</source>
+        <translation>Die Standzeit ist überschritten: Setzen Sie einen neuen Fräser ein (Bearbeiten ▸ Neuer Fräser …).</translation>
+    </message>
+    <message>
+        <source>It is near its limit: have a new cutter ready.</source>
+        <translation>Die Standzeit ist fast erreicht: Halten Sie einen neuen Fräser bereit.</translation>
+    </message>
+    <message>
+        <source>Tool life</source>
+        <translation>Standzeit</translation>
     </message>
 </context>
 <context>

@@ -842,6 +842,34 @@
         <source>Unlock, home the machine, then try again.</source>
         <translation>请解锁、让机床回原点，然后重试。</translation>
     </message>
+    <message>
+        <source>the cutter type is %1 characters long; keep it to %2.</source>
+        <translation>刀具类型长 %1 个字符；请不超过 %2 个。</translation>
+    </message>
+    <message>
+        <source>overall length</source>
+        <translation>总长</translation>
+    </message>
+    <message>
+        <source>the overall length cannot be negative.</source>
+        <translation>总长不能为负。</translation>
+    </message>
+    <message>
+        <source>a life limit in minutes must be more than 0 and at most %1; leave it empty for none.</source>
+        <translation>以分钟计的寿命上限必须大于 0 且不超过 %1；留空表示无上限。</translation>
+    </message>
+    <message>
+        <source>a life limit in uses must be a whole number from 1 to %1; leave it empty for none.</source>
+        <translation>以使用次数计的寿命上限必须是 1 到 %1 的整数；留空表示无上限。</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for tool life limits: they are not saved.</source>
+        <translation>LinuxCNC 刀具表没有存放刀具寿命上限的位置：不会保存。</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for the cutter&apos;s type and overall length: they are not saved, and an import can then tell a new cutter only by its diameter.</source>
+        <translation>LinuxCNC 刀具表没有存放刀具类型和总长的位置：不会保存，之后导入只能凭直径识别新刀具。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::About</name>
@@ -1597,10 +1625,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>它的“number” %1 超出范围；请使用 %2 到 %3。</translation>
     </message>
     <message>
-        <source>it has no &quot;unit&quot; (millimeters or inches).</source>
-        <translation>它没有“unit”（millimeters 或 inches）。</translation>
-    </message>
-    <message>
         <source>its &quot;unit&quot; is &quot;%1&quot;; Toffee reads millimeters or inches.</source>
         <translation>它的“unit”为“%1”；Toffee 只读取 millimeters 或 inches。</translation>
     </message>
@@ -2307,6 +2331,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>read in</source>
         <translation>已读入</translation>
     </message>
+    <message>
+        <source>new cutter (old one ended)</source>
+        <translation>新刀具（旧刀具已结束）</translation>
+    </message>
+    <message>
+        <source>Old cutter</source>
+        <translation>旧刀具</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryRecorder</name>
@@ -2376,6 +2408,18 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Library file or URL:</source>
         <translation>库文件或 URL：</translation>
+    </message>
+    <message>
+        <source>This station&apos;s name</source>
+        <translation>本工作站的名称</translation>
+    </message>
+    <message>
+        <source>Who this computer&apos;s changes are from in a shared library, as the other stations see it; empty: the computer&apos;s name.</source>
+        <translation>在共享库中，其他工作站看到的本计算机所做更改的来源；留空则为计算机名。</translation>
+    </message>
+    <message>
+        <source>This station&apos;s name:</source>
+        <translation>本工作站的名称：</translation>
     </message>
 </context>
 <context>
@@ -2471,6 +2515,46 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>%1 new, %2 changed, %3 unchanged</source>
         <translation>新增 %1，修改 %2，未变 %3</translation>
     </message>
+    <message>
+        <source>type “%1” → “%2”</source>
+        <translation>类型“%1”→“%2”</translation>
+    </message>
+    <message>
+        <source>diameter %1 → %2 %3</source>
+        <translation>直径 %1 → %2 %3</translation>
+    </message>
+    <message>
+        <source>overall length %1 → %2 %3</source>
+        <translation>总长 %1 → %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 in this library give no &quot;unit&quot; (millimeters or inches), so their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each of them, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
+        <translation>此库中的 %1 没有给出 &quot;unit&quot;（millimeters 或 inches），因此无法读取其直径和长度。Fusion 会为每把刀具写入该项：请从 Fusion 重新导出刀具库，或为每把刀具添加 &quot;unit&quot;: &quot;millimeters&quot;（或 &quot;inches&quot;），或说明它们使用的单位（窗口会询问；toffee-cli import --cam-units mm|in）。</translation>
+    </message>
+    <message>
+        <source>a new cutter (%1): the old cutter&apos;s TLO %2 %3, its wear and break mark end; measure it before it cuts</source>
+        <translation>新刀具（%1）：旧刀具的 TLO %2 %3、磨损和断刀标记就此结束；切削前请先测量</translation>
+    </message>
+    <message>
+        <source>a new cutter (%1): the old cutter&apos;s wear and break mark end; measure it before it cuts</source>
+        <translation>新刀具（%1）：旧刀具的磨损和断刀标记就此结束；切削前请先测量</translation>
+    </message>
+    <message>
+        <source>the library gives no unit: its lengths are read in %1, as you said</source>
+        <translation>刀具库未给出单位：按您的选择以%1读取其长度</translation>
+    </message>
+    <message>
+        <source>inches</source>
+        <translation>英寸</translation>
+    </message>
+    <message>
+        <source>millimetres</source>
+        <translation>毫米</translation>
+    </message>
+    <message>
+        <source>%1; a new cutter in %2 (measure before use)</source>
+        <translation>%1；%2 把为新刀具（使用前请测量）</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ImportPreviewDialog</name>
@@ -2561,6 +2645,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Import or cancel</source>
         <translation>导入或取消</translation>
+    </message>
+    <message>
+        <source>Only descriptions, radii and the CAM&apos;s line in the notes change, except where the library describes another cutter: that tool&apos;s TLO, wear and break mark end (the history keeps them) and it is measured before it cuts. Pockets and your notes stay as they are.</source>
+        <translation>只有描述、半径和备注中的 CAM 行会改变，除非刀具库描述的是另一把刀具：该刀具的 TLO、磨损和断刀标记就此结束（历史记录会保留），切削前需重新测量。刀位和您的备注保持不变。</translation>
     </message>
 </context>
 <context>
@@ -2807,6 +2895,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1 more tools whose TLO in the controller&apos;s own table is not the file&apos;s</source>
         <translation>另有 %1 把刀具在控制器自身刀具表中的 TLO 与文件中的不一致</translation>
+    </message>
+    <message>
+        <source>T%1 would pass its life limit of %2 min in this program: its cutter has cut %3 since it went in, and the program cuts %4 more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
+        <translation>T%1 在此程序中将超过其 %2 分钟的寿命上限：该刀具装入后已切削 %3，此程序还要切削 %4。请换上新刀具（编辑 ▸ 新刀具…，toffee-cli new-cutter %1）或提高上限。</translation>
+    </message>
+    <message>
+        <source>T%1 would pass its life limit of %2 uses: its cutter has cut in %3 programs since it went in, and this is one more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
+        <translation>T%1 将超过其 %2 次的寿命上限：该刀具装入后已在 %3 个程序中切削，这是又一次。请换上新刀具（编辑 ▸ 新刀具…，toffee-cli new-cutter %1）或提高上限。</translation>
     </message>
 </context>
 <context>
@@ -4605,6 +4701,90 @@ Save anyway?</source>
         <source>Taken from the controller&apos;s table into the file: %1 TLOs.</source>
         <translation>已从控制器的刀具表采用到文件中：%1 个 TLO。</translation>
     </message>
+    <message>
+        <source>New &amp;Cutter…</source>
+        <translation>新刀具(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>The selected tool&apos;s pocket holds another cutter: its TLO, wear and break mark end, and it is measured before it cuts</source>
+        <translation>所选刀具的刀位装入了另一把刀具：其 TLO、磨损和断刀标记就此结束，切削前需测量</translation>
+    </message>
+    <message>
+        <source>Select the one tool whose cutter was changed.</source>
+        <translation>请选择更换了刀具的那一把。</translation>
+    </message>
+    <message>
+        <source>its TLO %1 %2 (%3)</source>
+        <translation>其 TLO %1 %2（%3）</translation>
+    </message>
+    <message>
+        <source>set by hand</source>
+        <translation>手动设置</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>已测量</translation>
+    </message>
+    <message>
+        <source>its wear (length %1, radius %2)</source>
+        <translation>其磨损（长度 %1，半径 %2）</translation>
+    </message>
+    <message>
+        <source>its broken mark</source>
+        <translation>其断刀标记</translation>
+    </message>
+    <message>
+        <source>its used life</source>
+        <translation>其已用寿命</translation>
+    </message>
+    <message>
+        <source>New cutter in T%1?</source>
+        <translation>T%1 换新刀具？</translation>
+    </message>
+    <message>
+        <source>T%1 gets a new cutter. Measure it on the tool setter before it cuts.</source>
+        <translation>T%1 换上新刀具。切削前请在对刀仪上测量。</translation>
+    </message>
+    <message>
+        <source>T%1 gets a new cutter: %2 belong to the old one and end here (the history keeps them as the old cutter&apos;s). Measure T%1 on the tool setter before it cuts.</source>
+        <translation>T%1 换上新刀具：%2 属于旧刀具，至此结束（历史记录将其作为旧刀具的数据保留）。切削前请在对刀仪上测量 T%1。</translation>
+    </message>
+    <message>
+        <source>Edit ▸ Undo puts the old values back in the table.</source>
+        <translation>编辑 ▸ 撤销会把旧值放回表中。</translation>
+    </message>
+    <message>
+        <source>New Cutter</source>
+        <translation>新刀具</translation>
+    </message>
+    <message>
+        <source>Cannot put in a new cutter</source>
+        <translation>无法换上新刀具</translation>
+    </message>
+    <message>
+        <source>T%1 has a new cutter: measure it before it cuts.</source>
+        <translation>T%1 已换新刀具：切削前请测量。</translation>
+    </message>
+    <message>
+        <source>Which unit?</source>
+        <translation>哪种单位？</translation>
+    </message>
+    <message>
+        <source>%1 in %2 give no unit (Fusion writes &quot;unit&quot; on every tool). Their diameters and lengths are read in the unit you choose; the preview shows each of them before anything changes.</source>
+        <translation>%2 中的 %1 没有给出单位（Fusion 会为每把刀具写入 &quot;unit&quot;）。其直径和长度将按您选择的单位读取；在任何更改之前，预览会逐一显示。</translation>
+    </message>
+    <message>
+        <source>Millimetres</source>
+        <translation>毫米</translation>
+    </message>
+    <message>
+        <source>Inches</source>
+        <translation>英寸</translation>
+    </message>
+    <message>
+        <source>This table is read-only here, so a measurement could not be kept in it. Open a table you may change to probe, set or test tools.</source>
+        <translation>此刀具表在这里为只读，测量结果无法保存在其中。要对刀具进行测量、设置或检测，请打开您可以修改的刀具表。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -5730,10 +5910,6 @@ when it is fresh (no probe)</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <source>%1 (stale: no status report)</source>
-        <translation>%1（已过时：没有状态报告）</translation>
-    </message>
-    <message>
         <source>Unlock failed</source>
         <translation>解锁失败</translation>
     </message>
@@ -5883,6 +6059,22 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
         <source>Look at the tool first, and replace it if it is broken. The mark stays until T%1 is measured again (Probe).</source>
         <translation>请先查看刀具，如已断请更换。标记会保留，直到重新测量 T%1（测量）。</translation>
     </message>
+    <message>
+        <source>no status report yet</source>
+        <translation>尚无状态报告</translation>
+    </message>
+    <message>
+        <source>no status report for %1 s</source>
+        <translation>已 %1 秒无状态报告</translation>
+    </message>
+    <message>
+        <source>HALTED (%1; it stays halted until unlocked)</source>
+        <translation>已停机（%1；解锁前保持停机）</translation>
+    </message>
+    <message>
+        <source>%1 (stale: %2)</source>
+        <translation>%1（已过时：%2）</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolDocument</name>
@@ -5937,6 +6129,45 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>Take T%1 from %2</source>
         <translation>采用 %2 的 T%1</translation>
+    </message>
+    <message>
+        <source>New cutter in T%1</source>
+        <translation>T%1 换新刀具</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolLife</name>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 分钟</translation>
+    </message>
+    <message>
+        <source>%1 uses</source>
+        <translation>%1 次</translation>
+    </message>
+    <message>
+        <source>Type the tool&apos;s life as minutes of cutting, uses (programs), or both: &quot;90 min&quot;, &quot;40 uses&quot;, &quot;90 min, 40 uses&quot;; leave it empty for no limit.</source>
+        <translation>请以切削分钟数、使用次数（程序数）或两者输入刀具寿命：&quot;90 min&quot;、&quot;40 次&quot;、&quot;90 min, 40 次&quot;；留空表示无上限。</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>uses</source>
+        <translation>次</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a tool life. %2</source>
+        <translation>“%1”不是刀具寿命。%2</translation>
+    </message>
+    <message>
+        <source>%1 of %2 min</source>
+        <translation>%1 / %2 min</translation>
+    </message>
+    <message>
+        <source>%1 of %2 uses</source>
+        <translation>%1 / %2 次</translation>
     </message>
 </context>
 <context>
@@ -6022,6 +6253,10 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>there is no tool %1 in the table.</source>
         <translation>表中没有刀具 %1。</translation>
+    </message>
+    <message>
+        <source>T%1 is not in the table.</source>
+        <translation>T%1 不在表中。</translation>
     </message>
 </context>
 <context>
@@ -6115,10 +6350,6 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
         <translation>%1（已过期）</translation>
     </message>
     <message>
-        <source>Cutting time</source>
-        <translation>切削时间</translation>
-    </message>
-    <message>
         <source>The tool length offset: measured on the tool setter, or set by hand (marked &quot;by hand&quot;).</source>
         <translation>刀长补偿：在对刀仪上测量，或手动设置（标有“手动”）。</translation>
     </message>
@@ -6133,6 +6364,30 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>TLO recorded</source>
         <translation>TLO 记录时间</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s cutter has cut %2 in %3 recorded program runs since it went in.</source>
+        <translation>T%1 的刀具装入后已在 %3 次记录的程序运行中切削 %2。</translation>
+    </message>
+    <message>
+        <source>It has no life limit: type one here, as &quot;90 min&quot;, &quot;40 uses&quot; or both.</source>
+        <translation>它没有寿命上限：请在此输入，如 &quot;90 min&quot;、&quot;40 次&quot; 或两者。</translation>
+    </message>
+    <message>
+        <source>Its life limit is %1.</source>
+        <translation>其寿命上限为 %1。</translation>
+    </message>
+    <message>
+        <source>It is past its limit: put in a new cutter (Edit ▸ New Cutter…).</source>
+        <translation>已超过上限：请换上新刀具（编辑 ▸ 新刀具…）。</translation>
+    </message>
+    <message>
+        <source>It is near its limit: have a new cutter ready.</source>
+        <translation>已接近上限：请准备好新刀具。</translation>
+    </message>
+    <message>
+        <source>Tool life</source>
+        <translation>刀具寿命</translation>
     </message>
 </context>
 <context>

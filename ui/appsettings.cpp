@@ -34,6 +34,7 @@ const auto StaleDays = u"history/staleAfterDays"_s;
 const auto ExportDialect = u"files/exportDialect"_s;
 const auto JobDialect = u"jobs/dialect"_s;
 const auto JobZFloor = u"jobs/zFloor"_s;
+const auto StationName = u"history/station"_s;
 const auto PrepareStoredTlo = u"jobs/prepareUsesStoredTlo"_s;
 const auto JobRack = u"jobs/rack"_s;
 const auto PrepareBreakTests = u"jobs/prepareBreakTests"_s;
@@ -183,6 +184,19 @@ QString AppSettings::machineName() const
 void AppSettings::setMachineName(const QString &name)
 {
     m_settings.setValue(Key::MachineName, name);
+}
+
+QString AppSettings::stationName() const
+{
+    return m_settings.value(Key::StationName).toString().simplified();
+}
+
+void AppSettings::setStationName(const QString &name)
+{
+    if (name.simplified().isEmpty())
+        m_settings.remove(Key::StationName);
+    else
+        m_settings.setValue(Key::StationName, name.simplified());
 }
 
 int AppSettings::staleAfterDays() const

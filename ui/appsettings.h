@@ -57,6 +57,9 @@ public:
     void setLibraryLocation(const QString &location);
     [[nodiscard]] QString machineName() const;
     void setMachineName(const QString &name);
+    // Who this station writes as in a shared library ("Mill 2 PC"); empty: the computer's name.
+    [[nodiscard]] QString stationName() const;
+    void setStationName(const QString &name);
     // A measurement older than this is stale (the table marks it).
     [[nodiscard]] int staleAfterDays() const;
     void setStaleAfterDays(int days);

@@ -9,6 +9,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QSysInfo>
 
 #include "model/library/library.h"
 #include "ui/appsettings.h"
@@ -21,6 +22,7 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent, const LibraryLocat
     : QDialog(parent)
     , m_path(new QLineEdit(this))
     , m_machine(new QLineEdit(this))
+    , m_station(new QLineEdit(this))
     , m_stale(new QSpinBox(this))
 {
     setWindowTitle(tr("History Library"));
@@ -42,6 +44,13 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent, const LibraryLocat
     m_machine->setText(settings.machineName());
     m_machine->setObjectName(u"machineNameEdit"_s);
     m_machine->setAccessibleName(tr("Machine name"));
+    m_station->setText(settings.stationName());
+    m_station->setObjectName(u"stationNameEdit"_s);
+    m_station->setAccessibleName(tr("This station's name"));
+    m_station->setPlaceholderText(QSysInfo::machineHostName());
+    m_station->setToolTip(
+        tr("Who this computer's changes are from in a shared library, as the other stations "
+           "see it; empty: the computer's name."));
     m_stale->setRange(1, 365);
     m_stale->setSuffix(tr(" days"));
     m_stale->setValue(settings.staleAfterDays());
@@ -58,6 +67,7 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent, const LibraryLocat
     auto *form = new QFormLayout;
     form->addRow(tr("Library file or URL:"), pathRow);
     form->addRow(tr("This machine's name:"), m_machine);
+    form->addRow(tr("This station's name:"), m_station);
     form->addRow(tr("A measurement is stale after:"), m_stale);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -68,7 +78,8 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent, const LibraryLocat
     // Tab follows the rows: Browse… beside the library, before the machine's name.
     setTabOrder(m_path, browse);
     setTabOrder(browse, m_machine);
-    setTabOrder(m_machine, m_stale);
+    setTabOrder(m_machine, m_station);
+    setTabOrder(m_station, m_stale);
 }
 
 QString HistorySettingsDialog::location() const
@@ -80,6 +91,11 @@ QString HistorySettingsDialog::location() const
 QString HistorySettingsDialog::machineName() const
 {
     return m_machine->text().trimmed();
+}
+
+QString HistorySettingsDialog::stationName() const
+{
+    return m_station->text().simplified();
 }
 
 int HistorySettingsDialog::staleAfterDays() const

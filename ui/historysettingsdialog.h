@@ -24,6 +24,7 @@ public:
 
     [[nodiscard]] QString location() const; // "sqlite:PATH" or "postgresql://…"
     [[nodiscard]] QString machineName() const;
+    [[nodiscard]] QString stationName() const;
     [[nodiscard]] int staleAfterDays() const;
 
     void accept() override;
@@ -33,6 +34,7 @@ private:
 
     QLineEdit *m_path;
     QLineEdit *m_machine;
+    QLineEdit *m_station;
     QSpinBox *m_stale;
 };
 

@@ -122,6 +122,12 @@ JobCheckDialog::JobCheckDialog(Sources sources, QWidget *parent)
         [this](const QModelIndex &index) { showLine(index.data(JobFindingsModel::LineRole).toInt()); });
     setRunning(false);
     m_tools->horizontalHeader()->setStretchLastSection(false);
+    // A finding is read whole, in any language: its message wraps within the dialog's width, the row as tall
+    // as it needs, never cut off at the edge ("… wartet auf den …").
+    m_findings->setWordWrap(true);
+    m_findings->horizontalHeader()->setSectionResizeMode(
+        JobFindingsModel::MessageColumn, QHeaderView::Stretch);
+    m_findings->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     resize(900, 640);
 }
 
@@ -288,7 +294,12 @@ void JobCheckDialog::showReport()
     m_toolsModel->setReport(r, QDateTime::currentDateTimeUtc());
     m_findingsModel->setFindings(r.findings);
     m_tools->resizeColumnsToContents();
-    m_findings->resizeColumnsToContents();
+    for (int c = 0; c < m_findingsModel->columnCount(); ++c) {
+        if (c != JobFindingsModel::MessageColumn)
+            m_findings->resizeColumnToContents(c);
+    }
+    m_findings->horizontalHeader()->setSectionResizeMode(
+        JobFindingsModel::MessageColumn, QHeaderView::Stretch);
     QString text = tr("%1: %2 lines as %3; tools: %4, cutting %5, rapids %6 mm.")
                        .arg(r.program)
                        .arg(QLocale().toString(r.lines))

@@ -3,6 +3,11 @@
 // table (tool by tool over the versions read), and a table that may only be read.
 #include "ui/mainwindow.h"
 
+#include <QDockWidget>
+
+#include "ui/machinedock.h"
+#include "ui/rackpanel.h"
+
 #include <algorithm>
 
 #include <QAction>
@@ -237,11 +242,28 @@ void MainWindow::updateLibraryState()
                  "changed.")
                   .arg(m_tableLibrary.path);
     m_tablePanel->setReadOnly(banner);
-    for (const QString &name :
-        { u"actionSave"_s, u"actionAddTool"_s, u"actionRemoveTool"_s, u"actionImport"_s }) {
+    for (const QString &name : { u"actionSave"_s, u"actionAddTool"_s, u"actionRemoveTool"_s,
+             u"actionImport"_s, u"actionNewCutter"_s }) {
         if (auto *action = findChild<QAction *>(name))
             action->setEnabled(!readOnly);
     }
+    // Probing into a table that can never be saved would lose the measurement: the machine is not moved.
+    if (!m_machineDock || !m_rackPanel)
+        return; // still being built
+    m_machineDock->setRecordingBlocked(
+        readOnly ? tr(
+            "This table is read-only here, so a measurement could not be kept in it. Open a table you may "
+            "change to probe, set or test tools.")
+                 : QString());
+    if (m_rackDock && m_rackDock->widget())
+        m_rackDock->widget()->setEnabled(!readOnly);
+    updateMachineStatus();
+    Q_EMIT m_rackPanel->stateChanged();
+}
+
+bool MainWindow::recordingBlocked() const
+{
+    return m_document->isLibraryTable() && m_tableReadOnly;
 }
 
 } // namespace Toffee

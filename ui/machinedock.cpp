@@ -25,6 +25,11 @@ QGroupBox *group(const QString &title, QWidget *content)
 {
     auto *box = new QGroupBox(title);
     auto *layout = new QVBoxLayout(box);
+    // The box's margins only, not the panel's as well: at 1280×720 the break test's numbers are in view
+    // without scrolling.
+    if (content->layout())
+        content->layout()->setContentsMargins(0, 0, 0, 0);
+    layout->setContentsMargins(8, 6, 8, 6);
     layout->addWidget(content);
     return box;
 }
@@ -44,6 +49,8 @@ MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, 
     setObjectName(u"machineDock"_s);
     auto *body = new QWidget;
     auto *layout = new QVBoxLayout(body);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(4);
     m_limits->setObjectName(u"firmwareLimitsLabel"_s);
     m_limits->setAccessibleName(tr("What the machine's firmware cannot do"));
     m_limits->setWordWrap(true);
@@ -53,7 +60,8 @@ MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, 
     m_breakTestGroup->setObjectName(u"breakTestGroup"_s);
     layout->addWidget(group(tr("Connection"), m_connection));
     layout->addWidget(m_limits);
-    layout->addWidget(group(tr("Probe"), m_probe));
+    m_probeGroup = group(tr("Probe"), m_probe);
+    layout->addWidget(m_probeGroup);
     layout->addWidget(m_offsetsGroup);
     layout->addWidget(m_breakTestGroup);
     layout->addStretch(1);
@@ -73,6 +81,14 @@ MachineDock::MachineDock(MachineConnection *connection, ToolDocument *document, 
     setWidget(scroll);
     connect(connection, &MachineConnection::stateChanged, this, &MachineDock::showFirmwareLimits);
     showFirmwareLimits();
+}
+
+void MachineDock::setRecordingBlocked(const QString &why)
+{
+    for (QGroupBox *box : { m_probeGroup, m_offsetsGroup, m_breakTestGroup }) {
+        box->setEnabled(why.isEmpty());
+        box->setToolTip(why);
+    }
 }
 
 void MachineDock::showFirmwareLimits()

@@ -32,6 +32,9 @@ public:
     [[nodiscard]] ProbePanel *probePanel() const { return m_probe; }
     [[nodiscard]] OffsetEditor *offsetEditor() const { return m_offsets; }
     [[nodiscard]] BreakTestPanel *breakTestPanel() const { return m_breakTest; }
+    // Nothing measured could be kept in the table (a library table this station may only read): probing,
+    // setting and testing are off, `why` on each. Empty: on again.
+    void setRecordingBlocked(const QString &why);
 
 private:
     // What the connected machine's firmware cannot do is hidden, with a line that says why.
@@ -43,6 +46,7 @@ private:
     ProbePanel *m_probe;
     OffsetEditor *m_offsets;
     BreakTestPanel *m_breakTest;
+    QGroupBox *m_probeGroup = nullptr;
     QGroupBox *m_offsetsGroup = nullptr;
     QGroupBox *m_breakTestGroup = nullptr;
     QLabel *m_limits;

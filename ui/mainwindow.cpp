@@ -75,6 +75,7 @@ MainWindow::MainWindow(Build when, QWidget *parent)
     : QMainWindow(parent)
 {
     setObjectName(u"mainWindow"_s);
+    m_station = AppSettings().stationName();
     restoreWindowGeometry();
     if (when == Build::Now)
         build();
@@ -383,8 +384,8 @@ void MainWindow::createMachineActions()
             m_rackPanel->checkRack();
         });
     auto rackState = [this, measureRack, checkRack] {
-        measureRack->setEnabled(m_rackPanel->canMeasure());
-        checkRack->setEnabled(m_rackPanel->canCheck());
+        measureRack->setEnabled(m_rackPanel->canMeasure() && !recordingBlocked());
+        checkRack->setEnabled(m_rackPanel->canCheck() && !recordingBlocked());
     };
     connect(m_rackPanel, &RackPanel::stateChanged, this, rackState);
     rackState();
@@ -462,10 +463,11 @@ void MainWindow::updateMachineStatus()
         = m_connection->state() == MachineConnection::State::Connected && !m_connection->isBusy();
     // Motion waits for Unlock while halted; Unlock itself is what a halted machine needs.
     if (auto *probe = findChild<QAction *>(u"actionProbe"_s))
-        probe->setEnabled(m_connection->canOperate());
+        probe->setEnabled(m_connection->canOperate() && !recordingBlocked());
     // The stock firmware's M491.1 would only measure again: its panel is hidden, and F6 goes with it.
     if (auto *breakTest = findChild<QAction *>(u"actionBreakTest"_s))
-        breakTest->setEnabled(m_connection->canOperate() && m_connection->firmware().hasBreakTest());
+        breakTest->setEnabled(
+            m_connection->canOperate() && m_connection->firmware().hasBreakTest() && !recordingBlocked());
     if (auto *unlock = findChild<QAction *>(u"actionUnlock"_s))
         unlock->setEnabled(ready);
     if (auto *stop = findChild<QAction *>(u"actionStop"_s))
@@ -583,9 +585,19 @@ void MainWindow::newCutter()
 void MainWindow::resizeEvent(QResizeEvent *event)
 {
     QMainWindow::resizeEvent(event);
+    if (!isVisible())
+        return;
+    // The machine panel takes at most a third of a narrow window: at 1024 px the table keeps its columns.
+    if (const int wide = event->size().width(); wide != event->oldSize().width() && m_machineDock
+        && m_machineDock->isVisible() && !m_machineDock->isFloating()
+        && dockWidgetArea(m_machineDock) != Qt::BottomDockWidgetArea) {
+        const int most = std::max(m_machineDock->minimumSizeHint().width(), wide / 3);
+        if (m_machineDock->width() > most)
+            resizeDocks({ m_machineDock }, { most }, Qt::Horizontal);
+    }
     const int was = event->oldSize().height();
     const int is = event->size().height();
-    if (was <= 0 || is <= 0 || was == is || !isVisible())
+    if (was <= 0 || is <= 0 || was == is)
         return;
     for (QDockWidget *dock :
         { static_cast<QDockWidget *>(m_consoleDock), static_cast<QDockWidget *>(m_historyDock) }) {

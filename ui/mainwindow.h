@@ -185,6 +185,8 @@ private:
     QString m_station; // who this window writes as in the library; empty: the computer's name
     LibraryLocation m_tableLibrary; // where the open machine table came from
     bool m_tableReadOnly = false; // and whether that library may be written
+    // A library table this station may only read: nothing measured could be kept, so nothing is measured.
+    [[nodiscard]] bool recordingBlocked() const;
     LibraryLocation m_askedLibrary; // what setLibrary was given, also when the window fell back to its own
     QPointer<JobCheckDialog> m_jobDialog; // it deletes itself on closing
 };

@@ -50,7 +50,7 @@ void MainWindow::connectControllerSettings()
         const bool connected = m_connection->state() == MachineConnection::State::Connected;
         const bool table = connected && controller && m_connection->firmware().hasToolTable();
         for (QAction *action : { m_pushOffsetsAction, m_pullOffsetsAction }) {
-            action->setEnabled(table && m_connection->canOperate());
+            action->setEnabled(table && m_connection->canOperate() && !recordingBlocked());
             action->setToolTip(table ? action->text().remove(u'&')
                                      : tr("For a controller that keeps a tool table of its own (grblHAL): "
                                           "connect to one first."));

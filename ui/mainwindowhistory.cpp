@@ -178,8 +178,10 @@ void MainWindow::editHistorySettings()
     AppSettings settings;
     settings.setLibraryLocation(dialog.location());
     settings.setMachineName(dialog.machineName());
+    settings.setStationName(dialog.stationName());
     settings.setStaleAfterDays(dialog.staleAfterDays());
     m_document->model()->setStaleAfterDays(dialog.staleAfterDays());
+    m_station = settings.stationName();
     if (auto location = LibraryLocation::parse(dialog.location()))
         setLibrary(location.value());
     refreshToolLife();

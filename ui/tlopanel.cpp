@@ -126,6 +126,10 @@ void TloPanel::layOut()
 {
     m_tloNote->setWordWrap(true);
     m_tloNote->setMinimumWidth(160);
+    // Two lines, always, as the heights beside it: the strip never changes height when the note does, so
+    // the table below never moves. What does not fit is in the tooltip.
+    m_tloNote->setFixedHeight(2 * m_tloNote->fontMetrics().lineSpacing() + 2);
+    m_tloNote->setAlignment(Qt::AlignLeft | Qt::AlignVCenter);
     auto *row = new QHBoxLayout;
     row->setContentsMargins(0, 0, 0, 0);
     row->addWidget(caption(tr("State:"), this));
@@ -281,6 +285,7 @@ void TloPanel::updateTlo()
         warn = true;
     }
     m_tloNote->setText(note);
+    m_tloNote->setToolTip(note);
     m_tloNote->setStyleSheet(warn ? u"color: %1;"_s.arg(alarmColor(palette()).name()) : QString());
 }
 

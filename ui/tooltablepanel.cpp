@@ -72,6 +72,22 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
         header->visualIndex(ToolTableModel::MeasuredAtColumn), ToolTableModel::DescriptionColumn + 2);
     header->setSectionsMovable(true);
     connect(model, &QAbstractItemModel::modelReset, this, &ToolTablePanel::fitColumns);
+    // A TLO that grows a mark ("— BROKEN?") is never cut off: its column widens to it.
+    connect(model, &QAbstractItemModel::dataChanged, this,
+        [this](const QModelIndex &topLeft, const QModelIndex &bottomRight) {
+            if (topLeft.column() > ToolTableModel::MeasuredTloColumn
+                || bottomRight.column() < ToolTableModel::MeasuredTloColumn)
+                return;
+            int needed = 0;
+            for (int row = topLeft.row(); row <= bottomRight.row(); ++row) {
+                const QModelIndex shown
+                    = m_proxy->mapFromSource(topLeft.model()->index(row, ToolTableModel::MeasuredTloColumn));
+                if (shown.isValid())
+                    needed = std::max(needed, m_view->sizeHintForIndex(shown).width());
+            }
+            if (needed > m_view->columnWidth(ToolTableModel::MeasuredTloColumn))
+                m_view->setColumnWidth(ToolTableModel::MeasuredTloColumn, needed);
+        });
     fitColumns();
 
     auto *layout = new QVBoxLayout(this);
@@ -109,11 +125,10 @@ void ToolTablePanel::fitColumns()
     const int text = m_view->fontMetrics().averageCharWidth();
     m_view->setColumnWidth(ToolTableModel::DescriptionColumn,
         std::clamp(m_view->columnWidth(ToolTableModel::DescriptionColumn), 24 * text, 40 * text));
-    // Room for what a recording adds later ("-999.999 (by hand) — BROKEN?"), so that it is never cut off.
-    const int tlo
-        = m_view->fontMetrics().horizontalAdvance(
-              ToolTableModel::tr("%1 — BROKEN?")
-                  .arg(ToolTableModel::tr("%1 (by hand)").arg(millimetres(-Limits::kMaxGeometryMm, false))))
+    // Room for a TLO set by hand ("-999.999 (by hand)"); a broken mark widens the column when it comes
+    // (keepTloWhole), so that the table shows more columns at 1024 px than the rare longest text would allow.
+    const int tlo = m_view->fontMetrics().horizontalAdvance(
+                        ToolTableModel::tr("%1 (by hand)").arg(millimetres(-Limits::kMaxGeometryMm, false)))
         + 2 * text;
     m_view->setColumnWidth(ToolTableModel::MeasuredTloColumn,
         std::max(m_view->columnWidth(ToolTableModel::MeasuredTloColumn), tlo));

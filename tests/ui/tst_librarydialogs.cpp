@@ -9,6 +9,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QSysInfo>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -106,6 +107,8 @@ private Q_SLOTS:
         press(&dialog, Qt::Key_Tab);
         QCOMPARE(QApplication::focusWidget(), dialog.findChild<QLineEdit *>(u"machineNameEdit"_s));
         press(&dialog, Qt::Key_Tab);
+        QCOMPARE(QApplication::focusWidget(), dialog.findChild<QLineEdit *>(u"stationNameEdit"_s));
+        press(&dialog, Qt::Key_Tab);
         QCOMPARE(QApplication::focusWidget(), dialog.findChild<QSpinBox *>(u"staleDaysSpin"_s));
     }
 
@@ -127,6 +130,11 @@ private Q_SLOTS:
             QVERIFY(dialog);
             shown = dialog->findChild<QLineEdit *>(u"libraryPathEdit"_s)->text();
             dialog->findChild<QLineEdit *>(u"machineNameEdit"_s)->setText(u"C1"_s);
+            // The station's name, shown empty (the computer's name as its placeholder) until one is set.
+            auto *station = dialog->findChild<QLineEdit *>(u"stationNameEdit"_s);
+            QVERIFY(station->text().isEmpty());
+            QCOMPARE(station->placeholderText(), QSysInfo::machineHostName());
+            station->setText(u"  Mill 2   PC "_s);
             dialog->accept();
         });
         window.findChild<QAction *>(u"actionHistorySettings"_s)->trigger();
@@ -134,6 +142,14 @@ private Q_SLOTS:
         QCOMPARE(window.history()->location(), given);
         QCOMPARE(AppSettings().libraryLocation(), given.text());
         QCOMPARE(AppSettings().machineName(), u"C1"_s);
+        // Who the window now writes as: the name given, in the setting and in the library it opened.
+        QCOMPARE(AppSettings().stationName(), u"Mill 2 PC"_s);
+        QCOMPARE(window.history()->library()->station(), u"Mill 2 PC"_s);
+        MainWindow next; // a window started later writes as it too
+        next.history()->setOutboxLocation({ .path = folder.filePath(u"own2.sqlite"_s) });
+        next.setLibrary(given);
+        QCOMPARE(next.history()->library()->station(), u"Mill 2 PC"_s);
+        AppSettings().setStationName({});
 
         // Without a library given, the setting's is shown, as before.
         HistorySettingsDialog plain;

@@ -9,6 +9,7 @@
 
 #include <QAbstractItemView>
 #include <QProcess>
+#include <QPushButton>
 #include <QScopeGuard>
 #include <QSqlDatabase>
 #include <QSqlQuery>
@@ -128,10 +129,23 @@ private Q_SLOTS:
         QVERIFY(!r.action(u"actionAddTool"_s)->isEnabled());
         QVERIFY(!r.action(u"actionRemoveTool"_s)->isEnabled());
         QCOMPARE(r.window.toolTablePanel()->view()->editTriggers(), QAbstractItemView::NoEditTriggers);
-        // A file table opened after it is editable again.
+        // Connected, nothing is measured into a table that can never be saved: the machine is not moved.
+        r.window.connection()->connectTo(ConnectionTarget {});
+        QTRY_VERIFY(r.window.connection()->canOperate());
+        QApplication::processEvents();
+        QVERIFY(!r.action(u"actionProbe"_s)->isEnabled());
+        QVERIFY(!r.action(u"actionBreakTest"_s)->isEnabled());
+        QVERIFY(!r.action(u"actionNewCutter"_s)->isEnabled());
+        QVERIFY(!r.action(u"actionMeasureRack"_s)->isEnabled());
+        auto *probe = r.window.findChild<QPushButton *>(u"probeButton"_s);
+        QVERIFY(probe && !probe->isEnabled());
+        QVERIFY(probe->parentWidget()->parentWidget()->toolTip().contains(u"read-only here"_s));
+        // A file table opened after it is editable and measurable again.
         QVERIFY(r.window.openFile(kExampleTable));
         QVERIFY(!banner->isVisible());
         QVERIFY(r.action(u"actionSave"_s)->isEnabled());
+        QTRY_VERIFY(r.action(u"actionProbe"_s)->isEnabled());
+        QVERIFY(probe->isEnabled());
     }
 };
 
