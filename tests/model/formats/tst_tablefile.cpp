@@ -105,8 +105,11 @@ private Q_SLOTS:
         QVERIFY(formatLosses(Test::awkwardTable(), TableFormat::Csv).isEmpty());
         QVERIFY(formatLosses(Test::linuxCncTable(), TableFormat::LinuxCnc).isEmpty());
         const QStringList losses = formatLosses(Test::awkwardTable(), TableFormat::LinuxCnc);
-        QCOMPARE(losses.size(), 3); // the broken tool's mark, measured TLOs and notes
+        // The broken tool's mark, measured TLOs, notes, life limits and the cutter's type and length.
+        QCOMPARE(losses.size(), 5);
         QVERIFY(losses.join(u' ').contains(u"TLO"_s));
+        QVERIFY(losses.join(u' ').contains(u"tool life limits"_s));
+        QVERIFY(losses.join(u' ').contains(u"tell a new cutter only by its diameter"_s));
         QVERIFY(losses.first().contains(u"break test: T2 would no longer be marked"_s));
     }
 
@@ -123,8 +126,19 @@ private Q_SLOTS:
             QCOMPARE(back.value().find(1)->tloSource, TloSource::Probe);
             QVERIFY(!back.value().find(1)->breakTestFailed);
         }
+        // A cutter or a life limit is version 3; marks alone, version 2.
         const QByteArray json = writeTable(marked, TableFormat::Json);
-        QVERIFY(json.contains("\"version\": 2"));
+        QVERIFY(json.contains("\"version\": 3"));
+        QVERIFY(json.contains("\"cutter_type\": \"flat end mill, \\\"2F\\\"\", \"overall_length\": 50.8, "
+                              "\"life_limit_minutes\": 90.5, \"life_limit_uses\": 40"));
+        ToolTable marksOnly = marked;
+        Tool t2 = *marksOnly.find(2);
+        t2.cutterType.clear();
+        t2.overallLength.reset();
+        t2.lifeLimitMinutes.reset();
+        t2.lifeLimitUses.reset();
+        QVERIFY(marksOnly.replace(2, t2).ok());
+        QVERIFY(writeTable(marksOnly, TableFormat::Json).contains("\"version\": 2"));
         QVERIFY(json.contains("\"tlo_source\": \"manual\", \"break_test_failed\": true"));
         // Without marks the file stays version 1, which an older Toffee still reads.
         const QByteArray plain = writeTable(Test::linuxCncTable(), TableFormat::Json);
