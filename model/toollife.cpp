@@ -39,7 +39,7 @@ QString ToolLife::limitText(const Tool &tool)
 {
     QStringList parts;
     if (tool.lifeLimitMinutes)
-        parts << tr("%1 min").arg(formatNumber(*tool.lifeLimitMinutes, NumberFormat::upTo(1)));
+        parts << tr("%1 min").arg(formatNumber(*tool.lifeLimitMinutes, NumberFormat::upTo(3)));
     if (tool.lifeLimitUses)
         parts << tr("%1 uses").arg(*tool.lifeLimitUses);
     return parts.join(u", "_s);
@@ -94,7 +94,7 @@ QString ToolLife::usedText(const Tool &tool, const UsedLife &used)
     QStringList parts;
     const QString time = durationText(used.seconds);
     if (tool.lifeLimitMinutes)
-        parts << tr("%1 of %2 min").arg(time, formatNumber(*tool.lifeLimitMinutes, NumberFormat::upTo(1)));
+        parts << tr("%1 of %2 min").arg(time, formatNumber(*tool.lifeLimitMinutes, NumberFormat::upTo(3)));
     else if (used.seconds > 0.0 || !tool.lifeLimitUses)
         parts << time;
     if (tool.lifeLimitUses)

@@ -2528,10 +2528,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Gesamtlänge %1 → %2 %3</translation>
     </message>
     <message>
-        <source>%1 in this library give no &quot;unit&quot; (millimeters or inches), so their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each of them, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
-        <translation>%1 in dieser Bibliothek geben keine „unit“ (millimeters oder inches) an, daher lassen sich ihre Durchmesser und Längen nicht lesen. Fusion schreibt sie an jedes Werkzeug: Exportieren Sie die Bibliothek erneut aus Fusion, ergänzen Sie bei jedem &quot;unit&quot;: &quot;millimeters&quot; (oder &quot;inches&quot;), oder geben Sie an, in welcher Einheit sie sind (das Fenster fragt; toffee-cli import --cam-units mm|in).</translation>
-    </message>
-    <message>
         <source>a new cutter (%1): the old cutter&apos;s TLO %2 %3, its wear and break mark end; measure it before it cuts</source>
         <translation>ein neuer Fräser (%1): TLO %2 %3, Verschleiß und Bruchmarkierung des alten Fräsers enden; vor dem Zerspanen vermessen</translation>
     </message>
@@ -2554,6 +2550,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1; a new cutter in %2 (measure before use)</source>
         <translation>%1; ein neuer Fräser bei %2 (vor Gebrauch vermessen)</translation>
+    </message>
+    <message>
+        <source>Tools in this library without &quot;unit&quot; (millimeters or inches): %1. Their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
+        <translation>Werkzeuge dieser Bibliothek ohne „unit“ (millimeters oder inches): %1. Ihre Durchmesser und Längen lassen sich nicht lesen. Fusion schreibt sie an jedes Werkzeug: Exportieren Sie die Bibliothek erneut aus Fusion, ergänzen Sie bei jedem "unit": "millimeters" (oder "inches"), oder geben Sie an, in welcher Einheit sie sind (das Fenster fragt; toffee-cli import --cam-units mm|in).</translation>
     </message>
 </context>
 <context>
@@ -2903,6 +2903,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>T%1 would pass its life limit of %2 uses: its cutter has cut in %3 programs since it went in, and this is one more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
         <translation>T%1 würde seine Standzeit von %2 Einsätzen überschreiten: Sein Fräser hat seit dem Einsetzen in %3 Programmen zerspant, und dies ist eines mehr. Setzen Sie einen neuen Fräser ein (Bearbeiten ▸ Neuer Fräser …, toffee-cli new-cutter %1) oder erhöhen Sie die Standzeit.</translation>
+    </message>
+    <message>
+        <source>The history says T%1 got a new cutter %2, after the table&apos;s TLO was measured: that TLO is the old cutter&apos;s. Probe T%1 before the job.</source>
+        <translation>Laut Verlauf hat T%1 %2 einen neuen Fräser bekommen, nachdem die TLO der Tabelle gemessen wurde: Diese TLO ist die des alten Fräsers. Vermessen Sie T%1 vor dem Auftrag.</translation>
+    </message>
+    <message>
+        <source>T%1 is past its life limit of %2 min already: its cutter has cut %3 since it went in, and the program cuts %4 more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
+        <translation>T%1 hat seine Standzeit von %2 min bereits überschritten: Sein Fräser hat seit dem Einsetzen %3 zerspant, und das Programm zerspant %4 mehr. Setzen Sie einen neuen Fräser ein (Bearbeiten ▸ Neuer Fräser …, toffee-cli new-cutter %1) oder erhöhen Sie die Standzeit.</translation>
     </message>
 </context>
 <context>
@@ -4750,10 +4758,6 @@ Trotzdem speichern?</translation>
         <translation>T%1 bekommt einen neuen Fräser: %2 gehören zum alten und enden hier (der Verlauf behält sie als die des alten Fräsers). Vermessen Sie T%1 vor dem Zerspanen am Werkzeugtaster.</translation>
     </message>
     <message>
-        <source>Edit ▸ Undo puts the old values back in the table.</source>
-        <translation>Bearbeiten ▸ Rückgängig setzt die alten Werte wieder in die Tabelle.</translation>
-    </message>
-    <message>
         <source>New Cutter</source>
         <translation>Neuer Fräser</translation>
     </message>
@@ -4770,10 +4774,6 @@ Trotzdem speichern?</translation>
         <translation>Welche Einheit?</translation>
     </message>
     <message>
-        <source>%1 in %2 give no unit (Fusion writes &quot;unit&quot; on every tool). Their diameters and lengths are read in the unit you choose; the preview shows each of them before anything changes.</source>
-        <translation>%1 in %2 geben keine Einheit an (Fusion schreibt „unit“ an jedes Werkzeug). Ihre Durchmesser und Längen werden in der gewählten Einheit gelesen; die Vorschau zeigt jedes davon, bevor sich etwas ändert.</translation>
-    </message>
-    <message>
         <source>Millimetres</source>
         <translation>Millimeter</translation>
     </message>
@@ -4784,6 +4784,14 @@ Trotzdem speichern?</translation>
     <message>
         <source>This table is read-only here, so a measurement could not be kept in it. Open a table you may change to probe, set or test tools.</source>
         <translation>Diese Tabelle ist hier schreibgeschützt, eine Messung ließe sich darin nicht behalten. Öffnen Sie eine Tabelle, die Sie ändern dürfen, um Werkzeuge zu vermessen, zu setzen oder zu prüfen.</translation>
+    </message>
+    <message>
+        <source>Edit ▸ Undo puts the old values back in the table; the history keeps that a new cutter went in, and the job check warns of a TLO from before it.</source>
+        <translation>Bearbeiten ▸ Rückgängig setzt die alten Werte wieder in die Tabelle; der Verlauf behält, dass ein neuer Fräser eingesetzt wurde, und die Auftragsprüfung warnt vor einer TLO von davor.</translation>
+    </message>
+    <message>
+        <source>Tools in %2 without a unit (Fusion writes &quot;unit&quot; on every tool): %1. Their diameters and lengths are read in the unit you choose; the preview shows each of them before anything changes.</source>
+        <translation>Werkzeuge in %2 ohne Einheit (Fusion schreibt „unit“ an jedes Werkzeug): %1. Ihre Durchmesser und Längen werden in der gewählten Einheit gelesen; die Vorschau zeigt jedes davon, bevor sich etwas ändert.</translation>
     </message>
 </context>
 <context>

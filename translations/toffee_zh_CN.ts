@@ -2528,10 +2528,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>总长 %1 → %2 %3</translation>
     </message>
     <message>
-        <source>%1 in this library give no &quot;unit&quot; (millimeters or inches), so their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each of them, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
-        <translation>此库中的 %1 没有给出 &quot;unit&quot;（millimeters 或 inches），因此无法读取其直径和长度。Fusion 会为每把刀具写入该项：请从 Fusion 重新导出刀具库，或为每把刀具添加 &quot;unit&quot;: &quot;millimeters&quot;（或 &quot;inches&quot;），或说明它们使用的单位（窗口会询问；toffee-cli import --cam-units mm|in）。</translation>
-    </message>
-    <message>
         <source>a new cutter (%1): the old cutter&apos;s TLO %2 %3, its wear and break mark end; measure it before it cuts</source>
         <translation>新刀具（%1）：旧刀具的 TLO %2 %3、磨损和断刀标记就此结束；切削前请先测量</translation>
     </message>
@@ -2554,6 +2550,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1; a new cutter in %2 (measure before use)</source>
         <translation>%1；%2 把为新刀具（使用前请测量）</translation>
+    </message>
+    <message>
+        <source>Tools in this library without &quot;unit&quot; (millimeters or inches): %1. Their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
+        <translation>此库中没有 "unit"（millimeters 或 inches）的刀具：%1。无法读取其直径和长度。Fusion 会为每把刀具写入该项：请从 Fusion 重新导出刀具库，或为每把刀具添加 "unit": "millimeters"（或 "inches"），或说明它们使用的单位（窗口会询问；toffee-cli import --cam-units mm|in）。</translation>
     </message>
 </context>
 <context>
@@ -2903,6 +2903,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>T%1 would pass its life limit of %2 uses: its cutter has cut in %3 programs since it went in, and this is one more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
         <translation>T%1 将超过其 %2 次的寿命上限：该刀具装入后已在 %3 个程序中切削，这是又一次。请换上新刀具（编辑 ▸ 新刀具…，toffee-cli new-cutter %1）或提高上限。</translation>
+    </message>
+    <message>
+        <source>The history says T%1 got a new cutter %2, after the table&apos;s TLO was measured: that TLO is the old cutter&apos;s. Probe T%1 before the job.</source>
+        <translation>历史记录显示 T%1 在 %2 换了新刀具，晚于表中 TLO 的测量时间：该 TLO 属于旧刀具。作业前请测量 T%1。</translation>
+    </message>
+    <message>
+        <source>T%1 is past its life limit of %2 min already: its cutter has cut %3 since it went in, and the program cuts %4 more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
+        <translation>T%1 已超过其 %2 分钟的寿命上限：该刀具装入后已切削 %3，此程序还要切削 %4。请换上新刀具（编辑 ▸ 新刀具…，toffee-cli new-cutter %1）或提高上限。</translation>
     </message>
 </context>
 <context>
@@ -4750,10 +4758,6 @@ Save anyway?</source>
         <translation>T%1 换上新刀具：%2 属于旧刀具，至此结束（历史记录将其作为旧刀具的数据保留）。切削前请在对刀仪上测量 T%1。</translation>
     </message>
     <message>
-        <source>Edit ▸ Undo puts the old values back in the table.</source>
-        <translation>编辑 ▸ 撤销会把旧值放回表中。</translation>
-    </message>
-    <message>
         <source>New Cutter</source>
         <translation>新刀具</translation>
     </message>
@@ -4770,10 +4774,6 @@ Save anyway?</source>
         <translation>哪种单位？</translation>
     </message>
     <message>
-        <source>%1 in %2 give no unit (Fusion writes &quot;unit&quot; on every tool). Their diameters and lengths are read in the unit you choose; the preview shows each of them before anything changes.</source>
-        <translation>%2 中的 %1 没有给出单位（Fusion 会为每把刀具写入 &quot;unit&quot;）。其直径和长度将按您选择的单位读取；在任何更改之前，预览会逐一显示。</translation>
-    </message>
-    <message>
         <source>Millimetres</source>
         <translation>毫米</translation>
     </message>
@@ -4784,6 +4784,14 @@ Save anyway?</source>
     <message>
         <source>This table is read-only here, so a measurement could not be kept in it. Open a table you may change to probe, set or test tools.</source>
         <translation>此刀具表在这里为只读，测量结果无法保存在其中。要对刀具进行测量、设置或检测，请打开您可以修改的刀具表。</translation>
+    </message>
+    <message>
+        <source>Edit ▸ Undo puts the old values back in the table; the history keeps that a new cutter went in, and the job check warns of a TLO from before it.</source>
+        <translation>编辑 ▸ 撤销会把旧值放回表中；历史记录仍保留换了新刀具这一事实，作业检查会对此前的 TLO 发出警告。</translation>
+    </message>
+    <message>
+        <source>Tools in %2 without a unit (Fusion writes &quot;unit&quot; on every tool): %1. Their diameters and lengths are read in the unit you choose; the preview shows each of them before anything changes.</source>
+        <translation>%2 中没有单位的刀具（Fusion 会为每把刀具写入 "unit"）：%1。其直径和长度将按您选择的单位读取；在任何更改之前，预览会逐一显示。</translation>
     </message>
 </context>
 <context>

@@ -561,7 +561,9 @@ void MainWindow::newCutter()
                   .arg(number)
                   .arg(ends.join(u", "_s)),
         QMessageBox::Cancel, this);
-    box.setInformativeText(tr("Edit ▸ Undo puts the old values back in the table."));
+    box.setInformativeText(
+        tr("Edit ▸ Undo puts the old values back in the table; the history keeps that a new "
+           "cutter went in, and the job check warns of a TLO from before it."));
     QPushButton *confirm = box.addButton(tr("New Cutter"), QMessageBox::AcceptRole);
     confirm->setObjectName(u"newCutterButton"_s);
     box.setDefaultButton(QMessageBox::Cancel);
@@ -574,6 +576,7 @@ void MainWindow::newCutter()
     ended.at = QDateTime::currentDateTimeUtc();
     ended.kind = RecordingKind::NewCutter;
     ended.oldTlo = tool->measuredTlo;
+    ended.referenceMz = tool->referenceMz;
     if (auto r = m_document->record(ended); !r) {
         showError(tr("Cannot put in a new cutter"), r.error().text());
         return;

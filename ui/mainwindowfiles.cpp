@@ -204,7 +204,8 @@ bool MainWindow::importCamLibrary(const QString &path)
             if (without.size() > 10)
                 names << u"…"_s;
             QMessageBox box(QMessageBox::Question, tr("Which unit?"),
-                tr("%1 in %2 give no unit (Fusion writes \"unit\" on every tool). Their diameters and "
+                tr("Tools in %2 without a unit (Fusion writes \"unit\" on every tool): %1. Their diameters "
+                   "and "
                    "lengths "
                    "are read in the unit you choose; the preview shows each of them before anything changes.")
                     .arg(names.join(u", "_s), QFileInfo(path).fileName()),
@@ -242,6 +243,7 @@ bool MainWindow::importCamLibrary(const QString &path)
         ended.at = QDateTime::currentDateTimeUtc();
         ended.kind = RecordingKind::NewCutter;
         ended.oldTlo = changed.endedTlo;
+        ended.referenceMz = changed.endedReferenceMz;
         recordHistory(ended);
     }
     if (!preview.value().newCutters().isEmpty())

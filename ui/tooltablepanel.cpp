@@ -72,21 +72,23 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
         header->visualIndex(ToolTableModel::MeasuredAtColumn), ToolTableModel::DescriptionColumn + 2);
     header->setSectionsMovable(true);
     connect(model, &QAbstractItemModel::modelReset, this, &ToolTablePanel::fitColumns);
-    // A TLO that grows a mark ("— BROKEN?") is never cut off: its column widens to it.
+    // A TLO that grows a mark ("— BROKEN?") and a tool life that comes from the history are never cut off:
+    // their columns widen to them.
     connect(model, &QAbstractItemModel::dataChanged, this,
         [this](const QModelIndex &topLeft, const QModelIndex &bottomRight) {
-            if (topLeft.column() > ToolTableModel::MeasuredTloColumn
-                || bottomRight.column() < ToolTableModel::MeasuredTloColumn)
-                return;
-            int needed = 0;
-            for (int row = topLeft.row(); row <= bottomRight.row(); ++row) {
-                const QModelIndex shown
-                    = m_proxy->mapFromSource(topLeft.model()->index(row, ToolTableModel::MeasuredTloColumn));
-                if (shown.isValid())
-                    needed = std::max(needed, m_view->sizeHintForIndex(shown).width());
+            for (const int column :
+                { int(ToolTableModel::MeasuredTloColumn), int(ToolTableModel::ToolLifeColumn) }) {
+                if (topLeft.column() > column || bottomRight.column() < column)
+                    continue;
+                int needed = 0;
+                for (int row = topLeft.row(); row <= bottomRight.row(); ++row) {
+                    const QModelIndex shown = m_proxy->mapFromSource(topLeft.model()->index(row, column));
+                    if (shown.isValid())
+                        needed = std::max(needed, m_view->sizeHintForIndex(shown).width());
+                }
+                if (needed > m_view->columnWidth(column))
+                    m_view->setColumnWidth(column, needed);
             }
-            if (needed > m_view->columnWidth(ToolTableModel::MeasuredTloColumn))
-                m_view->setColumnWidth(ToolTableModel::MeasuredTloColumn, needed);
         });
     fitColumns();
 

@@ -187,6 +187,7 @@ int importTools(Invocation &call)
             r.at = QDateTime::currentDateTimeUtc();
             r.kind = RecordingKind::NewCutter;
             r.oldTlo = tool.endedTlo;
+            r.referenceMz = tool.endedReferenceMz;
             ended << historyEvent(r, machine);
         }
         if (auto written = history.value()->append(ended); !written)

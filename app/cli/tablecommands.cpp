@@ -12,6 +12,7 @@
 #include "model/limits.h"
 #include "model/numberformat.h"
 #include "model/textparsing.h"
+#include "model/toollife.h"
 #include "model/toolvalidation.h"
 
 using namespace Qt::StringLiterals;
@@ -54,6 +55,11 @@ QJsonObject toolJson(const Tool &tool)
         { u"break_test_failed"_s, tool.breakTestFailed },
         { u"reference_mz"_s, tool.referenceMz ? QJsonValue(*tool.referenceMz) : QJsonValue() },
         { u"notes"_s, tool.notes },
+        { u"cutter_type"_s, tool.cutterType.isEmpty() ? QJsonValue() : QJsonValue(tool.cutterType) },
+        { u"overall_length"_s, tool.overallLength ? QJsonValue(*tool.overallLength) : QJsonValue() },
+        { u"life_limit_minutes"_s,
+            tool.lifeLimitMinutes ? QJsonValue(*tool.lifeLimitMinutes) : QJsonValue() },
+        { u"life_limit_uses"_s, tool.lifeLimitUses ? QJsonValue(*tool.lifeLimitUses) : QJsonValue() },
     };
     return o;
 }
@@ -111,6 +117,8 @@ int showTable(Invocation &call)
             call.out << "        TLO set by hand, not measured\n";
         if (tool.breakTestFailed)
             call.out << "        FAILED ITS LAST BREAK TEST: check it, then probe it again\n";
+        if (const QString life = ToolLife::limitText(tool); !life.isEmpty())
+            call.out << "        life limit: " << life << '\n';
     }
     call.out.flush();
     return Success;
@@ -185,6 +193,13 @@ int newCutter(Invocation &call)
         return fail(call, changed.error().text(), BadInput);
     if (auto saved = saveTableFile(path, table.value(), *format); !saved)
         return fail(call, saved.error().text(), BadInput);
+    // A LinuxCNC table holds no TLO or mark, and its wear is in the length: nothing there could end.
+    if (*table.value().find(tool) == old)
+        call.err
+            << "toffee-cli: note: " << path << " holds nothing of T" << tool
+            << "'s old cutter to end (no measured TLO, wear or break mark); only the history records the "
+               "new cutter."
+            << Qt::endl;
     QString history = u"not_recorded"_s;
     if (library.value()) {
         const QString machine
@@ -194,6 +209,7 @@ int newCutter(Invocation &call)
         ended.at = QDateTime::currentDateTimeUtc();
         ended.kind = RecordingKind::NewCutter;
         ended.oldTlo = old.measuredTlo;
+        ended.referenceMz = old.referenceMz; // what the old TLO was measured against
         const HistoryEvent event = historyEvent(ended, machine);
         const auto kept = Spool().keep(library.value()->location(), { event });
         if (auto written = library.value()->append({ event }); written) {
@@ -214,6 +230,8 @@ int newCutter(Invocation &call)
     if (call.json) {
         printJson(call,
             QJsonObject { { u"tool"_s, tool }, { u"table"_s, path },
+                { u"machine"_s,
+                    call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName },
                 { u"old_tlo"_s, old.measuredTlo ? QJsonValue(*old.measuredTlo) : QJsonValue() },
                 { u"old_length_wear"_s, old.lengthWear }, { u"old_radius_wear"_s, old.radiusWear },
                 { u"old_break_test_failed"_s, old.breakTestFailed }, { u"history"_s, history } });

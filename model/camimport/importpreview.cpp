@@ -230,10 +230,10 @@ Result<ImportPreview> ImportPreview::build(
         if (without.size() > 10)
             names << u"…"_s;
         return Error {
-            tr("%1 in this library give no \"unit\" (millimeters or inches), so their diameters and "
-               "lengths cannot be read. Fusion writes one on every tool: export the library from "
-               "Fusion again, or add \"unit\": \"millimeters\" (or \"inches\") to each of them, or "
-               "say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).")
+            tr("Tools in this library without \"unit\" (millimeters or inches): %1. Their diameters and "
+               "lengths cannot be read. Fusion writes one on every tool: export the library from Fusion "
+               "again, or add \"unit\": \"millimeters\" (or \"inches\") to each, or say which unit they "
+               "are in (the window asks; toffee-cli import --cam-units mm|in).")
                 .arg(names.join(u", "_s)),
             0, library.path
         };
@@ -269,6 +269,7 @@ Result<ImportPreview> ImportPreview::build(
         if (!cutter.isEmpty()) {
             item.newCutter = true;
             item.endedTlo = existing->measuredTlo;
+            item.endedReferenceMz = existing->referenceMz;
             item.notes << (existing->measuredTlo
                     ? tr("a new cutter (%1): the old cutter's TLO %2 %3, its wear and break mark end; "
                          "measure it "

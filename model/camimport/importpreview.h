@@ -27,6 +27,7 @@ struct ImportedTool
     // wear and break mark. `fields` says why, first.
     bool newCutter = false;
     std::optional<double> endedTlo = std::nullopt;
+    std::optional<double> endedReferenceMz = std::nullopt; // what that TLO was measured against
 };
 
 // A CAM library merged into a table, before anything is applied: what happens to each of the library's tools,

@@ -133,6 +133,14 @@ template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &fact
                     .arg(displayNumber(tlo, m_setup.tableUnits));
             });
     }
+    if (facts.newCutterAt.isValid())
+        found(FindingKind::StaleTlo, [this, n, &facts] {
+            return tr(
+                "The history says T%1 got a new cutter %2, after the table's TLO was measured: that TLO is "
+                "the old cutter's. Probe T%1 before the job.")
+                .arg(n)
+                .arg(ageText(facts.newCutterAt, m_setup.now));
+        });
     if (facts.libraryTlo)
         found(FindingKind::StaleTlo, [this, n, &facts] {
             return tr("The history has a newer measurement of T%1 (%2, %3) than the table's: the table was "
@@ -161,13 +169,25 @@ void JobChecker::lifeFinding(const JobTool &tool, const ToolFacts &facts)
         return;
     const int n = tool.number;
     const double after = facts.used.seconds + tool.cuttingSeconds;
+    if (facts.lifeLimitMinutes && facts.used.seconds > *facts.lifeLimitMinutes * 60.0 + 1e-6) {
+        noteForTool(FindingKind::LifeExceeded, tool,
+            tr("T%1 is past its life limit of %2 min already: its cutter has cut %3 since it went in, and "
+               "the "
+               "program cuts %4 more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or "
+               "raise "
+               "the limit.")
+                .arg(n)
+                .arg(formatNumber(*facts.lifeLimitMinutes, NumberFormat::upTo(3)))
+                .arg(durationText(facts.used.seconds), durationText(tool.cuttingSeconds)));
+        return;
+    }
     if (facts.lifeLimitMinutes && after > *facts.lifeLimitMinutes * 60.0 + 1e-6) {
         noteForTool(FindingKind::LifeExceeded, tool,
             tr("T%1 would pass its life limit of %2 min in this program: its cutter has cut %3 since it went "
                "in, and the program cuts %4 more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli "
                "new-cutter %1) or raise the limit.")
                 .arg(n)
-                .arg(formatNumber(*facts.lifeLimitMinutes, NumberFormat::upTo(1)))
+                .arg(formatNumber(*facts.lifeLimitMinutes, NumberFormat::upTo(3)))
                 .arg(durationText(facts.used.seconds), durationText(tool.cuttingSeconds)));
         return;
     }

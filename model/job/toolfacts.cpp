@@ -118,12 +118,16 @@ Result<void> addLibraryFacts(
         auto tested = newest(library, machine, tool, { EventKind::BreakTest });
         if (!tested)
             return tested.error();
-        // A new cutter ends what the history knew of the old one: its TLO and its break tests. The table's
-        // own values are the table's (a new cutter cleared them; an undo put them back on purpose).
+        // A new cutter ends what the history knew of the old one: its TLO and its break tests. A TLO the
+        // table still holds from before it is the old cutter's, and said so (the job check warns).
         if (measured.value() && measured.value()->kind == EventKind::NewCutter) {
-            if (tested.value() && tested.value()->at <= measured.value()->at)
+            const QDateTime changed = measured.value()->at;
+            if (tested.value() && tested.value()->at <= changed)
                 tested.value().reset();
             measured.value().reset();
+            if (const auto it = facts.find(tool); it != facts.end() && it->measuredTlo
+                && !(it->measuredAt.isValid() && it->measuredAt > changed))
+                it->newCutterAt = changed;
         }
         if (const auto it = facts.find(tool);
             it != facts.end() && (it->lifeLimitMinutes || it->lifeLimitUses)) {

@@ -29,6 +29,9 @@ struct ToolFacts
     // The library's newest measurement of the tool, when it differs from the TLO above (the table was not
     // saved after it).
     std::optional<double> libraryTlo;
+    // The history says another cutter went in at this time, after the table's TLO was measured (the table
+    // was not saved after the new cutter, or it was undone): that TLO is the old cutter's.
+    QDateTime newCutterAt;
     QDateTime libraryMeasuredAt;
     // The last break test failed and the tool was not measured since (the table's mark, or the library's
     // newest break test when no probe came after it).

@@ -101,6 +101,7 @@ private Q_SLOTS:
         QCOMPARE(history.size(), 1);
         QCOMPARE(history.front().kind, EventKind::NewCutter);
         QCOMPARE(history.front().oldTlo, std::optional(-30.2));
+        QCOMPARE(history.front().referenceMz, std::optional(-101.5)); // what that TLO was measured against
         run = cli({ u"--json"_s, u"history"_s, u"--tool"_s, u"3"_s, u"--library"_s, library });
         QCOMPARE(json(run).value(u"events"_s).toArray().at(0).toObject().value(u"kind"_s).toString(),
             u"new_cutter"_s);
@@ -188,7 +189,8 @@ private Q_SLOTS:
         // Without an answer: what the file needs and how to go on, nothing written.
         Run run = cli({ u"import"_s, source, u"--into"_s, table });
         QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.contains("T8 in this library give no \"unit\""), run.err.constData());
+        QVERIFY2(run.err.contains("Tools in this library without \"unit\" (millimeters or inches): T8."),
+            run.err.constData());
         QVERIFY(run.err.contains("--cam-units mm|in"));
         QCOMPARE(Test::readFile(table), before);
         // With one: the preview first (a dry run), the tool read in inches, and said so.
@@ -281,8 +283,21 @@ private Q_SLOTS:
         QVERIFY(Test::readFile(csv).split('\n').front().endsWith(
             "cutter_type,overall_length,life_limit_minutes,life_limit_uses"));
         QCOMPARE(loadTableFile(csv).value().find(3)->lifeLimitUses, std::optional(40));
-        const Run run = cli({ u"convert"_s, csv, dir.filePath(u"shop.tbl"_s) });
+        Run run = cli({ u"--json"_s, u"show"_s, csv });
+        const QJsonObject shown = json(run).value(u"tools"_s).toArray().at(1).toObject();
+        QCOMPARE(shown.value(u"life_limit_uses"_s).toInt(), 40);
+        QCOMPARE(shown.value(u"cutter_type"_s).toString(), u"ball end mill"_s);
+        run = cli({ u"show"_s, csv });
+        QVERIFY2(run.out.contains("life limit: 90 min, 40 uses"), run.out.constData());
+        const QString tbl = dir.filePath(u"shop.tbl"_s);
+        run = cli({ u"convert"_s, csv, tbl });
         QVERIFY2(run.err.contains("no place for tool life limits"), run.err.constData());
+        // A LinuxCNC table holds nothing of an old cutter: said, and the history still records it.
+        run = cli(
+            { u"new-cutter"_s, u"3"_s, u"--table"_s, tbl, u"--library"_s, dir.filePath(u"l.sqlite"_s) });
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.err.contains("holds nothing of T3's old cutter to end"), run.err.constData());
+        QCOMPARE(events(dir.filePath(u"l.sqlite"_s), 3).size(), 1);
     }
 };
 

@@ -166,9 +166,21 @@ private Q_SLOTS:
         QCOMPARE(pointsOf(historyChart(s), u"Probes"_s), 0);
         auto *historyTable = s.window.historyDock()->findChild<QTableView *>(u"historyTable"_s);
         QCOMPARE(historyTable->model()->index(0, 1).data().toString(), u"new cutter (old one ended)"_s);
-        // Undo puts the table's values back (the history still says a new cutter went in).
+        // Undo puts the table's values back; the history still says a new cutter went in, and the job check
+        // says the TLO is the old cutter's.
         s.trigger(u"actionUndo"_s);
         QCOMPARE(s.table().find(2)->measuredTlo, std::optional(9.652));
+        {
+            QTemporaryDir jobs;
+            JobCheckDialog *undone
+                = s.window.openJobCheck(write(jobs, u"t2.nc"_s, "M6 T2\nG1 X10 F600\nM30\n"));
+            QVERIFY(QTest::qWaitFor([undone] { return !undone->isRunning() && undone->report(); }, 60000));
+            const auto found = undone->report()->findings;
+            QVERIFY(std::any_of(found.cbegin(), found.cend(), [](const Finding &f) {
+                return f.tool == 2 && f.message.contains(u"that TLO is the old cutter's"_s);
+            }));
+            undone->close();
+        }
         s.trigger(u"actionRedo"_s);
         QVERIFY(!s.table().find(2)->measuredTlo);
 
@@ -192,6 +204,9 @@ private Q_SLOTS:
             = write(dir, u"pocket.nc"_s, "G21 G90\nM6 T1\nG0 X0 Y0 Z0\nG1 X600 F600\nM30\n");
         QVERIFY(s.window.recordProgramRun(program));
         QTRY_COMPARE(s.cell(1, ToolTableModel::ToolLifeColumn), u"1 min of 1 min · 1 of 5 uses"_s);
+        // Read whole: the column is as wide as its text.
+        QVERIFY(view->columnWidth(ToolTableModel::ToolLifeColumn)
+            >= view->fontMetrics().horizontalAdvance(u"1 min of 1 min · 1 of 5 uses"_s));
         auto *model = s.window.document()->model();
         QCOMPARE(model->index(model->rowOfTool(1), ToolTableModel::ToolLifeColumn)
                      .data(Qt::ForegroundRole)
@@ -238,7 +253,9 @@ private Q_SLOTS:
             dialog->findChild<QAbstractButton *>(u"importButton"_s)->click();
         });
         QVERIFY(s.window.importFile(fusion));
-        QVERIFY2(unitQuestion.contains(u"T9 in shop.json give no unit"_s), qPrintable(unitQuestion));
+        QVERIFY2(unitQuestion.contains(
+                     u"Tools in shop.json without a unit (Fusion writes \"unit\" on every tool): T9."_s),
+            qPrintable(unitQuestion));
         QCOMPARE(s.table().find(9)->radiusGeometry, 3.175);
 
         // Connected and probing, the TLO strip keeps its height whatever its note says: the table never

@@ -107,9 +107,10 @@ private Q_SLOTS:
         // Without an answer: refused by name, saying what the file needs and how to go on.
         const auto refused = ImportPreview::build(ToolTable(), library);
         QVERIFY(!refused);
-        QVERIFY2(refused.error().message.startsWith(u"T3 in this library give no \"unit\""_s),
+        QVERIFY2(refused.error().message.startsWith(
+                     u"Tools in this library without \"unit\" (millimeters or inches): T3."_s),
             qPrintable(refused.error().message));
-        QVERIFY(refused.error().message.contains(u"add \"unit\": \"millimeters\""_s));
+        QVERIFY(refused.error().message.contains(u"add \"unit\": \"millimeters\" (or \"inches\") to each"_s));
         QVERIFY(refused.error().message.contains(u"--cam-units mm|in"_s));
         // In inches, as the operator said: 6 in across, a 3 in radius in an inch table, with a note.
         const auto inches = ImportPreview::build(ToolTable(Units::Inch), library, Units::Inch);
