@@ -196,6 +196,14 @@ private:
                     heard += socket.readAll();
                 if (heard.contains("<") && heard.indexOf('>', heard.indexOf('<')) >= 0) {
                     m_startupMs = clock.elapsed();
+                    // Read what is still coming and close only then: the simulator exits when a write to its
+                    // client fails (grblHAL_sim's simulator.c, exit(-10)), and a report to a '?' sent just
+                    // before the close was such a write; the next client was then refused.
+                    while (socket.waitForReadyRead(150))
+                        socket.readAll();
+                    socket.disconnectFromHost();
+                    if (socket.state() != QAbstractSocket::UnconnectedState)
+                        socket.waitForDisconnected(500);
                     // grblHAL's report has its buffer field (a Carvera's, another test's, has none), and the
                     // port must be this grblHAL's: another test's grblHAL may hold it, and this one fail to
                     // bind.
