@@ -187,12 +187,30 @@ public:
         // Started from inside the loop, so that a failure reported at once still ends it.
         QTimer::singleShot(0, &m_loop, [this] { m_connection.connectTo(m_options.target); });
         m_loop.exec();
+        closeQuietly();
         m_connection.disconnectFromMachine();
         return m_exitCode;
     }
 
 private:
     using Done = MachineConnection::Done;
+
+    // No more status queries, and the answer to one already sent is let in (at most 200 ms) before the link
+    // closes: a controller that writes its report to a client already gone may take it badly (grblHAL's
+    // simulator exits), and a closing socket with unread data resets the connection.
+    void closeQuietly()
+    {
+        MachineLink *link = m_connection.link();
+        if (!link || m_connection.state() != MachineConnection::State::Connected)
+            return;
+        link->setPollInterval(0);
+        if (!link->isStatusRequested())
+            return;
+        QEventLoop quiet;
+        QTimer::singleShot(200, &quiet, &QEventLoop::quit);
+        QObject::connect(link, &MachineLink::statusChanged, &quiet, &QEventLoop::quit);
+        quiet.exec();
+    }
 
     void operate();
     // push-offsets: the table's TLOs into the controller's own table; pull-offsets: back into the file.

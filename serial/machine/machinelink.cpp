@@ -141,6 +141,8 @@ void MachineLink::sendRealtime(char c)
 
 void MachineLink::requestStatus()
 {
+    if (isOpen())
+        m_statusRequested = true;
     sendRealtime('?');
 }
 
@@ -168,6 +170,7 @@ void MachineLink::handleLine(const QByteArray &line)
         if (auto status = m_grammar.status(line, m_status)) {
             m_status = *status;
             m_statusClock.start();
+            m_statusRequested = false;
             Q_EMIT statusChanged(*status);
         }
         return;

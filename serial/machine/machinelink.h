@@ -101,6 +101,8 @@ public:
 
     [[nodiscard]] const std::optional<MachineStatus> &lastStatus() const { return m_status; }
     // Milliseconds since the last good status report, or -1 when there has been none.
+    // A status query ('?') was sent and its report has not come yet.
+    [[nodiscard]] bool isStatusRequested() const { return m_statusRequested; }
     [[nodiscard]] qint64 statusAgeMs() const
     {
         return m_statusClock.isValid() ? m_statusClock.elapsed() : -1;
@@ -159,6 +161,7 @@ private:
     int m_timeoutOverride = 0;
     std::optional<MachineStatus> m_status;
     QElapsedTimer m_statusClock;
+    bool m_statusRequested = false;
 };
 
 } // namespace Toffee
