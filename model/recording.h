@@ -32,6 +32,19 @@ struct Recording
     std::optional<double> tolerance = std::nullopt;
     std::optional<double> oldTlo = std::nullopt;
     std::optional<double> newTlo = std::nullopt;
+
+    // Another cutter went into `tool` now: the old cutter's TLO and the reference it was measured against.
+    [[nodiscard]] static Recording newCutter(
+        int tool, std::optional<double> oldTlo, std::optional<double> oldReferenceMz)
+    {
+        Recording r;
+        r.tool = tool;
+        r.at = QDateTime::currentDateTimeUtc();
+        r.kind = RecordingKind::NewCutter;
+        r.oldTlo = oldTlo;
+        r.referenceMz = oldReferenceMz;
+        return r;
+    }
 };
 
 } // namespace Toffee

@@ -571,13 +571,7 @@ void MainWindow::newCutter()
     box.exec();
     if (box.clickedButton() != confirm)
         return;
-    Recording ended;
-    ended.tool = number;
-    ended.at = QDateTime::currentDateTimeUtc();
-    ended.kind = RecordingKind::NewCutter;
-    ended.oldTlo = tool->measuredTlo;
-    ended.referenceMz = tool->referenceMz;
-    if (auto r = m_document->record(ended); !r) {
+    if (auto r = m_document->record(Recording::newCutter(number, tool->measuredTlo, tool->referenceMz)); !r) {
         showError(tr("Cannot put in a new cutter"), r.error().text());
         return;
     }

@@ -197,18 +197,13 @@ bool MainWindow::importCamLibrary(const QString &path)
     // Tools that give no unit: the operator says which, or nothing is imported; never a guess.
     std::optional<Units> assumed;
     if (library) {
-        if (const QList<int> without = ImportPreview::toolsWithoutUnit(library.value()); !without.isEmpty()) {
-            QStringList names;
-            for (int n : without.first(std::min<qsizetype>(without.size(), 10)))
-                names << u"T"_s + QString::number(n);
-            if (without.size() > 10)
-                names << u"…"_s;
+        if (const QString names = ImportPreview::toolsWithoutUnitNamed(library.value()); !names.isEmpty()) {
             QMessageBox box(QMessageBox::Question, tr("Which unit?"),
                 tr("Tools in %2 without a unit (Fusion writes \"unit\" on every tool): %1. Their diameters "
                    "and "
                    "lengths "
                    "are read in the unit you choose; the preview shows each of them before anything changes.")
-                    .arg(names.join(u", "_s), QFileInfo(path).fileName()),
+                    .arg(names, QFileInfo(path).fileName()),
                 QMessageBox::Cancel, this);
             box.setObjectName(u"camUnitsBox"_s);
             QPushButton *mm = box.addButton(tr("Millimetres"), QMessageBox::AcceptRole);
@@ -237,15 +232,8 @@ bool MainWindow::importCamLibrary(const QString &path)
     m_document->replaceTable(
         preview.value().merged(), tr("Import tools from %1").arg(QFileInfo(path).fileName()));
     // A tool whose cutter the library changed: the old cutter ends in the history too.
-    for (const ImportedTool &changed : preview.value().newCutters()) {
-        Recording ended;
-        ended.tool = changed.number;
-        ended.at = QDateTime::currentDateTimeUtc();
-        ended.kind = RecordingKind::NewCutter;
-        ended.oldTlo = changed.endedTlo;
-        ended.referenceMz = changed.endedReferenceMz;
-        recordHistory(ended);
-    }
+    for (const ImportedTool &changed : preview.value().newCutters())
+        recordHistory(Recording::newCutter(changed.number, changed.endedTlo, changed.endedReferenceMz));
     if (!preview.value().newCutters().isEmpty())
         refreshToolLife();
     statusBar()->showMessage(tr("Imported from %1: %2").arg(path, preview.value().summary()), 5000);

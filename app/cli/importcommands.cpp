@@ -181,15 +181,9 @@ int importTools(Invocation &call)
         const QString machine
             = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
         QList<HistoryEvent> ended;
-        for (const ImportedTool &tool : p.newCutters()) {
-            Recording r;
-            r.tool = tool.number;
-            r.at = QDateTime::currentDateTimeUtc();
-            r.kind = RecordingKind::NewCutter;
-            r.oldTlo = tool.endedTlo;
-            r.referenceMz = tool.endedReferenceMz;
-            ended << historyEvent(r, machine);
-        }
+        for (const ImportedTool &tool : p.newCutters())
+            ended << historyEvent(
+                Recording::newCutter(tool.number, tool.endedTlo, tool.endedReferenceMz), machine);
         if (auto written = history.value()->append(ended); !written)
             call.err << "toffee-cli: warning: the table is written, but the history could not take the new "
                         "cutters: "

@@ -204,13 +204,8 @@ int newCutter(Invocation &call)
     if (library.value()) {
         const QString machine
             = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
-        Recording ended;
-        ended.tool = tool;
-        ended.at = QDateTime::currentDateTimeUtc();
-        ended.kind = RecordingKind::NewCutter;
-        ended.oldTlo = old.measuredTlo;
-        ended.referenceMz = old.referenceMz; // what the old TLO was measured against
-        const HistoryEvent event = historyEvent(ended, machine);
+        const HistoryEvent event
+            = historyEvent(Recording::newCutter(tool, old.measuredTlo, old.referenceMz), machine);
         const auto kept = Spool().keep(library.value()->location(), { event });
         if (auto written = library.value()->append({ event }); written) {
             history = u"recorded"_s;

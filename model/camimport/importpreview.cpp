@@ -220,21 +220,27 @@ QList<int> ImportPreview::toolsWithoutUnit(const CamLibrary &library)
     return out;
 }
 
+QString ImportPreview::toolsWithoutUnitNamed(const CamLibrary &library)
+{
+    const QList<int> without = toolsWithoutUnit(library);
+    QStringList names;
+    for (int n : without.first(std::min<qsizetype>(without.size(), 10)))
+        names << u"T"_s + QString::number(n);
+    if (without.size() > 10)
+        names << u"…"_s;
+    return names.join(u", "_s);
+}
+
 Result<ImportPreview> ImportPreview::build(
     const ToolTable &current, const CamLibrary &library, std::optional<Units> assumed)
 {
-    if (const QList<int> without = toolsWithoutUnit(library); !without.isEmpty() && !assumed) {
-        QStringList names;
-        for (int n : without.first(std::min<qsizetype>(without.size(), 10)))
-            names << u"T"_s + QString::number(n);
-        if (without.size() > 10)
-            names << u"…"_s;
+    if (const QString names = toolsWithoutUnitNamed(library); !names.isEmpty() && !assumed) {
         return Error {
             tr("Tools in this library without \"unit\" (millimeters or inches): %1. Their diameters and "
                "lengths cannot be read. Fusion writes one on every tool: export the library from Fusion "
                "again, or add \"unit\": \"millimeters\" (or \"inches\") to each, or say which unit they "
                "are in (the window asks; toffee-cli import --cam-units mm|in).")
-                .arg(names.join(u", "_s)),
+                .arg(names),
             0, library.path
         };
     }

@@ -51,6 +51,8 @@ public:
         const ToolTable &current, const CamLibrary &library, std::optional<Units> assumed = std::nullopt);
     // The numbers of the library's tools that give no unit.
     [[nodiscard]] static QList<int> toolsWithoutUnit(const CamLibrary &library);
+    // The same named for people: "T3, T5", the first ten and "…" after them; empty when none.
+    [[nodiscard]] static QString toolsWithoutUnitNamed(const CamLibrary &library);
 
     [[nodiscard]] const QList<ImportedTool> &tools() const { return m_tools; }
     [[nodiscard]] const ToolTable &merged() const { return m_merged; }

@@ -45,6 +45,16 @@ std::optional<EventKind> eventKindFromName(QStringView name)
     return std::nullopt;
 }
 
+QDateTime cutterSince(const QList<HistoryEvent> &events)
+{
+    QDateTime since;
+    for (const HistoryEvent &e : events) {
+        if (e.kind == EventKind::NewCutter && (!since.isValid() || e.at > since))
+            since = e.at;
+    }
+    return since;
+}
+
 HistoryEvent historyEvent(const Recording &r, const QString &machine)
 {
     HistoryEvent e;

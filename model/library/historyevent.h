@@ -44,6 +44,10 @@ struct HistoryEvent
     friend bool operator==(const HistoryEvent &, const HistoryEvent &) = default;
 };
 
+// When the cutter in the tool's pocket went in: the newest NewCutter among one tool's `events`; invalid when
+// none (the cutter the history began with).
+[[nodiscard]] QDateTime cutterSince(const QList<HistoryEvent> &events);
+
 // The history's view of an operation the window or toffee-cli recorded, on `machine`.
 [[nodiscard]] HistoryEvent historyEvent(const Recording &recording, const QString &machine);
 

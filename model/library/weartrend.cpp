@@ -13,11 +13,7 @@ QList<TrendPoint> WearTrend::pointsOf(
     const QList<HistoryEvent> &events, const QList<ToolUse> &uses, bool *overCuttingTime)
 {
     // Only the cutter in the pocket now: a new cutter ends the old one's trend and its cutting time.
-    QDateTime since;
-    for (const HistoryEvent &e : events) {
-        if (e.kind == EventKind::NewCutter && (!since.isValid() || e.at > since))
-            since = e.at;
-    }
+    const QDateTime since = cutterSince(events);
     const bool cutting = std::any_of(
         uses.cbegin(), uses.cend(), [&since](const ToolUse &u) { return !since.isValid() || u.at > since; });
     if (overCuttingTime)

@@ -76,16 +76,12 @@ QList<QAbstractSeries *> measurementSeries(const HistoryChartInput &in, QList<QP
     auto *manual = markers(in.words.manual, MarkerShape::Square, QColor(0x98, 0x6a, 0x44), 9);
     auto *old = markers(in.words.oldCutter, MarkerShape::Circle, QColor(0x9a, 0x99, 0x96), 7);
     // The probes of a cutter that a new one ended are drawn apart, and are not on the trend.
-    QDateTime cutterSince;
-    for (const HistoryEvent &e : *in.events) {
-        if (e.kind == EventKind::NewCutter && (!cutterSince.isValid() || e.at > cutterSince))
-            cutterSince = e.at;
-    }
+    const QDateTime since = cutterSince(*in.events);
     for (const HistoryEvent &e : *in.events) {
         const qreal t = qreal(e.at.toMSecsSinceEpoch());
         if (e.kind == EventKind::BreakTest && (e.newTlo || e.tlo))
             (e.failed.value_or(false) ? failed : passed)->append(t, e.newTlo.value_or(*e.tlo));
-        else if (e.kind == EventKind::Probe && e.tlo && cutterSince.isValid() && e.at <= cutterSince)
+        else if (e.kind == EventKind::Probe && e.tlo && since.isValid() && e.at <= since)
             old->append(t, *e.tlo);
         else if (e.kind == EventKind::Probe && e.tlo)
             probeTimes.append({ t, *e.tlo });
