@@ -5,6 +5,7 @@
 
 #include <QDateTime>
 
+#include "model/clock.h"
 #include "model/tool.h"
 
 namespace Toffee {
@@ -39,7 +40,7 @@ struct Recording
     {
         Recording r;
         r.tool = tool;
-        r.at = QDateTime::currentDateTimeUtc();
+        r.at = Clock::now();
         r.kind = RecordingKind::NewCutter;
         r.oldTlo = oldTlo;
         r.referenceMz = oldReferenceMz;

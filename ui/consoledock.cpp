@@ -8,6 +8,7 @@
 #include <QTime>
 #include <QVBoxLayout>
 
+#include "model/clock.h"
 #include "model/document/tooldocument.h"
 #include "serial/carvera/carverareplies.h"
 #include "serial/consolecheck.h"
@@ -61,8 +62,8 @@ ConsoleDock::ConsoleDock(MachineConnection *connection, ToolDocument *document, 
 void ConsoleDock::note(const QString &text)
 {
     // Toffee's own words, set apart from what the machine said ("<") and what was sent (">").
-    auto *item
-        = new QListWidgetItem(QTime::currentTime().toString(u"HH:mm:ss.zzz"_s) + u"  · "_s + text, m_log);
+    auto *item = new QListWidgetItem(
+        Clock::now().toLocalTime().time().toString(u"HH:mm:ss.zzz"_s) + u"  · "_s + text, m_log);
     QFont italic = item->font();
     italic.setItalic(true);
     item->setFont(italic);
@@ -80,8 +81,8 @@ void ConsoleDock::append(const QByteArray &line, bool outgoing)
     const QString shown = line.size() <= kMaxLineChars
         ? QString::fromUtf8(line)
         : QString::fromUtf8(line.first(kMaxLineChars)) + tr("… (%1 bytes in all)").arg(line.size());
-    const QString text
-        = QTime::currentTime().toString(u"HH:mm:ss.zzz"_s) + (outgoing ? u"  > "_s : u"  < "_s) + shown;
+    const QString text = Clock::now().toLocalTime().time().toString(u"HH:mm:ss.zzz"_s)
+        + (outgoing ? u"  > "_s : u"  < "_s) + shown;
     auto *item = new QListWidgetItem(text, m_log);
     if (!outgoing && (line.startsWith("ALARM") || line.startsWith("ERROR") || line.startsWith("error:")))
         item->setForeground(alarmColor(palette()));
@@ -157,9 +158,8 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
             const auto &tool = result.tool;
             const auto &tlo = result.tlo; // read from the reply once, by the connection
             if (setsTlo && tlo && tool && *tool >= 0) {
-                auto recorded = m_document->record(
-                    Recording { *tool, tlo->tlo(), TloSource::Manual, tlo->referenceMz, std::nullopt,
-                        QDateTime::currentDateTimeUtc(), RecordingKind::ManualSet, tlo->currentMz });
+                auto recorded = m_document->record(Recording { *tool, tlo->tlo(), TloSource::Manual,
+                    tlo->referenceMz, std::nullopt, Clock::now(), RecordingKind::ManualSet, tlo->currentMz });
                 note(recorded ? tr("recorded in the table: T%1 TLO %2, set by hand")
                                     .arg(*tool)
                                     .arg(millimetres(tlo->tlo()))
@@ -193,9 +193,9 @@ void ConsoleDock::recordProbe(std::optional<int> tool)
                      .arg(r.message));
             return;
         }
-        auto recorded = m_document->record(
-            Recording { *tool, r.tlo->tlo(), TloSource::Probe, r.tlo->knownReferenceMz(), std::nullopt,
-                QDateTime::currentDateTimeUtc(), RecordingKind::Probe, r.tlo->knownCurrentMz() });
+        auto recorded
+            = m_document->record(Recording { *tool, r.tlo->tlo(), TloSource::Probe, r.tlo->knownReferenceMz(),
+                std::nullopt, Clock::now(), RecordingKind::Probe, r.tlo->knownCurrentMz() });
         note(recorded
                 ? tr("recorded in the table: T%1 TLO %2, probed").arg(*tool).arg(millimetres(r.tlo->tlo()))
                 : tr("T%1 was probed but not recorded: %2").arg(*tool).arg(recorded.error().message));

@@ -19,6 +19,7 @@
 #include <QTextBlock>
 #include <QVBoxLayout>
 
+#include "model/clock.h"
 #include "model/job/jobcheck.h"
 #include "model/job/programexcerpt.h"
 #include "model/numberformat.h"
@@ -291,7 +292,7 @@ void JobCheckDialog::finished(bool cancelled)
 void JobCheckDialog::showReport()
 {
     const JobReport &r = *m_report;
-    m_toolsModel->setReport(r, QDateTime::currentDateTimeUtc());
+    m_toolsModel->setReport(r, Clock::now());
     m_findingsModel->setFindings(r.findings);
     m_tools->resizeColumnsToContents();
     for (int c = 0; c < m_findingsModel->columnCount(); ++c) {

@@ -2,6 +2,7 @@
 // What only some controllers need, in the window: a grblHAL machine's tool setter (Machine ▸ Tool Setter…)
 // and reference, given to it on connecting, and its own tool table pushed from the file or pulled into it
 // (Machine ▸ Push Offsets…, Pull Offsets…), each with a preview of the differences first.
+#include "model/clock.h"
 #include "ui/mainwindow.h"
 
 #include <cmath>
@@ -182,7 +183,7 @@ void MainWindow::pullOffsets()
             OffsetSyncDialog::Direction::Pull, controllerName(m_connection), rows, {}, this);
         if (dialog.exec() != QDialog::Accepted)
             return;
-        const QDateTime now = QDateTime::currentDateTimeUtc();
+        const QDateTime now = Clock::now();
         m_document->undoStack()->beginMacro(tr("Pull Offsets from %1").arg(controllerName(m_connection)));
         int taken = 0;
         QStringList failed;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Load Tool: a change to one tool (asked about first, naming what moves), measured or given its stored TLO,
 // and recorded; its Cancel, and the sequence's.
+#include "model/clock.h"
 #include "ui/rackpanel.h"
 
 #include <QCheckBox>
@@ -83,7 +84,7 @@ void RackPanel::loadTool(int tool, bool confirm)
     if (tool >= 0 && m_useStored->isChecked() && !m_rack->contains(tool)
         && m_connection->activeTool() != tool) {
         const auto facts = factsFromTable(m_document->table());
-        const auto restorable = restorableTlo(tool, facts.value(tool), QDateTime::currentDateTimeUtc(),
+        const auto restorable = restorableTlo(tool, facts.value(tool), Clock::now(),
             AppSettings().staleAfterDays(), machineReference(), ReferenceCheck::Required);
         if (restorable)
             stored = restorable.value();

@@ -16,6 +16,7 @@
 #include "app/cli/cli.h"
 #include "app/cli/interrupt.h"
 #include "app/cli/machineoptions.h"
+#include "model/clock.h"
 #include "model/formats/tablefile.h"
 #include "model/library/spool.h"
 #include "model/library/weartrend.h"
@@ -511,7 +512,7 @@ void MachineRun::pulled(const SessionResult &r)
     QJsonArray changes;
     int unchanged = 0;
     int empty = 0;
-    const QDateTime now = QDateTime::currentDateTimeUtc();
+    const QDateTime now = Clock::now();
     for (const PulledEntry &entry : planPull(*m_options.table, *r.controllerTools)) {
         unchanged += entry.action == PulledEntry::Action::Unchanged ? 1 : 0;
         empty += entry.action == PulledEntry::Action::Empty ? 1 : 0;

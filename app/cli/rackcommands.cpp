@@ -5,6 +5,7 @@
 #include <QJsonObject>
 
 #include "app/cli/machineoptions.h"
+#include "model/clock.h"
 #include "model/job/toolfacts.h"
 #include "model/numberformat.h"
 #include "model/timetext.h"
@@ -55,7 +56,7 @@ void showRack(Invocation &call, const MachineOptions &o, const MachineConnection
 {
     const FirmwareInfo firmware = connection.firmware();
     const auto spindle = connection.activeTool();
-    const QDateTime now = QDateTime::currentDateTimeUtc();
+    const QDateTime now = Clock::now();
     QJsonArray rackSlots;
     if (!call.json) {
         call.out << "Firmware: " << firmware.description()
@@ -202,8 +203,8 @@ std::optional<double> storedTloForChange(
     const std::optional<double> reference = offsets && offsets->referenceMz && *offsets->referenceMz != 0.0
         ? offsets->referenceMz
         : std::nullopt;
-    auto tlo = restorableTlo(o.tool, facts.value(o.tool), QDateTime::currentDateTimeUtc(), o.staleDays,
-        reference, ReferenceCheck::Required);
+    auto tlo = restorableTlo(
+        o.tool, facts.value(o.tool), Clock::now(), o.staleDays, reference, ReferenceCheck::Required);
     if (!tlo)
         return note(tlo.error().message);
     return tlo.value();

@@ -17,6 +17,7 @@
 #include <QStandardPaths>
 #include <QUuid>
 
+#include "model/clock.h"
 #include "model/document/tooldocument.h"
 #include "model/formats/fileio.h"
 #include "model/formats/jsonscanner.h"
@@ -122,7 +123,7 @@ bool quarantineFiles(const QDir &dir, const QString &id, bool withLock = false)
     if (!QDir().mkpath(target) || ::lstat(QFile::encodeName(target).constData(), &info) != 0
         || !S_ISDIR(info.st_mode))
         return false;
-    const QString stamp = QDateTime::currentDateTimeUtc().toString(u"yyyyMMdd-HHmmss"_s);
+    const QString stamp = Clock::now().toString(u"yyyyMMdd-HHmmss"_s);
     bool moved = true;
     for (const QFileInfo &file : entries(dir, id + u".*"_s)) {
         if (file.suffix() == u"lock" && !withLock)

@@ -6,6 +6,7 @@
 #include <QAbstractTableModel>
 #include <QHash>
 
+#include "model/clock.h"
 #include "model/toollife.h"
 #include "model/tooltable.h"
 
@@ -75,8 +76,7 @@ public:
     // refreshAges.
     void setStaleAfterDays(int days);
     [[nodiscard]] int staleAfterDays() const { return m_staleAfterDays; }
-    [[nodiscard]] bool isStale(
-        const Tool &tool, const QDateTime &now = QDateTime::currentDateTimeUtc()) const;
+    [[nodiscard]] bool isStale(const Tool &tool, const QDateTime &now = Clock::now()) const;
     void refreshAges();
     static constexpr int kDefaultStaleDays = 7;
 

@@ -9,6 +9,7 @@
 #include <QHash>
 #include <QList>
 
+#include "model/clock.h"
 #include "model/gcode/gcodeinterpreter.h"
 #include "model/job/jobreport.h"
 #include "model/job/toolbits.h"
@@ -36,7 +37,7 @@ struct JobCheckSetup
     // The tools the machine's rack holds: every other is a manual change. Empty: it has no rack; nothing: not
     // known (no finding either way).
     std::optional<QList<int>> rack;
-    QDateTime now = QDateTime::currentDateTimeUtc();
+    QDateTime now = Clock::now();
     // What the controller's own table holds (grblHAL's, read with $# on a connected machine): each tool's
     // TLO by number. Nothing: not read (no finding either way).
     std::optional<QHash<int, double>> controllerTlos;

@@ -9,6 +9,7 @@
 #include <QList>
 #include <QString>
 
+#include "model/clock.h"
 #include "model/gcode/gcodeinterpreter.h"
 #include "model/job/toolbits.h"
 #include "model/job/toolfacts.h"
@@ -31,7 +32,7 @@ struct PrepareOptions
     // The tools the machine's rack holds (it always measures those at a change); empty: no rack, every change
     // is manual.
     QList<int> rack;
-    QDateTime now = QDateTime::currentDateTimeUtc();
+    QDateTime now = Clock::now();
     // The machine's reference MCS Z, when it is known (the window, connected): a stored TLO measured against
     // another is not restored.
     std::optional<double> machineReferenceMz;

@@ -3,6 +3,7 @@
 
 #include <QUuid>
 
+#include "model/clock.h"
 #include "model/numberformat.h"
 
 using namespace Qt::StringLiterals;
@@ -61,7 +62,7 @@ HistoryEvent historyEvent(const Recording &r, const QString &machine)
     e.id = HistoryEvent::newId();
     e.machine = machine;
     e.tool = r.tool;
-    e.at = r.at.isValid() ? r.at.toUTC() : QDateTime::currentDateTimeUtc();
+    e.at = r.at.isValid() ? r.at.toUTC() : Clock::now();
     switch (r.kind) {
     case RecordingKind::Probe:
         e.kind = EventKind::Probe;

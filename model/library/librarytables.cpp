@@ -8,6 +8,7 @@
 #include <QSysInfo>
 #include <QVariant>
 
+#include "model/clock.h"
 #include "model/library/library.h"
 #include "model/library/rowreader.h"
 
@@ -79,7 +80,7 @@ Result<void> Library::announce(const QStringList &machines)
     QSqlQuery query(database());
     query.prepare(u"SELECT pg_notify(?, ?)"_s);
     // "machine<TAB>station<TAB>ms since the epoch": who changed which machine's table, and when it was said.
-    const QString tail = u'\t' + station() + u'\t' + QString::number(QDateTime::currentMSecsSinceEpoch());
+    const QString tail = u'\t' + station() + u'\t' + QString::number(Clock::now().toMSecsSinceEpoch());
     for (const QString &machine : machines) {
         query.addBindValue(QString(kChannel));
         query.addBindValue(QString(machine + tail));
@@ -202,8 +203,8 @@ Result<bool> Library::putRow(
               "number) VALUES (?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (machine, number) DO NOTHING"_s);
     for (const QVariant &v : { QVariant(currentVersion + 1), QVariant(write.tool ? 0 : 1),
              QVariant(write.tool ? QString::fromUtf8(toolData(*write.tool, units)) : u""_s),
-             tloOf(write.tool), QVariant(timeText(QDateTime::currentDateTimeUtc())), QVariant(station()),
-             QVariant(machine), QVariant(write.number) })
+             tloOf(write.tool), QVariant(timeText(Clock::now())), QVariant(station()), QVariant(machine),
+             QVariant(write.number) })
         query.addBindValue(v);
     if (exists)
         query.addBindValue(currentVersion);
@@ -229,7 +230,7 @@ Result<StoredTable> Library::createTable(const QString &machine, const ToolTable
                   "(machine) DO NOTHING"_s);
     query.addBindValue(machine);
     query.addBindValue(unitsSymbol(table.units()));
-    query.addBindValue(timeText(QDateTime::currentDateTimeUtc()));
+    query.addBindValue(timeText(Clock::now()));
     if (!query.exec())
         return fail(failure(tr("Adding %1's table").arg(machine), query));
     if (query.numRowsAffected() != 1)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/library/outbox.h"
 
+#include "model/clock.h"
+
 using namespace Qt::StringLiterals;
 
 namespace Toffee::Outbox {
@@ -8,8 +10,7 @@ namespace Toffee::Outbox {
 Result<void> keep(
     Library &outbox, const LibraryLocation &target, const QString &kind, const QByteArray &payload)
 {
-    return outbox.outboxAdd(
-        { HistoryEvent::newId(), target.text(), kind, payload, QDateTime::currentDateTimeUtc() });
+    return outbox.outboxAdd({ HistoryEvent::newId(), target.text(), kind, payload, Clock::now() });
 }
 
 Result<qsizetype> count(const Library &outbox, const LibraryLocation &target)

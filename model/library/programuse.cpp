@@ -3,6 +3,7 @@
 
 #include <QFileInfo>
 
+#include "model/clock.h"
 #include "model/formats/linereader.h"
 #include "model/gcode/gcodeinterpreter.h"
 
@@ -25,7 +26,7 @@ Result<ProgramUse> ProgramUse::read(const QString &path, Dialect dialect, const 
         return *reader.error();
     ProgramUse out;
     out.rapidMm = interpreter.rapidDistance();
-    const QDateTime now = QDateTime::currentDateTimeUtc();
+    const QDateTime now = Clock::now();
     for (const auto &[tool, usage] : interpreter.toolUsage()) {
         if (tool >= 0)
             out.uses.append({ HistoryEvent::newId(), machine, tool, now, QFileInfo(path).fileName(),

@@ -10,6 +10,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include "model/clock.h"
 #include "model/formats/fileio.h"
 #include "model/library/library.h"
 #include "model/library/outboxpayload.h"
@@ -39,8 +40,8 @@ Result<QString> Spool::keep(const LibraryLocation &target, const QList<HistoryEv
     if (!QDir().mkpath(m_folder))
         return Error { tr("The folder %1 cannot be made, so nothing can be kept there.").arg(m_folder) };
     // Named by the time, to the millisecond, so that a listing is oldest first; the id keeps two apart.
-    const QString name = QDateTime::currentDateTimeUtc().toString(u"yyyyMMdd'T'HHmmsszzz"_s) + u'-'
-        + HistoryEvent::newId() + u".json"_s;
+    const QString name
+        = Clock::now().toString(u"yyyyMMdd'T'HHmmsszzz"_s) + u'-' + HistoryEvent::newId() + u".json"_s;
     const QString path = QDir(m_folder).filePath(name);
     const QByteArray head = QJsonDocument(QJsonObject { { u"format"_s, QString(kFormat) },
                                               { u"version"_s, kVersion }, { u"library"_s, target.text() } })
@@ -108,8 +109,8 @@ void Spool::quarantine(const QString &path) const
     const QString folder = QDir(m_folder).filePath(u"quarantine"_s);
     if (!QDir().mkpath(folder))
         return; // left where it is: never deleted
-    const QString to = QDir(folder).filePath(
-        QDateTime::currentDateTimeUtc().toString(u"yyyyMMdd-HHmmss-"_s) + QFileInfo(path).fileName());
+    const QString to
+        = QDir(folder).filePath(Clock::now().toString(u"yyyyMMdd-HHmmss-"_s) + QFileInfo(path).fileName());
     (void)::rename(QFile::encodeName(path).constData(), QFile::encodeName(to).constData());
 }
 

@@ -7,6 +7,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include "model/clock.h"
 #include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "serial/transport/linetransport.h"
@@ -502,8 +503,8 @@ void MachineSession::changeToStoredTlo(int tool, double tlo, Done done)
                                 restored.tool = tool;
                                 if (r.ok() && r.tlo)
                                     restored.recording = Recording { tool, r.tlo->tlo(), TloSource::Probe,
-                                        r.tlo->knownReferenceMz(), std::nullopt,
-                                        QDateTime::currentDateTimeUtc(), RecordingKind::Restore };
+                                        r.tlo->knownReferenceMz(), std::nullopt, Clock::now(),
+                                        RecordingKind::Restore };
                                 done(restored);
                             }),
                 changed);

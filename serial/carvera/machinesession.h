@@ -4,6 +4,7 @@
 #include <functional>
 #include <optional>
 
+#include <QDeadlineTimer>
 #include <QObject>
 
 #include "model/limits.h"
@@ -88,7 +89,7 @@ private:
     // Polls until the machine is no longer running a command (a late answer of a timed-out command would
     // otherwise be taken for the next command's), then lets stray output settle. `next` gets false on
     // give-up.
-    void awaitIdle(qint64 deadlineMs, std::function<void(bool idle, const QString &state)> next);
+    void awaitIdle(QDeadlineTimer deadline, std::function<void(bool idle, const QString &state)> next);
     // `done`, called once: by the operation, or with a failure when `limitMs` have passed (the link is then
     // closed).
     [[nodiscard]] Done withDeadline(int limitMs, Done done);

@@ -3,7 +3,7 @@
 // read the status and the offsets, each within its time limit.
 #include "serial/carvera/machinesession.h"
 
-#include <QDateTime>
+#include <QDeadlineTimer>
 #include <QPointer>
 #include <QTimer>
 
@@ -28,20 +28,20 @@ QString seconds(qint64 ms)
 
 } // namespace
 
-void MachineSession::awaitIdle(qint64 deadlineMs, std::function<void(bool, const QString &)> next)
+void MachineSession::awaitIdle(QDeadlineTimer deadline, std::function<void(bool, const QString &)> next)
 {
-    awaitStatus(2000, [this, deadlineMs, next](std::optional<MachineStatus> status) {
+    awaitStatus(2000, [this, deadline, next](std::optional<MachineStatus> status) {
         const QString state = status ? status->state : QString();
         if (!isBusyState(state)) {
             QTimer::singleShot(150, this, [next, state] { next(true, state); });
             return;
         }
-        if (QDateTime::currentMSecsSinceEpoch() > deadlineMs || !m_link->isOpen()) {
+        if (deadline.hasExpired() || !m_link->isOpen()) {
             next(false, state);
             return;
         }
         QTimer::singleShot(
-            MachineLink::kPollIntervalMs, this, [this, deadlineMs, next] { awaitIdle(deadlineMs, next); });
+            MachineLink::kPollIntervalMs, this, [this, deadline, next] { awaitIdle(deadline, next); });
     });
 }
 
@@ -53,7 +53,7 @@ void MachineSession::connectToMachine(Done done)
     if (limitMs > 0)
         done = withDeadline(limitMs, std::move(done));
     const qint64 idleWaitMs = limitMs > 0 ? limitMs : MachineLink::kMotionTimeoutMs + 10000;
-    const qint64 idleDeadline = QDateTime::currentMSecsSinceEpoch() + idleWaitMs;
+    const QDeadlineTimer idleDeadline(idleWaitMs);
     auto afterOpen = [this, done, idleDeadline, idleWaitMs] {
         awaitIdle(idleDeadline, [this, done, idleWaitMs](bool idle, const QString &state) {
             if (!idle) {

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <QDateTime>
+#include <QDeadlineTimer>
 #include <QStringList>
 #include <QTimer>
 
@@ -602,7 +602,7 @@ void GrblHalController::changeTool(int tool, Done done, std::optional<double> st
     run("M6 T" + QByteArray::number(tool), kToolChangeTimeoutMs, done,
         [this, done, tool, storedTlo](const CommandReply &) {
             // A manual change holds in state Tool until the operator presses cycle start.
-            const qint64 deadline = QDateTime::currentMSecsSinceEpoch() + kToolChangeTimeoutMs;
+            const QDeadlineTimer deadline(kToolChangeTimeoutMs);
             auto told = std::make_shared<bool>(false);
             auto waitChanged = std::make_shared<std::function<void()>>();
             // Each poll holds the function; it holds itself only weakly, so it goes with the last poll.
@@ -610,7 +610,7 @@ void GrblHalController::changeTool(int tool, Done done, std::optional<double> st
                 awaitStatus(2000,
                     [this, done, tool, storedTlo, deadline, told, waitChanged = self.lock()](
                         std::optional<MachineStatus> s) {
-                        if (s && s->state == u"Tool" && QDateTime::currentMSecsSinceEpoch() < deadline) {
+                        if (s && s->state == u"Tool" && !deadline.hasExpired()) {
                             if (!std::exchange(*told, true))
                                 Q_EMIT waitingForToolChange(tool);
                             QTimer::singleShot(

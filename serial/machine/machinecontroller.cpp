@@ -7,6 +7,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include "model/clock.h"
 #include "model/numberformat.h"
 #include "serial/machine/machinelink.h"
 #include "serial/transport/linetransport.h"
@@ -69,7 +70,7 @@ MachineController::Done MachineController::recording(Done done, RecordingKind ki
         SessionResult recorded = r;
         const TloSource source = kind == RecordingKind::Probe ? TloSource::Probe : TloSource::Manual;
         recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, r.tlo->knownReferenceMz(),
-            std::nullopt, QDateTime::currentDateTimeUtc(), kind, r.tlo->knownCurrentMz() };
+            std::nullopt, Clock::now(), kind, r.tlo->knownCurrentMz() };
         done(recorded);
     };
 }
@@ -82,8 +83,8 @@ MachineController::Done MachineController::recordingVerdict(Done done)
             return done(r);
         SessionResult recorded = r;
         recorded.recording = Recording { *r.tool, std::nullopt, TloSource::Probe, std::nullopt, broken,
-            QDateTime::currentDateTimeUtc(), RecordingKind::BreakTest, std::nullopt, r.tolerance,
-            r.breakTest->oldTlo, r.breakTest->newTlo };
+            Clock::now(), RecordingKind::BreakTest, std::nullopt, r.tolerance, r.breakTest->oldTlo,
+            r.breakTest->newTlo };
         done(recorded);
     };
 }

@@ -128,6 +128,8 @@ private Q_SLOTS:
         QVERIFY(peer->writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 }, { 3, 0.0 } }));
         m_target = peer->cliTarget();
         QVERIFY(peer->ask("$#").contains("[TLO:0.000,0.000,0.000]"));
+        QCOMPARE(
+            peer->tableZ(2), std::optional(15.3)); // grblHAL kept its table: only the offset in force went
         run = machine({ u"restore"_s, u"2"_s });
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QCOMPARE(json(run)[u"tlo"_s].toDouble(), 15.3);

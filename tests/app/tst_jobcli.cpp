@@ -12,6 +12,7 @@
 
 #include "tests/support/processes.h"
 #include "tests/support/programs.h"
+#include "tests/support/testclock.h"
 
 using namespace Qt::StringLiterals;
 using namespace Toffee::Test;
@@ -86,7 +87,11 @@ class TestJobCli : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
-    void initTestCase() { qputenv("HOME", m_home.path().toUtf8()); }
+    void initTestCase()
+    {
+        qputenv("HOME", m_home.path().toUtf8());
+        setClock(exampleMorningAfter()); // the example's TLOs a day old, whatever day it is
+    }
 
     void exitsByTheWorstFinding_data()
     {

@@ -227,9 +227,11 @@ private Q_SLOTS:
     }
 
     // Switched off and on with its EEPROM kept: the controller forgets the tool in the spindle and its offset
-    // (what `restore` is for) and should keep its tool table.
-    void aRestartWithItsStateKeepsTheTable()
+    // in force, and keeps its tool table (and work offsets) as the machine does: what `restore` is for. The
+    // restore is M61 and G43 H from the table grblHAL kept, nothing probed.
+    void aRestartWithItsStateKeepsTheTableAndARestorePutsTheToolBackInForce()
     {
+        QCOMPARE(m_client.command("G10 L2 P1 X1.5 Y2.5 Z-3.25"), QByteArrayList { "ok" });
         m_client.close();
         m_peer.reset();
         m_peer = std::make_unique<GrblHalPeer>(m_state.path());
@@ -239,13 +241,19 @@ private Q_SLOTS:
         const ParameterReport report = parameters(answer);
         QCOMPARE(report.refusedLines, 0);
         QVERIFY(report.toolLengthOffset);
-        QCOMPARE(report.toolLengthOffset->z(), 0.0);
-        QVERIFY(report.tools.count(3));
-        QEXPECT_FAIL("",
-            "grblHAL_sim keeps $ settings in --state but not G10 L1 tool entries (nor G10 L2 "
-            "offsets): see the report of issue 29",
-            Abort);
-        QCOMPARE(report.tools.at(3).offset.z(), -12.345);
+        QCOMPARE(report.toolLengthOffset->z(), 0.0); // nothing in force
+        QVERIFY2(report.tools.count(3), joined(answer));
+        QCOMPARE(report.tools.at(3).offset.z(), -12.345); // the table kept
+        QCOMPARE(report.tools.at(3).radius, 1.5);
+        QVERIFY2(answer.contains("[G54:1.500,2.500,-3.250]"), joined(answer));
+        QVERIFY(m_client.command("$G").front().contains(" T0 ")); // no tool in the spindle
+
+        QCOMPARE(m_client.command("M61 Q3"), QByteArrayList { "ok" });
+        QCOMPARE(m_client.command("G43 H3"), QByteArrayList { "ok" });
+        const ParameterReport restored = parameters(m_client.command("$#"));
+        QVERIFY(restored.toolLengthOffset);
+        QCOMPARE(restored.toolLengthOffset->z(), -12.345);
+        QVERIFY(m_client.command("$G").front().contains(" T3 "));
     }
 
     void cleanupTestCase()

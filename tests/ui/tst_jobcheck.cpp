@@ -27,6 +27,7 @@
 
 #include "model/document/tooldocument.h"
 #include "tests/support/programs.h"
+#include "tests/support/testclock.h"
 #include "ui/jobcheckdialog.h"
 #include "ui/jobpreparedialog.h"
 #include "ui/jobreportmodels.h"
@@ -88,6 +89,7 @@ private Q_SLOTS:
     {
         QStandardPaths::setTestModeEnabled(true);
         QSettings().clear(); // what an earlier run chose (a controller, a floor) is not this run's
+        Test::setClock(Test::exampleMorningAfter()); // the example's TLOs a day old, whatever day it is
     }
 
     void checksAProgramAndShowsItsToolsAndFindings()

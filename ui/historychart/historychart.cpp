@@ -15,6 +15,8 @@
 #include <QPainter>
 #include <QValueAxis>
 
+#include "model/clock.h"
+
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
@@ -160,7 +162,7 @@ void addAxes(QChart *chart, const QList<QAbstractSeries *> &all, const HistoryCh
         }
     }
     if (x0 > x1) { // nothing to draw: today, around zero
-        x0 = qreal(QDateTime::currentMSecsSinceEpoch());
+        x0 = qreal(Clock::now().toMSecsSinceEpoch());
         x1 = x0;
         y0 = y1 = 0.0;
     }
