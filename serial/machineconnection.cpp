@@ -150,6 +150,10 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
         m_session->setToolSetter(*target.setter);
     if (!m_session->keepsReference())
         m_session->adoptReference(target.reference);
+    connect(m_session.get(), &MachineController::waitingForOperator, this,
+        &MachineConnection::waitingForOperator);
+    connect(m_session.get(), &MachineController::toolChangeFinished, this,
+        &MachineConnection::toolChangeFinished);
     connect(m_link.get(), &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
         setHalt(status.isAlarm(), status.haltReason);
         Q_EMIT statusChanged(status);
@@ -323,6 +327,18 @@ bool MachineConnection::changeTool(int tool, Done done, std::optional<double> st
         tool == Limits::kEmptySpindle ? tr("Emptying the spindle…") : tr("Changing to T%1…").arg(tool), false,
         [tool, storedTlo](MachineController *s, Done d) { s->changeTool(tool, std::move(d), storedTlo); },
         std::move(done));
+}
+
+void MachineConnection::resumeToolChange()
+{
+    if (m_session)
+        m_session->resumeToolChange();
+}
+
+void MachineConnection::endToolChange(const QString &why)
+{
+    if (m_session)
+        m_session->endToolChange(why);
 }
 
 FirmwareInfo MachineConnection::firmware() const

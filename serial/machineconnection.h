@@ -122,6 +122,11 @@ public:
         const QByteArray &line, std::function<void(const CommandReply &, const SessionResult &)> done);
     // Stops whatever the machine does now (Ctrl-X); it halts, and Unlock follows.
     void stop();
+    // While a tool change waits for the person (waitingForOperator): the tool is in, go on (where the
+    // controller takes that from here: resumesFromHere), or end the change (MachineController's).
+    [[nodiscard]] bool resumesFromHere() const { return m_session && m_session->resumesFromHere(); }
+    void resumeToolChange();
+    void endToolChange(const QString &why);
     // What the machine said it runs on connecting; Unknown while disconnected.
     [[nodiscard]] FirmwareInfo firmware() const;
     // The tool the machine reports in the spindle, if known.
@@ -189,6 +194,9 @@ Q_SIGNALS:
     void linkLost(const QString &operation, const QString &reason);
     // Connected again to the machine of interruption(): what the machine holds now says whether it ran.
     void interruptionChecked(const QString &verdict);
+    // A tool change waits for the person to put `tool` in, for at most `limitMs`; then it finished.
+    void waitingForOperator(int tool, int limitMs);
+    void toolChangeFinished();
 
 private:
     void setState(State state);

@@ -2153,10 +2153,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>grblHAL wechselt zu einem Werkzeug, nicht zu einer leeren Spindel: Verwenden Sie „Werkzeug auswählen“ mit T0.</translation>
     </message>
     <message>
-        <source>The tool change to T%1 was not finished in time: press cycle start once the tool is in, then measure it.</source>
-        <translation>Der Werkzeugwechsel zu T%1 wurde nicht rechtzeitig abgeschlossen: Drücken Sie Zyklusstart, sobald das Werkzeug eingesetzt ist, und vermessen Sie es dann.</translation>
-    </message>
-    <message>
         <source>A TLO is restored for a tool, not for an empty spindle.</source>
         <translation>Eine TLO wird für ein Werkzeug wiederhergestellt, nicht für eine leere Spindel.</translation>
     </message>
@@ -2187,6 +2183,22 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>T%1 has no stored TLO to compare with, in the table or in grblHAL&apos;s own: probe it first.</source>
         <translation>T%1 hat keine gespeicherte TLO zum Vergleich, weder in der Tabelle noch in der von grblHAL: Messen Sie es zuerst.</translation>
+    </message>
+    <message>
+        <source>T%1 is put in by hand (grblHAL&apos;s manual tool change)</source>
+        <translation>T%1 wird von Hand eingesetzt (manueller Werkzeugwechsel von grblHAL)</translation>
+    </message>
+    <message>
+        <source>grblHAL stopped reporting its state during the change to T%1.</source>
+        <translation>grblHAL hat während des Wechsels zu T%1 aufgehört, seinen Zustand zu melden.</translation>
+    </message>
+    <message>
+        <source>grblHAL went into alarm during the change to T%1: nothing was measured.</source>
+        <translation>grblHAL ist während des Wechsels zu T%1 in den Alarm gegangen: Nichts wurde gemessen.</translation>
+    </message>
+    <message>
+        <source>grblHAL was reset to end it: its tool is still T%1, with no offset in force. Check what is in the spindle, then select it and restore or probe its TLO before cutting.</source>
+        <translation>grblHAL wurde zurückgesetzt, um ihn zu beenden: Sein Werkzeug ist noch T%1, ohne wirksame Korrektur. Prüfen Sie, was in der Spindel steckt, wählen Sie es dann aus und stellen Sie seine Längenkorrektur wieder her oder messen Sie sie, bevor Sie schneiden.</translation>
     </message>
 </context>
 <context>
@@ -2553,7 +2565,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>Tools in this library without &quot;unit&quot; (millimeters or inches): %1. Their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
-        <translation>Werkzeuge dieser Bibliothek ohne „unit“ (millimeters oder inches): %1. Ihre Durchmesser und Längen lassen sich nicht lesen. Fusion schreibt sie an jedes Werkzeug: Exportieren Sie die Bibliothek erneut aus Fusion, ergänzen Sie bei jedem "unit": "millimeters" (oder "inches"), oder geben Sie an, in welcher Einheit sie sind (das Fenster fragt; toffee-cli import --cam-units mm|in).</translation>
+        <translation>Werkzeuge dieser Bibliothek ohne „unit“ (millimeters oder inches): %1. Ihre Durchmesser und Längen lassen sich nicht lesen. Fusion schreibt sie an jedes Werkzeug: Exportieren Sie die Bibliothek erneut aus Fusion, ergänzen Sie bei jedem &quot;unit&quot;: &quot;millimeters&quot; (oder &quot;inches&quot;), oder geben Sie an, in welcher Einheit sie sind (das Fenster fragt; toffee-cli import --cam-units mm|in).</translation>
     </message>
 </context>
 <context>
@@ -3772,6 +3784,22 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
         <translation>Werkzeug %1 ist keine Werkzeugnummer; verwenden Sie %2 bis %3 (%4 für eine leere Spindel).</translation>
     </message>
+    <message>
+        <source>A tool change is already under way.</source>
+        <translation>Ein Werkzeugwechsel läuft bereits.</translation>
+    </message>
+    <message>
+        <source>%1 on this machine: someone must be there to do it, but %2. Nothing was sent. Change the tool where someone can answer, or put it in by hand and select it.</source>
+        <translation>%1 an dieser Maschine: Jemand muss dafür da sein, aber %2. Nichts wurde gesendet. Wechseln Sie das Werkzeug dort, wo jemand antworten kann, oder setzen Sie es von Hand ein und wählen Sie es aus.</translation>
+    </message>
+    <message>
+        <source>Nobody put T%1 in within the %2 s the change waits.</source>
+        <translation>Niemand hat T%1 innerhalb der %2 s eingesetzt, die der Wechsel wartet.</translation>
+    </message>
+    <message>
+        <source>The change to T%1 was ended: nothing was measured or recorded. %2</source>
+        <translation>Der Wechsel zu T%1 wurde beendet: Nichts wurde gemessen oder aufgezeichnet. %2</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -3992,6 +4020,26 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
         <translation>Auf der Maschine läuft %1, die M493.3 stillschweigend ignoriert: Eine von Hand gesetzte TLO würde nicht verwendet. Vermessen Sie stattdessen das Werkzeug, oder wechseln Sie mit seiner TLO zu ihm (ein manueller Wechsel).</translation>
+    </message>
+    <message>
+        <source>the tool in the spindle, which this firmware does not name, may be taken out by hand</source>
+        <translation>das Werkzeug in der Spindel, das diese Firmware nicht nennt, wird womöglich von Hand entnommen</translation>
+    </message>
+    <message>
+        <source>T%1 is taken out by hand</source>
+        <translation>T%1 wird von Hand entnommen</translation>
+    </message>
+    <message>
+        <source>%1 and T%2 put in by hand</source>
+        <translation>%1 und T%2 von Hand eingesetzt</translation>
+    </message>
+    <message>
+        <source>T%1 is put in by hand</source>
+        <translation>T%1 wird von Hand eingesetzt</translation>
+    </message>
+    <message>
+        <source>The machine halted to end it: check what is in the spindle, unlock it, then select the tool and probe it before cutting.</source>
+        <translation>Die Maschine hat angehalten, um ihn zu beenden: Prüfen Sie, was in der Spindel steckt, entsperren Sie sie, wählen Sie dann das Werkzeug aus und messen Sie es, bevor Sie schneiden.</translation>
     </message>
 </context>
 <context>
@@ -6018,10 +6066,6 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation>Wartet</translation>
     </message>
     <message>
-        <source>Changing tool</source>
-        <translation>Werkzeugwechsel</translation>
-    </message>
-    <message>
         <source>The machine reported an alarm.</source>
         <translation>Die Maschine hat einen Alarm gemeldet.</translation>
     </message>
@@ -6082,6 +6126,41 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>%1 (stale: %2)</source>
         <translation>%1 (veraltet: %2)</translation>
+    </message>
+    <message>
+        <source>Waiting for the operator</source>
+        <translation>Wartet auf den Bediener</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolChangeWait</name>
+    <message>
+        <source>Put T%1 in the Spindle</source>
+        <translation>T%1 in die Spindel einsetzen</translation>
+    </message>
+    <message>
+        <source>The machine waits for T%1. Put it in the spindle, then press cycle start on the machine or Continue here; it is then measured.</source>
+        <translation>Die Maschine wartet auf T%1. Setzen Sie es in die Spindel ein und drücken Sie dann Zyklusstart an der Maschine oder hier Weiter; danach wird es gemessen.</translation>
+    </message>
+    <message>
+        <source>The machine waits for T%1. Put it in the spindle, then press the machine&apos;s button; it is then measured.</source>
+        <translation>Die Maschine wartet auf T%1. Setzen Sie es in die Spindel ein und drücken Sie dann die Taste der Maschine; danach wird es gemessen.</translation>
+    </message>
+    <message>
+        <source>The change waits up to %1 min; End the Change stops it on the machine and records nothing.</source>
+        <translation>Der Wechsel wartet bis zu %1 min; Wechsel beenden stoppt ihn an der Maschine und zeichnet nichts auf.</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Weiter</translation>
+    </message>
+    <message>
+        <source>End the Change</source>
+        <translation>Wechsel beenden</translation>
+    </message>
+    <message>
+        <source>The operator ended the change in the window.</source>
+        <translation>Der Bediener hat den Wechsel im Fenster beendet.</translation>
     </message>
 </context>
 <context>

@@ -2153,10 +2153,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>grblHAL 只能换到某把刀具，不能换成空主轴：请使用“选择刀具”并选 T0。</translation>
     </message>
     <message>
-        <source>The tool change to T%1 was not finished in time: press cycle start once the tool is in, then measure it.</source>
-        <translation>换到 T%1 的换刀未能及时完成：装好刀具后请按循环启动，然后测量它。</translation>
-    </message>
-    <message>
         <source>A TLO is restored for a tool, not for an empty spindle.</source>
         <translation>TLO 只能为刀具恢复，不能为空主轴恢复。</translation>
     </message>
@@ -2187,6 +2183,22 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>T%1 has no stored TLO to compare with, in the table or in grblHAL&apos;s own: probe it first.</source>
         <translation>T%1 没有可供比较的已存 TLO（刀具表和 grblHAL 自己的表中都没有）：请先测量它。</translation>
+    </message>
+    <message>
+        <source>T%1 is put in by hand (grblHAL&apos;s manual tool change)</source>
+        <translation>T%1 需手动装入（grblHAL 的手动换刀）</translation>
+    </message>
+    <message>
+        <source>grblHAL stopped reporting its state during the change to T%1.</source>
+        <translation>换到 T%1 期间，grblHAL 停止报告其状态。</translation>
+    </message>
+    <message>
+        <source>grblHAL went into alarm during the change to T%1: nothing was measured.</source>
+        <translation>换到 T%1 期间 grblHAL 进入报警：未进行任何测量。</translation>
+    </message>
+    <message>
+        <source>grblHAL was reset to end it: its tool is still T%1, with no offset in force. Check what is in the spindle, then select it and restore or probe its TLO before cutting.</source>
+        <translation>已复位 grblHAL 以结束换刀：其刀具仍为 T%1，且无生效的补偿。请检查主轴中的刀具，然后选择它，并在切削前恢复或测量其刀长补偿。</translation>
     </message>
 </context>
 <context>
@@ -2553,7 +2565,7 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>Tools in this library without &quot;unit&quot; (millimeters or inches): %1. Their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
-        <translation>此库中没有 "unit"（millimeters 或 inches）的刀具：%1。无法读取其直径和长度。Fusion 会为每把刀具写入该项：请从 Fusion 重新导出刀具库，或为每把刀具添加 "unit": "millimeters"（或 "inches"），或说明它们使用的单位（窗口会询问；toffee-cli import --cam-units mm|in）。</translation>
+        <translation>此库中没有 &quot;unit&quot;（millimeters 或 inches）的刀具：%1。无法读取其直径和长度。Fusion 会为每把刀具写入该项：请从 Fusion 重新导出刀具库，或为每把刀具添加 &quot;unit&quot;: &quot;millimeters&quot;（或 &quot;inches&quot;），或说明它们使用的单位（窗口会询问；toffee-cli import --cam-units mm|in）。</translation>
     </message>
 </context>
 <context>
@@ -3772,6 +3784,22 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>Tool %1 is not a tool number; use %2 to %3 (%4 for an empty spindle).</source>
         <translation>刀具 %1 不是刀具号；请使用 %2 到 %3（%4 表示主轴为空）。</translation>
     </message>
+    <message>
+        <source>A tool change is already under way.</source>
+        <translation>换刀已在进行中。</translation>
+    </message>
+    <message>
+        <source>%1 on this machine: someone must be there to do it, but %2. Nothing was sent. Change the tool where someone can answer, or put it in by hand and select it.</source>
+        <translation>%1（在这台机器上）：必须有人在场操作，但%2。未发送任何内容。请在有人可以应答的地方换刀，或手动装入刀具后选择它。</translation>
+    </message>
+    <message>
+        <source>Nobody put T%1 in within the %2 s the change waits.</source>
+        <translation>在换刀等待的 %2 秒内无人装入 T%1。</translation>
+    </message>
+    <message>
+        <source>The change to T%1 was ended: nothing was measured or recorded. %2</source>
+        <translation>换到 T%1 已结束：未测量也未记录任何内容。%2</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -3992,6 +4020,26 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine runs %1, which ignores M493.3 without a word: a TLO set by hand would not be used. Probe the tool instead, or change to it with its TLO (a manual change).</source>
         <translation>机床运行的是 %1，它会不加提示地忽略 M493.3：手动设置的 TLO 不会被使用。请改为对刀，或带着其 TLO 换到该刀具（手动换刀）。</translation>
+    </message>
+    <message>
+        <source>the tool in the spindle, which this firmware does not name, may be taken out by hand</source>
+        <translation>主轴中的刀具（此固件不报告其编号）可能需手动取出</translation>
+    </message>
+    <message>
+        <source>T%1 is taken out by hand</source>
+        <translation>T%1 需手动取出</translation>
+    </message>
+    <message>
+        <source>%1 and T%2 put in by hand</source>
+        <translation>%1，并手动装入 T%2</translation>
+    </message>
+    <message>
+        <source>T%1 is put in by hand</source>
+        <translation>T%1 需手动装入</translation>
+    </message>
+    <message>
+        <source>The machine halted to end it: check what is in the spindle, unlock it, then select the tool and probe it before cutting.</source>
+        <translation>机器已停机以结束换刀：请检查主轴中的刀具，解锁机器，然后选择刀具并在切削前测量。</translation>
     </message>
 </context>
 <context>
@@ -4791,7 +4839,7 @@ Save anyway?</source>
     </message>
     <message>
         <source>Tools in %2 without a unit (Fusion writes &quot;unit&quot; on every tool): %1. Their diameters and lengths are read in the unit you choose; the preview shows each of them before anything changes.</source>
-        <translation>%2 中没有单位的刀具（Fusion 会为每把刀具写入 "unit"）：%1。其直径和长度将按您选择的单位读取；在任何更改之前，预览会逐一显示。</translation>
+        <translation>%2 中没有单位的刀具（Fusion 会为每把刀具写入 &quot;unit&quot;）：%1。其直径和长度将按您选择的单位读取；在任何更改之前，预览会逐一显示。</translation>
     </message>
 </context>
 <context>
@@ -6018,10 +6066,6 @@ when it is fresh (no probe)</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <source>Changing tool</source>
-        <translation>正在换刀</translation>
-    </message>
-    <message>
         <source>The machine reported an alarm.</source>
         <translation>机床报告了报警。</translation>
     </message>
@@ -6082,6 +6126,41 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>%1 (stale: %2)</source>
         <translation>%1（已过时：%2）</translation>
+    </message>
+    <message>
+        <source>Waiting for the operator</source>
+        <translation>等待操作员</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ToolChangeWait</name>
+    <message>
+        <source>Put T%1 in the Spindle</source>
+        <translation>将 T%1 装入主轴</translation>
+    </message>
+    <message>
+        <source>The machine waits for T%1. Put it in the spindle, then press cycle start on the machine or Continue here; it is then measured.</source>
+        <translation>机器正在等待 T%1。请将其装入主轴，然后按机器上的循环启动或此处的“继续”；随后将测量该刀具。</translation>
+    </message>
+    <message>
+        <source>The machine waits for T%1. Put it in the spindle, then press the machine&apos;s button; it is then measured.</source>
+        <translation>机器正在等待 T%1。请将其装入主轴，然后按机器上的按钮；随后将测量该刀具。</translation>
+    </message>
+    <message>
+        <source>The change waits up to %1 min; End the Change stops it on the machine and records nothing.</source>
+        <translation>换刀最多等待 %1 分钟；“结束换刀”会在机器上停止换刀，且不记录任何内容。</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <source>End the Change</source>
+        <translation>结束换刀</translation>
+    </message>
+    <message>
+        <source>The operator ended the change in the window.</source>
+        <translation>操作员在窗口中结束了换刀。</translation>
     </message>
 </context>
 <context>

@@ -37,6 +37,7 @@
 #include "ui/probepanel.h"
 #include "ui/rackpanel.h"
 #include "ui/tlopanel.h"
+#include "ui/toolchangewait.h"
 #include "ui/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
@@ -104,6 +105,7 @@ void MainWindow::build()
     m_history = new HistoryRecorder(this);
     m_historyDock = new HistoryDock(m_history, this);
     m_rackPanel = new RackPanel(m_connection, m_document);
+    new ToolChangeWait(m_connection, this);
     m_rackDock = new QDockWidget(tr("Rack"), this);
     setWindowIcon(themeIcon(u"toffee"_s));
     setCentralWidget(m_tablePanel);

@@ -55,7 +55,7 @@ QString machineStateName(const QString &state)
         { "Sleep", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Asleep") },
         { "Pause", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Paused") },
         { "Wait", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Waiting") },
-        { "Tool", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Changing tool") } };
+        { "Tool", QT_TRANSLATE_NOOP("Toffee::TloPanel", "Waiting for the operator") } };
     for (const auto &[word, name] : names) {
         if (state == QLatin1StringView(word))
             return QCoreApplication::translate("Toffee::TloPanel", name);

@@ -4,18 +4,16 @@
 #include <cmath>
 #include <numeric>
 
-#include <unistd.h>
-
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QJsonArray>
 #include <QJsonObject>
-#include <QSocketNotifier>
 #include <QTimer>
 
 #include "app/cli/cli.h"
 #include "app/cli/interrupt.h"
 #include "app/cli/machineoptions.h"
+#include "app/cli/operatorpresence.h"
 #include "model/clock.h"
 #include "model/formats/tablefile.h"
 #include "model/library/spool.h"
@@ -390,6 +388,9 @@ void MachineRun::operate()
 {
     const QString &command = m_call.command;
     MachineConnection &c = m_connection;
+    // A change that waits for a person (change-tool, a rack's drop of a tool changed by hand): refused
+    // without a terminal, said with its limit on one.
+    attendToolChanges(c.session(), m_call.err, &m_loop);
     const auto status = printed(
         [this](const SessionResult &r) { printStatus(m_call, *r.status, m_connection.firmware()); });
     bool started = true;
@@ -399,25 +400,9 @@ void MachineRun::operate()
         started = c.report(printed([this](const SessionResult &r) { printTlo(m_call, r); }));
     else if (command == u"probe")
         started = c.probe(recorded());
-    else if (command == u"change-tool") {
-        // A manual change that waits for the operator (grblHAL): said, and Enter here goes on as the
-        // machine's cycle start does.
-        MachineController *controller = c.session();
-        QObject::connect(
-            controller, &MachineController::waitingForToolChange, &m_loop, [this, controller](int tool) {
-                m_call.err << "toffee-cli: put T" << tool
-                           << " in the spindle, then press the machine's cycle start, or Enter here."
-                           << Qt::endl;
-                auto *input = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, &m_loop);
-                QObject::connect(input, &QSocketNotifier::activated, &m_loop, [controller, input] {
-                    char buffer[256];
-                    (void)::read(STDIN_FILENO, buffer, sizeof buffer);
-                    input->setEnabled(false);
-                    controller->resumeToolChange();
-                });
-            });
+    else if (command == u"change-tool")
         started = c.changeTool(m_options.tool, recorded(), storedTloForChange(m_call, m_options, c));
-    } else if (isRackCommand(command) && !c.firmware().hasRack())
+    else if (isRackCommand(command) && !c.firmware().hasRack())
         finishWith(SessionResult::failed(SessionResult::Outcome::Refused,
             u"%1 has no tool rack; %2 is for the Carvera's. Change tools with change-tool N."_s.arg(
                 c.firmware().description(), command)));

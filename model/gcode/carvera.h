@@ -28,4 +28,16 @@ inline constexpr std::array<double, 15> kCarveraRunsWhileHalted { 2, 5, 9, 30, 8
     return block.isEmpty() || carveraRunsWhileHalted(block.words.front());
 }
 
+// The tools a C1's changer takes from its rack and puts back by itself: T0 (the wireless probe) to T6
+// (ATCHandler: lowest_tool_number to tool_number). A change to or from any other tool is made by hand: the
+// machine waits in state Tool for the operator's button. Custom slots (custom_tool_slots.txt) are not known
+// here, so a tool in one counts as changed by hand: the cautious side.
+inline constexpr int kCarveraLowestRackTool = 0;
+inline constexpr int kCarveraHighestRackTool = 6;
+
+[[nodiscard]] inline bool carveraChangesByItself(int tool)
+{
+    return tool >= kCarveraLowestRackTool && tool <= kCarveraHighestRackTool;
+}
+
 } // namespace Toffee

@@ -8,6 +8,7 @@
 #include <QTimer>
 
 #include "model/clock.h"
+#include "model/gcode/carvera.h"
 #include "model/numberformat.h"
 #include "model/textparsing.h"
 #include "serial/transport/linetransport.h"
@@ -446,7 +447,7 @@ void MachineSession::selectTool(int tool, Done done)
         });
 }
 
-void MachineSession::changeTool(int tool, Done done, std::optional<double> storedTlo)
+void MachineSession::startToolChange(int tool, Done done, std::optional<double> storedTlo)
 {
     if (auto r = validateToolNumber(tool); !r)
         return refuse(done, r.error().message);
@@ -602,6 +603,35 @@ void MachineSession::restoreTlo(int tool, double tlo, Done done)
 void MachineSession::abort()
 {
     m_link->sendRealtime(0x18);
+}
+
+QString MachineSession::changeByHand(int tool) const
+{
+    if (m_tool == tool && tool >= 0)
+        return {}; // measured where it is (M491)
+    const bool pick = tool != Limits::kEmptySpindle && !carveraChangesByItself(tool);
+    QString drop;
+    if (!m_tool) // the stock firmware does not say: its drop may be by hand
+        drop = tr("the tool in the spindle, which this firmware does not name, may be taken out by hand");
+    else if (*m_tool != Limits::kEmptySpindle && !carveraChangesByItself(*m_tool))
+        drop = tr("T%1 is taken out by hand").arg(*m_tool);
+    if (pick && !drop.isEmpty())
+        return tr("%1 and T%2 put in by hand").arg(drop).arg(tool);
+    if (pick)
+        return tr("T%1 is put in by hand").arg(tool);
+    return drop;
+}
+
+void MachineSession::cancelWaitingChange()
+{
+    abort(); // Ctrl-X: the firmware halts, which ends the wait for the button
+}
+
+QString MachineSession::cancelledChangeNote() const
+{
+    return tr(
+        "The machine halted to end it: check what is in the spindle, unlock it, then select the tool and "
+        "probe it before cutting.");
 }
 
 } // namespace Toffee

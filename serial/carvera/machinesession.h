@@ -48,10 +48,8 @@ public:
     void setTlo(double tlo, Done done) override;
     void setTloAboveZ0(double height, Done done) override;
     void selectTool(int tool, Done done) override;
-    // M6 T: the machine changes and measures the tool. With `storedTlo` (a manual change only: the firmware
-    // always measures a rack tool), M6 T H takes that TLO instead of probing. The tool already in the spindle
-    // is measured where it is (M491): the firmware ignores a change to it.
-    void changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt) override;
+    // A change to or from a tool outside the rack (carveraChangesByItself) waits for the operator's button.
+    [[nodiscard]] QString changeByHand(int tool) const override;
     // $X when the machine is halted (it says nothing to $X otherwise), then, after a failed break test, the
     // stored TLO set back before anything can move: the firmware halts with the broken length in force.
     // `brokenToolTlo`: the table's stored TLO for the tool in the spindle when the table marks it broken (a
@@ -67,6 +65,15 @@ public:
     [[nodiscard]] QString setTloCommand(double tlo) const override;
     [[nodiscard]] QString aboveZ0Command(double height) const override;
     [[nodiscard]] QString restoreCommand(int tool, double tlo) const override;
+
+protected:
+    // M6 T: the machine changes and measures the tool. With `storedTlo` (a manual change only: the firmware
+    // always measures a rack tool), M6 T H takes that TLO instead of probing. The tool already in the spindle
+    // is measured where it is (M491): the firmware ignores a change to it.
+    void startToolChange(int tool, Done done, std::optional<double> storedTlo) override;
+    // Only the machine's button goes on; Ctrl-X (a halt) ends the wait.
+    void cancelWaitingChange() override;
+    [[nodiscard]] QString cancelledChangeNote() const override;
 
 private:
     void run(const QByteArray &command, int timeoutMs, Done done,

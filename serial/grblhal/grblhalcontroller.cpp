@@ -589,60 +589,6 @@ void GrblHalController::selectTool(int tool, Done done)
         });
 }
 
-void GrblHalController::changeTool(int tool, Done done, std::optional<double> storedTlo)
-{
-    if (auto valid = validateToolNumber(tool); !valid) {
-        refuse(done, valid.error().message);
-        return;
-    }
-    if (tool <= 0) {
-        refuse(done, tr("grblHAL changes to a tool, not to an empty spindle: use Select Tool with T0."));
-        return;
-    }
-    run("M6 T" + QByteArray::number(tool), kToolChangeTimeoutMs, done,
-        [this, done, tool, storedTlo](const CommandReply &) {
-            // A manual change holds in state Tool until the operator presses cycle start.
-            const QDeadlineTimer deadline(kToolChangeTimeoutMs);
-            auto told = std::make_shared<bool>(false);
-            auto waitChanged = std::make_shared<std::function<void()>>();
-            // Each poll holds the function; it holds itself only weakly, so it goes with the last poll.
-            *waitChanged = [this, done, tool, storedTlo, deadline, told, self = std::weak_ptr(waitChanged)] {
-                awaitStatus(2000,
-                    [this, done, tool, storedTlo, deadline, told, waitChanged = self.lock()](
-                        std::optional<MachineStatus> s) {
-                        if (s && s->state == u"Tool" && !deadline.hasExpired()) {
-                            if (!std::exchange(*told, true))
-                                Q_EMIT waitingForToolChange(tool);
-                            QTimer::singleShot(
-                                MachineLink::kPollIntervalMs, this, [waitChanged] { (*waitChanged)(); });
-                            return;
-                        }
-                        if (!s || s->state == u"Tool") {
-                            SessionResult result;
-                            result.outcome = SessionResult::Outcome::LinkFailure;
-                            result.message
-                                = tr("The tool change to T%1 was not finished in time: press cycle start "
-                                     "once the tool is in, then measure it.")
-                                      .arg(tool);
-                            done(result);
-                            return;
-                        }
-                        m_tool = tool;
-                        if (storedTlo)
-                            restoreTlo(tool, *storedTlo, done);
-                        else
-                            probe(done);
-                    });
-            };
-            (*waitChanged)();
-        });
-}
-
-void GrblHalController::resumeToolChange()
-{
-    m_link->sendRealtime('~');
-}
-
 void GrblHalController::unlock(Done done, std::optional<double> brokenToolTlo)
 {
     Q_UNUSED(brokenToolTlo) // a failed break test changed nothing in grblHAL

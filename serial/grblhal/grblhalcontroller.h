@@ -24,8 +24,6 @@ class GrblHalController final : public MachineController
     Q_DISABLE_COPY_MOVE(GrblHalController)
 
 public:
-    // A manual tool change waits for the operator to put the tool in and press cycle start.
-    static constexpr int kToolChangeTimeoutMs = 600000;
     // A reported value agrees with what was written within this (grblHAL prints 0.001 mm).
     static constexpr double kReadBackTolerance = 0.0005;
 
@@ -47,9 +45,8 @@ public:
     void setTloAboveZ0(double height, Done done) override;
     // M61 Q<n>: the tool is said to be in the spindle; the offset in force stays what it was.
     void selectTool(int tool, Done done) override;
-    // M6 T<n>: a manual change waits (state Tool) until the operator presses cycle start, or
-    // resumeToolChange(); then the tool is measured, or takes `storedTlo`.
-    void changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt) override;
+    [[nodiscard]] QString changeByHand(int tool) const override;
+    [[nodiscard]] bool resumesFromHere() const override { return true; }
     void unlock(Done done, std::optional<double> brokenToolTlo = std::nullopt) override;
     // Nothing: a failed break test never changes grblHAL's offsets.
     [[nodiscard]] std::optional<double> tloToRestore() const override { return std::nullopt; }
@@ -66,7 +63,6 @@ public:
     [[nodiscard]] bool keepsReference() const override { return false; }
     void adoptReference(std::optional<double> referenceMz) override { m_reference = referenceMz; }
     [[nodiscard]] std::optional<double> reference() const { return m_reference; }
-    void resumeToolChange() override;
     void readToolTable(Done done) override;
     [[nodiscard]] std::optional<QList<ControllerTool>> controllerTable() const override
     {
@@ -79,6 +75,14 @@ public:
     // How MachineLink reads grblHAL's lines; `controller` (may be null) fills in the offset in force it
     // knows.
     [[nodiscard]] static ReplyGrammar grammar(const GrblHalController *controller);
+
+protected:
+    // M6 T<n>: a manual change waits (state Tool) until the operator presses cycle start, or `~` from here;
+    // then the tool is measured, or takes `storedTlo` (grblhaltoolchange.cpp). A soft reset ends the wait.
+    void startToolChange(int tool, Done done, std::optional<double> storedTlo) override;
+    void resumeWaitingChange() override;
+    void cancelWaitingChange() override;
+    [[nodiscard]] QString cancelledChangeNote() const override;
 
 private:
     using Next = std::function<void(const CommandReply &reply)>;

@@ -149,6 +149,108 @@ void MachineController::openLink(Done done, std::function<void()> afterOpen)
     link()->open();
 }
 
+int MachineController::operatorWaitMs() const
+{
+    const int limit = link() ? link()->timeoutOverride() : 0;
+    return limit > 0 ? limit : kOperatorWaitMs;
+}
+
+void MachineController::changeTool(int tool, Done done, std::optional<double> storedTlo)
+{
+    if (m_change) {
+        refuse(std::move(done), tr("A tool change is already under way."));
+        return;
+    }
+    if (const QString byHand = changeByHand(tool); !byHand.isEmpty() && !m_operatorAbsent.isEmpty()) {
+        refuse(std::move(done),
+            tr("%1 on this machine: someone must be there to do it, but %2. Nothing was sent. Change the "
+               "tool "
+               "where someone can answer, or put it in by hand and select it.")
+                .arg(byHand, m_operatorAbsent));
+        return;
+    }
+    m_change.emplace();
+    m_change->tool = tool;
+    // Both families say state Tool while a manual change waits for the person.
+    m_change->statusWatch
+        = connect(link(), &MachineLink::statusChanged, this, [this](const MachineStatus &s) {
+              if (m_change && !m_change->waiting && !m_change->ended && s.state == u"Tool")
+                  operatorWaitBegan();
+          });
+    startToolChange(tool, finishingChange(std::move(done)), storedTlo);
+}
+
+void MachineController::operatorWaitBegan()
+{
+    m_change->waiting = true;
+    m_change->waited.start();
+    const int limitMs = operatorWaitMs();
+    m_change->limit = new QTimer(this);
+    m_change->limit->setSingleShot(true);
+    const int tool = m_change->tool;
+    connect(m_change->limit, &QTimer::timeout, this,
+        [this, tool, limitMs] { endToolChange(waitedTooLong(tool, limitMs)); });
+    m_change->limit->start(limitMs);
+    // A change the machine runs as one command (the Carvera's M6) is not the link's to end meanwhile: the
+    // person gets the wait's limit, and the change what it takes after it.
+    link()->restartLimit(limitMs + MachineLink::kMotionTimeoutMs);
+    Q_EMIT waitingForOperator(tool, limitMs);
+}
+
+QString MachineController::waitedTooLong(int tool, int limitMs)
+{
+    return tr("Nobody put T%1 in within the %2 s the change waits.").arg(tool).arg(limitMs / 1000);
+}
+
+void MachineController::resumeToolChange()
+{
+    if (isWaitingForOperator() && !m_change->ended && resumesFromHere())
+        resumeWaitingChange();
+}
+
+void MachineController::endToolChange(const QString &why)
+{
+    if (!m_change || m_change->ended)
+        return;
+    m_change->ended = why;
+    cancelWaitingChange();
+}
+
+MachineController::Done MachineController::finishingChange(Done done)
+{
+    return [this, done = std::move(done)](const SessionResult &r) {
+        if (!m_change)
+            return done(r);
+        ToolChange change = std::move(*m_change);
+        m_change.reset();
+        disconnect(change.statusWatch);
+        if (change.limit)
+            change.limit->deleteLater();
+        Q_EMIT toolChangeFinished();
+        if (!change.ended && change.waiting && !r.ok()) {
+            // The link gave up while the machine waited (its limit is the wait's, when --timeout set both):
+            // the machine must not go on waiting for a person nobody told to come.
+            cancelWaitingChange();
+            const int limitMs = operatorWaitMs();
+            change.ended
+                = change.waited.elapsed() >= limitMs - 1000 ? waitedTooLong(change.tool, limitMs) : QString();
+        }
+        if (!change.ended)
+            return done(r);
+        SessionResult ended = r;
+        ended.outcome = change.ended->isEmpty() && r.outcome == SessionResult::Outcome::LinkFailure
+            ? SessionResult::Outcome::LinkFailure
+            : SessionResult::Outcome::MachineError;
+        ended.recording.reset();
+        ended.tlo.reset();
+        const QString stopped = tr("The change to T%1 was ended: nothing was measured or recorded. %2")
+                                    .arg(change.tool)
+                                    .arg(cancelledChangeNote());
+        ended.message = change.ended->isEmpty() ? r.message + u' ' + stopped : *change.ended + u' ' + stopped;
+        done(ended);
+    };
+}
+
 Result<void> MachineController::validateTolerance(double tolerance)
 {
     if (!std::isfinite(tolerance))

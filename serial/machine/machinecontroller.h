@@ -4,6 +4,7 @@
 #include <functional>
 #include <optional>
 
+#include <QElapsedTimer>
 #include <QList>
 #include <QObject>
 
@@ -12,6 +13,8 @@
 #include "model/result.h"
 #include "model/toolsetter.h"
 #include "serial/machine/machinereplies.h"
+
+class QTimer;
 
 namespace Toffee {
 
@@ -92,9 +95,15 @@ public:
     virtual void setTloAboveZ0(double height, Done done) = 0;
     // Says which tool is in the spindle, without a change.
     virtual void selectTool(int tool, Done done) = 0;
-    // Changes to `tool` (a manual change waits for the operator); with `storedTlo`, takes it instead of
-    // measuring where the controller can.
-    virtual void changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt) = 0;
+    // Changes to `tool`; with `storedTlo`, takes it instead of measuring where the controller can. A change
+    // that waits for a person at the machine (a manual change: changeByHand) is refused before
+    // anything is sent when nobody is there (setOperatorAbsent); otherwise the wait is said
+    // (waitingForOperator) and lasts at most operatorWaitMs(), then the change is ended on the machine.
+    // Every change of every controller passes here: this is where the operator's presence is enforced.
+    void changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt);
+    // What a person must do by hand in a change to `tool` from the tool in the spindle ("T8 is taken out by
+    // hand"); empty when the machine changes by itself.
+    [[nodiscard]] virtual QString changeByHand(int tool) const = 0;
     // Clears a halt; `brokenToolTlo`: the stored TLO of a tool the table marks broken, set back first.
     virtual void unlock(Done done, std::optional<double> brokenToolTlo = std::nullopt) = 0;
     // The TLO a failed break test left the machine without, which unlock() sets back; none when nothing is
@@ -114,9 +123,23 @@ public:
     [[nodiscard]] virtual std::optional<ToolSetter> toolSetter() const { return std::nullopt; }
     [[nodiscard]] virtual bool keepsReference() const { return true; }
     virtual void adoptReference(std::optional<double> referenceMz) { Q_UNUSED(referenceMz) }
-    // A manual tool change waiting for the operator (state Tool): the tool is in, go on (grblHAL's cycle
-    // start). Nothing where the firmware asks on its own.
-    virtual void resumeToolChange() { }
+    // Who is at the machine. The window's operator is; toffee-cli's is only when its input is a terminal.
+    // `why` (empty: someone is there) says why nobody is counted as there, for the refusal.
+    void setOperatorAbsent(const QString &why) { m_operatorAbsent = why; }
+    [[nodiscard]] const QString &operatorAbsent() const { return m_operatorAbsent; }
+    // How long a change waits for the person: the link's time limit when one is set (toffee-cli
+    // --timeout), else kOperatorWaitMs.
+    static constexpr int kOperatorWaitMs = 600000;
+    [[nodiscard]] int operatorWaitMs() const;
+    // While a change waits (waitingForOperator): the person put the tool in and says so here, as the
+    // machine's cycle start does (grblHAL); where only the machine's own button goes on (the Carvera),
+    // resumesFromHere() is false and this does nothing.
+    [[nodiscard]] virtual bool resumesFromHere() const { return false; }
+    void resumeToolChange();
+    // ... or the wait ends (the person said so, closed the terminal, or the limit passed): the machine's
+    // change is stopped, and the change ends as a failure saying `why`, nothing measured or recorded.
+    void endToolChange(const QString &why);
+    [[nodiscard]] bool isWaitingForOperator() const { return m_change && m_change->waiting; }
     // What setTlo(), setTloAboveZ0() and restoreTlo() send, for the operator to read before they are sent
     // ("M493.3 Z-12.5"; "G10 L1 P3 Z-12.5, G43 H3").
     [[nodiscard]] virtual QString setTloCommand(double tlo) const = 0;
@@ -133,9 +156,10 @@ public:
     virtual void writeToolTable(const QList<ControllerTool> &tools, Done done);
 
 Q_SIGNALS:
-    // A manual tool change waits for the operator to put `tool` in (grblHAL's state Tool): resumeToolChange()
-    // goes on, as the machine's cycle start does.
-    void waitingForToolChange(int tool);
+    // A manual tool change waits for the operator to put `tool` in (state Tool), for at most `limitMs`.
+    void waitingForOperator(int tool, int limitMs);
+    // The change ended, whichever way (done, failed, ended while it waited).
+    void toolChangeFinished();
 
 public:
     [[nodiscard]] static Result<void> validateTolerance(double tolerance);
@@ -143,6 +167,16 @@ public:
     [[nodiscard]] static Result<void> validateToolNumber(int tool);
 
 protected:
+    // The family's change, called by changeTool() once the operator's presence is settled.
+    virtual void startToolChange(int tool, Done done, std::optional<double> storedTlo) = 0;
+    // The family's words for "the tool is in, go on" and for stopping a change that waits.
+    virtual void resumeWaitingChange() { }
+    virtual void cancelWaitingChange() = 0;
+    // What stopping a waiting change leaves on the machine, for the operator ("grblHAL was reset: …").
+    [[nodiscard]] virtual QString cancelledChangeNote() const = 0;
+    // Whether the change under way was ended (endToolChange): its polling stops there.
+    [[nodiscard]] bool toolChangeEnded() const { return m_change && m_change->ended; }
+
     // Opens the link (unless open) and calls `afterOpen`, or `done` with why it did not open within the
     // transport's own limit.
     void openLink(Done done, std::function<void()> afterOpen);
@@ -156,6 +190,24 @@ protected:
     // `done`, with the recording a successful result carries: the TLO as `kind`, or a break test's verdict.
     [[nodiscard]] static Done recording(Done done, RecordingKind kind);
     [[nodiscard]] static Done recordingVerdict(Done done);
+
+private:
+    // A change under way: whether the machine waits for the person, and why the wait was ended.
+    struct ToolChange
+    {
+        int tool = 0;
+        bool waiting = false;
+        std::optional<QString> ended;
+        QMetaObject::Connection statusWatch;
+        QTimer *limit = nullptr;
+        QElapsedTimer waited;
+    };
+    void operatorWaitBegan();
+    [[nodiscard]] static QString waitedTooLong(int tool, int limitMs);
+    [[nodiscard]] Done finishingChange(Done done);
+
+    QString m_operatorAbsent;
+    std::optional<ToolChange> m_change;
 };
 
 } // namespace Toffee

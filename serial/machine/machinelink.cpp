@@ -139,6 +139,12 @@ void MachineLink::sendRealtime(char c)
         m_transport->writeRealtime(c);
 }
 
+void MachineLink::restartLimit(int ms)
+{
+    if (m_current)
+        m_timeout.start(ms);
+}
+
 void MachineLink::requestStatus()
 {
     if (isOpen())

@@ -97,6 +97,9 @@ public:
     void setTimeoutScale(double scale) { m_timeoutScale = scale; }
     // Gives up on any command after `ms` whatever its own limit (0: each command's own limit).
     void setTimeoutOverride(int ms) { m_timeoutOverride = ms; }
+    // The command in flight now waits for a person (a manual tool change): its limit starts again at `ms`,
+    // since the wait's own limit (MachineController::operatorWaitMs) is what ends it.
+    void restartLimit(int ms);
     [[nodiscard]] int timeoutOverride() const { return m_timeoutOverride; }
 
     [[nodiscard]] const std::optional<MachineStatus> &lastStatus() const { return m_status; }

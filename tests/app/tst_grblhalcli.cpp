@@ -242,6 +242,8 @@ private Q_SLOTS:
         // here, or the machine's cycle start); then T1 is measured against the reference.
         {
             QProcess change;
+            Terminal terminal; // the operator at the machine types the command, and Enter
+            terminal.attach(change);
             change.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"),
                 QStringList { u"--json"_s, u"--library"_s, m_dir.filePath(u"library.sqlite"_s),
                     u"--machine"_s, u"LongMill"_s, u"--controller"_s, u"grblhal"_s, u"--table"_s, table() }
@@ -255,7 +257,7 @@ private Q_SLOTS:
                 said += change.readAllStandardError();
             }
             QVERIFY2(said.contains("put T1 in the spindle"), said.constData());
-            change.write("\n");
+            terminal.type("\n");
             QVERIFY(change.waitForFinished(60000));
             const QByteArray out = change.readAllStandardOutput();
             QVERIFY2(change.exitCode() == 0, QByteArray(said + change.readAllStandardError()).constData());

@@ -41,12 +41,14 @@ private:
     QString tty() const { return m_dir.filePath(u"ttyCARVERA"_s); }
     QString library() const { return m_dir.filePath(u"library.sqlite"_s); }
     QString table() const { return m_dir.filePath(u"rack.json"_s); }
-    Run machine(const QStringList &arguments, bool asJson = true)
+    // The operator types each command at the machine (a terminal): a manual change may wait for them, and
+    // the emulator's operator puts the tool in. `script`: run as a script runs it, nobody to answer.
+    Run machine(const QStringList &arguments, bool asJson = true, bool script = false)
     {
         QStringList args { u"--library"_s, library(), u"--port"_s, tty(), u"--table"_s, table() };
         if (asJson)
             args.prepend(u"--json"_s);
-        return cli(args + arguments);
+        return cli(args + arguments, 60000, !script);
     }
     int historyCount(const QString &kind)
     {
@@ -136,6 +138,39 @@ private Q_SLOTS:
         QCOMPARE(run.out, QByteArray("The spindle is empty.\n"));
         QCOMPARE(json(machine({ u"status"_s })).value(u"tool"_s).toInt(), -1);
         QCOMPARE(historyCount(u"probe"_s), probes + 1);
+    }
+
+    // A script (cron, ssh -n, a pipe) has nobody at the machine: a change that waits for a person is refused
+    // before anything is sent, whichever tool it drops or picks by hand; a rack change goes on.
+    void aChangeByHandFromAScriptIsRefusedBeforeAnythingMoves()
+    {
+        Emulator emulator(tty(), {});
+        QVERIFY(emulator.started());
+        QCOMPARE(machine({ u"measure-rack"_s }, true, true).exitCode, 0); // rack tools only: nobody needed
+        const QJsonObject before = json(machine({ u"status"_s }));
+        QCOMPARE(before.value(u"tool"_s).toInt(), 6);
+        const int probes = historyCount(u"probe"_s);
+
+        Run run = machine({ u"change-tool"_s, u"8"_s }, true, true);
+        QCOMPARE(run.exitCode, 2);
+        const QString error = json(run).value(u"error"_s).toString();
+        QVERIFY2(error.startsWith(u"T8 is put in by hand on this machine"_s), qPrintable(error));
+        QVERIFY2(
+            error.contains(u"not a terminal"_s) && error.contains(u"Nothing was sent"_s), qPrintable(error));
+        const QJsonObject after = json(machine({ u"status"_s }));
+        QCOMPARE(after.value(u"tool"_s).toInt(), 6);
+        QCOMPARE(after.value(u"mpos"_s), before.value(u"mpos"_s)); // it never went to the change position
+        QCOMPARE(historyCount(u"probe"_s), probes);
+
+        // At a terminal the same change is made (the emulator's operator puts T8 in); from a script, the way
+        // back to the rack drops T8 by hand: refused too.
+        QCOMPARE(machine({ u"change-tool"_s, u"8"_s }).exitCode, 0);
+        run = machine({ u"change-tool"_s, u"2"_s }, true, true);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(
+            json(run).value(u"error"_s).toString().startsWith(u"T8 is taken out by hand on this machine"_s),
+            run.out.constData());
+        QCOMPARE(json(machine({ u"status"_s })).value(u"tool"_s).toInt(), 8);
     }
 
     void aStoredTloIsTakenOnlyAgainstItsOwnReference()

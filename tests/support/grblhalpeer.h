@@ -128,6 +128,28 @@ public:
         }
         return lines;
     }
+    // The status report grblHAL answers to '?' ("<Idle|MPos:…>"), as a client of its own, or nothing.
+    [[nodiscard]] QByteArray status(int limitMs = 3000) const
+    {
+        QTcpSocket socket;
+        socket.connectToHost(QHostAddress::LocalHost, m_port);
+        if (!socket.waitForConnected(2000))
+            return {};
+        socket.write("?");
+        QByteArray buffer;
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < limitMs) {
+            if (socket.bytesAvailable() == 0 && !socket.waitForReadyRead(100))
+                continue;
+            buffer += socket.readAll();
+            const qsizetype start = buffer.indexOf('<');
+            const qsizetype end = buffer.indexOf('>', start);
+            if (start >= 0 && end > start)
+                return buffer.mid(start, end - start + 1);
+        }
+        return {};
+    }
     // Tool n's Z offset in grblHAL's own table, as $# reports it ("[T:n|x,y,z|…"), or nothing.
     [[nodiscard]] std::optional<double> tableZ(int tool) const
     {

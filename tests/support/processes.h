@@ -8,6 +8,8 @@
 #include <QProcess>
 #include <QTest>
 
+#include "tests/support/terminal.h"
+
 namespace Toffee::Test {
 
 struct Run
@@ -17,9 +19,14 @@ struct Run
     QByteArray err;
 };
 
-inline Run cli(const QStringList &arguments, int timeoutMs = 60000)
+// toffee-cli run as a script runs it (its input a pipe: nobody counts as at the machine), or with
+// `atTerminal` as an operator types it at the machine (its input a terminal nobody types on).
+inline Run cli(const QStringList &arguments, int timeoutMs = 60000, bool atTerminal = false)
 {
     QProcess process;
+    Terminal terminal;
+    if (atTerminal)
+        terminal.attach(process);
     process.start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"), arguments);
     Run run;
     if (!process.waitForFinished(timeoutMs)) {

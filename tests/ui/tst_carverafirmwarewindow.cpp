@@ -14,6 +14,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QStandardPaths>
 
 #include "tests/support/carverapeer.h"
@@ -226,6 +227,49 @@ private Q_SLOTS:
         s.trigger(u"actionUnlock"_s);
         QVERIFY(waitIdle(s));
         QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
+    }
+
+    // A tool outside the rack is changed by hand: the firmware goes to its change position and waits for its
+    // button. The window says so, with the limit, and End the Change stops it there (a halt, as Ctrl-X is):
+    // nothing measured, nothing recorded.
+    void aChangeByHandWaitsForTheOperatorAndCanBeEnded()
+    {
+        if (CarveraPeer::script().isEmpty())
+            QSKIP(qPrintable(CarveraPeer::skipReason()));
+        CarveraPeer peer;
+        QVERIFY2(peer.started(), qPrintable(peer.errors()));
+        Station s;
+        s.window.resize(1280, 720);
+        QVERIFY(s.window.openFile(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json")));
+        connectTo(s, peer.uart());
+        const ToolTable before = s.table();
+        s.find<QSpinBox>(u"rackToolSpin"_s)->setValue(8);
+        answerNextBox(QMessageBox::Yes);
+        s.find<QPushButton>(u"rackLoadButton"_s)->click();
+        QMessageBox *box = nullptr;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return (box = s.window.findChild<QMessageBox *>(u"toolChangeWaitBox"_s)) && box->isVisible();
+            },
+            30000));
+        QCOMPARE(box->windowTitle(), u"Put T8 in the Spindle"_s);
+        QVERIFY2(box->text().contains(u"press the machine's button"_s), qPrintable(box->text()));
+        QVERIFY2(
+            box->informativeText().contains(u"waits up to 10 min;"_s), qPrintable(box->informativeText()));
+        QVERIFY(!box->findChild<QPushButton *>(u"toolChangeContinueButton"_s)); // only the machine's button
+        QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Waiting for the operator"_s);
+        screenshot(s.window, u"carvera-change-by-hand.png"_s);
+        QString ended;
+        QTimer::singleShot(0, [&ended] { answerNextBox(QMessageBox::Ok, &ended, {}, 1500); });
+        box->findChild<QPushButton *>(u"toolChangeEndButton"_s)->click();
+        QVERIFY(QTest::qWaitFor([&ended] { return !ended.isEmpty(); }, 30000));
+        QVERIFY2(ended.contains(u"The operator ended the change in the window."_s)
+                && ended.contains(u"nothing was measured or recorded"_s),
+            qPrintable(ended));
+        QVERIFY(waitIdle(s));
+        QTRY_VERIFY(!s.window.findChild<QMessageBox *>(u"toolChangeWaitBox"_s));
+        QCOMPARE(s.table(), before);
+        QTRY_COMPARE_WITH_TIMEOUT(s.text(u"machineStateLabel"_s), u"HALTED"_s, 5000);
     }
 };
 
