@@ -18,7 +18,8 @@ enum class RecordingKind : quint8 { Probe, ManualSet, Restore, BreakTest, Pulled
 // What an operation on the machine means for the tool table and its history, carried by its result so that
 // the window and the CLI record it with one call (ToolTable::record, ToolDocument::record): a tool's new TLO
 // (probed or set by hand) with the reference it is measured against, a break test's verdict, or a stored TLO
-// restored.
+// restored. Every length is the machine's, in millimetres, as the history keeps it; the table converts to its
+// own units when it records one (ToolTable::recordMeasurement).
 struct Recording
 {
     int tool = -1;

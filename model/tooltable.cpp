@@ -139,15 +139,17 @@ Tool ToolTable::toolOrNew(int number) const
 }
 
 Result<void> ToolTable::recordMeasurement(
-    int number, double tlo, const QDateTime &at, TloSource source, std::optional<double> referenceMz)
+    int number, double tloMm, const QDateTime &at, TloSource source, std::optional<double> referenceMzMm)
 {
-    // A measured value is stored at the machine's resolution (0.001 mm, 0.0001 in), never with the noise of
-    // the arithmetic that produced it.
+    // A measured value is stored in the table's units at the machine's resolution (0.001 mm, 0.0001 in),
+    // never with the noise of the arithmetic that produced it.
     const double steps = std::pow(10.0, resolutionDecimals(m_units));
+    double tlo = fromMillimetres(tloMm, m_units);
     if (std::isfinite(tlo))
         tlo = std::round(tlo * steps) / steps;
-    if (referenceMz && std::isfinite(*referenceMz))
-        referenceMz = std::round(*referenceMz * steps) / steps;
+    std::optional<double> referenceMz;
+    if (referenceMzMm && std::isfinite(*referenceMzMm))
+        referenceMz = std::round(fromMillimetres(*referenceMzMm, m_units) * steps) / steps;
     Tool tool = toolOrNew(number);
     tool.measuredTlo = tlo;
     tool.measuredAt = at.toUTC();
@@ -156,6 +158,26 @@ Result<void> ToolTable::recordMeasurement(
     if (source == TloSource::Probe)
         tool.breakTestFailed = false;
     return contains(number) ? replace(number, tool) : insert(tool);
+}
+
+std::optional<StoredTlo> ToolTable::storedTlo(int number) const
+{
+    const Tool *tool = find(number);
+    if (!tool || !tool->measuredTlo)
+        return std::nullopt;
+    // At the machine's 0.001 mm, so that what is sent is what the machine then reports.
+    const auto machine = [this](double length) {
+        return std::round(toMillimetres(length, m_units) * 1000.0) / 1000.0;
+    };
+    StoredTlo stored;
+    stored.tlo = machine(*tool->measuredTlo);
+    if (tool->referenceMz)
+        stored.referenceMz = machine(*tool->referenceMz);
+    stored.sameWithin = sameLengthWithin(m_units);
+    stored.source = tool->tloSource;
+    stored.measuredAt = tool->measuredAt;
+    stored.breakTestFailed = tool->breakTestFailed;
+    return stored;
 }
 
 Result<void> ToolTable::recordBreakTest(int number, bool failed)
@@ -185,6 +207,24 @@ Result<void> ToolTable::record(const Recording &r)
         return recordMeasurement(r.tool, *r.tlo, r.at, r.source, r.referenceMz);
     if (r.breakTestFailed)
         return recordBreakTest(r.tool, *r.breakTestFailed);
+    return {};
+}
+
+Recording ToolTable::newCutterRecording(int number) const
+{
+    const auto stored = storedTlo(number);
+    return Recording::newCutter(number, stored ? std::optional(stored->tlo) : std::nullopt,
+        stored ? stored->referenceMz : std::nullopt);
+}
+
+Result<void> ToolTable::recordAll(const QList<Recording> &recordings)
+{
+    ToolTable next = *this;
+    for (const Recording &r : recordings) {
+        if (auto recorded = next.record(r); !recorded)
+            return Error { tr("T%1: %2 Nothing was recorded.").arg(r.tool).arg(recorded.error().message) };
+    }
+    *this = std::move(next);
     return {};
 }
 

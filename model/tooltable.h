@@ -14,6 +14,18 @@ namespace Toffee {
 
 // The tool table as a value: tools kept sorted by number, numbers unique, every value valid.
 // Every mutator validates first; a refused change leaves the table exactly as it was.
+// A tool's stored TLO in millimetres, as a machine takes it (ToolTable::storedTlo).
+struct StoredTlo
+{
+    double tlo = 0.0; // at the machine's 0.001 mm
+    std::optional<double> referenceMz;
+    // How far a machine's value may lie from these and still be them (sameLengthWithin the table's units).
+    double sameWithin = 0.0005;
+    TloSource source = TloSource::Probe;
+    QDateTime measuredAt;
+    bool breakTestFailed = false;
+};
+
 class ToolTable
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::ToolTable)
@@ -63,18 +75,29 @@ public:
     Result<void> replace(int number, const Tool &tool);
     bool remove(int number);
     // Stores a TLO from the machine into tool `number`, adding the tool when the table has none. A probe
-    // clears a failed break test's mark; an offset set by hand does not (the tool was not measured).
-    Result<void> recordMeasurement(int number, double tlo, const QDateTime &at,
-        TloSource source = TloSource::Probe, std::optional<double> referenceMz = std::nullopt);
+    // clears a failed break test's mark; an offset set by hand does not (the tool was not measured). The TLO
+    // and its reference are the machine's, in millimetres: here they become the table's units (the one place
+    // a length crosses from a machine into a table).
+    Result<void> recordMeasurement(int number, double tloMm, const QDateTime &at,
+        TloSource source = TloSource::Probe, std::optional<double> referenceMzMm = std::nullopt);
+    // Tool `number`'s stored TLO as a machine takes it: in millimetres, with its reference, whatever the
+    // table's units (the one place a length crosses from a table to a machine). Nothing when the tool is not
+    // in the table or has no TLO.
+    [[nodiscard]] std::optional<StoredTlo> storedTlo(int number) const;
     // Marks tool `number` as failed (or passed) by a break test, adding the tool when the table has none.
     Result<void> recordBreakTest(int number, bool failed);
     // Another cutter in tool `number`'s pocket: the old cutter's TLO (with its time, source and reference),
     // its wear and its break mark no longer hold, and the tool must be measured before it cuts. Its number,
     // pocket, description, geometry, notes and life limits stay.
     Result<void> newCutter(int number);
+    // What a new cutter in tool `number` means for the history: the old cutter's TLO and reference, in
+    // millimetres (Recording::newCutter).
+    [[nodiscard]] Recording newCutterRecording(int number) const;
     // What an operation on the machine carries (a TLO, or a break test's verdict), recorded as the two above
     // do.
     Result<void> record(const Recording &recording);
+    // Several at once (a pull of a controller's table): all of them, or none and why not, naming the tool.
+    Result<void> recordAll(const QList<Recording> &recordings);
 
     friend bool operator==(const ToolTable &, const ToolTable &) = default;
 

@@ -33,9 +33,9 @@ RackSequence::Plan RackSequence::plan(
     for (int tool : rack) {
         RackStep step;
         step.tool = tool;
-        if (const Tool *t = table.find(tool)) {
-            step.storedTlo = t->measuredTlo;
-            step.storedReferenceMz = t->referenceMz;
+        if (const auto stored = table.storedTlo(tool)) { // in millimetres, as the machine's
+            step.storedTlo = stored->tlo;
+            step.storedReferenceMz = stored->referenceMz;
         }
         p.steps.append(step);
     }

@@ -2077,10 +2077,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Toffee weiß nicht, wo der Werkzeugtaster dieser Maschine ist. Legen Sie ihn zuerst fest (Maschine ▸ Werkzeugtaster …, oder toffee-cli --setter X,Y,ZMIN in Maschinenkoordinaten).</translation>
     </message>
     <message>
-        <source>grblHAL is in inches (G20). Toffee probes in millimetres: send G21, then probe again.</source>
-        <translation>grblHAL ist auf Zoll eingestellt (G20). Toffee misst in Millimetern: Senden Sie G21 und messen Sie dann erneut.</translation>
-    </message>
-    <message>
         <source>The probe did not report a touch. Nothing was measured.</source>
         <translation>Der Taster hat keine Berührung gemeldet. Es wurde nichts gemessen.</translation>
     </message>
@@ -2199,6 +2195,30 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>grblHAL was reset to end it: its tool is still T%1, with no offset in force. Check what is in the spindle, then select it and restore or probe its TLO before cutting.</source>
         <translation>grblHAL wurde zurückgesetzt, um ihn zu beenden: Sein Werkzeug ist noch T%1, ohne wirksame Korrektur. Prüfen Sie, was in der Spindel steckt, wählen Sie es dann aus und stellen Sie seine Längenkorrektur wieder her oder messen Sie sie, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>grblHAL is in inches (G20), where its G10 and G38.2 take inches. Toffee %1 in millimetres: send G21, then try again. Nothing was sent.</source>
+        <translation>grblHAL ist auf Zoll eingestellt (G20), in dem seine G10 und G38.2 Zoll nehmen. Toffee %1 in Millimetern: Senden Sie G21 und versuchen Sie es dann erneut. Nichts wurde gesendet.</translation>
+    </message>
+    <message>
+        <source>grblHAL reports in inches ($13=1); Toffee reads millimetres. Set $13=0 (reports in millimetres), then connect again.</source>
+        <translation>grblHAL meldet in Zoll ($13=1); Toffee liest Millimeter. Setzen Sie $13=0 (Meldungen in Millimetern) und verbinden Sie sich dann erneut.</translation>
+    </message>
+    <message>
+        <source>probes</source>
+        <translation>misst</translation>
+    </message>
+    <message>
+        <source>writes TLOs</source>
+        <translation>schreibt Längenkorrekturen</translation>
+    </message>
+    <message>
+        <source>writes its table</source>
+        <translation>schreibt seine Tabelle</translation>
+    </message>
+    <message>
+        <source>Written before it: %1; not written: %2.</source>
+        <translation>Davor geschrieben: %1; nicht geschrieben: %2.</translation>
     </message>
 </context>
 <context>
@@ -4750,10 +4770,6 @@ Trotzdem speichern?</translation>
         <translation>Korrekturen von %1 übernehmen</translation>
     </message>
     <message>
-        <source>Not every offset could be taken</source>
-        <translation>Nicht jede Korrektur ließ sich übernehmen</translation>
-    </message>
-    <message>
         <source>Taken from the controller&apos;s table into the file: %1 TLOs.</source>
         <translation>Aus der Tabelle der Steuerung in die Datei übernommen: %1 TLOs.</translation>
     </message>
@@ -4840,6 +4856,10 @@ Trotzdem speichern?</translation>
     <message>
         <source>Tools in %2 without a unit (Fusion writes &quot;unit&quot; on every tool): %1. Their diameters and lengths are read in the unit you choose; the preview shows each of them before anything changes.</source>
         <translation>Werkzeuge in %2 ohne Einheit (Fusion schreibt „unit“ an jedes Werkzeug): %1. Ihre Durchmesser und Längen werden in der gewählten Einheit gelesen; die Vorschau zeigt jedes davon, bevor sich etwas ändert.</translation>
+    </message>
+    <message>
+        <source>The offsets were not pulled</source>
+        <translation>Die Korrekturen wurden nicht übernommen</translation>
     </message>
 </context>
 <context>
@@ -6344,6 +6364,10 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>T%1 is not in the table.</source>
         <translation>T%1 ist nicht in der Tabelle.</translation>
+    </message>
+    <message>
+        <source>T%1: %2 Nothing was recorded.</source>
+        <translation>T%1: %2 Nichts wurde aufgezeichnet.</translation>
     </message>
 </context>
 <context>

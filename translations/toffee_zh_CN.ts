@@ -2077,10 +2077,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>Toffee 不知道这台机床的对刀仪在哪里。请先设置（机床 ▸ 对刀仪…，或用 toffee-cli --setter X,Y,ZMIN 以机床坐标指定）。</translation>
     </message>
     <message>
-        <source>grblHAL is in inches (G20). Toffee probes in millimetres: send G21, then probe again.</source>
-        <translation>grblHAL 处于英寸模式（G20）。Toffee 以毫米对刀：请发送 G21，然后重新对刀。</translation>
-    </message>
-    <message>
         <source>The probe did not report a touch. Nothing was measured.</source>
         <translation>探针没有报告触碰。未测得任何数据。</translation>
     </message>
@@ -2199,6 +2195,30 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>grblHAL was reset to end it: its tool is still T%1, with no offset in force. Check what is in the spindle, then select it and restore or probe its TLO before cutting.</source>
         <translation>已复位 grblHAL 以结束换刀：其刀具仍为 T%1，且无生效的补偿。请检查主轴中的刀具，然后选择它，并在切削前恢复或测量其刀长补偿。</translation>
+    </message>
+    <message>
+        <source>grblHAL is in inches (G20), where its G10 and G38.2 take inches. Toffee %1 in millimetres: send G21, then try again. Nothing was sent.</source>
+        <translation>grblHAL 处于英寸模式（G20），此时其 G10 和 G38.2 以英寸计。Toffee 以毫米%1：请发送 G21 后重试。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>grblHAL reports in inches ($13=1); Toffee reads millimetres. Set $13=0 (reports in millimetres), then connect again.</source>
+        <translation>grblHAL 以英寸报告（$13=1）；Toffee 读取毫米。请设置 $13=0（以毫米报告），然后重新连接。</translation>
+    </message>
+    <message>
+        <source>probes</source>
+        <translation>测量</translation>
+    </message>
+    <message>
+        <source>writes TLOs</source>
+        <translation>写入刀长补偿</translation>
+    </message>
+    <message>
+        <source>writes its table</source>
+        <translation>写入其刀具表</translation>
+    </message>
+    <message>
+        <source>Written before it: %1; not written: %2.</source>
+        <translation>此前已写入：%1；未写入：%2。</translation>
     </message>
 </context>
 <context>
@@ -4750,10 +4770,6 @@ Save anyway?</source>
         <translation>从 %1 拉取补偿</translation>
     </message>
     <message>
-        <source>Not every offset could be taken</source>
-        <translation>并非所有补偿都能采用</translation>
-    </message>
-    <message>
         <source>Taken from the controller&apos;s table into the file: %1 TLOs.</source>
         <translation>已从控制器的刀具表采用到文件中：%1 个 TLO。</translation>
     </message>
@@ -4840,6 +4856,10 @@ Save anyway?</source>
     <message>
         <source>Tools in %2 without a unit (Fusion writes &quot;unit&quot; on every tool): %1. Their diameters and lengths are read in the unit you choose; the preview shows each of them before anything changes.</source>
         <translation>%2 中没有单位的刀具（Fusion 会为每把刀具写入 &quot;unit&quot;）：%1。其直径和长度将按您选择的单位读取；在任何更改之前，预览会逐一显示。</translation>
+    </message>
+    <message>
+        <source>The offsets were not pulled</source>
+        <translation>未拉取补偿</translation>
     </message>
 </context>
 <context>
@@ -6344,6 +6364,10 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>T%1 is not in the table.</source>
         <translation>T%1 不在表中。</translation>
+    </message>
+    <message>
+        <source>T%1: %2 Nothing was recorded.</source>
+        <translation>T%1：%2 未记录任何内容。</translation>
     </message>
 </context>
 <context>

@@ -113,25 +113,25 @@ QString BreakTestPanel::referenceWarning() const
     const auto tool = m_connection->activeTool();
     if (!tool || *tool < 0)
         return tr("The machine reports no tool in the spindle.");
-    const Tool *stored = m_document->table().find(*tool);
+    const auto stored = m_document->table().storedTlo(*tool); // in millimetres, as the machine's
     const auto &offsets = m_connection->lastOffsets();
     const std::optional<double> machine = offsets ? std::optional(offsets->tlo()) : std::nullopt;
-    if (!stored || !stored->measuredTlo)
+    if (!stored)
         return tr("T%1 has no TLO in the table: the test compares against whatever TLO the machine holds%2, "
                   "which may not be T%1's.")
             .arg(*tool)
             .arg(machine ? u" ("_s + millimetres(*machine) + u')' : QString());
-    if (machine && std::fabs(*machine - *stored->measuredTlo) > 0.0005)
+    if (machine && std::fabs(*machine - stored->tlo) > stored->sameWithin)
         return tr(
             "The machine holds TLO %1 but the table holds %2 for T%3: Toffee sets the table's %2 first, "
             "and the machine compares the tool with it.")
-            .arg(millimetres(*machine), millimetres(*stored->measuredTlo))
+            .arg(millimetres(*machine), millimetres(stored->tlo))
             .arg(*tool);
-    if (stored->tloSource == TloSource::Manual)
+    if (stored->source == TloSource::Manual)
         return tr("T%1's TLO %2 was set by hand (%3), not measured: if that value is not the tool's real "
                   "length, the test reports the tool broken and halts the machine.")
             .arg(*tool)
-            .arg(millimetres(*stored->measuredTlo),
+            .arg(millimetres(stored->tlo),
                 QLocale().toString(stored->measuredAt.toLocalTime(), QLocale::ShortFormat));
     return {};
 }
@@ -173,11 +173,11 @@ void BreakTestPanel::run(bool confirm)
             return;
     }
     // Whether the TLO compared against was set by hand, as it was before the verdict is recorded.
-    const Tool *stored = tool ? m_document->table().find(*tool) : nullptr;
-    const bool handSet = stored && stored->measuredTlo && stored->tloSource == TloSource::Manual;
-    // The firmware compares with the TLO in force: the table's for this tool, set first when the machine has
-    // another (after selecting a tool it still has the previous tool's).
-    const std::optional<double> storedTlo = stored ? stored->measuredTlo : std::nullopt;
+    const auto stored = tool ? m_document->table().storedTlo(*tool) : std::nullopt;
+    const bool handSet = stored && stored->source == TloSource::Manual;
+    // The firmware compares with the TLO in force: the table's for this tool (in millimetres), set first
+    // when the machine has another (after selecting a tool it still has the previous tool's).
+    const std::optional<double> storedTlo = stored ? std::optional(stored->tlo) : std::nullopt;
     const bool started = m_connection->breakTest(
         tolerance,
         [this](const SessionResult &r) {

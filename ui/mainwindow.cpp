@@ -573,7 +573,7 @@ void MainWindow::newCutter()
     box.exec();
     if (box.clickedButton() != confirm)
         return;
-    if (auto r = m_document->record(Recording::newCutter(number, tool->measuredTlo, tool->referenceMz)); !r) {
+    if (auto r = m_document->record(m_document->table().newCutterRecording(number)); !r) {
         showError(tr("Cannot put in a new cutter"), r.error().text());
         return;
     }

@@ -16,7 +16,7 @@
 #include "model/library/library.h"
 #include "model/numberformat.h"
 #include "serial/machineconnection.h"
-#include "serial/offsetpull.h"
+#include "serial/offsetsync.h"
 #include "ui/appsettings.h"
 #include "ui/connectionpanel.h"
 #include "ui/machinedock.h"
@@ -28,8 +28,6 @@ using namespace Qt::StringLiterals;
 namespace Toffee {
 
 namespace {
-
-constexpr double kSame = 0.0005; // grblHAL prints 0.001 mm
 
 QString controllerName(const MachineConnection *connection)
 {
@@ -107,38 +105,31 @@ void MainWindow::pushOffsets()
     m_connection->readToolTable([this](const SessionResult &read) {
         if (!read.ok() || !read.controllerTools)
             return showError(tr("Cannot read the controller's tool table"), read.message);
-        const QList<ControllerTool> held = *read.controllerTools;
         const int size = m_connection->firmware().toolTableSize;
-        const double toMm = m_document->table().units() == Units::Inch ? 25.4 : 1.0;
+        const PushPlan plan = planPush(m_document->table(), *read.controllerTools, size);
         QList<OffsetDifference> rows;
-        QList<ControllerTool> writes;
-        QStringList beyond;
-        const QList<Tool> tools = m_document->table().tools();
-        for (const Tool &tool : tools) {
-            if (!tool.measuredTlo)
-                continue;
-            OffsetDifference row { tool.number, *tool.measuredTlo * toMm, std::nullopt, false, {} };
-            for (const ControllerTool &entry : held) {
-                if (entry.tool == tool.number)
-                    row.inController = entry.tlo;
-            }
-            if (tool.number < 1 || tool.number > size) {
+        for (const PushedEntry &entry : plan.entries) {
+            OffsetDifference row { entry.tool, entry.inFile, entry.inController, false, {} };
+            switch (entry.action) {
+            case PushedEntry::Action::Beyond:
                 row.what = tr("beyond its table (T1 to T%1)").arg(size);
-                beyond << u"T%1"_s.arg(tool.number);
-            } else if (row.inController && std::fabs(*row.inController - *row.inFile) < kSame) {
+                break;
+            case PushedEntry::Action::Unchanged:
                 row.what = tr("unchanged");
-            } else {
+                break;
+            case PushedEntry::Action::Write:
                 row.changes = true;
                 row.what = tr("written");
-                writes.append({ tool.number, *row.inFile, std::max(0.0, tool.totalRadius() * toMm) });
+                break;
             }
             rows.append(row);
         }
-        const QString refusal = beyond.isEmpty()
+        const QList<ControllerTool> writes = plan.writes();
+        const QString refusal = plan.beyond().isEmpty()
             ? QString()
             : tr("%1 cannot go into grblHAL's table of %2 tools: nothing is pushed. Renumber them, or remove "
                  "their TLOs, and push again.")
-                  .arg(beyond.join(u", "_s))
+                  .arg(plan.beyond().join(u", "_s))
                   .arg(size);
         OffsetSyncDialog dialog(
             OffsetSyncDialog::Direction::Push, controllerName(m_connection), rows, refusal, this);
@@ -184,25 +175,20 @@ void MainWindow::pullOffsets()
         if (dialog.exec() != QDialog::Accepted)
             return;
         const QDateTime now = Clock::now();
-        m_document->undoStack()->beginMacro(tr("Pull Offsets from %1").arg(controllerName(m_connection)));
-        int taken = 0;
-        QStringList failed;
+        QList<Recording> recordings;
         for (const OffsetDifference &row : std::as_const(rows)) {
-            if (!row.changes)
-                continue;
             // Set on the controller, not measured by Toffee: no reference, so never restored.
-            const Recording recording { row.tool, *row.inController, TloSource::Manual, std::nullopt,
-                std::nullopt, now, RecordingKind::Pulled };
-            if (auto recorded = m_document->record(recording); recorded)
-                ++taken;
-            else
-                failed << recorded.error().message;
+            if (row.changes)
+                recordings.append({ row.tool, *row.inController, TloSource::Manual, std::nullopt,
+                    std::nullopt, now, RecordingKind::Pulled });
         }
-        m_document->undoStack()->endMacro();
-        if (!failed.isEmpty())
-            showError(tr("Not every offset could be taken"), failed.join(u'\n'));
+        // All of them or none: a table half taken from the controller is neither.
+        if (auto recorded
+            = m_document->recordAll(recordings, tr("Pull Offsets from %1").arg(controllerName(m_connection)));
+            !recorded)
+            return showError(tr("The offsets were not pulled"), recorded.error().message);
         statusBar()->showMessage(
-            tr("Taken from the controller's table into the file: %1 TLOs.").arg(taken), 10000);
+            tr("Taken from the controller's table into the file: %1 TLOs.").arg(recordings.size()), 10000);
     });
 }
 

@@ -159,18 +159,20 @@ void ProbePanel::restore(bool confirm)
 {
     if (!m_connection->canOperate() || m_connection->activeTool() == Limits::kEmptySpindle)
         return;
-    const Tool *tool = m_document->table().find(m_selectedTool);
-    if (!tool || !tool->measuredTlo)
+    // The table's TLO as the machine takes it: in millimetres, whatever the table's units.
+    const auto tool = m_document->table().storedTlo(m_selectedTool);
+    if (!tool)
         return;
-    const int number = tool->number;
-    const double tlo = *tool->measuredTlo;
+    const int number = m_selectedTool;
+    const double tlo = tool->tlo;
     const auto &offsets = m_connection->lastOffsets();
     // A TLO is the difference to the reference tool it was measured against: on a machine whose reference is
     // another (another machine, or one calibrated again since) it is simply wrong.
     const std::optional<double> machineReference
         = offsets && offsets->referenceMz && *offsets->referenceMz != 0.0 ? offsets->referenceMz
                                                                           : std::nullopt;
-    if (tool->referenceMz && machineReference && std::fabs(*tool->referenceMz - *machineReference) > 0.0005) {
+    if (tool->referenceMz && machineReference
+        && std::fabs(*tool->referenceMz - *machineReference) > tool->sameWithin) {
         QMessageBox::warning(this, tr("T%1's TLO does not fit this machine's reference").arg(number),
             tr("T%1's TLO %2 was measured against a reference tool at MCS Z %3, but the machine's reference "
                "is now at MCS Z %4 (another machine's TLO, or the machine was calibrated again since). "
@@ -191,7 +193,7 @@ void ProbePanel::restore(bool confirm)
                       "spindle, the next cut is off by the difference.")
                        .arg(number)
                        .arg(millimetres(tlo),
-                           tool->tloSource == TloSource::Manual ? tr("set by hand") : tr("measured"),
+                           tool->source == TloSource::Manual ? tr("set by hand") : tr("measured"),
                            QLocale().toString(tool->measuredAt.toLocalTime(), QLocale::ShortFormat));
         if (!tool->referenceMz)
             details << tr("The table does not say which reference tool T%1's TLO was measured against: make "

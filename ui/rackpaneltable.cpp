@@ -60,13 +60,14 @@ QString RackPanel::measuredText(int tool) const
 void RackPanel::fillRow(int row, int tool)
 {
     const Tool *t = m_document->table().find(tool);
+    const auto stored = m_document->table().storedTlo(tool); // in millimetres, as the machine's
     const auto step = m_results.constFind(tool);
     const bool inSpindle = m_shownSpindle == tool;
     const bool broken
         = (step != m_results.cend() && step->state == RackStep::State::Broken) || (t && t->breakTestFailed);
     const QStringList texts { QString::number(row + 1),
         inSpindle ? tr("T%1 · in spindle").arg(tool) : u"T"_s + QString::number(tool),
-        t && t->measuredTlo ? millimetres(*t->measuredTlo, false) : u"—"_s, measuredText(tool),
+        stored ? millimetres(stored->tlo, false) : u"—"_s, measuredText(tool),
         step != m_results.cend() ? resultText(*step) : QString() };
     for (int column = 0; column < ColumnCount; ++column) {
         QTableWidgetItem *item = m_table->item(row, column);

@@ -64,8 +64,8 @@ void SelfTest::start(const QElapsedTimer &sinceLaunch)
             connect(probe, &ProbePanel::finished, this, [this](const SessionResult &r) {
                 if (!r.ok())
                     return fail(r.message);
-                const Tool *tool = m_window->document()->table().find(r.tool.value_or(-1));
-                if (!tool || !tool->measuredTlo || std::fabs(*tool->measuredTlo - r.tlo->tlo()) > 1e-9)
+                const auto tool = m_window->document()->table().storedTlo(r.tool.value_or(-1));
+                if (!tool || std::fabs(tool->tlo - r.tlo->tlo()) > 1e-9)
                     return fail(tr("the measurement did not reach the table"));
                 step(tr("rendering"));
                 if (m_window->grab().isNull())

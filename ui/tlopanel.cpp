@@ -262,25 +262,27 @@ void TloPanel::updateTlo()
     m_tlo->setText(neverMeasured ? tr("not measured") : millimetres(*m_machineTlo));
     QString note;
     bool warn = false;
-    const Tool *tool = m_activeTool ? m_document->table().find(*m_activeTool) : nullptr;
+    // The table's TLO as the machine has it (millimetres), whatever the table's units.
+    const auto tool = m_activeTool ? m_document->table().storedTlo(*m_activeTool) : std::nullopt;
+    const Tool *row = m_activeTool ? m_document->table().find(*m_activeTool) : nullptr;
     if (neverMeasured) {
         note = tr("the machine has no TLO in force: probe the tool first");
         warn = true;
     } else if (!m_activeTool || *m_activeTool < 0) {
         note.clear();
-    } else if (!tool || !tool->measuredTlo) {
+    } else if (!tool) {
         note = tr("T%1 has no TLO in the table").arg(*m_activeTool);
         warn = true;
-    } else if (std::fabs(*tool->measuredTlo - *m_machineTlo) > 0.0005) {
-        note = tr("not T%1's: the table holds %2").arg(*m_activeTool).arg(millimetres(*tool->measuredTlo));
+    } else if (std::fabs(tool->tlo - *m_machineTlo) > tool->sameWithin) {
+        note = tr("not T%1's: the table holds %2").arg(*m_activeTool).arg(millimetres(tool->tlo));
         warn = true;
-    } else if (tool->tloSource == TloSource::Manual) {
+    } else if (tool->source == TloSource::Manual) {
         note = tr("set by hand %1, not measured").arg(when(tool->measuredAt));
         warn = true;
     } else {
         note = tr("measured %1").arg(when(tool->measuredAt));
     }
-    if (tool && tool->breakTestFailed) {
+    if (row && row->breakTestFailed) {
         note = tr("T%1 FAILED ITS BREAK TEST — %2").arg(*m_activeTool).arg(note);
         warn = true;
     }
@@ -318,8 +320,9 @@ void TloPanel::unlock(bool confirm)
     // goes back first.
     const auto tool = m_connection->activeTool();
     const Tool *stored = tool ? m_document->table().find(*tool) : nullptr;
+    const auto storedTlo = tool ? m_document->table().storedTlo(*tool) : std::nullopt;
     const std::optional<double> brokenTlo
-        = stored && stored->breakTestFailed ? stored->measuredTlo : std::nullopt;
+        = storedTlo && storedTlo->breakTestFailed ? std::optional(storedTlo->tlo) : std::nullopt;
     // One click must not carry on with a tool that may be broken: the operator says the tool was looked at.
     if (confirm && stored && stored->breakTestFailed && window()->isVisible()) {
         QMessageBox box(QMessageBox::Warning, tr("Unlock with T%1 marked broken?").arg(stored->number),

@@ -46,7 +46,7 @@ The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator
   report                     the tool length offsets (M493.4)
   probe                      measure the current tool on the tool setter (M491); the machine moves
   break-test [--tolerance H] re-measure and compare with the stored TLO (M491.1; H >= %1, default %2)
-  set-tlo --z V              set the TLO directly (M493.3 Z)
+  set-tlo --z V              set the TLO directly, in millimetres whatever the table's units (M493.3 Z)
   set-tlo --above-z0 H       set the TLO from the current position, the tip H above work Z0 (M493.3 Z)
   select-tool N              make tool N active without a change (M493.2 T)
   change-tool N [--use-stored-tlo [--stale-days D]]

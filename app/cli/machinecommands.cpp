@@ -24,7 +24,7 @@
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
 #include "serial/machineconnection.h"
-#include "serial/offsetpull.h"
+#include "serial/offsetsync.h"
 #include "serial/transport/streamtransport.h"
 
 using namespace Qt::StringLiterals;
@@ -229,7 +229,9 @@ private:
     void finishWith(const SessionResult &r, bool reported = false);
     [[nodiscard]] bool record(const SessionResult &r);
     [[nodiscard]] bool recordTable(const SessionResult &r);
-    void recordHistory(const HistoryEvent &event, const Result<QString> &kept);
+    void recordHistory(const QList<HistoryEvent> &events, const Result<QString> &kept);
+    // Several recordings at once (a pull): the table file and the history take all of them, or none.
+    [[nodiscard]] bool recordAll(const QList<Recording> &recordings);
     // A result printed by `print` when the operation got that far (a broken tool's verdict included).
     [[nodiscard]] Done printed(std::function<void(const SessionResult &)> print);
     // A probe or a manual offset: recorded, then printed.
@@ -291,15 +293,51 @@ bool MachineRun::record(const SessionResult &r)
         }
     }
     if (event)
-        recordHistory(*event, kept);
+        recordHistory({ *event }, kept);
     return saved;
 }
 
-void MachineRun::recordHistory(const HistoryEvent &event, const Result<QString> &kept)
+bool MachineRun::recordAll(const QList<Recording> &recordings)
+{
+    if (recordings.isEmpty())
+        return true;
+    QList<HistoryEvent> events;
+    Result<QString> kept = QString();
+    {
+        const CriticalSection critical;
+        if (m_options.table) {
+            ToolTable next = *m_options.table;
+            Result<void> saved = next.recordAll(recordings);
+            if (saved)
+                saved = saveTableFile(m_options.tablePath, next,
+                    formatForPath(m_options.tablePath).value_or(TableFormat::Json));
+            if (!saved) {
+                m_exitCode = BadInput;
+                fail(m_call, u"nothing was recorded: %1"_s.arg(saved.error().text()), BadInput);
+                m_recordFailed = true;
+                return false;
+            }
+            *m_options.table = next;
+        }
+        if (m_options.library) {
+            for (const Recording &r : recordings)
+                events.append(historyEvent(r, m_options.machine));
+            kept = Spool().keep(m_options.library->location(), events);
+        }
+    }
+    if (!events.isEmpty())
+        recordHistory(events, kept);
+    return true;
+}
+
+void MachineRun::recordHistory(const QList<HistoryEvent> &events, const Result<QString> &kept)
 {
     Library &library = *m_options.library;
-    const QString what = u"T%1's %2"_s.arg(event.tool).arg(eventKindName(event.kind).replace(u'_', u' '));
-    if (auto written = library.append({ event }); !written) {
+    QStringList names;
+    for (const HistoryEvent &event : events)
+        names << u"T%1's %2"_s.arg(event.tool).arg(eventKindName(event.kind).replace(u'_', u' '));
+    const QString what = names.join(u", "_s);
+    if (auto written = library.append(events); !written) {
         m_call.err << "toffee-cli: " << written.error().message << Qt::endl;
         if (kept) {
             m_history = u"kept"_s;
@@ -318,9 +356,11 @@ void MachineRun::recordHistory(const HistoryEvent &event, const Result<QString> 
         if (auto removed = Spool().remove(kept.value()); !removed)
             m_call.err << "toffee-cli: " << removed.error().message << Qt::endl;
     }
-    if (auto warning = checkProbeAgainstTrend(library, event, m_options.tolerance)) {
-        m_trendWarning = *warning;
-        m_call.err << "toffee-cli: warning: " << *warning << Qt::endl;
+    for (const HistoryEvent &event : events) {
+        if (auto warning = checkProbeAgainstTrend(library, event, m_options.tolerance)) {
+            m_trendWarning = *warning;
+            m_call.err << "toffee-cli: warning: " << *warning << Qt::endl;
+        }
     }
 }
 
@@ -443,36 +483,34 @@ void MachineRun::operate()
 
 bool MachineRun::pushOffsets()
 {
-    const double scale = m_options.table->units() == Units::Inch ? 25.4 : 1.0;
-    QList<ControllerTool> tools;
-    for (const Tool &t : m_options.table->tools()) {
-        if (t.measuredTlo)
-            tools.append({ t.number, *t.measuredTlo * scale, std::max(0.0, t.totalRadius() * scale) });
-    }
-    if (tools.isEmpty()) {
+    // What the controller held on connecting, to write only what differs and say what changed.
+    const PushPlan plan = planPush(*m_options.table,
+        m_connection.connectResult().controllerTools.value_or(QList<ControllerTool> {}),
+        m_connection.firmware().toolTableSize);
+    if (plan.entries.isEmpty()) {
         finishWith(SessionResult::failed(SessionResult::Outcome::Refused,
             u"%1 holds no tool with a TLO: nothing to write."_s.arg(m_options.tablePath)));
         return true;
     }
-    // What the controller held before, to say what changed.
-    const QList<ControllerTool> before
-        = m_connection.connectResult().controllerTools.value_or(QList<ControllerTool> {});
-    return m_connection.writeToolTable(tools, [this, tools, before](const SessionResult &r) {
-        if (!r.ok())
-            return finishWith(r);
+    if (!plan.beyond().isEmpty()) {
+        finishWith(SessionResult::failed(SessionResult::Outcome::Refused,
+            u"%1 cannot go into the controller's table of %2 tools. Nothing was written: renumber them, or "
+            "remove their TLOs, and push again."_s.arg(plan.beyond().join(u", "_s))
+                .arg(m_connection.firmware().toolTableSize)));
+        return true;
+    }
+    const auto report = [this, plan] {
         QJsonArray written;
-        for (const ControllerTool &t : tools) {
-            const auto found = std::find_if(
-                before.cbegin(), before.cend(), [&t](const ControllerTool &b) { return b.tool == t.tool; });
-            const bool known = found != before.cend();
-            const double was = known ? found->tlo : 0.0;
-            written.append(QJsonObject { { u"tool"_s, t.tool }, { u"tlo"_s, t.tlo },
-                { u"was"_s, known ? QJsonValue(was) : QJsonValue() } });
+        for (const PushedEntry &e : plan.entries) {
+            const bool changed = e.action == PushedEntry::Action::Write;
+            written.append(QJsonObject { { u"tool"_s, e.tool }, { u"tlo"_s, e.inFile },
+                { u"was"_s, e.inController ? QJsonValue(*e.inController) : QJsonValue() },
+                { u"changed"_s, changed } });
             if (!m_call.json) {
-                m_call.out << "T" << t.tool << ": " << mm(t.tlo) << " mm";
-                if (known && std::fabs(was - t.tlo) > 0.0005)
-                    m_call.out << " (was " << mm(was) << ")";
-                else if (known)
+                m_call.out << "T" << e.tool << ": " << mm(e.inFile) << " mm";
+                if (e.inController && changed)
+                    m_call.out << " (was " << mm(*e.inController) << ")";
+                else if (!changed)
                     m_call.out << " (unchanged)";
                 m_call.out << Qt::endl;
             }
@@ -480,10 +518,19 @@ bool MachineRun::pushOffsets()
         if (m_call.json)
             printJson(m_call, QJsonObject { { u"written"_s, written }, { u"read_back"_s, u"agrees"_s } });
         else
-            m_call.out << tools.size()
+            m_call.out << plan.writes().size() << " of " << plan.entries.size()
                        << " tools written into the controller's table and read back ($#): all agree."
                        << Qt::endl;
-        finishWith(r);
+        finishWith(SessionResult {});
+    };
+    if (plan.writes().isEmpty()) {
+        report(); // nothing differs: nothing is sent
+        return true;
+    }
+    return m_connection.writeToolTable(plan.writes(), [this, report](const SessionResult &r) {
+        if (!r.ok())
+            return finishWith(r);
+        report();
     });
 }
 
@@ -498,25 +545,28 @@ void MachineRun::pulled(const SessionResult &r)
     int unchanged = 0;
     int empty = 0;
     const QDateTime now = Clock::now();
-    for (const PulledEntry &entry : planPull(*m_options.table, *r.controllerTools)) {
+    QList<Recording> recordings;
+    const QList<PulledEntry> plan = planPull(*m_options.table, *r.controllerTools);
+    for (const PulledEntry &entry : plan) {
         unchanged += entry.action == PulledEntry::Action::Unchanged ? 1 : 0;
         empty += entry.action == PulledEntry::Action::Empty ? 1 : 0;
+        if (entry.changes())
+            recordings.append({ entry.tool, entry.inController, TloSource::Manual, std::nullopt, std::nullopt,
+                now, RecordingKind::Pulled });
+    }
+    // All of them or none, in the file and in the history alike.
+    if (!recordAll(recordings))
+        return finishWith(SessionResult::failed(SessionResult::Outcome::MachineError, {}), true);
+    for (const PulledEntry &entry : plan) {
         if (!entry.changes())
             continue;
-        const double tlo = entry.inController;
         const bool isNew = entry.action == PulledEntry::Action::NewTool;
-        SessionResult one;
-        one.tool = entry.tool;
-        one.tlo = TloReading { tlo, std::nullopt, std::nullopt };
-        one.recording = Recording { entry.tool, tlo, TloSource::Manual, std::nullopt, std::nullopt, now,
-            RecordingKind::Pulled };
-        if (!record(one))
-            return finishWith(SessionResult::failed(SessionResult::Outcome::MachineError, {}), true);
-        changes.append(QJsonObject { { u"tool"_s, entry.tool }, { u"tlo"_s, tlo },
+        changes.append(QJsonObject { { u"tool"_s, entry.tool }, { u"tlo"_s, entry.inController },
             { u"was"_s, entry.inFile ? QJsonValue(*entry.inFile) : QJsonValue() },
             { u"new_tool"_s, isNew } });
         if (!m_call.json) {
-            m_call.out << "T" << entry.tool << ": " << mm(tlo) << (isNew ? " (new tool)" : "");
+            m_call.out << "T" << entry.tool << ": " << mm(entry.inController) << " mm"
+                       << (isNew ? " (new tool)" : "");
             if (const auto was = entry.inFile)
                 m_call.out << " (was " << mm(*was) << ")";
             m_call.out << " read from the controller" << Qt::endl;
@@ -535,8 +585,8 @@ void MachineRun::pulled(const SessionResult &r)
 std::optional<double> MachineRun::storedTloInSpindle() const
 {
     const auto tool = m_connection.activeTool();
-    const Tool *stored = m_options.table && tool ? m_options.table->find(*tool) : nullptr;
-    return stored ? stored->measuredTlo : std::nullopt;
+    const auto stored = m_options.table && tool ? m_options.table->storedTlo(*tool) : std::nullopt;
+    return stored ? std::optional(stored->tlo) : std::nullopt; // millimetres, whatever the table's units
 }
 
 // The table's TLO for the tool in the spindle when the table marks it broken: unlock sets it back, since the
@@ -544,13 +594,14 @@ std::optional<double> MachineRun::storedTloInSpindle() const
 std::optional<double> MachineRun::brokenToolTloInSpindle() const
 {
     const auto tool = m_connection.activeTool();
-    const Tool *stored = m_options.table && tool ? m_options.table->find(*tool) : nullptr;
-    return stored && stored->breakTestFailed ? stored->measuredTlo : std::nullopt;
+    const auto stored = m_options.table && tool ? m_options.table->storedTlo(*tool) : std::nullopt;
+    return stored && stored->breakTestFailed ? std::optional(stored->tlo) : std::nullopt;
 }
 
 bool MachineRun::restore()
 {
-    const Tool *tool = m_options.table->find(m_options.tool);
+    // In millimetres, as the machine has it, whatever the table's units (machineoptions checked it is there).
+    const auto tool = m_options.table->storedTlo(m_options.tool);
     // The offsets read on connecting: the reference the machine has now.
     const auto &offsets = m_connection.connectResult().tlo;
     const double machineReference = offsets && offsets->referenceMz ? *offsets->referenceMz : 0.0;
@@ -563,11 +614,11 @@ bool MachineRun::restore()
         refusal
             = u"T%1's TLO in the table does not say which reference it was measured against, so it cannot be "
               "checked against the machine's: probe T%1 instead."_s.arg(m_options.tool);
-    else if (std::fabs(*tool->referenceMz - machineReference) > 0.0005)
+    else if (std::fabs(*tool->referenceMz - machineReference) > tool->sameWithin)
         refusal = u"T%1's TLO %2 mm was measured against reference MCS Z %3, but the machine's reference is "
                   u"%4 now "
                   "(%5 mm apart): probe T%1 instead."_s.arg(m_options.tool)
-                      .arg(mm(*tool->measuredTlo), mm(*tool->referenceMz), mm(machineReference),
+                      .arg(mm(tool->tlo), mm(*tool->referenceMz), mm(machineReference),
                           mm(std::fabs(*tool->referenceMz - machineReference)));
     if (!refusal.isEmpty()) {
         SessionResult refused;
@@ -576,7 +627,7 @@ bool MachineRun::restore()
         finishWith(refused);
         return true;
     }
-    return m_connection.restoreTlo(m_options.tool, *tool->measuredTlo, recorded());
+    return m_connection.restoreTlo(m_options.tool, tool->tlo, recorded());
 }
 
 // N round trips of "G90" on the link itself, polling off: the link's own latency, not an operation's.

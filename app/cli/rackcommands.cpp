@@ -69,24 +69,23 @@ void showRack(Invocation &call, const MachineOptions &o, const MachineConnection
     }
     for (int tool : o.rack) {
         const Tool *t = o.table->find(tool);
-        const Tool stored = t ? *t : Tool {};
-        const std::optional<double> tlo = stored.measuredTlo;
-        const bool byHand = t && tlo && t->tloSource == TloSource::Manual;
+        const auto stored = o.table->storedTlo(tool); // in millimetres, as the machine's
+        const bool byHand = stored && stored->source == TloSource::Manual;
         const bool broken = t && t->breakTestFailed;
-        const QDateTime at = t && tlo ? t->measuredAt : QDateTime();
+        const QDateTime at = stored ? stored->measuredAt : QDateTime();
         if (call.json) {
-            rackSlots.append(
-                QJsonObject { { u"slot"_s, tool }, { u"tool"_s, tool }, { u"tlo"_s, number(tlo) },
-                    { u"measured_at"_s, at.isValid() ? QJsonValue(at.toString(Qt::ISODate)) : QJsonValue() },
-                    { u"reference_mz"_s, number(t ? t->referenceMz : std::nullopt) },
-                    { u"set_by_hand"_s, byHand }, { u"broken"_s, broken },
-                    { u"in_spindle"_s, spindle == tool } });
+            rackSlots.append(QJsonObject { { u"slot"_s, tool }, { u"tool"_s, tool },
+                { u"tlo"_s, stored ? QJsonValue(stored->tlo) : QJsonValue() },
+                { u"measured_at"_s, at.isValid() ? QJsonValue(at.toString(Qt::ISODate)) : QJsonValue() },
+                { u"reference_mz"_s, number(stored ? stored->referenceMz : std::nullopt) },
+                { u"set_by_hand"_s, byHand }, { u"broken"_s, broken },
+                { u"in_spindle"_s, spindle == tool } });
             continue;
         }
         call.out << "  slot " << tool << "  T" << tool << "  "
-                 << (tlo ? u"TLO "_s + mm(*tlo) + u" mm, "_s
+                 << (stored ? u"TLO "_s + mm(stored->tlo) + u" mm, "_s
                                 + (at.isValid() ? ageText(at, now) : u"undated"_s)
-                         : u"no stored TLO"_s)
+                            : u"no stored TLO"_s)
                  << (byHand ? " (set by hand)" : "") << (broken ? "  BROKEN" : "")
                  << (spindle == tool ? "  (in the spindle)" : "") << Qt::endl;
     }

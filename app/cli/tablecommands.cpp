@@ -185,6 +185,7 @@ int newCutter(Invocation &call)
     if (!before)
         return fail(call, u"T%1 is not in %2: nothing was changed."_s.arg(tool).arg(path), BadInput);
     const Tool old = *before;
+    const Recording ended = table.value().newCutterRecording(tool); // before the cutter ends
     // The library first: a history that cannot be opened is said before the file changes.
     auto library = openLibraryOption(call);
     if (!library)
@@ -204,8 +205,7 @@ int newCutter(Invocation &call)
     if (library.value()) {
         const QString machine
             = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
-        const HistoryEvent event
-            = historyEvent(Recording::newCutter(tool, old.measuredTlo, old.referenceMz), machine);
+        const HistoryEvent event = historyEvent(ended, machine);
         const auto kept = Spool().keep(library.value()->location(), { event });
         if (auto written = library.value()->append({ event }); written) {
             history = u"recorded"_s;

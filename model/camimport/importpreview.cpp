@@ -19,15 +19,13 @@ namespace Toffee {
 
 namespace {
 
-constexpr double kMillimetresPerInch = 25.4;
-
 // A converted value keeps one decimal more than a machine resolves (0.0001 mm, 0.00001 in): the conversion's
 // floating-point noise goes, and importing the same library again finds nothing changed.
 double converted(double value, Units from, Units to)
 {
     if (from == to)
         return value;
-    const double v = to == Units::Inch ? value / kMillimetresPerInch : value * kMillimetresPerInch;
+    const double v = convertLength(value, from, to);
     const double scale = std::pow(10.0, resolutionDecimals(to) + 1);
     return std::round(v * scale) / scale;
 }
@@ -274,8 +272,11 @@ Result<ImportPreview> ImportPreview::build(
         ImportedTool item { cam.number, tool.description, ImportChange::New, {}, {} };
         if (!cutter.isEmpty()) {
             item.newCutter = true;
-            item.endedTlo = existing->measuredTlo;
-            item.endedReferenceMz = existing->referenceMz;
+            // For the history: in millimetres, as a machine has them.
+            if (existing->measuredTlo)
+                item.endedTlo = toMillimetres(*existing->measuredTlo, units);
+            if (existing->referenceMz)
+                item.endedReferenceMz = toMillimetres(*existing->referenceMz, units);
             item.notes << (existing->measuredTlo
                     ? tr("a new cutter (%1): the old cutter's TLO %2 %3, its wear and break mark end; "
                          "measure it "

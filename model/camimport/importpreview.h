@@ -26,7 +26,7 @@ struct ImportedTool
     // puts a new cutter in the pocket, as ToolTable::newCutter does, ending the old one's TLO (endedTlo),
     // wear and break mark. `fields` says why, first.
     bool newCutter = false;
-    std::optional<double> endedTlo = std::nullopt;
+    std::optional<double> endedTlo = std::nullopt; // in millimetres, as the history keeps it
     std::optional<double> endedReferenceMz = std::nullopt; // what that TLO was measured against
 };
 

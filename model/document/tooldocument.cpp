@@ -209,6 +209,17 @@ Result<void> ToolDocument::record(const Recording &r)
     return {};
 }
 
+Result<void> ToolDocument::recordAll(const QList<Recording> &recordings, const QString &text)
+{
+    ToolTable next = table();
+    if (auto recorded = next.recordAll(recordings); !recorded)
+        return recorded;
+    for (const Recording &r : recordings)
+        Q_EMIT recorded(r);
+    applyTable(next, text);
+    return {};
+}
+
 void ToolDocument::pushChange(const Tool &changed, const QString &text)
 {
     if (const Tool *existing = table().find(changed.number)) {

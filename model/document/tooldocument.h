@@ -60,6 +60,8 @@ public:
     Result<void> recordBreakTest(int number, bool failed);
     // What an operation on the machine carries, recorded as one of the two above.
     Result<void> record(const Recording &recording);
+    // Several at once, as one undoable step `text`: all of them, or none (ToolTable::recordAll).
+    Result<void> recordAll(const QList<Recording> &recordings, const QString &text);
     // A new tool with the next free number and its default pocket.
     [[nodiscard]] Tool newTool() const;
 

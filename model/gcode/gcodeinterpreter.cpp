@@ -23,8 +23,8 @@ OffsetTable offsetTableFor(const ToolTable &table, Dialect dialect)
     for (const Tool &t : table.tools()) {
         if (dialect != Dialect::Carvera)
             offsets[t.number] = { t.lengthGeometry, t.lengthWear, t.radiusGeometry, t.radiusWear };
-        else if (t.measuredTlo)
-            offsets[t.number] = { *t.measuredTlo, 0.0, t.radiusGeometry, t.radiusWear };
+        else if (const auto stored = table.storedTlo(t.number)) // the Carvera's TLOs: millimetres
+            offsets[t.number] = { stored->tlo, 0.0, t.radiusGeometry, t.radiusWear };
     }
     return offsets;
 }
@@ -215,8 +215,8 @@ Result<void> GCodeInterpreter::execute(const Words &w, int line)
     if (m_dialect == Dialect::Aerotech && w.hasG(44))
         return aerotechWords(w, line); // G44 X Y Z names the axes: nothing moves
     if (auto r = usesToolTableWords(m_dialect) ? linuxCncLength(w, line)
-            : m_dialect == Dialect::Aerotech    ? aerotechWords(w, line)
-                                                : lengthWords(w, line);
+            : m_dialect == Dialect::Aerotech   ? aerotechWords(w, line)
+                                               : lengthWords(w, line);
         !r)
         return r;
     for (char a : { 'X', 'Y', 'Z' }) {
@@ -261,8 +261,8 @@ Result<void> GCodeInterpreter::motionOf(const Words &w, int line, bool motion)
 {
     // LinuxCNC's G43.1 takes Z as the offset, and so does the Carvera's M493.3; a dwell's X (FANUC's G4 X) is
     // its time.
-    const bool consumedZ = (usesToolTableWords(m_dialect) && w.hasG(43.1))
-        || (m_dialect == Dialect::Carvera && w.hasM(493.3));
+    const bool consumedZ
+        = (usesToolTableWords(m_dialect) && w.hasG(43.1)) || (m_dialect == Dialect::Carvera && w.hasM(493.3));
     const bool dwell = w.hasG(4);
     // G30's second reference point is the machine's own setting: Toffee takes it as home, as G28.
     if (w.hasG(28) || w.hasG(30)) {

@@ -227,7 +227,10 @@ void JobChecker::unitsChanged(int line)
             return tr("G20: the Carvera refuses inch programs (ALARM: Imperial Units are unsupported). Post "
                       "the program in millimetres.");
         });
-    } else if (m_setup.hasTable && units != m_setup.tableUnits) {
+    } else if (m_setup.hasTable && units != m_setup.tableUnits && !measuresTlos(m_setup.dialect)) {
+        // Where the controller measures its TLOs (the Carvera, grblHAL), they are its millimetres whatever
+        // the table's units: only a table whose lengths are the controller's offsets must share the
+        // program's.
         note(FindingKind::UnitsMismatch, -1, line, [units] {
             return units == Units::Inch
                 ? tr("The program is in inches (G20) but the tool table is in millimetres.")

@@ -123,14 +123,14 @@ template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &fact
                           "apply its TLO with G43.1.")
                     .arg(n);
             });
-        else if (std::fabs(*entry - tlo) > 0.0005)
+        else if (std::fabs(*entry - tlo) > facts.sameWithin)
             found(FindingKind::ControllerTableDiffers, [this, n, tlo, value = *entry] {
                 return tr("The controller's own table holds %1 for T%2, the table file %3: G43 H%2 would "
                           "apply the controller's. Push the offsets (Machine ▸ Push Offsets…, toffee-cli "
                           "push-offsets) or probe T%2 before the job.")
-                    .arg(displayNumber(value, m_setup.tableUnits))
+                    .arg(millimetres(value))
                     .arg(n)
-                    .arg(displayNumber(tlo, m_setup.tableUnits));
+                    .arg(millimetres(tlo));
             });
     }
     if (facts.newCutterAt.isValid())
@@ -147,9 +147,7 @@ template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &fact
                       "not saved "
                       "after it.")
                 .arg(n)
-                .arg(displayNumber(*facts.libraryTlo, m_setup.tableUnits) + u' '
-                        + unitsSymbol(m_setup.tableUnits),
-                    ageText(facts.libraryMeasuredAt, m_setup.now));
+                .arg(millimetres(*facts.libraryTlo), ageText(facts.libraryMeasuredAt, m_setup.now));
         });
 }
 

@@ -47,7 +47,7 @@ Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &
                           "measured at its change.")
                            .arg(tool) };
     if (machineReferenceMz && facts.referenceMz
-        && std::fabs(*facts.referenceMz - *machineReferenceMz) > 0.0005)
+        && std::fabs(*facts.referenceMz - *machineReferenceMz) > facts.sameWithin)
         return Error { tr(
             "T%1's stored TLO was measured against reference MCS Z %2, but the machine's is %3: it "
             "is measured at its change.")
@@ -64,9 +64,13 @@ QHash<int, ToolFacts> factsFromTable(const ToolTable &table)
     for (const Tool &tool : table.tools()) {
         ToolFacts &f = facts[tool.number];
         f.inTable = true;
-        f.measuredTlo = tool.measuredTlo;
+        // The TLO and its reference as the machine has them (millimetres), whatever the table's units.
+        if (const auto stored = table.storedTlo(tool.number)) {
+            f.measuredTlo = stored->tlo;
+            f.referenceMz = stored->referenceMz;
+            f.sameWithin = stored->sameWithin;
+        }
         f.source = tool.tloSource;
-        f.referenceMz = tool.referenceMz;
         f.length = tool.totalLength();
         f.measuredAt = tool.measuredTlo ? tool.measuredAt : QDateTime();
         f.broken = tool.breakTestFailed;
@@ -140,7 +144,7 @@ Result<void> addLibraryFacts(
             continue; // nothing to add: no entry made for it
         ToolFacts &f = facts[tool];
         if (const auto &m = measured.value(); m && m->tlo) {
-            const bool sameTlo = f.measuredTlo && std::fabs(*f.measuredTlo - *m->tlo) < 0.0005;
+            const bool sameTlo = f.measuredTlo && std::fabs(*f.measuredTlo - *m->tlo) <= f.sameWithin;
             if (!f.inTable) {
                 f.measuredTlo = m->tlo;
                 f.measuredAt = m->at;

@@ -21,10 +21,13 @@ class ToolTable;
 struct ToolFacts
 {
     bool inTable = false;
-    std::optional<double> measuredTlo; // the table's TLO from the machine
+    // The table's TLO from the machine and its reference, in millimetres as the machine has them (like the
+    // history's and the controller's), whatever the table's units.
+    std::optional<double> measuredTlo;
     TloSource source = TloSource::Probe;
     std::optional<double> referenceMz;
-    double length = 0.0; // the table's total length (what G43 applies on the other controllers)
+    double sameWithin = 0.0005; // how far a machine's value may lie from these and still be them
+    double length = 0.0; // the table's total length (what G43 applies on the other controllers), its units
     QDateTime measuredAt; // when the TLO above was measured
     // The library's newest measurement of the tool, when it differs from the TLO above (the table was not
     // saved after it).

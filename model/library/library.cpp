@@ -344,7 +344,9 @@ std::optional<double> keptReferenceMz(const Library *library, const QString &mac
             && (!newest || tool.measuredAt > newest->measuredAt))
             newest = &tool;
     }
-    return newest ? newest->referenceMz : std::nullopt;
+    if (!newest)
+        return std::nullopt;
+    return table.storedTlo(newest->number)->referenceMz; // in millimetres, as the machine has it
 }
 
 } // namespace Toffee

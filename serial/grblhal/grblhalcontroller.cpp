@@ -178,6 +178,21 @@ void GrblHalController::readParameters(Done done, std::function<void(const GrblH
     });
 }
 
+void GrblHalController::inMillimetres(Done done, const QString &what, std::function<void()> next)
+{
+    readModal(done, [done, what, next](const Modal &modal) {
+        if (modal.inches) {
+            refuse(done,
+                tr("grblHAL is in inches (G20), where its G10 and G38.2 take inches. Toffee %1 in "
+                   "millimetres: "
+                   "send G21, then try again. Nothing was sent.")
+                    .arg(what));
+            return;
+        }
+        next();
+    });
+}
+
 void GrblHalController::readModal(Done done, std::function<void(const Modal &)> next)
 {
     run("$G", MachineLink::kDefaultTimeoutMs, done, [this, done, next](const CommandReply &reply) {
@@ -261,16 +276,38 @@ void GrblHalController::readBuild(Done done, const MachineStatus &status)
         m_firmware.kind = FirmwareInfo::Kind::GrblHal;
         m_firmware.version = m_build.version;
         m_firmware.toolTableSize = m_build.toolTableSize;
-        readModal(done, [this, done, status](const Modal &) {
-            readParameters(done, [this, done, status](const GrblHal::ParameterReport &) {
-                SessionResult result = tloResult(
-                    m_tool.value_or(Limits::kEmptySpindle), m_tloInForce.value_or(0.0), std::nullopt);
-                result.status = status;
-                result.status->tool = m_tool;
-                result.status->tlo = m_tloInForce;
-                result.controllerTools = m_table;
-                done(result);
-            });
+        readReportUnits(done, [this, done, status] { readOffsetsAfterBuild(done, status); });
+    });
+}
+
+// $13 = 1 makes grblHAL report every position and offset in inches: Toffee reads millimetres, so it does not
+// go on with such a controller rather than take each of its numbers for millimetres.
+void GrblHalController::readReportUnits(Done done, std::function<void()> next)
+{
+    run("$13", MachineLink::kDefaultTimeoutMs, done, [done, next](const CommandReply &reply) {
+        for (const QByteArray &line : reply.lines) {
+            if (line.trimmed().startsWith("$13=") && line.trimmed().mid(4).toInt() != 0) {
+                done(SessionResult::failed(SessionResult::Outcome::Refused,
+                    tr("grblHAL reports in inches ($13=1); Toffee reads millimetres. Set $13=0 (reports in "
+                       "millimetres), then connect again.")));
+                return;
+            }
+        }
+        next();
+    });
+}
+
+void GrblHalController::readOffsetsAfterBuild(Done done, const MachineStatus &status)
+{
+    readModal(done, [this, done, status](const Modal &) {
+        readParameters(done, [this, done, status](const GrblHal::ParameterReport &) {
+            SessionResult result
+                = tloResult(m_tool.value_or(Limits::kEmptySpindle), m_tloInForce.value_or(0.0), std::nullopt);
+            result.status = status;
+            result.status->tool = m_tool;
+            result.status->tlo = m_tloInForce;
+            result.controllerTools = m_table;
+            done(result);
         });
     });
 }
@@ -334,7 +371,9 @@ void GrblHalController::measure(Done done, std::function<void(double)> next)
     readModal(done, [this, done, next, setter](const Modal &modal) {
         if (modal.inches) {
             refuse(done,
-                tr("grblHAL is in inches (G20). Toffee probes in millimetres: send G21, then probe again."));
+                tr("grblHAL is in inches (G20), where its G10 and G38.2 take inches. Toffee %1 in "
+                   "millimetres: send G21, then try again. Nothing was sent.")
+                    .arg(tr("probes")));
             return;
         }
         readParameters(done, [this, done, next, setter, modal](const GrblHal::ParameterReport &report) {
@@ -441,16 +480,18 @@ void GrblHalController::writeOffset(
                       .arg(m_firmware.toolTableSize)
                 : tr("This grblHAL keeps no tool table: the TLO is in force (G43.1) until a reset."));
     };
-    if (table) {
-        run("G10 L1 P" + QByteArray::number(tool) + " Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done,
-            [=, this](const CommandReply &) {
-                run("G43 H" + QByteArray::number(tool), MachineLink::kDefaultTimeoutMs, done,
-                    [=, this](const CommandReply &) { readParameters(done, check); });
-            });
-    } else {
-        run("G43.1 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done,
-            [=, this](const CommandReply &) { readParameters(done, check); });
-    }
+    inMillimetres(done, tr("writes TLOs"), [=, this] {
+        if (table) {
+            run("G10 L1 P" + QByteArray::number(tool) + " Z" + number(tlo), MachineLink::kDefaultTimeoutMs,
+                done, [=, this](const CommandReply &) {
+                    run("G43 H" + QByteArray::number(tool), MachineLink::kDefaultTimeoutMs, done,
+                        [=, this](const CommandReply &) { readParameters(done, check); });
+                });
+        } else {
+            run("G43.1 Z" + number(tlo), MachineLink::kDefaultTimeoutMs, done,
+                [=, this](const CommandReply &) { readParameters(done, check); });
+        }
+    });
 }
 
 void GrblHalController::probe(Done done)
@@ -676,10 +717,30 @@ void GrblHalController::writeToolTable(const QList<ControllerTool> &tools, Done 
                 .arg(beyond.join(u", "_s)));
         return;
     }
+    inMillimetres(done, tr("writes its table"), [this, done, tools] { writeEntries(tools, done); });
+}
+
+void GrblHalController::writeEntries(const QList<ControllerTool> &tools, Done finished)
+{
     auto remaining = std::make_shared<QList<ControllerTool>>(tools);
+    auto written = std::make_shared<QStringList>();
+    // A refusal half-way says exactly which entries changed before it and which did not.
+    const Done done = [finished, remaining, written](const SessionResult &r) {
+        if (r.ok() || (written->isEmpty() && remaining->isEmpty()))
+            return finished(r);
+        SessionResult partly = r;
+        QStringList notWritten;
+        for (const ControllerTool &t : std::as_const(*remaining))
+            notWritten << u"T%1"_s.arg(t.tool);
+        partly.message += u' '
+            + tr("Written before it: %1; not written: %2.")
+                  .arg(written->isEmpty() ? tr("nothing") : written->join(u", "_s),
+                      notWritten.isEmpty() ? tr("nothing") : notWritten.join(u", "_s));
+        finished(partly);
+    };
     auto step = std::make_shared<std::function<void()>>();
     // Each command's answer holds the function; it holds itself only weakly, so it goes with the last.
-    *step = [this, done, tools, remaining, self = std::weak_ptr(step)] {
+    *step = [this, done, tools, remaining, written, self = std::weak_ptr(step)] {
         if (remaining->isEmpty()) {
             readParameters(done, [this, done, tools](const GrblHal::ParameterReport &report) {
                 QStringList differ;
@@ -705,10 +766,14 @@ void GrblHalController::writeToolTable(const QList<ControllerTool> &tools, Done 
             });
             return;
         }
-        const ControllerTool t = remaining->takeFirst();
+        const ControllerTool t = remaining->first();
         run("G10 L1 P" + QByteArray::number(t.tool) + " Z" + number(atResolution(t.tlo)) + " R"
                 + number(std::max(0.0, t.radius)),
-            MachineLink::kDefaultTimeoutMs, done, [step = self.lock()](const CommandReply &) { (*step)(); });
+            MachineLink::kDefaultTimeoutMs, done,
+            [remaining, written, step = self.lock()](const CommandReply &) {
+                *written << u"T%1"_s.arg(remaining->takeFirst().tool);
+                (*step)();
+            });
     };
     (*step)();
 }

@@ -97,6 +97,13 @@ private:
     void run(const QByteArray &command, int timeoutMs, Done done, Next next);
     void readParameters(Done done, std::function<void(const GrblHal::ParameterReport &)> next);
     void readModal(Done done, std::function<void(const Modal &)> next);
+    // `next` when grblHAL's G10 and G38.2 take millimetres (G21); else `what` ("writes TLOs") is refused.
+    void inMillimetres(Done done, const QString &what, std::function<void()> next);
+    // $13: a controller that reports in inches is refused on connecting.
+    void readReportUnits(Done done, std::function<void()> next);
+    void readOffsetsAfterBuild(Done done, const MachineStatus &status);
+    // G10 L1 for each entry, then $# read back (writeToolTable, once every entry is checked).
+    void writeEntries(const QList<ControllerTool> &tools, Done done);
     // $I (which must say grblHAL), $G and $#, after the status read on connecting.
     void readBuild(Done done, const MachineStatus &status);
     // The setter's cycle with the tool in the spindle: `next` gets the slow touch's machine Z.

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <cmath>
+
 #include <QTest>
 
 #include "tests/support/testtables.h"
@@ -24,9 +26,42 @@ private Q_SLOTS:
         QVERIFY(mm.recordMeasurement(2, noisy, QDateTime::currentDateTimeUtc()).ok());
         QCOMPARE(*mm.find(2)->measuredTlo, -33.388);
         QVERIFY(writeTable(mm, TableFormat::Json).contains("\"measured_tlo\": -33.388,"));
+        // The machine's millimetres become an inch table's inches, at 0.0001 in: 33.388 mm is 1.31449 in.
         ToolTable inch(Units::Inch);
-        QVERIFY(inch.recordMeasurement(2, 1.31446000000001, QDateTime::currentDateTimeUtc()).ok());
-        QCOMPARE(*inch.find(2)->measuredTlo, 1.3145);
+        QVERIFY(inch.recordMeasurement(2, -33.388, QDateTime::currentDateTimeUtc(), TloSource::Probe, -115.34)
+                    .ok());
+        QCOMPARE(*inch.find(2)->measuredTlo, -1.3145);
+        QCOMPARE(*inch.find(2)->referenceMz, -4.5409);
+        // And back to a machine in millimetres at its 0.001 mm (-1.3145 in is -33.3883 mm), with how far a
+        // machine's value may lie from it and still be it: half an inch table's step more than a mm table's.
+        const auto stored = inch.storedTlo(2);
+        QVERIFY(stored);
+        QCOMPARE(stored->tlo, -33.388);
+        QCOMPARE(*stored->referenceMz, -115.339); // -4.5409 in: -115.33886 mm
+        QVERIFY(std::fabs(*stored->referenceMz - -115.34) <= stored->sameWithin);
+        QCOMPARE(stored->sameWithin, 0.0005 + 0.00127);
+        QCOMPARE(mm.storedTlo(2)->sameWithin, 0.0005);
+        QVERIFY(!inch.storedTlo(9)); // not in the table
+    }
+
+    void aRecordingOfSeveralToolsIsAllOrNothing()
+    {
+        ToolTable table(Units::Millimetre);
+        QVERIFY(table.recordMeasurement(1, 10.0, QDateTime::currentDateTimeUtc()).ok());
+        const ToolTable before = table;
+        const QDateTime at = QDateTime::currentDateTimeUtc();
+        // T3's 5000 mm is beyond any table: T2 before it is not taken either, and the refusal names T3.
+        const auto refused = table.recordAll(
+            { { 2, 12.5, TloSource::Manual, std::nullopt, std::nullopt, at, RecordingKind::Pulled },
+                { 3, 5000.0, TloSource::Manual, std::nullopt, std::nullopt, at, RecordingKind::Pulled } });
+        QVERIFY(!refused);
+        QVERIFY2(refused.error().text().startsWith(u"T3: "_s), qPrintable(refused.error().text()));
+        QCOMPARE(table, before);
+        QVERIFY(table
+                    .recordAll({ { 2, 12.5, TloSource::Manual, std::nullopt, std::nullopt, at,
+                        RecordingKind::Pulled } })
+                    .ok());
+        QCOMPARE(*table.find(2)->measuredTlo, 12.5);
     }
 
     void aTotalLengthHasNoBinaryNoise()

@@ -188,6 +188,10 @@ private Q_SLOTS:
         const JobReport carvera = check("G20\nM6 T2\nM30\n", Dialect::Carvera, shopTable());
         QCOMPARE(find(carvera, FindingKind::InchOnCarvera)->line, 1);
         QVERIFY(!find(carvera, FindingKind::UnitsMismatch));
+        // An inch table's TLOs on the Carvera are the machine's millimetres all the same: no mismatch.
+        Toffee::ToolTable inches(Units::Inch);
+        QVERIFY(inches.recordMeasurement(2, 30.0, QDateTime(QDate(2026, 11, 21), QTime(8, 0), Qt::UTC)).ok());
+        QVERIFY(!find(check("G21\nM6 T2\nM30\n", Dialect::Carvera, inches), FindingKind::UnitsMismatch));
         const JobReport fanuc = check("G21\nT2 M6\nG20\nM30\n", Dialect::Fanuc, shopTable());
         QCOMPARE(find(fanuc, FindingKind::UnitsMismatch)->line, 3);
         QCOMPARE(find(fanuc, FindingKind::UnitsMismatch)->severity(), Severity::Error);
