@@ -3,12 +3,18 @@
 
 #include <cmath>
 
+#include "model/clock.h"
 #include "model/translate.h"
+
+using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
 QString ageText(const QDateTime &at, const QDateTime &now)
 {
+    // A time beyond now (a clock set wrong somewhere) is no age: said as what it is.
+    if (Clock::isInFuture(at, now))
+        return tr("dated in the future (%1)").arg(at.toUTC().toString(u"yyyy-MM-dd HH:mm 'UTC'"_s));
     const qint64 minutes = std::max<qint64>(0, at.secsTo(now) / 60);
     if (minutes < 1)
         return tr("just now");

@@ -70,6 +70,11 @@ Result<void> validateLength(const QString &what, double value, double limit, Uni
     return {};
 }
 
+bool isMachineTlo(double millimetres)
+{
+    return std::isfinite(millimetres) && std::fabs(millimetres) <= Limits::kMaxMachineOffsetMm;
+}
+
 Result<void> validateLinuxCncExtra(const QString &extra)
 {
     static const QString kLetters = u"XYABCUVWIJQ"_s;

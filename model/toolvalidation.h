@@ -22,5 +22,10 @@ namespace Toffee {
 [[nodiscard]] Result<void> validateLength(const QString &what, double value, double limit, Units units);
 [[nodiscard]] Result<void> validateLinuxCncExtra(const QString &extra);
 
+// The one range of a TLO, in millimetres as a machine has it: finite and within ±Limits::kMaxMachineOffsetMm.
+// Every path checks it before a TLO is written anywhere: a controller (MachineController::validateOffset,
+// GrblHalController::writeOffset), the table (validateTool), the history (Library::append), what an operation
+// records (MachineController::recording); and the wear trend reads no other.
+[[nodiscard]] bool isMachineTlo(double millimetres);
 
 } // namespace Toffee

@@ -60,7 +60,7 @@ std::optional<QString> RackSequence::refusal(const Plan &plan, const FirmwareInf
         return r.error().message;
     QList<int> unmeasured;
     for (const RackStep &step : plan.steps) {
-        if (!step.storedTlo && !breakTestExclusion(step.tool, step.storedTlo)) // a tool skipped needs none
+        if (!step.storedTlo && !breakTestExclusion(step.tool)) // a tool skipped needs none
             unmeasured.append(step.tool);
     }
     if (!unmeasured.isEmpty())
@@ -170,9 +170,10 @@ void RackSequence::measure(int index)
 void RackSequence::check(int index)
 {
     const int tool = m_plan.steps.at(index).tool;
-    // A tool the firmware's break test cannot test is skipped, as Prepare skips it, and said why; the rack
-    // goes on with the next.
-    if (const auto why = breakTestExclusion(tool, m_plan.steps.at(index).storedTlo)) {
+    // A tool the firmware takes for its wireless probe is skipped, as Prepare skips it, and said why; the
+    // rack goes on with the next (and the check is incomplete). A stored TLO of 0.000 is tested as every
+    // other (comparableTlo).
+    if (const auto why = breakTestExclusion(tool)) {
         RackStep &skipped = m_plan.steps[index];
         skipped.state = RackStep::State::Skipped;
         skipped.message = breakTestExclusionText(*why, tool);

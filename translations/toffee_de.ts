@@ -743,10 +743,6 @@
         <translation>T%1 wird nicht auf Bruch geprüft: Der Bruchtest der Firmware nimmt T0 und jedes Werkzeug ab T9 für ihren Funktaster und würde anhalten.</translation>
     </message>
     <message>
-        <source>T%1 is not break-tested: its TLO is 0.000 mm (the reference tool&apos;s), which the firmware&apos;s break test takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
-        <translation>T%1 wird nicht auf Bruch geprüft: Seine Längenkorrektur ist 0,000 mm (die des Referenzwerkzeugs), die der Bruchtest der Firmware als keine nimmt („No previous TLO included“): Er würde das Werkzeug messen, ohne zu vergleichen.</translation>
-    </message>
-    <message>
         <source>T%1 cannot be written: grblHAL&apos;s G10 L1 needs a tool number from 1 up.</source>
         <translation>T%1 lässt sich nicht schreiben: G10 L1 von grblHAL braucht eine Werkzeugnummer ab 1.</translation>
     </message>
@@ -869,6 +865,34 @@
     <message>
         <source>A LinuxCNC table has no place for the cutter&apos;s type and overall length: they are not saved, and an import can then tell a new cutter only by its diameter.</source>
         <translation>Eine LinuxCNC-Tabelle hat keinen Platz für Typ und Gesamtlänge des Fräsers: Sie werden nicht gespeichert, und ein Import erkennt einen neuen Fräser dann nur an seinem Durchmesser.</translation>
+    </message>
+    <message>
+        <source>dated in the future (%1)</source>
+        <translation>in der Zukunft datiert (%1)</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s %2 event %3</source>
+        <translation>Ereignis %3 (%2) von T%1</translation>
+    </message>
+    <message>
+        <source>%1 names no tool.</source>
+        <translation>%1 nennt kein Werkzeug.</translation>
+    </message>
+    <message>
+        <source>%1 has no time.</source>
+        <translation>%1 hat keine Zeit.</translation>
+    </message>
+    <message>
+        <source>%1 holds a TLO of %2 mm, beyond any tool (%3 mm at most).</source>
+        <translation>%1 enthält eine Längenkorrektur von %2 mm, jenseits jedes Werkzeugs (höchstens %3 mm).</translation>
+    </message>
+    <message>
+        <source>%1 holds a machine position of %2 mm, beyond any machine.</source>
+        <translation>%1 enthält eine Maschinenposition von %2 mm, jenseits jeder Maschine.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO is dated %2, in the future: a clock was wrong, and when it was measured is not known. It is measured at its change.</source>
+        <translation>Die gespeicherte Längenkorrektur von T%1 ist auf %2 datiert, in der Zukunft: Eine Uhr ging falsch, und wann sie gemessen wurde, ist unbekannt. Sie wird beim Wechsel gemessen.</translation>
     </message>
 </context>
 <context>
@@ -2220,6 +2244,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>Written before it: %1; not written: %2.</source>
         <translation>Davor geschrieben: %1; nicht geschrieben: %2.</translation>
     </message>
+    <message>
+        <source>grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
+        <translation>grblHAL hat die Berührung bei Maschinen-Z %1 mm gemeldet, außerhalb der Suche von %2 bis %3 mm. Nichts wurde geschrieben oder aufgezeichnet; prüfen Sie die Einstellungen des Werkzeugtasters und die Maschine.</translation>
+    </message>
+    <message>
+        <source>Nothing was written to grblHAL or recorded.</source>
+        <translation>Nichts wurde in grblHAL geschrieben oder aufgezeichnet.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryDock</name>
@@ -3569,6 +3601,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>%1&apos;s tool setter in the library (&quot;%2&quot;) does not read: %3 Set it again (Machine ▸ Tool Setter…).</source>
         <translation>Der Werkzeugtaster von %1 in der Bibliothek („%2“) lässt sich nicht lesen: %3 Legen Sie ihn erneut fest (Maschine ▸ Werkzeugtaster …).</translation>
     </message>
+    <message>
+        <source>Nothing of this batch was recorded.</source>
+        <translation>Nichts aus diesem Stapel wurde aufgezeichnet.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
@@ -3820,6 +3856,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>The change to T%1 was ended: nothing was measured or recorded. %2</source>
         <translation>Der Wechsel zu T%1 wurde beendet: Nichts wurde gemessen oder aufgezeichnet. %2</translation>
     </message>
+    <message>
+        <source>The machine&apos;s reading makes T%1&apos;s TLO %2 mm, beyond any tool (%3 mm at most): nothing was recorded. Check the tool setter and the machine&apos;s reference, then probe again.</source>
+        <translation>Nach dem Messwert der Maschine wäre die Längenkorrektur von T%1 %2 mm, jenseits jedes Werkzeugs (höchstens %3 mm): Nichts wurde aufgezeichnet. Prüfen Sie den Werkzeugtaster und die Referenz der Maschine und messen Sie dann erneut.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -3936,10 +3976,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine sent no status report within 2 s; no break test was run.</source>
         <translation>Die Maschine hat innerhalb von 2 s keinen Statusbericht gesendet; es wurde keine Bruchprüfung ausgeführt.</translation>
-    </message>
-    <message>
-        <source>The firmware compares with the TLO in force, and takes a TLO of 0.000 mm for none: it would measure T%1 without comparing. No break test was run; probe T%1 and compare its TLO with the table.</source>
-        <translation>Die Firmware vergleicht mit der gültigen Längenkorrektur und hält 0,000 mm für keine: Sie würde T%1 vermessen, ohne zu vergleichen. Es wurde keine Bruchprüfung ausgeführt; vermessen Sie T%1 und vergleichen Sie seine Längenkorrektur mit der Tabelle.</translation>
     </message>
     <message>
         <source>The machine compared T%1 with a TLO of %2 mm, not its stored %3 mm, so its verdict does not hold. Check the offsets, then run the break test again.</source>

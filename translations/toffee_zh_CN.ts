@@ -743,10 +743,6 @@
         <translation>T%1 不做断刀检测：固件的断刀检测把 T0 及 T9 以上的每把刀都当作其无线探头，并会停机。</translation>
     </message>
     <message>
-        <source>T%1 is not break-tested: its TLO is 0.000 mm (the reference tool&apos;s), which the firmware&apos;s break test takes for none (&quot;No previous TLO included&quot;): it would measure the tool without comparing.</source>
-        <translation>T%1 不做断刀检测：其刀长补偿为 0.000 mm（基准刀的），固件的断刀检测将其视为无（“No previous TLO included”）：它只会测量刀具而不比较。</translation>
-    </message>
-    <message>
         <source>T%1 cannot be written: grblHAL&apos;s G10 L1 needs a tool number from 1 up.</source>
         <translation>无法写入 T%1：grblHAL 的 G10 L1 需要从 1 起的刀具号。</translation>
     </message>
@@ -869,6 +865,34 @@
     <message>
         <source>A LinuxCNC table has no place for the cutter&apos;s type and overall length: they are not saved, and an import can then tell a new cutter only by its diameter.</source>
         <translation>LinuxCNC 刀具表没有存放刀具类型和总长的位置：不会保存，之后导入只能凭直径识别新刀具。</translation>
+    </message>
+    <message>
+        <source>dated in the future (%1)</source>
+        <translation>日期在未来（%1）</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s %2 event %3</source>
+        <translation>T%1 的 %2 事件 %3</translation>
+    </message>
+    <message>
+        <source>%1 names no tool.</source>
+        <translation>%1 未指明刀具。</translation>
+    </message>
+    <message>
+        <source>%1 has no time.</source>
+        <translation>%1 没有时间。</translation>
+    </message>
+    <message>
+        <source>%1 holds a TLO of %2 mm, beyond any tool (%3 mm at most).</source>
+        <translation>%1 含有 %2 mm 的刀长补偿，超出任何刀具（最多 %3 mm）。</translation>
+    </message>
+    <message>
+        <source>%1 holds a machine position of %2 mm, beyond any machine.</source>
+        <translation>%1 含有 %2 mm 的机床位置，超出任何机床。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s stored TLO is dated %2, in the future: a clock was wrong, and when it was measured is not known. It is measured at its change.</source>
+        <translation>T%1 存储的刀长补偿日期为 %2，在未来：某个时钟有误，测量时间未知。将在换刀时测量。</translation>
     </message>
 </context>
 <context>
@@ -2220,6 +2244,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>Written before it: %1; not written: %2.</source>
         <translation>此前已写入：%1；未写入：%2。</translation>
     </message>
+    <message>
+        <source>grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
+        <translation>grblHAL 报告的接触点在机床 Z %1 mm，位于 %2 至 %3 mm 的搜索范围之外。未写入也未记录任何内容；请检查对刀仪设置和机器。</translation>
+    </message>
+    <message>
+        <source>Nothing was written to grblHAL or recorded.</source>
+        <translation>未写入 grblHAL，也未记录任何内容。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryDock</name>
@@ -3569,6 +3601,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>%1&apos;s tool setter in the library (&quot;%2&quot;) does not read: %3 Set it again (Machine ▸ Tool Setter…).</source>
         <translation>刀具库中 %1 的对刀仪（“%2”）无法读取：%3 请重新设置（机床 ▸ 对刀仪…）。</translation>
     </message>
+    <message>
+        <source>Nothing of this batch was recorded.</source>
+        <translation>本批次中的任何内容都未记录。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
@@ -3820,6 +3856,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>The change to T%1 was ended: nothing was measured or recorded. %2</source>
         <translation>换到 T%1 已结束：未测量也未记录任何内容。%2</translation>
     </message>
+    <message>
+        <source>The machine&apos;s reading makes T%1&apos;s TLO %2 mm, beyond any tool (%3 mm at most): nothing was recorded. Check the tool setter and the machine&apos;s reference, then probe again.</source>
+        <translation>按机器的读数，T%1 的刀长补偿为 %2 mm，超出任何刀具（最多 %3 mm）：未记录任何内容。请检查对刀仪和机器的参考，然后重新测量。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -3936,10 +3976,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine sent no status report within 2 s; no break test was run.</source>
         <translation>机床在 2 秒内没有发送状态报告；未执行断刀检测。</translation>
-    </message>
-    <message>
-        <source>The firmware compares with the TLO in force, and takes a TLO of 0.000 mm for none: it would measure T%1 without comparing. No break test was run; probe T%1 and compare its TLO with the table.</source>
-        <translation>固件与生效的 TLO 比较，并把 0.000 mm 视为没有：它会测量 T%1 而不作比较。未执行断刀检测；请对 T%1 对刀并将其 TLO 与刀具表比较。</translation>
     </message>
     <message>
         <source>The machine compared T%1 with a TLO of %2 mm, not its stored %3 mm, so its verdict does not hold. Check the offsets, then run the break test again.</source>

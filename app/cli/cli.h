@@ -9,7 +9,16 @@ class QJsonObject;
 
 namespace Toffee::Cli {
 
-enum ExitCode { Success = 0, BadInput = 2, ToolBroken = 3, MachineError = 4, LinkFailure = 5 };
+// Incomplete: it ran, but a check did not check everything (a tool the rack check or a prepared break test
+// could not compare): never 0, so that a script does not take it for a pass.
+enum ExitCode {
+    Success = 0,
+    Incomplete = 1,
+    BadInput = 2,
+    ToolBroken = 3,
+    MachineError = 4,
+    LinkFailure = 5
+};
 
 // One parsed command line and where its output goes. With --json, every command prints one JSON object on
 // stdout, a failure included ({"error": message}); messages for people go to stderr either way.

@@ -95,6 +95,12 @@ int prepareJob(Invocation &call)
     if (!summary)
         return fail(call, summary.error().text(), summary.error().line > 0 ? MachineError : BadInput);
     printSummary(call, summary.value(), output);
+    if (summary.value().untestedTools > 0) {
+        call.err << "toffee-cli: the program was prepared, but " << summary.value().untestedTools
+                 << (summary.value().untestedTools == 1 ? " tool gets" : " tools get")
+                 << " no break test (each note above says why)." << Qt::endl;
+        return Incomplete;
+    }
     return Success;
 }
 

@@ -449,7 +449,11 @@ void MachineRun::operate()
     else if (isRackCommand(command))
         started = startRackCommand(
             m_call, m_options, c, [this](const SessionResult &r) { return record(r); },
-            [this](const SessionResult &r) { finishWith(r, true); });
+            [this](const SessionResult &r, bool incomplete) {
+                finishWith(r, true);
+                if (incomplete)
+                    m_exitCode = Incomplete;
+            });
     else if (command == u"set-tlo")
         started = m_options.z ? c.setTlo(*m_options.z, recorded())
                               : c.setTloAboveZ0(*m_options.aboveZ0, recorded());

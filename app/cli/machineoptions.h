@@ -37,9 +37,11 @@ struct MachineOptions
 
 // The rack commands (rack, measure-rack, check-rack) on a connected machine. `record` keeps a measurement or
 // a verdict as every machine command does (false when it could not, which stops the sequence); `finish` ends
-// the run with the whole result. False when the command did not start.
+// the run with the whole result, and `incomplete` true when a check compared not every tool (exit 1). False
+// when the command did not start.
 bool startRackCommand(Invocation &call, MachineOptions &options, MachineConnection &connection,
-    std::function<bool(const SessionResult &)> record, std::function<void(const SessionResult &)> finish);
+    std::function<bool(const SessionResult &)> record,
+    std::function<void(const SessionResult &, bool incomplete)> finish);
 // change-tool --use-stored-tlo: the TLO the change takes, or nothing (a probe) with the reason on stderr.
 [[nodiscard]] std::optional<double> storedTloForChange(
     Invocation &call, const MachineOptions &options, const MachineConnection &connection);

@@ -153,11 +153,12 @@ bool isRackCommand(const QString &command)
 }
 
 bool startRackCommand(Invocation &call, MachineOptions &options, MachineConnection &connection,
-    std::function<bool(const SessionResult &)> record, std::function<void(const SessionResult &)> finish)
+    std::function<bool(const SessionResult &)> record,
+    std::function<void(const SessionResult &, bool incomplete)> finish)
 {
     if (call.command == u"rack") {
         showRack(call, options, connection);
-        finish(SessionResult {});
+        finish(SessionResult {}, false);
         return true;
     }
     const auto mode = call.command == u"check-rack" ? RackSequence::Mode::Check : RackSequence::Mode::Measure;
@@ -172,11 +173,20 @@ bool startRackCommand(Invocation &call, MachineOptions &options, MachineConnecti
     QObject::connect(
         sequence, &RackSequence::finished, sequence, [&call, sequence, finish](const SessionResult &r) {
             printSummary(call, *sequence, r);
-            finish(r);
+            // A check that passed every tool it could test, but could not test them all, is no pass.
+            QStringList unchecked;
+            for (const RackStep &step : sequence->steps()) {
+                if (sequence->mode() == RackSequence::Mode::Check && step.state == RackStep::State::Skipped)
+                    unchecked << u"T%1"_s.arg(step.tool);
+            }
+            if (r.ok() && !unchecked.isEmpty())
+                call.err << "toffee-cli: not every rack tool was checked: " << unchecked.join(u", "_s)
+                         << " (each says why above)." << Qt::endl;
+            finish(r, r.ok() && !unchecked.isEmpty());
         });
     if (!sequence->start()) {
         printSummary(call, *sequence, sequence->outcome());
-        finish(sequence->outcome());
+        finish(sequence->outcome(), false);
     }
     return true;
 }

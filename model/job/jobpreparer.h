@@ -64,6 +64,9 @@ struct PrepareSummary
     // What was left as it was, and why ("T2 is in the rack: …"): once a tool, the first kMaxNotes, then how
     // many more.
     QStringList notes;
+    // Tools the break test was asked for that the firmware cannot test (its wireless probe's numbers): the
+    // preparation is then incomplete, and toffee-cli exits 1, never 0.
+    int untestedTools = 0;
 };
 
 // Rewrites a program so that the machine restores stored offsets and break-tests each tool (the Carvera), or
@@ -139,6 +142,7 @@ private:
     ToolBits m_rack; // the options' rack, for a lookup that does not grow with it
     ToolBits m_noted; // tools a note was made for
     ToolBits m_notedReference; // tools whose TLO's unknown reference was noted
+    ToolBits m_untested; // tools a break test was asked for but the firmware cannot give
     qint64 m_moreNotes = 0; // notes beyond kMaxNotes, counted
     int m_firstMoreNoted = 0; // the tool of the first of them
     std::optional<double> m_restoredReference; // the reference of the stored TLOs restored so far

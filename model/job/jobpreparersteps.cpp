@@ -94,13 +94,26 @@ Result<void> JobPreparer::breakTest(const LineSink &sink)
     }
     // The firmware's own rules, as Check Rack and the Break Test panel follow them (breakTestExclusion): the
     // preview's note and a comment where the test would have gone say which tool was skipped, and why.
-    if (const auto why = breakTestExclusion(tool, m_facts.value(tool).measuredTlo)) {
+    if (const auto why = breakTestExclusion(tool)) {
+        if (m_untested.insert(tool))
+            ++m_summary.untestedTools;
         noteOnce(tool, breakTestExclusionText(*why, tool));
         return insertLine(comment(breakTestExclusionText(*why, tool, false)), sink, true);
     }
     if (m_prepared.spindleOn()) {
         if (auto r = insertLine(
                 u"M5 "_s + comment(u"the spindle stops for T%1's break test"_s.arg(tool)), sink, true);
+            !r)
+            return r;
+    }
+    // The stored TLO of 0.000 (the reference tool's), which the firmware takes for none, is compared as
+    // 0.001 (comparableTlo): set in force first.
+    if (const auto stored = m_facts.value(tool).measuredTlo; stored && isZeroTlo(*stored)) {
+        if (auto r = insertLine(u"M493.3 Z"_s + commandNumber(kZeroTloCompared) + u' '
+                    + comment(
+                        u"T%1's TLO 0.000 as 0.001 mm, which the firmware's break test compares with"_s.arg(
+                            tool)),
+                sink, true);
             !r)
             return r;
     }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/clock.h"
 #include "model/numberformat.h"
 #include "model/timetext.h"
 
@@ -98,8 +99,7 @@ template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &fact
             return tr("T%1's TLO was set by hand, not measured on the tool setter: probe it before the job.")
                 .arg(n);
         });
-    } else if (facts.measuredAt.isValid()
-        && facts.measuredAt.secsTo(m_setup.now) < -ToolFacts::kClockSkewSeconds) {
+    } else if (Clock::isInFuture(facts.measuredAt, m_setup.now)) {
         found(FindingKind::StaleTlo, [n, &facts] {
             return tr("T%1's TLO is dated %2, in the future: a clock was wrong, and when it was measured is "
                       "not known.")

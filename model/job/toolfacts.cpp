@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "model/clock.h"
 #include "model/library/library.h"
 #include "model/numberformat.h"
 #include "model/tooltable.h"
@@ -13,8 +14,9 @@ namespace Toffee {
 bool ToolFacts::isFresh(const QDateTime &now, int staleDays) const
 {
     // A measurement from the future (a clock set wrong) is not fresh: nothing says when it was taken.
-    const qint64 age = measuredAt.isValid() ? measuredAt.secsTo(now) : -1;
-    return age >= -kClockSkewSeconds && age <= qint64(staleDays) * 24 * 3600;
+    if (!measuredAt.isValid() || Clock::isInFuture(measuredAt, now))
+        return false;
+    return measuredAt.secsTo(now) <= qint64(staleDays) * 24 * 3600;
 }
 
 Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &now, int staleDays,
@@ -30,6 +32,11 @@ Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &
         };
     if (facts.broken)
         return Error { tr("T%1 failed its last break test: it is measured at its change.").arg(tool) };
+    if (Clock::isInFuture(facts.measuredAt, now))
+        return Error { tr("T%1's stored TLO is dated %2, in the future: a clock was wrong, and when it was "
+                          "measured is not known. It is measured at its change.")
+                           .arg(tool)
+                           .arg(facts.measuredAt.toUTC().toString(Qt::ISODate)) };
     if (!facts.isFresh(now, staleDays))
         return Error { tr(
             "T%1's stored TLO is older than the stale limit (%2 d): it is measured at its change.")

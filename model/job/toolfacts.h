@@ -44,9 +44,8 @@ struct ToolFacts
     std::optional<int> lifeLimitUses;
     UsedLife used;
 
-    // Measured within `staleDays` of `now`, and not after it (beyond a few minutes of clocks that differ).
+    // Measured within `staleDays` of `now`, and not after it (Clock::isInFuture: beyond the clocks' skew).
     [[nodiscard]] bool isFresh(const QDateTime &now, int staleDays) const;
-    static constexpr qint64 kClockSkewSeconds = 300;
 };
 
 // How a stored TLO's reference is checked: the TLO's own reference must be known either way; against the

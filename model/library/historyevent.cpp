@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/library/historyevent.h"
 
+#include <cmath>
+
 #include <QUuid>
 
 #include "model/clock.h"
+#include "model/limits.h"
 #include "model/numberformat.h"
+#include "model/toolvalidation.h"
+#include "model/translate.h"
 
 using namespace Qt::StringLiterals;
 
@@ -48,12 +53,36 @@ std::optional<EventKind> eventKindFromName(QStringView name)
 
 QDateTime cutterSince(const QList<HistoryEvent> &events)
 {
+    // A new cutter dated in the future (a clock set wrong) ends nothing: every real use would fall before it.
+    const QDateTime now = Clock::now();
     QDateTime since;
     for (const HistoryEvent &e : events) {
-        if (e.kind == EventKind::NewCutter && (!since.isValid() || e.at > since))
+        if (e.kind == EventKind::NewCutter && !Clock::isInFuture(e.at, now)
+            && (!since.isValid() || e.at > since))
             since = e.at;
     }
     return since;
+}
+
+Result<void> validateEvent(const HistoryEvent &e)
+{
+    const QString what = tr("T%1's %2 event %3").arg(e.tool).arg(eventKindName(e.kind), e.id);
+    if (e.tool < Limits::kEmptySpindle || e.tool > Limits::kMaxToolNumber)
+        return Error { tr("%1 names no tool.").arg(what) };
+    if (!e.at.isValid())
+        return Error { tr("%1 has no time.").arg(what) };
+    for (const auto &tlo : { e.tlo, e.oldTlo, e.newTlo }) {
+        if (tlo && !isMachineTlo(*tlo))
+            return Error { tr("%1 holds a TLO of %2 mm, beyond any tool (%3 mm at most).")
+                               .arg(what, formatNumber(*tlo, NumberFormat::fixed(3)))
+                               .arg(Limits::kMaxMachineOffsetMm) };
+    }
+    for (const auto &z : { e.referenceMz, e.currentMz, e.tolerance }) {
+        if (z && !(std::isfinite(*z) && std::fabs(*z) <= kMaxMachineMillimetres))
+            return Error { tr("%1 holds a machine position of %2 mm, beyond any machine.")
+                               .arg(what, formatNumber(*z, NumberFormat::fixed(3))) };
+    }
+    return {};
 }
 
 HistoryEvent historyEvent(const Recording &r, const QString &machine)

@@ -8,6 +8,7 @@
 #include <QString>
 
 #include "model/recording.h"
+#include "model/result.h"
 
 namespace Toffee {
 
@@ -43,6 +44,12 @@ struct HistoryEvent
     [[nodiscard]] static QString newId();
     friend bool operator==(const HistoryEvent &, const HistoryEvent &) = default;
 };
+
+// Whether the history can take `event`: a tool number, lengths a machine can hold (a TLO within the one
+// range, isMachineTlo; machine positions within kMaxMachineMillimetres), a time. A value refused anywhere
+// else is refused here too, so that no station's event (an older Toffee's, a damaged outbox file) reaches the
+// history with it.
+[[nodiscard]] Result<void> validateEvent(const HistoryEvent &event);
 
 // When the cutter in the tool's pocket went in: the newest NewCutter among one tool's `events`; invalid when
 // none (the cutter the history began with).

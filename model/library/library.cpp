@@ -2,6 +2,7 @@
 // Reading and writing a library: machines, events, tool use.
 #include "model/library/library.h"
 
+#include "model/clock.h"
 #include "model/library/rowreader.h"
 #include "model/limits.h"
 #include "model/tooltable.h"
@@ -158,6 +159,10 @@ Result<int> Library::append(const QList<HistoryEvent> &events)
 {
     if (events.isEmpty())
         return 0;
+    for (const HistoryEvent &e : events) {
+        if (auto valid = validateEvent(e); !valid)
+            return Error { valid.error().message + u' ' + tr("Nothing of this batch was recorded.") };
+    }
     QStringList machines;
     for (const HistoryEvent &e : events) {
         if (!machines.contains(e.machine))
@@ -300,15 +305,18 @@ Result<QHash<int, UsedLife>> Library::usedLife(const QString &machine, std::opti
     QSqlQuery query(database());
     query.setForwardOnly(true);
     // Only times a program could take (text, infinities and NaN sort above 1e9 in both databases); only the
-    // runs after the tool's newest new cutter (times are ISO 8601 UTC text, which sorts as time does).
+    // runs after the tool's newest new cutter (times are ISO 8601 UTC text, which sorts as time does), and
+    // never one dated in the future (a clock set wrong), which would hide every real run before it.
     query.prepare(u"SELECT u.tool, SUM(u.cutting_seconds), COUNT(*) FROM tool_use u WHERE u.machine = ? "
                   "AND u.cutting_seconds >= 0 AND u.cutting_seconds <= 1e9"_s
         + (tool ? u" AND u.tool = ?"_s : QString())
         + u" AND u.recorded_at > COALESCE((SELECT MAX(e.measured_at) FROM events e WHERE e.machine = "
-          "u.machine AND e.tool = u.tool AND e.kind = 'new_cutter'), '') GROUP BY u.tool"_s);
+          "u.machine AND e.tool = u.tool AND e.kind = 'new_cutter' AND e.measured_at <= ?), '') "
+          "GROUP BY u.tool"_s);
     query.addBindValue(machine);
     if (tool)
         query.addBindValue(*tool);
+    query.addBindValue(timeText(Clock::now().addSecs(Clock::kMaxSkewSeconds)));
     if (!query.exec())
         return failure(tr("Reading the tools' use"), query);
     QHash<int, UsedLife> out;

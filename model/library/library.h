@@ -136,6 +136,7 @@ private:
     [[nodiscard]] Result<void> checkWritable() const;
     [[nodiscard]] Result<void> announce(const QStringList &machines);
     [[nodiscard]] Result<void> applyToTables(const QList<HistoryEvent> &events);
+    [[nodiscard]] static bool supersedes(const HistoryEvent &event, const Tool *current);
     [[nodiscard]] Result<std::optional<StoredTool>> readRow(const QString &machine, int number) const;
     [[nodiscard]] Result<std::optional<Units>> tableUnits(const QString &machine) const;
     [[nodiscard]] Result<bool> putRow(

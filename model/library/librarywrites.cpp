@@ -6,6 +6,8 @@
 
 #include "model/library/library.h"
 
+#include "model/clock.h"
+
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
@@ -79,6 +81,20 @@ Result<WriteOutcome> Library::writeTools(const QString &machine, const QList<Too
 
 // Inside append's transaction: each new event's recording applied to its tool's row, the tools of a machine
 // in the order of their numbers (as writeTools takes them) and each tool's events in the order they happened.
+// Whether `e` changes a table's tool: newest wins, by the time of measurement, whatever order events reach
+// the library in (a station's outbox may send one late). The history keeps every event; an event dated in the
+// future (a clock set wrong) orders nothing, nor does a tool's TLO dated in the future stop a real one.
+bool Library::supersedes(const HistoryEvent &e, const Tool *current)
+{
+    const QDateTime now = Clock::now();
+    if (Clock::isInFuture(e.at, now))
+        return false;
+    if (!current || !current->measuredTlo || !current->measuredAt.isValid()
+        || Clock::isInFuture(current->measuredAt, now))
+        return true;
+    return e.at >= current->measuredAt;
+}
+
 Result<void> Library::applyToTables(const QList<HistoryEvent> &events)
 {
     QMap<QString, QMap<int, QList<HistoryEvent>>> byTool;
@@ -103,8 +119,10 @@ Result<void> Library::applyToTables(const QList<HistoryEvent> &events)
                 ToolTable table(*units.value());
                 if (row.value() && row.value()->tool)
                     (void)table.insert(*row.value()->tool);
-                for (const HistoryEvent &e : ordered)
-                    (void)table.record(*recordingOf(e));
+                for (const HistoryEvent &e : ordered) {
+                    if (supersedes(e, table.find(tool.key())))
+                        (void)table.record(*recordingOf(e));
+                }
                 const Tool *after = table.find(tool.key());
                 const std::optional<Tool> next = after ? std::optional(*after) : std::nullopt;
                 if (!next || (row.value() && row.value()->tool == next))

@@ -6,6 +6,7 @@
 
 #include "model/library/library.h"
 #include "model/numberformat.h"
+#include "model/toolvalidation.h"
 
 namespace Toffee {
 
@@ -21,7 +22,9 @@ QList<TrendPoint> WearTrend::pointsOf(
     QList<TrendPoint> out;
     QDateTime first;
     for (const HistoryEvent &e : events) {
-        if (e.kind != EventKind::Probe || !e.tlo || (since.isValid() && e.at <= since))
+        // A TLO beyond any tool (written before the history checked them) is no point of a trend.
+        if (e.kind != EventKind::Probe || !e.tlo || !isMachineTlo(*e.tlo)
+            || (since.isValid() && e.at <= since))
             continue;
         if (!first.isValid())
             first = e.at;
@@ -98,7 +101,7 @@ std::optional<QString> WearTrend::check(int tool, double x, double tlo, double t
 std::optional<QString> checkProbeAgainstTrend(
     const Library &library, const HistoryEvent &event, double tolerance)
 {
-    if (event.kind != EventKind::Probe || !event.tlo)
+    if (event.kind != EventKind::Probe || !event.tlo || !isMachineTlo(*event.tlo))
         return std::nullopt;
     auto history = library.history({ event.machine, event.tool, {}, 0 });
     auto uses = library.uses(event.machine, event.tool);

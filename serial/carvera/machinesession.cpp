@@ -19,12 +19,6 @@ namespace Toffee {
 
 namespace {
 
-// A tolerance as the operator typed it: "0.02", not "0.020"; in their own decimal mark.
-QString toleranceText(double tolerance)
-{
-    return formatNumber(tolerance, NumberFormat::upTo(3).inLocale());
-}
-
 QString text(const QByteArray &line)
 {
     return QString::fromUtf8(line);
@@ -37,8 +31,9 @@ QString excerpt(const QByteArray &line)
     return line.size() <= kMaxBytes ? text(line) : text(line.first(kMaxBytes)) + u'\u2026';
 }
 
-// Why a result may be missing from a reply: the machine printed more than a reply keeps.
-QString floodNote(const CommandReply &reply)
+} // namespace
+
+QString MachineSession::floodNote(const CommandReply &reply)
 {
     if (reply.droppedLines == 0)
         return {};
@@ -49,9 +44,6 @@ QString floodNote(const CommandReply &reply)
               .arg(reply.droppedLines + reply.lines.size())
               .arg(reply.lines.size());
 }
-
-// Running a command of its own: a late answer to it could be taken for one of ours.
-} // namespace
 
 MachineSession::MachineSession(MachineLink *link, QObject *parent)
     : MachineController(parent)
@@ -202,7 +194,11 @@ std::optional<ProbeResult> lastProbe(const QList<QByteArray> &lines)
 
 void MachineSession::probe(Done done)
 {
-    done = recording(std::move(done), RecordingKind::Probe);
+    measure(recording(std::move(done), RecordingKind::Probe));
+}
+
+void MachineSession::measure(Done done)
+{
     run(
         "M491", MachineLink::kMotionTimeoutMs, done,
         [this, done](const CommandReply &reply) {
@@ -235,142 +231,6 @@ void MachineSession::probe(Done done)
                     done(r);
                 },
                 SessionResult {});
-        },
-        ReplyEnd::Script);
-}
-
-void MachineSession::breakTest(double tolerance, Done done, std::optional<double> storedTlo)
-{
-    done = recordingVerdict(std::move(done));
-    if (auto why = unsupported(true))
-        return refuse(done, *why);
-    if (auto r = validateTolerance(tolerance); !r)
-        return refuse(done, r.error().message);
-    // The community firmware takes T0 and every tool from T9 up for its wireless probe in M491.1: it
-    // measures, then halts for a probe that is "dead or not set" (ATCHandler, seen on the firmware).
-    if (m_tool && (*m_tool == 0 || *m_tool >= 9))
-        return refuse(done,
-            tr("The firmware's break test takes T%1 for its wireless probe (T0, and every tool from T9 up): "
-               "it "
-               "would measure the tool, then halt. Break-test tools T1 to T8, or probe T%1 and compare its "
-               "TLO "
-               "with the table.")
-                .arg(*m_tool));
-    if (storedTlo) {
-        if (auto r = validateOffset(tr("The stored TLO"), *storedTlo); !r)
-            return refuse(done, r.error().message);
-    }
-    // What the firmware compares with is the TLO in force: the table's, when there is one, set first.
-    awaitStatus(2000, [this, done, tolerance, storedTlo](std::optional<MachineStatus> status) {
-        if (!status || !status->tlo) {
-            SessionResult bad;
-            bad.outcome = SessionResult::Outcome::LinkFailure;
-            bad.message = tr("The machine sent no status report within 2 s; no break test was run.");
-            done(bad);
-            return;
-        }
-        const double inForce = storedTlo ? *storedTlo : *status->tlo;
-        if (std::round(inForce * 1000.0) == 0.0) {
-            refuse(done,
-                tr("The firmware compares with the TLO in force, and takes a TLO of 0.000 mm for none: it "
-                   "would "
-                   "measure T%1 without comparing. No break test was run; probe T%1 and compare its TLO with "
-                   "the table.")
-                    .arg(m_tool.value_or(-1)));
-            return;
-        }
-        // The stored TLO goes in first, always: after a tool change the machine has just measured the tool,
-        // and a tool broken before the change would be compared with its own broken length.
-        if (storedTlo) {
-            run("M493.3 Z" + number(*storedTlo), MachineLink::kDefaultTimeoutMs, done,
-                [this, done, tolerance, storedTlo](
-                    const CommandReply &) { runBreakTest(tolerance, done, storedTlo); });
-            return;
-        }
-        runBreakTest(tolerance, done, std::nullopt);
-    });
-}
-
-void MachineSession::runBreakTest(double tolerance, Done done, std::optional<double> storedTlo)
-{
-    const QByteArray command = "M491.1 H" + number(tolerance);
-    m_link->send(
-        command, MachineLink::kMotionTimeoutMs,
-        [this, done, tolerance, storedTlo](const CommandReply &reply) {
-            std::optional<BreakTestReading> reading;
-            bool noPrevious = false;
-            bool broken = false;
-            for (const QByteArray &line : reply.lines) {
-                if (auto r = parseBreakTest(line))
-                    reading = r;
-                noPrevious = noPrevious || line.trimmed() == "No previous TLO included, aborting";
-                broken = broken || line.contains("Tool Break Check - check tool for breakage");
-            }
-            SessionResult result;
-            result.tool = m_tool;
-            result.tolerance = tolerance;
-            result.breakTest = reading;
-            // The firmware says what it compared with: it must be the stored TLO that was set.
-            const bool comparedWithAnother
-                = reading && storedTlo && std::fabs(reading->oldTlo - *storedTlo) > 0.0005;
-            if (comparedWithAnother) {
-                if (broken)
-                    m_restoreOnUnlock = storedTlo;
-                result.breakTest.reset();
-                result.outcome = SessionResult::Outcome::MachineError;
-                result.message
-                    = tr("The machine compared T%1 with a TLO of %2 mm, not its stored %3 mm, so its "
-                         "verdict does not hold. Check the offsets, then run the break test again.")
-                          .arg(m_tool.value_or(-1))
-                          .arg(millimetres(reading->oldTlo, false))
-                          .arg(millimetres(*storedTlo, false));
-                done(result);
-                return;
-            }
-            if (broken && reading) {
-                // The firmware halts with the new, broken length in force: Unlock sets the stored one back
-                // before anything can move.
-                m_restoreOnUnlock = reading->oldTlo;
-                result.outcome = SessionResult::Outcome::ToolBroken;
-                result.message
-                    = tr("Tool T%1 may be broken: it measured a TLO of %2 mm against %3 mm before (a "
-                         "difference of %4 mm; the tolerance is %5 mm). The machine has halted with the new "
-                         "length, %2 mm, in force. Check the tool and replace it if it is damaged, then "
-                         "Unlock: Toffee sets the stored TLO, %3 mm, back first.")
-                          .arg(m_tool.value_or(-1))
-                          .arg(millimetres(reading->newTlo, false))
-                          .arg(millimetres(reading->oldTlo, false))
-                          .arg(millimetres(std::fabs(reading->newTlo - reading->oldTlo), false))
-                          .arg(toleranceText(tolerance));
-                done(result);
-                return;
-            }
-            if (!reply.ok()) {
-                done(failure(reply));
-                return;
-            }
-            if (noPrevious) {
-                result.outcome = SessionResult::Outcome::MachineError;
-                result.message
-                    = tr("The machine had no TLO for this tool to compare with: it measured the tool "
-                         "and took the new length without comparing. Check the TLO it reports "
-                         "against the table before you cut.");
-            } else if (!reading) {
-                result.outcome = SessionResult::Outcome::MachineError;
-                result.message
-                    = tr("The break test ran but its result (\"Old: … , new: …\") could not be read. Run it "
-                         "again before you trust the tool.")
-                    + floodNote(reply);
-            } else if (std::fabs(reading->newTlo - reading->oldTlo) > tolerance) {
-                // The firmware should have halted; do not call this tool good on our side either.
-                result.outcome = SessionResult::Outcome::ToolBroken;
-                result.message = tr("Tool T%1 measured %2 mm against %3 mm, more than the %4 mm tolerance.")
-                                     .arg(m_tool.value_or(-1))
-                                     .arg(millimetres(reading->newTlo, false))
-                                     .arg(millimetres(reading->oldTlo, false))
-                                     .arg(toleranceText(tolerance));
-            }
-            done(result);
         },
         ReplyEnd::Script);
 }

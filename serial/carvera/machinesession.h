@@ -92,7 +92,8 @@ private:
     void confirmEmptySpindle(Done done);
     // Why an operation this firmware does not have is refused, or nothing.
     [[nodiscard]] std::optional<QString> unsupported(bool breakTest) const;
-    void runBreakTest(double tolerance, Done done, std::optional<double> storedTlo);
+    // `zero`: the stored TLO is 0.000, compared as 0.001 (comparableTlo).
+    void runBreakTest(double tolerance, Done done, std::optional<double> storedTlo, bool zero = false);
     // Polls until the machine is no longer running a command (a late answer of a timed-out command would
     // otherwise be taken for the next command's), then lets stray output settle. `next` gets false on
     // give-up.
@@ -103,6 +104,10 @@ private:
     [[nodiscard]] static SessionResult stayedBusy(const QString &state, qint64 waitedMs);
     // `done`, with the recording a successful result carries: the TLO as `source`, or a break test's verdict.
     static QByteArray number(double value);
+    // Why a result may be missing from a reply: the machine printed more than a reply keeps.
+    [[nodiscard]] static QString floodNote(const CommandReply &reply);
+    // M491 and the offsets after it, recorded as nothing (probe() records it).
+    void measure(Done done);
 
     MachineLink *m_link;
     std::optional<int> m_tool;

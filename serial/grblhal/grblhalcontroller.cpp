@@ -389,7 +389,7 @@ void GrblHalController::measure(Done done, std::function<void(double)> next)
                 return number(machineZ - wco);
             };
             const int motion = MachineLink::kMotionTimeoutMs;
-            auto touch = [done](const CommandReply &reply) -> std::optional<double> {
+            auto touch = [done, setter](const CommandReply &reply) -> std::optional<double> {
                 std::optional<GrblHal::ProbeReport> found;
                 for (const QByteArray &line : reply.lines) {
                     if (auto p = GrblHal::parseProbeReport(line))
@@ -402,7 +402,19 @@ void GrblHalController::measure(Done done, std::function<void(double)> next)
                     done(result);
                     return std::nullopt;
                 }
-                return found->position.z();
+                // A contact outside the search (from the safe height down to the setter's lowest Z) is no
+                // contact the cycle can make: a reply to trust no further.
+                const double z = found->position.z();
+                if (z < setter.zMin - 1.0 || z > setter.safeZ + 1.0) {
+                    done(SessionResult::failed(SessionResult::Outcome::MachineError,
+                        tr("grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to "
+                           "%3 "
+                           "mm. Nothing was written or recorded; check the tool setter's settings and the "
+                           "machine.")
+                            .arg(mm(z), mm(setter.safeZ), mm(setter.zMin))));
+                    return std::nullopt;
+                }
+                return z;
             };
             run("M5", MachineLink::kDefaultTimeoutMs, done, [=, this](const CommandReply &) {
                 run("G53 G0 Z" + number(setter.safeZ), motion, done, [=, this](const CommandReply &) {
@@ -449,6 +461,13 @@ bool GrblHalController::fitsTable(int tool) const
 void GrblHalController::writeOffset(
     int tool, double tlo, Done done, std::function<void(const QString &note)> next)
 {
+    // The one range, whichever path brings the TLO (a probe, a set, a restore): nothing beyond it reaches
+    // grblHAL.
+    if (auto valid = validateOffset(tr("T%1's TLO").arg(tool), tlo); !valid) {
+        done(SessionResult::failed(SessionResult::Outcome::MachineError,
+            valid.error().message + u' ' + tr("Nothing was written to grblHAL or recorded.")));
+        return;
+    }
     const bool table = fitsTable(tool);
     auto check = [this, done, next, tool, tlo, table](const GrblHal::ParameterReport &report) {
         QStringList wrong;

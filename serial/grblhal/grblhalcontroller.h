@@ -85,6 +85,10 @@ protected:
     [[nodiscard]] QString cancelledChangeNote() const override;
 
 private:
+    // How long a reset may take to be answered with grblHAL's greeting.
+    static constexpr int kGreetingWaitMs = 2000;
+    // `next` once grblHAL's greeting came after a reset, or the wait for it passed.
+    void awaitGreeting(std::function<void()> next);
     using Next = std::function<void(const CommandReply &reply)>;
     // The modal state $G reports, as far as Toffee needs it.
     struct Modal

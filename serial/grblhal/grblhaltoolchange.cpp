@@ -35,8 +35,11 @@ void GrblHalController::startToolChange(int tool, Done done, std::optional<doubl
                 awaitStatus(2000,
                     [this, done, tool, storedTlo, waitChanged = self.lock()](std::optional<MachineStatus> s) {
                         if (toolChangeEnded()) {
-                            // Ended while it waited (changeTool says why): nothing is measured.
-                            done(SessionResult::failed(SessionResult::Outcome::MachineError, {}));
+                            // Ended while it waited (changeTool says why): nothing is measured, once grblHAL
+                            // has said it restarted (its greeting): nothing goes to a controller mid-reset.
+                            awaitGreeting([done] {
+                                done(SessionResult::failed(SessionResult::Outcome::MachineError, {}));
+                            });
                             return;
                         }
                         if (!s) {
@@ -65,6 +68,25 @@ void GrblHalController::startToolChange(int tool, Done done, std::optional<doubl
             };
             (*waitChanged)();
         });
+}
+
+void GrblHalController::awaitGreeting(std::function<void()> next)
+{
+    auto *timer = new QTimer(this);
+    timer->setSingleShot(true);
+    auto connection = std::make_shared<QMetaObject::Connection>();
+    auto finish = [timer, connection, next] {
+        QObject::disconnect(*connection);
+        timer->stop();
+        timer->deleteLater();
+        next();
+    };
+    *connection = connect(m_link, &MachineLink::lineReceived, timer, [finish](const QByteArray &line) {
+        if (GrblHal::classifyReply(line).kind == GrblHal::ReplyKind::Greeting)
+            finish();
+    });
+    connect(timer, &QTimer::timeout, timer, finish);
+    timer->start(kGreetingWaitMs);
 }
 
 void GrblHalController::resumeWaitingChange()

@@ -9,6 +9,7 @@
 
 #include "model/clock.h"
 #include "model/numberformat.h"
+#include "model/toolvalidation.h"
 #include "serial/machine/machinelink.h"
 #include "serial/transport/linetransport.h"
 
@@ -67,6 +68,19 @@ MachineController::Done MachineController::recording(Done done, RecordingKind ki
     return [done = std::move(done), kind](const SessionResult &r) {
         if (!r.ok() || !r.tlo || !r.tool || *r.tool < 0)
             return done(r);
+        // The one range, before anything records it: a reading beyond any tool is the machine's or the
+        // setter's fault, never a TLO.
+        if (!isMachineTlo(r.tlo->tlo())) {
+            SessionResult beyond = SessionResult::failed(SessionResult::Outcome::MachineError,
+                tr("The machine's reading makes T%1's TLO %2 mm, beyond any tool (%3 mm at most): nothing "
+                   "was "
+                   "recorded. Check the tool setter and the machine's reference, then probe again.")
+                    .arg(*r.tool)
+                    .arg(formatNumber(r.tlo->tlo(), NumberFormat::fixed(3)))
+                    .arg(kMaxOffset));
+            beyond.tool = r.tool;
+            return done(beyond);
+        }
         SessionResult recorded = r;
         const TloSource source = kind == RecordingKind::Probe ? TloSource::Probe : TloSource::Manual;
         recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, r.tlo->knownReferenceMz(),
@@ -270,7 +284,7 @@ Result<void> MachineController::validateTolerance(double tolerance)
 
 Result<void> MachineController::validateOffset(const QString &what, double value)
 {
-    if (!std::isfinite(value) || std::fabs(value) > kMaxOffset)
+    if (!isMachineTlo(value))
         return Error { tr("%1 must be a number from -%2 to %2 mm.").arg(what).arg(kMaxOffset) };
     return {};
 }

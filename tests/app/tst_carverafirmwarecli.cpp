@@ -137,6 +137,31 @@ private Q_SLOTS:
         QCOMPARE(kinds,
             (QStringList { u"probe"_s, u"manual_set"_s, u"break_test!"_s, u"probe"_s, u"break_test"_s }));
     }
+
+    // The firmware takes a TLO of 0.000 for none ("No previous TLO included", it measures without comparing):
+    // a stored 0.000 goes in as 0.001 and the firmware compares it. Here T1 (6.915 mm) against a stored
+    // 0.000: the firmware says "Old: 0.001 , new: 6.915", halts, and the check exits 3, not 0.
+    void aStoredTloOfZeroIsComparedByTheFirmware()
+    {
+        CarveraPeer peer;
+        QVERIFY2(peer.started(), qPrintable(peer.errors()));
+        m_port = peer.uart();
+        QFile::remove(table());
+        {
+            QFile file(table());
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(R"({"format": "toffee-tool-table", "version": 2, "units": "mm", "tools": [
+{"number": 1, "pocket": 1, "measured_tlo": 0, "measured_at": "2026-11-21T08:00:00Z", "reference_mz": -115.34}]})");
+        }
+        QCOMPARE(machine({ u"select-tool"_s, u"1"_s }).exitCode, 0);
+        const Run run = cli(QStringList { u"--library"_s, m_dir.filePath(u"zero.sqlite"_s), u"--table"_s,
+                                table(), u"--port"_s, m_port, u"break-test"_s, u"--tolerance"_s, u"0.05"_s },
+            90000);
+        QVERIFY2(run.exitCode == 3, QByteArray(run.out + run.err).constData());
+        QVERIFY2(run.out.contains("old TLO 0.000, new 6.915"), run.out.constData());
+        QVERIFY(tool(1)[u"break_test_failed"_s].toBool());
+        QCOMPARE(json(machine({ u"status"_s }))[u"halt_reason"_s].toInt(), 4); // the firmware's own verdict
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCarveraFirmwareCli)

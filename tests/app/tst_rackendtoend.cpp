@@ -4,6 +4,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -138,6 +139,43 @@ private Q_SLOTS:
         QCOMPARE(run.out, QByteArray("The spindle is empty.\n"));
         QCOMPARE(json(machine({ u"status"_s })).value(u"tool"_s).toInt(), -1);
         QCOMPARE(historyCount(u"probe"_s), probes + 1);
+    }
+
+    // A safety check that did not check says so in its exit status. The reference tool's TLO is 0.000, which
+    // the firmware's break test takes for none: it was skipped and the check exited 0, the tool 0.5 mm short
+    // or not. Now it is measured and compared; and a tool the firmware cannot test at all (T9, its wireless
+    // probe's number) leaves the check incomplete: exit 1, never 0.
+    void aCheckThatCouldNotCompareEveryToolDoesNotPass()
+    {
+        Emulator emulator(tty(), {});
+        QVERIFY(emulator.started());
+        QCOMPARE(machine({ u"measure-rack"_s }).exitCode, 0);
+        {
+            // T2's stored TLO made what the reference tool's is (the file holds a tool a line).
+            QFile file(table());
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            QStringList lines = QString::fromUtf8(file.readAll()).split(u'\n');
+            file.close();
+            for (QString &line : lines) {
+                if (line.contains(u"\"number\": 2,"_s))
+                    line.replace(
+                        QRegularExpression(u"\"measured_tlo\": [-0-9.e]+"_s), u"\"measured_tlo\": 0"_s);
+            }
+            QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            file.write(lines.join(u'\n').toUtf8());
+        }
+        Run run = machine({ u"check-rack"_s }, false);
+        QVERIFY2(run.exitCode == 3, QByteArray(run.out + run.err).constData());
+        QVERIFY2(run.out.contains("T2: broken"), run.out.constData());
+        QVERIFY2(run.err.contains("against 0.000 mm before"), run.err.constData());
+        QCOMPARE(json(machine({ u"status"_s })).value(u"halt_reason"_s).toInt(), 4); // the firmware compared
+        QCOMPARE(machine({ u"unlock"_s }).exitCode, 0);
+
+        QCOMPARE(machine({ u"measure-rack"_s }).exitCode, 0);
+        run = machine({ u"check-rack"_s, u"--rack"_s, u"1,9"_s }, false);
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.out.contains("T9: skipped"), run.out.constData());
+        QVERIFY2(run.err.contains("not every rack tool was checked: T9"), run.err.constData());
     }
 
     // A script (cron, ssh -n, a pipe) has nobody at the machine: a change that waits for a person is refused

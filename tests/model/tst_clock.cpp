@@ -71,6 +71,10 @@ private Q_SLOTS:
         QCOMPARE(ageText(measured), u"9 days ago"_s);
         Clock::setForTests(measured.addSecs(12 * 60), Clock::Run::Frozen);
         QCOMPARE(ageText(measured), u"12 min ago"_s);
+        // Not "just now" for a time beyond the clock: it is said as what it is.
+        QCOMPARE(ageText(QDateTime(QDate(2100, 1, 1), QTime(0, 0), Qt::UTC)),
+            u"dated in the future (2100-01-01 00:00 UTC)"_s);
+        QCOMPARE(ageText(measured.addSecs(12 * 60 + 120)), u"just now"_s); // two minutes ahead: the skew
     }
 };
 

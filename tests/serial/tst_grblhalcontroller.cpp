@@ -26,6 +26,7 @@ public:
     QList<QByteArray> received;
     double tlo = 0.0;
     int tool = 2;
+    double contactZ = -54.7; // where G38.2 says it touched (machine Z)
 
     TablelessGrblHal()
     {
@@ -71,6 +72,8 @@ private:
             tlo = line.mid(7).toDouble();
             return "ok\r\n";
         }
+        if (line.startsWith("G38.2"))
+            return "[PRB:0.000,0.000," + QByteArray::number(contactZ, 'f', 3) + ":1]\r\nok\r\n";
         if (line.startsWith("G10 L1") || line.startsWith("G43 H"))
             return "error:38\r\n"; // no such tool: the build has no table
         return "ok\r\n";
@@ -152,6 +155,41 @@ private Q_SLOTS:
         QVERIFY2(restored.ok(), qPrintable(restored.message));
         QCOMPARE(machine.tlo, 12.5);
         QCOMPARE(controller.restoreCommand(2, 12.5), u"M61 Q2, G43.1 Z12.5"_s);
+    }
+
+    // One range before anything is written: a probe whose contact lies outside the search (a garbled or
+    // hostile reply: Z -99999 once made a TLO of -99929 mm that reached grblHAL and the history) writes
+    // nothing and records nothing; nor does a TLO beyond any tool, however it comes.
+    void aReadingBeyondAnyToolIsWrittenNowhere()
+    {
+        TablelessGrblHal machine;
+        machine.contactZ = -99999.0;
+        TcpTransport transport(TcpTransport::Address { u"127.0.0.1"_s, machine.port() });
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        MachineLink link(&transport);
+        GrblHalController controller(&link);
+        controller.adoptReference(-70.0);
+        controller.setToolSetter(ToolSetter { 0.0, 0.0, -120.0, 3000.0, 300.0, 2.0, 0.0 });
+        QVERIFY(await([&](auto done) { controller.connectToMachine(done); }).ok());
+        const auto writes = [&machine] {
+            return std::count_if(machine.received.cbegin(), machine.received.cend(),
+                [](const QByteArray &l) { return l.startsWith("G10") || l.startsWith("G43"); });
+        };
+        const SessionResult probed = await([&](auto done) { controller.probe(done); });
+        QCOMPARE(probed.outcome, SessionResult::Outcome::MachineError);
+        QVERIFY2(probed.message.contains(u"outside the search"_s), qPrintable(probed.message));
+        QVERIFY(!probed.recording);
+        QCOMPARE(writes(), 0);
+
+        // A setter set that deep would let the contact through: the TLO itself is then refused.
+        machine.contactZ = -99000.0;
+        controller.setToolSetter(ToolSetter { 0.0, 0.0, -99999.0, 3000.0, 300.0, 2.0, 0.0 });
+        const SessionResult deep = await([&](auto done) { controller.probe(done); });
+        QCOMPARE(deep.outcome, SessionResult::Outcome::MachineError);
+        QVERIFY2(deep.message.contains(u"from -999.999 to 999.999 mm"_s), qPrintable(deep.message));
+        QVERIFY(!deep.recording);
+        QCOMPARE(writes(), 0);
+        QCOMPARE(machine.tlo, 0.0);
     }
 };
 

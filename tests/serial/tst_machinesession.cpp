@@ -161,16 +161,33 @@ private Q_SLOTS:
         QVERIFY(h.emulator.isHalted());
     }
 
-    // The firmware compares with the TLO in force and takes 0 for none: it would measure without comparing.
-    void aBreakTestAgainstNoTloIsNotSent()
+    // The firmware compares with the TLO in force and takes 0.000 for none (it would measure without
+    // comparing): a TLO of 0.000, the reference tool's, goes in as 0.001 and is compared by the firmware,
+    // which halts a broken tool as it does every other. It was once refused, and Check Rack passed it
+    // untested.
+    void aBreakTestAgainstATloOfZeroIsComparedAsOneMicrometre()
     {
         SessionHarness h;
         QVERIFY(h.connect().ok());
-        const qsizetype before = h.sent.size();
-        const SessionResult r = h.run([&](auto done) { h.session.breakTest(0.1, done); });
-        QCOMPARE(r.outcome, Outcome::Refused);
-        QVERIFY2(r.message.contains(u"takes a TLO of 0.000 mm for none"_s), qPrintable(r.message));
-        QCOMPARE(h.sent.size(), before);
+        // The reference tool itself (its TLO 0.000 in force): within the tolerance, it passes.
+        h.emulator.setToolLength(1, h.emulator.toolLength(1) - 43.04);
+        const SessionResult intact = h.run([&](auto done) { h.session.breakTest(0.1, done, 0.0); });
+        QVERIFY2(intact.ok(), qPrintable(intact.message));
+        QCOMPARE(intact.breakTest->oldTlo, 0.0);
+        QCOMPARE(intact.breakTest->newTlo, 0.0);
+        QVERIFY(intact.recording && intact.recording->breakTestFailed == false);
+        QVERIFY(h.sent.contains("M493.3 Z0.001"));
+        QVERIFY(h.sent.contains("M491.1 H0.1"));
+        // 0.5 mm shorter: broken, the firmware halts, and Unlock sets the stored 0.000 back.
+        h.emulator.breakTool(1, 0.5);
+        const SessionResult broken = h.run([&](auto done) { h.session.breakTest(0.1, done, 0.0); });
+        QCOMPARE(broken.outcome, Outcome::ToolBroken);
+        QCOMPARE(broken.breakTest->oldTlo, 0.0);
+        QCOMPARE(broken.breakTest->newTlo, -0.5);
+        QVERIFY2(broken.message.contains(u"against 0.000 mm before"_s), qPrintable(broken.message));
+        QVERIFY(broken.recording && broken.recording->breakTestFailed == true);
+        QVERIFY(h.emulator.isHalted());
+        QCOMPARE(h.session.tloToRestore(), std::optional(0.0));
     }
 
     // After M493.2 the firmware still has the previous tool's TLO in force, and M491.1 would compare with

@@ -151,26 +151,35 @@ private Q_SLOTS:
     // The reference tool (a stored TLO of 0.000) cannot be break-tested: the firmware's M491.1 takes 0 for
     // "No previous TLO" and measures without comparing. The check skips it, as Prepare does, says why, and
     // goes on with the others.
-    void theReferenceToolIsSkippedAndTheCheckGoesOn()
+    // The reference tool's stored TLO is 0.000, which the firmware's break test takes for none: the check
+    // tests it all the same (measured and compared by Toffee), and finds it broken when it is. It was once
+    // skipped, and the check passed with that tool 0.5 mm short.
+    void theReferenceToolIsTestedToo()
     {
         Station s;
+        s.machine().setToolLength(2, s.machine().toolLength(2) - 9.652); // T2 is the reference: TLO 0
         s.measureAll();
+        QCOMPARE(*s.table.find(2)->measuredTlo, 0.0);
         s.recordings.clear();
-        Tool reference = *s.table.find(2);
-        reference.measuredTlo = 0.0;
-        QVERIFY(s.table.replace(2, reference).ok());
         s.sent.clear();
         RackSequence check(&s.connection, RackSequence::plan(Mode::Check, kRack, s.table, 0.05));
         QVERIFY(s.run(check));
         QVERIFY2(check.outcome().ok(), qPrintable(check.outcome().message));
         QCOMPARE(s.states(check),
             (QList<State> {
-                State::Passed, State::Skipped, State::Passed, State::Passed, State::Passed, State::Passed }));
-        QVERIFY2(check.steps().at(1).message.contains(u"T2 is not break-tested: its TLO is 0.000 mm"_s),
-            qPrintable(check.steps().at(1).message));
-        QVERIFY(!s.sent.contains("M6 T2")); // not even picked
-        QCOMPARE(s.sent.last(), QByteArray("M6 T-1"));
-        QCOMPARE(s.recordings.size(), 5);
+                State::Passed, State::Passed, State::Passed, State::Passed, State::Passed, State::Passed }));
+        QVERIFY(s.sent.contains("M6 T2"));
+        QCOMPARE(s.recordings.size(), 6);
+
+        s.machine().breakTool(2, 0.5);
+        s.recordings.clear();
+        RackSequence again(&s.connection, RackSequence::plan(Mode::Check, kRack, s.table, 0.05));
+        QVERIFY(s.run(again));
+        QCOMPARE(again.outcome().outcome, SessionResult::Outcome::ToolBroken);
+        QCOMPARE(again.steps().at(1).state, State::Broken);
+        QVERIFY2(again.outcome().message.contains(u"-0.500 mm against 0.000 mm before"_s),
+            qPrintable(again.outcome().message));
+        QVERIFY(s.sent.contains("M493.3 Z0.001")); // 0.000 compared as 0.001: the firmware takes 0 for none
     }
 
     void aBrokenToolStopsTheCheck()

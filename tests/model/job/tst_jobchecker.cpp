@@ -183,6 +183,26 @@ private Q_SLOTS:
         QCOMPARE(drill.tools.at(0).lowestZ, std::optional(-25.0));
     }
 
+    // A TLO dated in the future is neither fresh nor "older than the stale limit": it is said as what it is,
+    // and never restored in place of a probe.
+    void aTloDatedInTheFutureIsNeitherFreshNorStale()
+    {
+        const QDateTime now(QDate(2026, 11, 21), QTime(9, 0), Qt::UTC);
+        ToolFacts facts;
+        facts.inTable = true;
+        facts.measuredTlo = 12.5;
+        facts.referenceMz = -115.34;
+        facts.measuredAt = QDateTime(QDate(2100, 1, 1), QTime(0, 0), Qt::UTC);
+        QVERIFY(!facts.isFresh(now, 7));
+        const auto restorable = restorableTlo(2, facts, now, 7, -115.34);
+        QVERIFY(!restorable);
+        QVERIFY2(
+            restorable.error().message.contains(u"in the future"_s), qPrintable(restorable.error().message));
+        QVERIFY(!restorable.error().message.contains(u"older than"_s));
+        facts.measuredAt = now.addSecs(-3600);
+        QCOMPARE(restorableTlo(2, facts, now, 7, -115.34).value(), 12.5);
+    }
+
     void findsInchesOnTheCarveraAndUnitsThatAreNotTheTables()
     {
         const JobReport carvera = check("G20\nM6 T2\nM30\n", Dialect::Carvera, shopTable());

@@ -375,22 +375,22 @@ private Q_SLOTS:
         QVERIFY(
             prepared.value().notes.join(u'\n').contains(u"T8's stored TLO was measured against reference MCS "
                                                         "Z -80, but the machine's is -72.3"_s));
-        // T1's TLO is 0: the community firmware takes it for none and would not compare (seen on it).
+        // T1's TLO is 0: the community firmware takes it for none and would not compare (seen on it). It goes
+        // in as 0.001 first, and is tested as every other tool.
         PrepareOptions test;
         test.breakTest = true;
         PrepareSummary summary;
         const QByteArray withT1 = prepare("M6 T1\nG1 Z-1 F100\nM6 T2\nG1 Z-1\nM30\n", test, &summary);
-        QCOMPARE(withT1.count("M491.1"), 1);
-        QVERIFY(summary.notes.join(u'\n').contains(u"T1 is not break-tested: its TLO is 0.000 mm"_s));
-        // ... and where the test would have gone, the program says so too.
-        QVERIFY2(
-            withT1.contains("(Toffee: T1 is not break-tested: its TLO is 0.000 mm [the reference tool's]"),
-            withT1.constData());
+        QCOMPARE(withT1.count("M491.1"), 2);
+        QCOMPARE(summary.untestedTools, 0);
+        const qsizetype nudge = withT1.indexOf("M493.3 Z0.001 (Toffee: T1's TLO 0.000 as 0.001 mm");
+        QVERIFY2(nudge >= 0 && nudge < withT1.indexOf("M491.1"), withT1.constData());
         // T9 on: the firmware's break test takes them for its wireless probe and halts (seen on it).
         summary = {};
         const QByteArray withT9 = prepare("M6 T2\nG1 Z-1 F100\nM6 T9\nG1 Z-1\nM30\n", test, &summary);
         QCOMPARE(withT9.count("M491.1"), 1);
         QVERIFY(summary.notes.join(u'\n').contains(u"T9 is not break-tested"_s));
+        QCOMPARE(summary.untestedTools, 1); // toffee-cli exits 1: the preparation is incomplete
     }
 
     void theCarveraTakesBothAtOnce()

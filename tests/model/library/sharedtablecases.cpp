@@ -122,6 +122,40 @@ void SharedTableCases::aMeasurementUpdatesItsToolOnceHoweverOftenItIsWritten()
     QVERIFY(!a->readTable(u"Mill"_s));
 }
 
+// Station A's probe waited in its outbox (the library was busy) while station B probed the same tool later:
+// when A's reaches the library, the history keeps both and the table keeps the newest, B's. A measurement
+// dated in the future (a clock set wrong) is kept in the history and orders nothing.
+void SharedTableCases::aLateMeasurementNeverOverwritesANewerOne()
+{
+    const LibraryLocation where = freshLocation();
+    auto a = station(where, u"A"_s);
+    auto b = station(where, u"B"_s);
+    QVERIFY(a && b && a->createTable(u"C1"_s, threeTools()));
+    HistoryEvent older = probe(u"C1"_s, 1, 43.04);
+    HistoryEvent newer = probe(u"C1"_s, 1, 15.34);
+    older.at = newer.at.addSecs(-600);
+    QCOMPARE(b->append({ newer }).value(), 1);
+    QCOMPARE(a->append({ older }).value(), 1);
+    QCOMPARE(a->readTable(u"C1"_s).value().row(1)->tool->measuredTlo, 15.34);
+    QCOMPARE(a->history({ u"C1"_s, 1, {}, 0 }).value().size(), 2);
+    // A break test older than the TLO in the table says nothing of that TLO either.
+    HistoryEvent oldTest = probe(u"C1"_s, 1, 43.04);
+    oldTest.kind = EventKind::BreakTest;
+    oldTest.failed = true;
+    oldTest.at = older.at.addSecs(60);
+    QCOMPARE(a->append({ oldTest }).value(), 1);
+    QVERIFY(!a->readTable(u"C1"_s).value().row(1)->tool->breakTestFailed);
+    // One dated in 2100 does not take the table over: the next real measurement still does.
+    HistoryEvent future = probe(u"C1"_s, 1, 99.0);
+    future.at = QDateTime(QDate(2100, 1, 1), QTime(0, 0), Qt::UTC);
+    QCOMPARE(a->append({ future }).value(), 1);
+    QCOMPARE(a->readTable(u"C1"_s).value().row(1)->tool->measuredTlo, 15.34);
+    HistoryEvent latest = probe(u"C1"_s, 1, 15.32);
+    latest.at = newer.at.addSecs(60);
+    QCOMPARE(b->append({ latest }).value(), 1);
+    QCOMPARE(a->readTable(u"C1"_s).value().row(1)->tool->measuredTlo, 15.32);
+}
+
 void SharedTableCases::documentsMergeFieldsAndAskOnlyForTheSameField()
 {
     const LibraryLocation where = freshLocation();

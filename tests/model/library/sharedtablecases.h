@@ -66,6 +66,7 @@ private Q_SLOTS:
     void twoStationsEditingTheSameToolConflictAndDifferentToolsBothSave();
     void aRemovalAndATwiceAddedToolConflictToo();
     void aMeasurementUpdatesItsToolOnceHoweverOftenItIsWritten();
+    void aLateMeasurementNeverOverwritesANewerOne();
     void documentsMergeFieldsAndAskOnlyForTheSameField();
     void anotherStationsWriteIsSeenByTheWatcher();
 };

@@ -2,9 +2,11 @@
 // A tool's wear trend, on rows computed by hand, and the warning a probe off the trend gets.
 #include <limits>
 
+#include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "model/clock.h"
 #include "model/library/library.h"
 #include "model/library/weartrend.h"
 
@@ -163,6 +165,49 @@ private Q_SLOTS:
         HistoryEvent other = broken;
         other.tool = 4; // no history: nothing to compare with
         QVERIFY(!checkProbeAgainstTrend(*library.value(), other, 0.05));
+    }
+
+    // One range: a TLO beyond any tool never reaches the history (refused with the whole batch, nothing of
+    // it written), and one an older Toffee wrote there is no point of the trend: a normal probe after it is
+    // not "54423.558 mm shorter than its trend predicts".
+    void aTloBeyondAnyToolNeitherEntersTheHistoryNorBendsTheTrend()
+    {
+        QTemporaryDir dir;
+        auto library = Library::open({ dir.filePath(u"l.sqlite"_s) });
+        QVERIFY(library);
+        const auto refused = library.value()->append({ probe(0, -10.0), probe(10, 50000.0) });
+        QVERIFY(!refused);
+        QVERIFY2(refused.error().message.contains(u"a TLO of 50000.000 mm, beyond any tool"_s),
+            qPrintable(refused.error().message));
+        QVERIFY(library.value()->history({}).value().isEmpty());
+        HistoryEvent far = probe(10, -10.0);
+        far.referenceMz = 1e9;
+        QVERIFY(!library.value()->append({ far }));
+
+        const QList<HistoryEvent> written { probe(0, -10.0), probe(10, 50000.0), probe(20, -10.01) };
+        const QList<TrendPoint> points = WearTrend::pointsOf(written, {});
+        QCOMPARE(points.size(), 2);
+        const auto trend = WearTrend::fit(points);
+        QVERIFY(trend);
+        QVERIFY(!trend->check(3, points.last().x + 36000.0, -10.02, 0.05));
+    }
+
+    // A new cutter dated in the future (a station's clock set to 2100) ends nothing: the trend and the
+    // cutting time go on from the cutter before it.
+    void aNewCutterFromTheFutureEndsNothing()
+    {
+        Clock::setForTests(kStart.addDays(30));
+        const auto real = qScopeGuard([] { Clock::setForTests({}); });
+        HistoryEvent future = probe(0, -10.0);
+        future.at = QDateTime(QDate(2100, 1, 1), QTime(0, 0), Qt::UTC);
+        future.kind = EventKind::NewCutter;
+        future.tlo.reset();
+        const QList<HistoryEvent> events { probe(0, -10.0), future, probe(20, -10.01) };
+        QVERIFY(!cutterSince(events).isValid());
+        bool cutting = false;
+        const QList<TrendPoint> points = WearTrend::pointsOf(events, { use(10, 600) }, &cutting);
+        QCOMPARE(points.size(), 2);
+        QVERIFY(cutting);
     }
 };
 
