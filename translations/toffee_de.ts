@@ -871,28 +871,12 @@
         <translation>in der Zukunft datiert (%1)</translation>
     </message>
     <message>
-        <source>T%1&apos;s %2 event %3</source>
-        <translation>Ereignis %3 (%2) von T%1</translation>
-    </message>
-    <message>
-        <source>%1 names no tool.</source>
-        <translation>%1 nennt kein Werkzeug.</translation>
-    </message>
-    <message>
-        <source>%1 has no time.</source>
-        <translation>%1 hat keine Zeit.</translation>
-    </message>
-    <message>
-        <source>%1 holds a TLO of %2 mm, beyond any tool (%3 mm at most).</source>
-        <translation>%1 enthält eine Längenkorrektur von %2 mm, jenseits jedes Werkzeugs (höchstens %3 mm).</translation>
-    </message>
-    <message>
-        <source>%1 holds a machine position of %2 mm, beyond any machine.</source>
-        <translation>%1 enthält eine Maschinenposition von %2 mm, jenseits jeder Maschine.</translation>
-    </message>
-    <message>
         <source>T%1&apos;s stored TLO is dated %2, in the future: a clock was wrong, and when it was measured is not known. It is measured at its change.</source>
         <translation>Die gespeicherte Längenkorrektur von T%1 ist auf %2 datiert, in der Zukunft: Eine Uhr ging falsch, und wann sie gemessen wurde, ist unbekannt. Sie wird beim Wechsel gemessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s %2 event %3 holds a TLO of %4 mm, beyond any tool (%5 mm at most).</source>
+        <translation>Das Ereignis %3 (%2) von T%1 enthält eine Längenkorrektur von %4 mm, jenseits jedes Werkzeugs (höchstens %5 mm).</translation>
     </message>
 </context>
 <context>
@@ -1343,6 +1327,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Which controller the machine runs. Toffee does not ask the machine first: each controller&apos;s question would upset the other.</source>
         <translation>Mit welcher Steuerung die Maschine läuft. Toffee fragt die Maschine nicht vorher: Die Abfrage der einen Steuerung würde die andere stören.</translation>
+    </message>
+    <message>
+        <source>%1 announcements were not listed: a device announced many names (a flood, or a misbehaving device). Every machine announcing itself from its own address is listed.</source>
+        <translation>%1 Ankündigungen wurden nicht aufgeführt: Ein Gerät hat viele Namen angekündigt (eine Flut oder ein fehlerhaftes Gerät). Jede Maschine, die sich von ihrer eigenen Adresse ankündigt, wird aufgeführt.</translation>
     </message>
 </context>
 <context>
@@ -3604,6 +3592,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Nothing of this batch was recorded.</source>
         <translation>Nichts aus diesem Stapel wurde aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>%1 is a library of version %2, read-only here, and too old to be read as it is. Open it once where it can be written (Toffee brings it up to date), or copy it.</source>
+        <translation>%1 ist eine Bibliothek der Version %2, hier schreibgeschützt und zu alt, um so gelesen zu werden. Öffnen Sie sie einmal dort, wo sie geschrieben werden kann (Toffee bringt sie auf den neuesten Stand), oder kopieren Sie sie.</translation>
     </message>
 </context>
 <context>
@@ -5908,6 +5900,18 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     <message>
         <source>%1 is not a measurement Toffee kept: it was changed or damaged.</source>
         <translation>%1 ist keine Messung, die Toffee aufbewahrt hat: Sie wurde verändert oder beschädigt.</translation>
+    </message>
+    <message>
+        <source>There is nothing to keep.</source>
+        <translation>Es gibt nichts aufzubewahren.</translation>
+    </message>
+    <message>
+        <source>It was moved to %1.</source>
+        <translation>Sie wurde nach %1 verschoben.</translation>
+    </message>
+    <message>
+        <source>%1 event(s) of %2 cannot go into the history (%3). They were moved to %4 apart; the file&apos;s other events are sent.</source>
+        <translation>%1 Ereignis(se) aus %2 können nicht in den Verlauf (%3). Sie wurden gesondert nach %4 verschoben; die übrigen Ereignisse der Datei werden gesendet.</translation>
     </message>
 </context>
 <context>

@@ -871,28 +871,12 @@
         <translation>日期在未来（%1）</translation>
     </message>
     <message>
-        <source>T%1&apos;s %2 event %3</source>
-        <translation>T%1 的 %2 事件 %3</translation>
-    </message>
-    <message>
-        <source>%1 names no tool.</source>
-        <translation>%1 未指明刀具。</translation>
-    </message>
-    <message>
-        <source>%1 has no time.</source>
-        <translation>%1 没有时间。</translation>
-    </message>
-    <message>
-        <source>%1 holds a TLO of %2 mm, beyond any tool (%3 mm at most).</source>
-        <translation>%1 含有 %2 mm 的刀长补偿，超出任何刀具（最多 %3 mm）。</translation>
-    </message>
-    <message>
-        <source>%1 holds a machine position of %2 mm, beyond any machine.</source>
-        <translation>%1 含有 %2 mm 的机床位置，超出任何机床。</translation>
-    </message>
-    <message>
         <source>T%1&apos;s stored TLO is dated %2, in the future: a clock was wrong, and when it was measured is not known. It is measured at its change.</source>
         <translation>T%1 存储的刀长补偿日期为 %2，在未来：某个时钟有误，测量时间未知。将在换刀时测量。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s %2 event %3 holds a TLO of %4 mm, beyond any tool (%5 mm at most).</source>
+        <translation>T%1 的 %2 事件 %3 含有 %4 mm 的刀长补偿，超出任何刀具（最多 %5 mm）。</translation>
     </message>
 </context>
 <context>
@@ -1343,6 +1327,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Which controller the machine runs. Toffee does not ask the machine first: each controller&apos;s question would upset the other.</source>
         <translation>机床所用的控制器。Toffee 不会先询问机床：每种控制器的查询都会干扰另一种。</translation>
+    </message>
+    <message>
+        <source>%1 announcements were not listed: a device announced many names (a flood, or a misbehaving device). Every machine announcing itself from its own address is listed.</source>
+        <translation>有 %1 条广播未列出：某个设备广播了很多名称（泛洪或设备故障）。凡是从自身地址广播的机器都会列出。</translation>
     </message>
 </context>
 <context>
@@ -3604,6 +3592,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Nothing of this batch was recorded.</source>
         <translation>本批次中的任何内容都未记录。</translation>
+    </message>
+    <message>
+        <source>%1 is a library of version %2, read-only here, and too old to be read as it is. Open it once where it can be written (Toffee brings it up to date), or copy it.</source>
+        <translation>%1 是版本 %2 的库，此处为只读，且版本太旧，无法按原样读取。请在可写的地方打开一次（Toffee 会将其升级），或复制它。</translation>
     </message>
 </context>
 <context>
@@ -5908,6 +5900,18 @@ when it is fresh (no probe)</source>
     <message>
         <source>%1 is not a measurement Toffee kept: it was changed or damaged.</source>
         <translation>%1 不是 Toffee 保存的测量：它已被更改或损坏。</translation>
+    </message>
+    <message>
+        <source>There is nothing to keep.</source>
+        <translation>没有需要保存的内容。</translation>
+    </message>
+    <message>
+        <source>It was moved to %1.</source>
+        <translation>已移至 %1。</translation>
+    </message>
+    <message>
+        <source>%1 event(s) of %2 cannot go into the history (%3). They were moved to %4 apart; the file&apos;s other events are sent.</source>
+        <translation>%2 中有 %1 个事件无法写入历史（%3）。它们已单独移至 %4；该文件的其他事件已发送。</translation>
     </message>
 </context>
 <context>

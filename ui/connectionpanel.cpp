@@ -437,6 +437,11 @@ void ConnectionPanel::updateState()
             hint = tr("One machine heard on the network.");
         else
             hint = tr("%1 machines heard on the network.").arg(count);
+        if (m_listener->dropped() > 0 && m_listenError.isEmpty())
+            hint += u' '
+                + tr("%1 announcements were not listed: a device announced many names (a flood, or a "
+                     "misbehaving device). Every machine announcing itself from its own address is listed.")
+                      .arg(m_listener->dropped());
     }
     m_hint->setText(hint);
     m_hint->setVisible(!hint.isEmpty());

@@ -40,7 +40,8 @@ int discoverMachines(Invocation &call)
                 .arg(listener.errorString()),
             LinkFailure);
     QEventLoop loop;
-    QTimer::singleShot(int(seconds * 1000), &loop, &QEventLoop::quit);
+    // A precise timer: a coarse one may end 5 % early (4.75 s of 5).
+    QTimer::singleShot(int(seconds * 1000), Qt::PreciseTimer, &loop, &QEventLoop::quit);
     loop.exec();
 
     const QList<BeaconListener::Machine> machines = listener.machines();
@@ -49,7 +50,7 @@ int discoverMachines(Invocation &call)
         for (const BeaconListener::Machine &m : machines)
             list.append(QJsonObject { { u"name"_s, m.beacon.name }, { u"address"_s, m.beacon.address },
                 { u"port"_s, int(m.beacon.port) }, { u"busy"_s, m.beacon.busy } });
-        printJson(call, QJsonObject { { u"machines"_s, list } });
+        printJson(call, QJsonObject { { u"machines"_s, list }, { u"dropped"_s, listener.dropped() } });
     } else if (machines.isEmpty()) {
         call.out
             << u"No Carvera heard on UDP port %1 in %2 s. A machine announces itself once a second when "
@@ -64,6 +65,14 @@ int discoverMachines(Invocation &call)
                      << Qt::endl;
         }
     }
+    if (listener.dropped() > 0)
+        call.err
+            << u"toffee-cli: %1 announcement(s) were not listed: a sender announced more than %2 names, or "
+               "more than %3 machines were heard (a flood, or a misbehaving device). Each machine that "
+               "announces itself from its own address is listed."_s.arg(listener.dropped())
+                   .arg(BeaconListener::kMaxNamesPerSender)
+                   .arg(BeaconListener::kMaxMachines)
+            << Qt::endl;
     if (listener.ignored() > 0)
         call.err << u"toffee-cli: %1 datagram(s) on UDP port %2 were no Carvera's beacon and were ignored."_s
                         .arg(listener.ignored())

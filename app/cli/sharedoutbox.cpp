@@ -25,8 +25,7 @@ void sendWaiting(Library &library, QTextStream &err)
     auto fromSpool = spool.send(library, count);
     if (fromSpool) {
         for (const QString &why : fromSpool.value().quarantined)
-            err << "toffee-cli: " << why << " It was moved to " << spool.folder() << "/quarantine."
-                << Qt::endl;
+            err << "toffee-cli: " << why << Qt::endl;
     }
     Result<void> fromOutbox;
     const LibraryLocation own = LibraryLocation::standard();

@@ -6,6 +6,7 @@
 #include <QUuid>
 
 #include "model/clock.h"
+#include "model/library/rowreader.h"
 #include "model/limits.h"
 #include "model/numberformat.h"
 #include "model/toolvalidation.h"
@@ -66,21 +67,16 @@ QDateTime cutterSince(const QList<HistoryEvent> &events)
 
 Result<void> validateEvent(const HistoryEvent &e)
 {
-    const QString what = tr("T%1's %2 event %3").arg(e.tool).arg(eventKindName(e.kind), e.id);
-    if (e.tool < Limits::kEmptySpindle || e.tool > Limits::kMaxToolNumber)
-        return Error { tr("%1 names no tool.").arg(what) };
-    if (!e.at.isValid())
-        return Error { tr("%1 has no time.").arg(what) };
+    // What any row of the history must be (an id, a machine, a tool, a time, numbers a machine reads) ...
+    if (auto row = RowReader::checkEvent(e); !row)
+        return row;
+    // ... and the one TLO range.
     for (const auto &tlo : { e.tlo, e.oldTlo, e.newTlo }) {
         if (tlo && !isMachineTlo(*tlo))
-            return Error { tr("%1 holds a TLO of %2 mm, beyond any tool (%3 mm at most).")
-                               .arg(what, formatNumber(*tlo, NumberFormat::fixed(3)))
+            return Error { tr("T%1's %2 event %3 holds a TLO of %4 mm, beyond any tool (%5 mm at most).")
+                               .arg(e.tool)
+                               .arg(eventKindName(e.kind), e.id, formatNumber(*tlo, NumberFormat::fixed(3)))
                                .arg(Limits::kMaxMachineOffsetMm) };
-    }
-    for (const auto &z : { e.referenceMz, e.currentMz, e.tolerance }) {
-        if (z && !(std::isfinite(*z) && std::fabs(*z) <= kMaxMachineMillimetres))
-            return Error { tr("%1 holds a machine position of %2 mm, beyond any machine.")
-                               .arg(what, formatNumber(*z, NumberFormat::fixed(3))) };
     }
     return {};
 }

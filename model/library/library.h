@@ -52,6 +52,9 @@ public:
         int connectTimeoutS = 5; // PostgreSQL: how long to wait for the server
         int oldestServerVersion = 0; // PostgreSQL: raises the oldest server taken (as server_version_num)
         QString station = {}; // who writes, for updated_by: the computer's name when empty
+        // An SQLite library opened to be read only, as a read-only file or share is: nothing is written, an
+        // older schema is read as it is when it can be.
+        bool readOnly = false;
     };
 
     // Opens the library, creating it (and its folder) when it does not exist, and brings its schema up to

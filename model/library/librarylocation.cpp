@@ -89,6 +89,21 @@ LibraryLocation LibraryLocation::standard()
     return LibraryLocation { .path = QDir(folder).absoluteFilePath(u"Toffee/Toffee/library.sqlite"_s) };
 }
 
+QString LibraryLocation::identity() const
+{
+    if (kind != Kind::Sqlite)
+        return text();
+    const QFileInfo file(path);
+    const QString canonical = file.canonicalFilePath(); // empty when it does not exist yet
+    if (!canonical.isEmpty())
+        return u"sqlite:"_s + canonical;
+    // Not made yet: its folder's canonical path, and its name.
+    const QString folder = QFileInfo(file.absolutePath()).canonicalFilePath();
+    return u"sqlite:"_s
+        + (folder.isEmpty() ? QDir::cleanPath(file.absoluteFilePath())
+                            : QDir(folder).filePath(file.fileName()));
+}
+
 QString LibraryLocation::text() const
 {
     if (kind == Kind::Sqlite)

@@ -37,6 +37,10 @@ public:
     [[nodiscard]] bool isSet() const { return isShared() || !path.isEmpty(); }
     // "sqlite:/home/…/library.sqlite" or "postgresql://…", as a setting or --library takes it back.
     [[nodiscard]] QString text() const;
+    // Which library this is, whatever the spelling that named it: an SQLite file by its canonical path (a
+    // symlink, a relative path or "a/../b" name the same file), a server's database by its normalised URL.
+    // The outbox keeps and finds what waits for a library by it.
+    [[nodiscard]] QString identity() const;
     // For messages: the file, or "database shop on host".
     [[nodiscard]] QString displayName() const;
     friend bool operator==(const LibraryLocation &, const LibraryLocation &) = default;

@@ -130,7 +130,8 @@ Result<std::unique_ptr<Library>> Library::open(const LibraryLocation &location, 
             db.setConnectOptions(connect.join(u';'));
         } else {
             db.setDatabaseName(location.path);
-            db.setConnectOptions(u"QSQLITE_BUSY_TIMEOUT="_s + QString::number(options.busyTimeoutMs));
+            db.setConnectOptions(u"QSQLITE_BUSY_TIMEOUT="_s + QString::number(options.busyTimeoutMs)
+                + (options.readOnly ? u";QSQLITE_OPEN_READONLY"_s : QString()));
         }
         if (!db.open()) {
             const QString why = db.lastError().text();

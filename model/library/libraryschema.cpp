@@ -195,10 +195,21 @@ Result<void> Library::prepareSqlite()
     if (!query.exec(u"PRAGMA foreign_keys = ON"_s))
         return failure(tr("Reading the library"), query);
     const QFileInfo info(m_location.path);
-    m_readOnly = info.exists() && !info.isWritable();
+    m_readOnly = m_options.readOnly || (info.exists() && !info.isWritable());
     // A library that is up to date is only read here: opening it to read the history takes no write lock,
     // so another program's long write does not make a reader fail.
     if (version.value() != kSchemaVersion) {
+        // A read-only file cannot be brought up to date: read as it is when its tables have what Toffee reads
+        // (version 3 lacks only the new cutters' kind, which it then simply holds none of).
+        if (m_readOnly) {
+            if (checkTables())
+                return {};
+            return Error { tr(
+                "%1 is a library of version %2, read-only here, and too old to be read as it is. "
+                "Open it once where it can be written (Toffee brings it up to date), or copy it.")
+                               .arg(m_location.path)
+                               .arg(version.value()) };
+        }
         if (auto migrated = migrate(); !migrated)
             return migrated;
     }

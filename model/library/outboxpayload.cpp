@@ -59,33 +59,43 @@ Result<QList<HistoryEvent>> eventsFromPayload(const QByteArray &payload)
     return eventsFromJson(doc.array());
 }
 
+Result<HistoryEvent> eventFromJson(const QJsonValue &value)
+{
+    if (!value.isObject())
+        return unreadable();
+    const QJsonObject o = value.toObject();
+    HistoryEvent e;
+    e.id = o.value(u"id"_s).toString();
+    e.machine = o.value(u"machine"_s).toString();
+    const double tool = o.value(u"tool"_s).toDouble(-1.5);
+    e.tool = tool == std::floor(tool) && std::fabs(tool) < 2e9 ? int(tool) : -2;
+    e.at = QDateTime::fromString(o.value(u"at"_s).toString(), Qt::ISODateWithMs).toUTC();
+    const auto kind = eventKindFromName(o.value(u"kind"_s).toString());
+    if (!kind)
+        return unreadable();
+    e.kind = *kind;
+    e.tlo = numberFrom(o.value(u"tlo"_s));
+    e.referenceMz = numberFrom(o.value(u"reference_mz"_s));
+    e.currentMz = numberFrom(o.value(u"current_mz"_s));
+    e.tolerance = numberFrom(o.value(u"tolerance"_s));
+    e.oldTlo = numberFrom(o.value(u"old_tlo"_s));
+    e.newTlo = numberFrom(o.value(u"new_tlo"_s));
+    if (o.value(u"failed"_s).isBool())
+        e.failed = o.value(u"failed"_s).toBool();
+    // Held to what the history takes (validateEvent): an entry altered on the disk is refused, not sent.
+    if (auto valid = validateEvent(e); !valid)
+        return valid.error();
+    return e;
+}
+
 Result<QList<HistoryEvent>> eventsFromJson(const QJsonArray &events)
 {
     QList<HistoryEvent> out;
     for (const QJsonValue &v : events) {
-        const QJsonObject o = v.toObject();
-        HistoryEvent e;
-        e.id = o.value(u"id"_s).toString();
-        e.machine = o.value(u"machine"_s).toString();
-        const double tool = o.value(u"tool"_s).toDouble(-1.5);
-        e.tool = tool == std::floor(tool) && std::fabs(tool) < 2e9 ? int(tool) : -2;
-        e.at = QDateTime::fromString(o.value(u"at"_s).toString(), Qt::ISODateWithMs).toUTC();
-        const auto kind = eventKindFromName(o.value(u"kind"_s).toString());
-        if (!kind)
-            return unreadable();
-        e.kind = *kind;
-        e.tlo = numberFrom(o.value(u"tlo"_s));
-        e.referenceMz = numberFrom(o.value(u"reference_mz"_s));
-        e.currentMz = numberFrom(o.value(u"current_mz"_s));
-        e.tolerance = numberFrom(o.value(u"tolerance"_s));
-        e.oldTlo = numberFrom(o.value(u"old_tlo"_s));
-        e.newTlo = numberFrom(o.value(u"new_tlo"_s));
-        if (o.value(u"failed"_s).isBool())
-            e.failed = o.value(u"failed"_s).toBool();
-        // Held to what Toffee writes, as a row is: an entry altered on the disk is refused, not sent.
-        if (!RowReader::checkEvent(e))
-            return unreadable();
-        out.append(std::move(e));
+        auto e = eventFromJson(v);
+        if (!e)
+            return e.error();
+        out.append(e.takeValue());
     }
     return out;
 }

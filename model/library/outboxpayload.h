@@ -5,6 +5,7 @@
 #include <QList>
 
 class QJsonArray;
+class QJsonValue;
 
 #include "model/library/historyevent.h"
 #include "model/library/storedtable.h"
@@ -16,6 +17,8 @@ namespace Toffee {
 [[nodiscard]] QByteArray eventsPayload(const QList<HistoryEvent> &events);
 [[nodiscard]] Result<QList<HistoryEvent>> eventsFromPayload(const QByteArray &payload);
 [[nodiscard]] Result<QList<HistoryEvent>> eventsFromJson(const QJsonArray &events);
+// One event of such a list, held to what the history takes (validateEvent).
+[[nodiscard]] Result<HistoryEvent> eventFromJson(const QJsonValue &event);
 // True when no JSON object in `json` has a key twice (and it is JSON at all): what Toffee reads is refused
 // rather than read as whichever of two values a parser keeps.
 [[nodiscard]] bool hasNoDuplicateKeys(QByteArrayView json);

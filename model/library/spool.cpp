@@ -3,6 +3,7 @@
 
 #include <sys/stat.h>
 
+#include <QCryptographicHash>
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
@@ -35,14 +36,24 @@ QString Spool::defaultFolder()
     return QFileInfo(LibraryLocation::standard().path).absoluteDir().filePath(u"outbox"_s);
 }
 
+QString Spool::folderFor(const LibraryLocation &target) const
+{
+    const QByteArray hash
+        = QCryptographicHash::hash(target.identity().toUtf8(), QCryptographicHash::Sha256).toHex().left(16);
+    return QDir(m_folder).filePath(u"library-"_s + QString::fromLatin1(hash));
+}
+
 Result<QString> Spool::keep(const LibraryLocation &target, const QList<HistoryEvent> &events) const
 {
-    if (!QDir().mkpath(m_folder))
-        return Error { tr("The folder %1 cannot be made, so nothing can be kept there.").arg(m_folder) };
+    if (events.isEmpty())
+        return Error { tr("There is nothing to keep.") };
+    const QString folder = folderFor(target);
+    if (!QDir().mkpath(folder))
+        return Error { tr("The folder %1 cannot be made, so nothing can be kept there.").arg(folder) };
     // Named by the time, to the millisecond, so that a listing is oldest first; the id keeps two apart.
     const QString name
         = Clock::now().toString(u"yyyyMMdd'T'HHmmsszzz"_s) + u'-' + HistoryEvent::newId() + u".json"_s;
-    const QString path = QDir(m_folder).filePath(name);
+    const QString path = QDir(folder).filePath(name);
     const QByteArray head = QJsonDocument(QJsonObject { { u"format"_s, QString(kFormat) },
                                               { u"version"_s, kVersion }, { u"library"_s, target.text() } })
                                 .toJson(QJsonDocument::Compact);
@@ -63,21 +74,26 @@ Result<void> Spool::remove(const QString &path) const
     return {};
 }
 
-QStringList Spool::files() const
+QStringList Spool::files(const LibraryLocation &target) const
 {
     QStringList out;
-    const QDir dir(m_folder);
-    for (const QString &name :
-        dir.entryList({ u"*.json"_s }, QDir::Files | QDir::System | QDir::Hidden, QDir::Name))
-        out << dir.filePath(name);
+    for (const QString &folder : { folderFor(target), m_folder }) {
+        const QDir dir(folder);
+        for (const QString &name :
+            dir.entryList({ u"*.json"_s }, QDir::Files | QDir::System | QDir::Hidden, QDir::Name))
+            out << dir.filePath(name);
+    }
     return out;
 }
 
-Result<Spool::Entry> Spool::read(const QString &path) const
+Result<std::optional<Spool::Entry>> Spool::read(const QString &path) const
 {
     auto data = readRegularFile(path, kMaxFileBytes);
-    if (!data)
+    if (!data) {
+        if (!QFileInfo::exists(path))
+            return std::optional<Entry>(); // another sender took it meanwhile
         return data.error();
+    }
     auto bad = [&path] {
         return Error { tr("%1 is not a measurement Toffee kept: it was changed or damaged.").arg(path) };
     };
@@ -87,19 +103,33 @@ Result<Spool::Entry> Spool::read(const QString &path) const
     if (o.value(u"format"_s).toString() != kFormat || o.value(u"version"_s).toInt() != kVersion
         || !o.value(u"library"_s).isString() || !o.value(u"events"_s).isArray())
         return bad();
-    auto events = eventsFromJson(o.value(u"events"_s).toArray());
-    if (!events || events.value().isEmpty())
+    // Each event alone: one the history cannot take goes to the quarantine, the others are sent.
+    Entry entry { path, o.value(u"library"_s).toString(), {}, {}, {} };
+    for (const QJsonValue &v : o.value(u"events"_s).toArray()) {
+        if (auto e = eventFromJson(v)) {
+            entry.events.append(e.takeValue());
+        } else {
+            entry.rejected.append(v);
+            if (entry.why.isEmpty())
+                entry.why = e.error().message;
+        }
+    }
+    if (entry.events.isEmpty() && entry.rejected.isEmpty())
         return bad();
-    return Entry { path, o.value(u"library"_s).toString(), events.takeValue() };
+    return std::optional(entry);
 }
 
 qsizetype Spool::count(const LibraryLocation &target) const
 {
     qsizetype n = 0;
-    const QString library = target.text();
-    for (const QString &path : files()) {
-        if (auto entry = read(path); entry && entry.value().library == library)
-            n += entry.value().events.size();
+    const QString identity = target.identity();
+    for (const QString &path : files(target)) {
+        auto entry = read(path);
+        if (!entry || !entry.value())
+            continue;
+        const auto library = LibraryLocation::parse(entry.value()->library);
+        if (library && library.value().identity() == identity)
+            n += entry.value()->events.size();
     }
     return n;
 }
@@ -114,11 +144,25 @@ void Spool::quarantine(const QString &path) const
     (void)::rename(QFile::encodeName(path).constData(), QFile::encodeName(to).constData());
 }
 
+bool Spool::quarantineRejected(const Entry &entry) const
+{
+    const QString folder = QDir(m_folder).filePath(u"quarantine"_s);
+    if (!QDir().mkpath(folder))
+        return false;
+    const QString to = QDir(folder).filePath(QFileInfo(entry.path).completeBaseName() + u".rejected.json"_s);
+    const QByteArray text = QJsonDocument(
+        QJsonObject { { u"format"_s, QString(kFormat) }, { u"version"_s, kVersion },
+            { u"library"_s, entry.library }, { u"why"_s, entry.why }, { u"events"_s, entry.rejected } })
+                                .toJson(QJsonDocument::Compact);
+    return bool(writeFileAtomically(to, [&text](const FileSink &sink) { return sink(text); }));
+}
+
 Result<Spool::Sent> Spool::send(
     Library &library, const std::function<void(const QList<HistoryEvent> &)> &written) const
 {
     Sent sent;
-    const QString target = library.location().text();
+    const LibraryLocation target = library.location();
+    const QString identity = target.identity();
     // In batches of one transaction each, oldest first: a hundred files are one write, not a hundred.
     QStringList batch;
     QList<HistoryEvent> events;
@@ -138,17 +182,34 @@ Result<Spool::Sent> Spool::send(
         events.clear();
         return {};
     };
-    for (const QString &path : files()) {
+    for (const QString &path : files(target)) {
         auto entry = read(path);
         if (!entry) {
-            sent.quarantined << entry.error().message;
+            sent.quarantined << entry.error().message + u' '
+                    + tr("It was moved to %1.").arg(QDir(m_folder).filePath(u"quarantine"_s));
             quarantine(path);
             continue;
         }
-        if (entry.value().library != target)
-            continue; // another library's
+        if (!entry.value())
+            continue; // sent by another meanwhile
+        const Entry &e = *entry.value();
+        const auto library = LibraryLocation::parse(e.library);
+        if (!library || library.value().identity() != identity)
+            continue; // another library's, written at the top by an older Toffee
+        if (!e.rejected.isEmpty()) {
+            if (!quarantineRejected(e))
+                continue; // kept whole where it is: never lost
+            sent.quarantined << tr("%1 event(s) of %2 cannot go into the history (%3). They were moved to "
+                                   "%4 apart; the file's other events are sent.")
+                                    .arg(e.rejected.size())
+                                    .arg(path, e.why, QDir(m_folder).filePath(u"quarantine"_s));
+            if (e.events.isEmpty()) {
+                (void)remove(path);
+                continue;
+            }
+        }
         batch << path;
-        events << entry.value().events;
+        events << e.events;
         if (events.size() >= kBatchEvents) {
             if (auto done = write(); !done)
                 return done.error();

@@ -2,8 +2,10 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include <QCoreApplication>
+#include <QJsonArray>
 #include <QList>
 #include <QString>
 
@@ -24,7 +26,13 @@ class Library;
 // crash at any moment after the machine measured leaves it here, and the file is removed only once the
 // library has it. What waits is sent, oldest first, the next time that library is opened; each event's id
 // makes a second sending (after a crash between the library's commit and the file's removal) write nothing
-// twice. A file that cannot be read is moved to outbox/quarantine, never deleted.
+// twice. A file that cannot be read is moved to outbox/quarantine, never deleted; an event in a file that the
+// history cannot take goes there alone, its file's other events are sent.
+//
+// Each library has a folder of its own, named by its identity (LibraryLocation::identity: a symlink or a
+// relative path names the same one), so that what waits for one costs nothing to another. Several senders
+// at once (two toffee-cli, the window) each send what they find; a file another sent meanwhile is simply
+// gone.
 class Spool
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::Spool)
@@ -63,12 +71,20 @@ private:
     struct Entry
     {
         QString path;
-        QString library;
-        QList<HistoryEvent> events;
+        QString library; // as written: the location's text
+        QList<HistoryEvent> events; // those the history can take
+        QJsonArray rejected; // those it cannot, as they were written
+        QString why; // the first reason one was rejected
     };
-    [[nodiscard]] QStringList files() const;
-    [[nodiscard]] Result<Entry> read(const QString &path) const;
+    // The folder of what waits for `target`: <folder>/library-<hash of its identity>.
+    [[nodiscard]] QString folderFor(const LibraryLocation &target) const;
+    // What waits for `target`: its folder's files, oldest first, then files an older Toffee wrote at the top.
+    [[nodiscard]] QStringList files(const LibraryLocation &target) const;
+    // Nothing when the file is gone (another sender took it).
+    [[nodiscard]] Result<std::optional<Entry>> read(const QString &path) const;
     void quarantine(const QString &path) const;
+    // The rejected events of `entry` into the quarantine, as a file of their own.
+    [[nodiscard]] bool quarantineRejected(const Entry &entry) const;
 
     QString m_folder;
 };

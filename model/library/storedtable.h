@@ -75,7 +75,7 @@ struct WriteOutcome
 struct OutboxEntry
 {
     QString id; // unique: the entry is removed by it once written
-    QString library; // the shared library's URL (LibraryLocation::text)
+    QString library; // the shared library's identity (LibraryLocation::identity; older: its text)
     QString kind; // "events" or "tools"
     QByteArray payload; // JSON (outboxjson.cpp)
     QDateTime at;

@@ -23,12 +23,18 @@ namespace {
 constexpr qint64 kEmptySpindle = Limits::kEmptySpindle; // "T-1 empty spindle" (docs/CARVERA.md)
 
 // "a,b,c" into up to three numbers; the status report has five axes, the first three are X Y Z.
+bool plausible(double millimetres)
+{
+    return std::isfinite(millimetres) && std::fabs(millimetres) <= kMaxMachineMillimetres;
+}
+
+// Three positions, each one a machine can be at (a status of MPos 1e308 is garbage, not a place).
 bool parseAxes(QByteArrayView text, std::array<double, 3> &out)
 {
     int i = 0;
     for (QByteArrayView part : splitView(text, ',')) {
         const auto v = parseDecimal(part.trimmed());
-        if (!v)
+        if (!v || !plausible(*v))
             return false;
         if (i < 3)
             out[size_t(i)] = *v;
@@ -48,11 +54,6 @@ std::optional<double> bracketed(QByteArrayView line, qsizetype &from)
         return std::nullopt;
     from = close + 1;
     return parseDecimal(line.sliced(open + 1, close - open - 1).trimmed());
-}
-
-bool plausible(double millimetres)
-{
-    return std::isfinite(millimetres) && std::fabs(millimetres) <= kMaxMachineMillimetres;
 }
 
 } // namespace

@@ -159,23 +159,32 @@ void GrblHalController::rememberParameters(const GrblHal::ParameterReport &repor
 
 void GrblHalController::readParameters(Done done, std::function<void(const GrblHal::ParameterReport &)> next)
 {
-    run("$#", MachineLink::kDefaultTimeoutMs, done, [this, done, next](const CommandReply &reply) {
-        GrblHal::ParameterReport report;
-        for (const QByteArray &line : reply.lines)
-            report.addLine(line);
-        if (report.refusedLines > 0 || reply.droppedLines > 0) {
-            SessionResult result;
-            result.outcome = SessionResult::Outcome::MachineError;
-            result.message
-                = tr("grblHAL's offsets ($#) could not be read whole: lines were malformed or repeated (%1). "
-                     "Nothing was changed; check the connection and try again.")
-                      .arg(report.refusedLines + reply.droppedLines);
-            done(result);
-            return;
-        }
-        rememberParameters(report);
-        next(report);
-    });
+    // A line a work offset (and G28, G30, G92, TLO, PRB) and one a tool: more than a reply usually holds.
+    constexpr qsizetype kLines = GrblHal::kMaxTools + 64;
+    m_link->send(
+        "$#", MachineLink::kDefaultTimeoutMs,
+        [this, done, next](const CommandReply &reply) {
+            if (!reply.ok()) {
+                done(failure(reply));
+                return;
+            }
+            GrblHal::ParameterReport report;
+            for (const QByteArray &line : reply.lines)
+                report.addLine(line);
+            if (report.refusedLines > 0 || reply.droppedLines > 0) {
+                SessionResult result;
+                result.outcome = SessionResult::Outcome::MachineError;
+                result.message = tr(
+                    "grblHAL's offsets ($#) could not be read whole: lines were malformed or repeated (%1). "
+                    "Nothing was changed; check the connection and try again.")
+                                     .arg(report.refusedLines + reply.droppedLines);
+                done(result);
+                return;
+            }
+            rememberParameters(report);
+            next(report);
+        },
+        ReplyEnd::Ok, kLines);
 }
 
 void GrblHalController::inMillimetres(Done done, const QString &what, std::function<void()> next)

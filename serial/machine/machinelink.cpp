@@ -119,7 +119,8 @@ void MachineLink::setPollInterval(int ms)
         m_poll.start();
 }
 
-void MachineLink::send(const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end)
+void MachineLink::send(
+    const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end, qsizetype maxLines)
 {
     if (!isOpen()) {
         CommandReply reply { CommandReply::Status::LinkLost, line, {},
@@ -128,7 +129,7 @@ void MachineLink::send(const QByteArray &line, int timeoutMs, ReplyHandler handl
             this, [handler, reply] { handler(reply); }, Qt::QueuedConnection);
         return;
     }
-    m_queue.append({ line, timeoutMs, std::move(handler), end });
+    m_queue.append({ line, timeoutMs, std::move(handler), end, maxLines });
     if (!m_current)
         startNext();
 }
@@ -277,7 +278,7 @@ void MachineLink::handleClosed()
 
 void MachineLink::keep(const QByteArray &line)
 {
-    if (m_lines.size() >= kMaxReplyLines) {
+    if (m_lines.size() >= (m_current ? m_current->maxLines : kMaxReplyLines)) {
         m_lines.removeFirst();
         ++m_droppedLines;
     }

@@ -89,7 +89,10 @@ public:
     void open();
     void close();
 
-    void send(const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end = ReplyEnd::Ok);
+    // `maxLines`: the most reply lines kept (the last ones); a reply known to be longer than the usual bound
+    // (grblHAL's $# of a large tool table) asks for more.
+    void send(const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end = ReplyEnd::Ok,
+        qsizetype maxLines = kMaxReplyLines);
     void sendRealtime(char c);
     void requestStatus();
     void setPollInterval(int ms); // 0: no polling
@@ -134,6 +137,7 @@ private:
         int timeoutMs = kDefaultTimeoutMs;
         ReplyHandler handler;
         ReplyEnd end = ReplyEnd::Ok;
+        qsizetype maxLines = kMaxReplyLines;
     };
 
     void startNext();

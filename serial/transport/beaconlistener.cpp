@@ -53,8 +53,20 @@ void BeaconListener::take(QByteArrayView datagram, const QString &from)
             Q_EMIT machinesChanged();
         return;
     }
-    if (m_machines.size() >= kMaxMachines) {
-        ++m_overflowed;
+    // A sender with its share of names already gives up its oldest for the new one.
+    const auto fromSender = [&from](const Machine &m) {
+        return m.from == from;
+    };
+    if (std::count_if(m_machines.cbegin(), m_machines.cend(), fromSender) >= kMaxNamesPerSender) {
+        auto oldest = m_machines.end();
+        for (auto it = m_machines.begin(); it != m_machines.end(); ++it) {
+            if (it->from == from && (oldest == m_machines.end() || it->heardMs < oldest->heardMs))
+                oldest = it;
+        }
+        m_machines.erase(oldest);
+        ++m_dropped;
+    } else if (m_machines.size() >= kMaxMachines) {
+        ++m_dropped;
         return;
     }
     const auto at = std::lower_bound(m_machines.begin(), m_machines.end(), beacon->name,

@@ -12,14 +12,18 @@ namespace Toffee {
 
 // Hears the Carveras on this computer's networks: their beacons on UDP port 3333 (docs/CARVERA.md § 11). One
 // entry per machine name, the last beacon's; a malformed datagram is counted and ignored. Memory is bounded
-// whatever arrives: at most kMaxMachines names, a machine silent for kForgetAfterMs forgotten.
+// whatever arrives: at most kMaxMachines names, a machine silent for kForgetAfterMs forgotten. A flood cannot
+// hide a real machine: one sender holds at most kMaxNamesPerSender names (a new one takes the place of its
+// oldest), so a machine announcing itself from its own address keeps its place; what is not listed is counted
+// (dropped()), and said.
 class BeaconListener final : public QObject
 {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(BeaconListener)
 
 public:
-    static constexpr int kMaxMachines = 64;
+    static constexpr int kMaxMachines = 256;
+    static constexpr int kMaxNamesPerSender = 4;
     static constexpr int kForgetAfterMs = 5000;
 
     struct Machine
@@ -42,8 +46,9 @@ public:
     // By name; those silent for longer than kForgetAfterMs are left out.
     [[nodiscard]] QList<Machine> machines() const;
     [[nodiscard]] qint64 ignored() const { return m_ignored; }
-    // Datagrams from machines beyond the kMaxMachines already held.
-    [[nodiscard]] qint64 overflowed() const { return m_overflowed; }
+    // Names heard but not listed: beyond a sender's kMaxNamesPerSender (its oldest given up), or beyond the
+    // kMaxMachines already held.
+    [[nodiscard]] qint64 dropped() const { return m_dropped; }
     [[nodiscard]] qint64 elapsed() const { return m_clock.elapsed(); }
 
     // One datagram, as if it had arrived (the socket's path, and the tests').
@@ -61,7 +66,7 @@ private:
     QElapsedTimer m_clock;
     QList<Machine> m_machines;
     qint64 m_ignored = 0;
-    qint64 m_overflowed = 0;
+    qint64 m_dropped = 0;
 };
 
 } // namespace Toffee

@@ -20,6 +20,7 @@ void SerialPortTransport::open()
     m_port.setParity(QSerialPort::NoParity);
     m_port.setStopBits(QSerialPort::OneStop);
     m_port.setFlowControl(QSerialPort::NoFlowControl);
+    m_port.setReadBufferSize(kReadSliceBytes); // what a flood holds in memory: one slice
     if (!m_port.open(QIODevice::ReadWrite)) {
         // Queued, like every other signal of a transport: callers connect after calling open().
         const QString message

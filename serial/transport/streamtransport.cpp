@@ -143,8 +143,17 @@ void StreamTransport::readAvailable()
 {
     if (!m_device)
         return;
-    const QByteArray bytes = m_device->readAll();
+    // One slice at a time, back to the event loop between them: however much arrives, one read holds at most
+    // a slice, and time limits fire on time.
+    const QByteArray bytes = m_device->read(kReadSliceBytes);
     m_bytesReceived += bytes.size();
+    if (m_device->bytesAvailable() > 0 && !m_sliceQueued) {
+        m_sliceQueued = true;
+        QTimer::singleShot(0, this, [this] {
+            m_sliceQueued = false;
+            readAvailable();
+        });
+    }
     if (m_phase == Phase::Open)
         return deliver(m_stream.feed(bytes));
     detect(bytes);

@@ -29,6 +29,9 @@ public:
     // answer.
     static constexpr int kDetectTryMs = 1000;
     static constexpr int kDetectTries = 3;
+    // The most one read takes from the machine (and the most a socket or port buffers): a flood is read a
+    // slice at a time, the event loop and its time limits running between slices.
+    static constexpr qint64 kReadSliceBytes = 64 * 1024;
 
     void setProtocol(Protocol protocol) { m_protocol = protocol; }
     [[nodiscard]] Protocol protocol() const { return m_protocol; }
@@ -86,6 +89,7 @@ private:
     int m_tries = 0;
     bool m_started = false; // since opening()
     qint64 m_bytesReceived = 0; // since start()
+    bool m_sliceQueued = false; // the next slice of what is waiting is to be read
 };
 
 } // namespace Toffee

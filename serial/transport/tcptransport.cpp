@@ -72,6 +72,8 @@ TcpTransport::TcpTransport(const Address &address, QObject *parent)
     connect(&m_connectTimer, &QTimer::timeout, this, &TcpTransport::connectTimedOut);
     connect(&m_socket, &QTcpSocket::connected, this, &TcpTransport::connected);
     connect(&m_socket, &QTcpSocket::errorOccurred, this, &TcpTransport::handleError);
+    // Qt reads what the kernel holds into memory without end: a flood would be one read of hundreds of MB.
+    m_socket.setReadBufferSize(kReadSliceBytes);
 }
 
 TcpTransport::~TcpTransport()

@@ -69,6 +69,23 @@ QList<Frame> Decoder::feed(QByteArrayView bytes)
     return out;
 }
 
+qsizetype Decoder::nextWholeFrame(qsizetype from) const
+{
+    for (qsizetype at = m_pending.indexOf(QByteArrayView(kHeader, 2), from); at >= 0;
+         at = m_pending.indexOf(QByteArrayView(kHeader, 2), at + 1)) {
+        if (m_pending.size() - at < 4)
+            return -1;
+        const qsizetype length = readU16(m_pending, at + 2);
+        if (length < kMinLength || length > kMaxLength || m_pending.size() - at < 4 + length + 2)
+            continue;
+        const QByteArrayView frame = QByteArrayView(m_pending).sliced(at, 4 + length + 2);
+        if (frame.sliced(4 + length, 2) == QByteArrayView(kTrailer, 2)
+            && crc16(frame.sliced(2, length)) == readU16(m_pending, at + 2 + length))
+            return at;
+    }
+    return -1;
+}
+
 void Decoder::drain(QList<Frame> &out)
 {
     qsizetype at = 0; // where the search goes on in m_pending
@@ -92,8 +109,18 @@ void Decoder::drain(QList<Frame> &out)
             continue;
         }
         const qsizetype total = 4 + length + 2;
-        if (m_pending.size() - at < total)
-            break;
+        if (m_pending.size() - at < total) {
+            // A stray header whose LEN runs on would hold every frame after it until that many bytes came
+            // (522 at most): a later header that opens a whole, valid frame shows this one is none. Resynced
+            // within one frame.
+            const qsizetype later = nextWholeFrame(at + 1);
+            if (later < 0)
+                break;
+            ++m_counts.badLength;
+            m_counts.strayBytes += later - at;
+            at = later;
+            continue;
+        }
         const QByteArrayView frame = QByteArrayView(m_pending).sliced(at, total);
         if (frame.sliced(4 + length, 2) != QByteArrayView(kTrailer, 2)) {
             ++m_counts.badTrailer;

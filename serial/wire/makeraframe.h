@@ -62,6 +62,8 @@ public:
 private:
     // Takes what m_pending holds: frames out, stray bytes counted; leaves only the start of a frame.
     void drain(QList<Frame> &out);
+    // Where, from `from` on, a whole frame with a right trailer and CRC starts in m_pending; -1 if none.
+    [[nodiscard]] qsizetype nextWholeFrame(qsizetype from) const;
 
     QByteArray m_pending;
     Counts m_counts;

@@ -74,9 +74,14 @@ class TestLibraryFaults : public QObject
     QString m_sqlite; // this case's SQLite library
 
     QString spoolFolder() const { return m_dir.filePath(u"data/Toffee/Toffee/outbox"_s); }
+    // What waits in the outbox folder, for any library (each has a folder of its own there).
     QStringList spooled() const
     {
-        return QDir(spoolFolder()).entryList({ u"*.json"_s }, QDir::Files, QDir::Name);
+        QStringList files;
+        const QDir outbox(spoolFolder());
+        for (const QString &library : outbox.entryList({ u"library-*"_s }, QDir::Dirs))
+            files += QDir(outbox.filePath(library)).entryList({ u"*.json"_s }, QDir::Files, QDir::Name);
+        return files;
     }
     QString pgUrl() const { return m_cluster.url(u"shop"_s, u"tools"_s); }
 

@@ -95,11 +95,22 @@ private Q_SLOTS:
         QCOMPARE(machines.size(), 2);
         QCOMPARE(machines.at(0).beacon.name, u"A"_s); // by name
         QVERIFY(machines.at(0).beacon.busy);
+        // A flood of names from one sender holds only its share: A and B stay listed, and the dropped names
+        // are counted.
         for (int i = 0; i < 100000; ++i)
             listener.take(
                 u"M%1,10.0.%2.%3,2222,0"_s.arg(i).arg(i / 256 % 256).arg(i % 256).toLatin1(), u"x"_s);
+        machines = listener.machines();
+        QCOMPARE(machines.size(), 2 + BeaconListener::kMaxNamesPerSender);
+        QCOMPARE(machines.at(0).beacon.name, u"A"_s);
+        QCOMPARE(machines.at(1).beacon.name, u"B"_s);
+        QCOMPARE(listener.dropped(), 100000 - BeaconListener::kMaxNamesPerSender);
+        // Many senders: at most kMaxMachines names in all, the rest counted; the first heard keep theirs.
+        for (int i = 0; i < 5000; ++i)
+            listener.take(u"N%1,10.1.%2.%3,2222,0"_s.arg(i).arg(i / 256).arg(i % 256).toLatin1(),
+                u"10.1.%1.%2"_s.arg(i / 256).arg(i % 256));
         QCOMPARE(listener.machines().size(), BeaconListener::kMaxMachines);
-        QCOMPARE(listener.overflowed(), 100000 - (BeaconListener::kMaxMachines - 2));
+        QCOMPARE(listener.machines().at(0).beacon.name, u"A"_s);
     }
 };
 

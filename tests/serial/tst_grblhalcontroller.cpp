@@ -27,6 +27,7 @@ public:
     double tlo = 0.0;
     int tool = 2;
     double contactZ = -54.7; // where G38.2 says it touched (machine Z)
+    int tableSize = 0; // a build with a tool table of this many tools lists each in $#
 
     TablelessGrblHal()
     {
@@ -59,15 +60,19 @@ private:
     QByteArray answer(const QByteArray &line)
     {
         if (line == "$I")
-            return "[VER:1.1f.20260817:]\r\n[OPT:VNML+,100,1024,3,0]\r\n[AXS:3:XYZ]\r\n[NEWOPT:ENUMS,RT+,TC,"
-                   "SED]\r\n"
-                   "[FIRMWARE:grblHAL]\r\nok\r\n";
+            return "[VER:1.1f.20260817:]\r\n[OPT:VNML+,100,1024,3," + QByteArray::number(tableSize)
+                + "]\r\n[AXS:3:XYZ]\r\n[NEWOPT:ENUMS,RT+,TC,SED]\r\n[FIRMWARE:grblHAL]\r\nok\r\n";
         if (line == "$G")
             return "[GC:G0 G54 G17 G21 G90 G94 G40 G49 G98 G50 M5 M9 T" + QByteArray::number(tool)
                 + " F0 S0.]\r\nok\r\n";
-        if (line == "$#")
-            return "[G54:0.000,0.000,0.000]\r\n[G92:0.000,0.000,0.000]\r\n[TLO:0.000,0.000,"
+        if (line == "$#") {
+            QByteArray tools;
+            for (int t = 1; t <= tableSize; ++t)
+                tools += "[T:" + QByteArray::number(t) + "|0.000,0.000," + QByteArray::number(t * 0.5, 'f', 3)
+                    + "|0.000|6,0,0||" + QByteArray::number(t) + "]\r\n";
+            return "[G54:0.000,0.000,0.000]\r\n[G92:0.000,0.000,0.000]\r\n" + tools + "[TLO:0.000,0.000,"
                 + QByteArray::number(tlo, 'f', 3) + "]\r\n[PRB:0.000,0.000,0.000:0]\r\nok\r\n";
+        }
         if (line.startsWith("G43.1 Z")) {
             tlo = line.mid(7).toDouble();
             return "ok\r\n";
@@ -190,6 +195,23 @@ private Q_SLOTS:
         QVERIFY(!deep.recording);
         QCOMPARE(writes(), 0);
         QCOMPARE(machine.tlo, 0.0);
+    }
+
+    // A table of 300 tools is 300 lines of $#, more than a reply usually keeps: read whole, not "malformed".
+    void aLargeToolTableIsReadWhole()
+    {
+        TablelessGrblHal machine;
+        machine.tableSize = 300;
+        TcpTransport transport(TcpTransport::Address { u"127.0.0.1"_s, machine.port() });
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        MachineLink link(&transport);
+        GrblHalController controller(&link);
+        const SessionResult connected = await([&](auto done) { controller.connectToMachine(done); });
+        QVERIFY2(connected.ok(), qPrintable(connected.message));
+        QCOMPARE(controller.firmware().toolTableSize, 300);
+        QVERIFY(connected.controllerTools);
+        QCOMPARE(connected.controllerTools->size(), 300);
+        QCOMPARE(connected.controllerTools->last().tlo, 150.0);
     }
 };
 

@@ -174,6 +174,9 @@ private Q_SLOTS:
                                  << 0.0 << 0;
         QTest::newRow("garbled number")
             << QByteArray("<Idle|MPos:1,\xbf,3>") << false << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
+        // No machine is at 1e308 mm: a status that says so is garbage (it once printed 309 digits).
+        QTest::newRow("position beyond any machine") << QByteArray("<Idle|MPos:0,0,1e308,0,0|WPos:0,0,0,0,0>")
+                                                     << false << QString() << 0.0 << 0.0 << -1 << 0.0 << 0;
         QTest::newRow("garbled T") << QByteArray("<Idle|MPos:1,2,3|T:x,1>") << false << QString() << 0.0
                                    << 0.0 << -1 << 0.0 << 0;
         QTest::newRow("T999999, the last probe number")

@@ -145,6 +145,24 @@ private Q_SLOTS:
         QCOMPARE(frames.front().payload, most);
     }
 
+    // One stray header whose LEN claims the most (86 68 02 04: 516) held the next good frame until 522 bytes
+    // had come, making probes 12 times slower: a whole, valid frame after it is delivered at once.
+    void aStrayHeaderHoldsNothingUp()
+    {
+        MakeraFrame::Decoder decoder;
+        const QByteArray good = MakeraFrame::encode(MakeraFrame::Reply, "ok\n");
+        const auto frames = decoder.feed(QByteArray(QByteArray("\x86\x68\x02\x04", 4) + good));
+        QCOMPARE(frames.size(), 1);
+        QCOMPARE(frames.front().payload, QByteArray("ok\n"));
+        QCOMPARE(decoder.counts().badLength, 1);
+        QCOMPARE(decoder.buffered(), 0);
+        // Split at every byte, the same.
+        MakeraFrame::Decoder byByte;
+        const auto pieces
+            = feedInPieces(byByte, QByteArray(QByteArray("\x86\x68\x02\x04", 4) + good + good), 1);
+        QCOMPARE(pieces.size(), 2);
+    }
+
     // Megabytes of noise: bounded memory, and frames mixed into it still found.
     void staysBoundedOnNoise()
     {

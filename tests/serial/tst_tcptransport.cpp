@@ -9,10 +9,12 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -159,8 +161,9 @@ private Q_SLOTS:
         const auto transport = makeTransport(target);
         const auto *stream = qobject_cast<const StreamTransport *>(transport.get());
         QVERIFY(stream);
-        QCOMPARE(stream->protocol(), expected == int(ControllerKind::GrblHal) ? StreamTransport::Protocol::Text
-                                                                             : StreamTransport::Protocol::Auto);
+        QCOMPARE(stream->protocol(),
+            expected == int(ControllerKind::GrblHal) ? StreamTransport::Protocol::Text
+                                                     : StreamTransport::Protocol::Auto);
         MachineLink link(transport.get());
         const auto controller = makeController(&link, target.resolvedController());
         QCOMPARE(controller->keepsReference(), expected != int(ControllerKind::GrblHal));
@@ -437,6 +440,60 @@ private Q_SLOTS:
             qPrintable(reply->message));
         QVERIFY(!transport.isOpen());
         QVERIFY(runUntil([&] { return peer.socket->state() == QAbstractSocket::UnconnectedState; }, 3000));
+    }
+
+    // A peer that floods (lines nobody asked for, as fast as loopback carries them) while a command waits:
+    // the transport reads a slice at a time and lets the event loop run between, so the command's 1 s limit
+    // still ends it about on time (a flood once made one read of 300 MB and a 3 s limit 6 s).
+    void aFloodIsReadASliceAtATimeAndTheLimitHolds()
+    {
+        const int listener = ::socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in address {};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        QVERIFY(::bind(listener, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0);
+        QVERIFY(::listen(listener, 1) == 0);
+        socklen_t length = sizeof address;
+        QVERIFY(::getsockname(listener, reinterpret_cast<sockaddr *>(&address), &length) == 0);
+        std::atomic_bool stop = false;
+        std::atomic<qint64> sent = 0;
+        std::thread flood([&] {
+            const int peer = ::accept(listener, nullptr, nullptr);
+            if (peer < 0)
+                return;
+            QByteArray chunk;
+            for (int i = 0; i < 4096; ++i)
+                chunk += "ALARM: Hard limit\n";
+            while (!stop) {
+                const ssize_t n = ::send(peer, chunk.constData(), size_t(chunk.size()), MSG_NOSIGNAL);
+                if (n <= 0)
+                    break;
+                sent += n;
+            }
+            ::close(peer);
+        });
+        TcpTransport transport(TcpTransport::Address { u"127.0.0.1"_s, ntohs(address.sin_port) });
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        MachineLink link(&transport);
+        link.setGrammar(carveraGrammar());
+        link.setPollInterval(0);
+        std::optional<CommandReply> reply;
+        QElapsedTimer clock;
+        link.open();
+        QVERIFY(runUntil([&] { return link.isOpen(); }, 4000));
+        clock.start();
+        link.send("M493.4", 1000, [&reply](const CommandReply &r) { reply = r; });
+        const bool ended = runUntil([&] { return reply.has_value(); }, 10000);
+        const qint64 elapsed = clock.elapsed();
+        stop = true;
+        transport.close();
+        flood.join();
+        ::close(listener);
+        QVERIFY(ended);
+        qInfo("%lld MB flooded; the 1 s limit ended the command after %lld ms", sent / 1000000, elapsed);
+        QVERIFY2(sent > 10'000'000, qPrintable(QString::number(sent)));
+        QCOMPARE(reply->status, CommandReply::Status::Timeout);
+        QVERIFY2(elapsed < 2500, qPrintable(QString::number(elapsed)));
     }
 
     // Over TCP, as on a serial port, the framed firmware's bytes may come with noise between its frames

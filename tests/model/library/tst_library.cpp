@@ -246,6 +246,15 @@ private Q_SLOTS:
                               "'Carvera', 3, '2026-11-23T09:00:00.000Z', 'new_cutter')"_s));
             QVERIFY(raw.exec(u"UPDATE toffee_schema SET version = 3"_s));
         }
+        {
+            // Read-only (a share, a file without write permission): it cannot be brought up to date, and is
+            // read as it is. It once could not be read at all.
+            auto readOnly = Library::open({ path }, Library::Options { .readOnly = true });
+            QVERIFY2(readOnly, qPrintable(readOnly ? QString() : readOnly.error().message));
+            QVERIFY(readOnly.value()->isReadOnly());
+            QCOMPARE(readOnly.value()->history({}).value().size(), 1);
+            QVERIFY(!readOnly.value()->append({ makeEvent(3, EventKind::Probe, 1, -30.1) }));
+        }
         auto library = Library::open({ path });
         QVERIFY2(library, qPrintable(library ? QString() : library.error().message));
         QCOMPARE(library.value()->history({}).value().size(), 1); // nothing lost on the way

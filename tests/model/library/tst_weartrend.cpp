@@ -177,7 +177,7 @@ private Q_SLOTS:
         QVERIFY(library);
         const auto refused = library.value()->append({ probe(0, -10.0), probe(10, 50000.0) });
         QVERIFY(!refused);
-        QVERIFY2(refused.error().message.contains(u"a TLO of 50000.000 mm, beyond any tool"_s),
+        QVERIFY2(refused.error().message.contains(u"holds a TLO of 50000.000 mm, beyond any tool"_s),
             qPrintable(refused.error().message));
         QVERIFY(library.value()->history({}).value().isEmpty());
         HistoryEvent far = probe(10, -10.0);
