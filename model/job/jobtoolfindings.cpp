@@ -124,7 +124,7 @@ template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &fact
                     .arg(n);
             });
         else if (std::fabs(*entry - tlo) > facts.sameWithin)
-            found(FindingKind::ControllerTableDiffers, [this, n, tlo, value = *entry] {
+            found(FindingKind::ControllerTableDiffers, [n, tlo, value = *entry] {
                 return tr("The controller's own table holds %1 for T%2, the table file %3: G43 H%2 would "
                           "apply the controller's. Push the offsets (Machine ▸ Push Offsets…, toffee-cli "
                           "push-offsets) or probe T%2 before the job.")

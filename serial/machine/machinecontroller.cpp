@@ -235,7 +235,7 @@ MachineController::Done MachineController::finishingChange(Done done)
     return [this, done = std::move(done)](const SessionResult &r) {
         if (!m_change)
             return done(r);
-        ToolChange change = std::move(*m_change);
+        PendingToolChange change = std::move(*m_change);
         m_change.reset();
         disconnect(change.statusWatch);
         if (change.limit)

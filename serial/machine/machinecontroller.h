@@ -54,6 +54,18 @@ struct SessionResult
     }
 };
 
+// A change under way (MachineController::changeTool): whether the machine waits for the person, and why the wait
+// was ended.
+struct PendingToolChange
+{
+    int tool = 0;
+    bool waiting = false;
+    std::optional<QString> ended;
+    QMetaObject::Connection statusWatch;
+    QTimer *limit = nullptr;
+    QElapsedTimer waited;
+};
+
 // What the window and the CLI ask of a machine, whatever controller it runs: connect, read the status and the
 // offsets, select and change a tool, probe it on the setter, break-test it, set or restore its TLO, unlock
 // and stop. Each operation validates before it sends, runs to one result, and records nothing itself: the
@@ -192,22 +204,12 @@ protected:
     [[nodiscard]] static Done recordingVerdict(Done done);
 
 private:
-    // A change under way: whether the machine waits for the person, and why the wait was ended.
-    struct ToolChange
-    {
-        int tool = 0;
-        bool waiting = false;
-        std::optional<QString> ended;
-        QMetaObject::Connection statusWatch;
-        QTimer *limit = nullptr;
-        QElapsedTimer waited;
-    };
     void operatorWaitBegan();
     [[nodiscard]] static QString waitedTooLong(int tool, int limitMs);
     [[nodiscard]] Done finishingChange(Done done);
 
     QString m_operatorAbsent;
-    std::optional<ToolChange> m_change;
+    std::optional<PendingToolChange> m_change;
 };
 
 } // namespace Toffee

@@ -259,6 +259,7 @@ private Q_SLOTS:
         QVERIFY(!box->findChild<QPushButton *>(u"toolChangeContinueButton"_s)); // only the machine's button
         QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Waiting for the operator"_s);
         screenshot(s.window, u"carvera-change-by-hand.png"_s);
+        screenshot(*box, u"carvera-change-by-hand-box.png"_s);
         QString ended;
         QTimer::singleShot(0, [&ended] { answerNextBox(QMessageBox::Ok, &ended, {}, 1500); });
         box->findChild<QPushButton *>(u"toolChangeEndButton"_s)->click();
