@@ -258,6 +258,11 @@ private Q_SLOTS:
             box->informativeText().contains(u"waits up to 10 min;"_s), qPrintable(box->informativeText()));
         QVERIFY(!box->findChild<QPushButton *>(u"toolChangeContinueButton"_s)); // only the machine's button
         QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Waiting for the operator"_s);
+        // Shown whole in the strip at 1280 px, once the layout has settled.
+        auto *state = s.find<QLabel>(u"machineStateLabel"_s);
+        QTRY_VERIFY2(state->width() >= state->fontMetrics().horizontalAdvance(state->text()),
+            qPrintable(u"%1 px for %2 px of text"_s.arg(state->width())
+                           .arg(state->fontMetrics().horizontalAdvance(state->text()))));
         screenshot(s.window, u"carvera-change-by-hand.png"_s);
         screenshot(*box, u"carvera-change-by-hand-box.png"_s);
         QString ended;
