@@ -319,6 +319,29 @@ private Q_SLOTS:
         QVERIFY2(run.err.contains("emulator is a Carvera"), run.err.constData());
     }
 
+    // A pull is all or nothing: an entry beyond any tool (T2 at 5000 mm, set on the controller by someone)
+    // keeps T1 and T3 out of the file and the history too, and the refusal names T2. It once wrote T1, failed
+    // on T2 and skipped T3.
+    void aPullWithOneImpossibleEntryTakesNone()
+    {
+        QTemporaryDir state;
+        GrblHalPeer peer(state.path());
+        QVERIFY2(peer.started(), qPrintable(peer.errors()));
+        m_target = peer.cliTarget();
+        const QString path = m_dir.filePath(u"pull.json"_s);
+        QVERIFY(writeEmptyTable(path));
+        for (const char *line : { "G10 L1 P1 Z10", "G10 L1 P2 Z5000", "G10 L1 P3 Z12" })
+            QVERIFY(peer.ask(line).contains("ok"));
+        const QByteArray before = readFile(path);
+        const qsizetype events = historyOf(1).size() + historyOf(2).size() + historyOf(3).size();
+        const Run run = machine({ u"pull-offsets"_s }, path);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(json(run)[u"error"_s].toString().contains(u"T2: "_s), run.out.constData());
+        QVERIFY2(json(run)[u"error"_s].toString().contains(u"Nothing was recorded"_s), run.out.constData());
+        QCOMPARE(readFile(path), before);
+        QCOMPARE(historyOf(1).size() + historyOf(2).size() + historyOf(3).size(), events);
+    }
+
     void aCarveraChosenAsGrblHalSaysSo()
     {
         // The built-in emulator over TCP, reached as grblHAL: $I gets no grblHAL answer, and the message says
