@@ -24,7 +24,7 @@ Tool tables:
   export --dialect D TABLE   the program that loads TABLE into a controller (--tool N for one tool)
   simulate --dialect D PROGRAM [--table FILE] [--samples N]
                              run PROGRAM as controller D would: where each move ends, and the offsets after
-  dialects: carvera, fanuc, fagor, ab9, aerotech, linuxcnc
+  dialects: carvera, grblhal, fanuc, fagor, ab9, aerotech, linuxcnc
   import SOURCE --into TABLE [--dry-run] [--cam-units mm|in]
                              tools from a CAM library (Fusion .json or .tools, .hsmlib, or a program with
                              Makera CAM's tool header) into TABLE, created (in --units, default mm) when

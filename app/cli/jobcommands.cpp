@@ -125,7 +125,7 @@ Result<JobCheckSetup> readJobSetup(Invocation &call, std::unique_ptr<Library> &l
     library = opened.takeValue();
     const auto dialect = programDialect(call, library.get(), machine);
     if (!dialect)
-        return Error { u"--dialect must be one of carvera, fanuc, fagor, ab9, aerotech, linuxcnc."_s };
+        return Error { u"--dialect must be one of carvera, grblhal, fanuc, fagor, ab9, aerotech, linuxcnc."_s };
     JobCheckSetup setup;
     setup.dialect = *dialect;
     if (call.has(u"table"_s)) {

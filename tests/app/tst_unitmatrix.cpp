@@ -213,6 +213,25 @@ private Q_SLOTS:
         QVERIFY2(run.exitCode == 0, run.out.constData());
         QVERIFY2(peer.ask("$#").join('\n').contains("[TLO:0.000,0.000,15.30"),
             peer.ask("$#").join('\n').constData());
+
+        // The job check as grblHAL's: T2's TLO the history's millimetres, no "newer measurement", no units
+        // mismatch for a controller that measures its TLOs; prepared with G43 H after the change.
+        const QByteArray job = program(u"grbl.nc"_s, "G21 G90\nM6 T2\nG0 Z5\nG1 Z-1 F100\nM30\n");
+        run = cli({ u"--json"_s, u"job"_s, u"check"_s, QString::fromUtf8(job), u"--dialect"_s, u"grblhal"_s,
+            u"--table"_s, table(), u"--library"_s, library(), u"--machine"_s, u"Mill"_s });
+        const QJsonObject report = json(run);
+        QVERIFY2(std::fabs(report[u"tools"_s].toArray().first()[u"tlo"_s].toDouble() - 15.3) < 0.002,
+            run.out.constData());
+        for (const QJsonValue &f : report[u"findings"_s].toArray()) {
+            const QString message = f[u"message"_s].toString();
+            QVERIFY2(!message.contains(u"newer measurement"_s) && !message.contains(u"inches"_s),
+                qPrintable(message));
+        }
+        const QString out = m_dir.filePath(u"grbl-prepared.nc"_s);
+        run = cli({ u"job"_s, u"prepare"_s, QString::fromUtf8(job), u"--dialect"_s, u"grblhal"_s,
+            u"--table"_s, table(), u"-o"_s, out });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QVERIFY2(readFile(out).contains("G43 H2"), readFile(out).constData());
     }
 
     // The reverse: a millimetre table, and grblHAL set to take inches (G20): nothing is written, by name.
