@@ -108,6 +108,14 @@ class TestOperatorPresence : public QObject
             && QFile(table()).setPermissions(QFile::ReadOwner | QFile::WriteOwner);
     }
 
+    // grblHAL with its setter at machine Z -100, T1 (30 mm) in the spindle and T2 (45.3 mm) to come, and the
+    // example table fresh.
+    bool startWithT1(GrblHalPeer &peer)
+    {
+        return peer.started() && peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }) && freshTable()
+            && peer.ask("M61 Q1").contains("ok");
+    }
+
 private Q_SLOTS:
     void initTestCase() { qputenv("XDG_DATA_HOME", m_dir.filePath(u"data"_s).toLocal8Bit()); }
 
@@ -117,12 +125,9 @@ private Q_SLOTS:
             QSKIP(qPrintable(GrblHalPeer::skipReason()));
         QTemporaryDir state;
         GrblHalPeer peer(state.path());
-        QVERIFY2(peer.started(), qPrintable(peer.errors()));
-        QVERIFY(peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }));
-        QVERIFY(freshTable());
+        QVERIFY2(startWithT1(peer), qPrintable(peer.errors()));
         const QByteArray file = readFile(table());
         const int events = historyCount();
-        QVERIFY(peer.ask("M61 Q1").contains("ok"));
 
         // </dev/null, as cron or ssh -n run it: end of input at once.
         const Run run = cli(grblHal(peer, { u"change-tool"_s, u"2"_s }), 60000);
@@ -160,12 +165,9 @@ private Q_SLOTS:
             QSKIP(qPrintable(GrblHalPeer::skipReason()));
         QTemporaryDir state;
         GrblHalPeer peer(state.path());
-        QVERIFY2(peer.started(), qPrintable(peer.errors()));
-        QVERIFY(peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }));
-        QVERIFY(freshTable());
+        QVERIFY2(startWithT1(peer), qPrintable(peer.errors()));
         const QByteArray file = readFile(table());
         const int events = historyCount();
-        QVERIFY(peer.ask("M61 Q1").contains("ok"));
 
         const Attended run
             = attend(grblHal(peer, options + QStringList { u"change-tool"_s, u"2"_s }), ending);

@@ -82,6 +82,16 @@ class TestUnitMatrix : public QObject
                                                                                   : QByteArray();
     }
 
+    // grblHAL with its setter at machine Z -100, T1 30 mm and T2 45.3 mm long, as toffee-cli's target.
+    bool useGrblHal(GrblHalPeer &peer)
+    {
+        if (!peer.started() || !peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }))
+            return false;
+        m_target = peer.cliTarget();
+        m_controller = { u"--controller"_s, u"grblhal"_s, u"--setter"_s, kSetter };
+        return true;
+    }
+
 private Q_SLOTS:
     void initTestCase() { qputenv("XDG_DATA_HOME", m_dir.filePath(u"data"_s).toLocal8Bit()); }
     void init()
@@ -165,10 +175,7 @@ private Q_SLOTS:
             QSKIP(qPrintable(GrblHalPeer::skipReason()));
         QTemporaryDir state;
         GrblHalPeer peer(state.path());
-        QVERIFY2(peer.started(), qPrintable(peer.errors()));
-        QVERIFY(peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }));
-        m_target = peer.cliTarget();
-        m_controller = { u"--controller"_s, u"grblhal"_s, u"--setter"_s, kSetter };
+        QVERIFY2(useGrblHal(peer), qPrintable(peer.errors()));
 
         // The reference, then T2 against it: 15.3 mm on grblHAL, 0.6024 in in the file.
         QCOMPARE(machine({ u"select-tool"_s, u"1"_s }).exitCode, 0);
@@ -241,10 +248,7 @@ private Q_SLOTS:
             QSKIP(qPrintable(GrblHalPeer::skipReason()));
         QTemporaryDir state;
         GrblHalPeer peer(state.path());
-        QVERIFY2(peer.started(), qPrintable(peer.errors()));
-        QVERIFY(peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }));
-        m_target = peer.cliTarget();
-        m_controller = { u"--controller"_s, u"grblhal"_s, u"--setter"_s, kSetter };
+        QVERIFY2(useGrblHal(peer), qPrintable(peer.errors()));
         const QString mmTable = m_dir.filePath(u"mm.json"_s);
         QVERIFY(writeTable(mmTable, "mm",
             R"({"number": 2, "pocket": 2, "measured_tlo": 15.3, "measured_at": "2026-11-21T08:00:00Z", "reference_mz": -70})"));

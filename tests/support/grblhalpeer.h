@@ -8,6 +8,7 @@
 #pragma once
 
 #include <csignal>
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -103,18 +104,7 @@ public:
     [[nodiscard]] QList<QByteArray> ask(const QByteArray &line, int limitMs = 5000) const
     {
         QList<QByteArray> lines;
-        QTcpSocket socket;
-        socket.connectToHost(QHostAddress::LocalHost, m_port);
-        if (!socket.waitForConnected(2000))
-            return lines;
-        socket.write(line + '\n');
-        QByteArray buffer;
-        QElapsedTimer clock;
-        clock.start();
-        while (clock.elapsed() < limitMs) {
-            if (socket.bytesAvailable() == 0 && !socket.waitForReadyRead(100))
-                continue;
-            buffer += socket.readAll();
+        exchange(line + '\n', limitMs, [&lines](QByteArray &buffer) {
             qsizetype end = -1;
             while ((end = buffer.indexOf('\n')) >= 0) {
                 const QByteArray one = buffer.left(end).trimmed();
@@ -123,32 +113,25 @@ public:
                     continue;
                 lines.append(one);
                 if (one == "ok" || one.startsWith("error:"))
-                    return lines;
+                    return true;
             }
-        }
+            return false;
+        });
         return lines;
     }
     // The status report grblHAL answers to '?' ("<Idle|MPos:…>"), as a client of its own, or nothing.
     [[nodiscard]] QByteArray status(int limitMs = 3000) const
     {
-        QTcpSocket socket;
-        socket.connectToHost(QHostAddress::LocalHost, m_port);
-        if (!socket.waitForConnected(2000))
-            return {};
-        socket.write("?");
-        QByteArray buffer;
-        QElapsedTimer clock;
-        clock.start();
-        while (clock.elapsed() < limitMs) {
-            if (socket.bytesAvailable() == 0 && !socket.waitForReadyRead(100))
-                continue;
-            buffer += socket.readAll();
+        QByteArray report;
+        exchange("?", limitMs, [&report](QByteArray &buffer) {
             const qsizetype start = buffer.indexOf('<');
             const qsizetype end = buffer.indexOf('>', start);
-            if (start >= 0 && end > start)
-                return buffer.mid(start, end - start + 1);
-        }
-        return {};
+            if (start < 0 || end <= start)
+                return false;
+            report = buffer.mid(start, end - start + 1);
+            return true;
+        });
+        return report;
     }
     // Tool n's Z offset in grblHAL's own table, as $# reports it ("[T:n|x,y,z|…"), or nothing.
     [[nodiscard]] std::optional<double> tableZ(int tool) const
@@ -193,6 +176,28 @@ public:
     }
 
 private:
+    // `bytes` sent as a client of its own, then what comes read into a buffer `done` takes from, until it
+    // says it has what it wanted or `limitMs` pass. It reads until done: grblHAL's simulator exits when it
+    // writes to a client that has gone.
+    void exchange(const QByteArray &bytes, int limitMs, const std::function<bool(QByteArray &)> &done) const
+    {
+        QTcpSocket socket;
+        socket.connectToHost(QHostAddress::LocalHost, m_port);
+        if (!socket.waitForConnected(2000))
+            return;
+        socket.write(bytes);
+        QByteArray buffer;
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < limitMs) {
+            if (socket.bytesAvailable() == 0 && !socket.waitForReadyRead(100))
+                continue;
+            buffer += socket.readAll();
+            if (done(buffer))
+                return;
+        }
+    }
+
     bool writeSetterFile(const QByteArray &text)
     {
         QFile file(m_setter);
