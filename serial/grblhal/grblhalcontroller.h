@@ -119,6 +119,9 @@ private:
     [[nodiscard]] SessionResult tloResult(int tool, double tlo, std::optional<double> contactMz) const;
     [[nodiscard]] bool fitsTable(int tool) const;
     static QByteArray number(double value);
+    // A length for people ("15.300"), and at grblHAL's 0.001 mm.
+    [[nodiscard]] static QString mm(double v);
+    [[nodiscard]] static double atResolution(double v);
     void rememberParameters(const GrblHal::ParameterReport &report);
 
     MachineLink *m_link;

@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// grblHAL's setter cycle, Toffee's own (grblHAL keeps no reference): the probe and the break test on the tool
+// setter the operator set, the contact's machine Z against the machine's reference.
+#include "serial/grblhal/grblhalcontroller.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QStringList>
+
+#include "model/numberformat.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+std::optional<int> GrblHalController::spindleTool(const Done &done, const QString &what) const
+{
+    if (m_tool && *m_tool > 0)
+        return m_tool;
+    refuse(done,
+        tr("grblHAL says no tool is in the spindle (T0), so there is nothing to %1. Say which tool is in "
+           "(Select Tool, M61 Q<n>) first.")
+            .arg(what));
+    return std::nullopt;
+}
+
+void GrblHalController::measure(Done done, std::function<void(double)> next)
+{
+    if (!m_setter) {
+        refuse(done,
+            tr("Toffee does not know where this machine's tool setter is. Set it first (Machine ▸ Tool "
+               "Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates)."));
+        return;
+    }
+    const ToolSetter setter = *m_setter;
+    readModal(done, [this, done, next, setter](const Modal &modal) {
+        if (modal.inches) {
+            refuse(done,
+                tr("grblHAL is in inches (G20), where its G10 and G38.2 take inches. Toffee %1 in "
+                   "millimetres: send G21, then try again. Nothing was sent.")
+                    .arg(tr("probes")));
+            return;
+        }
+        readParameters(done, [this, done, next, setter, modal](const GrblHal::ParameterReport &report) {
+            // G38.2 takes work coordinates: the machine Z wanted, less the offset in force (the coordinate
+            // system's, G92's and the tool's), which is what grblHAL's WCO is.
+            double wco = report.toolLengthOffset ? report.toolLengthOffset->z() : 0.0;
+            if (const auto it = report.workOffsets.find(modal.coordinateSystem);
+                it != report.workOffsets.end())
+                wco += it->z();
+            if (const auto it = report.workOffsets.find(u"G92"_s); it != report.workOffsets.end())
+                wco += it->z();
+            const auto work = [wco](double machineZ) {
+                return number(machineZ - wco);
+            };
+            const int motion = MachineLink::kMotionTimeoutMs;
+            auto touch = [done, setter](const CommandReply &reply) -> std::optional<double> {
+                std::optional<GrblHal::ProbeReport> found;
+                for (const QByteArray &line : reply.lines) {
+                    if (auto p = GrblHal::parseProbeReport(line))
+                        found = p;
+                }
+                if (!found || !found->touched) {
+                    SessionResult result;
+                    result.outcome = SessionResult::Outcome::MachineError;
+                    result.message = tr("The probe did not report a touch. Nothing was measured.");
+                    done(result);
+                    return std::nullopt;
+                }
+                // A contact outside the search (from the safe height down to the setter's lowest Z) is no
+                // contact the cycle can make: a reply to trust no further.
+                const double z = found->position.z();
+                if (z < setter.zMin - 1.0 || z > setter.safeZ + 1.0) {
+                    done(SessionResult::failed(SessionResult::Outcome::MachineError,
+                        tr("grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to "
+                           "%3 "
+                           "mm. Nothing was written or recorded; check the tool setter's settings and the "
+                           "machine.")
+                            .arg(mm(z), mm(setter.safeZ), mm(setter.zMin))));
+                    return std::nullopt;
+                }
+                return z;
+            };
+            run("M5", MachineLink::kDefaultTimeoutMs, done, [=, this](const CommandReply &) {
+                run("G53 G0 Z" + number(setter.safeZ), motion, done, [=, this](const CommandReply &) {
+                    run("G53 G0 X" + number(setter.x) + " Y" + number(setter.y), motion, done,
+                        [=, this](const CommandReply &) {
+                            run("G38.2 Z" + work(setter.zMin) + " F" + number(setter.seekFeed), motion, done,
+                                [=, this](const CommandReply &fast) {
+                                    const auto first = touch(fast);
+                                    if (!first)
+                                        return;
+                                    const double up = std::min(setter.safeZ, *first + setter.backoff);
+                                    const double down = std::max(setter.zMin, *first - setter.backoff);
+                                    run("G53 G0 Z" + number(up), motion, done,
+                                        [=, this](const CommandReply &) {
+                                            run("G38.2 Z" + work(down) + " F" + number(setter.latchFeed),
+                                                motion, done, [=, this](const CommandReply &slow) {
+                                                    const auto contact = touch(slow);
+                                                    if (!contact)
+                                                        return;
+                                                    run("G53 G0 Z" + number(setter.safeZ), motion, done,
+                                                        [=, this](const CommandReply &) {
+                                                            // "ok" to a move means queued; G4 P0's comes once
+                                                            // the machine has stopped, lifted.
+                                                            run("G4 P0", motion, done,
+                                                                [next, contact](const CommandReply &) {
+                                                                    next(atResolution(*contact));
+                                                                });
+                                                        });
+                                                });
+                                        });
+                                });
+                        });
+                });
+            });
+        });
+    });
+}
+
+void GrblHalController::probe(Done done)
+{
+    done = recording(std::move(done), RecordingKind::Probe);
+    const auto tool = spindleTool(done, tr("measure"));
+    if (!tool)
+        return;
+    measure(done, [this, done, tool = *tool](double contact) {
+        const bool first = !m_reference;
+        const double reference = m_reference.value_or(contact);
+        const double tlo = atResolution(contact - reference);
+        writeOffset(tool, tlo, done, [this, done, tool, tlo, contact, first, reference](const QString &note) {
+            m_reference = reference;
+            SessionResult result = tloResult(tool, tlo, contact);
+            QStringList notes;
+            if (first)
+                notes << tr("T%1 is this machine's reference tool (its TLO is 0): every tool is measured "
+                            "against its contact at machine Z %2 mm.")
+                             .arg(tool)
+                             .arg(mm(reference));
+            if (!note.isEmpty())
+                notes << note;
+            result.message = notes.join(u' ');
+            done(result);
+        });
+    });
+}
+
+void GrblHalController::breakTest(double tolerance, Done done, std::optional<double> storedTlo)
+{
+    done = recordingVerdict(std::move(done));
+    if (auto valid = validateTolerance(tolerance); !valid) {
+        refuse(done, valid.error().message);
+        return;
+    }
+    const auto tool = spindleTool(done, tr("break-test"));
+    if (!tool)
+        return;
+    if (!m_reference) {
+        refuse(done,
+            tr("This machine has no reference tool yet, so a new length cannot be compared. Probe a tool "
+               "first: the first one measured becomes the reference."));
+        return;
+    }
+    // The stored TLO: the table's; else the controller's own entry for the tool, unless it is empty (0.000,
+    // as pull-offsets reads it). Never the offset in force, which after M61 is another tool's.
+    std::optional<double> stored = storedTlo;
+    for (const ControllerTool &entry : std::as_const(m_table)) {
+        if (!stored && entry.tool == *tool && fitsTable(*tool) && std::fabs(entry.tlo) >= kReadBackTolerance)
+            stored = entry.tlo;
+    }
+    if (!stored) {
+        refuse(done,
+            tr("T%1 has no stored TLO to compare with, in the table or in grblHAL's own: probe it first.")
+                .arg(*tool));
+        return;
+    }
+    measure(done, [this, done, tolerance, stored, tool = *tool](double contact) {
+        SessionResult result;
+        result.tool = tool;
+        result.tolerance = tolerance;
+        const double measured = atResolution(contact - *m_reference);
+        result.breakTest = BreakTestReading { atResolution(*stored), measured };
+        const double difference = std::fabs(measured - *stored);
+        if (difference > tolerance) {
+            result.outcome = SessionResult::Outcome::ToolBroken;
+            result.message
+                = tr("T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance "
+                     "%5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is "
+                     "kept in the table and in grblHAL. Look at the tool and replace it before you cut.")
+                      .arg(tool)
+                      .arg(mm(measured), mm(*stored), mm(difference),
+                          formatNumber(tolerance, NumberFormat::upTo(3)));
+        }
+        done(result);
+    });
+}
+
+} // namespace Toffee
