@@ -24,6 +24,7 @@ MachineConnection::~MachineConnection()
     // Whoever started a command may be gone already (the window closes): drop pending handlers unheard,
     // the link before the transport, so that closing the port calls none of them.
     const QSignalBlocker blocker(this);
+    m_detector.reset();
     m_session.reset();
     m_link.reset();
     m_transport.reset();
@@ -70,7 +71,9 @@ void MachineConnection::teardown()
         m_link->disconnect(this);
     if (m_transport)
         m_transport->close();
+    m_detector.reset();
     m_session.reset();
+    m_kind = ControllerKind::Auto;
     m_link.reset();
     m_transport.reset();
 }
@@ -86,10 +89,8 @@ std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target)
             machine->setTiming(CarveraEmulator::realisticTiming());
         return transport;
     }
-    // grblHAL speaks plain text only: a frame's bytes are real-time commands to it.
-    const auto protocol = target.resolvedController() == ControllerKind::GrblHal
-        ? StreamTransport::Protocol::Text
-        : target.protocol;
+    // The transport's first question is harmless to every controller, and checks a forced protocol.
+    const auto protocol = target.protocol;
     if (target.isNetwork()) {
         auto transport
             = std::make_unique<TcpTransport>(TcpTransport::Address { target.host, target.tcpPort });
@@ -111,22 +112,16 @@ std::unique_ptr<MachineController> makeController(MachineLink *link, ControllerK
 
 std::optional<ControllerKind> controllerKindFromName(const QString &name)
 {
-    if (name == u"auto")
-        return ControllerKind::Auto;
-    if (name == u"carvera")
-        return ControllerKind::Carvera;
-    if (name == u"grblhal")
-        return ControllerKind::GrblHal;
+    for (const ControllerKind kind : { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal }) {
+        if (name == controllerKindName(kind))
+            return kind;
+    }
     return std::nullopt;
 }
 
-ControllerKind ConnectionTarget::resolvedController() const
+ControllerKind ConnectionTarget::knownController() const
 {
-    if (emulator)
-        return ControllerKind::Carvera;
-    if (controller != ControllerKind::Auto)
-        return controller;
-    return isNetwork() && tcpPort == kGrblHalTcpPort ? ControllerKind::GrblHal : ControllerKind::Carvera;
+    return emulator ? ControllerKind::Carvera : controller;
 }
 
 QString ConnectionTarget::name() const
@@ -145,15 +140,6 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
     m_transport = makeTransport(target);
     m_link = std::make_unique<MachineLink>(m_transport.get());
     m_link->setTimeoutOverride(target.timeoutMs);
-    m_session = makeController(m_link.get(), target.resolvedController());
-    if (target.setter)
-        m_session->setToolSetter(*target.setter);
-    if (!m_session->keepsReference())
-        m_session->adoptReference(target.reference);
-    connect(m_session.get(), &MachineController::waitingForOperator, this,
-        &MachineConnection::waitingForOperator);
-    connect(m_session.get(), &MachineController::toolChangeFinished, this,
-        &MachineConnection::toolChangeFinished);
     connect(m_link.get(), &MachineLink::statusChanged, this, [this](const MachineStatus &status) {
         setHalt(status.isAlarm(), status.haltReason);
         Q_EMIT statusChanged(status);
@@ -182,13 +168,56 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
         }
     });
     setState(State::Connecting);
+    if (const ControllerKind known = target.knownController(); known != ControllerKind::Auto)
+        return startController(known);
+    // Nothing of any controller's is sent before the controller is known.
+    m_detector = std::make_unique<ControllerDetector>(m_link.get());
+    m_detector->detect([this](const Result<DetectedController> &found) {
+        if (!found) {
+            SessionResult failed;
+            failed.outcome = SessionResult::Outcome::LinkFailure;
+            failed.message = found.error().message;
+            return failConnect(failed, true);
+        }
+        startController(found.value().kind);
+    });
+}
+
+void MachineConnection::failConnect(const SessionResult &result, bool closeLink)
+{
+    m_connectResult = result;
+    // Nothing more goes to a machine refused before its controller took the link (closed once the reply
+    // being handled has returned).
+    if (closeLink && m_link)
+        QMetaObject::invokeMethod(m_link.get(), &MachineLink::close, Qt::QueuedConnection);
+    setState(State::Disconnected);
+    Q_EMIT connectFailed(result.message);
+}
+
+void MachineConnection::startController(ControllerKind kind)
+{
+    m_kind = kind;
+    if (m_prepare) {
+        if (const QString refused = m_prepare(kind, m_target); !refused.isEmpty()) {
+            SessionResult failed;
+            failed.outcome = SessionResult::Outcome::Refused; // the caller's refusal, not the machine's
+            failed.message = refused;
+            return failConnect(failed, true);
+        }
+    }
+    m_session = makeController(m_link.get(), kind);
+    if (m_target.setter)
+        m_session->setToolSetter(*m_target.setter);
+    if (!m_session->keepsReference())
+        m_session->adoptReference(m_target.reference);
+    connect(m_session.get(), &MachineController::waitingForOperator, this,
+        &MachineConnection::waitingForOperator);
+    connect(m_session.get(), &MachineController::toolChangeFinished, this,
+        &MachineConnection::toolChangeFinished);
     m_session->connectToMachine([this](const SessionResult &result) {
         m_connectResult = result;
-        if (!result.ok()) {
-            setState(State::Disconnected);
-            Q_EMIT connectFailed(result.message);
-            return;
-        }
+        if (!result.ok())
+            return failConnect(result, false);
         // The offsets connecting read are the machine's before anyone is told it is connected: a caller that
         // starts an operation on stateChanged (toffee-cli) checks a stored TLO against them.
         if (result.tlo)

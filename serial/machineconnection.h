@@ -6,6 +6,7 @@
 #include <QObject>
 
 #include "model/toolsetter.h"
+#include "serial/controllerdetection.h"
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
 #include "serial/transport/tcptransport.h"
@@ -14,15 +15,6 @@ namespace Toffee {
 
 class CarveraEmulator;
 class LineTransport;
-
-// Which controller the machine runs. Auto: grblHAL on its network port (23), the Carvera otherwise. It is
-// not found by asking, because each one's question harms the other: the frame Toffee asks a Carvera with
-// toggles grblHAL's mist coolant (0xA1 is a real-time command there), and plain text silences Makera's framed
-// firmware over Wi-Fi. The controller chosen then checks what answers ($I must say grblHAL; a Carvera must
-// answer `version`) and says which to choose when it is the other.
-enum class ControllerKind { Auto, Carvera, GrblHal };
-// grblHAL's network builds listen for raw TCP ("telnet") here.
-inline constexpr quint16 kGrblHalTcpPort = 23;
 
 // Where to find the machine: a serial port at a baud rate, a host on the network (Wi-Fi), or the built-in
 // emulator.
@@ -39,8 +31,10 @@ struct ConnectionTarget
     // Not the emulator and a host: the machine's console over TCP (Wi-Fi) instead of the serial port.
     QString host;
     quint16 tcpPort = TcpTransport::kDefaultPort;
-    // Plain text or Makera's frames, found on connecting unless forced (serial port and network alike).
+    // Plain text or Makera's frames, found on connecting; forced, it is checked first (serial port and
+    // network alike).
     StreamTransport::Protocol protocol = StreamTransport::Protocol::Auto;
+    // Auto: found by asking on connecting (ControllerDetector); forced, the controller checks that it is.
     ControllerKind controller = ControllerKind::Auto;
     // For a controller whose probing cycle is Toffee's (grblHAL): where its tool setter is.
     std::optional<ToolSetter> setter;
@@ -48,8 +42,9 @@ struct ConnectionTarget
     std::optional<double> reference;
 
     [[nodiscard]] bool isNetwork() const { return !emulator && !host.isEmpty(); }
-    // The controller Auto stands for here; the built-in emulator is a Carvera.
-    [[nodiscard]] ControllerKind resolvedController() const;
+    // The controller known before connecting: the one chosen, or the Carvera for the built-in emulator;
+    // Auto while it is to be found by asking.
+    [[nodiscard]] ControllerKind knownController() const;
     // "192.168.1.57:2222", "/dev/ttyACM0" or "emulator", as the history and the settings name it.
     [[nodiscard]] QString name() const;
 };
@@ -60,7 +55,7 @@ struct ConnectionTarget
 // The controller that speaks to the machine on `link`: the Carvera's (MachineSession) or grblHAL's.
 [[nodiscard]] std::unique_ptr<MachineController> makeController(
     MachineLink *link, ControllerKind kind = ControllerKind::Carvera);
-// "auto", "carvera", "grblhal" (toffee-cli --controller); nothing for another word.
+// "auto", "carvera", "grblhal" (toffee-cli --controller, the settings); nothing for another word.
 [[nodiscard]] std::optional<ControllerKind> controllerKindFromName(const QString &name);
 
 // The window's one machine: it builds the transport, the link and the session for a target, keeps them for
@@ -77,8 +72,16 @@ public:
     ~MachineConnection() override;
 
     void connectTo(const ConnectionTarget &target);
-    // What the last connectTo() named: the machine connected to, or being connected to.
+    // What the last connectTo() named: the machine connected to, or being connected to (with what the
+    // preparer added).
     [[nodiscard]] const ConnectionTarget &target() const { return m_target; }
+    // Called once the controller is known (chosen, or found by asking) and before anything of that
+    // controller is sent: the caller adds what belongs to that machine and controller (grblHAL's tool setter
+    // and reference), or returns why it cannot connect (the connect then fails with it).
+    using Preparer = std::function<QString(ControllerKind kind, ConnectionTarget &target)>;
+    void setPreparer(Preparer prepare) { m_prepare = std::move(prepare); }
+    // The controller spoken to: chosen or found; Auto while disconnected or still asking.
+    [[nodiscard]] ControllerKind controllerKind() const { return m_kind; }
     void disconnectFromMachine();
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] QString description() const;
@@ -205,11 +208,17 @@ private:
     bool perform(const QString &what, bool evenIfHalted,
         const std::function<void(MachineController *, Done)> &operation, Done done);
     void teardown();
+    // The controller is known: prepare, make its controller and connect it.
+    void startController(ControllerKind kind);
+    void failConnect(const SessionResult &result, bool closeLink);
 
     State m_state = State::Disconnected;
     std::unique_ptr<LineTransport> m_transport;
     std::unique_ptr<MachineLink> m_link;
     std::unique_ptr<MachineController> m_session;
+    std::unique_ptr<ControllerDetector> m_detector;
+    Preparer m_prepare;
+    ControllerKind m_kind = ControllerKind::Auto;
     SessionResult m_connectResult;
     QString m_operation;
     bool m_halted = false;

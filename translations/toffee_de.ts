@@ -1317,20 +1317,12 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Steuerung, mit der die Maschine läuft</translation>
     </message>
     <message>
-        <source>Carvera</source>
-        <translation>Carvera</translation>
-    </message>
-    <message>
-        <source>grblHAL</source>
-        <translation>grblHAL</translation>
-    </message>
-    <message>
-        <source>Which controller the machine runs. Toffee does not ask the machine first: each controller&apos;s question would upset the other.</source>
-        <translation>Mit welcher Steuerung die Maschine läuft. Toffee fragt die Maschine nicht vorher: Die Abfrage der einen Steuerung würde die andere stören.</translation>
-    </message>
-    <message>
         <source>%1 announcements were not listed: a device announced many names (a flood, or a misbehaving device). Every machine announcing itself from its own address is listed.</source>
         <translation>%1 Ankündigungen wurden nicht aufgeführt: Ein Gerät hat viele Namen angekündigt (eine Flut oder ein fehlerhaftes Gerät). Jede Maschine, die sich von ihrer eigenen Adresse ankündigt, wird aufgeführt.</translation>
+    </message>
+    <message>
+        <source>Which controller the machine runs. Automatic asks it with questions that change nothing on a Carvera or on grblHAL; a controller chosen is checked all the same.</source>
+        <translation>Welche Steuerung die Maschine hat. Automatisch fragt sie mit Fragen, die an einer Carvera und an grblHAL nichts ändern; eine gewählte Steuerung wird trotzdem geprüft.</translation>
     </message>
 </context>
 <context>
@@ -1501,6 +1493,33 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>T%1 was probed but not recorded: %2</source>
         <translation>T%1 wurde vermessen, aber nicht gespeichert: %2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ControllerDetector</name>
+    <message>
+        <source>nothing</source>
+        <translation>nichts</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
+        <translation>Die Verbindung zu %1 wurde nicht innerhalb von %2 s geöffnet. Prüfen Sie die Maschine und die Verbindung und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>%1 The controller was asked which it is (&quot;version&quot;) and did not answer; nothing else was sent.</source>
+        <translation>%1 Die Steuerung wurde gefragt, welche sie ist („version“), und hat nicht geantwortet; sonst wurde nichts gesendet.</translation>
+    </message>
+    <message>
+        <source>The controller answered $I as Grbl does but did not say it is grblHAL ([FIRMWARE:grblHAL]): it may be classic Grbl, which keeps no tool table. Toffee manages Carvera and grblHAL machines; nothing else was sent.</source>
+        <translation>Die Steuerung hat $I wie Grbl beantwortet, aber nicht gesagt, dass sie grblHAL ist ([FIRMWARE:grblHAL]): Es kann das klassische Grbl sein, das keine Werkzeugtabelle führt. Toffee verwaltet Carvera- und grblHAL-Maschinen; sonst wurde nichts gesendet.</translation>
+    </message>
+    <message>
+        <source>The controller is neither a Carvera nor grblHAL, the controllers Toffee manages: it answered &quot;version&quot; with %1 and &quot;$I&quot; with %2. Nothing else was sent. If it is one of them, choose it (Carvera or grblHAL; toffee-cli --controller) and connect again.</source>
+        <translation>Die Steuerung ist weder eine Carvera noch grblHAL, die Steuerungen, die Toffee verwaltet: Sie hat „version“ mit %1 und „$I“ mit %2 beantwortet. Sonst wurde nichts gesendet. Wenn sie eine davon ist, wählen Sie sie (Carvera oder grblHAL; toffee-cli --controller) und verbinden Sie erneut.</translation>
     </message>
 </context>
 <context>
@@ -4089,6 +4108,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>The machine halted to end it: check what is in the spindle, unlock it, then select the tool and probe it before cutting.</source>
         <translation>Die Maschine hat angehalten, um ihn zu beenden: Prüfen Sie, was in der Spindel steckt, entsperren Sie sie, wählen Sie dann das Werkzeug aus und messen Sie es, bevor Sie schneiden.</translation>
     </message>
+    <message>
+        <source>%1, which no Carvera does: this is another controller (grblHAL refuses it so). Nothing of the Carvera&apos;s was sent. Choose grblHAL, or Automatic, and connect again.</source>
+        <translation>%1, was keine Carvera tut: Das ist eine andere Steuerung (grblHAL lehnt es so ab). Nichts Carvera-Spezifisches wurde gesendet. Wählen Sie grblHAL oder Automatisch und verbinden Sie erneut.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineTableDialog</name>
@@ -5921,16 +5944,24 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <translation> (gerahmt)</translation>
     </message>
     <message>
-        <source>%1 did not answer a status query, as plain text or framed, within %2 s. Check that it is a Carvera, that it is switched on and has started, and the address or port.</source>
-        <translation>%1 hat innerhalb von %2 s weder als Klartext noch gerahmt auf eine Statusabfrage geantwortet. Prüfen Sie, ob es eine Carvera ist, ob sie eingeschaltet und hochgefahren ist, und die Adresse oder den Port.</translation>
-    </message>
-    <message>
         <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
         <translation>%1 hat eine Zeile mit mehr als %2 Bytes gesendet; nur ihre ersten %2 Bytes wurden behalten.</translation>
     </message>
     <message>
         <source>%1 is not open.</source>
         <translation>%1 ist nicht geöffnet.</translation>
+    </message>
+    <message>
+        <source>%1 speaks Makera&apos;s frames (its firmware from 1.0.4 on), not the plain text chosen. Plain text would leave it deaf until it is restarted, so nothing more was sent. Choose automatic (--protocol auto, or leave it out) or framed.</source>
+        <translation>%1 spricht Makeras Rahmen (seine Firmware ab 1.0.4), nicht den gewählten Klartext. Klartext würde sie bis zum Neustart taub machen, deshalb wurde nichts weiter gesendet. Wählen Sie automatisch (--protocol auto oder weglassen) oder Rahmen (framed).</translation>
+    </message>
+    <message>
+        <source>%1 speaks plain text, not Makera&apos;s frames as chosen. Nothing more was sent. Choose automatic (--protocol auto, or leave it out) or text.</source>
+        <translation>%1 spricht Klartext, nicht Makeras Rahmen wie gewählt. Nichts weiter wurde gesendet. Wählen Sie automatisch (--protocol auto oder weglassen) oder Klartext (text).</translation>
+    </message>
+    <message>
+        <source>%1 did not answer within %2 s, in plain text or in Makera&apos;s frames. Check that the machine is switched on and has started, and the address or port.</source>
+        <translation>%1 hat nicht innerhalb von %2 s geantwortet, weder im Klartext noch in Makeras Rahmen. Prüfen Sie, ob die Maschine eingeschaltet und gestartet ist, sowie die Adresse oder den Anschluss.</translation>
     </message>
 </context>
 <context>

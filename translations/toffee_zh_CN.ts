@@ -1317,20 +1317,12 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>机床所用的控制器</translation>
     </message>
     <message>
-        <source>Carvera</source>
-        <translation>Carvera</translation>
-    </message>
-    <message>
-        <source>grblHAL</source>
-        <translation>grblHAL</translation>
-    </message>
-    <message>
-        <source>Which controller the machine runs. Toffee does not ask the machine first: each controller&apos;s question would upset the other.</source>
-        <translation>机床所用的控制器。Toffee 不会先询问机床：每种控制器的查询都会干扰另一种。</translation>
-    </message>
-    <message>
         <source>%1 announcements were not listed: a device announced many names (a flood, or a misbehaving device). Every machine announcing itself from its own address is listed.</source>
         <translation>有 %1 条广播未列出：某个设备广播了很多名称（泛洪或设备故障）。凡是从自身地址广播的机器都会列出。</translation>
+    </message>
+    <message>
+        <source>Which controller the machine runs. Automatic asks it with questions that change nothing on a Carvera or on grblHAL; a controller chosen is checked all the same.</source>
+        <translation>机器使用的控制器。“自动”会用不会改变 Carvera 或 grblHAL 任何状态的问题询问它；选定的控制器同样会被核对。</translation>
     </message>
 </context>
 <context>
@@ -1501,6 +1493,33 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>T%1 was probed but not recorded: %2</source>
         <translation>T%1 已对刀，但未记录：%2</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ControllerDetector</name>
+    <message>
+        <source>nothing</source>
+        <translation>没有任何内容</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>The link to %1 did not open within %2 s. Check the machine and the connection, then try again.</source>
+        <translation>与 %1 的连接未能在 %2 秒内打开。请检查机器和连接，然后重试。</translation>
+    </message>
+    <message>
+        <source>%1 The controller was asked which it is (&quot;version&quot;) and did not answer; nothing else was sent.</source>
+        <translation>%1 已询问控制器的类型（“version”），但它没有回答；未发送其他任何内容。</translation>
+    </message>
+    <message>
+        <source>The controller answered $I as Grbl does but did not say it is grblHAL ([FIRMWARE:grblHAL]): it may be classic Grbl, which keeps no tool table. Toffee manages Carvera and grblHAL machines; nothing else was sent.</source>
+        <translation>控制器像 Grbl 一样回答了 $I，但没有表明自己是 grblHAL（[FIRMWARE:grblHAL]）：它可能是经典 Grbl，不保存刀具表。Toffee 管理 Carvera 和 grblHAL 机器；未发送其他任何内容。</translation>
+    </message>
+    <message>
+        <source>The controller is neither a Carvera nor grblHAL, the controllers Toffee manages: it answered &quot;version&quot; with %1 and &quot;$I&quot; with %2. Nothing else was sent. If it is one of them, choose it (Carvera or grblHAL; toffee-cli --controller) and connect again.</source>
+        <translation>该控制器既不是 Carvera 也不是 grblHAL（Toffee 管理的控制器）：它对“version”的回答是 %1，对“$I”的回答是 %2。未发送其他任何内容。如果它是其中之一，请选择它（Carvera 或 grblHAL；toffee-cli --controller）并重新连接。</translation>
     </message>
 </context>
 <context>
@@ -4089,6 +4108,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>The machine halted to end it: check what is in the spindle, unlock it, then select the tool and probe it before cutting.</source>
         <translation>机器已停机以结束换刀：请检查主轴中的刀具，解锁机器，然后选择刀具并在切削前测量。</translation>
     </message>
+    <message>
+        <source>%1, which no Carvera does: this is another controller (grblHAL refuses it so). Nothing of the Carvera&apos;s was sent. Choose grblHAL, or Automatic, and connect again.</source>
+        <translation>%1，任何 Carvera 都不会这样：这是另一种控制器（grblHAL 会这样拒绝）。未发送任何 Carvera 专用命令。请选择 grblHAL 或“自动”，然后重新连接。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineTableDialog</name>
@@ -5921,16 +5944,24 @@ when it is fresh (no probe)</source>
         <translation>（帧协议）</translation>
     </message>
     <message>
-        <source>%1 did not answer a status query, as plain text or framed, within %2 s. Check that it is a Carvera, that it is switched on and has started, and the address or port.</source>
-        <translation>%1 在 %2 秒内未以纯文本或帧协议回应状态查询。请检查它是否为 Carvera、是否已开机并启动完成，以及地址或端口。</translation>
-    </message>
-    <message>
         <source>%1 sent a line longer than %2 bytes; only its first %2 bytes were kept.</source>
         <translation>%1 发送了一行超过 %2 字节的内容；只保留了前 %2 字节。</translation>
     </message>
     <message>
         <source>%1 is not open.</source>
         <translation>%1 未打开。</translation>
+    </message>
+    <message>
+        <source>%1 speaks Makera&apos;s frames (its firmware from 1.0.4 on), not the plain text chosen. Plain text would leave it deaf until it is restarted, so nothing more was sent. Choose automatic (--protocol auto, or leave it out) or framed.</source>
+        <translation>%1 使用 Makera 的帧协议（其固件 1.0.4 起），而不是所选的纯文本。纯文本会使它在重启前不再响应，因此未再发送任何内容。请选择自动（--protocol auto，或省略）或帧协议（framed）。</translation>
+    </message>
+    <message>
+        <source>%1 speaks plain text, not Makera&apos;s frames as chosen. Nothing more was sent. Choose automatic (--protocol auto, or leave it out) or text.</source>
+        <translation>%1 使用纯文本，而不是所选的 Makera 帧协议。未再发送任何内容。请选择自动（--protocol auto，或省略）或纯文本（text）。</translation>
+    </message>
+    <message>
+        <source>%1 did not answer within %2 s, in plain text or in Makera&apos;s frames. Check that the machine is switched on and has started, and the address or port.</source>
+        <translation>%1 未在 %2 秒内以纯文本或 Makera 帧协议回答。请检查机器是否已开机并完成启动，以及地址或端口。</translation>
     </message>
 </context>
 <context>

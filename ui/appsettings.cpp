@@ -24,7 +24,9 @@ const auto ConnectionBaud = u"machine/baud"_s;
 const auto ConnectionKind = u"machine/link"_s;
 const auto ConnectionHost = u"machine/host"_s;
 const auto ConnectionHostName = u"machine/hostName"_s;
-const auto ConnectionController = u"machine/controller"_s;
+// "auto", "carvera" or "grblhal". A new key: the old one ("machine/controller") held "carvera" for everyone
+// who never chose, which would now insist on a Carvera; automatic finds either.
+const auto ConnectionController = u"machine/controllerChoice"_s;
 const auto ToolSetters = u"machine/toolSetters"_s; // a group: one key per machine name
 const auto Tolerance = u"machine/breakTestTolerance"_s;
 const auto DarkPalette = u"view/darkPalette"_s;

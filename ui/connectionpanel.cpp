@@ -74,10 +74,11 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
         m_baud->addItem(QString::number(baud), baud);
     m_controller->setObjectName(u"controllerCombo"_s);
     m_controller->setAccessibleName(tr("Controller the machine runs"));
-    m_controller->addItem(tr("Carvera"), u"carvera"_s);
-    m_controller->addItem(tr("grblHAL"), u"grblhal"_s);
-    m_controller->setToolTip(tr("Which controller the machine runs. Toffee does not ask the machine first: "
-                                "each controller's question would upset the other."));
+    for (const ControllerKind kind : { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal })
+        m_controller->addItem(controllerKindTitle(kind), controllerKindName(kind));
+    m_controller->setToolTip(tr("Which controller the machine runs. Automatic asks it with questions that "
+                                "change nothing on a Carvera or on grblHAL; a controller chosen is checked "
+                                "all the same."));
     m_hint->setObjectName(u"connectionHint"_s);
     m_hint->setWordWrap(true);
     m_refresh->setObjectName(u"refreshPortsButton"_s);
@@ -139,7 +140,7 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
     }
     remembered.baud = settings.connectionBaud();
     remembered.controller
-        = settings.connectionController() == u"grblhal" ? ControllerKind::GrblHal : ControllerKind::Carvera;
+        = controllerKindFromName(settings.connectionController()).value_or(ControllerKind::Auto);
     setTarget(remembered);
     if (kind == kWiFi)
         setKind(Kind::WiFi); // even with no address remembered
@@ -252,8 +253,7 @@ ConnectionTarget ConnectionPanel::target() const
     t.emulatorStock = m_emulatorStock;
     t.emulatorPaced = m_emulatorPaced;
     t.protocol = StreamTransport::Protocol(m_protocol);
-    t.controller = m_controller->currentData().toString() == u"grblhal" ? ControllerKind::GrblHal
-                                                                        : ControllerKind::Carvera;
+    t.controller = controllerKindFromName(m_controller->currentData().toString()).value_or(ControllerKind::Auto);
     switch (kind()) {
     case Kind::Emulator:
         break;
@@ -319,8 +319,8 @@ void ConnectionPanel::setFields(const ConnectionTarget &target)
         m_port->setCurrentIndex(index);
         setKind(Kind::Serial);
     }
-    if (!target.emulator && target.controller != ControllerKind::Auto)
-        m_controller->setCurrentIndex(target.controller == ControllerKind::GrblHal ? 1 : 0);
+    if (!target.emulator)
+        m_controller->setCurrentIndex(m_controller->findData(controllerKindName(target.controller)));
     const int baud = m_baud->findData(target.baud);
     m_baud->setCurrentIndex(baud < 0 ? m_baud->findData(115200) : baud);
 }
@@ -378,8 +378,6 @@ void ConnectionPanel::toggleConnection()
     settings.setConnectionBaud(t.baud);
     if (k != Kind::Emulator)
         settings.setConnectionController(m_controller->currentData().toString());
-    if (m_prepare)
-        m_prepare(t);
     m_connection->connectTo(t);
 }
 
@@ -408,7 +406,7 @@ void ConnectionPanel::updateState()
     m_controller->setEnabled(idle && !heard);
     if (!idle)
         m_controller->setCurrentIndex(
-            m_connection->target().resolvedController() == ControllerKind::GrblHal ? 1 : 0);
+            m_controller->findData(controllerKindName(m_connection->target().controller)));
     m_baud->setVisible(kind() == Kind::Serial);
     m_refresh->setEnabled(idle);
     m_refresh->setVisible(kind() == Kind::Serial);

@@ -47,11 +47,6 @@ public:
     // there.
     void setDiscoveryPort(quint16 port);
     [[nodiscard]] const BeaconListener *listener() const { return m_listener; }
-    // What the window adds to a target before it connects (a grblHAL machine's tool setter and reference).
-    void setTargetPreparer(std::function<void(ConnectionTarget &)> prepare)
-    {
-        m_prepare = std::move(prepare);
-    }
 
 private:
     // The widgets only, without a signal.
@@ -69,8 +64,7 @@ private:
     QComboBox *m_machine;
     QLabel *m_emulatorLabel;
     QComboBox *m_baud;
-    QComboBox *m_controller; // Carvera or grblHAL, for a serial port or an address typed in
-    std::function<void(ConnectionTarget &)> m_prepare;
+    QComboBox *m_controller; // automatic, Carvera or grblHAL, for a serial port or an address typed in
     QLabel *m_hint;
     BeaconListener *m_listener;
     quint16 m_discoveryPort = Beacon::kDiscoveryPort;

@@ -38,11 +38,14 @@ QString controllerName(const MachineConnection *connection)
 
 void MainWindow::connectControllerSettings()
 {
-    m_machineDock->connectionPanel()->setTargetPreparer([this](ConnectionTarget &target) {
-        if (target.resolvedController() != ControllerKind::GrblHal)
-            return;
-        target.setter = machineToolSetter();
-        target.reference = keptReference();
+    // Once the controller is known, before anything of its own is sent: grblHAL's tool setter and the
+    // reference Toffee kept for the machine.
+    m_connection->setPreparer([this](ControllerKind kind, ConnectionTarget &target) {
+        if (kind == ControllerKind::GrblHal) {
+            target.setter = machineToolSetter();
+            target.reference = keptReference();
+        }
+        return QString();
     });
     auto update = [this] {
         const MachineController *controller = m_connection->session();

@@ -38,7 +38,8 @@ The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator
   --host                     the machine over Wi-Fi: its console on TCP port PORT (default 2222)
   --protocol auto|text|framed  plain text, or Makera's frames (its firmware from 1.0.4); auto finds out
   --controller auto|carvera|grblhal
-                             the controller the machine runs; auto: grblHAL on TCP port 23, else the Carvera
+                             the controller the machine runs; auto (the default): found by asking it,
+                             with questions that change nothing on any
   --setter X,Y,ZMIN[,SEEK,LATCH[,BACKOFF]]
                              grblHAL: the tool setter in machine coordinates (mm), the lowest Z to search to,
                              the feeds (mm/min, default 500 and 40) and the back-off between touches (2 mm)

@@ -92,11 +92,12 @@ void printTlo(
     call.out << Qt::endl;
 }
 
-void printStatus(Invocation &call, const MachineStatus &s, const FirmwareInfo &firmware)
+void printStatus(
+    Invocation &call, const MachineStatus &s, const FirmwareInfo &firmware, ControllerKind controller)
 {
     if (call.json) {
         printJson(call,
-            QJsonObject { { u"state"_s, s.state }, { u"tool"_s, s.tool ? QJsonValue(*s.tool) : QJsonValue() },
+            QJsonObject { { u"controller"_s, controllerKindName(controller) }, { u"state"_s, s.state }, { u"tool"_s, s.tool ? QJsonValue(*s.tool) : QJsonValue() },
                 { u"tlo"_s, s.tlo ? QJsonValue(*s.tlo) : QJsonValue() }, { u"mpos"_s, axes(s.mpos) },
                 { u"wpos"_s, axes(s.wpos) },
                 { u"halt_reason"_s, s.haltReason ? QJsonValue(*s.haltReason) : QJsonValue() },
@@ -173,10 +174,14 @@ public:
 
     int exec()
     {
-        QObject::connect(&m_connection, &MachineConnection::connectFailed, &m_loop, [this] {
-            SessionResult result = m_connection.connectResult();
-            result.message += protocolHint();
-            finishWith(result);
+        QObject::connect(&m_connection, &MachineConnection::connectFailed, &m_loop,
+            [this] { finishWith(m_connection.connectResult()); });
+        m_connection.setPreparer([this](ControllerKind kind, ConnectionTarget &target) {
+            if (auto prepared = prepareForController(m_call, m_options, kind); !prepared)
+                return prepared.error().message;
+            target.setter = m_options.target.setter;
+            target.reference = m_options.target.reference;
+            return QString();
         });
         QObject::connect(
             &m_connection, &MachineConnection::stateChanged, &m_loop, [this](MachineConnection::State state) {
@@ -222,9 +227,6 @@ private:
     [[nodiscard]] std::optional<double> storedTloInSpindle() const;
     [[nodiscard]] std::optional<double> brokenToolTloInSpindle() const;
     void roundTrip();
-    // A forced --protocol the machine does not speak looks like a machine that does not answer: what its
-    // bytes say instead, as a sentence to add to the failure, or nothing.
-    [[nodiscard]] QString protocolHint() const;
     // `reported`: the command printed the failure itself (a rack's summary holds it).
     void finishWith(const SessionResult &r, bool reported = false);
     [[nodiscard]] bool record(const SessionResult &r);
@@ -249,22 +251,6 @@ private:
     QElapsedTimer m_clock;
     bool m_recordFailed = false; // then the exit code says so (unless the tool is broken, which says more)
 };
-
-QString MachineRun::protocolHint() const
-{
-    const MachineLink *link = m_connection.link();
-    const auto *stream = link ? qobject_cast<const StreamTransport *>(link->transport()) : nullptr;
-    const auto other = stream ? stream->otherProtocolLikely() : std::nullopt;
-    if (!other)
-        return {};
-    if (*other == StreamTransport::Protocol::Framed)
-        return u" Nothing at all came back to --protocol text: a machine that speaks Makera's frames (its "
-               u"firmware from 1.0.4) ignores plain text. Leave --protocol out, or give --protocol auto, and "
-               u"Toffee finds out; or give --protocol framed. If it still does not answer, check that the "
-               u"machine is on and has started."_s;
-    return u" It answered in plain text, not in Makera's frames as --protocol framed expects. Leave "
-           u"--protocol out, or give --protocol auto, and Toffee finds out; or give --protocol text."_s;
-}
 
 void MachineRun::finishWith(const SessionResult &r, bool reported)
 {
@@ -432,7 +418,8 @@ void MachineRun::operate()
     // without a terminal, said with its limit on one.
     attendToolChanges(c.session(), m_call.err, &m_loop);
     const auto status = printed(
-        [this](const SessionResult &r) { printStatus(m_call, *r.status, m_connection.firmware()); });
+        [this](const SessionResult &r) { printStatus(m_call, *r.status, m_connection.firmware(), m_connection.controllerKind());
+        });
     bool started = true;
     if (command == u"status")
         started = c.status(status);

@@ -222,25 +222,29 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
             + u" Nothing was sent to the machine; use --no-history to measure without "
               "recording the history."_s };
     o.library = library.takeValue();
-    // The machine as the library knows it: a Carvera, and how it was reached this time.
-    if (o.library) {
+    return {};
+}
 
-        const QString connection = o.target.emulator ? u"emulator"_s
-            : o.target.isNetwork()                   ? o.target.name()
-                                                     : o.target.port + u' ' + QString::number(o.target.baud);
-        // The dialect its programs are checked in.
-        const QString dialect
-            = o.target.resolvedController() == ControllerKind::GrblHal ? u"grblhal"_s : u"carvera"_s;
-        if (auto added = o.library->addMachine({ o.machine, dialect, connection }); !added) {
-            // Another program holds the library for now: the machine may still measure, and what it measures
-            // is kept on this computer and sent later, as any measurement the library cannot take now.
-            if (added.error().code != Library::kBusy)
-                return Error { added.error().message + u" Nothing was sent to the machine."_s };
-            call.err << u"toffee-cli: warning: "_s << added.error().message
-                     << u" What this command measures is kept on this computer and sent when the library is "
-                        "free."_s
-                     << Qt::endl;
-        }
+// The machine as the library knows it: its controller's dialect, and how it was reached this time.
+Result<void> registerMachine(const Invocation &call, MachineOptions &o, ControllerKind kind)
+{
+    if (!o.library)
+        return {};
+    const QString connection = o.target.emulator ? u"emulator"_s
+        : o.target.isNetwork()                   ? o.target.name()
+                                                 : o.target.port + u' ' + QString::number(o.target.baud);
+    // The dialect its programs are checked in.
+    const QString dialect = kind == ControllerKind::GrblHal ? u"grblhal"_s : u"carvera"_s;
+    if (auto added = o.library->addMachine({ o.machine, dialect, connection }); !added) {
+        // Another program holds the library for now: the machine may still measure, and what it measures
+        // is kept on this computer and sent later, as any measurement the library cannot take now.
+        if (added.error().code != Library::kBusy)
+            return Error { added.error().message
+                + u" Nothing was sent to the machine but the questions that tell its controller."_s };
+        call.err << u"toffee-cli: warning: "_s << added.error().message
+                 << u" What this command measures is kept on this computer and sent when the library is "
+                    "free."_s
+                 << Qt::endl;
     }
     return {};
 }
@@ -248,9 +252,9 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
 // A controller that keeps no reference tool (grblHAL) is given the one Toffee kept for the machine: the
 // newest probe's in the history, else the newest measured tool's in the table. Without either, the next probe
 // makes its tool the reference. Its tool setter likewise: --setter, kept in the library, or the library's.
-Result<void> readReference(const Invocation &call, MachineOptions &o)
+Result<void> readReference(const Invocation &call, MachineOptions &o, ControllerKind kind)
 {
-    if (o.target.resolvedController() != ControllerKind::GrblHal)
+    if (kind != ControllerKind::GrblHal)
         return {};
     // The setter is the machine's: --setter is kept in the library for the next time, which it comes from
     // when not given.
@@ -324,11 +328,18 @@ std::optional<Dialect> programDialect(const Invocation &call, const Library *lib
     return Dialect::Carvera;
 }
 
+Result<void> prepareForController(const Invocation &call, MachineOptions &options, ControllerKind kind)
+{
+    if (auto registered = registerMachine(call, options, kind); !registered)
+        return registered;
+    return readReference(call, options, kind);
+}
+
 Result<MachineOptions> readMachineOptions(const Invocation &call)
 {
     MachineOptions o;
     for (auto read : { countArguments, choosePort, readTool, readTarget, readCommandOptions, openTable,
-             readRack, checkRestore, openHistory, readReference }) {
+             readRack, checkRestore, openHistory }) {
         if (auto r = read(call, o); !r)
             return r.error();
     }

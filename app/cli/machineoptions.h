@@ -66,5 +66,10 @@ void sendWaiting(Library &library, QTextStream &err);
     const Invocation &call, const Library *library, const QString &machine);
 
 [[nodiscard]] Result<MachineOptions> readMachineOptions(const Invocation &call);
+// Once the controller is known (MachineConnection's preparer), before anything of its own is sent: the machine
+// is entered in the library with that controller's dialect, and grblHAL is given its tool setter and the
+// reference Toffee kept for the machine (in options.target).
+[[nodiscard]] Result<void> prepareForController(
+    const Invocation &call, MachineOptions &options, ControllerKind kind);
 
 } // namespace Toffee::Cli

@@ -18,6 +18,17 @@ void MachineSession::readVersion(Done done, std::function<void()> next)
                 done(failure(reply));
                 return;
             }
+            // Every Carvera firmware answers its shell's `version`; grblHAL refuses it as G-code.
+            if (reply.status == CommandReply::Status::Refused) {
+                SessionResult result;
+                result.outcome = SessionResult::Outcome::MachineError;
+                result.message = tr("%1, which no Carvera does: this is another controller (grblHAL refuses it "
+                                    "so). Nothing of the Carvera's was sent. Choose grblHAL, or Automatic, and "
+                                    "connect again.")
+                                     .arg(reply.message);
+                done(result);
+                return;
+            }
             // A firmware that refuses "version" (or garbles its answer) stays Unknown: offered only what both
             // firmwares do.
             m_firmware = FirmwareInfo {};

@@ -93,7 +93,10 @@ QByteArray CarveraEmulator::toolField() const
 // without "ok" (`version`), or not at all ($X on a machine that is not halted).
 bool CarveraEmulator::shellCommand(const QByteArray &line)
 {
-    if (line == "version") {
+    // The shell takes the first word for the command and ignores the words after it (`version ?`).
+    const qsizetype space = line.indexOf(' ');
+    const QByteArray word = space < 0 ? line : line.first(space);
+    if (word == "version") {
         say(QByteArray("version = ")
             + (!m_version.isEmpty()                 ? m_version
                     : m_firmware == Firmware::Stock ? QByteArray(kStockVersion)

@@ -9,11 +9,11 @@ namespace Toffee {
 
 namespace {
 
-// What the plain-text firmware says to the frame's bytes before its line end ("ok - ignore: [\x86h]"), or to
-// the line end alone.
+// What a plain-text controller says to the frame's bytes before the line end: the Carvera "ok - ignore:
+// [\x86h]" (or "ok" to the line end alone), grblHAL "error:2".
 bool isFlushAnswer(const QByteArray &line)
 {
-    return line.startsWith("ok");
+    return line.startsWith("ok") || line.startsWith("error:");
 }
 
 } // namespace
@@ -58,43 +58,28 @@ QString StreamTransport::modeSuffix() const
                                                                                     : QString();
 }
 
-std::optional<StreamTransport::Protocol> StreamTransport::otherProtocolLikely() const
+QByteArray StreamTransport::firstQuestion()
 {
-    if (!m_started)
-        return std::nullopt; // the device never opened: a protocol has nothing to do with it
-    if (m_protocol == Protocol::Text && m_bytesReceived == 0)
-        return Protocol::Framed;
-    const MakeraFrame::Decoder::Counts &counts = m_stream.frameCounts();
-    if (m_protocol == Protocol::Framed && counts.frames == 0 && counts.strayBytes > 0)
-        return Protocol::Text;
-    return std::nullopt;
+    // 86 68 00 0C A2 "version ?" D6 7D 55 AA: to grblHAL, 0x86, the length and 0xAA are dropped, 0xA2 asks
+    // for its PID log, '?' for a status report, the rest is a line it refuses; no byte moves or switches
+    // anything (tst_streamtransport checks every byte against grblHAL's real-time commands).
+    return ConsoleStream(ConsoleStream::Mode::Framed, kMaxLineBytes).encodeLine("version ?");
 }
 
 void StreamTransport::opening()
 {
-    m_started = false;
-    m_bytesReceived = 0;
+    m_phase = Phase::Closed;
 }
 
 void StreamTransport::start(QIODevice *device)
 {
-    m_started = true;
     m_device = device;
     connect(device, &QIODevice::readyRead, this, &StreamTransport::readAvailable, Qt::UniqueConnection);
     m_tries = 0;
-    m_bytesReceived = 0;
-    switch (m_protocol) {
-    case Protocol::Text:
-        return opened(ConsoleStream::Mode::Text);
-    case Protocol::Framed:
-        return opened(ConsoleStream::Mode::Framed);
-    case Protocol::Auto:
-        m_phase = Phase::Probing;
-        m_asText.reset(ConsoleStream::Mode::Text);
-        m_asFrames.reset(ConsoleStream::Mode::Framed);
-        probe();
-        return;
-    }
+    m_phase = Phase::Probing;
+    m_asText.reset(ConsoleStream::Mode::Text);
+    m_asFrames.reset(ConsoleStream::Mode::Framed);
+    probe();
 }
 
 void StreamTransport::stop()
@@ -109,8 +94,27 @@ void StreamTransport::stop()
 void StreamTransport::probe()
 {
     ++m_tries;
-    m_device->write(m_asFrames.encodeRealtime('?'));
+    m_device->write(firstQuestion());
     m_timer.start(kDetectTryMs);
+}
+
+void StreamTransport::answered(ConsoleStream::Mode mode)
+{
+    const bool framed = mode == ConsoleStream::Mode::Framed;
+    if (m_protocol == Protocol::Auto || (m_protocol == Protocol::Framed) == framed)
+        return opened(mode);
+    m_timer.stop();
+    m_phase = Phase::Closed;
+    const QString message = framed
+        ? tr("%1 speaks Makera's frames (its firmware from 1.0.4 on), not the plain text chosen. Plain text "
+             "would leave it deaf until it is restarted, so nothing more was sent. Choose automatic (--protocol "
+             "auto, or leave it out) or framed.")
+              .arg(name())
+        : tr("%1 speaks plain text, not Makera's frames as chosen. Nothing more was sent. Choose automatic "
+             "(--protocol auto, or leave it out) or text.")
+              .arg(name());
+    Q_EMIT errorOccurred(message);
+    close();
 }
 
 void StreamTransport::opened(ConsoleStream::Mode mode)
@@ -125,14 +129,14 @@ void StreamTransport::opened(ConsoleStream::Mode mode)
 void StreamTransport::timedOut()
 {
     if (m_phase == Phase::Flushing)
-        return opened(ConsoleStream::Mode::Text); // the flush's answer is a courtesy: the link is plain text
+        return answered(ConsoleStream::Mode::Text); // the line end's answer is a courtesy: it is plain text
     if (m_phase != Phase::Probing)
         return;
     if (m_tries < kDetectTries)
         return probe();
     const QString message
-        = tr("%1 did not answer a status query, as plain text or framed, within %2 s. Check that it is a "
-             "Carvera, that it is switched on and has started, and the address or port.")
+        = tr("%1 did not answer within %2 s, in plain text or in Makera's frames. Check that the machine is "
+             "switched on and has started, and the address or port.")
               .arg(name())
               .arg(kDetectTries * kDetectTryMs / 1000);
     Q_EMIT errorOccurred(message);
@@ -146,7 +150,6 @@ void StreamTransport::readAvailable()
     // One slice at a time, back to the event loop between them: however much arrives, one read holds at most
     // a slice, and time limits fire on time.
     const QByteArray bytes = m_device->read(kReadSliceBytes);
-    m_bytesReceived += bytes.size();
     if (m_device->bytesAvailable() > 0 && !m_sliceQueued) {
         m_sliceQueued = true;
         QTimer::singleShot(0, this, [this] {
@@ -162,12 +165,13 @@ void StreamTransport::readAvailable()
 void StreamTransport::detect(QByteArrayView bytes)
 {
     if (m_phase == Phase::Probing) {
-        // Any frame that passes its checks is the framed firmware's (a status, or its boot lines).
+        // Any frame that passes its checks is the framed firmware's (its answer, or its boot lines).
         if (!m_asFrames.feed(bytes).isEmpty() || m_asFrames.frameCounts().frames > 0)
-            return opened(ConsoleStream::Mode::Framed);
+            return answered(ConsoleStream::Mode::Framed);
         for (const LineAssembler::Line &line : m_asText.feed(bytes)) {
             if (line.bytes.startsWith('<') && line.bytes.endsWith('>')) {
-                // Plain text: the frame's other bytes wait in the firmware's line buffer; end that line.
+                // Plain text (a status report: grblHAL says "error:20" first): the frame's other bytes may wait
+                // in the controller's line buffer; end that line.
                 m_phase = Phase::Flushing;
                 m_device->write("\n");
                 m_timer.start(kDetectTryMs);
@@ -179,7 +183,7 @@ void StreamTransport::detect(QByteArrayView bytes)
     if (m_phase == Phase::Flushing) {
         for (const LineAssembler::Line &line : m_asText.feed(bytes)) {
             if (isFlushAnswer(line.bytes))
-                return opened(ConsoleStream::Mode::Text);
+                return answered(ConsoleStream::Mode::Text);
         }
     }
 }

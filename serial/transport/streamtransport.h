@@ -11,12 +11,16 @@ class QIODevice;
 namespace Toffee {
 
 // A controller at the other end of a byte stream (a serial port, a TCP socket), speaking plain text or
-// Makera's frames. With Protocol::Auto it finds out on opening, before `opened`: it sends a status query as a
-// frame (the one thing both firmwares answer harmlessly: a plain-text firmware acts on the '?' in it and
-// ignores the rest of the frame's bytes as a line, which a line end then flushes), and speaks whatever the
-// answer came in. It never sends plain text to a machine that may be framed: over TCP, the framed firmware
-// answers no frame again after plain bytes (docs/CARVERA.md § 11). Subclasses open their device and hand it
-// over.
+// Makera's frames. On opening, before `opened`, it asks one question that every controller Toffee knows
+// answers harmlessly (firstQuestion()): a command line `version ?` in one of Makera's frames. The framed
+// firmware answers it as `version` in a frame; a plain-text Carvera acts on the real-time '?' inside it with a
+// plain status report; grblHAL does the same (after an error for the rest), and none of the frame's other
+// bytes is a real-time command to it (the A1 frame of a bare '?' was: 0xA1 toggles its mist coolant). Plain
+// text is never sent before the answer: over TCP the framed firmware answers no frame again after plain bytes
+// (docs/CARVERA.md § 11). A plain answer is followed by a line end, which ends the frame's leftover bytes as
+// one line, and its answer is awaited. A protocol forced (text, framed) is checked by the same question and
+// refused, with nothing more sent, when the machine speaks the other. Subclasses open their device and hand
+// it over.
 class StreamTransport : public LineTransport
 {
     Q_OBJECT
@@ -35,18 +39,14 @@ public:
 
     void setProtocol(Protocol protocol) { m_protocol = protocol; }
     [[nodiscard]] Protocol protocol() const { return m_protocol; }
-    // What the link speaks once open (Auto: what was found).
+    // What the link speaks once open (what the first question found).
     [[nodiscard]] ConsoleStream::Mode mode() const { return m_stream.mode(); }
     [[nodiscard]] const ConsoleStream &stream() const { return m_stream; }
-    // With a protocol forced, what the machine's bytes since opening say it speaks instead: framed when text
-    // was forced and nothing at all came back (a framed machine ignores plain text; over TCP it falls
-    // silent), text when framed was forced and plain bytes came but no frame. Nothing when the forced
-    // protocol was answered, or with Auto. A forced protocol that is wrong otherwise looks like a machine
-    // that does not answer.
-    [[nodiscard]] std::optional<Protocol> otherProtocolLikely() const;
+    // The bytes of the first question, as sent on every opening.
+    [[nodiscard]] static QByteArray firstQuestion();
 
     [[nodiscard]] bool isOpen() const override;
-    // The tries to find the protocol, and the flush of a plain firmware's leftover line.
+    // The tries of the first question, and the line end after a plain answer.
     [[nodiscard]] int openLimitMs() const override { return (kDetectTries + 1) * kDetectTryMs; }
     void writeLine(const QByteArray &line) override;
     void writeRealtime(char c) override;
@@ -75,6 +75,8 @@ private:
     void deliver(const QList<LineAssembler::Line> &lines);
     void detect(QByteArrayView bytes);
     void probe();
+    // The first question was answered in `mode`: open, or refuse a protocol forced otherwise.
+    void answered(ConsoleStream::Mode mode);
     void opened(ConsoleStream::Mode mode);
     void timedOut();
 
@@ -82,13 +84,11 @@ private:
     Protocol m_protocol = Protocol::Auto;
     Phase m_phase = Phase::Closed;
     ConsoleStream m_stream { ConsoleStream::Mode::Text, kMaxLineBytes };
-    // While probing, what came read both ways.
+    // While asking the first question, what came read both ways.
     ConsoleStream m_asText { ConsoleStream::Mode::Text, kMaxLineBytes };
     ConsoleStream m_asFrames { ConsoleStream::Mode::Framed, kMaxLineBytes };
     QTimer m_timer;
     int m_tries = 0;
-    bool m_started = false; // since opening()
-    qint64 m_bytesReceived = 0; // since start()
     bool m_sliceQueued = false; // the next slice of what is waiting is to be read
 };
 

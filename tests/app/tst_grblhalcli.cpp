@@ -37,10 +37,12 @@ class TestGrblHalCli : public QObject
     QStringList m_target;
 
     QString table() const { return m_dir.filePath(u"tools.json"_s); }
+    // The controller is not chosen: every command finds grblHAL by asking, and is given its setter and the
+    // reference kept for the machine once it is known.
     Run machine(const QStringList &arguments, const QString &tablePath = {})
     {
         return cli(QStringList { u"--json"_s, u"--library"_s, m_dir.filePath(u"library.sqlite"_s),
-                       u"--machine"_s, u"LongMill"_s, u"--controller"_s, u"grblhal"_s, u"--setter"_s, kSetter,
+                       u"--machine"_s, u"LongMill"_s, u"--setter"_s, kSetter,
                        u"--table"_s, tablePath.isEmpty() ? table() : tablePath }
                 + m_target + arguments,
             90000);
@@ -283,9 +285,10 @@ private Q_SLOTS:
         m_target = peer.cliTarget();
         const QString path = m_dir.filePath(u"pty.json"_s);
         QVERIFY(writeEmptyTable(path));
-        Run run = cli(QStringList { u"--json"_s, u"--no-history"_s, u"--controller"_s, u"grblhal"_s }
-            + m_target + QStringList { u"status"_s });
+        // No controller chosen: found by asking, on a serial port as on any.
+        Run run = cli(QStringList { u"--json"_s, u"--no-history"_s } + m_target + QStringList { u"status"_s });
         QVERIFY2(run.exitCode == 0, run.err.constData());
+        QCOMPARE(json(run)[u"controller"_s].toString(), u"grblhal"_s);
         QCOMPARE(json(run)[u"firmware"_s][u"controller"_s].toString(), u"grblhal"_s);
         QCOMPARE(machine({ u"select-tool"_s, u"4"_s }, path).exitCode, 0);
         // The history's reference (−70, from the TCP story's machine of the same name) is this machine's too:
@@ -294,8 +297,7 @@ private Q_SLOTS:
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QCOMPARE(json(run)[u"current_mz"_s].toDouble(), -80.0);
         QCOMPARE(toolIn(path, 4)[u"measured_tlo"_s].toDouble(), json(run)[u"tlo"_s].toDouble());
-        run = cli(QStringList { u"--json"_s, u"--no-history"_s, u"--controller"_s, u"grblhal"_s } + m_target
-            + QStringList { u"report"_s });
+        run = cli(QStringList { u"--json"_s, u"--no-history"_s } + m_target + QStringList { u"report"_s });
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QCOMPARE(json(run)[u"tlo"_s].toDouble(), toolIn(path, 4)[u"measured_tlo"_s].toDouble());
     }
@@ -340,6 +342,26 @@ private Q_SLOTS:
         QVERIFY2(json(run)[u"error"_s].toString().contains(u"Nothing was recorded"_s), run.out.constData());
         QCOMPARE(readFile(path), before);
         QCOMPARE(historyOf(1).size() + historyOf(2).size() + historyOf(3).size(), events);
+    }
+
+    // No controller chosen, on a port that is not grblHAL's 23: `auto` (the default) finds grblHAL by asking,
+    // with questions that change nothing (its coolant stays off; the old framed status query toggled it).
+    void autoFindsGrblHalOnAnyPortAndChangesNothing()
+    {
+        GrblHalPeer peer;
+        QVERIFY2(peer.started(), qPrintable(peer.errors()));
+        QVERIFY(peer.port() != 23);
+        for (int i = 0; i < 2; ++i) {
+            const Run run = cli(QStringList { u"--json"_s, u"--no-history"_s } + peer.cliTarget()
+                + QStringList { u"status"_s });
+            QVERIFY2(run.exitCode == 0, run.err.constData());
+            QCOMPARE(json(run)[u"controller"_s].toString(), u"grblhal"_s);
+            QCOMPARE(json(run)[u"state"_s].toString(), u"Idle"_s);
+            QTest::qWait(200);
+            const QList<QByteArray> modes = peer.ask("$G");
+            QVERIFY(!modes.isEmpty());
+            QVERIFY2(modes.front().contains(" M9 "), modes.front().constData());
+        }
     }
 
     void aCarveraChosenAsGrblHalSaysSo()

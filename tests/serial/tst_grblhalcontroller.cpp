@@ -36,13 +36,13 @@ public:
             QTcpSocket *socket = server.nextPendingConnection();
             connect(socket, &QTcpSocket::readyRead, this, [this, socket] {
                 m_buffer += socket->readAll();
+                // '?' is a real-time command wherever it comes (in the first question's frame too).
+                for (qsizetype q; (q = m_buffer.indexOf('?')) >= 0;) {
+                    m_buffer.remove(q, 1);
+                    socket->write(QByteArray("<Idle|MPos:0.000,0.000,0.000|Bf:100,1023|FS:0,0|T:")
+                        + QByteArray::number(tool) + ">\r\n");
+                }
                 for (;;) {
-                    if (m_buffer.startsWith('?')) {
-                        m_buffer.remove(0, 1);
-                        socket->write(QByteArray("<Idle|MPos:0.000,0.000,0.000|Bf:100,1023|FS:0,0|T:")
-                            + QByteArray::number(tool) + ">\r\n");
-                        continue;
-                    }
                     const qsizetype end = m_buffer.indexOf('\n');
                     if (end < 0)
                         break;

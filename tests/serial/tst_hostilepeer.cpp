@@ -133,6 +133,8 @@ private:
             return;
         if (line.isEmpty() || line == ";") {
             say("ok");
+        } else if (line == "version") {
+            say("version = 2.1.0c-hostile"); // a Carvera's shell: no "ok"
         } else if (line == "M493.4") {
             if (!offsetsReply.isEmpty()) {
                 say(offsetsReply);

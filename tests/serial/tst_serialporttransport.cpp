@@ -9,6 +9,7 @@
 #include <QTest>
 
 #include "serial/transport/serialporttransport.h"
+#include "tests/support/firstquestion.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
@@ -48,6 +49,12 @@ struct Pty
     }
 };
 
+// The first question answered as a plain-text machine answers it.
+bool answer(const Pty &pty)
+{
+    return Test::answerFirstQuestion([&pty] { return pty.read(); }, [&pty](const QByteArray &b) { pty.write(b); });
+}
+
 } // namespace
 
 class TestSerialPortTransport : public QObject
@@ -64,6 +71,7 @@ private Q_SLOTS:
         QSignalSpy opened(&transport, &LineTransport::opened);
         QSignalSpy lines(&transport, &LineTransport::lineReceived);
         transport.open();
+        QVERIFY(answer(pty));
         QTRY_COMPARE(opened.size(), 1);
         QCOMPARE(transport.description(), pty.slave + u" at 115200 baud"_s);
 
@@ -87,6 +95,7 @@ private Q_SLOTS:
         transport.setProtocol(StreamTransport::Protocol::Text); // the test speaks for the machine
         QSignalSpy opened(&transport, &LineTransport::opened);
         transport.open();
+        QVERIFY(answer(pty));
         QTRY_COMPARE(opened.size(), 1);
         transport.writeLine("M493.4");
         transport.writeRealtime('?');
@@ -106,6 +115,7 @@ private Q_SLOTS:
         QSignalSpy lines(&transport, &LineTransport::lineReceived);
         QSignalSpy errors(&transport, &LineTransport::errorOccurred);
         transport.open();
+        QVERIFY(answer(pty));
         QTRY_COMPARE(opened.size(), 1);
         pty.write("error:");
         for (int i = 0; i < 3; ++i) {
@@ -129,6 +139,7 @@ private Q_SLOTS:
         QSignalSpy errors(&transport, &LineTransport::errorOccurred);
         QSignalSpy closed(&transport, &LineTransport::closed);
         transport.open();
+        QVERIFY(answer(pty));
         QTRY_COMPARE(opened.size(), 1);
         pty.close(); // the machine is switched off
         QTRY_COMPARE_WITH_TIMEOUT(closed.size(), 1, 5000);
@@ -140,9 +151,9 @@ private Q_SLOTS:
         QVERIFY2(!said.contains(u'('), qPrintable(said));
     }
 
-    // Protocol::Auto sends a status query as a frame, and a plain-text firmware's answer makes it plain text:
-    // a line end then flushes the frame's other bytes from the firmware's line ("ok - ignore: [..]"), and
-    // nothing said before is taken for the machine's words (boot lines).
+    // The first question is `version ?` in a frame, and a plain-text firmware's answer to its '?' makes the
+    // link plain text: a line end then flushes the frame's other bytes from the firmware's line ("ok - ignore:
+    // [..]"), and nothing said before is taken for the machine's words (boot lines).
     void findsPlainTextByItsAnswerToAFramedQuery()
     {
         Pty pty;
@@ -152,7 +163,7 @@ private Q_SLOTS:
         transport.open();
         QByteArray sent;
         QTRY_VERIFY((sent += pty.read()).size() >= 10);
-        QCOMPARE(sent, MakeraFrame::encode(MakeraFrame::RealTime, "?"));
+        QCOMPARE(sent, MakeraFrame::encode(MakeraFrame::Command, "version ?"));
         pty.write("version = 2.1.0c\r\nok\r\n<Idle|MPos:0,0,0|T:1,0.000,-1,0>\r\n");
         sent.clear();
         QTRY_COMPARE((sent += pty.read()), QByteArray("\n"));
@@ -206,7 +217,7 @@ private Q_SLOTS:
         QCOMPARE(transport.stream().frameCounts().strayBytes, 11);
     }
 
-    // A port where nothing answers: three queries a second apart, then a clear error and the port closed.
+    // A port where nothing answers: three questions a second apart, then a clear error and the port closed.
     void saysWhenNothingAnswersTheQuery()
     {
         Pty pty;
@@ -218,9 +229,10 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(closed.size(), 1, 5000);
         QCOMPARE(opened.size(), 0);
         QCOMPARE(errors.size(), 1);
-        QVERIFY2(errors.front().front().toString().contains(u"did not answer a status query"_s),
+        QVERIFY2(errors.front().front().toString().contains(
+                     u"did not answer within 3 s, in plain text or in Makera's frames"_s),
             qPrintable(errors.front().front().toString()));
-        QCOMPARE(pty.read(), MakeraFrame::encode(MakeraFrame::RealTime, "?").repeated(3));
+        QCOMPARE(pty.read(), StreamTransport::firstQuestion().repeated(3));
     }
 
     void saysWhyAPortCannotOpen()

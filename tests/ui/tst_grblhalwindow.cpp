@@ -99,12 +99,15 @@ void connectTo(Station &s, const GrblHalPeer &peer)
     panel->setKind(ConnectionPanel::Kind::WiFi);
     auto *machine = s.find<QComboBox>(u"wifiMachineCombo"_s);
     machine->setEditText(u"127.0.0.1:%1"_s.arg(peer.port()));
+    // Automatic, as a new user finds it: grblHAL is found by asking.
     auto *controller = s.find<QComboBox>(u"controllerCombo"_s);
     QVERIFY(controller->isVisible() && controller->isEnabled());
-    controller->setCurrentIndex(controller->findData(u"grblhal"_s));
+    QCOMPARE(controller->currentData().toString(), u"auto"_s);
+    QCOMPARE(controller->currentText(), u"Automatic"_s);
     QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
     QVERIFY(waitConnected(s));
     QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
+    QCOMPARE(s.window.connection()->controllerKind(), ControllerKind::GrblHal);
 }
 
 } // namespace
