@@ -98,7 +98,7 @@ void ControllerDetector::ask()
     // again to the Carvera's own connect.
     const auto *stream = qobject_cast<const StreamTransport *>(m_link->transport());
     if (stream && stream->mode() == ConsoleStream::Mode::Framed)
-        return finish(DetectedController { ControllerKind::Carvera, {} });
+        return finish(DetectedController { ControllerKind::Carvera, {}, {} });
     m_link->send(
         "version", MachineLink::kDefaultTimeoutMs,
         [this](const CommandReply &reply) {
@@ -108,7 +108,7 @@ void ControllerDetector::ask()
                                           .arg(reply.message) });
             for (const QByteArray &line : reply.lines) {
                 if (auto firmware = parseVersion(line))
-                    return finish(DetectedController { ControllerKind::Carvera, *firmware });
+                    return finish(DetectedController { ControllerKind::Carvera, *firmware, {} });
             }
             askBuild(said(reply));
         },
@@ -126,7 +126,7 @@ void ControllerDetector::askBuild(const QString &versionAnswer)
             firmware.kind = FirmwareInfo::Kind::GrblHal;
             firmware.version = build.info().version;
             firmware.toolTableSize = build.info().toolTableSize;
-            return finish(DetectedController { ControllerKind::GrblHal, firmware });
+            return finish(DetectedController { ControllerKind::GrblHal, firmware, build.info().buildName });
         }
         if (build.hasVersionAndOptions())
             return finish(Error { tr("The controller answered $I as Grbl does but did not say it is grblHAL "

@@ -26,6 +26,7 @@ struct DetectedController
 {
     ControllerKind kind = ControllerKind::Auto;
     FirmwareInfo firmware; // from `version` (a Carvera) or $I (grblHAL)
+    QString name; // the name the controller gives itself: grblHAL's build name ($I=NAME), else empty
 };
 
 // Finds which controller answers on a link before anything controller-specific is sent. The link's transport

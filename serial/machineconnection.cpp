@@ -74,6 +74,7 @@ void MachineConnection::teardown()
     m_detector.reset();
     m_session.reset();
     m_kind = ControllerKind::Auto;
+    m_selfName.clear();
     m_link.reset();
     m_transport.reset();
 }
@@ -168,18 +169,31 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
         }
     });
     setState(State::Connecting);
-    if (const ControllerKind known = target.knownController(); known != ControllerKind::Auto)
-        return startController(known);
-    // Nothing of any controller's is sent before the controller is known.
+    if (target.emulator)
+        return startController(ControllerKind::Carvera);
+    // Nothing of any controller's is sent before the controller is known, chosen or not: a controller chosen
+    // is checked against the one found.
     m_detector = std::make_unique<ControllerDetector>(m_link.get());
     m_detector->detect([this](const Result<DetectedController> &found) {
+        SessionResult failed;
+        failed.outcome = SessionResult::Outcome::LinkFailure;
         if (!found) {
-            SessionResult failed;
-            failed.outcome = SessionResult::Outcome::LinkFailure;
             failed.message = found.error().message;
             return failConnect(failed, true);
         }
-        startController(found.value().kind);
+        const ControllerKind chosen = m_target.controller;
+        const ControllerKind kind = found.value().kind;
+        if (chosen != ControllerKind::Auto && chosen != kind) {
+            failed.outcome = SessionResult::Outcome::MachineError;
+            failed.message
+                = tr("%1 answered as %2, not as %3 as chosen. Nothing of %3's was sent. Choose %2, or "
+                     "Automatic (toffee-cli --controller %4, or auto), and connect again.")
+                      .arg(m_target.name(), controllerKindTitle(kind), controllerKindTitle(chosen),
+                          controllerKindName(kind));
+            return failConnect(failed, true);
+        }
+        m_selfName = found.value().name;
+        startController(kind);
     });
 }
 
@@ -198,7 +212,7 @@ void MachineConnection::startController(ControllerKind kind)
 {
     m_kind = kind;
     if (m_prepare) {
-        if (const QString refused = m_prepare(kind, m_target); !refused.isEmpty()) {
+        if (const QString refused = m_prepare(identity(), m_target); !refused.isEmpty()) {
             SessionResult failed;
             failed.outcome = SessionResult::Outcome::Refused; // the caller's refusal, not the machine's
             failed.message = refused;

@@ -7,6 +7,7 @@
 
 #include "model/toolsetter.h"
 #include "serial/controllerdetection.h"
+#include "serial/machineidentity.h"
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
 #include "serial/transport/tcptransport.h"
@@ -75,13 +76,18 @@ public:
     // What the last connectTo() named: the machine connected to, or being connected to (with what the
     // preparer added).
     [[nodiscard]] const ConnectionTarget &target() const { return m_target; }
-    // Called once the controller is known (chosen, or found by asking) and before anything of that
-    // controller is sent: the caller adds what belongs to that machine and controller (grblHAL's tool setter
-    // and reference), or returns why it cannot connect (the connect then fails with it).
-    using Preparer = std::function<QString(ControllerKind kind, ConnectionTarget &target)>;
+    // Called once the controller is known (found by asking) and before anything of that controller is sent:
+    // the caller adds what belongs to that machine (grblHAL's tool setter and reference), or returns why it
+    // cannot connect (the connect then fails with it).
+    using Preparer = std::function<QString(const MachineIdentity &identity, ConnectionTarget &target)>;
     void setPreparer(Preparer prepare) { m_prepare = std::move(prepare); }
     // The controller spoken to: chosen or found; Auto while disconnected or still asking.
     [[nodiscard]] ControllerKind controllerKind() const { return m_kind; }
+    // Which machine it is, once the controller is known (isKnown() false before).
+    [[nodiscard]] MachineIdentity identity() const
+    {
+        return m_kind == ControllerKind::Auto ? MachineIdentity {} : identityOf(m_target, m_kind, m_selfName);
+    }
     void disconnectFromMachine();
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] QString description() const;
@@ -219,6 +225,7 @@ private:
     std::unique_ptr<ControllerDetector> m_detector;
     Preparer m_prepare;
     ControllerKind m_kind = ControllerKind::Auto;
+    QString m_selfName; // what the controller called itself when asked (grblHAL's build name)
     SessionResult m_connectResult;
     QString m_operation;
     bool m_halted = false;

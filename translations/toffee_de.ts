@@ -2453,10 +2453,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>SQLite-Bibliotheken (*.sqlite *.db);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <source>Give this machine a name: its history is kept under it.</source>
-        <translation>Geben Sie dieser Maschine einen Namen: Ihr Verlauf wird darunter geführt.</translation>
-    </message>
-    <message>
         <source>This library cannot be used: %1</source>
         <translation>Diese Bibliothek lässt sich nicht verwenden: %1</translation>
     </message>
@@ -2491,6 +2487,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>This station&apos;s name:</source>
         <translation>Name dieses Arbeitsplatzes:</translation>
+    </message>
+    <message>
+        <source>Its kind: Carvera, grblHAL or Emulator</source>
+        <translation>Ihre Art: Carvera, grblHAL oder Emulator</translation>
+    </message>
+    <message>
+        <source>The name this machine&apos;s history, reference and tool setter are kept under. Left empty, the machine is called after its kind. A name stands for one machine: another machine under it is asked about.</source>
+        <translation>Der Name, unter dem Verlauf, Referenz und Werkzeugsensor dieser Maschine geführt werden. Leer gelassen, heißt die Maschine nach ihrer Art. Ein Name steht für eine Maschine: Bei einer anderen Maschine unter diesem Namen wird nachgefragt.</translation>
     </message>
 </context>
 <context>
@@ -3616,6 +3620,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>%1 is a library of version %2, read-only here, and too old to be read as it is. Open it once where it can be written (Toffee brings it up to date), or copy it.</source>
         <translation>%1 ist eine Bibliothek der Version %2, hier schreibgeschützt und zu alt, um so gelesen zu werden. Öffnen Sie sie einmal dort, wo sie geschrieben werden kann (Toffee bringt sie auf den neuesten Stand), oder kopieren Sie sie.</translation>
     </message>
+    <message>
+        <source>Reading which machine %1 is</source>
+        <translation>Lesen, welche Maschine %1 ist</translation>
+    </message>
+    <message>
+        <source>Keeping which machine %1 is</source>
+        <translation>Speichern, welche Maschine %1 ist</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
@@ -3820,6 +3832,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>Writing the controller&apos;s tool table…</source>
         <translation>Werkzeugtabelle der Steuerung wird geschrieben …</translation>
     </message>
+    <message>
+        <source>%1 answered as %2, not as %3 as chosen. Nothing of %3&apos;s was sent. Choose %2, or Automatic (toffee-cli --controller %4, or auto), and connect again.</source>
+        <translation>%1 hat als %2 geantwortet, nicht als %3 wie gewählt. Nichts %3-Spezifisches wurde gesendet. Wählen Sie %2 oder Automatisch (toffee-cli --controller %4 oder auto) und verbinden Sie erneut.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineController</name>
@@ -3905,6 +3921,29 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1: no break test (Toffee cannot tell whether its M491.1 compares a tool with its TLO).</source>
         <translation>%1: kein Bruchtest (Toffee kann nicht erkennen, ob ihr M491.1 ein Werkzeug mit seiner TLO vergleicht).</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineIdentity</name>
+    <message>
+        <source>the built-in emulator</source>
+        <translation>der eingebaute Emulator</translation>
+    </message>
+    <message>
+        <source>grblHAL “%1”</source>
+        <translation>grblHAL „%1“</translation>
+    </message>
+    <message>
+        <source>grblHAL at %1</source>
+        <translation>grblHAL an %1</translation>
+    </message>
+    <message>
+        <source>the Carvera at %1</source>
+        <translation>die Carvera an %1</translation>
+    </message>
+    <message>
+        <source>the machine at %1</source>
+        <translation>die Maschine an %1</translation>
     </message>
 </context>
 <context>
@@ -4911,6 +4950,34 @@ Trotzdem speichern?</translation>
     <message>
         <source>The offsets were not pulled</source>
         <translation>Die Korrekturen wurden nicht übernommen</translation>
+    </message>
+    <message>
+        <source>“%1” is %2, new to the history library.</source>
+        <translation>„%1“ ist %2, neu in der Verlaufsbibliothek.</translation>
+    </message>
+    <message>
+        <source>Another machine under this name</source>
+        <translation>Eine andere Maschine unter diesem Namen</translation>
+    </message>
+    <message>
+        <source>“%1” in the history library is %2; this is %3.</source>
+        <translation>„%1“ ist in der Verlaufsbibliothek %2; dies ist %3.</translation>
+    </message>
+    <message>
+        <source>A machine&apos;s reference, tool setter and history are its own. If this is the same machine reached another way, say so; if not, give it a name of its own (Machine ▸ History Library…, Machine name) and connect again.</source>
+        <translation>Referenz, Werkzeugsensor und Verlauf gehören jeweils zu einer Maschine. Wenn dies dieselbe Maschine auf anderem Weg ist, sagen Sie es; wenn nicht, geben Sie ihr einen eigenen Namen (Maschine ▸ Verlaufsbibliothek…, Maschinenname) und verbinden Sie erneut.</translation>
+    </message>
+    <message>
+        <source>Same Machine</source>
+        <translation>Dieselbe Maschine</translation>
+    </message>
+    <message>
+        <source>Not connected: “%1” in the history library is %2, not %3. Give this machine a name of its own (Machine ▸ History Library…, Machine name), then connect again.</source>
+        <translation>Nicht verbunden: „%1“ ist in der Verlaufsbibliothek %2, nicht %3. Geben Sie dieser Maschine einen eigenen Namen (Maschine ▸ Verlaufsbibliothek…, Maschinenname) und verbinden Sie dann erneut.</translation>
+    </message>
+    <message>
+        <source>“%1” was %2 before; now it is %3.</source>
+        <translation>„%1“ war vorher %2; jetzt ist es %3.</translation>
     </message>
 </context>
 <context>

@@ -2453,10 +2453,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>SQLite 库 (*.sqlite *.db);;所有文件 (*)</translation>
     </message>
     <message>
-        <source>Give this machine a name: its history is kept under it.</source>
-        <translation>请为本机命名：其历史记录以此名称保存。</translation>
-    </message>
-    <message>
         <source>This library cannot be used: %1</source>
         <translation>无法使用此库：%1</translation>
     </message>
@@ -2491,6 +2487,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>This station&apos;s name:</source>
         <translation>本工作站的名称：</translation>
+    </message>
+    <message>
+        <source>Its kind: Carvera, grblHAL or Emulator</source>
+        <translation>其类型：Carvera、grblHAL 或 Emulator</translation>
+    </message>
+    <message>
+        <source>The name this machine&apos;s history, reference and tool setter are kept under. Left empty, the machine is called after its kind. A name stands for one machine: another machine under it is asked about.</source>
+        <translation>保存这台机器的历史、参考和对刀仪的名称。留空时，机器以其类型命名。一个名称只代表一台机器：其他机器使用该名称时会询问。</translation>
     </message>
 </context>
 <context>
@@ -3616,6 +3620,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>%1 is a library of version %2, read-only here, and too old to be read as it is. Open it once where it can be written (Toffee brings it up to date), or copy it.</source>
         <translation>%1 是版本 %2 的库，此处为只读，且版本太旧，无法按原样读取。请在可写的地方打开一次（Toffee 会将其升级），或复制它。</translation>
     </message>
+    <message>
+        <source>Reading which machine %1 is</source>
+        <translation>读取 %1 是哪台机器</translation>
+    </message>
+    <message>
+        <source>Keeping which machine %1 is</source>
+        <translation>保存 %1 是哪台机器</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
@@ -3820,6 +3832,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>Writing the controller&apos;s tool table…</source>
         <translation>正在写入控制器的刀具表…</translation>
     </message>
+    <message>
+        <source>%1 answered as %2, not as %3 as chosen. Nothing of %3&apos;s was sent. Choose %2, or Automatic (toffee-cli --controller %4, or auto), and connect again.</source>
+        <translation>%1 以 %2 的方式回答，而不是所选的 %3。未发送任何 %3 专用命令。请选择 %2 或“自动”（toffee-cli --controller %4 或 auto），然后重新连接。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineController</name>
@@ -3905,6 +3921,29 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1: no break test (Toffee cannot tell whether its M491.1 compares a tool with its TLO).</source>
         <translation>%1：无断刀检测（Toffee 无法判断其 M491.1 是否将刀具与其 TLO 比较）。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::MachineIdentity</name>
+    <message>
+        <source>the built-in emulator</source>
+        <translation>内置模拟器</translation>
+    </message>
+    <message>
+        <source>grblHAL “%1”</source>
+        <translation>grblHAL“%1”</translation>
+    </message>
+    <message>
+        <source>grblHAL at %1</source>
+        <translation>位于 %1 的 grblHAL</translation>
+    </message>
+    <message>
+        <source>the Carvera at %1</source>
+        <translation>位于 %1 的 Carvera</translation>
+    </message>
+    <message>
+        <source>the machine at %1</source>
+        <translation>位于 %1 的机器</translation>
     </message>
 </context>
 <context>
@@ -4911,6 +4950,34 @@ Save anyway?</source>
     <message>
         <source>The offsets were not pulled</source>
         <translation>未拉取补偿</translation>
+    </message>
+    <message>
+        <source>“%1” is %2, new to the history library.</source>
+        <translation>“%1”是%2，在历史库中是新的。</translation>
+    </message>
+    <message>
+        <source>Another machine under this name</source>
+        <translation>此名称下的另一台机器</translation>
+    </message>
+    <message>
+        <source>“%1” in the history library is %2; this is %3.</source>
+        <translation>历史库中的“%1”是%2；这是%3。</translation>
+    </message>
+    <message>
+        <source>A machine&apos;s reference, tool setter and history are its own. If this is the same machine reached another way, say so; if not, give it a name of its own (Machine ▸ History Library…, Machine name) and connect again.</source>
+        <translation>机器的参考、对刀仪和历史只属于它自己。如果这是通过其他方式连接的同一台机器，请说明；否则请为它起一个自己的名称（机床 ▸ 历史库…，机器名称），然后重新连接。</translation>
+    </message>
+    <message>
+        <source>Same Machine</source>
+        <translation>同一台机器</translation>
+    </message>
+    <message>
+        <source>Not connected: “%1” in the history library is %2, not %3. Give this machine a name of its own (Machine ▸ History Library…, Machine name), then connect again.</source>
+        <translation>未连接：历史库中的“%1”是%2，而不是%3。请为这台机器起一个自己的名称（机床 ▸ 历史库…，机器名称），然后重新连接。</translation>
+    </message>
+    <message>
+        <source>“%1” was %2 before; now it is %3.</source>
+        <translation>“%1”之前是%2；现在是%3。</translation>
     </message>
 </context>
 <context>

@@ -183,6 +183,11 @@ QString AppSettings::machineName() const
     return name.isEmpty() ? kDefaultMachineName : name;
 }
 
+QString AppSettings::chosenMachineName() const
+{
+    return m_settings.value(Key::MachineName).toString().trimmed();
+}
+
 void AppSettings::setMachineName(const QString &name)
 {
     m_settings.setValue(Key::MachineName, name);

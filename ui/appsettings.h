@@ -57,6 +57,8 @@ public:
     void setLibraryLocation(const QString &location);
     [[nodiscard]] QString machineName() const;
     void setMachineName(const QString &name);
+    // The name the operator gave the machine; empty when none (then machineName() is the default).
+    [[nodiscard]] QString chosenMachineName() const;
     // Who this station writes as in a shared library ("Mill 2 PC"); empty: the computer's name.
     [[nodiscard]] QString stationName() const;
     void setStationName(const QString &name);

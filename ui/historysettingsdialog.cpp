@@ -41,9 +41,14 @@ HistorySettingsDialog::HistorySettingsDialog(QWidget *parent, const LibraryLocat
                           "postgresql://user@host:port/dbname?sslmode=require. The password goes in the "
                           "PostgreSQL password file (~/.pgpass), never in the URL."));
     m_path->setMinimumWidth(420);
-    m_machine->setText(settings.machineName());
+    // Empty: the machine is called after its kind once connected (Carvera, grblHAL, Emulator).
+    m_machine->setText(settings.chosenMachineName());
     m_machine->setObjectName(u"machineNameEdit"_s);
     m_machine->setAccessibleName(tr("Machine name"));
+    m_machine->setPlaceholderText(tr("Its kind: Carvera, grblHAL or Emulator"));
+    m_machine->setToolTip(tr("The name this machine's history, reference and tool setter are kept under. "
+                             "Left empty, the machine is called after its kind. A name stands for one "
+                             "machine: another machine under it is asked about."));
     m_station->setText(settings.stationName());
     m_station->setObjectName(u"stationNameEdit"_s);
     m_station->setAccessibleName(tr("This station's name"));
@@ -114,11 +119,6 @@ void HistorySettingsDialog::browse()
 // Checked before it is taken: a library that does not open stays out of the settings.
 void HistorySettingsDialog::accept()
 {
-    if (machineName().isEmpty()) {
-        QMessageBox::warning(
-            this, tr("History Library"), tr("Give this machine a name: its history is kept under it."));
-        return;
-    }
     const auto location = LibraryLocation::parse(m_path->text());
     auto opened
         = location ? Library::open(location.value()) : Result<std::unique_ptr<Library>>(location.error());

@@ -5,6 +5,7 @@
 
 #include <QDockWidget>
 
+#include "serial/machineconnection.h"
 #include "ui/machinedock.h"
 #include "ui/rackpanel.h"
 
@@ -104,7 +105,13 @@ void MainWindow::chooseMachineTable()
 
 QString MainWindow::machineName() const
 {
-    return m_document->isLibraryTable() ? m_document->libraryMachine() : AppSettings().machineName();
+    if (m_document->isLibraryTable())
+        return m_document->libraryMachine();
+    // A machine nobody named is called after its kind once known (Emulator, Carvera, grblHAL).
+    const QString chosen = AppSettings().chosenMachineName();
+    if (chosen.isEmpty() && m_connection->identity().isKnown())
+        return m_connection->identity().defaultName();
+    return AppSettings().machineName();
 }
 
 bool MainWindow::openMachineTable(const QString &machine)

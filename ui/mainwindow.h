@@ -20,6 +20,7 @@ class QDropEvent;
 namespace Toffee {
 
 class AutoSave;
+struct MachineIdentity;
 class ConsoleDock;
 class FileWatcher;
 class HistoryDock;
@@ -132,6 +133,7 @@ private:
     // A grblHAL machine's setter and reference, and its own table (mainwindowcontroller.cpp).
     void connectControllerSettings();
     [[nodiscard]] std::optional<double> keptReference() const;
+    [[nodiscard]] QString bindMachine(const MachineIdentity &identity);
     [[nodiscard]] std::optional<ToolSetter> machineToolSetter() const;
     void editToolSetter();
     void pushOffsets();
@@ -183,6 +185,7 @@ private:
     LibraryStatusLabel *m_libraryLabel = nullptr;
     QTimer *m_remoteRetry = nullptr; // takes another station's change once a cell is no longer edited
     QString m_station; // who this window writes as in the library; empty: the computer's name
+    bool m_newMachine = false; // the machine connected to is new to the library: nothing of it adopted
     LibraryLocation m_tableLibrary; // where the open machine table came from
     bool m_tableReadOnly = false; // and whether that library may be written
     // A library table this station may only read: nothing measured could be kept, so nothing is measured.

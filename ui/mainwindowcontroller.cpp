@@ -9,6 +9,7 @@
 
 #include <QAction>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QStatusBar>
 
 #include "model/document/tooldocument.h"
@@ -40,10 +41,13 @@ void MainWindow::connectControllerSettings()
 {
     // Once the controller is known, before anything of its own is sent: grblHAL's tool setter and the
     // reference Toffee kept for the machine.
-    m_connection->setPreparer([this](ControllerKind kind, ConnectionTarget &target) {
-        if (kind == ControllerKind::GrblHal) {
+    m_connection->setPreparer([this](const MachineIdentity &identity, ConnectionTarget &target) {
+        if (const QString refused = bindMachine(identity); !refused.isEmpty())
+            return refused;
+        if (identity.controller == ControllerKind::GrblHal && !identity.emulator) {
             target.setter = machineToolSetter();
-            target.reference = keptReference();
+            // A machine new to the library adopts no reference: its first probe makes one.
+            target.reference = m_newMachine ? std::nullopt : keptReference();
         }
         return QString();
     });
@@ -62,6 +66,59 @@ void MainWindow::connectControllerSettings()
     connect(m_connection, &MachineConnection::busyChanged, this, update);
     connect(m_connection, &MachineConnection::haltedChanged, this, update);
     update();
+}
+
+// The machine's name stands for this machine in the library, or for none yet (then it is new: said, and
+// nothing of the library's adopted for it). Bound to another machine: asked whether it is the same one
+// reached another way; if not, the connection is refused, naming both. Empty: go on.
+QString MainWindow::bindMachine(const MachineIdentity &identity)
+{
+    m_newMachine = false;
+    Library *library = m_history->library();
+    if (!library)
+        return {};
+    const QString name = machineName();
+    auto bound = library->bindMachine(name, identity.key());
+    if (!bound) {
+        m_newMachine = true; // not known now: nothing of the library's is adopted for it
+        statusBar()->showMessage(bound.error().message, 10000);
+        return {};
+    }
+    using Kind = Library::MachineBinding::Kind;
+    if (bound.value().kind == Kind::New) {
+        m_newMachine = true;
+        statusBar()->showMessage(tr("“%1” is %2, new to the history library.").arg(name, identity.title()),
+            10000);
+        return {};
+    }
+    if (bound.value().kind == Kind::Same)
+        return {};
+    const MachineIdentity before = MachineIdentity::fromKey(bound.value().boundTo);
+    if (identity.followsFrom(before)) {
+        if (auto moved = library->bindMachine(name, identity.key(), true); !moved)
+            return moved.error().message;
+        statusBar()->showMessage(
+            tr("“%1” was %2 before; now it is %3.").arg(name, before.title(), identity.title()), 10000);
+        return {};
+    }
+    const QString other = before.title();
+    QMessageBox box(QMessageBox::Question, tr("Another machine under this name"),
+        tr("“%1” in the history library is %2; this is %3.").arg(name, other, identity.title()),
+        QMessageBox::Cancel, this);
+    box.setInformativeText(tr("A machine's reference, tool setter and history are its own. If this is the "
+                              "same machine reached another way, say so; if not, give it a name of its own "
+                              "(Machine ▸ History Library…, Machine name) and connect again."));
+    QPushButton *same = box.addButton(tr("Same Machine"), QMessageBox::AcceptRole);
+    same->setObjectName(u"sameMachineButton"_s);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    if (box.clickedButton() != same)
+        return tr("Not connected: “%1” in the history library is %2, not %3. Give this machine a name "
+                  "of its own (Machine ▸ History Library…, Machine name), then connect again.")
+            .arg(name, other, identity.title());
+    if (auto rebound = library->bindMachine(name, identity.key(), true); !rebound)
+        return rebound.error().message;
+    return {};
 }
 
 // The reference Toffee kept for this machine: the newest probe's in the history, else the newest measured

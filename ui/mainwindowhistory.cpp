@@ -61,11 +61,18 @@ void MainWindow::connectHistory()
         &MainWindow::showSelectedHistory);
     connect(m_historyDock->exportButton(), &QPushButton::clicked, this, &MainWindow::exportHistory);
     connect(m_history, &HistoryRecorder::usesChanged, this, &MainWindow::refreshToolLife);
-    // The machine as the library knows it: its dialect and how the window reached it.
+    // The machine as the library knows it: its controller's dialect and how the window reached it. Its name
+    // may be its kind's (a machine nobody named), known now: its history and tool life are shown.
     connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State state) {
-        if (state == MachineConnection::State::Connected && m_history->library())
+        if (state != MachineConnection::State::Connected)
+            return;
+        if (m_history->library()) {
+            const bool grblHal = m_connection->controllerKind() == ControllerKind::GrblHal;
             (void)m_history->library()->addMachine(
-                { machineName(), u"carvera"_s, m_connection->description() });
+                { machineName(), grblHal ? u"grblhal"_s : u"carvera"_s, m_connection->description() });
+        }
+        refreshToolLife();
+        showSelectedHistory();
     });
     // Ages move on while the window is open: "3 h ago" becomes "4 h ago", and a tool turns stale.
     m_document->model()->setStaleAfterDays(AppSettings().staleAfterDays());

@@ -70,7 +70,10 @@ The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator
   pull-offsets --table FILE  grblHAL: the controller's table into the file (new tools added; a changed TLO
                              marked as read from the controller, with a history event)
   probe, break-test, set-tlo, change-tool, restore, measure-rack and check-rack record every measurement in the
-  history library (--machine NAME, default Carvera), and warn when a probe is off its tool's wear trend
+  history library (--machine NAME; default Carvera, grblHAL or Emulator, as the machine is), and warn when a
+  probe is off its tool's wear trend. A name stands for one machine (its controller and how it is reached):
+  another machine under it is refused, its reference and setter never applied; --same-machine says that it
+  is the same machine reached another way
 
 Jobs: toffee-cli job check PROGRAM [--table FILE] [--machine NAME] [--dialect D] [--z-floor Z]
                              [--stale-days N] [--rack LIST]
@@ -133,7 +136,7 @@ const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s,
     u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s, u"host"_s,
     u"protocol"_s, u"seconds"_s, u"discovery-port"_s, u"controller"_s, u"setter"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"version"_s, u"emulator"_s, u"no-history"_s,
-    u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s };
+    u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s, u"same-machine"_s };
 
 // toffee-cli import's own options.
 const QSet<QString> kImportValueOptions = { u"into"_s, u"cam-units"_s };

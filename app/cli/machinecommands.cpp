@@ -92,12 +92,13 @@ void printTlo(
     call.out << Qt::endl;
 }
 
-void printStatus(
-    Invocation &call, const MachineStatus &s, const FirmwareInfo &firmware, ControllerKind controller)
+void printStatus(Invocation &call, const MachineStatus &s, const FirmwareInfo &firmware,
+    const MachineIdentity &identity, const QString &machine)
 {
     if (call.json) {
         printJson(call,
-            QJsonObject { { u"controller"_s, controllerKindName(controller) }, { u"state"_s, s.state }, { u"tool"_s, s.tool ? QJsonValue(*s.tool) : QJsonValue() },
+            QJsonObject { { u"controller"_s, controllerKindName(identity.controller) },
+                { u"machine"_s, machine }, { u"identity"_s, identity.key() }, { u"state"_s, s.state }, { u"tool"_s, s.tool ? QJsonValue(*s.tool) : QJsonValue() },
                 { u"tlo"_s, s.tlo ? QJsonValue(*s.tlo) : QJsonValue() }, { u"mpos"_s, axes(s.mpos) },
                 { u"wpos"_s, axes(s.wpos) },
                 { u"halt_reason"_s, s.haltReason ? QJsonValue(*s.haltReason) : QJsonValue() },
@@ -112,7 +113,7 @@ void printStatus(
         call.out << "  T" << *s.tool << "  TLO " << mm(s.tlo.value_or(0));
     call.out << "  MPos " << mm(s.mpos[0]) << ' ' << mm(s.mpos[1]) << ' ' << mm(s.mpos[2]) << "  WPos "
              << mm(s.wpos[0]) << ' ' << mm(s.wpos[1]) << ' ' << mm(s.wpos[2]) << Qt::endl;
-    call.out << firmware.description();
+    call.out << machine << ": " << identity.title() << ", " << firmware.description();
     if (!firmware.hasBreakTest())
         call.out << ": no break test" << (firmware.hasManualOffset() ? "" : ", no manual offset");
     call.out << Qt::endl;
@@ -176,8 +177,8 @@ public:
     {
         QObject::connect(&m_connection, &MachineConnection::connectFailed, &m_loop,
             [this] { finishWith(m_connection.connectResult()); });
-        m_connection.setPreparer([this](ControllerKind kind, ConnectionTarget &target) {
-            if (auto prepared = prepareForController(m_call, m_options, kind); !prepared)
+        m_connection.setPreparer([this](const MachineIdentity &identity, ConnectionTarget &target) {
+            if (auto prepared = prepareForController(m_call, m_options, identity); !prepared)
                 return prepared.error().message;
             target.setter = m_options.target.setter;
             target.reference = m_options.target.reference;
@@ -418,7 +419,8 @@ void MachineRun::operate()
     // without a terminal, said with its limit on one.
     attendToolChanges(c.session(), m_call.err, &m_loop);
     const auto status = printed(
-        [this](const SessionResult &r) { printStatus(m_call, *r.status, m_connection.firmware(), m_connection.controllerKind());
+        [this](const SessionResult &r) { printStatus(
+                m_call, *r.status, m_connection.firmware(), m_connection.identity(), m_options.machine);
         });
     bool started = true;
     if (command == u"status")

@@ -213,6 +213,7 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
         u"restore"_s, u"measure-rack"_s, u"check-rack"_s, u"pull-offsets"_s };
     if (!kRecording.contains(call.command))
         return {};
+    // Without --machine, the name is the machine's kind's, once known (prepareForController).
     o.machine = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
     if (o.machine.isEmpty())
         return Error { u"--machine needs a name."_s };
@@ -223,6 +224,13 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
               "recording the history."_s };
     o.library = library.takeValue();
     return {};
+}
+
+// A library busy with another program's write, or out of reach: what the command measures is kept on this
+// computer and sent later, as any measurement the library cannot take now.
+bool laterWill(const Library &library, const Error &error)
+{
+    return error.code == Library::kBusy || error.code == Library::kUnreachable || library.isConnectionLost();
 }
 
 // The machine as the library knows it: its controller's dialect, and how it was reached this time.
@@ -238,7 +246,7 @@ Result<void> registerMachine(const Invocation &call, MachineOptions &o, Controll
     if (auto added = o.library->addMachine({ o.machine, dialect, connection }); !added) {
         // Another program holds the library for now: the machine may still measure, and what it measures
         // is kept on this computer and sent later, as any measurement the library cannot take now.
-        if (added.error().code != Library::kBusy)
+        if (!laterWill(*o.library, added.error()))
             return Error { added.error().message
                 + u" Nothing was sent to the machine but the questions that tell its controller."_s };
         call.err << u"toffee-cli: warning: "_s << added.error().message
@@ -328,11 +336,68 @@ std::optional<Dialect> programDialect(const Invocation &call, const Library *lib
     return Dialect::Carvera;
 }
 
-Result<void> prepareForController(const Invocation &call, MachineOptions &options, ControllerKind kind)
+// The name stands for this machine, or for none yet; another machine under it is refused.
+Result<void> bindIdentity(const Invocation &call, MachineOptions &o)
 {
+    if (!o.library)
+        return {};
+    auto bound = o.library->bindMachine(o.machine, o.identity.key(), call.has(u"same-machine"_s));
+    if (!bound) {
+        if (!laterWill(*o.library, bound.error()))
+            return Error { bound.error().message };
+        // Not known now: nothing of the library's is adopted for it.
+        o.newMachine = true;
+        call.err << u"toffee-cli: warning: "_s << bound.error().message << Qt::endl;
+        return {};
+    }
+    using Kind = Library::MachineBinding::Kind;
+    if (bound.value().kind == Kind::Other) {
+        const MachineIdentity before = MachineIdentity::fromKey(bound.value().boundTo);
+        if (o.identity.followsFrom(before)) {
+            if (auto moved = o.library->bindMachine(o.machine, o.identity.key(), true); !moved)
+                return Error { moved.error().message };
+            call.err << u"toffee-cli: \"%1\" was %2 before; now it is %3."_s.arg(o.machine, before.title(),
+                            o.identity.title())
+                     << Qt::endl;
+            return {};
+        }
+    }
+    if (bound.value().kind == Kind::Other)
+        return Error { u"The library's machine \"%1\" is %2; this is %3. A machine's reference, tool setter "
+                       "and history are its own: give this one a name of its own (--machine NAME), or, if it "
+                       "is the same machine reached another way, say so (--same-machine). Nothing was sent to "
+                       "the machine but the questions that tell its controller."_s.arg(o.machine,
+                           MachineIdentity::fromKey(bound.value().boundTo).title(), o.identity.title()) };
+    if (bound.value().kind == Kind::New) {
+        o.newMachine = true;
+        call.err << u"toffee-cli: \"%1\" is %2, new to the library"_s.arg(o.machine, o.identity.title())
+                 << (o.identity.controller == ControllerKind::GrblHal && !o.identity.emulator
+                            ? u": it keeps no reference of its own, so the first tool it measures becomes "
+                              "its reference."_s
+                            : u"."_s)
+                 << Qt::endl;
+    }
+    return {};
+}
+
+Result<void> prepareForController(
+    const Invocation &call, MachineOptions &options, const MachineIdentity &identity)
+{
+    const ControllerKind kind = identity.controller;
+    options.identity = identity;
+    if (!call.has(u"machine"_s))
+        options.machine = options.identity.defaultName();
+    if (auto bound = bindIdentity(call, options); !bound)
+        return bound;
     if (auto registered = registerMachine(call, options, kind); !registered)
         return registered;
-    return readReference(call, options, kind);
+    if (auto read = readReference(call, options, kind); !read)
+        return read;
+    // A machine new to the library adopts no reference: not the history's of a name it takes over, nor a
+    // table's, measured on who knows which machine.
+    if (options.newMachine)
+        options.target.reference.reset();
+    return {};
 }
 
 Result<MachineOptions> readMachineOptions(const Invocation &call)

@@ -30,6 +30,9 @@ struct MachineOptions
     // machine moves; and the machine's name in it (--machine).
     std::unique_ptr<Library> library;
     QString machine;
+    // Which machine it is, once its controller is known; whether the library sees it for the first time.
+    MachineIdentity identity;
+    bool newMachine = false;
     QList<int> rack; // --rack: the tools the machine's rack holds (1-6, a C1's, by default)
     bool useStoredTlo = false; // change-tool: a manual change takes the tool's fresh stored TLO
     int staleDays = 7; // --stale-days: what "fresh" means
@@ -66,10 +69,12 @@ void sendWaiting(Library &library, QTextStream &err);
     const Invocation &call, const Library *library, const QString &machine);
 
 [[nodiscard]] Result<MachineOptions> readMachineOptions(const Invocation &call);
-// Once the controller is known (MachineConnection's preparer), before anything of its own is sent: the machine
-// is entered in the library with that controller's dialect, and grblHAL is given its tool setter and the
-// reference Toffee kept for the machine (in options.target).
+// Once the controller is known (MachineConnection's preparer), before anything of its own is sent: the
+// machine's name (--machine, else the identity's default), bound to its identity in the library (another
+// machine under the name is refused; one seen for the first time is said on stderr and adopts no reference),
+// entered with that controller's dialect, and grblHAL given its tool setter and the reference Toffee kept for
+// the machine (in options.target).
 [[nodiscard]] Result<void> prepareForController(
-    const Invocation &call, MachineOptions &options, ControllerKind kind);
+    const Invocation &call, MachineOptions &options, const MachineIdentity &identity);
 
 } // namespace Toffee::Cli

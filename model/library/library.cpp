@@ -109,6 +109,36 @@ Result<std::optional<ToolSetter>> Library::toolSetter(const QString &machine) co
     return std::optional<ToolSetter>(setter.value());
 }
 
+Result<Library::MachineBinding> Library::bindMachine(const QString &machine, const QString &identity, bool rebind)
+{
+    QString bound;
+    {
+        QSqlQuery query(database());
+        query.prepare(u"SELECT identity FROM machines WHERE name = ?"_s);
+        query.addBindValue(machine);
+        // A library older than identities, read-only here, has no such column: nothing is bound in it.
+        if (query.exec() && query.next())
+            bound = query.value(0).toString();
+        else if (query.lastError().isValid() && !isReadOnly())
+            return failure(tr("Reading which machine %1 is").arg(machine), query);
+    }
+    if (bound == identity)
+        return MachineBinding { MachineBinding::Kind::Same, {} };
+    if (!bound.isEmpty() && !rebind)
+        return MachineBinding { MachineBinding::Kind::Other, bound };
+    const MachineBinding result { bound.isEmpty() ? MachineBinding::Kind::New : MachineBinding::Kind::Same, {} };
+    if (isReadOnly())
+        return result;
+    QSqlQuery query(database());
+    query.prepare(u"INSERT INTO machines (name, identity) VALUES (?, ?) ON CONFLICT (name) DO UPDATE SET "
+                  "identity = excluded.identity"_s);
+    query.addBindValue(machine);
+    query.addBindValue(identity);
+    if (!query.exec())
+        return failure(tr("Keeping which machine %1 is").arg(machine), query);
+    return result;
+}
+
 Result<void> Library::ensureMachines(const QStringList &names)
 {
     QSqlQuery query(database());

@@ -36,7 +36,7 @@ class Library
 
 public:
     // The schema this Toffee writes. A library with a higher version is refused, never altered.
-    static constexpr int kSchemaVersion = 4;
+    static constexpr int kSchemaVersion = 5;
     // The channel a shared library's changes are announced on; the payload names the machine, the station and
     // the time (LibraryWatcher::announced).
     static constexpr QLatin1StringView kChannel { "toffee_library" };
@@ -92,6 +92,19 @@ public:
     // machine added when new. Nothing when never set.
     [[nodiscard]] Result<void> setToolSetter(const QString &machine, const ToolSetter &setter);
     [[nodiscard]] Result<std::optional<ToolSetter>> toolSetter(const QString &machine) const;
+    // Which machine a name stands for: `identity` (MachineIdentity::key(): the controller and how it is
+    // reached). A name bound to nothing yet (new, or kept by a library older than identities) is bound to it
+    // now: New. The same identity: Same. Another: Other, with the one it is bound to, and nothing changed
+    // unless `rebind` (the operator said it is the same machine, reached another way). A library this station
+    // may only read binds nothing and answers as if it had.
+    struct MachineBinding
+    {
+        enum class Kind { New, Same, Other };
+        Kind kind = Kind::New;
+        QString boundTo; // Other: the identity the name is bound to
+    };
+    [[nodiscard]] Result<MachineBinding> bindMachine(
+        const QString &machine, const QString &identity, bool rebind = false);
     // Appends the events in one transaction (their machines added as needed): all or none. An event whose id
     // is already there is skipped, so writing a batch again after an unclear failure duplicates nothing.
     // Each new event also updates its tool in the machine's table, when the library holds one. Returns how

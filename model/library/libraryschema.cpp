@@ -73,6 +73,11 @@ const QList<QStringList> kMigrations = {
         u"CREATE INDEX events_by_tool ON events (machine, tool, measured_at)"_s,
         u"CREATE INDEX events_by_time ON events (measured_at)"_s,
     },
+    {
+        // Which machine each name stands for (Library::bindMachine): its controller and how it is reached;
+        // empty for a name no station has bound yet (every machine of an older library).
+        u"ALTER TABLE machines ADD COLUMN identity TEXT NOT NULL DEFAULT ''"_s,
+    },
 };
 
 // PostgreSQL before 14 is past its end of life; ON CONFLICT and pg_notify are older than that.

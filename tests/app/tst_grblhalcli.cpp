@@ -88,10 +88,14 @@ private Q_SLOTS:
         QVERIFY(peer->writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 }, { 3, 0.0 } }));
         m_target = peer->cliTarget();
         QVERIFY(writeEmptyTable(table()));
+        // The machine's owner named the controller ($I=, kept in its EEPROM): that is how Toffee knows it
+        // again, on whatever port it answers after a restart.
+        QVERIFY(peer->ask("$I=LongMill").contains("ok"));
 
-        // Detection: $I says grblHAL, its version and a table of 16 tools.
+        // Detection: $I says grblHAL, its version, its name and a table of 16 tools.
         Run run = machine({ u"status"_s });
         QVERIFY2(run.exitCode == 0, run.err.constData());
+        QCOMPARE(json(run)[u"identity"_s].toString(), u"grblhal:name=LongMill"_s);
         const QJsonObject firmware = json(run)[u"firmware"_s].toObject();
         QCOMPARE(firmware[u"controller"_s].toString(), u"grblhal"_s);
         QCOMPARE(firmware[u"version"_s].toString(), u"1.1f.20260817"_s);
@@ -291,9 +295,19 @@ private Q_SLOTS:
         QCOMPARE(json(run)[u"controller"_s].toString(), u"grblhal"_s);
         QCOMPARE(json(run)[u"firmware"_s][u"controller"_s].toString(), u"grblhal"_s);
         QCOMPARE(machine({ u"select-tool"_s, u"4"_s }, path).exitCode, 0);
-        // The history's reference (−70, from the TCP story's machine of the same name) is this machine's too:
-        // a tool 20 mm long touches at −80, 10 mm shorter than the reference tool.
+        // The name LongMill stands for the machine of the TCP story (the controller named LongMill): this one
+        // gives no name of its own and is refused until the operator says it is the same machine; nothing
+        // recorded, nothing written.
         run = machine({ u"probe"_s }, path);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains("The library's machine \"LongMill\" is grblHAL \xe2\x80\x9cLongMill\xe2\x80\x9d")
+                && run.err.contains(QByteArray(QByteArray("this is grblHAL at ") + peer.pty().toUtf8()))
+                && run.err.contains("--same-machine"),
+            run.err.constData());
+        QVERIFY(toolIn(path, 4).isEmpty());
+        // Said to be the same machine: the history's reference (−70, from the TCP story) is this machine's
+        // too: a tool 20 mm long touches at −80, 10 mm shorter than the reference tool.
+        run = machine({ u"--same-machine"_s, u"probe"_s }, path);
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QCOMPARE(json(run)[u"current_mz"_s].toDouble(), -80.0);
         QCOMPARE(toolIn(path, 4)[u"measured_tlo"_s].toDouble(), json(run)[u"tlo"_s].toDouble());
@@ -336,7 +350,7 @@ private Q_SLOTS:
             QVERIFY(peer.ask(line).contains("ok"));
         const QByteArray before = readFile(path);
         const qsizetype events = historyOf(1).size() + historyOf(2).size() + historyOf(3).size();
-        const Run run = machine({ u"pull-offsets"_s }, path);
+        const Run run = machine({ u"--same-machine"_s, u"pull-offsets"_s }, path);
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(json(run)[u"error"_s].toString().contains(u"T2: "_s), run.out.constData());
         QVERIFY2(json(run)[u"error"_s].toString().contains(u"Nothing was recorded"_s), run.out.constData());

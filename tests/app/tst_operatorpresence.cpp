@@ -109,11 +109,12 @@ class TestOperatorPresence : public QObject
     }
 
     // grblHAL with its setter at machine Z -100, T1 (30 mm) in the spindle and T2 (45.3 mm) to come, and the
-    // example table fresh.
+    // example table fresh. Each story's grblHAL is the same machine, LongMill, which it calls itself ($I=):
+    // Toffee knows it again on whatever port it answers.
     bool startWithT1(GrblHalPeer &peer)
     {
         return peer.started() && peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }) && freshTable()
-            && peer.ask("M61 Q1").contains("ok");
+            && peer.ask("$I=LongMill").contains("ok") && peer.ask("M61 Q1").contains("ok");
     }
 
 private Q_SLOTS:

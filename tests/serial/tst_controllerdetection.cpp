@@ -124,8 +124,8 @@ private Q_SLOTS:
         QVERIFY(pty || peer.port() != 23);
         MachineConnection connection;
         QList<ControllerKind> prepared;
-        connection.setPreparer([&prepared](ControllerKind kind, ConnectionTarget &) {
-            prepared << kind;
+        connection.setPreparer([&prepared](const MachineIdentity &identity, ConnectionTarget &) {
+            prepared << identity.controller;
             return QString();
         });
         const ConnectionTarget target
@@ -205,7 +205,8 @@ private Q_SLOTS:
         chosen.controller = ControllerKind::Carvera;
         const Outcome refused = connectTo(connection, chosen);
         QVERIFY(!refused.connected);
-        QVERIFY2(refused.message.contains(u"which no Carvera does"_s) && refused.message.contains(u"grblHAL"_s),
+        QVERIFY2(refused.message.contains(u"answered as grblHAL, not as Carvera as chosen"_s)
+                && refused.message.contains(u"--controller grblhal"_s),
             qPrintable(refused.message));
         connection.disconnectFromMachine();
         QTest::qWait(200);
@@ -235,8 +236,8 @@ private Q_SLOTS:
         };
         MachineConnection connection;
         QList<ControllerKind> prepared;
-        connection.setPreparer([&prepared](ControllerKind kind, ConnectionTarget &) {
-            prepared << kind;
+        connection.setPreparer([&prepared](const MachineIdentity &identity, ConnectionTarget &) {
+            prepared << identity.controller;
             return QString();
         });
         const Outcome refused = connectTo(connection, hostTarget(machine.address()));

@@ -12,11 +12,14 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableWidget>
 
 #include "model/library/library.h"
 #include "tests/support/grblhalpeer.h"
+#include "tests/support/processes.h"
 #include "tests/support/station.h"
 #include "ui/appsettings.h"
 #include "ui/connectionpanel.h"
@@ -125,8 +128,96 @@ private Q_SLOTS:
         QSettings().clear();
     }
 
+    // Two machines, one library: grblHAL measured in the window, then the built-in emulator by toffee-cli
+    // with the same library. Each is its own machine, named after its kind and said to be new the first time;
+    // connected again, grblHAL keeps its own reference (−70), not the emulator's (−115.340, which once made
+    // T2's TLO 45.340 in grblHAL's table). A name bound to the emulator refuses grblHAL in the window, unless
+    // the operator says it is the same machine; cancelled, nothing is sent but the questions.
+    void twoMachinesKeepTheirOwnReference()
+    {
+        GrblHalPeer peer;
+        QVERIFY2(peer.started(), qPrintable(peer.errors()));
+        QVERIFY(peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }));
+        QSettings().clear();
+        Station s;
+        s.window.resize(1280, 720);
+        QStringList said;
+        connect(s.window.statusBar(), &QStatusBar::messageChanged, this,
+            [&said](const QString &message) { said << message; });
+        connectTo(s, peer);
+        QVERIFY2(said.contains(
+                     u"“grblHAL” is grblHAL at 127.0.0.1:%1, new to the history library."_s.arg(peer.port())),
+            qPrintable(said.join(u" | "_s)));
+        inNextDialog<ToolSetterDialog>([](ToolSetterDialog *d) {
+            d->findChild<QDoubleSpinBox *>(u"setterZMin"_s)->setValue(-120.0);
+            d->findChild<QDoubleSpinBox *>(u"setterSeekFeed"_s)->setValue(3000.0);
+            d->findChild<QDoubleSpinBox *>(u"setterLatchFeed"_s)->setValue(300.0);
+            d->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok)->click();
+        });
+        s.trigger(u"actionToolSetter"_s);
+        QTRY_VERIFY(s.window.statusBar()->currentMessage().startsWith(u"grblHAL's tool setter"_s));
+        QVERIFY(s.window.connection()->selectTool(1, {}));
+        QVERIFY(waitIdle(s));
+        s.probe();
+        QVERIFY(waitIdle(s));
+        QCOMPARE(*s.table().find(1)->referenceMz, -70.0);
+        s.window.connection()->disconnectFromMachine();
+
+        const Run emulator = cli({ u"--json"_s, u"--library"_s, s.libraryPath(), u"--emulator"_s, u"probe"_s });
+        QVERIFY2(emulator.exitCode == 0, emulator.err.constData());
+        QVERIFY2(emulator.err.contains("\"Emulator\" is the built-in emulator, new to the library"),
+            emulator.err.constData());
+
+        said.clear();
+        connectTo(s, peer);
+        QVERIFY2(!said.join(u'|').contains(u"new to the history library"_s), qPrintable(said.join(u'|')));
+        QVERIFY(s.window.connection()->selectTool(2, {}));
+        QVERIFY(waitIdle(s));
+        s.probe();
+        QVERIFY(waitIdle(s));
+        QCOMPARE(*s.table().find(2)->measuredTlo, 15.3);
+        QCOMPARE(*s.table().find(2)->referenceMz, -70.0);
+        QCOMPARE(peer.tableZ(2), std::optional(15.3));
+        {
+            auto library = Library::open({ s.libraryPath() });
+            HistoryQuery grbl;
+            grbl.machine = u"grblHAL"_s;
+            QCOMPARE(library.value()->history(grbl).value().size(), 2);
+            HistoryQuery emulated;
+            emulated.machine = u"Emulator"_s;
+            QCOMPARE(library.value()->history(emulated).value().size(), 1);
+        }
+        s.window.connection()->disconnectFromMachine();
+
+        // Named "Emulator" in the settings: that name is the emulator's; grblHAL is asked about, and cancelled.
+        AppSettings().setMachineName(u"Emulator"_s);
+        // The question (Cancel is its default), then the window's word that it did not connect.
+        QString asked;
+        QString refusal;
+        answerAnyBox(&asked);
+        std::function<void()> thenTheRefusal = [&] {
+            if (asked.isEmpty())
+                return QTimer::singleShot(10, thenTheRefusal);
+            answerAnyBox(&refusal);
+        };
+        QTimer::singleShot(10, thenTheRefusal);
+        QSignalSpy failed(s.window.connection(), &MachineConnection::connectFailed);
+        QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 15000);
+        QTRY_VERIFY2(refusal.contains(u"Give this machine a name of its own"_s), qPrintable(refusal));
+        QVERIFY2(asked.contains(u"“Emulator” in the history library is the built-in emulator; this is grblHAL "
+                                "at 127.0.0.1:%1"_s.arg(peer.port())),
+            qPrintable(asked));
+        QVERIFY2(failed.front().front().toString().contains(u"Give this machine a name of its own"_s),
+            qPrintable(failed.front().front().toString()));
+        QCOMPARE(s.window.connection()->state(), MachineConnection::State::Disconnected);
+        QCOMPARE(peer.tableZ(2), std::optional(15.3));
+        AppSettings().setMachineName({});
+    }
+
     void aLongMillOwnersDay()
     {
+        QSettings().clear(); // no setter kept on this computer from another story
         GrblHalPeer peer;
         QVERIFY2(peer.started(), qPrintable(peer.errors()));
         QVERIFY(peer.writeSetter(-100.0, { { 1, 30.0 }, { 2, 45.3 } }));
@@ -168,7 +259,8 @@ private Q_SLOTS:
         QCOMPARE(s.window.connection()->session()->toolSetter()->zMin, -120.0);
         {
             auto library = Library::open({ s.libraryPath() });
-            const auto kept = library.value()->toolSetter(AppSettings().machineName());
+            // Kept under the machine's name: nobody named it, so it is called after its kind.
+            const auto kept = library.value()->toolSetter(u"grblHAL"_s);
             QVERIFY(kept && kept.value());
             QCOMPARE(kept.value()->seekFeed, 3000.0);
         }

@@ -188,9 +188,10 @@ private Q_SLOTS:
             QVERIFY(library.value()->append({ makeEvent(1, EventKind::Probe, 0, -3.5) }));
         }
         {
-            // As Toffee wrote it before machines had a tool setter.
+            // As Toffee wrote it before machines had a tool setter (or an identity).
             RawConnection raw(path, u"raw-v2"_s);
             QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN setter"_s));
+            QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN identity"_s));
             QVERIFY(raw.exec(u"UPDATE toffee_schema SET version = 2"_s));
         }
         auto library = Library::open({ path });
@@ -232,6 +233,7 @@ private Q_SLOTS:
         {
             // As Toffee wrote it before a new cutter was an event: its CHECK refuses the kind.
             RawConnection raw(path, u"raw-v3"_s);
+            QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN identity"_s));
             QVERIFY(raw.exec(u"DROP TABLE events"_s));
             QVERIFY(
                 raw.exec(u"CREATE TABLE events (id TEXT PRIMARY KEY, machine TEXT NOT NULL REFERENCES "
@@ -271,6 +273,57 @@ private Q_SLOTS:
         QVERIFY(library.value()->appendUse({ before, after }));
         QCOMPARE(library.value()->usedLife(u"Carvera"_s, 3).value().value(3), (UsedLife { 90.0, 1 }));
         QCOMPARE(library.value()->usedLife(u"Carvera"_s).value().value(3), (UsedLife { 90.0, 1 }));
+    }
+
+    // A name stands for one machine: bound to the first identity it meets (new), the same again (same),
+    // another refused without a change (other, naming the one it is), bound anew only when the operator says it
+    // is the same machine reached another way. A version-4 library (no identities) is brought up to date with
+    // every event and machine kept, its machines bound to nothing until one is met; read-only, it is read and
+    // binds nothing.
+    void aNameStandsForOneMachine()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        using Kind = Library::MachineBinding::Kind;
+        {
+            auto library = Library::open({ path });
+            QVERIFY(library.value()->append({ makeEvent(1, EventKind::Probe, 0, -3.5) }));
+            QVERIFY(library.value()->setToolSetter(u"LongMill"_s, ToolSetter::parse(u"0,0,-90"_s).value()));
+        }
+        {
+            // As Toffee wrote it before machines had an identity.
+            RawConnection raw(path, u"raw-v4"_s);
+            QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN identity"_s));
+            QVERIFY(raw.exec(u"UPDATE toffee_schema SET version = 4"_s));
+        }
+        {
+            auto readOnly = Library::open({ path }, Library::Options { .readOnly = true });
+            QVERIFY2(readOnly, qPrintable(readOnly ? QString() : readOnly.error().message));
+            const auto bound = readOnly.value()->bindMachine(u"Carvera"_s, u"carvera:/dev/ttyACM0"_s);
+            QVERIFY2(bound, qPrintable(bound ? QString() : bound.error().message));
+            QCOMPARE(bound.value().kind, Kind::New);
+            QCOMPARE(readOnly.value()->history({}).value().size(), 1);
+        }
+        auto library = Library::open({ path });
+        QVERIFY2(library, qPrintable(library ? QString() : library.error().message));
+        Library &l = *library.value();
+        QCOMPARE(l.history({}).value().size(), 1); // nothing lost on the way
+        QCOMPARE(l.toolSetter(u"LongMill"_s).value()->zMin, -90.0);
+        QCOMPARE(l.bindMachine(u"Carvera"_s, u"carvera:/dev/ttyACM0"_s).value().kind, Kind::New);
+        QCOMPARE(l.bindMachine(u"Carvera"_s, u"carvera:/dev/ttyACM0"_s).value().kind, Kind::Same);
+        const auto other = l.bindMachine(u"Carvera"_s, u"grblhal:127.0.0.1:23"_s);
+        QCOMPARE(other.value().kind, Kind::Other);
+        QCOMPARE(other.value().boundTo, u"carvera:/dev/ttyACM0"_s);
+        QCOMPARE(l.bindMachine(u"Carvera"_s, u"carvera:/dev/ttyACM0"_s).value().kind, Kind::Same); // unchanged
+        QCOMPARE(l.bindMachine(u"LongMill"_s, u"grblhal:127.0.0.1:23"_s).value().kind, Kind::New);
+        QCOMPARE(l.bindMachine(u"Carvera"_s, u"carvera:192.168.1.57:2222"_s, true).value().kind, Kind::Same);
+        QCOMPARE(l.bindMachine(u"Carvera"_s, u"carvera:192.168.1.57:2222"_s).value().kind, Kind::Same);
+        QCOMPARE(l.bindMachine(u"Emulator"_s, u"emulator"_s).value().kind, Kind::New);
+        QCOMPARE(l.toolSetter(u"LongMill"_s).value()->zMin, -90.0); // binding keeps the rest of the machine
+        library.value().reset();
+        RawConnection raw(path, u"raw-v5"_s);
+        QCOMPARE(raw.value(u"SELECT identity FROM machines WHERE name = 'LongMill'"_s).toString(),
+            u"grblhal:127.0.0.1:23"_s);
     }
 
     void refusesANewerLibraryAndLeavesItAsItIs()
