@@ -178,6 +178,18 @@ ConsoleCheck ConsoleCheck::checkMotion(const GCodeBlock &block, const QString &t
     }
     if (block.has('M', 3) || block.has('M', 4))
         return confirm(tr("%1 starts the spindle.").arg(trimmed));
+    // Axis words that set an offset rather than a position: asked about all the same (the offset is what the
+    // machine cuts with next), in words that are true (it was "moves the machine").
+    if (block.has('G', 10))
+        return confirm(tr("%1 writes an offset into the controller (a tool's length or a work offset); "
+                          "nothing moves, but the next moves use it.")
+                           .arg(trimmed));
+    if (block.has('G', 92))
+        return confirm(tr("%1 shifts the work coordinates; nothing moves, but the next moves use them.")
+                           .arg(trimmed));
+    if (block.has('G', 43.1))
+        return confirm(tr("%1 sets the tool length offset in force; nothing moves, but the next moves use it.")
+                           .arg(trimmed));
     const auto &ws = block.words;
     const bool motion = std::any_of(ws.cbegin(), ws.cend(),
                             [](const GCodeWord &w) { return QByteArrayView("XYZABC").contains(w.letter); })

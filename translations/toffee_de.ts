@@ -1411,6 +1411,18 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>Typed, M493.3 H can set a TLO more than 100 mm off: after an M493.3 Z the community firmware measures H from the TLO instead of the tool&apos;s height. Under &quot;Set the offset by hand&quot;, choose Gauge height above Z0: Toffee works the TLO out from the position and sends it as M493.3 Z.</source>
         <translation>Von Hand eingegeben kann M493.3 H eine Längenkorrektur setzen, die um mehr als 100 mm falsch ist: Nach einem M493.3 Z misst die Community-Firmware H von der Längenkorrektur statt von der Höhe des Werkzeugs. Wählen Sie unter „Korrektur von Hand setzen“ „Lehrenhöhe über Z0“: Toffee berechnet die Längenkorrektur aus der Position und sendet sie als M493.3 Z.</translation>
     </message>
+    <message>
+        <source>%1 writes an offset into the controller (a tool&apos;s length or a work offset); nothing moves, but the next moves use it.</source>
+        <translation>%1 schreibt einen Versatz in die Steuerung (eine Werkzeuglänge oder einen Nullpunkt); nichts bewegt sich, aber die nächsten Bewegungen verwenden ihn.</translation>
+    </message>
+    <message>
+        <source>%1 shifts the work coordinates; nothing moves, but the next moves use them.</source>
+        <translation>%1 verschiebt die Werkstückkoordinaten; nichts bewegt sich, aber die nächsten Bewegungen verwenden sie.</translation>
+    </message>
+    <message>
+        <source>%1 sets the tool length offset in force; nothing moves, but the next moves use it.</source>
+        <translation>%1 setzt den wirksamen Werkzeuglängenversatz; nichts bewegt sich, aber die nächsten Bewegungen verwenden ihn.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleDock</name>

@@ -1411,6 +1411,18 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>Typed, M493.3 H can set a TLO more than 100 mm off: after an M493.3 Z the community firmware measures H from the TLO instead of the tool&apos;s height. Under &quot;Set the offset by hand&quot;, choose Gauge height above Z0: Toffee works the TLO out from the position and sends it as M493.3 Z.</source>
         <translation>手动输入的 M493.3 H 可能使 TLO 偏差超过 100 mm：在 M493.3 Z 之后，社区固件从 TLO 而不是刀具高度起算 H。请在“手动设置补偿”中选择“Z0 以上的量规高度”：Toffee 会根据位置算出 TLO 并以 M493.3 Z 发送。</translation>
     </message>
+    <message>
+        <source>%1 writes an offset into the controller (a tool&apos;s length or a work offset); nothing moves, but the next moves use it.</source>
+        <translation>%1 将一个偏置写入控制器（刀具长度或工件偏置）；机器不会移动，但之后的移动会使用它。</translation>
+    </message>
+    <message>
+        <source>%1 shifts the work coordinates; nothing moves, but the next moves use them.</source>
+        <translation>%1 平移工件坐标；机器不会移动，但之后的移动会使用它们。</translation>
+    </message>
+    <message>
+        <source>%1 sets the tool length offset in force; nothing moves, but the next moves use it.</source>
+        <translation>%1 设置当前生效的刀具长度偏置；机器不会移动，但之后的移动会使用它。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleDock</name>
