@@ -79,61 +79,6 @@ void MachineConnection::teardown()
     m_transport.reset();
 }
 
-std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target)
-{
-    if (target.emulator) {
-        auto transport = std::make_unique<EmulatorTransport>();
-        CarveraEmulator *machine = transport->emulator();
-        if (target.emulatorStock)
-            machine->setFirmware(CarveraEmulator::Firmware::Stock);
-        if (target.emulatorPaced)
-            machine->setTiming(CarveraEmulator::realisticTiming());
-        return transport;
-    }
-    // The transport's first question is harmless to every controller, and checks a forced protocol.
-    const auto protocol = target.protocol;
-    if (target.isNetwork()) {
-        auto transport
-            = std::make_unique<TcpTransport>(TcpTransport::Address { target.host, target.tcpPort });
-        transport->setConnectTimeoutMs(target.timeoutMs);
-        transport->setProtocol(protocol);
-        return transport;
-    }
-    auto transport = std::make_unique<SerialPortTransport>(target.port, target.baud);
-    transport->setProtocol(protocol);
-    return transport;
-}
-
-std::unique_ptr<MachineController> makeController(MachineLink *link, ControllerKind kind)
-{
-    if (kind == ControllerKind::GrblHal)
-        return std::make_unique<GrblHalController>(link);
-    return std::make_unique<MachineSession>(link);
-}
-
-std::optional<ControllerKind> controllerKindFromName(const QString &name)
-{
-    for (const ControllerKind kind : { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal }) {
-        if (name == controllerKindName(kind))
-            return kind;
-    }
-    return std::nullopt;
-}
-
-ControllerKind ConnectionTarget::knownController() const
-{
-    return emulator ? ControllerKind::Carvera : controller;
-}
-
-QString ConnectionTarget::name() const
-{
-    if (emulator)
-        return u"emulator"_s;
-    if (isNetwork())
-        return TcpTransport::Address { host, tcpPort }.text();
-    return port;
-}
-
 void MachineConnection::connectTo(const ConnectionTarget &target)
 {
     m_target = target;
@@ -248,44 +193,6 @@ void MachineConnection::startController(ControllerKind kind)
             Q_EMIT interruptionChecked(interruptionVerdict(before, result));
         }
     });
-}
-
-QString MachineConnection::interruptionVerdict(const Interruption &before, const SessionResult &now)
-{
-    const auto tool = now.status ? now.status->tool : now.tool;
-    const std::optional<double> tlo = now.tlo ? std::optional(now.tlo->tlo())
-        : now.status                          ? now.status->tlo
-                                              : std::nullopt;
-    const std::optional<double> currentMz = now.tlo ? now.tlo->knownCurrentMz() : std::nullopt;
-    auto toolName = [](std::optional<int> t) {
-        return !t ? tr("an unknown tool") : *t < 0 ? tr("no tool") : u"T"_s + QString::number(*t);
-    };
-    auto mm = [](std::optional<double> v) {
-        return v ? QString::number(*v, 'f', 3) : tr("unknown");
-    };
-    auto differs = [](std::optional<double> a, std::optional<double> b) {
-        return a && b && std::abs(*a - *b) >= 0.0005;
-    };
-    const QString held
-        = tr("Before \"%1\" the machine had %2 in the spindle with TLO %3; now it has %4 with "
-             "TLO %5.")
-              .arg(before.operation, toolName(before.tool), mm(before.tloInForce), toolName(tool), mm(tlo));
-    if (!tlo || !before.tloInForce)
-        return held + u' '
-            + tr("Toffee cannot tell whether it ran. Nothing of it was recorded; check the machine and run "
-                 "it again.");
-    // A machine switched off and on again holds no TLO: the operation's traces are gone with it.
-    if (std::abs(*tlo) < 0.0005 && std::abs(*before.tloInForce) >= 0.0005 && !currentMz)
-        return held + u' '
-            + tr("The machine holds no TLO now, as after a restart: Toffee cannot tell whether it ran. "
-                 "Nothing of it was recorded; check the tool in the spindle and measure it again.");
-    if (tool != before.tool || differs(tlo, before.tloInForce) || differs(currentMz, before.currentMz))
-        return held + u' '
-            + tr("It ran on the machine, at least in part, but the machine's confirmation was lost: "
-                 "nothing of it was recorded. Run it again to record it.");
-    return held + u' '
-        + tr("Nothing changed on the machine: it did not run, or it measured exactly the length held "
-             "before. Nothing of it was recorded; run it again.");
 }
 
 void MachineConnection::setHalt(bool halted, std::optional<int> reason)
