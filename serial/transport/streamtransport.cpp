@@ -129,7 +129,7 @@ void StreamTransport::opened(ConsoleStream::Mode mode)
 void StreamTransport::timedOut()
 {
     if (m_phase == Phase::Flushing)
-        return answered(ConsoleStream::Mode::Text); // the line end's answer is a courtesy: it is plain text
+        return answered(ConsoleStream::Mode::Text); // quiet after the answer, or no answer (a courtesy): text
     if (m_phase != Phase::Probing)
         return;
     if (m_tries < kDetectTries)
@@ -173,6 +173,7 @@ void StreamTransport::detect(QByteArrayView bytes)
                 // Plain text (a status report: grblHAL says "error:20" first): the frame's other bytes may wait
                 // in the controller's line buffer; end that line.
                 m_phase = Phase::Flushing;
+                m_flushAnswered = false;
                 m_device->write("\n");
                 m_timer.start(kDetectTryMs);
                 return;
@@ -181,9 +182,13 @@ void StreamTransport::detect(QByteArrayView bytes)
         return;
     }
     if (m_phase == Phase::Flushing) {
+        // Whatever comes now answers the question: once a line end's answer has come, each line waits for
+        // quiet again (seen on grblHAL under load: the status report, then "error:20", then "error:2").
         for (const LineAssembler::Line &line : m_asText.feed(bytes)) {
-            if (isFlushAnswer(line.bytes))
-                return answered(ConsoleStream::Mode::Text);
+            if (m_flushAnswered || isFlushAnswer(line.bytes)) {
+                m_flushAnswered = true;
+                m_timer.start(kSettleMs);
+            }
         }
     }
 }

@@ -33,6 +33,10 @@ public:
     // answer.
     static constexpr int kDetectTryMs = 1000;
     static constexpr int kDetectTries = 3;
+    // After the line end's answer, the link is open once the controller has been quiet this long: the
+    // question's other answers (grblHAL's "error:20" to the frame's 0xA2) come in no fixed order and are
+    // read here, not taken for the answer to the first command.
+    static constexpr int kSettleMs = 200;
     // The most one read takes from the machine (and the most a socket or port buffers): a flood is read a
     // slice at a time, the event loop and its time limits running between slices.
     static constexpr qint64 kReadSliceBytes = 64 * 1024;
@@ -83,6 +87,7 @@ private:
     QIODevice *m_device = nullptr;
     Protocol m_protocol = Protocol::Auto;
     Phase m_phase = Phase::Closed;
+    bool m_flushAnswered = false; // in Flushing: the line end was answered; now waiting for quiet
     ConsoleStream m_stream { ConsoleStream::Mode::Text, kMaxLineBytes };
     // While asking the first question, what came read both ways.
     ConsoleStream m_asText { ConsoleStream::Mode::Text, kMaxLineBytes };

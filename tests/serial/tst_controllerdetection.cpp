@@ -9,6 +9,7 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTest>
+#include <QTimer>
 
 #include "serial/machineconnection.h"
 #include "serial/transport/streamtransport.h"
@@ -74,6 +75,9 @@ public:
     QTcpServer server;
     QList<QByteArray> lines;
     std::function<QByteArray(const QByteArray &)> answer;
+    // grblHAL answers the frame's 0xA2 (a real-time request for a PID log it lacks) with "error:20", in no
+    // fixed order with the status report: when set, it comes after the status, just before the next answer.
+    bool lateRealTimeError = false;
 
     OtherController()
     {
@@ -82,6 +86,10 @@ public:
             QTcpSocket *socket = server.nextPendingConnection();
             connect(socket, &QTcpSocket::readyRead, this, [this, socket] {
                 m_buffer += socket->readAll();
+                for (qsizetype a; lateRealTimeError && (a = m_buffer.indexOf('\xa2')) >= 0;) {
+                    m_buffer.remove(a, 1);
+                    m_realTimeErrors += "error:20\r\n";
+                }
                 for (qsizetype q; (q = m_buffer.indexOf('?')) >= 0;) {
                     m_buffer.remove(q, 1);
                     socket->write("<Idle|MPos:0.000,0.000,0.000|FS:0,0>\r\n");
@@ -90,7 +98,13 @@ public:
                     const QByteArray line = m_buffer.left(end);
                     m_buffer.remove(0, end + 1);
                     lines << line;
-                    socket->write(answer(line));
+                    if (m_realTimeErrors.isEmpty()) {
+                        socket->write(answer(line));
+                        continue;
+                    }
+                    // The real-time error first, the line's own answer a moment later, read apart.
+                    socket->write(std::exchange(m_realTimeErrors, {}));
+                    QTimer::singleShot(50, socket, [socket, a = answer(line)] { socket->write(a); });
                 }
             });
         });
@@ -99,6 +113,7 @@ public:
 
 private:
     QByteArray m_buffer;
+    QByteArray m_realTimeErrors;
 };
 
 } // namespace
@@ -213,6 +228,32 @@ private Q_SLOTS:
         const QList<QByteArray> modes = peer.ask("$G");
         QVERIFY(!modes.isEmpty());
         QVERIFY2(modes.front().contains(" M9 "), modes.front().constData());
+    }
+
+    // The first question's answers in another order (grblHAL's "error:20" to the frame's 0xA2 after its
+    // status report, seen under load): read as the question's, not taken for the answer to `version`, so $I
+    // gets its own answer and grblHAL is found.
+    void answersToTheFirstQuestionInAnyOrder()
+    {
+        OtherController machine;
+        machine.lateRealTimeError = true;
+        machine.answer = [](const QByteArray &line) -> QByteArray {
+            if (line == "$I")
+                return "[VER:1.1f.20260817:]\r\n[OPT:VNML+,100,1024,3,16]\r\n[FIRMWARE:grblHAL]\r\nok\r\n";
+            return "error:2\r\n";
+        };
+        MachineConnection connection;
+        QList<ControllerKind> prepared;
+        connection.setPreparer([&prepared](const MachineIdentity &identity, ConnectionTarget &) {
+            prepared << identity.controller;
+            return QString(u"stop here"_s);
+        });
+        const Outcome outcome = connectTo(connection, hostTarget(machine.address()));
+        QCOMPARE(prepared, QList<ControllerKind> { ControllerKind::GrblHal });
+        QVERIFY2(outcome.message.contains(u"stop here"_s), qPrintable(outcome.message));
+        QCOMPARE(machine.lines.size(), 3);
+        QCOMPARE(machine.lines.at(1), QByteArray("version"));
+        QCOMPARE(machine.lines.at(2), QByteArray("$I"));
     }
 
     // Classic Grbl (it answers $I without [FIRMWARE:grblHAL]) and a controller that is neither: refused by
