@@ -51,11 +51,13 @@ struct Tool
     [[nodiscard]] double totalLength() const { return std::round((lengthGeometry + lengthWear) * 1e6) / 1e6; }
     [[nodiscard]] double totalRadius() const { return radiusGeometry + radiusWear; }
 
-    // Another cutter in this tool's pocket: the old cutter's TLO (its time, source and reference), its wear
-    // and its break mark no longer hold. Everything else stays.
+    // Another cutter in this tool's pocket: the old cutter's TLO (its time, source and reference), its
+    // length (a LinuxCNC or FANUC table's offset: the old cutter's, which G43 would apply to the new one),
+    // its wear and its break mark no longer hold. Everything else stays.
     void endCutter()
     {
         measuredTlo.reset();
+        lengthGeometry = 0.0;
         measuredAt = {};
         tloSource = TloSource::Probe;
         referenceMz.reset();

@@ -2615,14 +2615,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Gesamtlänge %1 → %2 %3</translation>
     </message>
     <message>
-        <source>a new cutter (%1): the old cutter&apos;s TLO %2 %3, its wear and break mark end; measure it before it cuts</source>
-        <translation>ein neuer Fräser (%1): TLO %2 %3, Verschleiß und Bruchmarkierung des alten Fräsers enden; vor dem Zerspanen vermessen</translation>
-    </message>
-    <message>
-        <source>a new cutter (%1): the old cutter&apos;s wear and break mark end; measure it before it cuts</source>
-        <translation>ein neuer Fräser (%1): Verschleiß und Bruchmarkierung des alten Fräsers enden; vor dem Zerspanen vermessen</translation>
-    </message>
-    <message>
         <source>the library gives no unit: its lengths are read in %1, as you said</source>
         <translation>die Bibliothek gibt keine Einheit an: Die Längen werden wie angegeben in %1 gelesen</translation>
     </message>
@@ -2641,6 +2633,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Tools in this library without &quot;unit&quot; (millimeters or inches): %1. Their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
         <translation>Werkzeuge dieser Bibliothek ohne „unit“ (millimeters oder inches): %1. Ihre Durchmesser und Längen lassen sich nicht lesen. Fusion schreibt sie an jedes Werkzeug: Exportieren Sie die Bibliothek erneut aus Fusion, ergänzen Sie bei jedem &quot;unit&quot;: &quot;millimeters&quot; (oder &quot;inches&quot;), oder geben Sie an, in welcher Einheit sie sind (das Fenster fragt; toffee-cli import --cam-units mm|in).</translation>
+    </message>
+    <message>
+        <source>a new cutter (%1): the old cutter&apos;s TLO %2 %3, its length, wear and break mark end; measure it before it cuts</source>
+        <translation>ein neuer Fräser (%1): die TLO %2 %3 des alten Fräsers, seine Länge, sein Verschleiß und seine Bruchmarke enden; vor dem Schneiden vermessen</translation>
+    </message>
+    <message>
+        <source>a new cutter (%1): the old cutter&apos;s length, wear and break mark end; measure it before it cuts</source>
+        <translation>ein neuer Fräser (%1): Länge, Verschleiß und Bruchmarke des alten Fräsers enden; vor dem Schneiden vermessen</translation>
     </message>
 </context>
 <context>
@@ -2734,8 +2734,8 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Importieren oder abbrechen</translation>
     </message>
     <message>
-        <source>Only descriptions, radii and the CAM&apos;s line in the notes change, except where the library describes another cutter: that tool&apos;s TLO, wear and break mark end (the history keeps them) and it is measured before it cuts. Pockets and your notes stay as they are.</source>
-        <translation>Nur Beschreibungen, Radien und die CAM-Zeile in den Notizen ändern sich, außer wo die Bibliothek einen anderen Fräser beschreibt: TLO, Verschleiß und Bruchmarkierung dieses Werkzeugs enden (der Verlauf behält sie), und es wird vor dem Zerspanen vermessen. Plätze und Ihre Notizen bleiben, wie sie sind.</translation>
+        <source>Only descriptions, radii and the CAM&apos;s line in the notes change, except where the library describes another cutter: that tool&apos;s TLO, length, wear and break mark end (the history keeps the TLO) and it is measured before it cuts. Pockets and your notes stay as they are.</source>
+        <translation>Nur Beschreibungen, Radien und die CAM-Zeile in den Notizen ändern sich, außer wo die Bibliothek einen anderen Fräser beschreibt: TLO, Länge, Verschleiß und Bruchmarke dieses Werkzeugs enden (der Verlauf behält die TLO), und es wird vor dem Schneiden vermessen. Plätze und Ihre Notizen bleiben, wie sie sind.</translation>
     </message>
 </context>
 <context>
@@ -4880,10 +4880,6 @@ Trotzdem speichern?</translation>
         <translation>Neuer &amp;Fräser…</translation>
     </message>
     <message>
-        <source>The selected tool&apos;s pocket holds another cutter: its TLO, wear and break mark end, and it is measured before it cuts</source>
-        <translation>Im Platz des gewählten Werkzeugs steckt ein anderer Fräser: TLO, Verschleiß und Bruchmarkierung enden, und er wird vor dem Zerspanen vermessen</translation>
-    </message>
-    <message>
         <source>Select the one tool whose cutter was changed.</source>
         <translation>Wählen Sie das eine Werkzeug, dessen Fräser gewechselt wurde.</translation>
     </message>
@@ -4990,6 +4986,14 @@ Trotzdem speichern?</translation>
     <message>
         <source>“%1” was %2 before; now it is %3.</source>
         <translation>„%1“ war vorher %2; jetzt ist es %3.</translation>
+    </message>
+    <message>
+        <source>The selected tool&apos;s pocket holds another cutter: its TLO, length, wear and break mark end, and it is measured before it cuts</source>
+        <translation>Der Platz des gewählten Werkzeugs hält einen anderen Fräser: TLO, Länge, Verschleiß und Bruchmarke enden, und er wird vor dem Schneiden vermessen</translation>
+    </message>
+    <message>
+        <source>its length %1 %2</source>
+        <translation>seine Länge %1 %2</translation>
     </message>
 </context>
 <context>

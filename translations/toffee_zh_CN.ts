@@ -2615,14 +2615,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>总长 %1 → %2 %3</translation>
     </message>
     <message>
-        <source>a new cutter (%1): the old cutter&apos;s TLO %2 %3, its wear and break mark end; measure it before it cuts</source>
-        <translation>新刀具（%1）：旧刀具的 TLO %2 %3、磨损和断刀标记就此结束；切削前请先测量</translation>
-    </message>
-    <message>
-        <source>a new cutter (%1): the old cutter&apos;s wear and break mark end; measure it before it cuts</source>
-        <translation>新刀具（%1）：旧刀具的磨损和断刀标记就此结束；切削前请先测量</translation>
-    </message>
-    <message>
         <source>the library gives no unit: its lengths are read in %1, as you said</source>
         <translation>刀具库未给出单位：按您的选择以%1读取其长度</translation>
     </message>
@@ -2641,6 +2633,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Tools in this library without &quot;unit&quot; (millimeters or inches): %1. Their diameters and lengths cannot be read. Fusion writes one on every tool: export the library from Fusion again, or add &quot;unit&quot;: &quot;millimeters&quot; (or &quot;inches&quot;) to each, or say which unit they are in (the window asks; toffee-cli import --cam-units mm|in).</source>
         <translation>此库中没有 &quot;unit&quot;（millimeters 或 inches）的刀具：%1。无法读取其直径和长度。Fusion 会为每把刀具写入该项：请从 Fusion 重新导出刀具库，或为每把刀具添加 &quot;unit&quot;: &quot;millimeters&quot;（或 &quot;inches&quot;），或说明它们使用的单位（窗口会询问；toffee-cli import --cam-units mm|in）。</translation>
+    </message>
+    <message>
+        <source>a new cutter (%1): the old cutter&apos;s TLO %2 %3, its length, wear and break mark end; measure it before it cuts</source>
+        <translation>新刀具（%1）：旧刀具的 TLO %2 %3、其长度、磨损和断刀标记作废；切削前请先测量</translation>
+    </message>
+    <message>
+        <source>a new cutter (%1): the old cutter&apos;s length, wear and break mark end; measure it before it cuts</source>
+        <translation>新刀具（%1）：旧刀具的长度、磨损和断刀标记作废；切削前请先测量</translation>
     </message>
 </context>
 <context>
@@ -2734,8 +2734,8 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>导入或取消</translation>
     </message>
     <message>
-        <source>Only descriptions, radii and the CAM&apos;s line in the notes change, except where the library describes another cutter: that tool&apos;s TLO, wear and break mark end (the history keeps them) and it is measured before it cuts. Pockets and your notes stay as they are.</source>
-        <translation>只有描述、半径和备注中的 CAM 行会改变，除非刀具库描述的是另一把刀具：该刀具的 TLO、磨损和断刀标记就此结束（历史记录会保留），切削前需重新测量。刀位和您的备注保持不变。</translation>
+        <source>Only descriptions, radii and the CAM&apos;s line in the notes change, except where the library describes another cutter: that tool&apos;s TLO, length, wear and break mark end (the history keeps the TLO) and it is measured before it cuts. Pockets and your notes stay as they are.</source>
+        <translation>只有描述、半径和备注中的 CAM 行会改变；但库描述的是另一把刀具时，该刀具的 TLO、长度、磨损和断刀标记作废（历史保留该 TLO），切削前需先测量。刀位和您的备注保持不变。</translation>
     </message>
 </context>
 <context>
@@ -4880,10 +4880,6 @@ Save anyway?</source>
         <translation>新刀具(&amp;C)…</translation>
     </message>
     <message>
-        <source>The selected tool&apos;s pocket holds another cutter: its TLO, wear and break mark end, and it is measured before it cuts</source>
-        <translation>所选刀具的刀位装入了另一把刀具：其 TLO、磨损和断刀标记就此结束，切削前需测量</translation>
-    </message>
-    <message>
         <source>Select the one tool whose cutter was changed.</source>
         <translation>请选择更换了刀具的那一把。</translation>
     </message>
@@ -4990,6 +4986,14 @@ Save anyway?</source>
     <message>
         <source>“%1” was %2 before; now it is %3.</source>
         <translation>“%1”之前是%2；现在是%3。</translation>
+    </message>
+    <message>
+        <source>The selected tool&apos;s pocket holds another cutter: its TLO, length, wear and break mark end, and it is measured before it cuts</source>
+        <translation>所选刀具的刀位装了另一把刀具：其 TLO、长度、磨损和断刀标记作废，切削前需先测量</translation>
+    </message>
+    <message>
+        <source>its length %1 %2</source>
+        <translation>其长度 %1 %2</translation>
     </message>
 </context>
 <context>

@@ -69,9 +69,9 @@ ImportPreviewDialog::ImportPreviewDialog(
                      "pockets and your notes stay as they are.")
                                              : counts + u' '
                 + tr("Only descriptions, radii and the CAM's line in the notes change, except where the "
-                     "library "
-                     "describes another cutter: that tool's TLO, wear and break mark end (the history keeps "
-                     "them) and it is measured before it cuts. Pockets and your notes stay as they are."));
+                     "library describes another cutter: that tool's TLO, length, wear and break mark end "
+                     "(the history keeps the TLO) and it is measured before it cuts. Pockets and your notes "
+                     "stay as they are."));
     m_tools->setObjectName(u"importToolList"_s);
     m_tools->setAccessibleName(tr("Tools in the library"));
     m_tools->setRootIsDecorated(false);

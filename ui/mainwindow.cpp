@@ -340,8 +340,8 @@ void MainWindow::createActions()
     toolBar->addAction(m_removeAction);
     m_newCutterAction = add(edit, u"actionNewCutter"_s, tr("New &Cutter…"),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N), &MainWindow::newCutter);
-    m_newCutterAction->setToolTip(tr("The selected tool's pocket holds another cutter: its TLO, wear and "
-                                     "break mark end, and it is measured before it cuts"));
+    m_newCutterAction->setToolTip(tr("The selected tool's pocket holds another cutter: its TLO, length, wear "
+                                     "and break mark end, and it is measured before it cuts"));
     edit->addSeparator();
     add(edit, u"actionFind"_s, tr("&Filter…"), QKeySequence::Find, [this] {
         m_tablePanel->filterEdit()->setFocus();
@@ -548,6 +548,8 @@ void MainWindow::newCutter()
         ends << tr("its TLO %1 %2 (%3)")
                     .arg(displayNumber(*tool->measuredTlo, units), unitsSymbol(units),
                         tool->tloSource == TloSource::Manual ? tr("set by hand") : tr("measured"));
+    if (tool->lengthGeometry != 0.0)
+        ends << tr("its length %1 %2").arg(displayNumber(tool->lengthGeometry, units), unitsSymbol(units));
     if (tool->lengthWear != 0.0 || tool->radiusWear != 0.0)
         ends << tr("its wear (length %1, radius %2)")
                     .arg(displayNumber(tool->lengthWear, units), displayNumber(tool->radiusWear, units));

@@ -19,8 +19,9 @@ const QString kUsage = uR"(usage: toffee-cli [--json] COMMAND [ARGS]
 Tool tables:
   show TABLE                 print a tool table (.json, .tbl or .csv)
   convert IN OUT             convert between formats, by extension or --to json|tbl|csv
-  new-cutter N --table FILE  another cutter in T N's pocket: its TLO, wear and break mark end (kept in the
-                             history as the old cutter's, --machine NAME); measure it before it cuts
+  new-cutter N --table FILE  another cutter in T N's pocket: its TLO, length, wear and break mark end (the
+                             TLO kept in the history as the old cutter's, --machine NAME); measure it before
+                             it cuts
   export --dialect D TABLE   the program that loads TABLE into a controller (--tool N for one tool)
   simulate --dialect D PROGRAM [--table FILE] [--samples N]
                              run PROGRAM as controller D would: where each move ends, and the offsets after

@@ -194,11 +194,11 @@ int newCutter(Invocation &call)
         return fail(call, changed.error().text(), BadInput);
     if (auto saved = saveTableFile(path, table.value(), *format); !saved)
         return fail(call, saved.error().text(), BadInput);
-    // A LinuxCNC table holds no TLO or mark, and its wear is in the length: nothing there could end.
+    // A LinuxCNC table holds no TLO or mark, and its wear is in the length: only a length could end.
     if (*table.value().find(tool) == old)
         call.err
             << "toffee-cli: note: " << path << " holds nothing of T" << tool
-            << "'s old cutter to end (no measured TLO, wear or break mark); only the history records the "
+            << "'s old cutter to end (no measured TLO, length, wear or break mark); only the history records the "
                "new cutter."
             << Qt::endl;
     QString history = u"not_recorded"_s;
@@ -228,7 +228,7 @@ int newCutter(Invocation &call)
                 { u"machine"_s,
                     call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName },
                 { u"old_tlo"_s, old.measuredTlo ? QJsonValue(*old.measuredTlo) : QJsonValue() },
-                { u"old_length_wear"_s, old.lengthWear }, { u"old_radius_wear"_s, old.radiusWear },
+                { u"old_length_geometry"_s, old.lengthGeometry }, { u"old_length_wear"_s, old.lengthWear }, { u"old_radius_wear"_s, old.radiusWear },
                 { u"old_break_test_failed"_s, old.breakTestFailed }, { u"history"_s, history } });
         return Success;
     }
@@ -237,6 +237,9 @@ int newCutter(Invocation &call)
         call.out << "  the old cutter's TLO " << n(*old.measuredTlo) << " "
                  << unitsSymbol(table.value().units())
                  << " is no longer stored (kept in the history as the old cutter's)\n";
+    if (old.lengthGeometry != 0.0)
+        call.out << "  its length " << n(old.lengthGeometry) << " " << unitsSymbol(table.value().units())
+                 << " (the old cutter's, which G43 would apply to the new one) is reset to 0\n";
     if (old.lengthWear != 0.0 || old.radiusWear != 0.0)
         call.out << "  its wear (length " << n(old.lengthWear) << ", radius " << n(old.radiusWear)
                  << ") is reset to 0\n";

@@ -278,13 +278,12 @@ Result<ImportPreview> ImportPreview::build(
             if (existing->referenceMz)
                 item.endedReferenceMz = toMillimetres(*existing->referenceMz, units);
             item.notes << (existing->measuredTlo
-                    ? tr("a new cutter (%1): the old cutter's TLO %2 %3, its wear and break mark end; "
-                         "measure it "
-                         "before it cuts")
+                    ? tr("a new cutter (%1): the old cutter's TLO %2 %3, its length, wear and break mark "
+                         "end; measure it before it cuts")
                           .arg(cutter.join(u", "_s), displayNumber(*existing->measuredTlo, units),
                               unitsSymbol(units))
-                    : tr("a new cutter (%1): the old cutter's wear and break mark end; measure it before it "
-                         "cuts")
+                    : tr("a new cutter (%1): the old cutter's length, wear and break mark end; measure it "
+                         "before it cuts")
                           .arg(cutter.join(u", "_s)));
         }
         if (!existing)

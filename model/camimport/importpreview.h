@@ -24,7 +24,7 @@ struct ImportedTool
     QStringList notes;
     // The library describes another cutter than the table's (type, diameter or overall length): the import
     // puts a new cutter in the pocket, as ToolTable::newCutter does, ending the old one's TLO (endedTlo),
-    // wear and break mark. `fields` says why, first.
+    // length, wear and break mark. `fields` says why, first.
     bool newCutter = false;
     std::optional<double> endedTlo = std::nullopt; // in millimetres, as the history keeps it
     std::optional<double> endedReferenceMz = std::nullopt; // what that TLO was measured against
@@ -34,7 +34,7 @@ struct ImportedTool
 // and the table it makes. Only what the CAM owns changes: the description, the radius geometry (half the
 // diameter), the cutter's type and overall length, and the CAM's own line in the notes; except that a tool
 // whose cutter is another (its type, its diameter beyond 0.01 mm or its overall length beyond 0.1 mm) is a
-// new cutter, whose TLO, wear and break mark end. The measured TLO, its time, source and reference, the
+// new cutter, whose TLO, length, wear and break mark end. The measured TLO, its time, source and reference, the
 // break-test mark, the wear, the pocket, the length geometry and the operator's notes stay as they are, and a
 // library tool without a description keeps the table's. A new tool gets the pocket the table gives a tool of
 // its number, or the lowest pocket no other tool has when that one is taken; it has no length until measured.

@@ -35,6 +35,7 @@ ToolTable shopTable()
     t3.number = 3;
     t3.description = u"2 mm ball"_s;
     t3.radiusGeometry = 1.0;
+    t3.lengthGeometry = 71.488; // the old cutter's length, as a LinuxCNC table or FANUC's offset has it
     t3.lengthWear = 0.02;
     t3.measuredTlo = -30.2;
     t3.measuredAt = QDateTime::currentDateTimeUtc().addSecs(-600);
@@ -82,6 +83,9 @@ private Q_SLOTS:
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QVERIFY2(
             run.out.contains("the old cutter's TLO -30.200 mm is no longer stored"), run.out.constData());
+        QVERIFY2(run.out.contains("its length 71.488 mm (the old cutter's, which G43 would apply to the new one) "
+                                  "is reset to 0"),
+            run.out.constData());
         QVERIFY(run.out.contains("its wear (length 0.020, radius 0.000) is reset to 0"));
         QVERIFY(run.out.contains("its break-test mark is cleared"));
         QVERIFY(run.out.contains("measure T3 on the tool setter before it cuts"));
@@ -93,6 +97,7 @@ private Q_SLOTS:
         QVERIFY(!t3.referenceMz);
         QVERIFY(!t3.breakTestFailed);
         QCOMPARE(t3.lengthWear, 0.0);
+        QCOMPARE(t3.lengthGeometry, 0.0);
         QCOMPARE(t3.description, u"2 mm ball"_s);
         QCOMPARE(t3.radiusGeometry, 1.0);
         QCOMPARE(*after.find(1), *shop.find(1));
@@ -120,6 +125,18 @@ private Q_SLOTS:
                              && f.toObject().value(u"tool"_s).toInt() == 3;
                      }),
             run.out.constData());
+        // On LinuxCNC and FANUC, G43 applies the table's length, the old cutter's until now: none is left.
+        for (const QString &dialect : { u"linuxcnc"_s, u"fanuc"_s }) {
+            run = cli({ u"--json"_s, u"job"_s, u"check"_s, program, u"--table"_s, table, u"--library"_s, library,
+                u"--dialect"_s, dialect });
+            const QJsonArray found = json(run).value(u"findings"_s).toArray();
+            QVERIFY2(std::any_of(found.begin(), found.end(),
+                         [](const QJsonValue &f) {
+                             return f.toObject().value(u"message"_s).toString()
+                                 == u"T3 has no length in the table: G43 would apply 0."_s;
+                         }),
+                run.out.constData());
+        }
     }
 
     void anImportThatChangesACutterPutsInANewOneAndSaysSo()
@@ -145,7 +162,7 @@ private Q_SLOTS:
         QVERIFY2(run.exitCode == 0, run.err.constData());
         // The preview says it per tool, with the old cutter's TLO.
         QVERIFY2(run.out.contains("note: a new cutter (diameter 2.000 → 6.000 mm): the old cutter's TLO "
-                                  "-30.200 mm, its wear and break mark end; measure it before it cuts"),
+                                  "-30.200 mm, its length, wear and break mark end; measure it before it cuts"),
             run.out.constData());
         QVERIFY(run.out.contains("a new cutter in 1 (measure before use)"));
         const ToolTable after = loadTableFile(table).value();
@@ -292,12 +309,18 @@ private Q_SLOTS:
         const QString tbl = dir.filePath(u"shop.tbl"_s);
         run = cli({ u"convert"_s, csv, tbl });
         QVERIFY2(run.err.contains("no place for tool life limits"), run.err.constData());
-        // A LinuxCNC table holds nothing of an old cutter: said, and the history still records it.
+        // Of an old cutter, a LinuxCNC table holds only its length (its wear folded in): that ends.
+        run = cli(
+            { u"new-cutter"_s, u"3"_s, u"--table"_s, tbl, u"--library"_s, dir.filePath(u"l.sqlite"_s) });
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains("its length 71.508 mm"), run.out.constData());
+        QCOMPARE(loadTableFile(tbl).value().find(3)->lengthGeometry, 0.0);
+        // Then it holds nothing of the next one: said, and the history still records it.
         run = cli(
             { u"new-cutter"_s, u"3"_s, u"--table"_s, tbl, u"--library"_s, dir.filePath(u"l.sqlite"_s) });
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.err.contains("holds nothing of T3's old cutter to end"), run.err.constData());
-        QCOMPARE(events(dir.filePath(u"l.sqlite"_s), 3).size(), 1);
+        QCOMPARE(events(dir.filePath(u"l.sqlite"_s), 3).size(), 2);
     }
 };
 

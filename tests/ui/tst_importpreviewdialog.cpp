@@ -65,9 +65,8 @@ private Q_SLOTS:
         // T2 was 2 mm across and the library's is 6 mm: another cutter, said on its row.
         QCOMPARE(row(1),
             (QStringList { u"T2"_s, u"Changed"_s, u"Flat 2"_s,
-                u"radius 1.000 → 3.000 mm\na new cutter (diameter 2.000 → 6.000 mm): the old cutter's wear "
-                u"and "
-                u"break mark end; measure it before it cuts"_s }));
+                u"radius 1.000 → 3.000 mm\na new cutter (diameter 2.000 → 6.000 mm): the old cutter's "
+                u"length, wear and break mark end; measure it before it cuts"_s }));
         QCOMPARE(row(2),
             (QStringList { u"T7"_s, u"New"_s, u"Flat 7"_s,
                 u"pocket 7; no tool length yet (0 in the table): measure it before use"_s }));
@@ -75,7 +74,7 @@ private Q_SLOTS:
         QVERIFY2(summary.contains(
                      u"/tmp/lib.json (Fusion tool library (JSON)): 1 new, 1 changed, 1 unchanged; a new "
                      u"cutter in 1 (measure before use). "_s)
-                && summary.contains(u"that tool's TLO, wear and break mark end"_s),
+                && summary.contains(u"that tool's TLO, length, wear and break mark end"_s),
             qPrintable(summary));
         QVERIFY(dialog.findChild<QPushButton *>(u"importButton"_s)->isEnabled());
     }
@@ -105,9 +104,8 @@ private Q_SLOTS:
             u"T2 (Changed): "_s + long2.description,
             u"• description “Flat 2” → “"_s + long2.description + u"”"_s, u"• radius 1.000 → 3.000 mm"_s,
             u"• CAM lengths added to the notes (flute length 22 mm, overall length 75 mm)"_s,
-            u"• a new cutter (diameter 2.000 → 6.000 mm): the old cutter's wear and break mark end; measure "
-            u"it "
-            u"before it cuts"_s,
+            u"• a new cutter (diameter 2.000 → 6.000 mm): the old cutter's length, wear and break mark end; "
+            u"measure it before it cuts"_s,
             u"• the library gives length offset H12; Toffee always uses H = T (H2), so it is not imported"_s
         };
         QCOMPARE(details->toPlainText(), expected.join(u'\n'));

@@ -149,12 +149,14 @@ private Q_SLOTS:
         answerNextBox(QMessageBox::Cancel, &question);
         s.key(Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
         QVERIFY2(
-            question.contains(u"T2 gets a new cutter: its TLO 9.652 mm (measured) belong to the old one"_s),
+            question.contains(u"T2 gets a new cutter: its TLO 9.652 mm (measured), its length 71.488 mm belong "
+                              u"to the old one"_s),
             qPrintable(question));
         QCOMPARE(s.table().find(2)->measuredTlo, std::optional(9.652));
         answerNextBox(QMessageBox::NoButton, nullptr, u"newCutterButton"_s);
         s.trigger(u"actionNewCutter"_s); // from the Edit menu this time
         QTRY_VERIFY(!s.table().find(2)->measuredTlo);
+        QCOMPARE(s.table().find(2)->lengthGeometry, 0.0); // the old cutter's length, which G43 would apply
         QCOMPARE(s.cell(2, ToolTableModel::MeasuredTloColumn), u"not measured"_s);
         QVERIFY(s.window.statusBar()->currentMessage().contains(
             u"T2 has a new cutter: measure it before it cuts"_s));

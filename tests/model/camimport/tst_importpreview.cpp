@@ -5,6 +5,7 @@
 
 #include "model/camimport/camreaders.h"
 #include "model/camimport/importpreview.h"
+#include "model/job/jobchecker.h"
 #include "tests/support/camfiles.h"
 
 using namespace Toffee;
@@ -82,9 +83,26 @@ private Q_SLOTS:
         QCOMPARE(p.tools().at(1).endedTlo, std::optional(-33.388));
         QVERIFY(
             p.tools().at(1).notes.contains(u"a new cutter (diameter 2.000 → 6.000 mm): the old cutter's TLO "
-                                           "-33.388 mm, its wear and break mark end; measure it before it "
-                                           "cuts"_s));
+                                           "-33.388 mm, its length, wear and break mark end; measure it "
+                                           "before it cuts"_s));
         QCOMPARE(p.merged().find(2)->measuredTlo, std::nullopt);
+        // Its length (41.250, the old cutter's) ends too: G43 on LinuxCNC or FANUC would apply it to the new
+        // cutter, and the job check in those dialects says the tool has no length.
+        QCOMPARE(p.merged().find(2)->lengthGeometry, 0.0);
+        for (const Dialect dialect : { Dialect::LinuxCnc, Dialect::Fanuc }) {
+            JobCheckSetup setup;
+            setup.dialect = dialect;
+            setup.useTable(p.merged());
+            JobChecker checker(setup);
+            int line = 0;
+            for (const QByteArray text : { "T2 M6", "G43 H2", "G1 Z-1 F100", "M30" })
+                checker.feed(text, ++line);
+            const JobReport report = checker.finish(u"job.nc"_s, false);
+            QVERIFY(std::any_of(report.findings.cbegin(), report.findings.cend(), [](const Finding &f) {
+                return f.kind == FindingKind::NotMeasured && f.tool == 2
+                    && f.message == u"T2 has no length in the table: G43 would apply 0."_s;
+            }));
+        }
         QVERIFY(!p.merged().find(2)->breakTestFailed);
         QVERIFY(!p.tools().at(0).newCutter);
         QCOMPARE(p.tools().at(2).change, ImportChange::New);
