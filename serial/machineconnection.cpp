@@ -94,6 +94,8 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
         // The alarm line comes before the status that says "Alarm": the window stops offering motion now,
         // not a status report later (when a broken-tool box already says halted).
         setHalt(true, m_haltReason);
+        if (m_haltSaid.isEmpty())
+            m_haltSaid = message; // the firmware's own words for the halt, kept until it is unlocked
         Q_EMIT alarmRaised(message);
     });
     connect(m_link.get(), &MachineLink::lineSent, this,
@@ -198,6 +200,8 @@ void MachineConnection::startController(ControllerKind kind)
 void MachineConnection::setHalt(bool halted, std::optional<int> reason)
 {
     m_haltReason = halted ? reason : std::nullopt;
+    if (!halted)
+        m_haltSaid.clear();
     if (m_halted == halted)
         return;
     m_halted = halted;
@@ -298,9 +302,10 @@ FirmwareInfo MachineConnection::firmware() const
 
 QString MachineConnection::haltedMessage() const
 {
-    const QString reason = m_haltReason
-        ? haltReasonName(*m_haltReason) + u": "_s + haltRecovery(*m_haltReason)
-        : tr("Check the machine, then unlock it.");
+    const QString said = m_haltSaid.isEmpty() ? QString() : tr("It said: \"%1\". ").arg(m_haltSaid);
+    const QString reason = said
+        + (m_haltReason ? haltReasonName(*m_haltReason) + u": "_s + haltRecovery(*m_haltReason)
+                        : tr("Check the machine, then unlock it."));
     return tr("The machine is halted (Alarm lock) and takes no command but Unlock. %1").arg(reason);
 }
 

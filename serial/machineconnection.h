@@ -156,6 +156,9 @@ public:
     // Halted (Alarm): the controller refuses every motion and offset command until Unlock.
     [[nodiscard]] bool isHalted() const { return m_halted; }
     [[nodiscard]] std::optional<int> haltReason() const { return m_haltReason; }
+    // What the firmware said when it halted ("Unexpected tool absence detected, …"), while it stays halted;
+    // empty when it said nothing this connection saw (halted before it connected).
+    [[nodiscard]] QString haltSaid() const { return m_haltSaid; }
     // Why an operation cannot run on a halted machine, and what to do, for people.
     [[nodiscard]] QString haltedMessage() const;
     // The reference and current MCS Z the machine last reported (M493.4, M493.3), if any since connecting.
@@ -232,6 +235,7 @@ private:
     ConnectionTarget m_target;
     std::optional<TloReading> m_offsets;
     std::optional<int> m_haltReason;
+    QString m_haltSaid;
     // What the machine held when the running operation began (the tool and TLO of the last status report).
     std::optional<Interruption> m_before;
     std::optional<Interruption> m_interruption;

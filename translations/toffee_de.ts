@@ -775,10 +775,6 @@
         <translation>Das angeforderte Werkzeug ist kein gültiges Werkzeug.</translation>
     </message>
     <message>
-        <source>No tool was given to the tool change.</source>
-        <translation>Für den Werkzeugwechsel wurde kein Werkzeug angegeben.</translation>
-    </message>
-    <message>
         <source>The spindle already holds a tool.</source>
         <translation>In der Spindel ist bereits ein Werkzeug.</translation>
     </message>
@@ -877,6 +873,10 @@
     <message>
         <source>T%1&apos;s %2 event %3 holds a TLO of %4 mm, beyond any tool (%5 mm at most).</source>
         <translation>Das Ereignis %3 (%2) von T%1 enthält eine Längenkorrektur von %4 mm, jenseits jedes Werkzeugs (höchstens %5 mm).</translation>
+    </message>
+    <message>
+        <source>The tool changer found no tool where one should be (an empty rack pocket), or was given no tool.</source>
+        <translation>Der Werkzeugwechsler fand kein Werkzeug, wo eines sein sollte (ein leerer Magazinplatz), oder erhielt kein Werkzeug.</translation>
     </message>
 </context>
 <context>
@@ -3848,6 +3848,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>%1 answered as %2, not as %3 as chosen. Nothing of %3&apos;s was sent. Choose %2, or Automatic (toffee-cli --controller %4, or auto), and connect again.</source>
         <translation>%1 hat als %2 geantwortet, nicht als %3 wie gewählt. Nichts %3-Spezifisches wurde gesendet. Wählen Sie %2 oder Automatisch (toffee-cli --controller %4 oder auto) und verbinden Sie erneut.</translation>
     </message>
+    <message>
+        <source>It said: &quot;%1&quot;. </source>
+        <translation>Sie meldete: „%1“. </translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineController</name>
@@ -4162,6 +4166,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1, which no Carvera does: this is another controller (grblHAL refuses it so). Nothing of the Carvera&apos;s was sent. Choose grblHAL, or Automatic, and connect again.</source>
         <translation>%1, was keine Carvera tut: Das ist eine andere Steuerung (grblHAL lehnt es so ab). Nichts Carvera-Spezifisches wurde gesendet. Wählen Sie grblHAL oder Automatisch und verbinden Sie erneut.</translation>
+    </message>
+    <message>
+        <source>The machine says the spindle is empty (T-1): a TLO set now would be kept by the firmware and given to whichever tool is selected next. Put the tool in and select it (Machine ▸ Select Tool, toffee-cli select-tool N), then set its TLO. Nothing was sent.</source>
+        <translation>Die Maschine meldet eine leere Spindel (T-1): Eine jetzt gesetzte TL würde die Firmware behalten und dem nächsten gewählten Werkzeug geben. Setzen Sie das Werkzeug ein und wählen Sie es (Maschine ▸ Werkzeug wählen, toffee-cli select-tool N), dann setzen Sie seine TL. Nichts wurde gesendet.</translation>
+    </message>
+    <message>
+        <source>Unlocked. The TLO in force is %1 mm, as the machine left it: after a failed break test, the length the test measured. No stored TLO of T%2 was known here to set back (toffee-cli: --table FILE, or the history that recorded the test). Probe T%2, or set its TLO, before it cuts.</source>
+        <translation>Entsperrt. Die wirksame TL ist %1 mm, wie die Maschine sie ließ: nach einem fehlgeschlagenen Bruchtest die vom Test gemessene Länge. Keine gespeicherte TL von T%2 war hier bekannt, um sie zurückzusetzen (toffee-cli: --table DATEI oder der Verlauf, der den Test aufzeichnete). Vermessen Sie T%2 oder setzen Sie seine TL, bevor es schneidet.</translation>
     </message>
 </context>
 <context>
@@ -6304,6 +6316,18 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>Waiting for the operator</source>
         <translation>Wartet auf den Bediener</translation>
+    </message>
+    <message>
+        <source>The machine said: “%1”</source>
+        <translation>Die Maschine meldete: „%1“</translation>
+    </message>
+    <message>
+        <source>Look at the tool first, and replace it if it is broken. Unlock sets T%1&apos;s stored TLO, %2, back before anything can move: it was set by hand, not measured, and the break test measured %3. Probe T%1 before it cuts; the mark stays until then.</source>
+        <translation>Sehen Sie sich zuerst das Werkzeug an und ersetzen Sie es, wenn es gebrochen ist. Entsperren setzt die gespeicherte TL von T%1, %2, zurück, bevor sich etwas bewegen kann: Sie wurde von Hand gesetzt, nicht gemessen, und der Bruchtest maß %3. Vermessen Sie T%1, bevor es schneidet; bis dahin bleibt die Markierung.</translation>
+    </message>
+    <message>
+        <source>another length</source>
+        <translation>eine andere Länge</translation>
     </message>
 </context>
 <context>

@@ -775,10 +775,6 @@
         <translation>请求的刀具不是有效刀具。</translation>
     </message>
     <message>
-        <source>No tool was given to the tool change.</source>
-        <translation>换刀时未指定刀具。</translation>
-    </message>
-    <message>
         <source>The spindle already holds a tool.</source>
         <translation>主轴上已有刀具。</translation>
     </message>
@@ -877,6 +873,10 @@
     <message>
         <source>T%1&apos;s %2 event %3 holds a TLO of %4 mm, beyond any tool (%5 mm at most).</source>
         <translation>T%1 的 %2 事件 %3 含有 %4 mm 的刀长补偿，超出任何刀具（最多 %5 mm）。</translation>
+    </message>
+    <message>
+        <source>The tool changer found no tool where one should be (an empty rack pocket), or was given no tool.</source>
+        <translation>换刀装置在应有刀具的位置没有找到刀具（刀库刀位为空），或未指定刀具。</translation>
     </message>
 </context>
 <context>
@@ -3848,6 +3848,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>%1 answered as %2, not as %3 as chosen. Nothing of %3&apos;s was sent. Choose %2, or Automatic (toffee-cli --controller %4, or auto), and connect again.</source>
         <translation>%1 以 %2 的方式回答，而不是所选的 %3。未发送任何 %3 专用命令。请选择 %2 或“自动”（toffee-cli --controller %4 或 auto），然后重新连接。</translation>
     </message>
+    <message>
+        <source>It said: &quot;%1&quot;. </source>
+        <translation>机器报告：“%1”。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineController</name>
@@ -4162,6 +4166,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1, which no Carvera does: this is another controller (grblHAL refuses it so). Nothing of the Carvera&apos;s was sent. Choose grblHAL, or Automatic, and connect again.</source>
         <translation>%1，任何 Carvera 都不会这样：这是另一种控制器（grblHAL 会这样拒绝）。未发送任何 Carvera 专用命令。请选择 grblHAL 或“自动”，然后重新连接。</translation>
+    </message>
+    <message>
+        <source>The machine says the spindle is empty (T-1): a TLO set now would be kept by the firmware and given to whichever tool is selected next. Put the tool in and select it (Machine ▸ Select Tool, toffee-cli select-tool N), then set its TLO. Nothing was sent.</source>
+        <translation>机器报告主轴为空（T-1）：此时设置的 TLO 会被固件保留，并赋给下一个选择的刀具。请先装入刀具并选择它（机器 ▸ 选择刀具，toffee-cli select-tool N），再设置其 TLO。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Unlocked. The TLO in force is %1 mm, as the machine left it: after a failed break test, the length the test measured. No stored TLO of T%2 was known here to set back (toffee-cli: --table FILE, or the history that recorded the test). Probe T%2, or set its TLO, before it cuts.</source>
+        <translation>已解锁。当前生效的 TLO 为 %1 mm，即机器保留的值：断刀检测失败后，为检测测得的长度。此处不知道 T%2 存储的 TLO，无法恢复（toffee-cli：--table 文件，或记录该检测的历史）。切削前请测量 T%2 或设置其 TLO。</translation>
     </message>
 </context>
 <context>
@@ -6304,6 +6316,18 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>Waiting for the operator</source>
         <translation>等待操作员</translation>
+    </message>
+    <message>
+        <source>The machine said: “%1”</source>
+        <translation>机器报告：“%1”</translation>
+    </message>
+    <message>
+        <source>Look at the tool first, and replace it if it is broken. Unlock sets T%1&apos;s stored TLO, %2, back before anything can move: it was set by hand, not measured, and the break test measured %3. Probe T%1 before it cuts; the mark stays until then.</source>
+        <translation>请先检查刀具，如已断裂请更换。解锁会在任何运动之前恢复 T%1 存储的 TLO %2：该值是手动设置的，并非测量所得，而断刀检测测得 %3。切削前请测量 T%1；在此之前标记保留。</translation>
+    </message>
+    <message>
+        <source>another length</source>
+        <translation>另一个长度</translation>
     </message>
 </context>
 <context>

@@ -211,6 +211,9 @@ void TloPanel::showHalt()
                   .arg(m_activeTool && *m_activeTool >= 0 ? u"T"_s + QString::number(*m_activeTool)
                                                           : tr("the tool"),
                       m_machineTlo ? millimetres(*m_machineTlo) : tr("its TLO"), millimetres(*restore))
+            : !m_connection->haltSaid().isEmpty()
+            ? tr("The machine said: “%1”").arg(m_connection->haltSaid()) + u'\n'
+                + (reason ? haltRecovery(*reason) : tr("Check the machine, then Unlock ($X)."))
             : reason
             ? haltMeaning(*reason) + u'\n' + haltRecovery(*reason)
             : tr("The machine reported an alarm.") + u'\n' + tr("Check the machine, then Unlock ($X).");
@@ -330,7 +333,16 @@ void TloPanel::unlock(bool confirm)
                "more.")
                 .arg(stored->number),
             QMessageBox::Cancel, this);
-        box.setInformativeText(brokenTlo
+        // The stored TLO goes back whatever it was (the table and the machine then agree, as on grblHAL,
+        // where a failed test changes nothing); one set by hand is said to be that.
+        box.setInformativeText(brokenTlo && stored->tloSource == TloSource::Manual
+                ? tr("Look at the tool first, and replace it if it is broken. Unlock sets T%1's stored TLO, "
+                     "%2, back before anything can move: it was set by hand, not measured, and the break "
+                     "test measured %3. Probe T%1 before it cuts; the mark stays until then.")
+                      .arg(stored->number)
+                      .arg(millimetres(*brokenTlo),
+                          m_machineTlo ? millimetres(*m_machineTlo) : tr("another length"))
+            : brokenTlo
                 ? tr("Look at the tool first, and replace it if it is broken. Unlock sets T%1's stored TLO, "
                      "%2, "
                      "back before anything can move; the mark stays until T%1 is measured again (Probe).")

@@ -16,6 +16,7 @@
 #include "app/cli/operatorpresence.h"
 #include "model/clock.h"
 #include "model/formats/tablefile.h"
+#include "model/job/toolfacts.h"
 #include "model/library/spool.h"
 #include "model/library/weartrend.h"
 #include "model/limits.h"
@@ -451,6 +452,10 @@ void MachineRun::operate()
             printBreakTest(m_call, r);
             if (r.breakTest)
                 (void)record(r);
+            if (r.outcome == SessionResult::Outcome::ToolBroken && !m_options.table && !m_options.library)
+                m_call.err << "toffee-cli: with neither --table nor the history, a later toffee-cli unlock "
+                              "cannot know the stored TLO: after unlocking, set it back (set-tlo "
+                           << mm(r.breakTest->oldTlo) << ") or probe the tool." << Qt::endl;
         }),
             storedTloInSpindle());
     else if (command == u"restore")
@@ -459,7 +464,13 @@ void MachineRun::operate()
         started = c.selectTool(
             m_options.tool, printed([this](const SessionResult &r) { printSelected(m_call, r); }));
     else if (command == u"unlock")
-        started = c.unlock(status, brokenToolTloInSpindle());
+        started = c.unlock(printed([this](const SessionResult &r) {
+            if (const auto now = r.status ? r.status : m_connection.link()->lastStatus())
+                printStatus(m_call, *now, m_connection.firmware(), m_connection.identity(), m_options.machine);
+            if (!r.message.isEmpty()) // what is in force now, and why
+                m_call.err << "toffee-cli: " << r.message << Qt::endl;
+        }),
+            brokenToolTloInSpindle());
     else if (command == u"link-test")
         linkTest();
     else if (command == u"push-offsets")
@@ -582,13 +593,20 @@ std::optional<double> MachineRun::storedTloInSpindle() const
     return stored ? std::optional(stored->tlo) : std::nullopt; // millimetres, whatever the table's units
 }
 
-// The table's TLO for the tool in the spindle when the table marks it broken: unlock sets it back, since the
-// failed break test left the machine with the broken length in force.
+// The stored TLO of the tool in the spindle when it failed its break test: unlock sets it back, since the failed
+// test left the machine with the length it measured in force. The table's (--table) when it marks the tool
+// broken, else the history's (the test's own record), as the window does.
 std::optional<double> MachineRun::brokenToolTloInSpindle() const
 {
     const auto tool = m_connection.activeTool();
-    const auto stored = m_options.table && tool ? m_options.table->storedTlo(*tool) : std::nullopt;
-    return stored && stored->breakTestFailed ? std::optional(stored->tlo) : std::nullopt;
+    if (!tool)
+        return std::nullopt;
+    if (const auto stored = m_options.table ? m_options.table->storedTlo(*tool) : std::nullopt)
+        return stored->breakTestFailed ? std::optional(stored->tlo) : std::nullopt;
+    if (!m_options.library)
+        return std::nullopt;
+    const auto tested = tloBeforeFailedBreakTest(*m_options.library, m_options.machine, *tool);
+    return tested ? tested.value() : std::nullopt;
 }
 
 bool MachineRun::restore()

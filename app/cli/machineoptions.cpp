@@ -211,12 +211,20 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
     // one.
     static const QStringList kRecording = { u"probe"_s, u"break-test"_s, u"set-tlo"_s, u"change-tool"_s,
         u"restore"_s, u"measure-rack"_s, u"check-rack"_s, u"pull-offsets"_s };
-    if (!kRecording.contains(call.command))
+    const bool unlock = call.command == u"unlock"_s;
+    if (!kRecording.contains(call.command) && !unlock)
         return {};
     // Without --machine, the name is the machine's kind's, once known (prepareForController).
     o.machine = call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName;
     if (o.machine.isEmpty())
         return Error { u"--machine needs a name."_s };
+    if (unlock) {
+        // Read only, when there is one: the stored TLO a failed break test left out of force (an unlock works
+        // without it, and says what is in force).
+        if (auto existing = openExistingLibrary(call); existing)
+            o.library = existing.takeValue();
+        return {};
+    }
     auto library = openLibraryOption(call);
     if (!library)
         return Error { library.error().message

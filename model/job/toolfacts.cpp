@@ -108,6 +108,18 @@ Result<std::optional<HistoryEvent>> newest(
 
 } // namespace
 
+Result<std::optional<double>> tloBeforeFailedBreakTest(const Library &library, const QString &machine, int tool)
+{
+    auto last = newest(library, machine, tool,
+        { EventKind::Probe, EventKind::ManualSet, EventKind::NewCutter, EventKind::BreakTest });
+    if (!last)
+        return last.error();
+    const std::optional<HistoryEvent> &event = last.value();
+    if (!event || event->kind != EventKind::BreakTest || !event->failed.value_or(false))
+        return std::optional<double>();
+    return event->oldTlo;
+}
+
 std::function<Result<void>(QHash<int, ToolFacts> &, const QList<int> &)> libraryFacts(
     const Library *library, const QString &machine)
 {

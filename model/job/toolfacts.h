@@ -70,5 +70,10 @@ enum class ReferenceCheck { IfKnown, Required };
 // job check asks only for the tools it lists (JobReport::kMaxListedTools), never for a program's every tool.
 [[nodiscard]] Result<void> addLibraryFacts(
     QHash<int, ToolFacts> &facts, const Library &library, const QString &machine, const QList<int> &tools);
+// When the newest the history says of `tool` on `machine` is a failed break test: the TLO it compared with
+// (millimetres), which an unlock sets back (the Carvera's firmware halts with the length it measured in
+// force). Nothing when the tool was measured, set or given a new cutter since, or never failed.
+[[nodiscard]] Result<std::optional<double>> tloBeforeFailedBreakTest(
+    const Library &library, const QString &machine, int tool);
 
 } // namespace Toffee

@@ -269,7 +269,8 @@ QString haltMeaning(int reason)
     case 6:
         return tr("The tool asked for is not a valid tool.");
     case 7:
-        return tr("No tool was given to the tool change.");
+        return tr("The tool changer found no tool where one should be (an empty rack pocket), or was given "
+                  "no tool.");
     case 8:
         return tr("The spindle already holds a tool.");
     case 9:

@@ -265,7 +265,20 @@ void MachineSession::setTlo(double tlo, Done done)
         return refuse(done, *why);
     if (auto r = validateOffset(tr("The tool length offset"), tlo); !r)
         return refuse(done, r.error().message);
+    if (auto why = emptySpindle())
+        return refuse(done, *why);
     setTloTo(tlo, done);
+}
+
+// The firmware takes M493.3 with an empty spindle (T-1), shows 0.000 in force and gives the value to the next
+// tool M493.2 names (seen on the community firmware): a TLO is only set for a tool in the spindle.
+std::optional<QString> MachineSession::emptySpindle() const
+{
+    if (m_tool != Limits::kEmptySpindle)
+        return std::nullopt;
+    return tr("The machine says the spindle is empty (T-1): a TLO set now would be kept by the firmware and "
+              "given to whichever tool is selected next. Put the tool in and select it (Machine ▸ Select "
+              "Tool, toffee-cli select-tool N), then set its TLO. Nothing was sent.");
 }
 
 // The tool tip is `height` above work Z0. The firmware's M493.3 H adds to its "current tool offset", which
@@ -279,6 +292,8 @@ void MachineSession::setTloAboveZ0(double height, Done done)
         return refuse(done, *why);
     if (auto r = validateOffset(tr("The height above Z0"), height); !r)
         return refuse(done, r.error().message);
+    if (auto why = emptySpindle())
+        return refuse(done, *why);
     awaitStatus(2000, [this, done, height](std::optional<MachineStatus> status) {
         if (!status || !status->tlo) {
             SessionResult bad;
@@ -395,7 +410,8 @@ void MachineSession::unlock(Done done, std::optional<double> brokenToolTlo)
         if (!m_restoreOnUnlock && brokenToolTlo && before->tlo
             && std::fabs(*before->tlo - *brokenToolTlo) > 0.0005)
             m_restoreOnUnlock = brokenToolTlo;
-        run("$X", MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &reply) {
+        const bool setterHalt = before->haltReason == 4; // the tool setter's: a break test's among them
+        run("$X", MachineLink::kDefaultTimeoutMs, done, [this, done, setterHalt](const CommandReply &reply) {
             const bool unlocked = std::any_of(reply.lines.cbegin(), reply.lines.cend(),
                 [](const QByteArray &l) { return l.trimmed() == "[Caution: Unlocked]"; });
             if (!unlocked) {
@@ -406,6 +422,22 @@ void MachineSession::unlock(Done done, std::optional<double> brokenToolTlo)
                 return;
             }
             const auto stored = std::exchange(m_restoreOnUnlock, std::nullopt);
+            if (!stored && setterHalt) {
+                // Nothing known to set back: what is in force, said as it is.
+                status([this, done](const SessionResult &r) {
+                    SessionResult result = r;
+                    if (r.ok() && r.status && r.status->tlo)
+                        result.message
+                            = tr("Unlocked. The TLO in force is %1 mm, as the machine left it: after a failed "
+                                 "break test, the length the test measured. No stored TLO of T%2 was known "
+                                 "here to set back (toffee-cli: --table FILE, or the history that recorded "
+                                 "the test). Probe T%2, or set its TLO, before it cuts.")
+                                  .arg(millimetres(*r.status->tlo, false))
+                                  .arg(m_tool.value_or(-1));
+                    done(result);
+                });
+                return;
+            }
             if (!stored) {
                 status(done);
                 return;

@@ -83,6 +83,8 @@ private:
     void readOffsets(Done done, SessionResult result);
     // M493.3 Z<tlo>, then the offsets: the machine must report that TLO in force.
     void setTloTo(double tlo, Done done);
+    // Why a TLO cannot be set now: the spindle is empty.
+    [[nodiscard]] std::optional<QString> emptySpindle() const;
     // `done`'s result, or a failure when the status report's TLO is not `tlo`.
     [[nodiscard]] static Done expectingTlo(double tlo, Done done);
     void readVersion(Done done, std::function<void()> next);

@@ -77,9 +77,17 @@ private Q_SLOTS:
         QCOMPARE(json(run)[u"firmware"_s][u"version"_s].toString(), u"2.1.0c-simulator"_s);
         QCOMPARE(json(run)[u"firmware"_s][u"break_test"_s].toBool(), true);
 
+        // An empty spindle takes no TLO: the firmware would keep it for the next tool selected. Refused, and
+        // the tool selected next runs with no TLO of 12.
+        run = machine({ u"set-tlo"_s, u"--z"_s, u"12"_s });
+        QVERIFY(run.exitCode != 0);
+        QVERIFY2(run.err.contains("spindle is empty (T-1)") && run.err.contains("Nothing was sent"),
+            run.err.constData());
+
         run = machine({ u"select-tool"_s, u"1"_s });
         QCOMPARE(run.exitCode, 0);
         QVERIFY(json(run)[u"warning"_s].toString().contains(u"another tool's"_s));
+        QCOMPARE(fixed3(json(machine({ u"status"_s }))[u"tlo"_s]), u"0.000"_s);
 
         // Probed against the machine's own reference, its factory calibration: T1 does not become it.
         run = machine({ u"probe"_s });
@@ -115,8 +123,11 @@ private Q_SLOTS:
         QCOMPARE(fixed3(json(run)[u"tlo"_s]), u"6.915"_s);
         QCOMPARE(machine({ u"probe"_s }).exitCode, 4); // halted: refused
 
-        // Unlock sets the stored TLO back first: the broken tool's measured length is not left in force.
-        run = machine({ u"unlock"_s });
+        // Unlock sets the stored TLO back first: the broken tool's measured length is not left in force. The
+        // history that recorded the test says which (no --table here), as the table would.
+        run = cli({ u"--json"_s, u"--library"_s, m_dir.filePath(u"library.sqlite"_s), u"--port"_s, m_port,
+                      u"unlock"_s },
+            90000);
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QCOMPARE(json(run)[u"state"_s].toString(), u"Idle"_s);
         QCOMPARE(fixed3(json(machine({ u"status"_s }))[u"tlo"_s]), u"6.500"_s);
@@ -129,13 +140,27 @@ private Q_SLOTS:
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QCOMPARE(json(run)[u"broken"_s].toBool(), false);
 
+        // With neither the table nor the history, nothing can know the stored TLO later: the break test says
+        // so, and the unlock says what it leaves in force (the length the test measured).
+        const QStringList bare { u"--json"_s, u"--no-history"_s, u"--port"_s, m_port };
+        QCOMPARE(cli(bare + QStringList { u"set-tlo"_s, u"--z"_s, u"6.5"_s }).exitCode, 0);
+        run = cli(bare + QStringList { u"break-test"_s, u"--tolerance"_s, u"0.05"_s }, 90000);
+        QCOMPARE(run.exitCode, 3);
+        QVERIFY2(run.err.contains("cannot know the stored TLO: after unlocking, set it back (set-tlo 6.500)"),
+            run.err.constData());
+        run = cli(bare + QStringList { u"unlock"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QVERIFY2(run.err.contains("The TLO in force is 6.915 mm, as the machine left it"), run.err.constData());
+        QCOMPARE(fixed3(json(cli(bare + QStringList { u"status"_s }))[u"tlo"_s]), u"6.915"_s);
+        QCOMPARE(machine({ u"probe"_s }).exitCode, 0);
+
         const Run history
             = cli({ u"--json"_s, u"--library"_s, m_dir.filePath(u"library.sqlite"_s), u"history"_s });
         QStringList kinds;
         for (const QJsonValue &e : json(history)[u"events"_s].toArray())
             kinds << e[u"kind"_s].toString() + (e[u"failed"_s].toBool() ? u"!"_s : QString());
         QCOMPARE(kinds,
-            (QStringList { u"probe"_s, u"manual_set"_s, u"break_test!"_s, u"probe"_s, u"break_test"_s }));
+            (QStringList { u"probe"_s, u"manual_set"_s, u"break_test!"_s, u"probe"_s, u"break_test"_s, u"probe"_s }));
     }
 
     // The firmware takes a TLO of 0.000 for none ("No previous TLO included", it measures without comparing):

@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QTest>
 
+#include "model/limits.h"
 #include "tests/support/sessionharness.h"
 
 using namespace Toffee;
@@ -84,6 +85,27 @@ private Q_SLOTS:
         QVERIFY(h.sent.contains("M493.3 Z-5"));
         QVERIFY(!h.sent.contains("M493.3 H3"));
         QCOMPARE(h.emulator.tlo(), -5.0);
+    }
+
+    // An empty spindle (T-1): the firmware would keep the TLO for the next tool selected. Refused, nothing sent;
+    // the emulator's TLO in force stays.
+    void anEmptySpindleTakesNoTlo()
+    {
+        SessionHarness h;
+        h.emulator.setToolInSpindle(Limits::kEmptySpindle);
+        QVERIFY(h.connect().ok());
+        const double before = h.emulator.tlo();
+        const qsizetype sent = h.sent.size();
+        for (const bool aboveZ0 : { false, true }) {
+            const SessionResult r = h.run([&](MachineSession::Done done) {
+                return aboveZ0 ? h.session.setTloAboveZ0(3.0, done) : h.session.setTlo(12.0, done);
+            });
+            QCOMPARE(r.outcome, Outcome::Refused);
+            QVERIFY2(r.message.contains(u"spindle is empty (T-1)"_s), qPrintable(r.message));
+            QVERIFY(!r.recording);
+        }
+        QCOMPARE(h.sent.size(), sent);
+        QCOMPARE(h.emulator.tlo(), before);
     }
 
     void refusesBadInputWithoutSendingIt_data()

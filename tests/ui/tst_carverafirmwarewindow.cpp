@@ -182,6 +182,9 @@ private Q_SLOTS:
         answerNextBox(QMessageBox::NoButton, &unlock, u"unlockBrokenButton"_s);
         s.trigger(u"actionUnlock"_s);
         QVERIFY2(unlock.contains(u"T1 failed its break test"_s), qPrintable(unlock));
+        // The stored 6.500 was set by hand: said, with the length the test measured.
+        QVERIFY2(unlock.contains(u"it was set by hand, not measured, and the break test measured 6.915 mm"_s),
+            qPrintable(unlock));
         QVERIFY(waitIdle(s));
         QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
         QTRY_COMPARE(s.text(u"tloLabel"_s), u"6.500 mm"_s);
@@ -203,6 +206,10 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(s.text(u"machineStateLabel"_s), u"HALTED"_s, 5000);
         QVERIFY2(s.window.consoleDock()->lines().join(u'\n').contains(u"Unexpected tool absence"_s),
             qPrintable(s.window.consoleDock()->lines().join(u'\n')));
+        // The banner gives the firmware's own words for the halt, not a guess from its number.
+        QTRY_VERIFY2(s.text(u"haltLabel"_s).contains(u"Unexpected tool absence detected"_s),
+            qPrintable(s.text(u"haltLabel"_s)));
+        QVERIFY(!s.text(u"haltLabel"_s).contains(u"No tool was given"_s));
         s.trigger(u"actionUnlock"_s);
         QVERIFY(waitIdle(s));
         QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
