@@ -5298,6 +5298,18 @@ Vermessen Sie T%1 stattdessen.</translation>
         <source>Sends: %1</source>
         <translation>Sendet: %1</translation>
     </message>
+    <message>
+        <source>T%1&apos;s TLO was set by hand, not measured on the tool setter.</source>
+        <translation>Die TL von T%1 wurde von Hand gesetzt, nicht am Werkzeugtaster gemessen.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO is dated in the future (%2): a clock was wrong, and when it was measured is not known.</source>
+        <translation>Die TL von T%1 ist in der Zukunft datiert (%2): Eine Uhr ging falsch, und wann sie gemessen wurde, ist unbekannt.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO is %2 days old, older than the stale limit (%3 d): the cutter may have worn or been changed since.</source>
+        <translation>Die TL von T%1 ist %2 Tage alt, älter als die Veraltungsgrenze (%3 d): Der Fräser kann seither verschlissen oder gewechselt worden sein.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ProgramUse</name>

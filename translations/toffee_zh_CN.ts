@@ -5298,6 +5298,18 @@ Probe T%1 instead.</source>
         <source>Sends: %1</source>
         <translation>发送：%1</translation>
     </message>
+    <message>
+        <source>T%1&apos;s TLO was set by hand, not measured on the tool setter.</source>
+        <translation>T%1 的 TLO 是手动设置的，并非在对刀仪上测量。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO is dated in the future (%2): a clock was wrong, and when it was measured is not known.</source>
+        <translation>T%1 的 TLO 日期在未来（%2）：某个时钟有误，无法知道其测量时间。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO is %2 days old, older than the stale limit (%3 d): the cutter may have worn or been changed since.</source>
+        <translation>T%1 的 TLO 已有 %2 天，超过过期期限（%3 天）：刀具此后可能已磨损或被更换。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ProgramUse</name>

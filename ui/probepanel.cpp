@@ -10,9 +10,11 @@
 #include <QProgressBar>
 #include <QPushButton>
 
+#include "model/clock.h"
 #include "model/document/tooldocument.h"
 #include "serial/machineconnection.h"
 #include "ui/appearance.h"
+#include "ui/appsettings.h"
 #include "ui/brokentool.h"
 
 using namespace Qt::StringLiterals;
@@ -203,8 +205,24 @@ void ProbePanel::restore(bool confirm)
             details << tr(
                 "The machine reports no reference tool MCS Z: a stored TLO is only right against the "
                 "reference it was measured from.");
+        // What makes a stored TLO doubtful, each named (the job preparation refuses all of them).
+        if (tool->source == TloSource::Manual)
+            details << tr("T%1's TLO was set by hand, not measured on the tool setter.").arg(number);
         if (tool->breakTestFailed)
             details << tr("T%1 failed its last break test.").arg(number);
+        const QDateTime now = Clock::now();
+        const int staleDays = AppSettings().staleAfterDays();
+        if (Clock::isInFuture(tool->measuredAt, now))
+            details << tr("T%1's TLO is dated in the future (%2): a clock was wrong, and when it was measured "
+                          "is not known.")
+                           .arg(number)
+                           .arg(tool->measuredAt.toUTC().toString(Qt::ISODate));
+        else if (tool->measuredAt.isValid() && tool->measuredAt.secsTo(now) > qint64(staleDays) * 24 * 3600)
+            details << tr("T%1's TLO is %2 days old, older than the stale limit (%3 d): the cutter may have "
+                          "worn or been changed since.")
+                           .arg(number)
+                           .arg(tool->measuredAt.secsTo(now) / (24 * 3600))
+                           .arg(staleDays);
         details << tr("Sends: %1").arg(m_connection->session()->restoreCommand(number, tlo));
         box.setInformativeText(details.join(u"\n\n"_s));
         if (details.size() > 2)

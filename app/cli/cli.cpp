@@ -63,7 +63,8 @@ The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator
                              M493.3 Z, M491.1 H), then put the last one back (M6 T-1); a broken tool stops it
                              (the machine halts; exit 3, the tool named). The community firmware only
   restore N --table FILE     set the TLO the table holds for tool N on the machine (M493.2 T, M493.3 Z),
-                             when it was measured against the machine's reference
+                             when it was measured against the machine's reference; one set by hand, failed
+                             in a break test or older than --stale-days (7) is refused unless --anyway
   unlock                     clear a halt ($X)
   link-test --count N        N round trips; median, p99 and max in milliseconds
   push-offsets --table FILE  grblHAL: every tool of the table with a TLO into the controller's own table
@@ -137,7 +138,7 @@ const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s,
     u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s, u"host"_s,
     u"protocol"_s, u"seconds"_s, u"discovery-port"_s, u"controller"_s, u"setter"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"version"_s, u"emulator"_s, u"no-history"_s,
-    u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s, u"same-machine"_s };
+    u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s, u"same-machine"_s, u"anyway"_s };
 
 // toffee-cli import's own options.
 const QSet<QString> kImportValueOptions = { u"into"_s, u"cam-units"_s };

@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QHostAddress>
 
+#include "model/clock.h"
 #include "model/formats/tablefile.h"
 #include "model/job/jobchecker.h"
 #include "model/textparsing.h"
@@ -202,6 +203,25 @@ Result<void> checkRestore(const Invocation &call, MachineOptions &o)
     const Tool *tool = o.table->find(o.tool);
     if (!tool || !tool->measuredTlo)
         return Error { u"T%1 has no measured TLO in %2: probe it instead."_s.arg(o.tool).arg(o.tablePath) };
+    // What makes a stored TLO doubtful, as the job preparation refuses it: said by name, before anything is
+    // sent; --anyway takes it all the same (the reference is checked on the machine whatever is said).
+    QStringList doubts;
+    if (tool->tloSource == TloSource::Manual)
+        doubts << u"it was set by hand, not measured"_s;
+    if (tool->breakTestFailed)
+        doubts << u"it failed its last break test"_s;
+    const QDateTime now = Clock::now();
+    if (Clock::isInFuture(tool->measuredAt, now))
+        doubts << u"it is dated %1, in the future (a clock was wrong)"_s.arg(
+            tool->measuredAt.toUTC().toString(Qt::ISODate));
+    else if (tool->measuredAt.isValid() && tool->measuredAt.secsTo(now) > qint64(o.staleDays) * 24 * 3600)
+        doubts << u"it is %1 days old, older than the stale limit (%2 d, --stale-days)"_s
+                      .arg(tool->measuredAt.secsTo(now) / (24 * 3600))
+                      .arg(o.staleDays);
+    if (!doubts.isEmpty() && !call.has(u"anyway"_s))
+        return Error { u"T%1's stored TLO may not be its length now: %2. Probe T%1 instead, or restore it "
+                       "anyway (--anyway) if you know it holds. Nothing was sent."_s.arg(o.tool)
+                           .arg(doubts.join(u"; "_s)) };
     return {};
 }
 

@@ -16,6 +16,7 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include "model/clock.h"
 #include "model/document/tooldocument.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/machineconnection.h"
@@ -220,6 +221,27 @@ private Q_SLOTS:
         QCOMPARE(f.window.connection()->emulator()->tool(), 2);
         QVERIFY(std::fabs(f.window.connection()->emulator()->tlo() - 9.652) < 1e-9);
         QVERIFY(!f.sent.contains("M491") || f.sent.count("M491") == 1); // no probe for the restore
+    }
+
+    // Set by hand, failed in its break test, older than the stale limit: each named in the question, which
+    // warns; Cancel (the default) sends nothing.
+    void restoreNamesWhatMakesAStoredTloDoubtful()
+    {
+        Fixture f;
+        Tool t2 = *f.window.document()->table().find(2);
+        t2.tloSource = TloSource::Manual;
+        t2.breakTestFailed = true;
+        t2.measuredAt = Clock::now().addDays(-10);
+        QVERIFY(f.window.document()->editTool(2, t2).ok());
+        f.window.toolTablePanel()->selectTool(2);
+        QString question;
+        answerNextBox(QMessageBox::Cancel, &question);
+        QTest::mouseClick(f.find<QPushButton>(u"restoreButton"_s), Qt::LeftButton);
+        QVERIFY2(question.contains(u"T2's TLO was set by hand, not measured on the tool setter."_s)
+                && question.contains(u"T2 failed its last break test."_s)
+                && question.contains(u"T2's TLO is 10 days old, older than the stale limit (7 d)"_s),
+            qPrintable(question));
+        QVERIFY(!f.sent.contains("M493.2 T2"));
     }
 
     void restoreAsksWhetherTheToolIsInTheSpindleAndWarnsWithoutAReference()
