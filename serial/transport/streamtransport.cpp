@@ -86,6 +86,7 @@ void StreamTransport::stop()
 {
     m_timer.stop();
     m_phase = Phase::Closed;
+    m_queued.clear();
     if (m_device) // only what start() connected: the subclass's own connections to its device stay
         disconnect(m_device, &QIODevice::readyRead, this, &StreamTransport::readAvailable);
     m_device = nullptr;
@@ -158,7 +159,7 @@ void StreamTransport::readAvailable()
         });
     }
     if (m_phase == Phase::Open)
-        return deliver(m_stream.feed(bytes));
+        return queueLines(m_stream.feed(bytes));
     detect(bytes);
 }
 
@@ -193,9 +194,25 @@ void StreamTransport::detect(QByteArrayView bytes)
     }
 }
 
-void StreamTransport::deliver(const QList<LineAssembler::Line> &lines)
+void StreamTransport::queueLines(const QList<LineAssembler::Line> &lines)
 {
-    for (const LineAssembler::Line &line : lines) {
+    m_queued += lines;
+    if (m_queued.isEmpty() || m_deliveryQueued)
+        return;
+    m_deliveryQueued = true;
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            m_deliveryQueued = false;
+            deliverQueued();
+        },
+        Qt::QueuedConnection);
+}
+
+void StreamTransport::deliverQueued()
+{
+    while (!m_queued.isEmpty() && m_phase == Phase::Open) {
+        const LineAssembler::Line line = m_queued.takeFirst();
         if (line.truncated) {
             // Not a controller's line, but its start may still say what it is ("error:..."): keep that, drop
             // the rest rather than grow without bound, and say so once for each such line.
@@ -205,8 +222,10 @@ void StreamTransport::deliver(const QList<LineAssembler::Line> &lines)
         }
         Q_EMIT lineReceived(line.bytes);
         if (!isOpen())
-            return; // a receiver closed the link
+            break; // a receiver closed the link
     }
+    if (m_phase != Phase::Open)
+        m_queued.clear();
 }
 
 void StreamTransport::writeLine(const QByteArray &line)

@@ -76,7 +76,12 @@ private:
     enum class Phase { Closed, Probing, Flushing, Open };
 
     void readAvailable();
-    void deliver(const QList<LineAssembler::Line> &lines);
+    // The lines read wait in one queue and are given to the receivers from the event loop, never from the
+    // device's readyRead: a receiver that holds the loop (a modal box) would otherwise stop the reading (a
+    // device does not say readyRead again while its readyRead is being handled). Nested, the queue keeps the
+    // order.
+    void queueLines(const QList<LineAssembler::Line> &lines);
+    void deliverQueued();
     void detect(QByteArrayView bytes);
     void probe();
     // The first question was answered in `mode`: open, or refuse a protocol forced otherwise.
@@ -95,6 +100,8 @@ private:
     QTimer m_timer;
     int m_tries = 0;
     bool m_sliceQueued = false; // the next slice of what is waiting is to be read
+    QList<LineAssembler::Line> m_queued; // read, not yet given to the receivers
+    bool m_deliveryQueued = false;
 };
 
 } // namespace Toffee

@@ -351,6 +351,48 @@ private Q_SLOTS:
 
     // The machine closes the connection (switched off cleanly, restarted, another program took it) while a
     // command waits: the command fails at once, not at its 5 s limit, in words that say what happened.
+    // A receiver that holds the event loop (the window's modal box opened from a status or an alarm: its own
+    // loop runs inside the handler) does not stop the reading: the status reports keep coming while it is open,
+    // and in order. Before, the socket said nothing more until the handler returned ("no status report for
+    // 17 s" while the machine was idle).
+    void aReceiverHoldingTheEventLoopDoesNotStopTheReading()
+    {
+        Peer peer;
+        TcpTransport transport(peer.address());
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        MachineLink link(&transport);
+        link.setGrammar(carveraGrammar());
+        QVERIFY(openLink(peer, link));
+        int sent = 0;
+        connect(peer.socket, &QTcpSocket::readyRead, &peer.server, [&peer, &sent] {
+            for (const char c : peer.socket->readAll()) {
+                if (c == '?')
+                    peer.socket->write(QByteArray("<Idle|MPos:0.000,0.000,") + QByteArray::number(++sent)
+                        + ".000|WPos:0.000,0.000,0.000>\r\n");
+            }
+        });
+        QList<double> seen;
+        int seenInside = 0;
+        bool inside = false;
+        connect(&link, &MachineLink::statusChanged, &link, [&](const MachineStatus &status) {
+            seen << status.mpos[2];
+            if (inside)
+                ++seenInside;
+            if (seen.size() != 1)
+                return;
+            inside = true;
+            QEventLoop modal; // as QMessageBox::exec runs one
+            QTimer::singleShot(1500, &modal, &QEventLoop::quit);
+            modal.exec();
+            inside = false;
+        });
+        link.setPollInterval(100);
+        QVERIFY(runUntil([&] { return seen.size() >= 20; }, 5000));
+        QVERIFY2(seenInside >= 8, qPrintable(QString::number(seenInside)));
+        for (qsizetype i = 0; i < seen.size(); ++i)
+            QCOMPARE(seen.at(i), double(i + 1)); // each once, in the order sent
+    }
+
     void peerClosingFailsTheCommandAtOnce()
     {
         Peer peer;
