@@ -155,8 +155,8 @@ std::optional<ConsoleCheck> ConsoleCheck::checkToolChange(const GCodeBlock &bloc
     if (!problem.isEmpty())
         return refuse(problem);
     ConsoleCheck c = confirm(select
-            ? tr("M493.2 makes T%1 the active tool but keeps the current TLO, which belongs "
-                 "to the tool measured before. Probe T%1 or restore its TLO before cutting.")
+            ? tr("M493.2 makes T%1 the active tool but keeps the TLO in force now (another tool's, or "
+                 "none): T%1's own is not set. Probe T%1 or restore its TLO before cutting.")
                   .arg(int(t->value))
             : tr("M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.")
                   .arg(int(t->value)));

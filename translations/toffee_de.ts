@@ -1372,10 +1372,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>M493.2 braucht ein Werkzeug (M493.2 T2): Ohne Werkzeug hält die Maschine an.</translation>
     </message>
     <message>
-        <source>M493.2 makes T%1 the active tool but keeps the current TLO, which belongs to the tool measured before. Probe T%1 or restore its TLO before cutting.</source>
-        <translation>M493.2 macht T%1 zum aktiven Werkzeug, behält aber die aktuelle TLO, die zum zuvor gemessenen Werkzeug gehört. Vermessen Sie T%1 oder stellen Sie seine TLO wieder her, bevor Sie schneiden.</translation>
-    </message>
-    <message>
         <source>M6 needs a tool (M6 T2).</source>
         <translation>M6 braucht ein Werkzeug (M6 T2).</translation>
     </message>
@@ -1422,6 +1418,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1 sets the tool length offset in force; nothing moves, but the next moves use it.</source>
         <translation>%1 setzt den wirksamen Werkzeuglängenversatz; nichts bewegt sich, aber die nächsten Bewegungen verwenden ihn.</translation>
+    </message>
+    <message>
+        <source>M493.2 makes T%1 the active tool but keeps the TLO in force now (another tool&apos;s, or none): T%1&apos;s own is not set. Probe T%1 or restore its TLO before cutting.</source>
+        <translation>M493.2 macht T%1 zum aktiven Werkzeug, behält aber die jetzt wirksame TL (die eines anderen Werkzeugs oder keine): Die eigene von T%1 ist nicht gesetzt. Vermessen Sie T%1 oder stellen Sie seine TL wieder her, bevor Sie schneiden.</translation>
     </message>
 </context>
 <context>
@@ -6340,6 +6340,11 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     <message>
         <source>another length</source>
         <translation>eine andere Länge</translation>
+    </message>
+    <message>
+        <source>&amp;Unlock</source>
+        <comment>the strip&apos;s button</comment>
+        <translation>&amp;Entsperren</translation>
     </message>
 </context>
 <context>

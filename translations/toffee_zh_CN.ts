@@ -1372,10 +1372,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>M493.2 需要指定刀具（M493.2 T2）：否则机床会停机。</translation>
     </message>
     <message>
-        <source>M493.2 makes T%1 the active tool but keeps the current TLO, which belongs to the tool measured before. Probe T%1 or restore its TLO before cutting.</source>
-        <translation>M493.2 会将 T%1 设为当前刀具，但保留当前 TLO，而该 TLO 属于之前测量的刀具。切削前请对 T%1 对刀或恢复其 TLO。</translation>
-    </message>
-    <message>
         <source>M6 needs a tool (M6 T2).</source>
         <translation>M6 需要指定刀具（M6 T2）。</translation>
     </message>
@@ -1422,6 +1418,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1 sets the tool length offset in force; nothing moves, but the next moves use it.</source>
         <translation>%1 设置当前生效的刀具长度偏置；机器不会移动，但之后的移动会使用它。</translation>
+    </message>
+    <message>
+        <source>M493.2 makes T%1 the active tool but keeps the TLO in force now (another tool&apos;s, or none): T%1&apos;s own is not set. Probe T%1 or restore its TLO before cutting.</source>
+        <translation>M493.2 将 T%1 设为当前刀具，但保留当前生效的 TLO（另一把刀具的，或没有）：T%1 自己的 TLO 未设置。切削前请测量 T%1 或恢复其 TLO。</translation>
     </message>
 </context>
 <context>
@@ -6340,6 +6340,11 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     <message>
         <source>another length</source>
         <translation>另一个长度</translation>
+    </message>
+    <message>
+        <source>&amp;Unlock</source>
+        <comment>the strip&apos;s button</comment>
+        <translation>解锁(&amp;U)</translation>
     </message>
 </context>
 <context>

@@ -74,7 +74,7 @@ TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidge
     , m_reference(valueLabel(this, u"referenceMzLabel"_s, tr("Reference tool MCS Z")))
     , m_current(valueLabel(this, u"currentMzLabel"_s, tr("Current tool MCS Z")))
     , m_halt(valueLabel(this, u"haltLabel"_s, tr("Why the machine halted and what to do")))
-    , m_unlock(new QPushButton(tr("Unlock"), this))
+    , m_unlock(new QPushButton(tr("&Unlock", "the strip's button"), this))
 {
     setObjectName(u"machineStrip"_s);
     QFont big = m_tlo->font();
@@ -85,9 +85,10 @@ TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidge
     bold.setBold(true);
     m_tool->setFont(bold);
     m_state->setFont(bold);
-    // Two lines (what happened; what to do), never wrapped: a wrapped label in a toolbar asks for the height
-    // of its narrowest layout. Clipped rather than widening the window; the tooltip has it all.
+    // Wrapped at the width the strip has (fitHalt), never widening the window: a wrapped label left to the
+    // layout would ask for the height of its narrowest layout. The tooltip has it all too.
     m_halt->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    m_halt->setWordWrap(true);
     m_halt->setAutoFillBackground(true);
     m_halt->setMargin(4);
     m_halt->hide();
@@ -220,6 +221,7 @@ void TloPanel::showHalt()
         m_halt->setText(
             why + u' ' + tr("Nothing that moves the machine or changes its offsets runs until then."));
         m_halt->setToolTip(m_halt->text());
+        fitHalt();
         m_halt->setStyleSheet(
             u"color: white; background: %1; padding: 3px 6px; font-weight: bold;"_s.arg(red));
     }
@@ -315,6 +317,24 @@ void TloPanel::checkStale()
     m_state->setEnabled(!stale || halted);
     for (QLabel *l : { m_tool, m_reference, m_current, m_tlo, m_tloNote })
         l->setEnabled(!stale);
+}
+
+void TloPanel::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    fitHalt();
+}
+
+void TloPanel::fitHalt()
+{
+    if (m_halt->isHidden())
+        return;
+    // The banner spans the strip (its margins aside); its height is what its words need at that width.
+    const QMargins margins = layout() ? layout()->contentsMargins() : QMargins();
+    const int width = std::max(200, this->width() - margins.left() - margins.right());
+    const int height = m_halt->heightForWidth(width);
+    if (height > 0 && height != m_halt->height())
+        m_halt->setFixedHeight(height);
 }
 
 void TloPanel::unlock(bool confirm)

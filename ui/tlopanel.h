@@ -38,7 +38,12 @@ public:
     // alarm's own Unlock, which is that question).
     void unlock(bool confirm = true);
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
+    // The halt banner wraps at the strip's width: as many lines as its words need there, never wider.
+    void fitHalt();
     void showStatus(const MachineStatus &status);
     void showOffsets(const TloReading &offsets, int tool);
     void showHalt();

@@ -142,8 +142,8 @@ void printSelected(Invocation &call, const SessionResult &r)
 {
     // M493.2 keeps the TLO of the tool measured before: say so, every time.
     const QString warning
-        = u"T%1 is active but the machine still uses the TLO it had before, which "
-          "is another tool's; probe T%1 (or set its TLO) before you cut."_s.arg(r.tool.value_or(-1));
+        = u"T%1 is active but the machine keeps the TLO in force before (another tool's, or none): T%1's "
+          "own is not set; probe T%1 (or set its TLO) before you cut."_s.arg(r.tool.value_or(-1));
     if (call.json)
         printJson(call, QJsonObject { { u"tool"_s, r.tool.value_or(-1) }, { u"warning"_s, warning } });
     else

@@ -69,7 +69,7 @@ private Q_SLOTS:
             << u"M493.3 H12.5"_s << false << Verdict::Refuse << u"Gauge height above Z0"_s;
         QTest::newRow("set TLO") << u"M493.3 Z-30.488"_s << false << Verdict::Confirm << u"set by hand"_s;
         QTest::newRow("select tool") << u"M493.2 T3"_s << false << Verdict::Confirm
-                                     << u"keeps the current TLO"_s;
+                                     << u"keeps the TLO in force now (another tool's, or none)"_s;
         // Sent as typed: what only reads or changes nothing that cuts.
         QTest::newRow("report") << u"M493.4"_s << false << Verdict::Send << QString();
         QTest::newRow("absolute") << u"G90"_s << false << Verdict::Send << QString();

@@ -15,6 +15,8 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableView>
+#include <QLabel>
+#include <QPushButton>
 #include <QTest>
 #include <QTimer>
 #include <QTreeWidget>
@@ -294,6 +296,43 @@ private Q_SLOTS:
         screenshot(s.window, u"machinist-de-1280x720.png"_s);
         s.window.resize(1024, 700);
         screenshot(s.window, u"machinist-de-1024x700.png"_s);
+    }
+
+    // Halted, in German and in Chinese at 1024×700: the banner's long words wrap or are cut inside the window,
+    // which keeps its width, and Unlock stays on screen.
+    void haltedFitsAt1024x700_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("German") << u"de"_s;
+        QTest::newRow("Chinese") << u"zh_CN"_s;
+    }
+    void haltedFitsAt1024x700()
+    {
+        QFETCH(QString, language);
+        QVERIFY(!installTranslations(qApp, language, QStringLiteral(TOFFEE_BUILD_DIR "/translations")).isEmpty());
+        Station s;
+        s.window.resize(1024, 700);
+        QVERIFY(s.window.openFile(kExample));
+        QVERIFY(QTest::qWaitForWindowExposed(&s.window));
+        s.window.connection()->connectTo(ConnectionTarget {});
+        QTRY_VERIFY(s.window.connection()->state() == MachineConnection::State::Connected);
+        s.window.connection()->emulator()->halt(4); // the tool setter's halt: the longest meaning
+        QTRY_VERIFY(s.window.connection()->isHalted());
+        auto *unlock = s.find<QPushButton>(u"unlockButton"_s);
+        QTRY_VERIFY(unlock->isVisible());
+        QTest::qWait(300); // the layout settles
+        QCOMPARE(s.window.width(), 1024);
+        const QPoint right = unlock->mapTo(&s.window, QPoint(unlock->width(), unlock->height()));
+        QVERIFY2(right.x() <= s.window.width() && right.y() <= s.window.height(),
+            qPrintable(u"Unlock ends at %1,%2"_s.arg(right.x()).arg(right.y())));
+        QVERIFY2(unlock->text().contains(u'&'), qPrintable(unlock->text())); // Alt and its letter press it
+        auto *banner = s.find<QLabel>(u"haltLabel"_s);
+        QVERIFY(banner->isVisible());
+        QVERIFY(banner->mapTo(&s.window, QPoint(banner->width(), 0)).x() <= s.window.width());
+        // Every word of it shown: as tall as its words need at the width it has.
+        QVERIFY2(banner->height() >= banner->heightForWidth(banner->width()),
+            qPrintable(u"%1 < %2"_s.arg(banner->height()).arg(banner->heightForWidth(banner->width()))));
+        screenshot(s.window, u"machinist-%1-halted-1024x700.png"_s.arg(language));
     }
 };
 

@@ -122,13 +122,15 @@ private Q_SLOTS:
         QCOMPARE(rows,
             (QStringList {
                 u"T2 Changed radius 3.000 → 4.000 mm\na new cutter (diameter 6.000 → 8.000 mm): the old "
-                u"cutter's TLO 9.652 mm, its wear and break mark end; measure it before it cuts"_s,
+                u"cutter's TLO 9.652 mm, its length, wear and break mark end; measure it before it cuts"_s,
                 u"T3 Unchanged "_s,
                 u"T12 New pocket 12; no tool length yet (0 in the table): measure it before use"_s }));
         QCOMPARE(view->model()->rowCount(), 7);
         QCOMPARE(shown(view, 2, ToolTableModel::RadiusGeometryColumn), u"4.000"_s);
         // T2 is now an 8 mm cutter: the 6 mm cutter's TLO is not its own.
         QCOMPARE(shown(view, 2, ToolTableModel::MeasuredTloColumn), u"not measured"_s);
+        // Nor its length (71.488, the 6 mm cutter's), which G43 would apply on LinuxCNC or FANUC.
+        QCOMPARE(shown(view, 2, ToolTableModel::LengthGeometryColumn), u"0.000"_s);
         QCOMPARE(shown(view, 12, ToolTableModel::DescriptionColumn), u"10 mm roughing"_s);
         QCOMPARE(shown(view, 12, ToolTableModel::LengthGeometryColumn), u"0.000"_s);
         QCOMPARE(window.document()->table().find(2)->measuredTlo, std::nullopt);

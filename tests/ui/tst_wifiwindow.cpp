@@ -8,6 +8,9 @@
 // With TOFFEE_SCREENSHOTS set, the window is saved there.
 #include <QAbstractButton>
 #include <QComboBox>
+#include <QElapsedTimer>
+#include <QMessageBox>
+#include <QTimer>
 #include <QDir>
 #include <QLabel>
 #include <QLineEdit>
@@ -210,6 +213,58 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(panelOf(third)->target().name(), moved.address(), 5000);
         QCOMPARE(third.find<QComboBox>(u"wifiMachineCombo"_s)->currentText(),
             u"Carvera_Shop — "_s + moved.address());
+    }
+
+    // While the broken-tool alarm is open (a modal box, opened from the break test's answer), the strip keeps
+    // reading the machine: the halt is shown as the machine says it, never "no status report for 17 s".
+    void theStripKeepsReadingWhileABoxIsOpen()
+    {
+        NetworkMachine machine(u"Carvera_Box"_s, freeUdpPort(), false);
+        Station s;
+        panelOf(s)->setKind(ConnectionPanel::Kind::WiFi);
+        s.find<QComboBox>(u"wifiMachineCombo"_s)->setEditText(machine.address());
+        QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QVERIFY(waitConnected(s));
+        QVERIFY(s.window.openFile(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json")));
+        QVERIFY(s.window.connection()->selectTool(1, {}));
+        QVERIFY(waitIdle(s));
+        s.probe();
+        QVERIFY(waitIdle(s));
+        machine.emulator.setToolLength(1, 20.0); // shorter now: broken
+
+        bool sawBox = false;
+        qint64 oldestStatusMs = 0;
+        QString state;
+        std::function<void(int)> answer = [&](int attempts) {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            if (box && box->objectName() != u"brokenToolAlarm"_s) {
+                box->button(QMessageBox::Yes)->click(); // the break test's own question
+            } else if (box) {
+                sawBox = true;
+                // Three seconds with the box open, twice the strip's stale limit: the reports keep coming.
+                auto *sample = new QTimer(box);
+                auto open = std::make_shared<QElapsedTimer>();
+                open->start();
+                connect(sample, &QTimer::timeout, box, [&, sample, open, box] {
+                    oldestStatusMs = std::max(oldestStatusMs, s.window.connection()->link()->statusAgeMs());
+                    if (open->elapsed() > 3000) {
+                        sample->stop();
+                        state = s.text(u"machineStateLabel"_s);
+                        box->findChild<QAbstractButton *>(u"alarmLeaveHaltedButton"_s)->click();
+                    }
+                });
+                sample->start(100);
+                return;
+            }
+            if (attempts > 0)
+                QTimer::singleShot(20, [&answer, attempts] { answer(attempts - 1); });
+        };
+        QTimer::singleShot(0, [&answer] { answer(1500); });
+        s.trigger(u"actionBreakTest"_s);
+        QVERIFY(QTest::qWaitFor([&] { return !state.isEmpty(); }, 30000));
+        QVERIFY(sawBox);
+        QVERIFY2(oldestStatusMs < int(MachineConnection::kStaleAfterMs), qPrintable(QString::number(oldestStatusMs)));
+        QCOMPARE(state, u"HALTED"_s);
     }
 
     // A typed address works without a beacon; a wrong one is said in words, and nothing hangs.
