@@ -6379,6 +6379,93 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
     </message>
 </context>
 <context>
+    <name>Toffee::ToolContextMenu</name>
+    <message>
+        <source>Make &amp;Active (No Probe)…</source>
+        <translation>&amp;Aktiv machen (ohne Vermessen)…</translation>
+    </message>
+    <message>
+        <source>&amp;Set Its TLO…</source>
+        <translation>&amp;TL setzen…</translation>
+    </message>
+    <message>
+        <source>Make T%1 &amp;Active (No Probe)…</source>
+        <translation>T%1 &amp;aktiv machen (ohne Vermessen)…</translation>
+    </message>
+    <message>
+        <source>Connect to a machine that is idle and not halted first.</source>
+        <translation>Verbinden Sie zuerst mit einer Maschine, die bereit und nicht angehalten ist.</translation>
+    </message>
+    <message>
+        <source>Select one tool of the table.</source>
+        <translation>Wählen Sie ein Werkzeug der Tabelle.</translation>
+    </message>
+    <message>
+        <source>T%1 is already the active tool.</source>
+        <translation>T%1 ist bereits das aktive Werkzeug.</translation>
+    </message>
+    <message>
+        <source>Tell the machine that T%1 is in the spindle, without probing it.</source>
+        <translation>Der Maschine sagen, dass T%1 in der Spindel ist, ohne es zu vermessen.</translation>
+    </message>
+    <message>
+        <source>&amp;Set T%1&apos;s TLO…</source>
+        <translation>TL von T%1 &amp;setzen…</translation>
+    </message>
+    <message>
+        <source>Set the TLO of the tool in the spindle by hand (Machine ▸ Set the offset by hand).</source>
+        <translation>Die TL des Werkzeugs in der Spindel von Hand setzen (Maschine ▸ Korrektur von Hand setzen).</translation>
+    </message>
+    <message>
+        <source>Only the tool in the spindle&apos;s TLO can be set: make T%1 active first.</source>
+        <translation>Nur die TL des Werkzeugs in der Spindel lässt sich setzen: Machen Sie T%1 zuerst aktiv.</translation>
+    </message>
+    <message>
+        <source>&amp;Restore T%1&apos;s Known TLO…</source>
+        <translation>Bekannte TL von T%1 &amp;wiederherstellen…</translation>
+    </message>
+    <message>
+        <source>&amp;Restore Known TLO…</source>
+        <translation>Bekannte TL &amp;wiederherstellen…</translation>
+    </message>
+    <message>
+        <source>&amp;Probe T%1 (in the Spindle)</source>
+        <translation>T%1 &amp;vermessen (in der Spindel)</translation>
+    </message>
+    <message>
+        <source>&amp;Probe the Tool in the Spindle</source>
+        <translation>Werkzeug in der Spindel &amp;vermessen</translation>
+    </message>
+    <message>
+        <source>Make T%1 active?</source>
+        <translation>T%1 aktiv machen?</translation>
+    </message>
+    <message>
+        <source>Is T%1 in the spindle now?</source>
+        <translation>Ist T%1 jetzt in der Spindel?</translation>
+    </message>
+    <message>
+        <source>The machine takes T%1 as the tool in the spindle, without probing it. It keeps the TLO in force now (another tool&apos;s, or none): probe T%1 or restore its TLO before it cuts.
+
+Sends: %2</source>
+        <translation>Die Maschine nimmt T%1 als Werkzeug in der Spindel, ohne es zu vermessen. Sie behält die jetzt wirksame TL (die eines anderen Werkzeugs oder keine): Vermessen Sie T%1 oder stellen Sie seine TL wieder her, bevor es schneidet.
+
+Sendet: %2</translation>
+    </message>
+    <message>
+        <source>T%1 Is in the Spindle</source>
+        <translation>T%1 ist in der Spindel</translation>
+    </message>
+    <message>
+        <source>T%1 was not made active</source>
+        <translation>T%1 wurde nicht aktiv gemacht</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s tool is as it was.</source>
+        <translation>Das Werkzeug der Maschine ist unverändert.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::ToolDocument</name>
     <message>
         <source>This table has no file yet; use Save As.</source>

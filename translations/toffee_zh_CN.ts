@@ -6379,6 +6379,93 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
     </message>
 </context>
 <context>
+    <name>Toffee::ToolContextMenu</name>
+    <message>
+        <source>Make &amp;Active (No Probe)…</source>
+        <translation>设为当前刀具（不测量）(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>&amp;Set Its TLO…</source>
+        <translation>设置其 TLO(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Make T%1 &amp;Active (No Probe)…</source>
+        <translation>将 T%1 设为当前刀具（不测量）(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Connect to a machine that is idle and not halted first.</source>
+        <translation>请先连接一台空闲且未停机的机器。</translation>
+    </message>
+    <message>
+        <source>Select one tool of the table.</source>
+        <translation>请在表中选择一把刀具。</translation>
+    </message>
+    <message>
+        <source>T%1 is already the active tool.</source>
+        <translation>T%1 已是当前刀具。</translation>
+    </message>
+    <message>
+        <source>Tell the machine that T%1 is in the spindle, without probing it.</source>
+        <translation>告诉机器 T%1 在主轴中，不进行测量。</translation>
+    </message>
+    <message>
+        <source>&amp;Set T%1&apos;s TLO…</source>
+        <translation>设置 T%1 的 TLO(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Set the TLO of the tool in the spindle by hand (Machine ▸ Set the offset by hand).</source>
+        <translation>手动设置主轴中刀具的 TLO（机器 ▸ 手动设置补偿）。</translation>
+    </message>
+    <message>
+        <source>Only the tool in the spindle&apos;s TLO can be set: make T%1 active first.</source>
+        <translation>只能设置主轴中刀具的 TLO：请先将 T%1 设为当前刀具。</translation>
+    </message>
+    <message>
+        <source>&amp;Restore T%1&apos;s Known TLO…</source>
+        <translation>恢复 T%1 的已知 TLO(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>&amp;Restore Known TLO…</source>
+        <translation>恢复已知 TLO(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>&amp;Probe T%1 (in the Spindle)</source>
+        <translation>测量 T%1（在主轴中）(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Probe the Tool in the Spindle</source>
+        <translation>测量主轴中的刀具(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Make T%1 active?</source>
+        <translation>将 T%1 设为当前刀具？</translation>
+    </message>
+    <message>
+        <source>Is T%1 in the spindle now?</source>
+        <translation>T%1 现在在主轴中吗？</translation>
+    </message>
+    <message>
+        <source>The machine takes T%1 as the tool in the spindle, without probing it. It keeps the TLO in force now (another tool&apos;s, or none): probe T%1 or restore its TLO before it cuts.
+
+Sends: %2</source>
+        <translation>机器将 T%1 视为主轴中的刀具，不进行测量。它保留当前生效的 TLO（另一把刀具的，或没有）：切削前请测量 T%1 或恢复其 TLO。
+
+发送：%2</translation>
+    </message>
+    <message>
+        <source>T%1 Is in the Spindle</source>
+        <translation>T%1 在主轴中</translation>
+    </message>
+    <message>
+        <source>T%1 was not made active</source>
+        <translation>T%1 未设为当前刀具</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s tool is as it was.</source>
+        <translation>机器的刀具保持不变。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::ToolDocument</name>
     <message>
         <source>This table has no file yet; use Save As.</source>

@@ -38,6 +38,7 @@
 #include "ui/rackpanel.h"
 #include "ui/tlopanel.h"
 #include "ui/toolchangewait.h"
+#include "ui/toolcontextmenu.h"
 #include "ui/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
@@ -192,6 +193,7 @@ void MainWindow::connectMachine()
         const QList<int> selected = m_tablePanel->selectedToolNumbers();
         m_machineDock->probePanel()->setSelectedTool(selected.size() == 1 ? selected.front() : -1);
     });
+    new ToolContextMenu(this, m_connection, m_document, m_tablePanel, m_machineDock); // after the selection's
     updateMachineStatus();
 }
 

@@ -195,4 +195,10 @@ void OffsetEditor::send(bool confirm)
         m_connection->setTlo(*target, done);
 }
 
+void OffsetEditor::focusValue()
+{
+    m_value->setFocus(Qt::ShortcutFocusReason);
+    m_value->selectAll();
+}
+
 } // namespace Toffee

@@ -34,6 +34,8 @@ public:
     [[nodiscard]] QString commandPreview() const;
     [[nodiscard]] QString resultPreview() const;
     void send(bool confirm = true);
+    // The value's field, focused with its text selected: typing replaces it.
+    void focusValue();
 
 private:
     void updatePreview();
