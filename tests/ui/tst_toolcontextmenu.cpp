@@ -97,6 +97,9 @@ private Q_SLOTS:
                 u"Restore T2's Known TLO…"_s, u"Probe T1 (in the Spindle)"_s, u"New Cutter…"_s,
                 u"Remove Tool"_s }));
         QVERIFY(entry(menu, u"Set T2"_s)->toolTip().contains(u"make T2 active first"_s));
+        if (const QString folder = qEnvironmentVariable("TOFFEE_SCREENSHOTS"); !folder.isEmpty())
+            QVERIFY(s.window.grab().save(folder + u"/table-context-window.png"_s)
+                && menu->grab().save(folder + u"/table-context-menu.png"_s));
         menu->close();
 
         // Make T2 active (Ctrl+M): asked first, naming what is sent and what stays; Cancel sends nothing.
