@@ -1324,6 +1324,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>Which controller the machine runs. Automatic asks it with questions that change nothing on a Carvera or on grblHAL; a controller chosen is checked all the same.</source>
         <translation>Welche Steuerung die Maschine hat. Automatisch fragt sie mit Fragen, die an einer Carvera und an grblHAL nichts ändern; eine gewählte Steuerung wird trotzdem geprüft.</translation>
     </message>
+    <message>
+        <source>Automatic: %1</source>
+        <translation>Automatisch: %1</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleCheck</name>

@@ -1324,6 +1324,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>Which controller the machine runs. Automatic asks it with questions that change nothing on a Carvera or on grblHAL; a controller chosen is checked all the same.</source>
         <translation>机器使用的控制器。“自动”会用不会改变 Carvera 或 grblHAL 任何状态的问题询问它；选定的控制器同样会被核对。</translation>
     </message>
+    <message>
+        <source>Automatic: %1</source>
+        <translation>自动：%1</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ConsoleCheck</name>

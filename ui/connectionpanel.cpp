@@ -407,6 +407,13 @@ void ConnectionPanel::updateState()
     if (!idle)
         m_controller->setCurrentIndex(
             m_controller->findData(controllerKindName(m_connection->target().controller)));
+    // Connected, Automatic says what it found: the controller and the machine's own name, or its link.
+    const int automatic = m_controller->findData(controllerKindName(ControllerKind::Auto));
+    const bool found
+        = state == MachineConnection::State::Connected && m_connection->controllerKind() != ControllerKind::Auto;
+    m_controller->setItemText(automatic,
+        found ? tr("Automatic: %1").arg(m_connection->identity().title())
+              : controllerKindTitle(ControllerKind::Auto));
     m_baud->setVisible(kind() == Kind::Serial);
     m_refresh->setEnabled(idle);
     m_refresh->setVisible(kind() == Kind::Serial);

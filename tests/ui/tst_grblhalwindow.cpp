@@ -111,6 +111,8 @@ void connectTo(Station &s, const GrblHalPeer &peer)
     QVERIFY(waitConnected(s));
     QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
     QCOMPARE(s.window.connection()->controllerKind(), ControllerKind::GrblHal);
+    // What was found is shown where it was asked for: the controller and the machine's own name (or link).
+    QTRY_VERIFY2(controller->currentText().startsWith(u"Automatic: grblHAL"_s), qPrintable(controller->currentText()));
 }
 
 } // namespace
