@@ -6350,6 +6350,10 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
         <comment>the strip&apos;s button</comment>
         <translation>&amp;Entsperren</translation>
     </message>
+    <message>
+        <source>as the table&apos;s, measured %1</source>
+        <translation>wie in der Tabelle, gemessen %1</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolChangeWait</name>

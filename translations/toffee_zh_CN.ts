@@ -6350,6 +6350,10 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
         <comment>the strip&apos;s button</comment>
         <translation>解锁(&amp;U)</translation>
     </message>
+    <message>
+        <source>as the table&apos;s, measured %1</source>
+        <translation>与表中相同，测量于 %1</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolChangeWait</name>

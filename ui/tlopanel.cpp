@@ -11,6 +11,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include "model/clock.h"
 #include "model/document/tooldocument.h"
 #include "serial/machineconnection.h"
 #include "ui/appearance.h"
@@ -108,6 +109,8 @@ TloPanel::TloPanel(MachineConnection *connection, ToolDocument *document, QWidge
     // next status report.
     connect(m_connection, &MachineConnection::busyChanged, this, &TloPanel::showHalt);
     connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State s) {
+        if (s == MachineConnection::State::Connecting)
+            m_connectedAt = Clock::now();
         if (s != MachineConnection::State::Connected)
             clear();
     });
@@ -284,6 +287,9 @@ void TloPanel::updateTlo()
     } else if (tool->source == TloSource::Manual) {
         note = tr("set by hand %1, not measured").arg(when(tool->measuredAt));
         warn = true;
+    } else if (tool->measuredAt.isValid() && m_connectedAt.isValid() && tool->measuredAt < m_connectedAt) {
+        // The machine's value is the table's, but nothing here says the machine took it from that probe.
+        note = tr("as the table's, measured %1").arg(when(tool->measuredAt));
     } else {
         note = tr("measured %1").arg(when(tool->measuredAt));
     }

@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include <QDateTime>
 #include <QTimer>
 #include <QWidget>
 
@@ -68,6 +69,7 @@ private:
     std::optional<int> m_activeTool;
     std::optional<double> m_machineTlo;
     std::optional<TloReading> m_offsets;
+    QDateTime m_connectedAt; // a TLO of the table from before it is only said to match the machine's
 };
 
 } // namespace Toffee

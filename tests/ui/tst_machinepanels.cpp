@@ -209,6 +209,22 @@ private Q_SLOTS:
         QVERIFY(std::fabs(f.window.connection()->emulator()->tlo() - 12.552) < 1e-9);
     }
 
+    // The strip dates only what it saw measured: a TLO in force that equals a value the table had from before
+    // this connection (the machine kept it, or set it some other way) is said to be the table's, with the
+    // table's date, not to have been measured then.
+    void theStripSaysWhoseTloItIs()
+    {
+        Fixture f;
+        f.probe(); // T1
+        QTRY_VERIFY2(f.find<QLabel>(u"tloNoteLabel"_s)->text().startsWith(u"measured "_s),
+            qPrintable(f.find<QLabel>(u"tloNoteLabel"_s)->text()));
+        Tool t1 = *f.window.document()->table().find(1);
+        t1.measuredAt = Clock::now().addDays(-8); // the example's probe, from before this connection
+        QVERIFY(f.window.document()->editTool(1, t1).ok());
+        QTRY_VERIFY2(f.find<QLabel>(u"tloNoteLabel"_s)->text().startsWith(u"as the table's, measured "_s),
+            qPrintable(f.find<QLabel>(u"tloNoteLabel"_s)->text()));
+    }
+
     void restoresAKnownTloFromTheTable()
     {
         Fixture f;
