@@ -185,11 +185,12 @@ ConsoleCheck ConsoleCheck::checkMotion(const GCodeBlock &block, const QString &t
                           "nothing moves, but the next moves use it.")
                            .arg(trimmed));
     if (block.has('G', 92))
-        return confirm(tr("%1 shifts the work coordinates; nothing moves, but the next moves use them.")
-                           .arg(trimmed));
+        return confirm(
+            tr("%1 shifts the work coordinates; nothing moves, but the next moves use them.").arg(trimmed));
     if (block.has('G', 43.1))
-        return confirm(tr("%1 sets the tool length offset in force; nothing moves, but the next moves use it.")
-                           .arg(trimmed));
+        return confirm(
+            tr("%1 sets the tool length offset in force; nothing moves, but the next moves use it.")
+                .arg(trimmed));
     const auto &ws = block.words;
     const bool motion = std::any_of(ws.cbegin(), ws.cend(),
                             [](const GCodeWord &w) { return QByteArrayView("XYZABC").contains(w.letter); })

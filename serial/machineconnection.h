@@ -7,9 +7,9 @@
 
 #include "model/toolsetter.h"
 #include "serial/controllerdetection.h"
-#include "serial/machineidentity.h"
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
+#include "serial/machineidentity.h"
 #include "serial/transport/tcptransport.h"
 
 namespace Toffee {

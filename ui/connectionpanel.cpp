@@ -14,23 +14,18 @@
 #include "serial/transport/beaconlistener.h"
 #include "ui/appearance.h"
 #include "ui/appsettings.h"
+#include "ui/connectionpanelwifi.h"
 
 using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
+using namespace ConnectionPanelParts;
+
 namespace {
 const auto kEmulator = u"emulator"_s;
 const auto kSerial = u"serial"_s;
 const auto kWiFi = u"wifi"_s;
-// The Wi-Fi list's items: the machine's name and whether it said it is busy, beside its HOST:PORT (the data).
-constexpr int kNameRole = Qt::UserRole + 1;
-constexpr int kBusyRole = Qt::UserRole + 2;
-
-QString addressText(const QString &host, quint16 port)
-{
-    return TcpTransport::Address { host, port }.text();
-}
 } // namespace
 
 ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
@@ -74,7 +69,8 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
         m_baud->addItem(QString::number(baud), baud);
     m_controller->setObjectName(u"controllerCombo"_s);
     m_controller->setAccessibleName(tr("Controller the machine runs"));
-    for (const ControllerKind kind : { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal })
+    for (const ControllerKind kind :
+        { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal })
         m_controller->addItem(controllerKindTitle(kind), controllerKindName(kind));
     m_controller->setToolTip(tr("Which controller the machine runs. Automatic asks it with questions that "
                                 "change nothing on a Carvera or on grblHAL; a controller chosen is checked "
@@ -158,39 +154,6 @@ void ConnectionPanel::setKind(Kind kind)
     m_kind->setCurrentIndex(int(kind));
 }
 
-void ConnectionPanel::setDiscoveryPort(quint16 port)
-{
-    m_discoveryPort = port;
-    m_listener->close();
-    updateListening();
-}
-
-void ConnectionPanel::updateListening()
-{
-    const bool wanted
-        = kind() == Kind::WiFi && m_connection->state() == MachineConnection::State::Disconnected;
-    if (!wanted) {
-        m_listener->close(); // no port held, and no beacon of our own connection's machine read as "busy"
-        // Connected: the machine is busy with us now, which is not what "(busy)" warned of.
-        const QSignalBlocker blocker(m_machine);
-        for (int i = 0; i < m_machine->count(); ++i) {
-            if (m_machine->itemData(i, kBusyRole).toBool()) {
-                m_machine->setItemText(i,
-                    tr("%1 — %2").arg(
-                        m_machine->itemData(i, kNameRole).toString(), m_machine->itemData(i).toString()));
-                m_machine->setItemData(i, false, kBusyRole);
-            }
-        }
-        return;
-    }
-    if (m_listener->isListening())
-        return;
-    m_listenError.clear();
-    if (!m_listener->listen(m_discoveryPort))
-        m_listenError = m_listener->errorString();
-    updateMachines();
-}
-
 void ConnectionPanel::refreshPorts()
 {
     const QString current = m_port->currentData().toString();
@@ -206,46 +169,6 @@ void ConnectionPanel::refreshPorts()
     m_port->setCurrentIndex(index < 0 ? 0 : index);
 }
 
-void ConnectionPanel::updateMachines()
-{
-    // Rebuilt from what is heard, keeping the choice, or what was typed, as it was.
-    const QString text = m_machine->currentText().trimmed();
-    const bool onItem
-        = m_machine->currentIndex() >= 0 && text == m_machine->itemText(m_machine->currentIndex());
-    const QString chosen = onItem ? m_machine->currentData().toString() : text; // HOST:PORT, or as typed
-    const QSignalBlocker blocker(m_machine);
-    m_machine->clear();
-    for (const BeaconListener::Machine &heard : m_listener->machines()) {
-        const Beacon &b = heard.beacon;
-        const QString address = addressText(b.address, b.port);
-        const QString label
-            = b.busy ? tr("%1 — %2 (busy)").arg(b.name, address) : tr("%1 — %2").arg(b.name, address);
-        m_machine->addItem(label, address);
-        m_machine->setItemData(m_machine->count() - 1, b.name, kNameRole);
-        m_machine->setItemData(m_machine->count() - 1, b.busy, kBusyRole);
-    }
-    // The same machine heard; or the last one, by its name, at a new address; or, nothing chosen yet, the
-    // first.
-    int index = m_machine->findData(chosen);
-    if (index < 0 && !m_rememberedName.isEmpty() && (chosen.isEmpty() || chosen == m_rememberedAddress))
-        index = m_machine->findData(m_rememberedName, kNameRole);
-    if (index < 0 && chosen.isEmpty() && m_machine->count() > 0)
-        index = 0;
-    m_machine->setCurrentIndex(index);
-    if (index < 0)
-        m_machine->setEditText(chosen); // a machine no longer heard stays, as an address
-    updateState();
-}
-
-std::optional<Beacon> ConnectionPanel::heardAt(const QString &address) const
-{
-    for (const BeaconListener::Machine &heard : m_listener->machines()) {
-        if (addressText(heard.beacon.address, heard.beacon.port) == address)
-            return heard.beacon;
-    }
-    return std::nullopt;
-}
-
 ConnectionTarget ConnectionPanel::target() const
 {
     ConnectionTarget t;
@@ -253,7 +176,8 @@ ConnectionTarget ConnectionPanel::target() const
     t.emulatorStock = m_emulatorStock;
     t.emulatorPaced = m_emulatorPaced;
     t.protocol = StreamTransport::Protocol(m_protocol);
-    t.controller = controllerKindFromName(m_controller->currentData().toString()).value_or(ControllerKind::Auto);
+    t.controller
+        = controllerKindFromName(m_controller->currentData().toString()).value_or(ControllerKind::Auto);
     switch (kind()) {
     case Kind::Emulator:
         break;
@@ -408,10 +332,9 @@ void ConnectionPanel::updateState()
         m_controller->setCurrentIndex(
             m_controller->findData(controllerKindName(m_connection->target().controller)));
     // Connected, Automatic says what it found: the controller and the machine's own name, or its link.
-    const int automatic = m_controller->findData(controllerKindName(ControllerKind::Auto));
-    const bool found
-        = state == MachineConnection::State::Connected && m_connection->controllerKind() != ControllerKind::Auto;
-    m_controller->setItemText(automatic,
+    const bool found = state == MachineConnection::State::Connected
+        && m_connection->controllerKind() != ControllerKind::Auto;
+    m_controller->setItemText(m_controller->findData(controllerKindName(ControllerKind::Auto)),
         found ? tr("Automatic: %1").arg(m_connection->identity().title())
               : controllerKindTitle(ControllerKind::Auto));
     m_baud->setVisible(kind() == Kind::Serial);

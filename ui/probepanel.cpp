@@ -213,8 +213,9 @@ void ProbePanel::restore(bool confirm)
         const QDateTime now = Clock::now();
         const int staleDays = AppSettings().staleAfterDays();
         if (Clock::isInFuture(tool->measuredAt, now))
-            details << tr("T%1's TLO is dated in the future (%2): a clock was wrong, and when it was measured "
-                          "is not known.")
+            details << tr(
+                "T%1's TLO is dated in the future (%2): a clock was wrong, and when it was measured "
+                "is not known.")
                            .arg(number)
                            .arg(tool->measuredAt.toUTC().toString(Qt::ISODate));
         else if (tool->measuredAt.isValid() && tool->measuredAt.secsTo(now) > qint64(staleDays) * 24 * 3600)

@@ -215,9 +215,8 @@ void TloPanel::showHalt()
                   .arg(m_activeTool && *m_activeTool >= 0 ? u"T"_s + QString::number(*m_activeTool)
                                                           : tr("the tool"),
                       m_machineTlo ? millimetres(*m_machineTlo) : tr("its TLO"), millimetres(*restore))
-            : !m_connection->haltSaid().isEmpty()
-            ? tr("The machine said: “%1”").arg(m_connection->haltSaid()) + u'\n'
-                + (reason ? haltRecovery(*reason) : tr("Check the machine, then Unlock ($X)."))
+            : !m_connection->haltSaid().isEmpty() ? tr("The machine said: “%1”").arg(m_connection->haltSaid())
+                + u'\n' + (reason ? haltRecovery(*reason) : tr("Check the machine, then Unlock ($X)."))
             : reason
             ? haltMeaning(*reason) + u'\n' + haltRecovery(*reason)
             : tr("The machine reported an alarm.") + u'\n' + tr("Check the machine, then Unlock ($X).");
@@ -368,7 +367,7 @@ void TloPanel::unlock(bool confirm)
                       .arg(stored->number)
                       .arg(millimetres(*brokenTlo),
                           m_machineTlo ? millimetres(*m_machineTlo) : tr("another length"))
-            : brokenTlo
+                : brokenTlo
                 ? tr("Look at the tool first, and replace it if it is broken. Unlock sets T%1's stored TLO, "
                      "%2, "
                      "back before anything can move; the mark stays until T%1 is measured again (Probe).")

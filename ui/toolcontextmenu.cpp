@@ -62,7 +62,8 @@ void ToolContextMenu::update()
     const bool ready = m_connection->canOperate();
     const bool active = tool >= 0 && m_connection->activeTool() == tool;
     m_makeActive->setEnabled(ready && tool >= 0 && !active);
-    m_makeActive->setText(tool >= 0 ? tr("Make T%1 &Active (No Probe)…").arg(tool) : tr("Make &Active (No Probe)…"));
+    m_makeActive->setText(
+        tool >= 0 ? tr("Make T%1 &Active (No Probe)…").arg(tool) : tr("Make &Active (No Probe)…"));
     m_makeActive->setToolTip(!ready ? tr("Connect to a machine that is idle and not halted first.")
             : tool < 0              ? tr("Select one tool of the table.")
             : active                ? tr("T%1 is already the active tool.").arg(tool)
@@ -101,7 +102,8 @@ QMenu *ToolContextMenu::buildMenu()
         QKeySequence(Qt::CTRL | Qt::Key_R));
     const auto active = m_connection->activeTool();
     button(u"probeButton"_s,
-        active && *active >= 0 ? tr("&Probe T%1 (in the Spindle)").arg(*active) : tr("&Probe the Tool in the Spindle"),
+        active && *active >= 0 ? tr("&Probe T%1 (in the Spindle)").arg(*active)
+                               : tr("&Probe the Tool in the Spindle"),
         QKeySequence(Qt::Key_F5));
     m_menu->addSeparator();
     for (const QString &name : { u"actionNewCutter"_s, u"actionRemoveTool"_s }) {
@@ -133,11 +135,11 @@ void ToolContextMenu::makeActive(bool confirm)
         QMessageBox box(QMessageBox::Question, tr("Make T%1 active?").arg(tool),
             tr("Is T%1 in the spindle now?").arg(tool), QMessageBox::Cancel, m_window);
         box.setObjectName(u"makeActiveQuestion"_s);
-        box.setInformativeText(
-            tr("The machine takes T%1 as the tool in the spindle, without probing it. It keeps the TLO in "
-               "force now (another tool's, or none): probe T%1 or restore its TLO before it cuts.\n\nSends: %2")
-                .arg(tool)
-                .arg(command));
+        box.setInformativeText(tr(
+            "The machine takes T%1 as the tool in the spindle, without probing it. It keeps the TLO in "
+            "force now (another tool's, or none): probe T%1 or restore its TLO before it cuts.\n\nSends: %2")
+                                   .arg(tool)
+                                   .arg(command));
         QPushButton *yes = box.addButton(tr("T%1 Is in the Spindle").arg(tool), QMessageBox::AcceptRole);
         yes->setObjectName(u"makeActiveYesButton"_s);
         box.setDefaultButton(QMessageBox::Cancel);

@@ -16,10 +16,10 @@ class ToolDocument;
 class ToolTablePanel;
 
 // What the operator does with a tool of the table, from the table itself: its context menu (the right button,
-// the Menu key, Shift+F10) and keys of its own. Make it active (the controller's select: the Carvera's M493.2,
-// grblHAL's M61; asked first, since the TLO in force stays), set its TLO (the Machine dock's editor, focused),
-// restore it (Ctrl+R), probe it (F5, when it is the tool in the spindle); then New Cutter and Remove Tool. Each
-// entry is enabled only when it can run, and says why not in its tooltip.
+// the Menu key, Shift+F10) and keys of its own. Make it active (the controller's select: the Carvera's
+// M493.2, grblHAL's M61; asked first, since the TLO in force stays), set its TLO (the Machine dock's editor,
+// focused), restore it (Ctrl+R), probe it (F5, when it is the tool in the spindle); then New Cutter and
+// Remove Tool. Each entry is enabled only when it can run, and says why not in its tooltip.
 class ToolContextMenu final : public QObject
 {
     Q_OBJECT

@@ -99,7 +99,8 @@ void printStatus(Invocation &call, const MachineStatus &s, const FirmwareInfo &f
     if (call.json) {
         printJson(call,
             QJsonObject { { u"controller"_s, controllerKindName(identity.controller) },
-                { u"machine"_s, machine }, { u"identity"_s, identity.key() }, { u"state"_s, s.state }, { u"tool"_s, s.tool ? QJsonValue(*s.tool) : QJsonValue() },
+                { u"machine"_s, machine }, { u"identity"_s, identity.key() }, { u"state"_s, s.state },
+                { u"tool"_s, s.tool ? QJsonValue(*s.tool) : QJsonValue() },
                 { u"tlo"_s, s.tlo ? QJsonValue(*s.tlo) : QJsonValue() }, { u"mpos"_s, axes(s.mpos) },
                 { u"wpos"_s, axes(s.wpos) },
                 { u"halt_reason"_s, s.haltReason ? QJsonValue(*s.haltReason) : QJsonValue() },
@@ -419,10 +420,9 @@ void MachineRun::operate()
     // A change that waits for a person (change-tool, a rack's drop of a tool changed by hand): refused
     // without a terminal, said with its limit on one.
     attendToolChanges(c.session(), m_call.err, &m_loop);
-    const auto status = printed(
-        [this](const SessionResult &r) { printStatus(
-                m_call, *r.status, m_connection.firmware(), m_connection.identity(), m_options.machine);
-        });
+    const auto status = printed([this](const SessionResult &r) {
+        printStatus(m_call, *r.status, m_connection.firmware(), m_connection.identity(), m_options.machine);
+    });
     bool started = true;
     if (command == u"status")
         started = c.status(status);
@@ -466,7 +466,8 @@ void MachineRun::operate()
     else if (command == u"unlock")
         started = c.unlock(printed([this](const SessionResult &r) {
             if (const auto now = r.status ? r.status : m_connection.link()->lastStatus())
-                printStatus(m_call, *now, m_connection.firmware(), m_connection.identity(), m_options.machine);
+                printStatus(
+                    m_call, *now, m_connection.firmware(), m_connection.identity(), m_options.machine);
             if (!r.message.isEmpty()) // what is in force now, and why
                 m_call.err << "toffee-cli: " << r.message << Qt::endl;
         }),
@@ -593,9 +594,9 @@ std::optional<double> MachineRun::storedTloInSpindle() const
     return stored ? std::optional(stored->tlo) : std::nullopt; // millimetres, whatever the table's units
 }
 
-// The stored TLO of the tool in the spindle when it failed its break test: unlock sets it back, since the failed
-// test left the machine with the length it measured in force. The table's (--table) when it marks the tool
-// broken, else the history's (the test's own record), as the window does.
+// The stored TLO of the tool in the spindle when it failed its break test: unlock sets it back, since the
+// failed test left the machine with the length it measured in force. The table's (--table) when it marks the
+// tool broken, else the history's (the test's own record), as the window does.
 std::optional<double> MachineRun::brokenToolTloInSpindle() const
 {
     const auto tool = m_connection.activeTool();

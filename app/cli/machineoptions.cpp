@@ -384,18 +384,20 @@ Result<void> bindIdentity(const Invocation &call, MachineOptions &o)
         if (o.identity.followsFrom(before)) {
             if (auto moved = o.library->bindMachine(o.machine, o.identity.key(), true); !moved)
                 return Error { moved.error().message };
-            call.err << u"toffee-cli: \"%1\" was %2 before; now it is %3."_s.arg(o.machine, before.title(),
-                            o.identity.title())
+            call.err << u"toffee-cli: \"%1\" was %2 before; now it is %3."_s.arg(
+                o.machine, before.title(), o.identity.title())
                      << Qt::endl;
             return {};
         }
     }
     if (bound.value().kind == Kind::Other)
-        return Error { u"The library's machine \"%1\" is %2; this is %3. A machine's reference, tool setter "
-                       "and history are its own: give this one a name of its own (--machine NAME), or, if it "
-                       "is the same machine reached another way, say so (--same-machine). Nothing was sent to "
-                       "the machine but the questions that tell its controller."_s.arg(o.machine,
-                           MachineIdentity::fromKey(bound.value().boundTo).title(), o.identity.title()) };
+        return Error {
+            u"The library's machine \"%1\" is %2; this is %3. A machine's reference, tool setter "
+            "and history are its own: give this one a name of its own (--machine NAME), or, if it "
+            "is the same machine reached another way, say so (--same-machine). Nothing was sent to "
+            "the machine but the questions that tell its controller."_s.arg(
+                o.machine, MachineIdentity::fromKey(bound.value().boundTo).title(), o.identity.title())
+        };
     if (bound.value().kind == Kind::New) {
         o.newMachine = true;
         call.err << u"toffee-cli: \"%1\" is %2, new to the library"_s.arg(o.machine, o.identity.title())

@@ -196,11 +196,11 @@ int newCutter(Invocation &call)
         return fail(call, saved.error().text(), BadInput);
     // A LinuxCNC table holds no TLO or mark, and its wear is in the length: only a length could end.
     if (*table.value().find(tool) == old)
-        call.err
-            << "toffee-cli: note: " << path << " holds nothing of T" << tool
-            << "'s old cutter to end (no measured TLO, length, wear or break mark); only the history records the "
-               "new cutter."
-            << Qt::endl;
+        call.err << "toffee-cli: note: " << path << " holds nothing of T" << tool
+                 << "'s old cutter to end (no measured TLO, length, wear or break mark); only the history "
+                    "records the "
+                    "new cutter."
+                 << Qt::endl;
     QString history = u"not_recorded"_s;
     if (library.value()) {
         const QString machine
@@ -228,8 +228,9 @@ int newCutter(Invocation &call)
                 { u"machine"_s,
                     call.has(u"machine"_s) ? call.option(u"machine"_s).trimmed() : kDefaultMachineName },
                 { u"old_tlo"_s, old.measuredTlo ? QJsonValue(*old.measuredTlo) : QJsonValue() },
-                { u"old_length_geometry"_s, old.lengthGeometry }, { u"old_length_wear"_s, old.lengthWear }, { u"old_radius_wear"_s, old.radiusWear },
-                { u"old_break_test_failed"_s, old.breakTestFailed }, { u"history"_s, history } });
+                { u"old_length_geometry"_s, old.lengthGeometry }, { u"old_length_wear"_s, old.lengthWear },
+                { u"old_radius_wear"_s, old.radiusWear }, { u"old_break_test_failed"_s, old.breakTestFailed },
+                { u"history"_s, history } });
         return Success;
     }
     call.out << "T" << tool << " has a new cutter in " << path << ".\n";

@@ -34,10 +34,11 @@ struct ImportedTool
 // and the table it makes. Only what the CAM owns changes: the description, the radius geometry (half the
 // diameter), the cutter's type and overall length, and the CAM's own line in the notes; except that a tool
 // whose cutter is another (its type, its diameter beyond 0.01 mm or its overall length beyond 0.1 mm) is a
-// new cutter, whose TLO, length, wear and break mark end. The measured TLO, its time, source and reference, the
-// break-test mark, the wear, the pocket, the length geometry and the operator's notes stay as they are, and a
-// library tool without a description keeps the table's. A new tool gets the pocket the table gives a tool of
-// its number, or the lowest pocket no other tool has when that one is taken; it has no length until measured.
+// new cutter, whose TLO, length, wear and break mark end. The measured TLO, its time, source and reference,
+// the break-test mark, the wear, the pocket, the length geometry and the operator's notes stay as they are,
+// and a library tool without a description keeps the table's. A new tool gets the pocket the table gives a
+// tool of its number, or the lowest pocket no other tool has when that one is taken; it has no length until
+// measured.
 class ImportPreview
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::ImportPreview)

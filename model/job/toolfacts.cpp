@@ -108,7 +108,8 @@ Result<std::optional<HistoryEvent>> newest(
 
 } // namespace
 
-Result<std::optional<double>> tloBeforeFailedBreakTest(const Library &library, const QString &machine, int tool)
+Result<std::optional<double>> tloBeforeFailedBreakTest(
+    const Library &library, const QString &machine, int tool)
 {
     auto last = newest(library, machine, tool,
         { EventKind::Probe, EventKind::ManualSet, EventKind::NewCutter, EventKind::BreakTest });

@@ -353,4 +353,14 @@ ReplyGrammar carveraGrammar()
         isScriptDone, replyMessage, haltLineMeaning, nullptr };
 }
 
+std::optional<ProbeResult> lastProbe(const QList<QByteArray> &lines)
+{
+    std::optional<ProbeResult> found;
+    for (const QByteArray &line : lines) {
+        if (auto p = parseProbeResult(line))
+            found = p;
+    }
+    return found;
+}
+
 } // namespace Toffee

@@ -33,6 +33,9 @@ namespace Toffee {
 // Whether `line` is a well-formed offset report whose values no machine can have.
 [[nodiscard]] bool isImplausibleTloReport(QByteArrayView line);
 [[nodiscard]] std::optional<ProbeResult> parseProbeResult(QByteArrayView line);
+// A probe's result among a script's lines: the last one (the firmware probes fast, then slowly, and takes the
+// second).
+[[nodiscard]] std::optional<ProbeResult> lastProbe(const QList<QByteArray> &lines);
 // Refuses values beyond kMaxMachineMillimetres, like parseTloReport.
 [[nodiscard]] std::optional<BreakTestReading> parseBreakTest(QByteArrayView line);
 

@@ -176,22 +176,6 @@ void MachineSession::report(Done done)
     readOffsets(done, SessionResult {});
 }
 
-namespace {
-
-// A probe's result among a script's lines: the last one that triggered (the firmware probes fast, then
-// slowly, and takes the second).
-std::optional<ProbeResult> lastProbe(const QList<QByteArray> &lines)
-{
-    std::optional<ProbeResult> found;
-    for (const QByteArray &line : lines) {
-        if (auto p = parseProbeResult(line))
-            found = p;
-    }
-    return found;
-}
-
-} // namespace
-
 void MachineSession::probe(Done done)
 {
     measure(recording(std::move(done), RecordingKind::Probe));
@@ -322,149 +306,6 @@ void MachineSession::selectTool(int tool, Done done)
         });
 }
 
-void MachineSession::startToolChange(int tool, Done done, std::optional<double> storedTlo)
-{
-    if (auto r = validateToolNumber(tool); !r)
-        return refuse(done, r.error().message);
-    if (storedTlo) {
-        if (auto r = validateOffset(tr("The tool length offset"), *storedTlo); !r)
-            return refuse(done, r.error().message);
-        return changeToStoredTlo(tool, *storedTlo, std::move(done));
-    }
-    if (m_tool == tool && tool >= 0)
-        return probe(std::move(done)); // the firmware ignores M6 to the tool it holds
-    done = recording(std::move(done), RecordingKind::Probe); // M6 probes the new tool
-    run(
-        "M6 T" + QByteArray::number(tool), kToolChangeTimeoutMs, done,
-        [this, done, tool](const CommandReply &reply) {
-            if (tool == Limits::kEmptySpindle)
-                return confirmEmptySpindle(done); // nothing to measure
-            const auto probe = lastProbe(reply.lines);
-            if (!probe || !probe->triggered) {
-                SessionResult bad;
-                bad.outcome = SessionResult::Outcome::MachineError;
-                bad.message
-                    = tr("The machine finished changing to T%1, but its probe result ([PRB:…]) could not be "
-                         "read. Nothing was recorded; probe the tool again.")
-                          .arg(tool)
-                    + floodNote(reply);
-                done(bad);
-                return;
-            }
-            SessionResult changed;
-            changed.tool = tool;
-            readOffsets(done, changed);
-        },
-        ReplyEnd::Script);
-}
-
-// M6 T H: a manual change that takes the table's TLO (the firmware measures a rack tool all the same); the
-// machine must then report it in force.
-void MachineSession::changeToStoredTlo(int tool, double tlo, Done done)
-{
-    run(
-        "M6 T" + QByteArray::number(tool) + " H" + number(tlo), kToolChangeTimeoutMs, done,
-        [this, done, tool, tlo](const CommandReply &reply) {
-            SessionResult changed;
-            changed.tool = tool;
-            const auto probe = lastProbe(reply.lines);
-            if (probe && probe->triggered) {
-                // A rack tool: the firmware measured it, and the measurement is what is in force.
-                readOffsets(recording(done, RecordingKind::Probe), changed);
-                return;
-            }
-            readOffsets(expectingTlo(tlo,
-                            [done, tool](const SessionResult &r) {
-                                SessionResult restored = r;
-                                restored.tool = tool;
-                                if (r.ok() && r.tlo)
-                                    restored.recording = Recording { tool, r.tlo->tlo(), TloSource::Probe,
-                                        r.tlo->knownReferenceMz(), std::nullopt, Clock::now(),
-                                        RecordingKind::Restore };
-                                done(restored);
-                            }),
-                changed);
-        },
-        ReplyEnd::Script);
-}
-
-void MachineSession::unlock(Done done, std::optional<double> brokenToolTlo)
-{
-    awaitStatus(2000, [this, done, brokenToolTlo](std::optional<MachineStatus> before) {
-        if (!before) {
-            SessionResult bad;
-            bad.outcome = SessionResult::Outcome::LinkFailure;
-            bad.message = tr("The machine sent no status report within 2 s; it was not unlocked.");
-            done(bad);
-            return;
-        }
-        if (!before->isAlarm()) {
-            // The firmware says nothing at all to $X when it is not halted.
-            SessionResult result;
-            result.status = before;
-            result.tool = before->tool;
-            result.message = tr("The machine was not halted.");
-            done(result);
-            return;
-        }
-        if (!m_restoreOnUnlock && brokenToolTlo && before->tlo
-            && std::fabs(*before->tlo - *brokenToolTlo) > 0.0005)
-            m_restoreOnUnlock = brokenToolTlo;
-        const bool setterHalt = before->haltReason == 4; // the tool setter's: a break test's among them
-        run("$X", MachineLink::kDefaultTimeoutMs, done, [this, done, setterHalt](const CommandReply &reply) {
-            const bool unlocked = std::any_of(reply.lines.cbegin(), reply.lines.cend(),
-                [](const QByteArray &l) { return l.trimmed() == "[Caution: Unlocked]"; });
-            if (!unlocked) {
-                SessionResult bad;
-                bad.outcome = SessionResult::Outcome::MachineError;
-                bad.message = tr("The machine did not confirm the unlock; check its state before you go on.");
-                done(bad);
-                return;
-            }
-            const auto stored = std::exchange(m_restoreOnUnlock, std::nullopt);
-            if (!stored && setterHalt) {
-                // Nothing known to set back: what is in force, said as it is.
-                status([this, done](const SessionResult &r) {
-                    SessionResult result = r;
-                    if (r.ok() && r.status && r.status->tlo)
-                        result.message
-                            = tr("Unlocked. The TLO in force is %1 mm, as the machine left it: after a failed "
-                                 "break test, the length the test measured. No stored TLO of T%2 was known "
-                                 "here to set back (toffee-cli: --table FILE, or the history that recorded "
-                                 "the test). Probe T%2, or set its TLO, before it cuts.")
-                                  .arg(millimetres(*r.status->tlo, false))
-                                  .arg(m_tool.value_or(-1));
-                    done(result);
-                });
-                return;
-            }
-            if (!stored) {
-                status(done);
-                return;
-            }
-            // A failed break test left the broken length in force: the stored TLO goes back before anything
-            // else is sent.
-            const double was = *stored;
-            setTloTo(was, [this, done, was](const SessionResult &r) {
-                SessionResult result = r;
-                if (r.ok()) {
-                    result.message
-                        = tr("Unlocked. T%1's stored TLO, %2 mm, is in force again (the break test "
-                             "had left the new length in force).")
-                              .arg(m_tool.value_or(-1))
-                              .arg(millimetres(was, false));
-                } else {
-                    m_restoreOnUnlock = was; // tried again at the next unlock
-                    result.message = tr("Unlocked, but the stored TLO (%1 mm) could not be set back: %2 The "
-                                        "length the break test measured is still in force; do not cut.")
-                                         .arg(millimetres(was, false), r.message);
-                }
-                done(result);
-            });
-        });
-    });
-}
-
 void MachineSession::restoreTlo(int tool, double tlo, Done done)
 {
     if (auto r = validateToolNumber(tool); !r)
@@ -495,35 +336,6 @@ void MachineSession::restoreTlo(int tool, double tlo, Done done)
 void MachineSession::abort()
 {
     m_link->sendRealtime(0x18);
-}
-
-QString MachineSession::changeByHand(int tool) const
-{
-    if (m_tool == tool && tool >= 0)
-        return {}; // measured where it is (M491)
-    const bool pick = tool != Limits::kEmptySpindle && !carveraChangesByItself(tool);
-    QString drop;
-    if (!m_tool) // the stock firmware does not say: its drop may be by hand
-        drop = tr("the tool in the spindle, which this firmware does not name, may be taken out by hand");
-    else if (*m_tool != Limits::kEmptySpindle && !carveraChangesByItself(*m_tool))
-        drop = tr("T%1 is taken out by hand").arg(*m_tool);
-    if (pick && !drop.isEmpty())
-        return tr("%1 and T%2 put in by hand").arg(drop).arg(tool);
-    if (pick)
-        return tr("T%1 is put in by hand").arg(tool);
-    return drop;
-}
-
-void MachineSession::cancelWaitingChange()
-{
-    abort(); // Ctrl-X: the firmware halts, which ends the wait for the button
-}
-
-QString MachineSession::cancelledChangeNote() const
-{
-    return tr(
-        "The machine halted to end it: check what is in the spindle, unlock it, then select the tool and "
-        "probe it before cutting.");
 }
 
 } // namespace Toffee

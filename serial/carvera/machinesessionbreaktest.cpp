@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Carvera's break test: the firmware's M491.1 compares the tool's new length with the TLO in force (the
-// table's, set first), halting on a broken tool. A TLO of 0.000 mm (the reference tool's), which it takes for
-// none, goes in as 0.001 mm (comparableTlo), so that no tool goes untested for it.
+// table's, set first), halting on a broken tool; and the unlock after it, which sets the stored TLO back
+// first. A TLO of 0.000 mm (the reference tool's), which it takes for none, goes in as 0.001 mm
+// (comparableTlo), so that no tool goes untested for it.
 #include <cmath>
 
 #include "model/breaktestrule.h"
@@ -154,6 +155,83 @@ void MachineSession::runBreakTest(double tolerance, Done done, std::optional<dou
             done(result);
         },
         ReplyEnd::Script);
+}
+
+void MachineSession::unlock(Done done, std::optional<double> brokenToolTlo)
+{
+    awaitStatus(2000, [this, done, brokenToolTlo](std::optional<MachineStatus> before) {
+        if (!before) {
+            SessionResult bad;
+            bad.outcome = SessionResult::Outcome::LinkFailure;
+            bad.message = tr("The machine sent no status report within 2 s; it was not unlocked.");
+            done(bad);
+            return;
+        }
+        if (!before->isAlarm()) {
+            // The firmware says nothing at all to $X when it is not halted.
+            SessionResult result;
+            result.status = before;
+            result.tool = before->tool;
+            result.message = tr("The machine was not halted.");
+            done(result);
+            return;
+        }
+        if (!m_restoreOnUnlock && brokenToolTlo && before->tlo
+            && std::fabs(*before->tlo - *brokenToolTlo) > 0.0005)
+            m_restoreOnUnlock = brokenToolTlo;
+        const bool setterHalt = before->haltReason == 4; // the tool setter's: a break test's among them
+        run("$X", MachineLink::kDefaultTimeoutMs, done, [this, done, setterHalt](const CommandReply &reply) {
+            const bool unlocked = std::any_of(reply.lines.cbegin(), reply.lines.cend(),
+                [](const QByteArray &l) { return l.trimmed() == "[Caution: Unlocked]"; });
+            if (!unlocked) {
+                SessionResult bad;
+                bad.outcome = SessionResult::Outcome::MachineError;
+                bad.message = tr("The machine did not confirm the unlock; check its state before you go on.");
+                done(bad);
+                return;
+            }
+            const auto stored = std::exchange(m_restoreOnUnlock, std::nullopt);
+            if (!stored && setterHalt) {
+                // Nothing known to set back: what is in force, said as it is.
+                status([this, done](const SessionResult &r) {
+                    SessionResult result = r;
+                    if (r.ok() && r.status && r.status->tlo)
+                        result.message = tr(
+                            "Unlocked. The TLO in force is %1 mm, as the machine left it: after a failed "
+                            "break test, the length the test measured. No stored TLO of T%2 was known "
+                            "here to set back (toffee-cli: --table FILE, or the history that recorded "
+                            "the test). Probe T%2, or set its TLO, before it cuts.")
+                                             .arg(millimetres(*r.status->tlo, false))
+                                             .arg(m_tool.value_or(-1));
+                    done(result);
+                });
+                return;
+            }
+            if (!stored) {
+                status(done);
+                return;
+            }
+            // A failed break test left the broken length in force: the stored TLO goes back before anything
+            // else is sent.
+            const double was = *stored;
+            setTloTo(was, [this, done, was](const SessionResult &r) {
+                SessionResult result = r;
+                if (r.ok()) {
+                    result.message
+                        = tr("Unlocked. T%1's stored TLO, %2 mm, is in force again (the break test "
+                             "had left the new length in force).")
+                              .arg(m_tool.value_or(-1))
+                              .arg(millimetres(was, false));
+                } else {
+                    m_restoreOnUnlock = was; // tried again at the next unlock
+                    result.message = tr("Unlocked, but the stored TLO (%1 mm) could not be set back: %2 The "
+                                        "length the break test measured is still in force; do not cut.")
+                                         .arg(millimetres(was, false), r.message);
+                }
+                done(result);
+            });
+        });
+    });
 }
 
 } // namespace Toffee

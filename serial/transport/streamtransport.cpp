@@ -108,7 +108,8 @@ void StreamTransport::answered(ConsoleStream::Mode mode)
     m_phase = Phase::Closed;
     const QString message = framed
         ? tr("%1 speaks Makera's frames (its firmware from 1.0.4 on), not the plain text chosen. Plain text "
-             "would leave it deaf until it is restarted, so nothing more was sent. Choose automatic (--protocol "
+             "would leave it deaf until it is restarted, so nothing more was sent. Choose automatic "
+             "(--protocol "
              "auto, or leave it out) or framed.")
               .arg(name())
         : tr("%1 speaks plain text, not Makera's frames as chosen. Nothing more was sent. Choose automatic "
@@ -171,8 +172,8 @@ void StreamTransport::detect(QByteArrayView bytes)
             return answered(ConsoleStream::Mode::Framed);
         for (const LineAssembler::Line &line : m_asText.feed(bytes)) {
             if (line.bytes.startsWith('<') && line.bytes.endsWith('>')) {
-                // Plain text (a status report: grblHAL says "error:20" first): the frame's other bytes may wait
-                // in the controller's line buffer; end that line.
+                // Plain text (a status report: grblHAL says "error:20" first): the frame's other bytes may
+                // wait in the controller's line buffer; end that line.
                 m_phase = Phase::Flushing;
                 m_flushAnswered = false;
                 m_device->write("\n");

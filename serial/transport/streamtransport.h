@@ -13,8 +13,8 @@ namespace Toffee {
 // A controller at the other end of a byte stream (a serial port, a TCP socket), speaking plain text or
 // Makera's frames. On opening, before `opened`, it asks one question that every controller Toffee knows
 // answers harmlessly (firstQuestion()): a command line `version ?` in one of Makera's frames. The framed
-// firmware answers it as `version` in a frame; a plain-text Carvera acts on the real-time '?' inside it with a
-// plain status report; grblHAL does the same (after an error for the rest), and none of the frame's other
+// firmware answers it as `version` in a frame; a plain-text Carvera acts on the real-time '?' inside it with
+// a plain status report; grblHAL does the same (after an error for the rest), and none of the frame's other
 // bytes is a real-time command to it (the A1 frame of a bare '?' was: 0xA1 toggles its mist coolant). Plain
 // text is never sent before the answer: over TCP the framed firmware answers no frame again after plain bytes
 // (docs/CARVERA.md § 11). A plain answer is followed by a line end, which ends the frame's leftover bytes as

@@ -150,7 +150,8 @@ private Q_SLOTS:
             run.err.constData());
         run = cli(bare + QStringList { u"unlock"_s });
         QVERIFY2(run.exitCode == 0, run.err.constData());
-        QVERIFY2(run.err.contains("The TLO in force is 6.915 mm, as the machine left it"), run.err.constData());
+        QVERIFY2(
+            run.err.contains("The TLO in force is 6.915 mm, as the machine left it"), run.err.constData());
         QCOMPARE(fixed3(json(cli(bare + QStringList { u"status"_s }))[u"tlo"_s]), u"6.915"_s);
         QCOMPARE(machine({ u"probe"_s }).exitCode, 0);
 
@@ -160,7 +161,8 @@ private Q_SLOTS:
         for (const QJsonValue &e : json(history)[u"events"_s].toArray())
             kinds << e[u"kind"_s].toString() + (e[u"failed"_s].toBool() ? u"!"_s : QString());
         QCOMPARE(kinds,
-            (QStringList { u"probe"_s, u"manual_set"_s, u"break_test!"_s, u"probe"_s, u"break_test"_s, u"probe"_s }));
+            (QStringList {
+                u"probe"_s, u"manual_set"_s, u"break_test!"_s, u"probe"_s, u"break_test"_s, u"probe"_s }));
     }
 
     // The firmware takes a TLO of 0.000 for none ("No previous TLO included", it measures without comparing):

@@ -278,46 +278,41 @@ private Q_SLOTS:
         const Run none = machine({ u"--table"_s, table, u"restore"_s, u"3"_s });
         QCOMPARE(none.exitCode, 2);
         QVERIFY(none.err.contains("T3 has no measured TLO"));
-    }
 
-    // A stored TLO set by hand, failed in its break test, or older than the stale limit: refused by name before
-    // anything is sent (the job preparation refuses the same); --anyway restores it all the same.
-    void refusesADoubtfulStoredTloUnlessTold()
-    {
-        const QString table = m_dir.filePath(u"doubtful.json"_s);
-        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), table));
-        QFile::setPermissions(table, QFile::ReadOwner | QFile::WriteOwner);
-        Emulator emulator(tty(), {});
-        QVERIFY(emulator.started());
-        QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0); // T1: 43.040
-        QCOMPARE(machine({ u"--table"_s, table, u"change-tool"_s, u"2"_s }).exitCode, 0); // T2: 9.652
-        // T2's stored 9.652, said to be set by hand, failed, and measured eight days ago.
-        auto loaded = Toffee::loadTableFile(table);
-        QVERIFY(loaded.ok());
-        Toffee::ToolTable edited = loaded.value();
-        Toffee::Tool t2 = *edited.find(2);
-        t2.tloSource = Toffee::TloSource::Manual;
-        t2.breakTestFailed = true;
-        t2.measuredAt = QDateTime::currentDateTimeUtc().addDays(-8);
-        QVERIFY(edited.replace(2, t2).ok());
-        QVERIFY(Toffee::saveTableFile(table, edited, Toffee::TableFormat::Json).ok());
-        QCOMPARE(machine({ u"select-tool"_s, u"1"_s }).exitCode, 0);
-        const QJsonObject before = json(machine({ u"report"_s }));
+        // A stored TLO set by hand, failed in its break test, or older than the stale limit: refused by name
+        // before anything is sent (the job preparation refuses the same); --anyway restores it all the same.
+        {
+            // T2's stored 9.652, said to be set by hand, failed, and measured eight days ago.
+            auto loaded = Toffee::loadTableFile(table);
+            QVERIFY(loaded.ok());
+            Toffee::ToolTable edited = loaded.value();
+            Toffee::Tool t2 = *edited.find(2);
+            t2.tloSource = Toffee::TloSource::Manual;
+            t2.breakTestFailed = true;
+            t2.measuredAt = QDateTime::currentDateTimeUtc().addDays(-8);
+            QVERIFY(edited.replace(2, t2).ok());
+            QVERIFY(Toffee::saveTableFile(table, edited, Toffee::TableFormat::Json).ok());
+            QCOMPARE(machine({ u"select-tool"_s, u"1"_s }).exitCode, 0);
+            QCOMPARE(machine({ u"--table"_s, table, u"probe"_s }).exitCode, 0); // T1 again: 43.040 in force
+            const QJsonObject before = json(machine({ u"report"_s }));
+            QCOMPARE(fixed3(before.value(u"tlo"_s)), u"43.040"_s);
 
-        Run run = machine({ u"--table"_s, table, u"restore"_s, u"2"_s });
-        QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.contains("it was set by hand, not measured; it failed its last break test; it is 8 days "
-                                  "old, older than the stale limit (7 d, --stale-days)")
-                && run.err.contains("--anyway") && run.err.contains("Nothing was sent"),
-            run.err.constData());
-        QCOMPARE(json(machine({ u"report"_s })), before);
-        // A longer stale limit leaves the other two.
-        run = machine({ u"--table"_s, table, u"--stale-days"_s, u"30"_s, u"restore"_s, u"2"_s });
-        QCOMPARE(run.exitCode, 2);
-        QVERIFY2(!run.err.contains("stale limit"), run.err.constData());
-        run = machine({ u"--table"_s, table, u"--anyway"_s, u"restore"_s, u"2"_s });
-        QVERIFY2(run.exitCode == 0, run.err.constData());
-        QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"tlo"_s)), u"9.652"_s);
+            Run run = machine({ u"--table"_s, table, u"restore"_s, u"2"_s });
+            QCOMPARE(run.exitCode, 2);
+            QVERIFY2(run.err.contains(
+                         "it was set by hand, not measured; it failed its last break test; it is 8 days "
+                         "old, older than the stale limit (7 d, --stale-days)")
+                    && run.err.contains("--anyway") && run.err.contains("Nothing was sent"),
+                run.err.constData());
+            QCOMPARE(json(machine({ u"report"_s })), before);
+            // A longer stale limit leaves the other two.
+            run = machine({ u"--table"_s, table, u"--stale-days"_s, u"30"_s, u"restore"_s, u"2"_s });
+            QCOMPARE(run.exitCode, 2);
+            QVERIFY2(!run.err.contains("stale limit"), run.err.constData());
+            run = machine({ u"--table"_s, table, u"--anyway"_s, u"restore"_s, u"2"_s });
+            QVERIFY2(run.exitCode == 0, run.err.constData());
+            QCOMPARE(fixed3(json(machine({ u"report"_s })).value(u"tlo"_s)), u"9.652"_s);
+        }
     }
 
     void refusesToRestoreAgainstAnotherReference()

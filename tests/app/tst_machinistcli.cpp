@@ -83,8 +83,9 @@ private Q_SLOTS:
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QVERIFY2(
             run.out.contains("the old cutter's TLO -30.200 mm is no longer stored"), run.out.constData());
-        QVERIFY2(run.out.contains("its length 71.488 mm (the old cutter's, which G43 would apply to the new one) "
-                                  "is reset to 0"),
+        QVERIFY2(
+            run.out.contains("its length 71.488 mm (the old cutter's, which G43 would apply to the new one) "
+                             "is reset to 0"),
             run.out.constData());
         QVERIFY(run.out.contains("its wear (length 0.020, radius 0.000) is reset to 0"));
         QVERIFY(run.out.contains("its break-test mark is cleared"));
@@ -127,8 +128,8 @@ private Q_SLOTS:
             run.out.constData());
         // On LinuxCNC and FANUC, G43 applies the table's length, the old cutter's until now: none is left.
         for (const QString &dialect : { u"linuxcnc"_s, u"fanuc"_s }) {
-            run = cli({ u"--json"_s, u"job"_s, u"check"_s, program, u"--table"_s, table, u"--library"_s, library,
-                u"--dialect"_s, dialect });
+            run = cli({ u"--json"_s, u"job"_s, u"check"_s, program, u"--table"_s, table, u"--library"_s,
+                library, u"--dialect"_s, dialect });
             const QJsonArray found = json(run).value(u"findings"_s).toArray();
             QVERIFY2(std::any_of(found.begin(), found.end(),
                          [](const QJsonValue &f) {
@@ -161,8 +162,9 @@ private Q_SLOTS:
         run = cli({ u"import"_s, source, u"--into"_s, table, u"--library"_s, library });
         QVERIFY2(run.exitCode == 0, run.err.constData());
         // The preview says it per tool, with the old cutter's TLO.
-        QVERIFY2(run.out.contains("note: a new cutter (diameter 2.000 → 6.000 mm): the old cutter's TLO "
-                                  "-30.200 mm, its length, wear and break mark end; measure it before it cuts"),
+        QVERIFY2(
+            run.out.contains("note: a new cutter (diameter 2.000 → 6.000 mm): the old cutter's TLO "
+                             "-30.200 mm, its length, wear and break mark end; measure it before it cuts"),
             run.out.constData());
         QVERIFY(run.out.contains("a new cutter in 1 (measure before use)"));
         const ToolTable after = loadTableFile(table).value();

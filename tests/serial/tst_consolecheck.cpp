@@ -55,11 +55,10 @@ private Q_SLOTS:
         // Offsets written, nothing moved: asked about, in true words (G10 was said to move the machine).
         QTest::newRow("tool table entry")
             << u"G10 L1 P2 Z10"_s << false << Verdict::Confirm << u"writes an offset into the controller"_s;
-        QTest::newRow("work offset")
-            << u"G10 L2 P1 Z-5"_s << false << Verdict::Confirm << u"nothing moves"_s;
+        QTest::newRow("work offset") << u"G10 L2 P1 Z-5"_s << false << Verdict::Confirm << u"nothing moves"_s;
         QTest::newRow("G92") << u"G92 Z0"_s << false << Verdict::Confirm << u"shifts the work coordinates"_s;
-        QTest::newRow("dynamic TLO")
-            << u"G43.1 Z12.5"_s << false << Verdict::Confirm << u"sets the tool length offset in force"_s;
+        QTest::newRow("dynamic TLO") << u"G43.1 Z12.5"_s << false << Verdict::Confirm
+                                     << u"sets the tool length offset in force"_s;
         QTest::newRow("comment then move")
             << u"(safe) G53 G0 Z-1"_s << false << Verdict::Confirm << u"moves the machine"_s;
         QTest::newRow("spindle on") << u"M3 S10000"_s << false << Verdict::Confirm << u"spindle"_s;

@@ -155,7 +155,8 @@ private Q_SLOTS:
         // Nothing was switched by the questions: the coolant is off (M9), as grblHAL starts.
         const QList<QByteArray> modes = ask(connection, "$G");
         QVERIFY(!modes.isEmpty());
-        QVERIFY2(modes.front().contains(" M9 ") && !modes.front().contains(" M7 "), modes.front().constData());
+        QVERIFY2(
+            modes.front().contains(" M9 ") && !modes.front().contains(" M7 "), modes.front().constData());
     }
 
     void findsTheCarveraPlainAndFramed_data()
@@ -176,15 +177,16 @@ private Q_SLOTS:
         CarveraPeer peer({}, protocol);
         QVERIFY2(peer.started(), qPrintable(peer.errors()));
         MachineConnection connection;
-        const Outcome outcome = connectTo(connection, wifi ? hostTarget(peer.wifi()) : portTarget(peer.uart()));
+        const Outcome outcome
+            = connectTo(connection, wifi ? hostTarget(peer.wifi()) : portTarget(peer.uart()));
         QVERIFY2(outcome.connected, qPrintable(outcome.message));
         QCOMPARE(connection.controllerKind(), ControllerKind::Carvera);
         QCOMPARE(connection.firmware().kind, FirmwareInfo::Kind::Community);
         QCOMPARE(connection.firmware().version, u"2.1.0c-simulator"_s);
         const auto *stream = qobject_cast<const StreamTransport *>(connection.link()->transport());
         QVERIFY(stream);
-        QCOMPARE(stream->mode(),
-            protocol == u"makera" ? ConsoleStream::Mode::Framed : ConsoleStream::Mode::Text);
+        QCOMPARE(
+            stream->mode(), protocol == u"makera" ? ConsoleStream::Mode::Framed : ConsoleStream::Mode::Text);
         QVERIFY(connection.connectResult().tlo.has_value()); // M493.4 read: the Carvera's own connect ran
     }
 

@@ -87,8 +87,8 @@ private Q_SLOTS:
         QCOMPARE(h.emulator.tlo(), -5.0);
     }
 
-    // An empty spindle (T-1): the firmware would keep the TLO for the next tool selected. Refused, nothing sent;
-    // the emulator's TLO in force stays.
+    // An empty spindle (T-1): the firmware would keep the TLO for the next tool selected. Refused, nothing
+    // sent; the emulator's TLO in force stays.
     void anEmptySpindleTakesNoTlo()
     {
         SessionHarness h;

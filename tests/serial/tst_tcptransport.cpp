@@ -352,9 +352,9 @@ private Q_SLOTS:
     // The machine closes the connection (switched off cleanly, restarted, another program took it) while a
     // command waits: the command fails at once, not at its 5 s limit, in words that say what happened.
     // A receiver that holds the event loop (the window's modal box opened from a status or an alarm: its own
-    // loop runs inside the handler) does not stop the reading: the status reports keep coming while it is open,
-    // and in order. Before, the socket said nothing more until the handler returned ("no status report for
-    // 17 s" while the machine was idle).
+    // loop runs inside the handler) does not stop the reading: the status reports keep coming while it is
+    // open, and in order. Before, the socket said nothing more until the handler returned ("no status report
+    // for 17 s" while the machine was idle).
     void aReceiverHoldingTheEventLoopDoesNotStopTheReading()
     {
         Peer peer;
@@ -647,7 +647,8 @@ private Q_SLOTS:
         QVERIFY(runUntil([&] { return !opened.isEmpty() || !errors.isEmpty(); }, 3000));
         if (chosenFramed == machineFramed) {
             QCOMPARE(opened.size(), 1);
-            QCOMPARE(transport.mode(), machineFramed ? ConsoleStream::Mode::Framed : ConsoleStream::Mode::Text);
+            QCOMPARE(
+                transport.mode(), machineFramed ? ConsoleStream::Mode::Framed : ConsoleStream::Mode::Text);
             return;
         }
         QCOMPARE(opened.size(), 0);
@@ -663,7 +664,8 @@ private Q_SLOTS:
     // The first question is harmless to grblHAL too: none of its bytes is one of grblHAL's real-time commands
     // that acts (grbl.h: reset, stop, cycle start, feed hold, door, jog cancel, the toggles, the overrides,
     // coolant, tool acknowledge, macros), and it holds no line end; its '?' asks for a status report and
-    // 0xA2 for the PID log, both reports. (The earlier A1 frame of a bare '?' toggled grblHAL's mist coolant.)
+    // 0xA2 for the PID log, both reports. (The earlier A1 frame of a bare '?' toggled grblHAL's mist
+    // coolant.)
     void theFirstQuestionHoldsNothingGrblHalActsOn()
     {
         QSet<uchar> acts = { 0x03, 0x14, 0x18, 0x19, '~', '!', '%', '\n', '\r', 0x81, 0x82, 0x84, 0x85, 0xA0,

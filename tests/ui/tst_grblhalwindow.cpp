@@ -112,7 +112,8 @@ void connectTo(Station &s, const GrblHalPeer &peer)
     QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
     QCOMPARE(s.window.connection()->controllerKind(), ControllerKind::GrblHal);
     // What was found is shown where it was asked for: the controller and the machine's own name (or link).
-    QTRY_VERIFY2(controller->currentText().startsWith(u"Automatic: grblHAL"_s), qPrintable(controller->currentText()));
+    QTRY_VERIFY2(
+        controller->currentText().startsWith(u"Automatic: grblHAL"_s), qPrintable(controller->currentText()));
 }
 
 } // namespace
@@ -165,7 +166,8 @@ private Q_SLOTS:
         QCOMPARE(*s.table().find(1)->referenceMz, -70.0);
         s.window.connection()->disconnectFromMachine();
 
-        const Run emulator = cli({ u"--json"_s, u"--library"_s, s.libraryPath(), u"--emulator"_s, u"probe"_s });
+        const Run emulator
+            = cli({ u"--json"_s, u"--library"_s, s.libraryPath(), u"--emulator"_s, u"probe"_s });
         QVERIFY2(emulator.exitCode == 0, emulator.err.constData());
         QVERIFY2(emulator.err.contains("\"Emulator\" is the built-in emulator, new to the library"),
             emulator.err.constData());
@@ -191,7 +193,8 @@ private Q_SLOTS:
         }
         s.window.connection()->disconnectFromMachine();
 
-        // Named "Emulator" in the settings: that name is the emulator's; grblHAL is asked about, and cancelled.
+        // Named "Emulator" in the settings: that name is the emulator's; grblHAL is asked about, and
+        // cancelled.
         AppSettings().setMachineName(u"Emulator"_s);
         // The question (Cancel is its default), then the window's word that it did not connect.
         QString asked;
@@ -207,8 +210,9 @@ private Q_SLOTS:
         QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 15000);
         QTRY_VERIFY2(refusal.contains(u"Give this machine a name of its own"_s), qPrintable(refusal));
-        QVERIFY2(asked.contains(u"“Emulator” in the history library is the built-in emulator; this is grblHAL "
-                                "at 127.0.0.1:%1"_s.arg(peer.port())),
+        QVERIFY2(
+            asked.contains(u"“Emulator” in the history library is the built-in emulator; this is grblHAL "
+                           "at 127.0.0.1:%1"_s.arg(peer.port())),
             qPrintable(asked));
         QVERIFY2(failed.front().front().toString().contains(u"Give this machine a name of its own"_s),
             qPrintable(failed.front().front().toString()));

@@ -10,13 +10,13 @@
 #include <QChartView>
 #include <QDateTimeAxis>
 #include <QDir>
+#include <QLabel>
 #include <QLineSeries>
+#include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableView>
-#include <QLabel>
-#include <QPushButton>
 #include <QTest>
 #include <QTimer>
 #include <QTreeWidget>
@@ -150,9 +150,9 @@ private Q_SLOTS:
         QString question;
         answerNextBox(QMessageBox::Cancel, &question);
         s.key(Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
-        QVERIFY2(
-            question.contains(u"T2 gets a new cutter: its TLO 9.652 mm (measured), its length 71.488 mm belong "
-                              u"to the old one"_s),
+        QVERIFY2(question.contains(
+                     u"T2 gets a new cutter: its TLO 9.652 mm (measured), its length 71.488 mm belong "
+                     u"to the old one"_s),
             qPrintable(question));
         QCOMPARE(s.table().find(2)->measuredTlo, std::optional(9.652));
         answerNextBox(QMessageBox::NoButton, nullptr, u"newCutterButton"_s);
@@ -298,8 +298,8 @@ private Q_SLOTS:
         screenshot(s.window, u"machinist-de-1024x700.png"_s);
     }
 
-    // Halted, in German and in Chinese at 1024×700: the banner's long words wrap or are cut inside the window,
-    // which keeps its width, and Unlock stays on screen.
+    // Halted, in German and in Chinese at 1024×700: the banner's long words wrap or are cut inside the
+    // window, which keeps its width, and Unlock stays on screen.
     void haltedFitsAt1024x700_data()
     {
         QTest::addColumn<QString>("language");
@@ -309,7 +309,8 @@ private Q_SLOTS:
     void haltedFitsAt1024x700()
     {
         QFETCH(QString, language);
-        QVERIFY(!installTranslations(qApp, language, QStringLiteral(TOFFEE_BUILD_DIR "/translations")).isEmpty());
+        QVERIFY(
+            !installTranslations(qApp, language, QStringLiteral(TOFFEE_BUILD_DIR "/translations")).isEmpty());
         Station s;
         s.window.resize(1024, 700);
         QVERIFY(s.window.openFile(kExample));

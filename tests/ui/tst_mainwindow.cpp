@@ -284,8 +284,8 @@ private Q_SLOTS:
         for (const QString &button : { u"probeButton"_s, u"unlockButton"_s, u"runBreakTestButton"_s }) {
             auto *b = window.findChild<QAbstractButton *>(button);
             QVERIFY2(b, qPrintable(button));
-            // No key of its own beyond its label's mnemonic (Alt and the underlined letter: the halted strip's
-            // Unlock, in every language), which no other control has (claimed above).
+            // No key of its own beyond its label's mnemonic (Alt and the underlined letter: the halted
+            // strip's Unlock, in every language), which no other control has (claimed above).
             QVERIFY2(b->shortcut().isEmpty() || b->shortcut() == QKeySequence::mnemonic(b->text()),
                 qPrintable(button));
         }

@@ -116,7 +116,8 @@ private Q_SLOTS:
         s.key(Qt::Key_M, Qt::ControlModifier);
         QTRY_VERIFY2(s.idle() && s.sent.contains("M493.2 T2"),
             qPrintable(QString::fromUtf8(s.sent.join(" | ")) + u" modal: "_s
-                + (QApplication::activeModalWidget() ? QApplication::activeModalWidget()->objectName() : QString())));
+                + (QApplication::activeModalWidget() ? QApplication::activeModalWidget()->objectName()
+                                                     : QString())));
         QTRY_COMPARE(s.machine()->tool(), 2);
         QTRY_VERIFY(!makeActive->isEnabled()); // T2 is the active tool now
 

@@ -8,17 +8,17 @@
 // With TOFFEE_SCREENSHOTS set, the window is saved there.
 #include <QAbstractButton>
 #include <QComboBox>
-#include <QElapsedTimer>
-#include <QMessageBox>
-#include <QTimer>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTcpServer>
 #include <QTcpSocket>
+#include <QTimer>
 #include <QUdpSocket>
 
 #include "serial/emulator/beaconsender.h"
@@ -263,7 +263,8 @@ private Q_SLOTS:
         s.trigger(u"actionBreakTest"_s);
         QVERIFY(QTest::qWaitFor([&] { return !state.isEmpty(); }, 30000));
         QVERIFY(sawBox);
-        QVERIFY2(oldestStatusMs < int(MachineConnection::kStaleAfterMs), qPrintable(QString::number(oldestStatusMs)));
+        QVERIFY2(oldestStatusMs < int(MachineConnection::kStaleAfterMs),
+            qPrintable(QString::number(oldestStatusMs)));
         QCOMPARE(state, u"HALTED"_s);
     }
 
