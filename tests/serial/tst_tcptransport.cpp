@@ -123,6 +123,20 @@ bool openLink(Peer &peer, MachineLink &link)
     return peer.accept() && peer.answer() && runUntil([&] { return !opened.isEmpty(); }, 3000);
 }
 
+// A Carvera's link in plain text on `peer` (the test speaks for the machine): open it with openLink.
+struct PlainLink
+{
+    TcpTransport transport;
+    MachineLink link { &transport };
+
+    explicit PlainLink(const Peer &peer)
+        : transport(peer.address())
+    {
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        link.setGrammar(carveraGrammar());
+    }
+};
+
 } // namespace
 
 class TestTcpTransport : public QObject
@@ -358,11 +372,9 @@ private Q_SLOTS:
     void aReceiverHoldingTheEventLoopDoesNotStopTheReading()
     {
         Peer peer;
-        TcpTransport transport(peer.address());
-        transport.setProtocol(StreamTransport::Protocol::Text);
-        MachineLink link(&transport);
-        link.setGrammar(carveraGrammar());
-        QVERIFY(openLink(peer, link));
+        PlainLink plain(peer);
+        QVERIFY(openLink(peer, plain.link));
+        MachineLink &link = plain.link;
         int sent = 0;
         connect(peer.socket, &QTcpSocket::readyRead, &peer.server, [&peer, &sent] {
             for (const char c : peer.socket->readAll()) {
@@ -396,11 +408,10 @@ private Q_SLOTS:
     void peerClosingFailsTheCommandAtOnce()
     {
         Peer peer;
-        TcpTransport transport(peer.address());
-        transport.setProtocol(StreamTransport::Protocol::Text);
-        MachineLink link(&transport);
-        link.setGrammar(carveraGrammar());
-        QVERIFY(openLink(peer, link));
+        PlainLink plain(peer);
+        QVERIFY(openLink(peer, plain.link));
+        TcpTransport &transport = plain.transport;
+        MachineLink &link = plain.link;
         QSignalSpy closed(&link, &MachineLink::closed);
         std::optional<CommandReply> reply;
         link.send("M493.4", MachineLink::kDefaultTimeoutMs, [&reply](const CommandReply &r) { reply = r; });
@@ -426,11 +437,10 @@ private Q_SLOTS:
     void peerResettingFailsTheCommandAtOnce()
     {
         Peer peer;
-        TcpTransport transport(peer.address());
-        transport.setProtocol(StreamTransport::Protocol::Text);
-        MachineLink link(&transport);
-        link.setGrammar(carveraGrammar());
-        QVERIFY(openLink(peer, link));
+        PlainLink plain(peer);
+        QVERIFY(openLink(peer, plain.link));
+        TcpTransport &transport = plain.transport;
+        MachineLink &link = plain.link;
         std::optional<CommandReply> reply;
         link.send(
             "M491", MachineLink::kMotionTimeoutMs, [&reply](const CommandReply &r) { reply = r; },
@@ -463,11 +473,10 @@ private Q_SLOTS:
     void silentPeerFailsTheCommandAtItsLimit()
     {
         Peer peer;
-        TcpTransport transport(peer.address());
-        transport.setProtocol(StreamTransport::Protocol::Text);
-        MachineLink link(&transport);
-        link.setGrammar(carveraGrammar());
-        QVERIFY(openLink(peer, link));
+        PlainLink plain(peer);
+        QVERIFY(openLink(peer, plain.link));
+        TcpTransport &transport = plain.transport;
+        MachineLink &link = plain.link;
         std::optional<CommandReply> reply;
         QElapsedTimer clock;
         clock.start();
