@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/connectionpanel.h"
+#include "ui/askfirst.h"
 
 #include <QComboBox>
 #include <QGridLayout>
@@ -267,19 +268,17 @@ void ConnectionPanel::toggleConnection()
     }
     if (t.isNetwork()) {
         if (const auto heard = heardAt(addressText(t.host, t.tcpPort)); heard && heard->busy) {
-            QMessageBox box(QMessageBox::Warning, tr("The machine is busy"),
-                tr("%1 says it is busy: another program is connected to it (Makera's controller, a phone, "
-                   "another computer).")
-                    .arg(heard->name),
-                QMessageBox::Cancel, this);
-            box.setInformativeText(tr("Commands from two programs at once can interfere, and each sees the "
-                                      "other's replies. Disconnect the other program first, or connect "
-                                      "anyway."));
-            QPushButton *anyway = box.addButton(tr("Connect Anyway"), QMessageBox::AcceptRole);
-            anyway->setObjectName(u"connectAnywayButton"_s);
-            box.setDefaultButton(QMessageBox::Cancel);
-            box.exec();
-            if (box.clickedButton() != anyway)
+            const bool anyway = askFirst(this,
+                { QMessageBox::Warning, tr("The machine is busy"),
+                    tr("%1 says it is busy: another program is connected to it (Makera's controller, a "
+                       "phone, "
+                       "another computer).")
+                        .arg(heard->name),
+                    tr("Commands from two programs at once can interfere, and each sees the "
+                       "other's replies. Disconnect the other program first, or connect "
+                       "anyway."),
+                    tr("Connect Anyway"), u"connectAnywayButton"_s });
+            if (!anyway)
                 return;
         }
     }

@@ -3,6 +3,7 @@
 // and reference, given to it on connecting, and its own tool table pushed from the file or pulled into it
 // (Machine ▸ Push Offsets…, Pull Offsets…), each with a preview of the differences first.
 #include "model/clock.h"
+#include "ui/askfirst.h"
 #include "ui/mainwindow.h"
 
 #include <cmath>
@@ -87,8 +88,8 @@ QString MainWindow::bindMachine(const MachineIdentity &identity)
     using Kind = Library::MachineBinding::Kind;
     if (bound.value().kind == Kind::New) {
         m_newMachine = true;
-        statusBar()->showMessage(tr("“%1” is %2, new to the history library.").arg(name, identity.title()),
-            10000);
+        statusBar()->showMessage(
+            tr("“%1” is %2, new to the history library.").arg(name, identity.title()), 10000);
         return {};
     }
     if (bound.value().kind == Kind::Same)
@@ -102,17 +103,14 @@ QString MainWindow::bindMachine(const MachineIdentity &identity)
         return {};
     }
     const QString other = before.title();
-    QMessageBox box(QMessageBox::Question, tr("Another machine under this name"),
-        tr("“%1” in the history library is %2; this is %3.").arg(name, other, identity.title()),
-        QMessageBox::Cancel, this);
-    box.setInformativeText(tr("A machine's reference, tool setter and history are its own. If this is the "
-                              "same machine reached another way, say so; if not, give it a name of its own "
-                              "(Machine ▸ History Library…, Machine name) and connect again."));
-    QPushButton *same = box.addButton(tr("Same Machine"), QMessageBox::AcceptRole);
-    same->setObjectName(u"sameMachineButton"_s);
-    box.setDefaultButton(QMessageBox::Cancel);
-    box.exec();
-    if (box.clickedButton() != same)
+    const bool same = askFirst(this,
+        { QMessageBox::Question, tr("Another machine under this name"),
+            tr("“%1” in the history library is %2; this is %3.").arg(name, other, identity.title()),
+            tr("A machine's reference, tool setter and history are its own. If this is the "
+               "same machine reached another way, say so; if not, give it a name of its own "
+               "(Machine ▸ History Library…, Machine name) and connect again."),
+            tr("Same Machine"), u"sameMachineButton"_s });
+    if (!same)
         return tr("Not connected: “%1” in the history library is %2, not %3. Give this machine a name "
                   "of its own (Machine ▸ History Library…, Machine name), then connect again.")
             .arg(name, other, identity.title());

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/toolcontextmenu.h"
+#include "ui/askfirst.h"
 
 #include <QAction>
 #include <QMenu>
@@ -132,19 +133,17 @@ void ToolContextMenu::makeActive(bool confirm)
         ? u"M61 Q%1"_s.arg(tool)
         : u"M493.2 T%1"_s.arg(tool);
     if (confirm) {
-        QMessageBox box(QMessageBox::Question, tr("Make T%1 active?").arg(tool),
-            tr("Is T%1 in the spindle now?").arg(tool), QMessageBox::Cancel, m_window);
-        box.setObjectName(u"makeActiveQuestion"_s);
-        box.setInformativeText(tr(
-            "The machine takes T%1 as the tool in the spindle, without probing it. It keeps the TLO in "
-            "force now (another tool's, or none): probe T%1 or restore its TLO before it cuts.\n\nSends: %2")
-                                   .arg(tool)
-                                   .arg(command));
-        QPushButton *yes = box.addButton(tr("T%1 Is in the Spindle").arg(tool), QMessageBox::AcceptRole);
-        yes->setObjectName(u"makeActiveYesButton"_s);
-        box.setDefaultButton(QMessageBox::Cancel);
-        box.exec();
-        if (box.clickedButton() != yes)
+        const bool inSpindle = askFirst(m_window,
+            { QMessageBox::Question, tr("Make T%1 active?").arg(tool),
+                tr("Is T%1 in the spindle now?").arg(tool),
+                tr("The machine takes T%1 as the tool in the spindle, without probing it. It keeps the TLO "
+                   "in "
+                   "force now (another tool's, or none): probe T%1 or restore its TLO before it "
+                   "cuts.\n\nSends: %2")
+                    .arg(tool)
+                    .arg(command),
+                tr("T%1 Is in the Spindle").arg(tool), u"makeActiveYesButton"_s, u"makeActiveQuestion"_s });
+        if (!inSpindle)
             return;
     }
     m_connection->selectTool(tool, [this, tool](const SessionResult &r) {
