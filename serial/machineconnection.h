@@ -134,6 +134,12 @@ public:
     // While a tool change waits for the person (waitingForOperator): the tool is in, go on (where the
     // controller takes that from here: resumesFromHere), or end the change (MachineController's).
     [[nodiscard]] bool resumesFromHere() const { return m_session && m_session->resumesFromHere(); }
+    // The next probe makes the tool in the spindle this machine's reference: its controller keeps none of its
+    // own (grblHAL) and none was measured on this machine yet.
+    [[nodiscard]] bool probeMakesReference() const
+    {
+        return m_session && !m_session->keepsReference() && !m_session->keptReference();
+    }
     void resumeToolChange();
     void endToolChange(const QString &why);
     // What the machine said it runs on connecting; Unknown while disconnected.

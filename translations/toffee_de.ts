@@ -5314,6 +5314,10 @@ Vermessen Sie T%1 stattdessen.</translation>
         <source>T%1&apos;s TLO is %2 days old, older than the stale limit (%3 d): the cutter may have worn or been changed since.</source>
         <translation>Die TL von T%1 ist %2 Tage alt, älter als die Veraltungsgrenze (%3 d): Der Fräser kann seither verschlissen oder gewechselt worden sein.</translation>
     </message>
+    <message>
+        <source>This machine has no reference tool yet: %1 becomes it (TLO 0.000), and every tool measured after it gets its length against %1&apos;s. Probe the tool you mean to keep as the reference.</source>
+        <translation>Diese Maschine hat noch kein Referenzwerkzeug: %1 wird es (TLO 0,000), und jedes danach gemessene Werkzeug erhält seine Länge gegenüber %1. Messen Sie das Werkzeug, das Referenz bleiben soll.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ProgramUse</name>
@@ -6471,6 +6475,62 @@ Sendet: %2</translation>
     <message>
         <source>The machine&apos;s tool is as it was.</source>
         <translation>Das Werkzeug der Maschine ist unverändert.</translation>
+    </message>
+    <message>
+        <source>&amp;Change to It (M6)…</source>
+        <translation>&amp;Wechseln zu diesem (M6)…</translation>
+    </message>
+    <message>
+        <source>&amp;Change to T%1 (M6)…</source>
+        <translation>&amp;Wechseln zu T%1 (M6)…</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s tool change to T%1, then T%1 measured on the tool setter.</source>
+        <translation>Werkzeugwechsel der Maschine zu T%1, danach wird T%1 am Werkzeugtaster gemessen.</translation>
+    </message>
+    <message>
+        <source>The machine puts the tool in the spindle back, takes T%1 from its rack (or asks you for it when it is not in the rack) and measures it on the tool setter. Keep hands clear.</source>
+        <translation>Die Maschine legt das Werkzeug in der Spindel zurück, nimmt T%1 aus dem Magazin (oder fragt Sie danach, wenn es nicht im Magazin ist) und misst es am Werkzeugtaster. Hände weg.</translation>
+    </message>
+    <message>
+        <source>The machine stops and waits for you to put T%1 in the spindle; press cycle start on the machine (or Continue here), and T%1 is measured on the tool setter. Keep hands clear.</source>
+        <translation>Die Maschine hält an und wartet, bis Sie T%1 in die Spindel setzen; drücken Sie Zyklusstart an der Maschine (oder hier Fortsetzen), dann wird T%1 am Werkzeugtaster gemessen. Hände weg.</translation>
+    </message>
+    <message>
+        <source>Change to T%1?</source>
+        <translation>Zu T%1 wechseln?</translation>
+    </message>
+    <message>
+        <source>Change to T%1 now?</source>
+        <translation>Jetzt zu T%1 wechseln?</translation>
+    </message>
+    <message>
+        <source>Sends: M6 T%1</source>
+        <translation>Sendet: M6 T%1</translation>
+    </message>
+    <message>
+        <source>Change to T%1</source>
+        <translation>Zu T%1 wechseln</translation>
+    </message>
+    <message>
+        <source>The change to T%1 did not finish</source>
+        <translation>Der Wechsel zu T%1 wurde nicht beendet</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the tool table.</source>
+        <translation>In die Werkzeugtabelle wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle, measured: TLO %2, recorded in the table.</source>
+        <translation>T%1 ist in der Spindel, gemessen: TLO %2, in der Tabelle erfasst.</translation>
+    </message>
+    <message>
+        <source>T%1 was not recorded</source>
+        <translation>T%1 wurde nicht erfasst</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle, but its TLO could not be recorded: %2</source>
+        <translation>T%1 ist in der Spindel, aber seine TLO konnte nicht erfasst werden: %2</translation>
     </message>
 </context>
 <context>

@@ -5314,6 +5314,10 @@ Probe T%1 instead.</source>
         <source>T%1&apos;s TLO is %2 days old, older than the stale limit (%3 d): the cutter may have worn or been changed since.</source>
         <translation>T%1 的 TLO 已有 %2 天，超过过期期限（%3 天）：刀具此后可能已磨损或被更换。</translation>
     </message>
+    <message>
+        <source>This machine has no reference tool yet: %1 becomes it (TLO 0.000), and every tool measured after it gets its length against %1&apos;s. Probe the tool you mean to keep as the reference.</source>
+        <translation>这台机器还没有基准刀具：%1 将成为基准（TLO 0.000），之后测量的每把刀具都以 %1 为基准得到长度。请测量您打算保留为基准的刀具。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ProgramUse</name>
@@ -6471,6 +6475,62 @@ Sends: %2</source>
     <message>
         <source>The machine&apos;s tool is as it was.</source>
         <translation>机器的刀具保持不变。</translation>
+    </message>
+    <message>
+        <source>&amp;Change to It (M6)…</source>
+        <translation>换到此刀具 (M6)(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>&amp;Change to T%1 (M6)…</source>
+        <translation>换到 T%1 (M6)(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s tool change to T%1, then T%1 measured on the tool setter.</source>
+        <translation>机器换到 T%1，然后在对刀仪上测量 T%1。</translation>
+    </message>
+    <message>
+        <source>The machine puts the tool in the spindle back, takes T%1 from its rack (or asks you for it when it is not in the rack) and measures it on the tool setter. Keep hands clear.</source>
+        <translation>机器把主轴中的刀具放回，从刀库取出 T%1（不在刀库中时会请您装入），并在对刀仪上测量。请勿靠近。</translation>
+    </message>
+    <message>
+        <source>The machine stops and waits for you to put T%1 in the spindle; press cycle start on the machine (or Continue here), and T%1 is measured on the tool setter. Keep hands clear.</source>
+        <translation>机器停下并等待您把 T%1 装入主轴；按机器上的循环启动（或此处的继续），随后在对刀仪上测量 T%1。请勿靠近。</translation>
+    </message>
+    <message>
+        <source>Change to T%1?</source>
+        <translation>换到 T%1？</translation>
+    </message>
+    <message>
+        <source>Change to T%1 now?</source>
+        <translation>现在换到 T%1 吗？</translation>
+    </message>
+    <message>
+        <source>Sends: M6 T%1</source>
+        <translation>发送：M6 T%1</translation>
+    </message>
+    <message>
+        <source>Change to T%1</source>
+        <translation>换到 T%1</translation>
+    </message>
+    <message>
+        <source>The change to T%1 did not finish</source>
+        <translation>换到 T%1 未完成</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the tool table.</source>
+        <translation>刀具表中未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle, measured: TLO %2, recorded in the table.</source>
+        <translation>T%1 已在主轴中并已测量：TLO %2，已记入刀具表。</translation>
+    </message>
+    <message>
+        <source>T%1 was not recorded</source>
+        <translation>T%1 未记录</translation>
+    </message>
+    <message>
+        <source>T%1 is in the spindle, but its TLO could not be recorded: %2</source>
+        <translation>T%1 已在主轴中，但其 TLO 无法记录：%2</translation>
     </message>
 </context>
 <context>

@@ -130,12 +130,19 @@ void ProbePanel::probe(bool confirm)
     if (!m_connection->canOperate() || m_connection->activeTool() == Limits::kEmptySpindle)
         return;
     const QString name = m_connection->activeToolName();
+    // A controller that keeps no reference (grblHAL): the first tool measured on this machine becomes it.
+    const QString reference = m_connection->probeMakesReference() ? u"\n\n"_s
+            + tr("This machine has no reference tool yet: %1 becomes it (TLO 0.000), and every tool measured "
+                 "after it gets its length against %1's. Probe the tool you mean to keep as the reference.")
+                  .arg(name)
+                                                                  : QString();
     if (confirm
         && QMessageBox::question(this, tr("Probe %1?").arg(name),
                tr("The machine will move: up to clearance, over the tool setter, then down until "
                   "%1 touches it. Keep hands clear.\n\nThe machine says %1 is in the spindle: the "
                   "measurement is recorded as %1's TLO.\n\nProbe now?")
                        .arg(name)
+                   + reference
                    + brokenParagraph(brokenToolWarning(m_document, m_connection, BrokenToolAction::Probe)),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
@@ -146,9 +153,12 @@ void ProbePanel::probe(bool confirm)
             const int number = r.tool.value_or(-1);
             auto recorded = r.recording ? m_document->record(*r.recording)
                                         : Result<void>(Error { tr("there is no tool in the spindle.") });
+            // What the controller adds (grblHAL: "T1 is this machine's reference tool…") is said too.
+            const QString said = r.message.isEmpty() ? QString() : u" "_s + r.message;
             m_result->setText(recorded ? tr("T%1 measured: TLO %2, recorded in the table.")
                                              .arg(number)
                                              .arg(millimetres(r.tlo->tlo()))
+                        + said
                                        : tr("Measured TLO %1, but it could not be recorded: %2")
                                              .arg(millimetres(r.tlo->tlo()), recorded.error().message));
         }

@@ -3,12 +3,15 @@
 #include "ui/askfirst.h"
 
 #include <QAction>
+#include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QTableView>
 
 #include "model/document/tooldocument.h"
+#include "model/numberformat.h"
 #include "serial/machineconnection.h"
 #include "ui/machinedock.h"
 #include "ui/offseteditor.h"
@@ -29,6 +32,7 @@ ToolContextMenu::ToolContextMenu(QWidget *window, MachineConnection *connection,
     , m_machine(machine)
     , m_makeActive(new QAction(tr("Make &Active (No Probe)…"), window))
     , m_setTlo(new QAction(tr("&Set Its TLO…"), window))
+    , m_changeTo(new QAction(tr("&Change to It (M6)…"), window))
 {
     m_makeActive->setObjectName(u"actionMakeActive"_s);
     m_makeActive->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
@@ -36,8 +40,13 @@ ToolContextMenu::ToolContextMenu(QWidget *window, MachineConnection *connection,
     m_setTlo->setObjectName(u"actionSetTlo"_s);
     m_setTlo->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
     m_setTlo->setShortcutContext(Qt::WindowShortcut);
+    m_changeTo->setObjectName(u"actionChangeTo"_s);
+    m_changeTo->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
+    m_changeTo->setShortcutContext(Qt::WindowShortcut);
     window->addAction(m_makeActive);
     window->addAction(m_setTlo);
+    window->addAction(m_changeTo);
+    connect(m_changeTo, &QAction::triggered, this, [this] { changeTo(); });
     connect(m_makeActive, &QAction::triggered, this, [this] { makeActive(); });
     connect(m_setTlo, &QAction::triggered, this, &ToolContextMenu::setTlo);
     QTableView *view = m_table->view();
@@ -69,6 +78,13 @@ void ToolContextMenu::update()
             : tool < 0              ? tr("Select one tool of the table.")
             : active                ? tr("T%1 is already the active tool.").arg(tool)
                      : tr("Tell the machine that T%1 is in the spindle, without probing it.").arg(tool));
+    m_changeTo->setEnabled(ready && tool > 0 && !active);
+    m_changeTo->setText(tool > 0 ? tr("&Change to T%1 (M6)…").arg(tool) : tr("&Change to It (M6)…"));
+    m_changeTo->setToolTip(!ready ? tr("Connect to a machine that is idle and not halted first.")
+            : tool <= 0           ? tr("Select one tool of the table.")
+            : active
+            ? tr("T%1 is already the active tool.").arg(tool)
+            : tr("The machine's tool change to T%1, then T%1 measured on the tool setter.").arg(tool));
     m_setTlo->setEnabled(ready && active);
     m_setTlo->setText(tool >= 0 ? tr("&Set T%1's TLO…").arg(tool) : tr("&Set Its TLO…"));
     m_setTlo->setToolTip(active || !ready
@@ -84,6 +100,7 @@ QMenu *ToolContextMenu::buildMenu()
     m_menu->setObjectName(u"toolContextMenu"_s);
     m_menu->setToolTipsVisible(true);
     const int tool = selectedTool();
+    m_menu->addAction(m_changeTo);
     m_menu->addAction(m_makeActive);
     m_menu->addAction(m_setTlo);
     // The Probe panel's own buttons, as actions: the same checks decide.
@@ -150,6 +167,50 @@ void ToolContextMenu::makeActive(bool confirm)
         if (!r.ok())
             QMessageBox::warning(m_window, tr("T%1 was not made active").arg(tool),
                 r.message + u"\n\n"_s + tr("The machine's tool is as it was."));
+    });
+}
+
+void ToolContextMenu::changeTo(bool confirm)
+{
+    const int tool = selectedTool();
+    if (tool <= 0 || !m_connection->canOperate() || m_connection->activeTool() == tool)
+        return;
+    // Who does the change: the Carvera from its rack, else the person at the machine (grblHAL's every M6).
+    const bool fromRack = m_connection->firmware().hasRack();
+    const QString how = fromRack
+        ? tr(
+            "The machine puts the tool in the spindle back, takes T%1 from its rack (or asks you for it when "
+            "it is not in the rack) and measures it on the tool setter. Keep hands clear.")
+              .arg(tool)
+        : tr(
+            "The machine stops and waits for you to put T%1 in the spindle; press cycle start on the machine "
+            "(or Continue here), and T%1 is measured on the tool setter. Keep hands clear.")
+              .arg(tool);
+    if (confirm
+        && !askFirst(m_window,
+            { QMessageBox::Question, tr("Change to T%1?").arg(tool), tr("Change to T%1 now?").arg(tool),
+                how + u"\n\n"_s + tr("Sends: M6 T%1").arg(tool), tr("Change to T%1").arg(tool),
+                u"changeToYesButton"_s, u"changeToQuestion"_s }))
+        return;
+    m_connection->changeTool(tool, [this, tool](const SessionResult &r) {
+        if (!r.ok()) {
+            // Ended by the operator: the wait box said so already.
+            if (!r.message.isEmpty())
+                QMessageBox::warning(m_window, tr("The change to T%1 did not finish").arg(tool),
+                    r.message + u"\n\n"_s + tr("Nothing was written to the tool table."));
+            return;
+        }
+        const auto recorded = r.recording ? m_document->record(*r.recording) : Result<void> {};
+        if (auto *main = qobject_cast<QMainWindow *>(m_window); main && recorded && r.tlo)
+            main->statusBar()->showMessage(
+                tr("T%1 is in the spindle, measured: TLO %2, recorded in the table.")
+                    .arg(tool)
+                    .arg(millimetres(r.tlo->tlo())));
+        if (!recorded)
+            QMessageBox::warning(m_window, tr("T%1 was not recorded").arg(tool),
+                tr("T%1 is in the spindle, but its TLO could not be recorded: %2")
+                    .arg(tool)
+                    .arg(recorded.error().message));
     });
 }
 

@@ -62,7 +62,7 @@ public:
     [[nodiscard]] std::optional<ToolSetter> toolSetter() const override { return m_setter; }
     [[nodiscard]] bool keepsReference() const override { return false; }
     void adoptReference(std::optional<double> referenceMz) override { m_reference = referenceMz; }
-    [[nodiscard]] std::optional<double> reference() const { return m_reference; }
+    [[nodiscard]] std::optional<double> keptReference() const override { return m_reference; }
     void readToolTable(Done done) override;
     [[nodiscard]] std::optional<QList<ControllerTool>> controllerTable() const override
     {

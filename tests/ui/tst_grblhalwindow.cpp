@@ -19,6 +19,7 @@
 
 #include "model/library/library.h"
 #include "tests/support/grblhalpeer.h"
+#include "tests/support/messageboxes.h"
 #include "tests/support/processes.h"
 #include "tests/support/station.h"
 #include "ui/appsettings.h"
@@ -27,6 +28,7 @@
 #include "ui/offsetsyncdialog.h"
 #include "ui/rackpanel.h"
 #include "ui/toolsetterdialog.h"
+#include "ui/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Toffee::Test;
@@ -271,14 +273,20 @@ private Q_SLOTS:
             QCOMPARE(kept.value()->seekFeed, 3000.0);
         }
 
-        // The first tool measured is the reference; the second against it.
-        s.probe();
+        // The first tool measured is the reference, said before and after; the second against it.
+        QVERIFY(s.window.connection()->probeMakesReference());
+        const QString first = s.probe();
+        QVERIFY2(first.contains(u"This machine has no reference tool yet: T1 becomes it"_s), qPrintable(first));
         QVERIFY(waitIdle(s));
         QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
         QCOMPARE(*s.table().find(1)->referenceMz, -70.0);
+        QVERIFY2(s.text(u"probeResultLabel"_s).contains(u"T1 is this machine's reference tool (its TLO is 0)"_s),
+            qPrintable(s.text(u"probeResultLabel"_s)));
+        QVERIFY(!s.window.connection()->probeMakesReference());
         QVERIFY(s.window.connection()->selectTool(2, {}));
         QVERIFY(waitIdle(s));
-        s.probe();
+        const QString second = s.probe();
+        QVERIFY2(!second.isEmpty() && !second.contains(u"reference"_s), qPrintable(second));
         QVERIFY(waitIdle(s));
         QCOMPARE(*s.table().find(2)->measuredTlo, 15.3);
         QCOMPARE(s.text(u"tloLabel"_s), u"15.300 mm"_s);
@@ -371,9 +379,35 @@ private Q_SLOTS:
         QTRY_VERIFY(check->report().has_value() && !check->isRunning());
         QVERIFY(!differs());
         check->close();
+
+        // grblHAL's tool change from the table (Ctrl+Shift+M): asked first, then the wait for the person,
+        // Continue (cycle start), and T2 measured (now 0.5 mm shorter) and recorded.
+        QVERIFY(s.window.connection()->selectTool(1, {}));
+        QVERIFY(waitIdle(s));
+        s.window.findChild<ToolTablePanel *>()->selectTool(2);
+        QTRY_VERIFY(s.find<QAction>(u"actionChangeTo"_s)->isEnabled());
+        QString changeQuestion;
+        answerNextBox(QMessageBox::NoButton, &changeQuestion, u"changeToYesButton"_s);
+        s.trigger(u"actionChangeTo"_s);
+        QTRY_VERIFY_WITH_TIMEOUT(QApplication::activeModalWidget()
+                && QApplication::activeModalWidget()->objectName() == u"toolChangeWaitBox"_s,
+            15000);
+        QVERIFY2(changeQuestion.contains(u"waits for you to put T2 in the spindle"_s)
+                && changeQuestion.contains(u"Sends: M6 T2"_s),
+            qPrintable(changeQuestion));
+        QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Waiting for the operator"_s);
+        screenshot(s.window, u"grblhal-tool-change.png"_s);
+        QTest::mouseClick(QApplication::activeModalWidget()->findChild<QPushButton *>(u"toolChangeContinueButton"_s),
+            Qt::LeftButton);
+        QVERIFY(waitIdle(s));
+        QCOMPARE(s.window.connection()->activeTool(), std::optional(2));
+        QCOMPARE(*s.table().find(2)->measuredTlo, 14.8);
+        QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
+        QVERIFY2(s.window.statusBar()->currentMessage().contains(u"T2 is in the spindle, measured: TLO 14.800"_s),
+            qPrintable(s.window.statusBar()->currentMessage()));
         s.window.connection()->disconnectFromMachine();
         QCOMPARE(peer.tableZ(1), std::optional(0.0));
-        QCOMPARE(peer.tableZ(2), std::optional(15.3));
+        QCOMPARE(peer.tableZ(2), std::optional(14.8));
     }
 };
 

@@ -93,7 +93,7 @@ private Q_SLOTS:
         auto *menu = qobject_cast<QMenu *>(QApplication::activePopupWidget());
         QCOMPARE(menu->objectName(), u"toolContextMenu"_s);
         QCOMPARE(entries(menu),
-            (QStringList { u"Make T2 Active (No Probe)…"_s, u"(off) Set T2's TLO…"_s,
+            (QStringList { u"Change to T2 (M6)…"_s, u"Make T2 Active (No Probe)…"_s, u"(off) Set T2's TLO…"_s,
                 u"Restore T2's Known TLO…"_s, u"Probe T1 (in the Spindle)"_s, u"New Cutter…"_s,
                 u"Remove Tool"_s }));
         QVERIFY(entry(menu, u"Set T2"_s)->toolTip().contains(u"make T2 active first"_s));
@@ -149,6 +149,31 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(s.idle() && s.table().find(2)->tloSource == TloSource::Probe, 10000);
         QVERIFY(std::fabs(*s.table().find(2)->measuredTlo - s.machine()->tlo()) < 0.0006); // at 0.001 mm
         QVERIFY(std::fabs(*s.table().find(2)->measuredTlo - 12.5) > 0.01);
+
+        // Change to T3 (Ctrl+Shift+M): asked first, naming what is sent; the machine's change from its rack,
+        // then T3 measured and recorded.
+        s.window.findChild<ToolTablePanel *>()->selectTool(3);
+        auto *changeTo = s.find<QAction>(u"actionChangeTo"_s);
+        QTRY_VERIFY(changeTo->isEnabled());
+        QCOMPARE(QString(changeTo->text()).remove(u'&'), u"Change to T3 (M6)…"_s);
+        s.window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&s.window));
+        answerNextBox(QMessageBox::Cancel, &question);
+        s.key(Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_VERIFY2(question.contains(u"Change to T3 now?"_s) && question.contains(u"Sends: M6 T3"_s)
+                && question.contains(u"from its rack"_s),
+            qPrintable(question));
+        QVERIFY(!s.sent.contains("M6 T3"));
+        const auto t3Before = s.table().find(3)->measuredAt;
+        s.window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&s.window));
+        answerNextBox(QMessageBox::NoButton, nullptr, u"changeToYesButton"_s);
+        s.key(Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(s.idle() && s.sent.contains("M6 T3"), 15000);
+        QTRY_COMPARE(s.machine()->tool(), 3);
+        QTRY_VERIFY(s.table().find(3)->measuredAt != t3Before);
+        QVERIFY(std::fabs(*s.table().find(3)->measuredTlo - s.machine()->tlo()) < 0.0006);
+        QVERIFY(!changeTo->isEnabled()); // T3 is the active tool now
     }
 };
 
