@@ -54,8 +54,8 @@ struct SessionResult
     }
 };
 
-// A change under way (MachineController::changeTool): whether the machine waits for the person, and why the wait
-// was ended.
+// A change under way (MachineController::changeTool): whether the machine waits for the person, and why the
+// wait was ended.
 struct PendingToolChange
 {
     int tool = 0;
@@ -135,7 +135,8 @@ public:
     [[nodiscard]] virtual std::optional<ToolSetter> toolSetter() const { return std::nullopt; }
     [[nodiscard]] virtual bool keepsReference() const { return true; }
     virtual void adoptReference(std::optional<double> referenceMz) { Q_UNUSED(referenceMz) }
-    // The reference Toffee keeps for such a controller, once measured or adopted; none for one that keeps its own.
+    // The reference Toffee keeps for such a controller, once measured or adopted; none for one that keeps its
+    // own.
     [[nodiscard]] virtual std::optional<double> keptReference() const { return std::nullopt; }
     // Who is at the machine. The window's operator is; toffee-cli's is only when its input is a terminal.
     // `why` (empty: someone is there) says why nobody is counted as there, for the refusal.

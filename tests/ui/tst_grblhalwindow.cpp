@@ -276,11 +276,13 @@ private Q_SLOTS:
         // The first tool measured is the reference, said before and after; the second against it.
         QVERIFY(s.window.connection()->probeMakesReference());
         const QString first = s.probe();
-        QVERIFY2(first.contains(u"This machine has no reference tool yet: T1 becomes it"_s), qPrintable(first));
+        QVERIFY2(
+            first.contains(u"This machine has no reference tool yet: T1 becomes it"_s), qPrintable(first));
         QVERIFY(waitIdle(s));
         QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
         QCOMPARE(*s.table().find(1)->referenceMz, -70.0);
-        QVERIFY2(s.text(u"probeResultLabel"_s).contains(u"T1 is this machine's reference tool (its TLO is 0)"_s),
+        QVERIFY2(
+            s.text(u"probeResultLabel"_s).contains(u"T1 is this machine's reference tool (its TLO is 0)"_s),
             qPrintable(s.text(u"probeResultLabel"_s)));
         QVERIFY(!s.window.connection()->probeMakesReference());
         QVERIFY(s.window.connection()->selectTool(2, {}));
@@ -397,13 +399,15 @@ private Q_SLOTS:
             qPrintable(changeQuestion));
         QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Waiting for the operator"_s);
         screenshot(s.window, u"grblhal-tool-change.png"_s);
-        QTest::mouseClick(QApplication::activeModalWidget()->findChild<QPushButton *>(u"toolChangeContinueButton"_s),
+        QTest::mouseClick(
+            QApplication::activeModalWidget()->findChild<QPushButton *>(u"toolChangeContinueButton"_s),
             Qt::LeftButton);
         QVERIFY(waitIdle(s));
         QCOMPARE(s.window.connection()->activeTool(), std::optional(2));
         QCOMPARE(*s.table().find(2)->measuredTlo, 14.8);
         QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);
-        QVERIFY2(s.window.statusBar()->currentMessage().contains(u"T2 is in the spindle, measured: TLO 14.800"_s),
+        QVERIFY2(
+            s.window.statusBar()->currentMessage().contains(u"T2 is in the spindle, measured: TLO 14.800"_s),
             qPrintable(s.window.statusBar()->currentMessage()));
         s.window.connection()->disconnectFromMachine();
         QCOMPARE(peer.tableZ(1), std::optional(0.0));
