@@ -9,9 +9,19 @@
 
 namespace Toffee {
 
-// Where a tool's stored TLO came from: the tool setter, or an offset the operator set on the machine by hand
-// (M493.3 Z, M493.3 H). A break test compares against the TLO the machine holds, so it matters which.
-enum class TloSource : quint8 { Probe, Manual };
+// Where a tool's stored TLO came from: the tool setter; an offset the operator set on the machine by hand
+// (M493.3 Z, M493.3 H, G10 L1 in the console); or a controller's own table read by Pull Offsets (grblHAL's
+// `$#`: set there by someone or something other than Toffee). Only a probe is a measurement: a break test
+// compares against the TLO the machine holds, so it matters which.
+enum class TloSource : quint8 { Probe, Manual, Pulled };
+
+[[nodiscard]] constexpr bool isMeasured(TloSource source)
+{
+    return source == TloSource::Probe;
+}
+// "probe", "manual", "pulled": the files' and the CLI's JSON word; the reverse is empty for another word.
+[[nodiscard]] QLatin1StringView tloSourceName(TloSource source);
+[[nodiscard]] std::optional<TloSource> tloSourceFromName(QByteArrayView name);
 
 // One row of the tool table. Lengths and radii are in the table's units.
 struct Tool
@@ -30,7 +40,7 @@ struct Tool
     // LinuxCNC fields Toffee does not edit (X, Y, A-C, U-W offsets, I, J, Q), kept verbatim as
     // "X0.5 Q2" so that a LinuxCNC table survives a round trip through Toffee.
     QString linuxCncExtra;
-    TloSource tloSource = TloSource::Probe; // Manual only with a measuredTlo
+    TloSource tloSource = TloSource::Probe; // Manual or Pulled only with a measuredTlo
     // The last break test found this tool longer or shorter than its TLO: it stays marked (in the file too)
     // until it is probed again.
     bool breakTestFailed = false;

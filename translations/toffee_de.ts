@@ -427,16 +427,8 @@
         <translation>Eine LinuxCNC-Tabelle kann kein Werkzeug markieren, das seinen Bruchtest nicht bestanden hat: %1 wäre nicht mehr markiert.</translation>
     </message>
     <message>
-        <source>&quot;tlo_source&quot; must be &quot;probe&quot; or &quot;manual&quot;.</source>
-        <translation>&quot;tlo_source&quot; muss &quot;probe&quot; oder &quot;manual&quot; sein.</translation>
-    </message>
-    <message>
         <source>&quot;break_test_failed&quot; must be true or false.</source>
         <translation>&quot;break_test_failed&quot; muss true oder false sein.</translation>
-    </message>
-    <message>
-        <source>tlo_source &quot;%1&quot; must be probe, manual or empty.</source>
-        <translation>tlo_source &quot;%1&quot; muss probe, manual oder leer sein.</translation>
     </message>
     <message>
         <source>break_test &quot;%1&quot; must be failed, passed or empty.</source>
@@ -878,6 +870,18 @@
         <source>The tool changer found no tool where one should be (an empty rack pocket), or was given no tool.</source>
         <translation>Der Werkzeugwechsler fand kein Werkzeug, wo eines sein sollte (ein leerer Magazinplatz), oder erhielt kein Werkzeug.</translation>
     </message>
+    <message>
+        <source>&quot;tlo_source&quot; must be &quot;probe&quot;, &quot;manual&quot; or &quot;pulled&quot;.</source>
+        <translation>"tlo_source" muss "probe", "manual" oder "pulled" sein.</translation>
+    </message>
+    <message>
+        <source>tlo_source &quot;%1&quot; must be probe, manual, pulled or empty.</source>
+        <translation>tlo_source "%1" muss probe, manual, pulled oder leer sein.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured: it is measured at its change.</source>
+        <translation>Die TLO von T%1 wurde aus der Tabelle der Steuerung gelesen, nicht gemessen: T%1 wird beim Wechsel gemessen.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::About</name>
@@ -1029,6 +1033,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1 may be broken. The machine is stopped and lifted (not halted), and the table marks %1 until it is probed again.</source>
         <translation>%1 ist möglicherweise gebrochen. Die Maschine ist gestoppt und angehoben (nicht angehalten), und die Tabelle markiert %1, bis es erneut gemessen wird.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was read from the controller&apos;s table (%3), not measured: if that value is not the tool&apos;s real length, the test reports the tool broken.</source>
+        <translation>Die TLO %2 von T%1 wurde aus der Tabelle der Steuerung gelesen (%3), nicht gemessen: Ist dieser Wert nicht die wirkliche Länge des Werkzeugs, meldet der Test das Werkzeug als gebrochen.</translation>
     </message>
 </context>
 <context>
@@ -1200,6 +1208,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>LinuxCNC fields</source>
         <translation>LinuxCNC-Felder</translation>
+    </message>
+    <message>
+        <source>read from the controller</source>
+        <translation>aus der Steuerung gelesen</translation>
     </message>
 </context>
 <context>
@@ -3002,6 +3014,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>T%1 is past its life limit of %2 min already: its cutter has cut %3 since it went in, and the program cuts %4 more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
         <translation>T%1 hat seine Standzeit von %2 min bereits überschritten: Sein Fräser hat seit dem Einsetzen %3 zerspant, und das Programm zerspant %4 mehr. Setzen Sie einen neuen Fräser ein (Bearbeiten ▸ Neuer Fräser …, toffee-cli new-cutter %1) oder erhöhen Sie die Standzeit.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured on the tool setter: probe it before the job.</source>
+        <translation>Die TLO von T%1 wurde aus der Tabelle der Steuerung gelesen, nicht am Werkzeugtaster gemessen: Messen Sie T%1 vor dem Auftrag.</translation>
     </message>
 </context>
 <context>
@@ -5011,6 +5027,10 @@ Trotzdem speichern?</translation>
         <source>its length %1 %2</source>
         <translation>seine Länge %1 %2</translation>
     </message>
+    <message>
+        <source>read from the controller</source>
+        <translation>aus der Steuerung gelesen</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -5317,6 +5337,14 @@ Vermessen Sie T%1 stattdessen.</translation>
     <message>
         <source>This machine has no reference tool yet: %1 becomes it (TLO 0.000), and every tool measured after it gets its length against %1&apos;s. Probe the tool you mean to keep as the reference.</source>
         <translation>Diese Maschine hat noch kein Referenzwerkzeug: %1 wird es (TLO 0,000), und jedes danach gemessene Werkzeug erhält seine Länge gegenüber %1. Messen Sie das Werkzeug, das Referenz bleiben soll.</translation>
+    </message>
+    <message>
+        <source>read from the controller</source>
+        <translation>aus der Steuerung gelesen</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured on the tool setter.</source>
+        <translation>Die TLO von T%1 wurde aus der Tabelle der Steuerung gelesen, nicht am Werkzeugtaster gemessen.</translation>
     </message>
 </context>
 <context>
@@ -5760,6 +5788,10 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     <message>
         <source>%1 has no tool rack: the rack is the Carvera&apos;s.</source>
         <translation>%1 hat kein Werkzeugmagazin: Das Magazin gehört zur Carvera.</translation>
+    </message>
+    <message>
+        <source>read from the controller</source>
+        <translation>aus der Steuerung gelesen</translation>
     </message>
 </context>
 <context>
@@ -6358,6 +6390,10 @@ Prüfen Sie das Werkzeug, dann Entsperren: Toffee setzt zuerst seine gespeichert
         <source>as the table&apos;s, measured %1</source>
         <translation>wie in der Tabelle, gemessen %1</translation>
     </message>
+    <message>
+        <source>read from the controller %1, not measured</source>
+        <translation>%1 aus der Steuerung gelesen, nicht gemessen</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolChangeWait</name>
@@ -6590,6 +6626,10 @@ Sendet: %2</translation>
     <message>
         <source>New cutter in T%1</source>
         <translation>Neuer Fräser in T%1</translation>
+    </message>
+    <message>
+        <source>Pull T%1&apos;s TLO from the controller</source>
+        <translation>TLO von T%1 aus der Steuerung holen</translation>
     </message>
 </context>
 <context>
@@ -6849,6 +6889,14 @@ Sendet: %2</translation>
     <message>
         <source>Tool life</source>
         <translation>Standzeit</translation>
+    </message>
+    <message>
+        <source>%1 (pulled)</source>
+        <translation>%1 (aus Steuerung)</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was read from the controller&apos;s own table (Pull Offsets), not measured by Toffee. A break test compares against it.</source>
+        <translation>Die TLO %2 von T%1 wurde aus der eigenen Tabelle der Steuerung gelesen (Korrekturen von der Steuerung übernehmen), nicht von Toffee gemessen. Ein Bruchtest vergleicht mit ihr.</translation>
     </message>
 </context>
 <context>

@@ -427,16 +427,8 @@
         <translation>LinuxCNC 刀具表无法标记未通过断刀检测的刀具：%1 将不再被标记。</translation>
     </message>
     <message>
-        <source>&quot;tlo_source&quot; must be &quot;probe&quot; or &quot;manual&quot;.</source>
-        <translation>&quot;tlo_source&quot; 必须是 &quot;probe&quot; 或 &quot;manual&quot;。</translation>
-    </message>
-    <message>
         <source>&quot;break_test_failed&quot; must be true or false.</source>
         <translation>&quot;break_test_failed&quot; 必须是 true 或 false。</translation>
-    </message>
-    <message>
-        <source>tlo_source &quot;%1&quot; must be probe, manual or empty.</source>
-        <translation>tlo_source &quot;%1&quot; 必须是 probe、manual 或留空。</translation>
     </message>
     <message>
         <source>break_test &quot;%1&quot; must be failed, passed or empty.</source>
@@ -878,6 +870,18 @@
         <source>The tool changer found no tool where one should be (an empty rack pocket), or was given no tool.</source>
         <translation>换刀装置在应有刀具的位置没有找到刀具（刀库刀位为空），或未指定刀具。</translation>
     </message>
+    <message>
+        <source>&quot;tlo_source&quot; must be &quot;probe&quot;, &quot;manual&quot; or &quot;pulled&quot;.</source>
+        <translation>"tlo_source" 必须是 "probe"、"manual" 或 "pulled"。</translation>
+    </message>
+    <message>
+        <source>tlo_source &quot;%1&quot; must be probe, manual, pulled or empty.</source>
+        <translation>tlo_source "%1" 必须是 probe、manual、pulled 或为空。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured: it is measured at its change.</source>
+        <translation>T%1 的 TLO 是从控制器的刀具表读取的，并非测量所得：换刀时将进行测量。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::About</name>
@@ -1029,6 +1033,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1 may be broken. The machine is stopped and lifted (not halted), and the table marks %1 until it is probed again.</source>
         <translation>%1 可能已断。机床已停止并抬起（未停机锁定），刀具表会标记 %1，直到再次测量。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was read from the controller&apos;s table (%3), not measured: if that value is not the tool&apos;s real length, the test reports the tool broken.</source>
+        <translation>T%1 的 TLO %2 是从控制器的刀具表读取的（%3），并非测量所得：若该值不是刀具的真实长度，测试会报告刀具断裂。</translation>
     </message>
 </context>
 <context>
@@ -1200,6 +1208,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>LinuxCNC fields</source>
         <translation>LinuxCNC 字段</translation>
+    </message>
+    <message>
+        <source>read from the controller</source>
+        <translation>从控制器读取</translation>
     </message>
 </context>
 <context>
@@ -3002,6 +3014,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>T%1 is past its life limit of %2 min already: its cutter has cut %3 since it went in, and the program cuts %4 more. Put in a new cutter (Edit ▸ New Cutter…, toffee-cli new-cutter %1) or raise the limit.</source>
         <translation>T%1 已超过其 %2 分钟的寿命上限：该刀具装入后已切削 %3，此程序还要切削 %4。请换上新刀具（编辑 ▸ 新刀具…，toffee-cli new-cutter %1）或提高上限。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured on the tool setter: probe it before the job.</source>
+        <translation>T%1 的 TLO 是从控制器的刀具表读取的，并未在对刀仪上测量：请在加工前测量。</translation>
     </message>
 </context>
 <context>
@@ -5011,6 +5027,10 @@ Save anyway?</source>
         <source>its length %1 %2</source>
         <translation>其长度 %1 %2</translation>
     </message>
+    <message>
+        <source>read from the controller</source>
+        <translation>从控制器读取</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>
@@ -5317,6 +5337,14 @@ Probe T%1 instead.</source>
     <message>
         <source>This machine has no reference tool yet: %1 becomes it (TLO 0.000), and every tool measured after it gets its length against %1&apos;s. Probe the tool you mean to keep as the reference.</source>
         <translation>这台机器还没有基准刀具：%1 将成为基准（TLO 0.000），之后测量的每把刀具都以 %1 为基准得到长度。请测量您打算保留为基准的刀具。</translation>
+    </message>
+    <message>
+        <source>read from the controller</source>
+        <translation>从控制器读取</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured on the tool setter.</source>
+        <translation>T%1 的 TLO 是从控制器的刀具表读取的，并未在对刀仪上测量。</translation>
     </message>
 </context>
 <context>
@@ -5760,6 +5788,10 @@ when it is fresh (no probe)</source>
     <message>
         <source>%1 has no tool rack: the rack is the Carvera&apos;s.</source>
         <translation>%1 没有刀库：刀库是 Carvera 的功能。</translation>
+    </message>
+    <message>
+        <source>read from the controller</source>
+        <translation>从控制器读取</translation>
     </message>
 </context>
 <context>
@@ -6358,6 +6390,10 @@ Check the tool, then Unlock: Toffee sets its stored TLO, %3, back first.</source
         <source>as the table&apos;s, measured %1</source>
         <translation>与表中相同，测量于 %1</translation>
     </message>
+    <message>
+        <source>read from the controller %1, not measured</source>
+        <translation>%1 从控制器读取，未测量</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ToolChangeWait</name>
@@ -6590,6 +6626,10 @@ Sends: %2</source>
     <message>
         <source>New cutter in T%1</source>
         <translation>T%1 换新刀具</translation>
+    </message>
+    <message>
+        <source>Pull T%1&apos;s TLO from the controller</source>
+        <translation>从控制器拉取 T%1 的 TLO</translation>
     </message>
 </context>
 <context>
@@ -6849,6 +6889,14 @@ Sends: %2</source>
     <message>
         <source>Tool life</source>
         <translation>刀具寿命</translation>
+    </message>
+    <message>
+        <source>%1 (pulled)</source>
+        <translation>%1（读自控制器）</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO %2 was read from the controller&apos;s own table (Pull Offsets), not measured by Toffee. A break test compares against it.</source>
+        <translation>T%1 的 TLO %2 是从控制器自身的刀具表读取的（拉取偏置），并非 Toffee 测量。断刀检测会与它比较。</translation>
     </message>
 </context>
 <context>

@@ -127,6 +127,12 @@ QString BreakTestPanel::referenceWarning() const
             "and the machine compares the tool with it.")
             .arg(millimetres(*machine), millimetres(stored->tlo))
             .arg(*tool);
+    if (stored->source == TloSource::Pulled)
+        return tr("T%1's TLO %2 was read from the controller's table (%3), not measured: if that value is not "
+                  "the tool's real length, the test reports the tool broken.")
+            .arg(*tool)
+            .arg(millimetres(stored->tlo),
+                QLocale().toString(stored->measuredAt.toLocalTime(), QLocale::ShortFormat));
     if (stored->source == TloSource::Manual)
         return tr("T%1's TLO %2 was set by hand (%3), not measured: if that value is not the tool's real "
                   "length, the test reports the tool broken and halts the machine.")

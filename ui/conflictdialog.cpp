@@ -32,6 +32,7 @@ QString tloText(const Tool &tool, Units units)
     if (!tool.measuredTlo)
         return ConflictDialog::tr("not measured");
     const QString source = tool.tloSource == TloSource::Manual ? ConflictDialog::tr("set by hand")
+        : tool.tloSource == TloSource::Pulled                  ? ConflictDialog::tr("read from the controller")
                                                                : ConflictDialog::tr("probed");
     const QString when = tool.measuredAt.isValid()
         ? QLocale().toString(tool.measuredAt.toLocalTime(), QLocale::ShortFormat)

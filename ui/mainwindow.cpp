@@ -549,7 +549,9 @@ void MainWindow::newCutter()
     if (tool->measuredTlo)
         ends << tr("its TLO %1 %2 (%3)")
                     .arg(displayNumber(*tool->measuredTlo, units), unitsSymbol(units),
-                        tool->tloSource == TloSource::Manual ? tr("set by hand") : tr("measured"));
+                        tool->tloSource == TloSource::Manual       ? tr("set by hand")
+                            : tool->tloSource == TloSource::Pulled ? tr("read from the controller")
+                                                                   : tr("measured"));
     if (tool->lengthGeometry != 0.0)
         ends << tr("its length %1 %2").arg(displayNumber(tool->lengthGeometry, units), unitsSymbol(units));
     if (tool->lengthWear != 0.0 || tool->radiusWear != 0.0)

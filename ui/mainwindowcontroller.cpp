@@ -237,7 +237,7 @@ void MainWindow::pullOffsets()
         for (const OffsetDifference &row : std::as_const(rows)) {
             // Set on the controller, not measured by Toffee: no reference, so never restored.
             if (row.changes)
-                recordings.append({ row.tool, *row.inController, TloSource::Manual, std::nullopt,
+                recordings.append({ row.tool, *row.inController, TloSource::Pulled, std::nullopt,
                     std::nullopt, now, RecordingKind::Pulled });
         }
         // All of them or none: a table half taken from the controller is neither.

@@ -205,7 +205,9 @@ void ProbePanel::restore(bool confirm)
                       "spindle, the next cut is off by the difference.")
                        .arg(number)
                        .arg(millimetres(tlo),
-                           tool->source == TloSource::Manual ? tr("set by hand") : tr("measured"),
+                           tool->source == TloSource::Manual       ? tr("set by hand")
+                               : tool->source == TloSource::Pulled ? tr("read from the controller")
+                                                                   : tr("measured"),
                            QLocale().toString(tool->measuredAt.toLocalTime(), QLocale::ShortFormat));
         if (!tool->referenceMz)
             details << tr("The table does not say which reference tool T%1's TLO was measured against: make "
@@ -218,6 +220,9 @@ void ProbePanel::restore(bool confirm)
         // What makes a stored TLO doubtful, each named (the job preparation refuses all of them).
         if (tool->source == TloSource::Manual)
             details << tr("T%1's TLO was set by hand, not measured on the tool setter.").arg(number);
+        if (tool->source == TloSource::Pulled)
+            details << tr("T%1's TLO was read from the controller's table, not measured on the tool setter.")
+                           .arg(number);
         if (tool->breakTestFailed)
             details << tr("T%1 failed its last break test.").arg(number);
         const QDateTime now = Clock::now();

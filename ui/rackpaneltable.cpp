@@ -54,6 +54,8 @@ QString RackPanel::measuredText(int tool) const
         return tr("failed break test");
     if (t->tloSource == TloSource::Manual)
         return tr("set by hand");
+    if (t->tloSource == TloSource::Pulled)
+        return tr("read from the controller");
     return t->measuredAt.isValid() ? ageText(t->measuredAt) : tr("measured");
 }
 

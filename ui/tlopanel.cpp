@@ -286,6 +286,9 @@ void TloPanel::updateTlo()
     } else if (tool->source == TloSource::Manual) {
         note = tr("set by hand %1, not measured").arg(when(tool->measuredAt));
         warn = true;
+    } else if (tool->source == TloSource::Pulled) {
+        note = tr("read from the controller %1, not measured").arg(when(tool->measuredAt));
+        warn = true;
     } else if (tool->measuredAt.isValid() && m_connectedAt.isValid() && tool->measuredAt < m_connectedAt) {
         // The machine's value is the table's, but nothing here says the machine took it from that probe.
         note = tr("as the table's, measured %1").arg(when(tool->measuredAt));

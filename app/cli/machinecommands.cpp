@@ -540,7 +540,7 @@ bool MachineRun::pushOffsets()
 }
 
 // pull-offsets: each entry of the controller's table that holds a TLO goes into the file: a new tool added,
-// a changed TLO taken as set on the controller (not measured by Toffee: TloSource::Manual, with no
+// a changed TLO taken as set on the controller (not measured by Toffee: TloSource::Pulled, with no
 // reference), with a history event. An entry of 0.000 is an empty one, left alone.
 void MachineRun::pulled(const SessionResult &r)
 {
@@ -556,7 +556,7 @@ void MachineRun::pulled(const SessionResult &r)
         unchanged += entry.action == PulledEntry::Action::Unchanged ? 1 : 0;
         empty += entry.action == PulledEntry::Action::Empty ? 1 : 0;
         if (entry.changes())
-            recordings.append({ entry.tool, entry.inController, TloSource::Manual, std::nullopt, std::nullopt,
+            recordings.append({ entry.tool, entry.inController, TloSource::Pulled, std::nullopt, std::nullopt,
                 now, RecordingKind::Pulled });
     }
     // All of them or none, in the file and in the history alike.

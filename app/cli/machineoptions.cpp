@@ -208,6 +208,8 @@ Result<void> checkRestore(const Invocation &call, MachineOptions &o)
     QStringList doubts;
     if (tool->tloSource == TloSource::Manual)
         doubts << u"it was set by hand, not measured"_s;
+    if (tool->tloSource == TloSource::Pulled)
+        doubts << u"it was read from the controller's table, not measured"_s;
     if (tool->breakTestFailed)
         doubts << u"it failed its last break test"_s;
     const QDateTime now = Clock::now();

@@ -71,6 +71,7 @@ void showRack(Invocation &call, const MachineOptions &o, const MachineConnection
         const Tool *t = o.table->find(tool);
         const auto stored = o.table->storedTlo(tool); // in millimetres, as the machine's
         const bool byHand = stored && stored->source == TloSource::Manual;
+        const bool pulled = stored && stored->source == TloSource::Pulled;
         const bool broken = t && t->breakTestFailed;
         const QDateTime at = stored ? stored->measuredAt : QDateTime();
         if (call.json) {
@@ -78,7 +79,9 @@ void showRack(Invocation &call, const MachineOptions &o, const MachineConnection
                 { u"tlo"_s, stored ? QJsonValue(stored->tlo) : QJsonValue() },
                 { u"measured_at"_s, at.isValid() ? QJsonValue(at.toString(Qt::ISODate)) : QJsonValue() },
                 { u"reference_mz"_s, number(stored ? stored->referenceMz : std::nullopt) },
-                { u"set_by_hand"_s, byHand }, { u"broken"_s, broken },
+                { u"set_by_hand"_s, byHand },
+                { u"tlo_source"_s, stored ? QJsonValue(QString(tloSourceName(stored->source))) : QJsonValue() },
+                { u"broken"_s, broken },
                 { u"in_spindle"_s, spindle == tool } });
             continue;
         }
@@ -86,7 +89,7 @@ void showRack(Invocation &call, const MachineOptions &o, const MachineConnection
                  << (stored ? u"TLO "_s + mm(stored->tlo) + u" mm, "_s
                                 + (at.isValid() ? ageText(at, now) : u"undated"_s)
                             : u"no stored TLO"_s)
-                 << (byHand ? " (set by hand)" : "") << (broken ? "  BROKEN" : "")
+                 << (byHand ? " (set by hand)" : "") << (pulled ? " (read from the controller)" : "") << (broken ? "  BROKEN" : "")
                  << (spindle == tool ? "  (in the spindle)" : "") << Qt::endl;
     }
     if (call.json)

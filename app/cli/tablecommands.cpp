@@ -49,9 +49,7 @@ QJsonObject toolJson(const Tool &tool)
             tool.measuredAt.isValid() ? QJsonValue(tool.measuredAt.toUTC().toString(Qt::ISODateWithMs))
                                       : QJsonValue() },
         { u"tlo_source"_s,
-            !tool.measuredTlo                         ? QJsonValue()
-                : tool.tloSource == TloSource::Manual ? QJsonValue(u"manual"_s)
-                                                      : QJsonValue(u"probe"_s) },
+            tool.measuredTlo ? QJsonValue(QString(tloSourceName(tool.tloSource))) : QJsonValue() },
         { u"break_test_failed"_s, tool.breakTestFailed },
         { u"reference_mz"_s, tool.referenceMz ? QJsonValue(*tool.referenceMz) : QJsonValue() },
         { u"notes"_s, tool.notes },
@@ -115,6 +113,8 @@ int showTable(Invocation &call)
         // What an operator must not miss comes after the description, where a long one cannot hide it.
         if (tool.measuredTlo && tool.tloSource == TloSource::Manual)
             call.out << "        TLO set by hand, not measured\n";
+        if (tool.measuredTlo && tool.tloSource == TloSource::Pulled)
+            call.out << "        TLO read from the controller's table, not measured\n";
         if (tool.breakTestFailed)
             call.out << "        FAILED ITS LAST BREAK TEST: check it, then probe it again\n";
         if (const QString life = ToolLife::limitText(tool); !life.isEmpty())

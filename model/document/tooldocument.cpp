@@ -169,7 +169,9 @@ Result<void> ToolDocument::recordMeasurement(
     if (auto r = next.recordMeasurement(number, tlo, at, source, referenceMz); !r)
         return r;
     pushChange(*next.find(number),
-        source == TloSource::Manual ? tr("Set T%1 TLO by hand").arg(number) : tr("Measure T%1").arg(number));
+        source == TloSource::Manual       ? tr("Set T%1 TLO by hand").arg(number)
+            : source == TloSource::Pulled ? tr("Pull T%1's TLO from the controller").arg(number)
+                                          : tr("Measure T%1").arg(number));
     return {};
 }
 

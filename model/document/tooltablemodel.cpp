@@ -78,6 +78,8 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
         QString text = tool.measuredTlo ? formatLength(*tool.measuredTlo) : tr("not measured");
         if (tool.measuredTlo && tool.tloSource == TloSource::Manual)
             text = tr("%1 (by hand)").arg(text);
+        else if (tool.measuredTlo && tool.tloSource == TloSource::Pulled)
+            text = tr("%1 (pulled)").arg(text);
         if (tool.breakTestFailed)
             text = tr("%1 — BROKEN?").arg(text);
         return text;
@@ -195,6 +197,11 @@ QString ToolTableModel::tloToolTip(const Tool &tool) const
     else if (tool.tloSource == TloSource::Manual)
         lines << tr("T%1's TLO %2 was set on the machine by hand, not measured. A break test compares "
                     "against it.")
+                     .arg(tool.number)
+                     .arg(formatLength(*tool.measuredTlo));
+    else if (tool.tloSource == TloSource::Pulled)
+        lines << tr("T%1's TLO %2 was read from the controller's own table (Pull Offsets), not measured by "
+                    "Toffee. A break test compares against it.")
                      .arg(tool.number)
                      .arg(formatLength(*tool.measuredTlo));
     else

@@ -223,10 +223,11 @@ void readMeasurement(Row &row, Tool &tool)
 // How the TLO was set, the break test's mark and the reference it was measured against.
 void readMarks(Row &row, Tool &tool)
 {
-    if (const QByteArrayView source = row.cell(TloSourceColumn); source == "manual")
-        tool.tloSource = TloSource::Manual;
-    else if (!source.isEmpty() && source != "probe" && row.problem.isEmpty())
-        row.problem = tr("tlo_source \"%1\" must be probe, manual or empty.").arg(excerpt(source));
+    const QByteArrayView source = row.cell(TloSourceColumn);
+    if (const auto known = tloSourceFromName(source))
+        tool.tloSource = *known;
+    else if (!source.isEmpty() && row.problem.isEmpty())
+        row.problem = tr("tlo_source \"%1\" must be probe, manual, pulled or empty.").arg(excerpt(source));
     if (const QByteArrayView test = row.cell(BreakTestColumn); test == "failed")
         tool.breakTestFailed = true;
     else if (!test.isEmpty() && test != "passed" && row.problem.isEmpty())
@@ -377,7 +378,7 @@ bool writeCsvTable(const ToolTable &table, const ByteSink &sink)
         appendField(out, tool.notes);
         out += ',';
         if (tool.measuredTlo)
-            out += tool.tloSource == TloSource::Manual ? "manual" : "probe";
+            out.append(tloSourceName(tool.tloSource).data(), tloSourceName(tool.tloSource).size());
         out += ',';
         if (tool.breakTestFailed)
             out += "failed";

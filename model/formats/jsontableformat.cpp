@@ -26,8 +26,10 @@ namespace {
 // as version 1, so that an older Toffee keeps reading it; one with them is version 2, which an older Toffee
 // refuses rather than silently dropping a broken tool's mark. Version 3 added the cutter ("cutter_type",
 // "overall_length") and the tool life's limits ("life_limit_minutes", "life_limit_uses"); written only when a
-// tool has one, for the same reason.
-constexpr int kJsonVersion = 3;
+// tool has one, for the same reason. Version 4 added "tlo_source": "pulled" (a TLO read from the controller's
+// table); written only when a tool has one, so that an older Toffee says it is newer rather than refusing a
+// word it does not know.
+constexpr int kJsonVersion = 4;
 const auto kFormatId = "toffee-tool-table"_L1;
 
 // What the table's own fields said so far.
@@ -228,7 +230,9 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
         return !t.cutterType.isEmpty() || t.overallLength || t.lifeLimitMinutes || t.lifeLimitUses;
     });
     out += "{\n  \"format\": \"toffee-tool-table\",\n  \"version\": ";
-    out += QByteArray::number(cutters ? kJsonVersion : marks ? 2 : 1);
+    const bool pulled = std::any_of(table.tools().cbegin(), table.tools().cend(),
+        [](const Tool &t) { return t.tloSource == TloSource::Pulled; });
+    out += QByteArray::number(pulled ? kJsonVersion : cutters ? 3 : marks ? 2 : 1);
     out += ",\n  \"units\": \"";
     out += unitsSymbol(table.units()).toLatin1();
     out += "\",\n  \"tools\": [";
@@ -253,8 +257,11 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
             appendIsoUtc(out, tool.measuredAt);
             out += '"';
         }
-        if (tool.tloSource == TloSource::Manual)
-            out += ", \"tlo_source\": \"manual\"";
+        if (tool.tloSource != TloSource::Probe) {
+            out += ", \"tlo_source\": \"";
+            out.append(tloSourceName(tool.tloSource).data(), tloSourceName(tool.tloSource).size());
+            out += '"';
+        }
         if (tool.breakTestFailed)
             out += ", \"break_test_failed\": true";
         if (tool.referenceMz)

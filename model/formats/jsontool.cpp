@@ -94,10 +94,10 @@ bool tloSource(JsonScanner &json, const Scalar &v, QLatin1StringView key, TloSou
     QString source;
     if (!text(json, v, key, source))
         return false;
-    if (source == "manual"_L1)
-        out = TloSource::Manual;
-    else if (source != "probe"_L1)
-        return json.fail(tr("\"tlo_source\" must be \"probe\" or \"manual\"."));
+    const auto known = tloSourceFromName(source.toLatin1());
+    if (!known)
+        return json.fail(tr("\"tlo_source\" must be \"probe\", \"manual\" or \"pulled\"."));
+    out = *known;
     return true;
 }
 

@@ -167,8 +167,9 @@ Result<void> JobPreparer::restoreAfterChange(int tool, const LineSink &sink)
         return same;
     // A date, not an age: the program is kept and run later.
     const QString when = facts.measuredAt.toUTC().toString(u"yyyy-MM-dd HH:mm"_s) + u" UTC"_s;
-    QString measured
-        = facts.source == TloSource::Manual ? u"set by hand %1"_s.arg(when) : u"measured %1"_s.arg(when);
+    QString measured = facts.source == TloSource::Manual ? u"set by hand %1"_s.arg(when)
+        : facts.source == TloSource::Pulled              ? u"read from the controller %1"_s.arg(when)
+                                                         : u"measured %1"_s.arg(when);
     if (facts.referenceMz)
         measured += u" against reference MCS Z %1"_s.arg(commandNumber(*facts.referenceMz));
     if (auto r = insertLine(u"M493.2 T"_s + QString::number(tool) + u' '

@@ -99,6 +99,12 @@ template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &fact
             return tr("T%1's TLO was set by hand, not measured on the tool setter: probe it before the job.")
                 .arg(n);
         });
+    } else if (tlos && facts.source == TloSource::Pulled) {
+        found(FindingKind::NotMeasured, [n] {
+            return tr("T%1's TLO was read from the controller's table, not measured on the tool setter: probe "
+                      "it before the job.")
+                .arg(n);
+        });
     } else if (Clock::isInFuture(facts.measuredAt, m_setup.now)) {
         found(FindingKind::StaleTlo, [n, &facts] {
             return tr("T%1's TLO is dated %2, in the future: a clock was wrong, and when it was measured is "

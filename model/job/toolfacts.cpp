@@ -30,6 +30,11 @@ Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &
         return Error {
             tr("T%1's TLO was set by hand, not measured: it is measured at its change.").arg(tool)
         };
+    if (facts.source == TloSource::Pulled)
+        return Error {
+            tr("T%1's TLO was read from the controller's table, not measured: it is measured at its change.")
+                .arg(tool)
+        };
     if (facts.broken)
         return Error { tr("T%1 failed its last break test: it is measured at its change.").arg(tool) };
     if (Clock::isInFuture(facts.measuredAt, now))
@@ -168,7 +173,9 @@ Result<void> addLibraryFacts(
             if (!f.inTable) {
                 f.measuredTlo = m->tlo;
                 f.measuredAt = m->at;
-                f.source = m->kind == EventKind::ManualSet ? TloSource::Manual : TloSource::Probe;
+                f.source = m->kind == EventKind::ManualSet ? TloSource::Manual
+                    : m->kind == EventKind::Import         ? TloSource::Pulled
+                                                           : TloSource::Probe;
                 f.referenceMz = m->referenceMz;
             } else if (sameTlo && !f.measuredAt.isValid()) {
                 f.measuredAt = m->at;

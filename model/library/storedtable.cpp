@@ -67,7 +67,7 @@ std::optional<Recording> recordingOf(const HistoryEvent &event)
         if (!event.tlo)
             return std::nullopt;
         r.tlo = event.tlo;
-        r.source = TloSource::Manual; // set on the controller, not measured by Toffee
+        r.source = TloSource::Pulled; // set on the controller, not measured by Toffee
         r.kind = RecordingKind::Pulled;
         return r;
     case EventKind::BreakTest:

@@ -233,7 +233,7 @@ private Q_SLOTS:
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QCOMPARE(json(run)[u"changed"_s].toArray().size(), 2); // T2 15.3 and T3 1.5; T1 is 0, an empty entry
         QCOMPARE(toolIn(pulled, 3)[u"measured_tlo"_s].toDouble(), 1.5);
-        QCOMPARE(toolIn(pulled, 3)[u"tlo_source"_s].toString(), u"manual"_s);
+        QCOMPARE(toolIn(pulled, 3)[u"tlo_source"_s].toString(), u"pulled"_s);
         QVERIFY(!toolIn(pulled, 3).contains(u"reference_mz"_s)); // not Toffee's measurement: never restored
         QCOMPARE(toolIn(pulled, 2)[u"measured_tlo"_s].toDouble(), 15.3);
         QVERIFY(toolIn(pulled, 1).isEmpty());

@@ -17,6 +17,7 @@
 #include <QStatusBar>
 #include <QTableWidget>
 
+#include "model/document/tooltablemodel.h"
 #include "model/library/library.h"
 #include "tests/support/grblhalpeer.h"
 #include "tests/support/messageboxes.h"
@@ -334,7 +335,17 @@ private Q_SLOTS:
         QVERIFY2(pullRows.contains(u"T2|15.300|15.300|unchanged"_s), qPrintable(pullRows.join(u'\n')));
         QVERIFY2(pullRows.contains(u"T1|0.000|0.000|unchanged"_s), qPrintable(pullRows.join(u'\n')));
         QCOMPARE(*s.table().find(5)->measuredTlo, 2.5);
-        QCOMPARE(s.table().find(5)->tloSource, TloSource::Manual);
+        QCOMPARE(s.table().find(5)->tloSource, TloSource::Pulled);
+        // Said as read from the controller, not as set by hand: in the table and in its tooltip.
+        ToolTableModel *model = s.window.document()->model();
+        QModelIndex t5;
+        for (int row = 0; row < model->rowCount(); ++row) {
+            if (model->index(row, ToolTableModel::NumberColumn).data().toInt() == 5)
+                t5 = model->index(row, ToolTableModel::MeasuredTloColumn);
+        }
+        QCOMPARE(t5.data().toString(), u"2.500 (pulled)"_s);
+        QVERIFY2(t5.data(Qt::ToolTipRole).toString().contains(u"read from the controller's own table"_s),
+            qPrintable(t5.data(Qt::ToolTipRole).toString()));
         QVERIFY(!s.table().find(5)->referenceMz);
         // One undo takes the pull back.
         s.window.document()->undoStack()->undo();

@@ -152,6 +152,27 @@ private Q_SLOTS:
         QVERIFY(csv.contains(",manual,failed,-72.3,mm,"));
     }
 
+    // A TLO read from the controller's table (Pull Offsets) stays that in both rich formats: not measured, not
+    // set by hand. JSON says it in version 4, which an older Toffee calls newer instead of misreading it.
+    void aPulledTloStaysPulled()
+    {
+        ToolTable table = Test::awkwardTable();
+        QVERIFY(table.recordMeasurement(1, 2.5, QDateTime(QDate(2026, 11, 20), QTime(8, 0), Qt::UTC),
+                         TloSource::Pulled)
+                    .ok());
+        for (TableFormat format : { TableFormat::Json, TableFormat::Csv }) {
+            const QByteArray written = writeTable(table, format);
+            QVERIFY(written.contains(format == TableFormat::Json ? "\"tlo_source\": \"pulled\"" : ",pulled,"));
+            const auto back = readTable(written, format);
+            QVERIFY2(back.ok(), qPrintable(back.ok() ? QString() : back.error().text()));
+            QCOMPARE(back.value().find(1)->tloSource, TloSource::Pulled);
+            QCOMPARE(*back.value().find(1)->measuredTlo, 2.5);
+            QCOMPARE(back.value().find(2)->tloSource, TloSource::Manual);
+        }
+        QVERIFY(writeTable(table, TableFormat::Json).contains("\"version\": 4"));
+        QVERIFY(writeTable(Test::awkwardTable(), TableFormat::Json).contains("\"version\": 3"));
+    }
+
     void badMarksAreRefusedWithTheirLine()
     {
         const auto json = readTable(
