@@ -114,6 +114,8 @@ public:
     bool selectTool(int tool, Done done);
     // With `storedTlo`, a manual change takes it instead of probing (MachineController::changeTool).
     bool changeTool(int tool, Done done, std::optional<double> storedTlo = std::nullopt);
+    // Moves the machine by `stepMm` (MachineController::jog): the status says where it stands after.
+    bool jog(const std::array<double, 3> &stepMm, double feed, Done done);
     bool probe(Done done);
     // `storedTlo`: the table's TLO for the tool, which the firmware is to compare with (set first when the
     // machine has another in force).

@@ -54,6 +54,13 @@ bool MachineConnection::changeTool(int tool, Done done, std::optional<double> st
         std::move(done));
 }
 
+bool MachineConnection::jog(const std::array<double, 3> &stepMm, double feed, Done done)
+{
+    return perform(
+        tr("Jogging…"), false,
+        [stepMm, feed](MachineController *s, Done d) { s->jog(stepMm, feed, std::move(d)); }, std::move(done));
+}
+
 void MachineConnection::resumeToolChange()
 {
     if (m_session)

@@ -872,11 +872,11 @@
     </message>
     <message>
         <source>&quot;tlo_source&quot; must be &quot;probe&quot;, &quot;manual&quot; or &quot;pulled&quot;.</source>
-        <translation>"tlo_source" muss "probe", "manual" oder "pulled" sein.</translation>
+        <translation>&quot;tlo_source&quot; muss &quot;probe&quot;, &quot;manual&quot; oder &quot;pulled&quot; sein.</translation>
     </message>
     <message>
         <source>tlo_source &quot;%1&quot; must be probe, manual, pulled or empty.</source>
-        <translation>tlo_source "%1" muss probe, manual, pulled oder leer sein.</translation>
+        <translation>tlo_source &quot;%1&quot; muss probe, manual, pulled oder leer sein.</translation>
     </message>
     <message>
         <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured: it is measured at its change.</source>
@@ -2286,6 +2286,22 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Nothing was written to grblHAL or recorded.</source>
         <translation>Nichts wurde in grblHAL geschrieben oder aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>A jog moves at most %1 mm along each axis, at 1 to %2 mm/min. Nothing was sent.</source>
+        <translation>Ein Tippbetrieb bewegt höchstens %1 mm je Achse, mit 1 bis %2 mm/min. Es wurde nichts gesendet.</translation>
+    </message>
+    <message>
+        <source>A jog of 0 mm moves nothing. Nothing was sent.</source>
+        <translation>Ein Tippbetrieb um 0 mm bewegt nichts. Es wurde nichts gesendet.</translation>
+    </message>
+    <message>
+        <source>grblHAL stopped reporting its state while it jogged.</source>
+        <translation>grblHAL hat während des Tippbetriebs aufgehört, seinen Zustand zu melden.</translation>
+    </message>
+    <message>
+        <source>grblHAL went into alarm while it jogged: check the machine, then Unlock.</source>
+        <translation>grblHAL ging während des Tippbetriebs in Alarm: Prüfen Sie die Maschine, dann Entsperren.</translation>
     </message>
 </context>
 <context>
@@ -3872,6 +3888,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>It said: &quot;%1&quot;. </source>
         <translation>Sie meldete: „%1“. </translation>
     </message>
+    <message>
+        <source>Jogging…</source>
+        <translation>Tippbetrieb …</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineController</name>
@@ -3922,6 +3942,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>The machine&apos;s reading makes T%1&apos;s TLO %2 mm, beyond any tool (%3 mm at most): nothing was recorded. Check the tool setter and the machine&apos;s reference, then probe again.</source>
         <translation>Nach dem Messwert der Maschine wäre die Längenkorrektur von T%1 %2 mm, jenseits jedes Werkzeugs (höchstens %3 mm): Nichts wurde aufgezeichnet. Prüfen Sie den Werkzeugtaster und die Referenz der Maschine und messen Sie dann erneut.</translation>
+    </message>
+    <message>
+        <source>%1 keeps its tool setter itself: Toffee does not jog it. Use the machine&apos;s own controls.</source>
+        <translation>%1 verwaltet seinen Werkzeugtaster selbst: Toffee verfährt sie nicht im Tippbetrieb. Verwenden Sie die Bedienelemente der Maschine.</translation>
     </message>
 </context>
 <context>
@@ -6743,6 +6767,90 @@ Sendet: %2</translation>
     <message>
         <source>&amp;Back-off between touches:</source>
         <translation>&amp;Rückzug zwischen den Berührungen:</translation>
+    </message>
+    <message>
+        <source>From the machine</source>
+        <translation>Von der Maschine</translation>
+    </message>
+    <message>
+        <source>Jog the spindle over the setter&apos;s centre, then take its X and Y from where the machine stands.</source>
+        <translation>Fahren Sie die Spindel im Tippbetrieb über die Mitte des Tasters und übernehmen Sie dann X und Y von der Maschinenposition.</translation>
+    </message>
+    <message>
+        <source>Where the machine stands: waiting for its report…</source>
+        <translation>Position der Maschine: warte auf ihre Meldung …</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>Jog s&amp;tep:</source>
+        <translation>Sc&amp;hrittweite:</translation>
+    </message>
+    <message>
+        <source>Y+</source>
+        <translation>Y+</translation>
+    </message>
+    <message>
+        <source>X−</source>
+        <translation>X−</translation>
+    </message>
+    <message>
+        <source>X+</source>
+        <translation>X+</translation>
+    </message>
+    <message>
+        <source>Y−</source>
+        <translation>Y−</translation>
+    </message>
+    <message>
+        <source>Z+</source>
+        <translation>Z+</translation>
+    </message>
+    <message>
+        <source>Z−</source>
+        <translation>Z−</translation>
+    </message>
+    <message>
+        <source>Moves the machine by the jog step along %1.</source>
+        <translation>Bewegt die Maschine um die Schrittweite in %1.</translation>
+    </message>
+    <message>
+        <source>Sto&amp;p</source>
+        <translation>Sto&amp;pp</translation>
+    </message>
+    <message>
+        <source>Stops the machine at once (it halts; Unlock follows).</source>
+        <translation>Hält die Maschine sofort an (sie stoppt; danach Entsperren).</translation>
+    </message>
+    <message>
+        <source>&amp;Use X and Y Where It Stands</source>
+        <translation>X und Y der Maschinenposition &amp;übernehmen</translation>
+    </message>
+    <message>
+        <source>Where the machine stands: X %1, Y %2, Z %3 mm (machine coordinates).</source>
+        <translation>Position der Maschine: X %1, Y %2, Z %3 mm (Maschinenkoordinaten).</translation>
+    </message>
+    <message>
+        <source>Jog the machine?</source>
+        <translation>Maschine im Tippbetrieb verfahren?</translation>
+    </message>
+    <message>
+        <source>The machine moves each time you press a jog button.</source>
+        <translation>Die Maschine bewegt sich bei jedem Druck auf eine Tipptaste.</translation>
+    </message>
+    <message>
+        <source>Each press moves it by the jog step, at %1 mm/min, and Stop halts it. Keep hands clear.</source>
+        <translation>Jeder Druck bewegt sie um die Schrittweite mit %1 mm/min; Stopp hält sie an. Hände weg.</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <source>The setter&apos;s X and Y are where the machine stands: X %1, Y %2 mm.</source>
+        <translation>X und Y des Tasters sind die Maschinenposition: X %1, Y %2 mm.</translation>
     </message>
 </context>
 <context>

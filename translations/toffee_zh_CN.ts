@@ -872,11 +872,11 @@
     </message>
     <message>
         <source>&quot;tlo_source&quot; must be &quot;probe&quot;, &quot;manual&quot; or &quot;pulled&quot;.</source>
-        <translation>"tlo_source" 必须是 "probe"、"manual" 或 "pulled"。</translation>
+        <translation>&quot;tlo_source&quot; 必须是 &quot;probe&quot;、&quot;manual&quot; 或 &quot;pulled&quot;。</translation>
     </message>
     <message>
         <source>tlo_source &quot;%1&quot; must be probe, manual, pulled or empty.</source>
-        <translation>tlo_source "%1" 必须是 probe、manual、pulled 或为空。</translation>
+        <translation>tlo_source &quot;%1&quot; 必须是 probe、manual、pulled 或为空。</translation>
     </message>
     <message>
         <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured: it is measured at its change.</source>
@@ -2286,6 +2286,22 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Nothing was written to grblHAL or recorded.</source>
         <translation>未写入 grblHAL，也未记录任何内容。</translation>
+    </message>
+    <message>
+        <source>A jog moves at most %1 mm along each axis, at 1 to %2 mm/min. Nothing was sent.</source>
+        <translation>点动每轴最多移动 %1 mm，速度 1 至 %2 mm/min。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>A jog of 0 mm moves nothing. Nothing was sent.</source>
+        <translation>0 mm 的点动不会移动。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>grblHAL stopped reporting its state while it jogged.</source>
+        <translation>grblHAL 在点动时停止报告其状态。</translation>
+    </message>
+    <message>
+        <source>grblHAL went into alarm while it jogged: check the machine, then Unlock.</source>
+        <translation>grblHAL 在点动时进入报警：请检查机器，然后解锁。</translation>
     </message>
 </context>
 <context>
@@ -3872,6 +3888,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>It said: &quot;%1&quot;. </source>
         <translation>机器报告：“%1”。</translation>
     </message>
+    <message>
+        <source>Jogging…</source>
+        <translation>点动中…</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineController</name>
@@ -3922,6 +3942,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>The machine&apos;s reading makes T%1&apos;s TLO %2 mm, beyond any tool (%3 mm at most): nothing was recorded. Check the tool setter and the machine&apos;s reference, then probe again.</source>
         <translation>按机器的读数，T%1 的刀长补偿为 %2 mm，超出任何刀具（最多 %3 mm）：未记录任何内容。请检查对刀仪和机器的参考，然后重新测量。</translation>
+    </message>
+    <message>
+        <source>%1 keeps its tool setter itself: Toffee does not jog it. Use the machine&apos;s own controls.</source>
+        <translation>%1 自行管理对刀仪：Toffee 不对其点动。请使用机器自身的控制。</translation>
     </message>
 </context>
 <context>
@@ -6743,6 +6767,90 @@ Sends: %2</source>
     <message>
         <source>&amp;Back-off between touches:</source>
         <translation>两次触碰之间的回退(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>From the machine</source>
+        <translation>来自机器</translation>
+    </message>
+    <message>
+        <source>Jog the spindle over the setter&apos;s centre, then take its X and Y from where the machine stands.</source>
+        <translation>将主轴点动到对刀仪中心上方，然后从机器所在位置取 X 和 Y。</translation>
+    </message>
+    <message>
+        <source>Where the machine stands: waiting for its report…</source>
+        <translation>机器位置：等待其报告…</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>Jog s&amp;tep:</source>
+        <translation>点动步距(&amp;T)：</translation>
+    </message>
+    <message>
+        <source>Y+</source>
+        <translation>Y+</translation>
+    </message>
+    <message>
+        <source>X−</source>
+        <translation>X−</translation>
+    </message>
+    <message>
+        <source>X+</source>
+        <translation>X+</translation>
+    </message>
+    <message>
+        <source>Y−</source>
+        <translation>Y−</translation>
+    </message>
+    <message>
+        <source>Z+</source>
+        <translation>Z+</translation>
+    </message>
+    <message>
+        <source>Z−</source>
+        <translation>Z−</translation>
+    </message>
+    <message>
+        <source>Moves the machine by the jog step along %1.</source>
+        <translation>沿 %1 按点动步距移动机器。</translation>
+    </message>
+    <message>
+        <source>Sto&amp;p</source>
+        <translation>停止(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Stops the machine at once (it halts; Unlock follows).</source>
+        <translation>立即停止机器（机器停机；随后需解锁）。</translation>
+    </message>
+    <message>
+        <source>&amp;Use X and Y Where It Stands</source>
+        <translation>使用机器当前位置的 X 和 Y(&amp;U)</translation>
+    </message>
+    <message>
+        <source>Where the machine stands: X %1, Y %2, Z %3 mm (machine coordinates).</source>
+        <translation>机器位置：X %1，Y %2，Z %3 mm（机器坐标）。</translation>
+    </message>
+    <message>
+        <source>Jog the machine?</source>
+        <translation>点动机器？</translation>
+    </message>
+    <message>
+        <source>The machine moves each time you press a jog button.</source>
+        <translation>每按一次点动按钮，机器都会移动。</translation>
+    </message>
+    <message>
+        <source>Each press moves it by the jog step, at %1 mm/min, and Stop halts it. Keep hands clear.</source>
+        <translation>每按一次移动一个步距，速度 %1 mm/min，停止可使其停机。请勿靠近。</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>点动</translation>
+    </message>
+    <message>
+        <source>The setter&apos;s X and Y are where the machine stands: X %1, Y %2 mm.</source>
+        <translation>对刀仪的 X 和 Y 为机器所在位置：X %1，Y %2 mm。</translation>
     </message>
 </context>
 <context>

@@ -138,7 +138,7 @@ std::optional<ToolSetter> MainWindow::machineToolSetter() const
 
 void MainWindow::editToolSetter()
 {
-    ToolSetterDialog dialog(machineName(), machineToolSetter().value_or(ToolSetter {}), this);
+    ToolSetterDialog dialog(machineName(), machineToolSetter().value_or(ToolSetter {}), m_connection, this);
     if (dialog.exec() != QDialog::Accepted)
         return;
     const ToolSetter setter = dialog.setter();

@@ -1,14 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/toolsetterdialog.h"
 
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
 #include <QLabel>
+#include <QPointer>
 #include <QPushButton>
 #include <QVBoxLayout>
 
 #include "model/limits.h"
+#include "model/numberformat.h"
+#include "serial/machineconnection.h"
+#include "ui/askfirst.h"
 
 using namespace Qt::StringLiterals;
 
@@ -29,7 +36,8 @@ QDoubleSpinBox *spin(QWidget *parent, const QString &name, double low, double hi
 
 } // namespace
 
-ToolSetterDialog::ToolSetterDialog(const QString &machine, const ToolSetter &setter, QWidget *parent)
+ToolSetterDialog::ToolSetterDialog(
+    const QString &machine, const ToolSetter &setter, MachineConnection *connection, QWidget *parent)
     : QDialog(parent)
     , m_x(spin(this, u"setterX"_s, -Limits::kMaxMachineOffsetMm, Limits::kMaxMachineOffsetMm, tr(" mm")))
     , m_y(spin(this, u"setterY"_s, -Limits::kMaxMachineOffsetMm, Limits::kMaxMachineOffsetMm, tr(" mm")))
@@ -71,6 +79,10 @@ ToolSetterDialog::ToolSetterDialog(const QString &machine, const ToolSetter &set
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addLayout(form);
+    // Only a controller whose setter cycle is Toffee's is jogged from here; the others keep their own.
+    if (connection && connection->state() == MachineConnection::State::Connected && connection->session()
+        && connection->session()->needsToolSetter())
+        layout->addWidget(machineBox(connection));
     layout->addWidget(m_problem);
     layout->addWidget(m_buttons);
     connect(m_buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -91,6 +103,128 @@ ToolSetter ToolSetterDialog::setter() const
     s.latchFeed = m_latch->value();
     s.backoff = m_backoff->value();
     return s;
+}
+
+QWidget *ToolSetterDialog::machineBox(MachineConnection *connection)
+{
+    m_connection = connection;
+    auto *box = new QGroupBox(tr("From the machine"), this);
+    box->setObjectName(u"setterMachineBox"_s);
+    auto *help
+        = new QLabel(tr("Jog the spindle over the setter's centre, then take its X and Y from where the "
+                        "machine stands."),
+            box);
+    help->setWordWrap(true);
+    m_position = new QLabel(tr("Where the machine stands: waiting for its report…"), box);
+    m_position->setObjectName(u"setterMachinePosition"_s);
+    m_step = new QComboBox(box);
+    m_step->setObjectName(u"setterJogStep"_s);
+    for (double step : { 0.1, 1.0, 10.0 })
+        m_step->addItem(tr("%1 mm").arg(formatNumber(step, NumberFormat::upTo(3).inLocale())), step);
+    m_step->setCurrentIndex(1);
+    auto *stepLabel = new QLabel(tr("Jog s&tep:"), box);
+    stepLabel->setBuddy(m_step);
+    auto *pad = new QGridLayout;
+    struct Jog
+    {
+        int axis;
+        double direction;
+        QString text;
+        QString name;
+        int row;
+        int column;
+    };
+    const Jog jogs[] = { { 1, 1.0, tr("Y+"), u"setterJogYPlus"_s, 0, 1 },
+        { 0, -1.0, tr("X−"), u"setterJogXMinus"_s, 1, 0 }, { 0, 1.0, tr("X+"), u"setterJogXPlus"_s, 1, 2 },
+        { 1, -1.0, tr("Y−"), u"setterJogYMinus"_s, 2, 1 }, { 2, 1.0, tr("Z+"), u"setterJogZPlus"_s, 0, 3 },
+        { 2, -1.0, tr("Z−"), u"setterJogZMinus"_s, 2, 3 } };
+    for (const Jog &j : jogs) {
+        auto *button = new QPushButton(j.text, box);
+        button->setObjectName(j.name);
+        button->setAutoDefault(false);
+        button->setToolTip(tr("Moves the machine by the jog step along %1.").arg(j.text));
+        connect(button, &QPushButton::clicked, this, [this, j] { jog(j.axis, j.direction); });
+        pad->addWidget(button, j.row, j.column);
+        m_jogButtons << button;
+    }
+    m_stop = new QPushButton(tr("Sto&p"), box);
+    m_stop->setObjectName(u"setterJogStop"_s);
+    m_stop->setAutoDefault(false);
+    m_stop->setToolTip(tr("Stops the machine at once (it halts; Unlock follows)."));
+    connect(m_stop, &QPushButton::clicked, m_connection, &MachineConnection::stop);
+    pad->addWidget(m_stop, 1, 3);
+    m_useHere = new QPushButton(tr("&Use X and Y Where It Stands"), box);
+    m_useHere->setObjectName(u"setterUseHere"_s);
+    m_useHere->setAutoDefault(false);
+    connect(m_useHere, &QPushButton::clicked, this, &ToolSetterDialog::useWhereItStands);
+    m_jogResult = new QLabel(box);
+    m_jogResult->setObjectName(u"setterJogResult"_s);
+    m_jogResult->setWordWrap(true);
+    auto *steps = new QHBoxLayout;
+    steps->addWidget(stepLabel);
+    steps->addWidget(m_step);
+    steps->addStretch();
+    auto *layout = new QVBoxLayout(box);
+    layout->addWidget(help);
+    layout->addWidget(m_position);
+    layout->addLayout(steps);
+    layout->addLayout(pad);
+    layout->addWidget(m_useHere);
+    layout->addWidget(m_jogResult);
+    connect(m_connection, &MachineConnection::statusChanged, this, [this](const MachineStatus &status) {
+        m_here = status.mpos;
+        m_position->setText(tr("Where the machine stands: X %1, Y %2, Z %3 mm (machine coordinates).")
+                                .arg(millimetres(status.mpos[0], false), millimetres(status.mpos[1], false),
+                                    millimetres(status.mpos[2], false)));
+        updateMachine();
+    });
+    connect(m_connection, &MachineConnection::busyChanged, this, &ToolSetterDialog::updateMachine);
+    connect(m_connection, &MachineConnection::stateChanged, this, &ToolSetterDialog::updateMachine);
+    updateMachine();
+    return box;
+}
+
+void ToolSetterDialog::updateMachine()
+{
+    const bool ready = m_connection->canOperate();
+    for (QPushButton *b : std::as_const(m_jogButtons))
+        b->setEnabled(ready);
+    m_stop->setEnabled(m_connection->isBusy());
+    m_useHere->setEnabled(ready && m_here.has_value());
+}
+
+void ToolSetterDialog::jog(int axis, double direction)
+{
+    if (!m_connection->canOperate())
+        return;
+    if (!m_jogAsked) {
+        m_jogAsked = askFirst(this,
+            { QMessageBox::Question, tr("Jog the machine?"),
+                tr("The machine moves each time you press a jog button."),
+                tr("Each press moves it by the jog step, at %1 mm/min, and Stop halts it. Keep hands clear.")
+                    .arg(formatNumber(kJogFeed, NumberFormat::upTo(0).inLocale())),
+                tr("Jog"), u"setterJogYesButton"_s, u"setterJogQuestion"_s });
+        if (!m_jogAsked)
+            return;
+    }
+    std::array<double, 3> step { 0, 0, 0 };
+    step[std::size_t(axis)] = direction * m_step->currentData().toDouble();
+    m_jogResult->clear();
+    QPointer<ToolSetterDialog> self(this);
+    m_connection->jog(step, kJogFeed, [self](const SessionResult &r) {
+        if (self && !r.ok())
+            self->m_jogResult->setText(r.message);
+    });
+}
+
+void ToolSetterDialog::useWhereItStands()
+{
+    if (!m_here)
+        return;
+    m_x->setValue((*m_here)[0]);
+    m_y->setValue((*m_here)[1]);
+    m_jogResult->setText(tr("The setter's X and Y are where the machine stands: X %1, Y %2 mm.")
+                             .arg(millimetres((*m_here)[0], false), millimetres((*m_here)[1], false)));
 }
 
 void ToolSetterDialog::check()

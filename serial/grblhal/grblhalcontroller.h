@@ -59,6 +59,7 @@ public:
     [[nodiscard]] QString restoreCommand(int tool, double tlo) const override;
     [[nodiscard]] bool needsToolSetter() const override { return true; }
     void setToolSetter(const ToolSetter &setter) override { m_setter = setter; }
+    void jog(const std::array<double, 3> &stepMm, double feed, Done done) override;
     [[nodiscard]] std::optional<ToolSetter> toolSetter() const override { return m_setter; }
     [[nodiscard]] bool keepsReference() const override { return false; }
     void adoptReference(std::optional<double> referenceMz) override { m_reference = referenceMz; }

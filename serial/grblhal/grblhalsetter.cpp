@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include <QStringList>
+#include <QTimer>
 
 #include "model/numberformat.h"
 
@@ -116,6 +117,53 @@ void GrblHalController::measure(Done done, std::function<void(double)> next)
                 });
             });
         });
+    });
+}
+
+// A jog ($J=, relative, in millimetres whatever G20/G21 is in force): grblHAL answers "ok" as it starts, so
+// its state is read until it stops. A jog beyond the soft limits is refused by grblHAL (error:15), unmoved.
+void GrblHalController::jog(const std::array<double, 3> &stepMm, double feed, Done done)
+{
+    const bool fits = std::all_of(stepMm.cbegin(), stepMm.cend(),
+        [](double step) { return std::isfinite(step) && std::fabs(step) <= kMaxJogStepMm; });
+    if (!fits || !std::isfinite(feed) || feed < 1.0 || feed > ToolSetter::kMaxFeed) {
+        refuse(done,
+            tr("A jog moves at most %1 mm along each axis, at 1 to %2 mm/min. Nothing was sent.")
+                .arg(mm(kMaxJogStepMm), mm(ToolSetter::kMaxFeed)));
+        return;
+    }
+    QByteArray command = "$J=G91 G21";
+    const char axes[] = { 'X', 'Y', 'Z' };
+    for (std::size_t i = 0; i < stepMm.size(); ++i) {
+        if (stepMm[i] != 0.0)
+            command += ' ' + QByteArray(1, axes[i]) + number(stepMm[i]);
+    }
+    if (command.size() == 10) {
+        refuse(done, tr("A jog of 0 mm moves nothing. Nothing was sent."));
+        return;
+    }
+    command += " F" + number(feed);
+    run(command, MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
+        auto poll = std::make_shared<std::function<void()>>();
+        // Each poll holds the function; it holds itself only weakly, so it goes with the last poll.
+        *poll = [this, done, self = std::weak_ptr(poll)] {
+            awaitStatus(2000, [this, done, again = self.lock()](std::optional<MachineStatus> s) {
+                if (!s) {
+                    done(SessionResult::failed(SessionResult::Outcome::LinkFailure,
+                        tr("grblHAL stopped reporting its state while it jogged.")));
+                } else if (s->state == u"Jog" || s->state == u"Run") {
+                    QTimer::singleShot(MachineLink::kPollIntervalMs, this, [again] { (*again)(); });
+                } else if (s->isAlarm()) {
+                    done(SessionResult::failed(SessionResult::Outcome::MachineError,
+                        tr("grblHAL went into alarm while it jogged: check the machine, then Unlock.")));
+                } else {
+                    SessionResult result;
+                    result.status = *s;
+                    done(result);
+                }
+            });
+        };
+        (*poll)();
     });
 }
 

@@ -103,6 +103,15 @@ MachineController::Done MachineController::recordingVerdict(Done done)
     };
 }
 
+void MachineController::jog(const std::array<double, 3> &stepMm, double feed, Done done)
+{
+    Q_UNUSED(stepMm)
+    Q_UNUSED(feed)
+    refuse(std::move(done),
+        tr("%1 keeps its tool setter itself: Toffee does not jog it. Use the machine's own controls.")
+            .arg(firmware().description()));
+}
+
 void MachineController::awaitStatus(int timeoutMs, std::function<void(std::optional<MachineStatus>)> next)
 {
     auto *timer = new QTimer(this);

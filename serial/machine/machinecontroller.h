@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <array>
 #include <functional>
 #include <optional>
 
@@ -133,6 +134,11 @@ public:
     [[nodiscard]] virtual bool needsToolSetter() const { return false; }
     virtual void setToolSetter(const ToolSetter &setter) { Q_UNUSED(setter) }
     [[nodiscard]] virtual std::optional<ToolSetter> toolSetter() const { return std::nullopt; }
+    // Moves the machine by `stepMm` (X, Y, Z, relative, at most kMaxJogStepMm each) at `feed` mm/min, to
+    // find where the setter is; done once it has stopped, with its status. Only a controller whose setter is
+    // Toffee's jogs; the others refuse.
+    static constexpr double kMaxJogStepMm = 50.0;
+    virtual void jog(const std::array<double, 3> &stepMm, double feed, Done done);
     [[nodiscard]] virtual bool keepsReference() const { return true; }
     virtual void adoptReference(std::optional<double> referenceMz) { Q_UNUSED(referenceMz) }
     // The reference Toffee keeps for such a controller, once measured or adopted; none for one that keeps its

@@ -197,6 +197,40 @@ private Q_SLOTS:
         QCOMPARE(machine.tlo, 0.0);
     }
 
+    // A jog is relative and in millimetres whatever is in force ($J=G91 G21), each axis moved only when
+    // asked; a step beyond the limit, a feed outside the setter's, or no step at all is refused with nothing
+    // sent.
+    void aJogIsBoundedAndSaysWhatItSent()
+    {
+        TablelessGrblHal machine;
+        TcpTransport transport(TcpTransport::Address { u"127.0.0.1"_s, machine.port() });
+        transport.setProtocol(StreamTransport::Protocol::Text);
+        MachineLink link(&transport);
+        GrblHalController controller(&link);
+        QVERIFY(await([&](auto done) { controller.connectToMachine(done); }).ok());
+        const qsizetype before = machine.received.size();
+        const SessionResult moved = await([&](auto done) {
+            controller.jog({ 10.0, -0.1, 0.0 }, 1000.0, done);
+        });
+        QVERIFY2(moved.ok(), qPrintable(moved.message));
+        QVERIFY(moved.status.has_value());
+        QVERIFY2(machine.received.contains("$J=G91 G21 X10 Y-0.1 F1000"),
+            machine.received.join(" | ").constData());
+        for (const auto &[step, feed] : { std::pair { std::array { 50.5, 0.0, 0.0 }, 1000.0 },
+                 std::pair { std::array { 0.0, 0.0, 1.0 }, 0.0 },
+                 std::pair { std::array { 0.0, 0.0, qQNaN() }, 1000.0 },
+                 std::pair { std::array { 0.0, 0.0, 0.0 }, 1000.0 } }) {
+            const qsizetype sent = machine.received.size();
+            const SessionResult refused = await([&](auto done) { controller.jog(step, feed, done); });
+            QCOMPARE(refused.outcome, SessionResult::Outcome::Refused);
+            QVERIFY(!refused.message.isEmpty());
+            QCOMPARE(machine.received.size(), sent);
+        }
+        QCOMPARE(std::count_if(machine.received.cbegin() + before, machine.received.cend(),
+                     [](const QByteArray &l) { return l.startsWith("$J="); }),
+            1);
+    }
+
     // A table of 300 tools is 300 lines of $#, more than a reply usually keeps: read whole, not "malformed".
     void aLargeToolTableIsReadWhole()
     {

@@ -261,11 +261,33 @@ private Q_SLOTS:
             QVERIFY(d->findChild<QLabel *>(u"setterProblem"_s)->text().contains(u"latch feed"_s));
             d->findChild<QDoubleSpinBox *>(u"setterLatchFeed"_s)->setValue(300.0);
             QVERIFY(ok->isEnabled());
+            // Where the setter is, from where the machine stands: jogged there (asked once), then taken.
+            auto *position = d->findChild<QLabel *>(u"setterMachinePosition"_s);
+            QVERIFY(position);
+            QTRY_VERIFY2(position->text().contains(u"X 0.000, Y 0.000"_s), qPrintable(position->text()));
+            d->findChild<QComboBox *>(u"setterJogStep"_s)->setCurrentIndex(2); // 10 mm
+            QString asked;
+            answerNextBox(QMessageBox::NoButton, &asked, u"setterJogYesButton"_s);
+            d->findChild<QPushButton *>(u"setterJogXPlus"_s)->click();
+            QVERIFY2(
+                asked.contains(u"The machine moves each time you press a jog button"_s), qPrintable(asked));
+            QTRY_VERIFY_WITH_TIMEOUT(position->text().contains(u"X 10.000, Y 0.000"_s), 10000);
+            d->findChild<QComboBox *>(u"setterJogStep"_s)->setCurrentIndex(1); // 1 mm, not asked again
+            QTRY_VERIFY(d->findChild<QPushButton *>(u"setterJogYMinus"_s)->isEnabled());
+            d->findChild<QPushButton *>(u"setterJogYMinus"_s)->click();
+            QTRY_VERIFY_WITH_TIMEOUT(position->text().contains(u"X 10.000, Y -1.000"_s), 10000);
+            QTRY_VERIFY(d->findChild<QPushButton *>(u"setterUseHere"_s)->isEnabled());
+            screenshot(*d, u"grblhal-tool-setter.png"_s);
+            d->findChild<QPushButton *>(u"setterUseHere"_s)->click();
+            QCOMPARE(d->findChild<QDoubleSpinBox *>(u"setterX"_s)->value(), 10.0);
+            QCOMPARE(d->findChild<QDoubleSpinBox *>(u"setterY"_s)->value(), -1.0);
             ok->click();
         });
         s.trigger(u"actionToolSetter"_s);
         QTRY_VERIFY(s.window.connection()->session()->toolSetter().has_value());
         QCOMPARE(s.window.connection()->session()->toolSetter()->zMin, -120.0);
+        QCOMPARE(s.window.connection()->session()->toolSetter()->x, 10.0);
+        QCOMPARE(s.window.connection()->session()->toolSetter()->y, -1.0);
         {
             auto library = Library::open({ s.libraryPath() });
             // Kept under the machine's name: nobody named it, so it is called after its kind.
