@@ -13,7 +13,7 @@ PRESET    := default
 DEB_PACKAGES := cmake ninja-build g++ make \
 	qt6-base-dev qt6-base-dev-tools qt6-qpa-plugins qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev \
 	qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools \
-	libqt6svg6 libqt6sql6-sqlite libgl-dev fonts-dejavu-core xvfb xauth qt6-translations-l10n \
+	libqt6svg6 libqt6sql6-sqlite libgl-dev fonts-dejavu-core fonts-wqy-microhei xvfb xauth qt6-translations-l10n \
 	pkg-config libzip-dev libxcb1-dev \
 	postgresql libqt6sql6-psql \
 	desktop-file-utils appstream lintian \
