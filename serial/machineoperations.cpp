@@ -3,7 +3,6 @@
 // at a time, none while halted unless it clears the halt), run by the controller that took the link.
 #include "serial/machineconnection.h"
 
-#include "serial/carvera/carverareplies.h"
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
 
@@ -58,7 +57,8 @@ bool MachineConnection::jog(const std::array<double, 3> &stepMm, double feed, Do
 {
     return perform(
         tr("Jogging…"), false,
-        [stepMm, feed](MachineController *s, Done d) { s->jog(stepMm, feed, std::move(d)); }, std::move(done));
+        [stepMm, feed](MachineController *s, Done d) { s->jog(stepMm, feed, std::move(d)); },
+        std::move(done));
 }
 
 void MachineConnection::resumeToolChange()
@@ -131,11 +131,8 @@ bool MachineConnection::sendLine(
         [this, done](const CommandReply &reply) {
             // Offsets the reply reports (an M493.3 or M493.4 typed by hand): the TLO in force is the status
             // report's, read next.
-            std::optional<OffsetReport> report;
-            for (const QByteArray &l : reply.lines) {
-                if (auto r = parseTloReport(l))
-                    report = r;
-            }
+            const std::optional<OffsetReport> report
+                = m_session ? m_session->offsetsIn(reply.lines) : std::nullopt;
             auto finish = [this, done, reply](SessionResult result) {
                 result.tool = activeTool();
                 endOperation(result);
@@ -153,7 +150,7 @@ bool MachineConnection::sendLine(
                 finish(result);
             });
         },
-        replyEndFor(line));
+        m_session ? m_session->consoleReplyEnd(line) : ReplyEnd::Ok);
     return true;
 }
 

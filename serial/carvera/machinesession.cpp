@@ -58,6 +58,16 @@ MachineSession::MachineSession(MachineLink *link, QObject *parent)
     });
 }
 
+std::optional<OffsetReport> MachineSession::offsetsIn(const QList<QByteArray> &reply) const
+{
+    std::optional<OffsetReport> last;
+    for (const QByteArray &line : reply) {
+        if (auto r = parseTloReport(line))
+            last = r;
+    }
+    return last;
+}
+
 QString MachineSession::setTloCommand(double tlo) const
 {
     return u"M493.3 Z"_s + QString::fromLatin1(number(tlo));

@@ -62,6 +62,8 @@ public:
     void restoreTlo(int tool, double tlo, Done done) override;
     // Ctrl-X: stops whatever the machine is doing. It halts; Unlock afterwards.
     void abort() override;
+    [[nodiscard]] ReplyEnd consoleReplyEnd(QByteArrayView line) const override { return replyEndFor(line); }
+    [[nodiscard]] std::optional<OffsetReport> offsetsIn(const QList<QByteArray> &reply) const override;
     [[nodiscard]] QString setTloCommand(double tlo) const override;
     [[nodiscard]] QString aboveZ0Command(double height) const override;
     [[nodiscard]] QString restoreCommand(int tool, double tlo) const override;

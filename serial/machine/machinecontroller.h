@@ -138,6 +138,19 @@ public:
     // find where the setter is; done once it has stopped, with its status. Only a controller whose setter is
     // Toffee's jogs; the others refuse.
     static constexpr double kMaxJogStepMm = 50.0;
+    // A line the operator typed in the console: how this controller's reply to it ends, and the offsets the
+    // reply reports (the Carvera's M493.3 and M493.4 print them), if any. Every line is answered with "ok" or
+    // "error:" unless the controller says otherwise.
+    [[nodiscard]] virtual ReplyEnd consoleReplyEnd(QByteArrayView line) const
+    {
+        Q_UNUSED(line)
+        return ReplyEnd::Ok;
+    }
+    [[nodiscard]] virtual std::optional<OffsetReport> offsetsIn(const QList<QByteArray> &reply) const
+    {
+        Q_UNUSED(reply)
+        return std::nullopt;
+    }
     virtual void jog(const std::array<double, 3> &stepMm, double feed, Done done);
     [[nodiscard]] virtual bool keepsReference() const { return true; }
     virtual void adoptReference(std::optional<double> referenceMz) { Q_UNUSED(referenceMz) }
