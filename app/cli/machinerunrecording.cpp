@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// toffee-cli's machine commands: what an operation measured, into the table file and the history.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QTimer>
+
+#include "app/cli/cli.h"
+#include "app/cli/interrupt.h"
+#include "app/cli/machineoptions.h"
+#include "app/cli/machinerun.h"
+#include "app/cli/operatorpresence.h"
+#include "model/clock.h"
+#include "model/formats/tablefile.h"
+#include "model/job/toolfacts.h"
+#include "model/library/spool.h"
+#include "model/library/weartrend.h"
+#include "model/limits.h"
+#include "model/numberformat.h"
+#include "serial/carvera/carverareplies.h"
+#include "serial/machine/machinecontroller.h"
+#include "serial/machine/machinelink.h"
+#include "serial/machineconnection.h"
+#include "serial/offsetsync.h"
+#include "serial/transport/streamtransport.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee::Cli::Machine {
+
+// What a successful probe, a manual offset or a break test means for the table, saved at once, and for the
+// history library, table or not. The event is kept on this computer before the library is asked: a library
+// that is busy, locked, damaged or out of reach leaves it there, to be sent the next time the library opens.
+// Ctrl-C or SIGTERM waits until the table is saved and the event kept, not for the library.
+bool MachineRun::record(const SessionResult &r)
+{
+    std::optional<HistoryEvent> event;
+    Result<QString> kept = QString();
+    bool saved = false;
+    {
+        const CriticalSection critical;
+        saved = recordTable(r);
+        if (m_options.library && r.recording) {
+            event = historyEvent(*r.recording, m_options.machine);
+            kept = Spool().keep(m_options.library->location(), { *event });
+        }
+    }
+    if (event)
+        recordHistory({ *event }, kept);
+    return saved;
+}
+
+bool MachineRun::recordAll(const QList<Recording> &recordings)
+{
+    if (recordings.isEmpty())
+        return true;
+    QList<HistoryEvent> events;
+    Result<QString> kept = QString();
+    {
+        const CriticalSection critical;
+        if (m_options.table) {
+            ToolTable next = *m_options.table;
+            Result<void> saved = next.recordAll(recordings);
+            if (saved)
+                saved = saveTableFile(m_options.tablePath, next,
+                    formatForPath(m_options.tablePath).value_or(TableFormat::Json));
+            if (!saved) {
+                m_exitCode = BadInput;
+                fail(m_call, u"nothing was recorded: %1"_s.arg(saved.error().text()), BadInput);
+                m_recordFailed = true;
+                return false;
+            }
+            *m_options.table = next;
+        }
+        if (m_options.library) {
+            for (const Recording &r : recordings)
+                events.append(historyEvent(r, m_options.machine));
+            kept = Spool().keep(m_options.library->location(), events);
+        }
+    }
+    if (!events.isEmpty())
+        recordHistory(events, kept);
+    return true;
+}
+
+void MachineRun::recordHistory(const QList<HistoryEvent> &events, const Result<QString> &kept)
+{
+    Library &library = *m_options.library;
+    QStringList names;
+    for (const HistoryEvent &event : events)
+        names << u"T%1's %2"_s.arg(event.tool).arg(eventKindName(event.kind).replace(u'_', u' '));
+    const QString what = names.join(u", "_s);
+    if (auto written = library.append(events); !written) {
+        m_call.err << "toffee-cli: " << written.error().message << Qt::endl;
+        if (kept) {
+            m_history = u"kept"_s;
+            m_call.err << "toffee-cli: " << what << " is kept on this computer (" << kept.value()
+                       << ") and will be sent the next time toffee-cli or the window opens the library."
+                       << Qt::endl;
+        } else {
+            m_history = u"not_recorded"_s;
+            m_call.err << "toffee-cli: " << what << " could not be kept on this computer either ("
+                       << kept.error().message << "): it is not in the history." << Qt::endl;
+        }
+        return;
+    }
+    m_history = u"recorded"_s;
+    if (kept) {
+        if (auto removed = Spool().remove(kept.value()); !removed)
+            m_call.err << "toffee-cli: " << removed.error().message << Qt::endl;
+    }
+    for (const HistoryEvent &event : events) {
+        if (auto warning = checkProbeAgainstTrend(library, event, m_options.tolerance)) {
+            m_trendWarning = *warning;
+            m_call.err << "toffee-cli: warning: " << *warning << Qt::endl;
+        }
+    }
+}
+
+bool MachineRun::recordTable(const SessionResult &r)
+{
+    if (!m_options.table)
+        return true;
+    const int measured = r.tool.value_or(-1);
+    QString problem;
+    if (!r.recording) {
+        problem = u"the machine reports no tool in the spindle; nothing was recorded."_s;
+        m_exitCode = MachineError;
+    } else {
+        Result<void> saved = m_options.table->record(*r.recording); // as the window records it
+        if (saved)
+            saved = saveTableFile(m_options.tablePath, *m_options.table,
+                formatForPath(m_options.tablePath).value_or(TableFormat::Json));
+        if (saved)
+            return true;
+        const QString why = saved.error().text();
+        problem = r.breakTest
+            ? u"the break test ran on T%1 but could not be recorded: %2"_s.arg(measured).arg(why)
+            : m_call.command == u"set-tlo"
+            ? u"set T%1's TLO to %2 mm on the machine but could not record it: %3"_s.arg(measured).arg(
+                mm(r.tlo->tlo()), why)
+            : u"measured T%1 (TLO %2 mm) but could not record it: %3"_s.arg(measured).arg(
+                mm(r.tlo->tlo()), why);
+        m_exitCode = BadInput;
+    }
+    fail(m_call, problem, ExitCode(m_exitCode));
+    m_recordFailed = true;
+    return false;
+}
+
+MachineRun::Done MachineRun::printed(std::function<void(const SessionResult &)> print)
+{
+    return [this, print](const SessionResult &r) {
+        if (r.ok() || (r.outcome == SessionResult::Outcome::ToolBroken && r.breakTest))
+            print(r);
+        finishWith(r);
+    };
+}
+
+MachineRun::Done MachineRun::recorded()
+{
+    return [this](const SessionResult &r) {
+        if (!r.ok())
+            return finishWith(r);
+        if (m_call.command == u"change-tool" && r.tool == Limits::kEmptySpindle) {
+            // change-tool -1: the spindle was emptied, and there is nothing to measure or record.
+            if (m_call.json)
+                printJson(
+                    m_call, QJsonObject { { u"tool"_s, Limits::kEmptySpindle }, { u"tlo"_s, QJsonValue() } });
+            else
+                m_call.out << "The spindle is empty." << Qt::endl;
+            return finishWith(r);
+        }
+        if (record(r))
+            printTlo(m_call, r, m_trendWarning, m_history);
+        finishWith(r);
+    };
+}
+
+} // namespace Toffee::Cli::Machine

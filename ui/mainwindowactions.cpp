@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The window's menus, toolbar and their actions, each with its shortcut and icon.
+#include "ui/mainwindow.h"
+#include "ui/aboutbox.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHash>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QResizeEvent>
+#include <QScreen>
+#include <QStatusBar>
+#include <QTableView>
+#include <QToolBar>
+#include <QUndoStack>
+
+#include "model/document/autosave.h"
+#include "model/document/filewatcher.h"
+#include "model/document/tooldocument.h"
+#include "model/library/historyrecorder.h"
+#include "serial/machineconnection.h"
+#include "ui/appearance.h"
+#include "ui/appsettings.h"
+#include "ui/breaktestpanel.h"
+#include "ui/connectionpanel.h"
+#include "ui/consoledock.h"
+#include "ui/exportdialog.h"
+#include "ui/historydock.h"
+#include "ui/machinedock.h"
+#include "ui/probepanel.h"
+#include "ui/rackpanel.h"
+#include "ui/tlopanel.h"
+#include "ui/toolchangewait.h"
+#include "ui/toolcontextmenu.h"
+#include "ui/tooltablepanel.h"
+
+using namespace Qt::StringLiterals;
+
+namespace Toffee {
+
+namespace {
+
+// The icon of each action, by its object name (empty: none).
+QString iconFor(const QString &action)
+{
+    static const QHash<QString, QString> icons = {
+        { u"actionNew"_s, u"new"_s },
+        { u"actionOpen"_s, u"open"_s },
+        { u"actionSave"_s, u"save"_s },
+        { u"actionAddTool"_s, u"add"_s },
+        { u"actionRemoveTool"_s, u"remove"_s },
+        { u"actionProbe"_s, u"probe"_s },
+        { u"actionBreakTest"_s, u"breaktest"_s },
+        { u"actionUnlock"_s, u"unlock"_s },
+        { u"actionStop"_s, u"stop"_s },
+        { u"actionConnect"_s, u"connect"_s },
+    };
+    return icons.value(action);
+}
+
+} // namespace
+
+template<typename Slot>
+QAction *MainWindow::addMenuAction(
+    QMenu *menu, const QString &name, const QString &text, const QKeySequence &shortcut, Slot slot)
+{
+    auto *action = new QAction(text, this);
+    action->setObjectName(name);
+    action->setShortcut(shortcut);
+    action->setIcon(themeIcon(iconFor(name)));
+    connect(action, &QAction::triggered, this, slot);
+    menu->addAction(action);
+    return action;
+}
+
+void MainWindow::createActions()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QToolBar *toolBar = addToolBar(tr("Main"));
+    toolBar->setObjectName(u"mainToolBar"_s);
+
+    auto add = [this](QMenu *menu, const QString &name, const QString &text, const QKeySequence &shortcut,
+                   auto slot) {
+        return addMenuAction(menu, name, text, shortcut, slot);
+    };
+    toolBar->addAction(add(file, u"actionNew"_s, tr("&New"), QKeySequence::New, &MainWindow::newTable));
+    toolBar->addAction(add(file, u"actionOpen"_s, tr("&Open…"), QKeySequence::Open, &MainWindow::open));
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(u"menuRecent"_s);
+    toolBar->addAction(add(file, u"actionSave"_s, tr("&Save"), QKeySequence::Save, [this] { save(); }));
+    add(file, u"actionSaveAs"_s, tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
+        [this] { saveAs(); });
+    createLibraryActions(file);
+    file->addSeparator();
+    add(file, u"actionImport"_s, tr("Import &Tools…"), QKeySequence(Qt::CTRL | Qt::Key_I),
+        &MainWindow::importTable);
+    add(file, u"actionExport"_s, tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E),
+        &MainWindow::exportTable);
+    add(file, u"actionExportProgram"_s, tr("Export for &Controller…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), [this] {
+            ExportDialog dialog(m_document->table(), this);
+            dialog.exec();
+        });
+    file->addSeparator();
+    add(file, u"actionCheckJob"_s, tr("Check &Job…"), QKeySequence(Qt::CTRL | Qt::Key_J),
+        &MainWindow::checkJob);
+    file->addSeparator();
+    add(file, u"actionQuit"_s, tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), &QWidget::close);
+
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(u"actionUndo"_s);
+    undo->setIcon(themeIcon(u"undo"_s));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(u"actionRedo"_s);
+    redo->setIcon(themeIcon(u"redo"_s));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    toolBar->addSeparator();
+    toolBar->addAction(undo);
+    toolBar->addAction(redo);
+    toolBar->addSeparator();
+    toolBar->addAction(add(
+        edit, u"actionAddTool"_s, tr("&Add Tool"), QKeySequence(Qt::CTRL | Qt::Key_T), &MainWindow::addTool));
+    m_removeAction = add(
+        edit, u"actionRemoveTool"_s, tr("&Remove Tool"), QKeySequence::Delete, &MainWindow::removeTools);
+    m_removeAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_tablePanel->view()->addAction(m_removeAction);
+    toolBar->addAction(m_removeAction);
+    m_newCutterAction = add(edit, u"actionNewCutter"_s, tr("New &Cutter…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N), &MainWindow::newCutter);
+    m_newCutterAction->setToolTip(tr("The selected tool's pocket holds another cutter: its TLO, length, wear "
+                                     "and break mark end, and it is measured before it cuts"));
+    edit->addSeparator();
+    add(edit, u"actionFind"_s, tr("&Filter…"), QKeySequence::Find, [this] {
+        m_tablePanel->filterEdit()->setFocus();
+        m_tablePanel->filterEdit()->selectAll();
+    });
+    updateRecentFiles();
+}
+
+void MainWindow::createMachineActions()
+{
+    QMenu *machine = menuBar()->addMenu(tr("&Machine"));
+    auto add
+        = [this, machine](const QString &name, const QString &text, const QKeySequence &shortcut, auto slot) {
+              return addMenuAction(machine, name, text, shortcut, slot);
+          };
+    QToolBar *toolBar = addToolBar(tr("Machine"));
+    toolBar->setObjectName(u"machineToolBar"_s);
+    toolBar->addAction(
+        add(u"actionConnect"_s, tr("&Connect / Disconnect"), QKeySequence(Qt::CTRL | Qt::Key_K),
+            [this] { m_machineDock->connectionPanel()->toggleConnection(); }));
+    machine->addSeparator();
+    toolBar->addAction(add(u"actionProbe"_s, tr("&Probe Current Tool…"), QKeySequence(Qt::Key_F5),
+        [this] { m_machineDock->probePanel()->probe(); }));
+    toolBar->addAction(add(u"actionBreakTest"_s, tr("&Break Test…"), QKeySequence(Qt::Key_F6),
+        [this] { m_machineDock->breakTestPanel()->run(); }));
+    toolBar->addAction(add(u"actionUnlock"_s, tr("&Unlock"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_U),
+        [this] { m_machineDock->tloPanel()->unlock(); }));
+    toolBar->addAction(add(u"actionStop"_s, tr("&Stop the Machine"), QKeySequence(Qt::CTRL | Qt::Key_Period),
+        [this] { m_machineDock->probePanel()->cancel(); }));
+    // The rack's sequences, from the keyboard too; the Rack panel comes forward to show their progress.
+    machine->addSeparator();
+    QMenu *rack = machine->addMenu(tr("R&ack"));
+    rack->setObjectName(u"menuRack"_s);
+    QAction *measureRack = addMenuAction(rack, u"actionMeasureRack"_s, tr("&Measure Rack…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F5), [this] {
+            m_rackDock->raise();
+            m_rackPanel->measureRack();
+        });
+    QAction *checkRack = addMenuAction(rack, u"actionCheckRack"_s, tr("&Check Rack…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F6), [this] {
+            m_rackDock->raise();
+            m_rackPanel->checkRack();
+        });
+    auto rackState = [this, measureRack, checkRack] {
+        measureRack->setEnabled(m_rackPanel->canMeasure() && !recordingBlocked());
+        checkRack->setEnabled(m_rackPanel->canCheck() && !recordingBlocked());
+    };
+    connect(m_rackPanel, &RackPanel::stateChanged, this, rackState);
+    rackState();
+    // What only a controller with a setter cycle of Toffee's and a table of its own (grblHAL) has.
+    machine->addSeparator();
+    add(u"actionToolSetter"_s, tr("Tool &Setter…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T),
+        [this] { editToolSetter(); });
+    m_pushOffsetsAction = add(u"actionPushOffsets"_s, tr("Push &Offsets to the Controller…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), [this] { pushOffsets(); });
+    m_pullOffsetsAction = add(u"actionPullOffsets"_s, tr("P&ull Offsets from the Controller…"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G), [this] { pullOffsets(); });
+    machine->addSeparator();
+    add(u"actionRecordRun"_s, tr("&Record a Program Run…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
+        [this] { recordProgramRun(); });
+    add(u"actionHistorySettings"_s, tr("History &Library…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+        [this] { editHistorySettings(); });
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    QAction *machineView = m_machineDock->toggleViewAction();
+    machineView->setObjectName(u"actionShowMachine"_s);
+    machineView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_1));
+    view->addAction(machineView);
+    QAction *consoleView = m_consoleDock->toggleViewAction();
+    consoleView->setObjectName(u"actionShowConsole"_s);
+    consoleView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_2));
+    view->addAction(consoleView);
+    QAction *historyView = m_historyDock->toggleViewAction();
+    historyView->setObjectName(u"actionShowHistory"_s);
+    historyView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_3));
+    view->addAction(historyView);
+    QAction *rackView = m_rackDock->toggleViewAction();
+    rackView->setObjectName(u"actionShowRack"_s);
+    rackView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_4));
+    view->addAction(rackView);
+    view->addSeparator();
+    auto *dark = new QAction(tr("&Dark Palette"), this);
+    dark->setObjectName(u"actionDarkPalette"_s);
+    dark->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
+    dark->setCheckable(true);
+    dark->setChecked(palette().color(QPalette::Window).lightness() < 128);
+    connect(dark, &QAction::toggled, this, [](bool on) {
+        AppSettings().setDarkPalette(on);
+        applyPalette(on);
+    });
+    view->addAction(dark);
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *about = help->addAction(tr("&About Toffee"), this, [this] { showAbout(this); });
+    about->setObjectName(u"actionAbout"_s);
+    about->setShortcut(QKeySequence(Qt::Key_F1)); // the one help there is
+    about->setMenuRole(QAction::AboutRole);
+}
+
+} // namespace Toffee
