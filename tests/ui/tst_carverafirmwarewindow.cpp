@@ -20,6 +20,7 @@
 #include "tests/support/carverapeer.h"
 #include "tests/support/processes.h"
 #include "tests/support/station.h"
+#include "tests/support/windowsteps.h"
 #include "ui/consoledock.h"
 
 using namespace Toffee;
@@ -46,18 +47,6 @@ void connectTo(Station &s, const QString &port)
                 s.sent.append(line);
         });
     QTRY_COMPARE_WITH_TIMEOUT(s.text(u"machineStateLabel"_s), u"Idle"_s, 5000);
-}
-
-bool waitIdle(Station &s, int ms = 30000)
-{
-    return QTest::qWaitFor([&s] { return s.idle() && !QApplication::activeModalWidget(); }, ms);
-}
-
-void screenshot(QWidget &widget, const QString &name)
-{
-    const QString folder = qEnvironmentVariable("TOFFEE_SCREENSHOTS");
-    if (!folder.isEmpty() && QDir().mkpath(folder))
-        QVERIFY(widget.grab().save(QDir(folder).filePath(name)));
 }
 
 } // namespace

@@ -23,6 +23,7 @@
 #include "tests/support/messageboxes.h"
 #include "tests/support/processes.h"
 #include "tests/support/station.h"
+#include "tests/support/windowsteps.h"
 #include "ui/appsettings.h"
 #include "ui/connectionpanel.h"
 #include "ui/jobcheckdialog.h"
@@ -36,55 +37,6 @@ using namespace Toffee::Test;
 using namespace Qt::StringLiterals;
 
 namespace {
-
-bool waitConnected(Station &s, int ms = 20000)
-{
-    return QTest::qWaitFor(
-        [&s] { return s.window.connection()->state() == MachineConnection::State::Connected; }, ms);
-}
-
-bool waitIdle(Station &s, int ms = 60000)
-{
-    return QTest::qWaitFor([&s] { return s.idle() && !QApplication::activeModalWidget(); }, ms);
-}
-
-void screenshot(QWidget &widget, const QString &name)
-{
-    const QString folder = qEnvironmentVariable("TOFFEE_SCREENSHOTS");
-    if (!folder.isEmpty() && QDir().mkpath(folder))
-        QVERIFY(widget.grab().save(QDir(folder).filePath(name)));
-}
-
-// In the next modal dialog of type D: `act` on it (it accepts or rejects it).
-template<typename D> void inNextDialog(std::function<void(D *)> act, int attempts = 2000)
-{
-    QTimer::singleShot(10, [=] {
-        auto *dialog = qobject_cast<D *>(QApplication::activeModalWidget());
-        if (!dialog) {
-            if (attempts > 0)
-                inNextDialog<D>(act, attempts - 1);
-            return;
-        }
-        act(dialog);
-    });
-}
-
-// The next message box's text, answered with its default button (or its only one), once it is up.
-void answerAnyBox(QString *text, int attempts = 1000)
-{
-    QTimer::singleShot(10, [=] {
-        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
-        if (!box) {
-            if (attempts > 0)
-                answerAnyBox(text, attempts - 1);
-            return;
-        }
-        *text = box->text() + u'\n' + box->informativeText();
-        QAbstractButton *b = box->defaultButton() ? box->defaultButton() : box->buttons().value(0);
-        QVERIFY(b);
-        b->click();
-    });
-}
 
 // The preview's rows as "T2|15.300|7.000|written".
 QStringList rowsOf(QTableWidget *table)
@@ -163,9 +115,9 @@ private Q_SLOTS:
         s.trigger(u"actionToolSetter"_s);
         QTRY_VERIFY(s.window.statusBar()->currentMessage().startsWith(u"grblHAL's tool setter"_s));
         QVERIFY(s.window.connection()->selectTool(1, {}));
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         s.probe();
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QCOMPARE(*s.table().find(1)->referenceMz, -70.0);
         s.window.connection()->disconnectFromMachine();
 
@@ -179,9 +131,9 @@ private Q_SLOTS:
         connectTo(s, peer);
         QVERIFY2(!said.join(u'|').contains(u"new to the history library"_s), qPrintable(said.join(u'|')));
         QVERIFY(s.window.connection()->selectTool(2, {}));
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         s.probe();
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QCOMPARE(*s.table().find(2)->measuredTlo, 15.3);
         QCOMPARE(*s.table().find(2)->referenceMz, -70.0);
         QCOMPARE(peer.tableZ(2), std::optional(15.3));
@@ -239,14 +191,14 @@ private Q_SLOTS:
         QCOMPARE(s.window.connection()->firmware().toolTableSize, 16);
         // A probe before the setter is known is refused with where to set it.
         QVERIFY(s.window.connection()->selectTool(1, {}));
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QTRY_COMPARE(s.text(u"activeToolLabel"_s), u"T1"_s);
         QString refusal;
         QString question;
         answerNextBox(QMessageBox::Yes, &question);
         QTimer::singleShot(300, [&refusal] { answerAnyBox(&refusal); });
         s.trigger(u"actionProbe"_s);
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QTRY_VERIFY2(refusal.contains(u"Tool Setter"_s), qPrintable(question + u" / "_s + refusal));
         QVERIFY(!s.table().find(1) || !s.table().find(1)->measuredTlo);
 
@@ -301,7 +253,7 @@ private Q_SLOTS:
         const QString first = s.probe();
         QVERIFY2(
             first.contains(u"This machine has no reference tool yet: T1 becomes it"_s), qPrintable(first));
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QCOMPARE(*s.table().find(1)->measuredTlo, 0.0);
         QCOMPARE(*s.table().find(1)->referenceMz, -70.0);
         QVERIFY2(
@@ -309,10 +261,10 @@ private Q_SLOTS:
             qPrintable(s.text(u"probeResultLabel"_s)));
         QVERIFY(!s.window.connection()->probeMakesReference());
         QVERIFY(s.window.connection()->selectTool(2, {}));
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         const QString second = s.probe();
         QVERIFY2(!second.isEmpty() && !second.contains(u"reference"_s), qPrintable(second));
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QCOMPARE(*s.table().find(2)->measuredTlo, 15.3);
         QCOMPARE(s.text(u"tloLabel"_s), u"15.300 mm"_s);
         // The strip shows the TLO whole at 1280 px (it was cut to "15.300 mr").
@@ -331,7 +283,7 @@ private Q_SLOTS:
         QString box;
         QTimer::singleShot(300, [&box] { answerAnyBox(&box); });
         s.trigger(u"actionBreakTest"_s);
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QTRY_VERIFY2(box.contains(u"kept in the table and in grblHAL"_s), qPrintable(box));
         // grblHAL is not halted by Toffee's break test, and the box does not say it is.
         QVERIFY2(box.contains(u"not halted"_s), qPrintable(box));
@@ -352,7 +304,7 @@ private Q_SLOTS:
             d->findChild<QPushButton *>(u"offsetsGoButton"_s)->click();
         });
         s.trigger(u"actionPullOffsets"_s);
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QVERIFY2(pullRows.contains(u"T5|—|2.500|new tool"_s), qPrintable(pullRows.join(u'\n')));
         QVERIFY2(pullRows.contains(u"T2|15.300|15.300|unchanged"_s), qPrintable(pullRows.join(u'\n')));
         QVERIFY2(pullRows.contains(u"T1|0.000|0.000|unchanged"_s), qPrintable(pullRows.join(u'\n')));
@@ -405,7 +357,7 @@ private Q_SLOTS:
             d->findChild<QPushButton *>(u"offsetsGoButton"_s)->click();
         });
         s.trigger(u"actionPushOffsets"_s);
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QVERIFY2(pushRows.contains(u"T1|0.000|7.000|written"_s), qPrintable(pushRows.join(u'\n')));
         QVERIFY2(pushRows.contains(u"T5|2.500|2.500|unchanged"_s), qPrintable(pushRows.join(u'\n')));
 
@@ -418,7 +370,7 @@ private Q_SLOTS:
         // grblHAL's tool change from the table (Ctrl+Shift+M): asked first, then the wait for the person,
         // Continue (cycle start), and T2 measured (now 0.5 mm shorter) and recorded.
         QVERIFY(s.window.connection()->selectTool(1, {}));
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         s.window.findChild<ToolTablePanel *>()->selectTool(2);
         QTRY_VERIFY(s.find<QAction>(u"actionChangeTo"_s)->isEnabled());
         QString changeQuestion;
@@ -435,7 +387,7 @@ private Q_SLOTS:
         QTest::mouseClick(
             QApplication::activeModalWidget()->findChild<QPushButton *>(u"toolChangeContinueButton"_s),
             Qt::LeftButton);
-        QVERIFY(waitIdle(s));
+        QVERIFY(waitIdle(s, 60000));
         QCOMPARE(s.window.connection()->activeTool(), std::optional(2));
         QCOMPARE(*s.table().find(2)->measuredTlo, 14.8);
         QCOMPARE(s.table().find(2)->tloSource, TloSource::Probe);

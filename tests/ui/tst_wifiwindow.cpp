@@ -26,6 +26,7 @@
 #include "serial/transport/beaconlistener.h"
 #include "tests/support/carverapeer.h"
 #include "tests/support/station.h"
+#include "tests/support/windowsteps.h"
 #include "ui/appsettings.h"
 #include "ui/connectionpanel.h"
 
@@ -95,44 +96,6 @@ void chooseHeard(Station &s, const QString &startsWith)
         if (combo->itemText(i).startsWith(startsWith))
             combo->setCurrentIndex(i);
     }
-}
-
-bool waitConnected(Station &s, int ms = 20000)
-{
-    return QTest::qWaitFor(
-        [&s] { return s.window.connection()->state() == MachineConnection::State::Connected; }, ms);
-}
-
-bool waitIdle(Station &s, int ms = 30000)
-{
-    return QTest::qWaitFor([&s] { return s.idle() && !QApplication::activeModalWidget(); }, ms);
-}
-
-void screenshot(QWidget &widget, const QString &name)
-{
-    const QString folder = qEnvironmentVariable("TOFFEE_SCREENSHOTS");
-    if (!folder.isEmpty() && QDir().mkpath(folder))
-        QVERIFY(widget.grab().save(QDir(folder).filePath(name)));
-}
-
-// Clicks the button named `button` (none: the default one) in the next message box whose title is `title`,
-// keeping its text.
-void answerBoxTitled(const QString &title, const QString &button, QString *text, int attempts = 1000)
-{
-    QTimer::singleShot(10, [=] {
-        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
-        if (!box || box->windowTitle() != title) {
-            if (attempts > 0)
-                answerBoxTitled(title, button, text, attempts - 1);
-            return;
-        }
-        *text = box->text() + u'\n' + box->informativeText();
-        QAbstractButton *b = !button.isEmpty() ? box->findChild<QAbstractButton *>(button)
-            : box->defaultButton()             ? box->defaultButton()
-                                               : box->buttons().value(0);
-        QVERIFY(b);
-        b->click();
-    });
 }
 
 } // namespace
