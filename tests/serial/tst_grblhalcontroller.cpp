@@ -102,6 +102,19 @@ SessionResult await(const std::function<void(MachineController::Done)> &start)
     return result;
 }
 
+// The controller on its own link to `machine`, over a real socket on 127.0.0.1, speaking plain text.
+struct Rig
+{
+    explicit Rig(const TablelessGrblHal &machine)
+        : transport(TcpTransport::Address { QStringLiteral("127.0.0.1"), machine.port() })
+    {
+        transport.setProtocol(StreamTransport::Protocol::Text);
+    }
+    TcpTransport transport;
+    MachineLink link { &transport };
+    GrblHalController controller { &link };
+};
+
 } // namespace
 
 class TestGrblHalController : public QObject
@@ -112,10 +125,8 @@ private Q_SLOTS:
     void aBuildWithoutAToolTableGetsItsTloWithG431()
     {
         TablelessGrblHal machine;
-        TcpTransport transport(TcpTransport::Address { u"127.0.0.1"_s, machine.port() });
-        transport.setProtocol(StreamTransport::Protocol::Text);
-        MachineLink link(&transport);
-        GrblHalController controller(&link);
+        Rig rig(machine);
+        GrblHalController &controller = rig.controller;
         controller.adoptReference(-70.0);
         const SessionResult connected = await([&](auto done) { controller.connectToMachine(done); });
         QVERIFY2(connected.ok(), qPrintable(connected.message));
@@ -169,10 +180,8 @@ private Q_SLOTS:
     {
         TablelessGrblHal machine;
         machine.contactZ = -99999.0;
-        TcpTransport transport(TcpTransport::Address { u"127.0.0.1"_s, machine.port() });
-        transport.setProtocol(StreamTransport::Protocol::Text);
-        MachineLink link(&transport);
-        GrblHalController controller(&link);
+        Rig rig(machine);
+        GrblHalController &controller = rig.controller;
         controller.adoptReference(-70.0);
         controller.setToolSetter(ToolSetter { 0.0, 0.0, -120.0, 3000.0, 300.0, 2.0, 0.0 });
         QVERIFY(await([&](auto done) { controller.connectToMachine(done); }).ok());
@@ -203,10 +212,8 @@ private Q_SLOTS:
     void aJogIsBoundedAndSaysWhatItSent()
     {
         TablelessGrblHal machine;
-        TcpTransport transport(TcpTransport::Address { u"127.0.0.1"_s, machine.port() });
-        transport.setProtocol(StreamTransport::Protocol::Text);
-        MachineLink link(&transport);
-        GrblHalController controller(&link);
+        Rig rig(machine);
+        GrblHalController &controller = rig.controller;
         QVERIFY(await([&](auto done) { controller.connectToMachine(done); }).ok());
         const qsizetype before = machine.received.size();
         const SessionResult moved = await([&](auto done) {
@@ -236,10 +243,8 @@ private Q_SLOTS:
     {
         TablelessGrblHal machine;
         machine.tableSize = 300;
-        TcpTransport transport(TcpTransport::Address { u"127.0.0.1"_s, machine.port() });
-        transport.setProtocol(StreamTransport::Protocol::Text);
-        MachineLink link(&transport);
-        GrblHalController controller(&link);
+        Rig rig(machine);
+        GrblHalController &controller = rig.controller;
         const SessionResult connected = await([&](auto done) { controller.connectToMachine(done); });
         QVERIFY2(connected.ok(), qPrintable(connected.message));
         QCOMPARE(controller.firmware().toolTableSize, 300);
