@@ -34,6 +34,12 @@ QString modulePath(QLatin1StringView file)
     return QDir::cleanPath(directory + u'/' + file);
 }
 
+QString guidePath()
+{
+    return QDir::cleanPath(QFileInfo(u"/proc/self/exe"_s).canonicalPath()
+        + QStringLiteral("/" TOFFEE_GUIDE_RELATIVE_DIR "/GUIDE.md"));
+}
+
 Result<QFunctionPointer> resolveInModule(QLatin1StringView file, const char *symbol)
 {
     const QString path = modulePath(file);

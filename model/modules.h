@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Toffee's own modules: parts loaded when first used rather than at every start (the zip reader with libzip,
-// the History chart with Qt Charts), so that the window and the CLI start with fewer libraries (issue 16).
-// They live in lib/<multiarch>/toffee beside the program's bin/, installed and in the build tree alike.
+// the History chart with Qt Charts), so that the window and the CLI start with fewer libraries. They live in
+// lib/<multiarch>/toffee beside the program's bin/, installed and in the build tree alike; the user's guide
+// in share/doc/toffee/guide, found the same way.
 #pragma once
 
 #include <QFunctionPointer>
@@ -18,6 +19,8 @@ namespace Toffee {
 // caller says which part of Toffee is missing, in its own words.
 [[nodiscard]] Result<QFunctionPointer> resolveInModule(QLatin1StringView file, const char *symbol);
 inline const QString kModuleMissing = QStringLiteral("module-missing");
+// The user's guide (GUIDE.md, and the screenshots it shows beside it): its full path.
+[[nodiscard]] QString guidePath();
 // For tests: where modules are looked for instead (empty: beside the program again).
 void setModuleDirectory(const QString &directory);
 

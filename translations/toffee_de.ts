@@ -2305,6 +2305,25 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
 </context>
 <context>
+    <name>Toffee::GuideDialog</name>
+    <message>
+        <source>Toffee&apos;s User&apos;s Guide</source>
+        <translation>Toffee-Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>%1 is not installed with Toffee: it is in the docs folder of Toffee&apos;s source.</source>
+        <translation>%1 wird mit Toffee nicht installiert: Sie finden es im Ordner docs der Quellen von Toffee.</translation>
+    </message>
+    <message>
+        <source>The user&apos;s guide is missing</source>
+        <translation>Das Benutzerhandbuch fehlt</translation>
+    </message>
+    <message>
+        <source>The user&apos;s guide is not where Toffee installs it (%1). Reinstall Toffee&apos;s package, or read docs/GUIDE.md in its source.</source>
+        <translation>Das Benutzerhandbuch ist nicht dort, wo Toffee es installiert (%1). Installieren Sie das Paket von Toffee neu oder lesen Sie docs/GUIDE.md in den Quellen.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::HistoryDock</name>
     <message>
         <source>probe</source>
@@ -5054,6 +5073,10 @@ Trotzdem speichern?</translation>
     <message>
         <source>read from the controller</source>
         <translation>aus der Steuerung gelesen</translation>
+    </message>
+    <message>
+        <source>User&apos;s &amp;Guide</source>
+        <translation>Benutzer&amp;handbuch</translation>
     </message>
 </context>
 <context>

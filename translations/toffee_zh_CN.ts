@@ -2305,6 +2305,25 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
 </context>
 <context>
+    <name>Toffee::GuideDialog</name>
+    <message>
+        <source>Toffee&apos;s User&apos;s Guide</source>
+        <translation>Toffee 用户指南</translation>
+    </message>
+    <message>
+        <source>%1 is not installed with Toffee: it is in the docs folder of Toffee&apos;s source.</source>
+        <translation>%1 未随 Toffee 安装：它位于 Toffee 源代码的 docs 文件夹中。</translation>
+    </message>
+    <message>
+        <source>The user&apos;s guide is missing</source>
+        <translation>缺少用户指南</translation>
+    </message>
+    <message>
+        <source>The user&apos;s guide is not where Toffee installs it (%1). Reinstall Toffee&apos;s package, or read docs/GUIDE.md in its source.</source>
+        <translation>用户指南不在 Toffee 安装它的位置（%1）。请重新安装 Toffee 软件包，或阅读其源代码中的 docs/GUIDE.md。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::HistoryDock</name>
     <message>
         <source>probe</source>
@@ -5054,6 +5073,10 @@ Save anyway?</source>
     <message>
         <source>read from the controller</source>
         <translation>从控制器读取</translation>
+    </message>
+    <message>
+        <source>User&apos;s &amp;Guide</source>
+        <translation>用户指南(&amp;G)</translation>
     </message>
 </context>
 <context>

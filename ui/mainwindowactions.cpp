@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's menus, toolbar and their actions, each with its shortcut and icon.
-#include "ui/mainwindow.h"
 #include "ui/aboutbox.h"
+#include "ui/guidedialog.h"
+#include "ui/mainwindow.h"
 
 #include <QAction>
 #include <QApplication>
@@ -233,9 +234,13 @@ void MainWindow::createMachineActions()
     });
     view->addAction(dark);
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *guide = help->addAction(tr("User's &Guide"), this, [this] { showGuide(this); });
+    guide->setObjectName(u"actionGuide"_s);
+    guide->setShortcut(QKeySequence::HelpContents); // F1
+    help->addSeparator();
     QAction *about = help->addAction(tr("&About Toffee"), this, [this] { showAbout(this); });
     about->setObjectName(u"actionAbout"_s);
-    about->setShortcut(QKeySequence(Qt::Key_F1)); // the one help there is
+    about->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F1));
     about->setMenuRole(QAction::AboutRole);
 }
 

@@ -34,6 +34,7 @@ for path in usr/bin/toffee usr/bin/toffee-cli usr/bin/toffee-emulator \
     usr/share/icons/hicolor/256x256/apps/org.toffee.Toffee.png \
     usr/share/man/man1/toffee.1.gz usr/share/man/man1/toffee-cli.1.gz usr/share/man/man1/toffee-emulator.1.gz \
     usr/share/bash-completion/completions/toffee-cli usr/share/doc/toffee/copyright \
+    usr/share/doc/toffee/guide/GUIDE.md usr/share/doc/toffee/guide/screenshots/window-light.png \
     usr/lib/x86_64-linux-gnu/toffee/toffee_zipreader.so usr/lib/x86_64-linux-gnu/toffee/toffee_historychart.so; do
     echo "$files" | grep -q " \./$path\$" || fail "the package has no /$path"
 done

@@ -23,15 +23,18 @@
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBrowser>
 #include <QTimer>
 #include <QToolButton>
 #include <QUndoStack>
 
 #include "model/document/tooldocument.h"
 #include "model/document/tooltablemodel.h"
+#include "model/modules.h"
 #include "tests/support/messageboxes.h"
 #include "tests/support/testtables.h"
 #include "ui/exportdialog.h"
+#include "ui/guidedialog.h"
 #include "ui/mainwindow.h"
 #include "ui/tooltablepanel.h"
 
@@ -83,6 +86,38 @@ private Q_SLOTS:
         });
         window.findChild<QAction *>(u"actionAbout"_s)->trigger();
         QCOMPARE(text, u"Toffee "_s + QStringLiteral(TOFFEE_VERSION));
+    }
+
+    // F1 opens the user's guide, found beside the program as installed (the build tree has it where the
+    // package puts it), rendered with its screenshots; a link to a page not installed says so; a missing
+    // guide is a message with where it was looked for, never an empty window.
+    void f1OpensTheUsersGuide()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTest::keyClick(&window, Qt::Key_F1);
+        GuideDialog *guide = nullptr;
+        QTRY_VERIFY((guide = window.findChild<GuideDialog *>(u"guideDialog"_s)) && guide->isVisible());
+        QVERIFY(guide->loaded());
+        QTextBrowser *browser = guide->browser();
+        QVERIFY(browser->toPlainText().contains(u"Toffee — the user's guide"_s));
+        QVERIFY(browser->toPlainText().contains(u"Break tests, and what to do after one"_s));
+        const QVariant image = browser->document()->resource(
+            QTextDocument::ImageResource, QUrl(u"screenshots/window-light.png"_s));
+        QVERIFY2(
+            image.isValid() && !image.value<QImage>().isNull(), "the guide's first screenshot is not shown");
+        QVERIFY(guidePath().endsWith(u"/share/doc/toffee/guide/GUIDE.md"_s));
+        if (const QString folder = qEnvironmentVariable("TOFFEE_SCREENSHOTS"); !folder.isEmpty())
+            QVERIFY(guide->grab().save(folder + u"/guide.png"_s));
+        Q_EMIT browser->anchorClicked(QUrl(u"WINDOW.md"_s));
+        auto *note = guide->findChild<QLabel *>(u"guideNote"_s);
+        QTRY_VERIFY(note->isVisible());
+        QVERIFY(note->text().contains(u"WINDOW.md is not installed with Toffee"_s));
+        guide->close();
+
+        GuideDialog missing(u"/nonexistent/GUIDE.md"_s);
+        QVERIFY(!missing.loaded());
     }
 
     void editsACellByKeyboardAndUndoes()
