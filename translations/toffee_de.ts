@@ -5078,6 +5078,22 @@ Trotzdem speichern?</translation>
         <source>User&apos;s &amp;Guide</source>
         <translation>Benutzer&amp;handbuch</translation>
     </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>The System&apos;s</source>
+        <translation>Die des Systems</translation>
+    </message>
+    <message>
+        <source>The window speaks %1 from its next start.</source>
+        <translation>Das Fenster spricht ab dem nächsten Start %1.</translation>
+    </message>
+    <message>
+        <source>the system&apos;s language</source>
+        <translation>die Sprache des Systems</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>

@@ -5078,6 +5078,22 @@ Save anyway?</source>
         <source>User&apos;s &amp;Guide</source>
         <translation>用户指南(&amp;G)</translation>
     </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>The System&apos;s</source>
+        <translation>跟随系统</translation>
+    </message>
+    <message>
+        <source>The window speaks %1 from its next start.</source>
+        <translation>窗口将从下次启动起使用%1。</translation>
+    </message>
+    <message>
+        <source>the system&apos;s language</source>
+        <translation>系统语言</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::OffsetEditor</name>

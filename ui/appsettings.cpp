@@ -30,6 +30,7 @@ const auto ConnectionController = u"machine/controllerChoice"_s;
 const auto ToolSetters = u"machine/toolSetters"_s; // a group: one key per machine name
 const auto Tolerance = u"machine/breakTestTolerance"_s;
 const auto DarkPalette = u"view/darkPalette"_s;
+const auto Language = u"view/language"_s;
 const auto Library = u"history/library"_s;
 const auto MachineName = u"history/machine"_s;
 const auto StaleDays = u"history/staleAfterDays"_s;
@@ -244,6 +245,20 @@ bool AppSettings::darkPalette() const
 void AppSettings::setDarkPalette(bool dark)
 {
     m_settings.setValue(Key::DarkPalette, dark);
+}
+
+QString AppSettings::language() const
+{
+    const QString language = m_settings.value(Key::Language).toString();
+    return QStringList { u"de"_s, u"zh_CN"_s, u"en"_s }.contains(language) ? language : QString();
+}
+
+void AppSettings::setLanguage(const QString &language)
+{
+    if (language.isEmpty())
+        m_settings.remove(Key::Language);
+    else
+        m_settings.setValue(Key::Language, language);
 }
 
 QString AppSettings::jobDialect() const

@@ -89,6 +89,9 @@ public:
     void setRackUsesStoredTlo(bool use);
     [[nodiscard]] bool darkPalette() const;
     void setDarkPalette(bool dark);
+    // The window's language: "de", "zh_CN", "en", or empty for the system's; --lang overrides it for one run.
+    [[nodiscard]] QString language() const;
+    void setLanguage(const QString &language);
 
     static constexpr int kMaxRecentFiles = 8;
 

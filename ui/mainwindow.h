@@ -92,6 +92,7 @@ private:
     QAction *addMenuAction(
         QMenu *menu, const QString &name, const QString &text, const QKeySequence &shortcut, Slot slot);
     void createActions();
+    void createLanguageMenu(QMenu *view);
     void createMachineActions();
     void createMachineStrip();
     void createRackDock();

@@ -5,6 +5,7 @@
 #include "ui/mainwindow.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -233,6 +234,7 @@ void MainWindow::createMachineActions()
         applyPalette(on);
     });
     view->addAction(dark);
+    createLanguageMenu(view);
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *guide = help->addAction(tr("User's &Guide"), this, [this] { showGuide(this); });
     guide->setObjectName(u"actionGuide"_s);
@@ -242,6 +244,43 @@ void MainWindow::createMachineActions()
     about->setObjectName(u"actionAbout"_s);
     about->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F1));
     about->setMenuRole(QAction::AboutRole);
+}
+
+// View ▸ Language: the window's language from its next start (a running window keeps the one it was built
+// in). Each language is named in itself, so that a window in the wrong one still shows the way back.
+void MainWindow::createLanguageMenu(QMenu *view)
+{
+    QMenu *menu = view->addMenu(tr("&Language"));
+    menu->setObjectName(u"menuLanguage"_s);
+    auto *group = new QActionGroup(menu);
+    const QString chosen = AppSettings().language();
+    struct Choice
+    {
+        QString code;
+        QString name;
+        QString object;
+        QKeySequence key;
+    };
+    const Choice choices[] = { { QString(), tr("The System's"), u"actionLanguageSystem"_s,
+                                   QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_0) },
+        { u"en"_s, u"English"_s, u"actionLanguageEnglish"_s, QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_1) },
+        { u"de"_s, u"Deutsch"_s, u"actionLanguageGerman"_s, QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_2) },
+        { u"zh_CN"_s, u"简体中文"_s, u"actionLanguageChinese"_s,
+            QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_3) } };
+    for (const Choice &c : choices) {
+        QAction *action = menu->addAction(c.name);
+        action->setObjectName(c.object);
+        action->setShortcut(c.key);
+        action->setCheckable(true);
+        action->setChecked(c.code == chosen);
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, c] {
+            AppSettings().setLanguage(c.code);
+            statusBar()->showMessage(tr("The window speaks %1 from its next start.")
+                                         .arg(c.code.isEmpty() ? tr("the system's language") : c.name),
+                10000);
+        });
+    }
 }
 
 } // namespace Toffee

@@ -11,6 +11,7 @@
 #include <QFile>
 #include <QTextStream>
 
+#include "model/limits.h"
 #include "model/textparsing.h"
 #include "serial/emulator/beaconsender.h"
 #include "serial/emulator/carveraemulator.h"
@@ -169,7 +170,7 @@ Problem configureMachine(CarveraEmulator &emulator, const QCommandLineParser &pa
     emulator.setRackEmpty(parser.isSet(o.emptyRack));
     if (parser.isSet(o.spindle)) {
         const auto tool = Toffee::parseInteger(parser.value(o.spindle).toUtf8());
-        if (!tool || *tool < -1 || *tool > 999999)
+        if (!tool || *tool < Toffee::Limits::kEmptySpindle || *tool > Toffee::Limits::kMaxToolNumber)
             return u"--spindle takes a tool number, or -1 for an empty spindle."_s;
         emulator.setToolInSpindle(int(*tool));
     }

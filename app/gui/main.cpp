@@ -126,8 +126,11 @@ int main(int argc, char *argv[])
             qPrintable(firmware));
         return 2;
     }
-    if (parser.value(options.lang) != u"en")
-        Toffee::installTranslations(&app, parser.value(options.lang));
+    // --lang for this run, else the language chosen in the window (View ▸ Language), else the system's.
+    const QString language
+        = parser.isSet(options.lang) ? parser.value(options.lang) : Toffee::AppSettings().language();
+    if (language != u"en")
+        Toffee::installTranslations(&app, language);
 
     if (parser.isSet(options.selfTest))
         QStandardPaths::setTestModeEnabled(true); // a smoke test leaves the user's settings alone

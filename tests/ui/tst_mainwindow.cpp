@@ -33,6 +33,7 @@
 #include "model/modules.h"
 #include "tests/support/messageboxes.h"
 #include "tests/support/testtables.h"
+#include "ui/appsettings.h"
 #include "ui/exportdialog.h"
 #include "ui/guidedialog.h"
 #include "ui/mainwindow.h"
@@ -118,6 +119,27 @@ private Q_SLOTS:
 
         GuideDialog missing(u"/nonexistent/GUIDE.md"_s);
         QVERIFY(!missing.loaded());
+    }
+
+    // View ▸ Language: kept for the next start, each language named in itself, the choice shown checked.
+    void theLanguageIsASettingOfTheWindow()
+    {
+        AppSettings().setLanguage({});
+        {
+            MainWindow window;
+            auto *system = window.findChild<QAction *>(u"actionLanguageSystem"_s);
+            auto *german = window.findChild<QAction *>(u"actionLanguageGerman"_s);
+            QVERIFY(system && german);
+            QVERIFY(system->isChecked());
+            QCOMPARE(german->text(), u"Deutsch"_s);
+            german->trigger();
+            QCOMPARE(AppSettings().language(), u"de"_s);
+            QVERIFY(window.statusBar()->currentMessage().contains(u"Deutsch from its next start"_s));
+        }
+        MainWindow next;
+        QVERIFY(next.findChild<QAction *>(u"actionLanguageGerman"_s)->isChecked());
+        next.findChild<QAction *>(u"actionLanguageSystem"_s)->trigger();
+        QVERIFY(AppSettings().language().isEmpty());
     }
 
     void editsACellByKeyboardAndUndoes()
