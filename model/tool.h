@@ -15,10 +15,6 @@ namespace Toffee {
 // compares against the TLO the machine holds, so it matters which.
 enum class TloSource : quint8 { Probe, Manual, Pulled };
 
-[[nodiscard]] constexpr bool isMeasured(TloSource source)
-{
-    return source == TloSource::Probe;
-}
 // "probe", "manual", "pulled": the files' and the CLI's JSON word; the reverse is empty for another word.
 [[nodiscard]] QLatin1StringView tloSourceName(TloSource source);
 [[nodiscard]] std::optional<TloSource> tloSourceFromName(QByteArrayView name);
