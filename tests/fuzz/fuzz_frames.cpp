@@ -32,6 +32,25 @@ struct Decoded
     qsizetype leftover = 0; // bytes still held at the end: the start of a frame
 };
 
+// The first header from `from` on that opens a whole frame with its length, trailer and CRC right; -1 if
+// none.
+qsizetype wholeFrameAfter(QByteArrayView s, qsizetype from)
+{
+    for (qsizetype j = from; j + 3 < s.size(); ++j) {
+        if (quint8(s[j]) != 0x86 || quint8(s[j + 1]) != 0x68)
+            continue;
+        const qsizetype length = qsizetype((quint8(s[j + 2]) << 8) | quint8(s[j + 3]));
+        if (length < MakeraFrame::kMinLength || length > MakeraFrame::kMaxLength || s.size() - j < length + 6)
+            continue;
+        if (quint8(s[j + 4 + length]) != 0x55 || quint8(s[j + 5 + length]) != 0xAA)
+            continue;
+        const qsizetype crc = qsizetype((quint8(s[j + 2 + length]) << 8) | quint8(s[j + 3 + length]));
+        if (MakeraFrame::crc16(s.sliced(j + 2, length)) == crc)
+            return j;
+    }
+    return -1;
+}
+
 // The promise, written the plain way: the whole stream in hand, no buffer, no pieces.
 Decoded reference(QByteArrayView s)
 {
@@ -61,8 +80,17 @@ Decoded reference(QByteArrayView s)
             ++i;
             continue;
         }
-        if (s.size() - i < length + 6)
+        if (s.size() - i < length + 6) {
+            // A header whose frame cannot be whole yet is a stray one when a later header opens a whole,
+            // valid frame: the decoder resynchronises there rather than hold every frame after it.
+            if (const qsizetype later = wholeFrameAfter(s, i + 1); later >= 0) {
+                ++d.counts.badLength;
+                d.counts.strayBytes += later - i;
+                i = later;
+                continue;
+            }
             break;
+        }
         if (quint8(s[i + 4 + length]) != 0x55 || quint8(s[i + 5 + length]) != 0xAA) {
             ++d.counts.badTrailer;
             ++i;
