@@ -207,22 +207,17 @@ void MainWindow::createMachineActions()
     add(u"actionHistorySettings"_s, tr("History &Library…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
         [this] { editHistorySettings(); });
     QMenu *view = menuBar()->addMenu(tr("&View"));
-    QAction *machineView = m_machineDock->toggleViewAction();
-    machineView->setObjectName(u"actionShowMachine"_s);
-    machineView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_1));
-    view->addAction(machineView);
-    QAction *consoleView = m_consoleDock->toggleViewAction();
-    consoleView->setObjectName(u"actionShowConsole"_s);
-    consoleView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_2));
-    view->addAction(consoleView);
-    QAction *historyView = m_historyDock->toggleViewAction();
-    historyView->setObjectName(u"actionShowHistory"_s);
-    historyView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_3));
-    view->addAction(historyView);
-    QAction *rackView = m_rackDock->toggleViewAction();
-    rackView->setObjectName(u"actionShowRack"_s);
-    rackView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_4));
-    view->addAction(rackView);
+    // Each dock shown and hidden from View, Ctrl+1 to Ctrl+4.
+    const std::pair<QDockWidget *, QString> docks[]
+        = { { m_machineDock, u"actionShowMachine"_s }, { m_consoleDock, u"actionShowConsole"_s },
+              { m_historyDock, u"actionShowHistory"_s }, { m_rackDock, u"actionShowRack"_s } };
+    int key = Qt::Key_1;
+    for (const auto &[dock, name] : docks) {
+        QAction *shown = dock->toggleViewAction();
+        shown->setObjectName(name);
+        shown->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(key++)));
+        view->addAction(shown);
+    }
     view->addSeparator();
     auto *dark = new QAction(tr("&Dark Palette"), this);
     dark->setObjectName(u"actionDarkPalette"_s);
