@@ -214,6 +214,13 @@ void CarveraEmulator::move(const QByteArray &line)
     }
     const Position &p = m_motion.position();
     const Position &g54 = m_motion.workOffset();
+    for (int axis = 0; m_homed && axis < 3; ++axis) {
+        const double delta = p[axis] - m_mpos[axis];
+        if ((p[axis] < kSoftMin[axis] && delta < 0) || (p[axis] > kSoftMax[axis] && delta > 0))
+            return haltWith("ERROR: Soft Endstop " + QByteArray(1, char('X' + axis))
+                    + " was exceeded - reset or $X or M999 required",
+                HaltReason::SoftLimit);
+    }
     m_mpos = { p[0], p[1], p[2] };
     m_wcs = { g54[0], g54[1], g54[2] };
     finish();

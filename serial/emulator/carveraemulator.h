@@ -149,8 +149,14 @@ private:
         CalibrateFail = 4,
         AtcToolInvalid = 6,
         AtcNoTool = 7,
+        SoftLimit = 10,
         ProbeInvalid = 12,
     };
+    // The C1's soft endstops in machine coordinates (its config.txt: soft_endstop.x_min -364, y_min -250,
+    // z_min -135; Robot.cpp: every max -1), enabled on a homed machine. A move that would end beyond one,
+    // going towards it, halts before it starts (Robot::append_milestone).
+    static constexpr std::array<double, 3> kSoftMin { -364.0, -250.0, -135.0 };
+    static constexpr std::array<double, 3> kSoftMax { -1.0, -1.0, -1.0 };
     // An M-code's handler gets the block and the line as received (for the "Unsupported command" echo).
     using Handler = void (CarveraEmulator::*)(const GCodeBlock &block, const QByteArray &line);
     struct MCommand

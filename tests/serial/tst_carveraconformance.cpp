@@ -5,6 +5,8 @@
 // concludes at each step — the outcome, the tool, the TLO in force, the reference, the tool's MCS Z, the
 // state and halt, the break test's verdict, what it records, and the table at the end — must be the same for
 // both: a difference fails, naming the step. Without the peer the test skips and says so.
+#include <algorithm>
+
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
@@ -181,6 +183,26 @@ void script(Machine &run)
         });
         run.step(u"status after %1"_s.arg(QString::fromLatin1(typed)), [&c](Done d) { return c.status(d); });
     }
+    // A move beyond the machine's travel: the firmware halts at its soft endstop (reason 10) before it moves,
+    // and stays where it was.
+    run.step(u"typed G91 G0 Z99999999"_s, [&c](Done d) {
+        return c.sendLine("G91 G0 Z99999999", [d](const CommandReply &reply, const SessionResult &r) {
+            SessionResult said = r;
+            const bool endstop = std::any_of(reply.lines.cbegin(), reply.lines.cend(),
+                [](const QByteArray &l) { return l.startsWith("ERROR: Soft Endstop Z was exceeded"); });
+            said.outcome = endstop ? Outcome::MachineError : Outcome::Success;
+            d(said);
+        });
+    });
+    run.step(u"status at the soft endstop"_s, [&c](Done d) { return c.status(d); });
+    run.step(u"where it stands"_s, [&c](Done d) {
+        return c.status([d](const SessionResult &r) {
+            SessionResult said = r;
+            said.outcome = r.status && r.status->mpos[2] < -1.0 ? Outcome::Success : Outcome::MachineError;
+            d(said);
+        });
+    });
+    run.step(u"unlock after the soft endstop"_s, [&c](Done d) { return c.unlock(d); });
 }
 
 } // namespace

@@ -306,6 +306,37 @@ private Q_SLOTS:
         QCOMPARE(simulated.position()[2], -60 + 2 - 1.5 - 33.388);
     }
 
+    // A move beyond the C1's travel halts at its soft endstop before it starts, in the firmware's words (its
+    // answer on the peer: the error, the halt line, "ok"; then Alarm with H:10 where it stood), on every axis
+    // and both ways; one towards the inside of the travel is taken, even from beyond it.
+    void aMoveBeyondTheTravelHaltsAtTheSoftEndstop()
+    {
+        CarveraEmulator emulator;
+        const QList<QByteArray> said = command(emulator, "G91 G0 Z99999999");
+        QCOMPARE(
+            said.first(), QByteArray("ERROR: Soft Endstop Z was exceeded - reset or $X or M999 required"));
+        QVERIFY(said.at(1).startsWith("Halt Happened at Line"));
+        QCOMPARE(said.last(), QByteArray("ok"));
+        auto report = parseStatusReport(status(emulator));
+        QVERIFY(report && report->isAlarm());
+        QCOMPARE(report->haltReason, 10);
+        QCOMPARE(report->mpos[2], -2.0); // where it stood
+        QCOMPARE(command(emulator, "$X").last(), QByteArray("ok"));
+        QCOMPARE(command(emulator, "G90 G53 G0 X-365").first(),
+            QByteArray("ERROR: Soft Endstop X was exceeded - reset or $X or M999 required"));
+        QCOMPARE(command(emulator, "$X").last(), QByteArray("ok"));
+        QCOMPARE(command(emulator, "G53 G0 Y-250.5").first(),
+            QByteArray("ERROR: Soft Endstop Y was exceeded - reset or $X or M999 required"));
+        QCOMPARE(command(emulator, "$X").last(), QByteArray("ok"));
+        // Within the travel, to its very edges, and back in from beyond an edge: taken.
+        for (const QByteArray line : { "G53 G0 X-364 Y-250 Z-135", "G53 G0 X-1 Y-1 Z-1" })
+            QCOMPARE(command(emulator, line), QList<QByteArray> { "ok" });
+        report = parseStatusReport(status(emulator));
+        QVERIFY(report && !report->isAlarm());
+        QCOMPARE(report->mpos[0], -1.0);
+        QCOMPARE(report->mpos[2], -1.0);
+    }
+
     // What the firmware does with what it does not know: an M- or G-code it takes without a word, upper-case
     // text it takes and then halts on, a lower-case word it refuses (its shell).
     void answersUnknownCommandsAsTheFirmwareDoes()
