@@ -2,12 +2,16 @@
 // Makera's frame decoder on any byte stream, cut anywhere, and the console's framed reading on top of it. The
 // first byte picks the console's line cap (small caps reach the over-long path with short inputs), the next
 // two where the stream is cut: the bytes before that point go in one at a time, the rest in one read; the
-// rest of the input is the stream. Promised: the cut stream gives exactly the frames, counts and leftover
-// bytes the whole one gives, and those a plain reading of the stream gives; each frame's payload fits
-// kMaxPayload, its encoding is in the stream (the frames in order, apart) and decodes again to that frame
-// alone; the decoder never holds more than one frame's bytes. Framed, the console counts what the decoder
-// counts, and its lines are never empty, never hold a line end, never exceed the cap, and are the same
-// however the stream is cut.
+// rest of the input is the stream. Promised: the whole stream gives exactly the frames, counts and leftover
+// bytes a plain reading of it gives; the cut stream gives the same frames and leftover, and says the stream
+// was damaged exactly when the whole one does. Why a stray header was dropped may depend on how the bytes
+// arrive (held with one frame's bytes at most, a header whose frame is not yet whole is a bad length when a
+// later frame completes first and a bad trailer when its own does), so the cut stream's counts of each kind
+// are not promised: they are diagnostics, the frames are the contract. Each frame's payload fits kMaxPayload,
+// its encoding is in the stream (the frames in order, apart) and decodes again to that frame alone; the
+// decoder never holds more than one frame's bytes. Framed, the console counts what the decoder counts, and
+// its lines are never empty, never hold a line end, never exceed the cap, and are the same however the stream
+// is cut.
 #include <algorithm>
 
 #include "serial/transport/consolestream.h"
@@ -201,8 +205,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     got += pieces.feed(stream.sliced(cut));
     TOFFEE_FUZZ_CHECK(pieces.buffered() <= kMaxBuffered, QString::number(pieces.buffered()));
     TOFFEE_FUZZ_CHECK(got == frames, shown(got) + u" vs " + shown(frames));
-    TOFFEE_FUZZ_CHECK(
-        same(pieces.counts(), whole.counts()), shown(pieces.counts()) + u" vs " + shown(whole.counts()));
+    const auto damaged = [](const Decoder::Counts &c) {
+        return c.dropped() + c.strayBytes > 0;
+    };
+    TOFFEE_FUZZ_CHECK(pieces.counts().frames == whole.counts().frames
+            && damaged(pieces.counts()) == damaged(whole.counts()),
+        shown(pieces.counts()) + u" vs " + shown(whole.counts()));
     TOFFEE_FUZZ_CHECK(pieces.buffered() == whole.buffered(), QString::number(pieces.buffered()));
 
     ConsoleStream console(ConsoleStream::Mode::Framed, cap);
