@@ -28,7 +28,7 @@ FUZZ_SECONDS ?= 600
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build run test test-calendar bench fuzz format clean package
+.PHONY: all deps configure build run test test-calendar screenshots bench fuzz format clean package
 
 all: build
 
@@ -67,6 +67,12 @@ run: build
 
 test: build
 	ctest --preset $(PRESET) --output-on-failure
+
+# The screenshots in docs/ (the README's and the user's guide's), taken again by the suite's window stories as they
+# run, offscreen, into docs/screenshots/ (the stories on the real controllers take theirs when the peers are set).
+screenshots: build
+	TOFFEE_SCREENSHOTS=$(CURDIR)/docs/screenshots ctest --preset $(PRESET) --output-on-failure \
+		-R '^tst_(mainwindow|guidetour|machinistday|wifiwindow|toolcontextmenu|carverafirmwarewindow|grblhalwindow)$$'
 
 # The whole suite again with the calendar moved (Debian's libfaketime): two years ahead, and in 2039, past the
 # end of 32-bit seconds. Nothing it checks may depend on the day: the product reads the time through one seam

@@ -4,7 +4,7 @@
 
 #include "serial/carvera/machinesession.h"
 #include "serial/emulator/carveraemulator.h"
-#include "serial/emulatortransport.h"
+#include "serial/emulator/emulatortransport.h"
 #include "serial/grblhal/grblhalcontroller.h"
 #include "serial/transport/serialporttransport.h"
 #include "serial/transport/tcptransport.h"
@@ -47,7 +47,8 @@ std::unique_ptr<MachineController> makeController(MachineLink *link, ControllerK
 
 std::optional<ControllerKind> controllerKindFromName(const QString &name)
 {
-    for (const ControllerKind kind : { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal }) {
+    for (const ControllerKind kind :
+        { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal }) {
         if (name == controllerKindName(kind))
             return kind;
     }

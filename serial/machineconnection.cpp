@@ -6,7 +6,7 @@
 
 #include "serial/carvera/machinesession.h"
 #include "serial/emulator/carveraemulator.h"
-#include "serial/emulatortransport.h"
+#include "serial/emulator/emulatortransport.h"
 #include "serial/grblhal/grblhalcontroller.h"
 #include "serial/transport/serialporttransport.h"
 #include "serial/transport/tcptransport.h"
@@ -245,11 +245,16 @@ FirmwareInfo MachineConnection::firmware() const
     return m_session ? m_session->firmware() : FirmwareInfo {};
 }
 
+HaltWords MachineConnection::haltWords(int reason) const
+{
+    return m_session ? m_session->haltWords(reason) : MachineController::neutralHaltWords(reason);
+}
+
 QString MachineConnection::haltedMessage() const
 {
     const QString said = m_haltSaid.isEmpty() ? QString() : tr("It said: \"%1\". ").arg(m_haltSaid);
     const QString reason = said
-        + (m_haltReason ? haltReasonName(*m_haltReason) + u": "_s + haltRecovery(*m_haltReason)
+        + (m_haltReason ? haltWords(*m_haltReason).name + u": "_s + haltWords(*m_haltReason).recovery
                         : tr("Check the machine, then unlock it."));
     return tr("The machine is halted (Alarm lock) and takes no command but Unlock. %1").arg(reason);
 }

@@ -167,6 +167,8 @@ public:
     // What the firmware said when it halted ("Unexpected tool absence detected, …"), while it stays halted;
     // empty when it said nothing this connection saw (halted before it connected).
     [[nodiscard]] QString haltSaid() const { return m_haltSaid; }
+    // A halt reason the status gave, in the connected controller's words.
+    [[nodiscard]] HaltWords haltWords(int reason) const;
     // Why an operation cannot run on a halted machine, and what to do, for people.
     [[nodiscard]] QString haltedMessage() const;
     // The reference and current MCS Z the machine last reported (M493.4, M493.3), if any since connecting.

@@ -2,8 +2,11 @@
 # Fails when a source file includes from a layer above its own. Run as
 #   cmake -DROOT=<source root> -P tests/layers.cmake
 # The layers, lowest first: model ← formats, gcode, library, camimport, job ← document; wire ← transport;
-# model, gcode, wire ← emulator; transport ← machine ← carvera, grblhal (the two controllers, neither reaching
-# the other); emulator, carvera, grblhal ← serial; ui; app.
+# model, gcode, wire, transport ← emulator; transport ← machine ← carvera, grblhal (the two controllers, neither
+# reaching the other); emulator, carvera, grblhal ← serial ← carverarack (the Carvera's rack, run over a
+# connection); then the window's rooms: common ← connection, table, history, job, library, rack (the rack alone
+# with carverarack) and machine (with connection) ← shell; app. The window reaches the controllers only through the
+# neutral layers (serial, machine): no room of it includes carvera or grblhal.
 # Includes are written from the source root ("serial/carvera/machinesession.h"), so the first folders name the layer.
 
 cmake_minimum_required(VERSION 3.25)
@@ -17,7 +20,10 @@ function(layer_of path out)
     foreach(pair "model/document:document" "model/formats:formats" "model/gcode:gcode" "model/library:library"
             "model/camimport:camimport" "model/job:job" "model:model"
             "serial/wire:wire" "serial/transport:transport" "serial/emulator:emulator"
-            "serial/machine:machine" "serial/carvera:carvera" "serial/grblhal:grblhal" "serial:serial" "ui:ui" "app:app")
+            "serial/machine:machine" "serial/carvera/rack:carverarack" "serial/carvera:carvera" "serial/grblhal:grblhal" "serial:serial"
+            "ui/common:ui_common" "ui/connection:ui_connection" "ui/table:ui_table" "ui/machine:ui_machine"
+            "ui/history:ui_history" "ui/job:ui_job" "ui/rack:ui_rack" "ui/library:ui_library" "ui/shell:ui_shell"
+            "app:app")
         string(REPLACE ":" ";" pair "${pair}")
         list(GET pair 0 prefix)
         list(GET pair 1 name)
@@ -39,15 +45,25 @@ set(allowed_camimport model formats camimport)
 set(allowed_job model formats gcode library job)
 set(allowed_wire wire)
 set(allowed_transport model wire transport)
-set(allowed_emulator model gcode wire emulator)
-set(allowed_machine model wire transport machine)
+set(allowed_emulator model gcode wire transport emulator)
+set(allowed_machine model gcode wire transport machine)
 set(allowed_carvera model gcode wire transport machine carvera)
-set(allowed_grblhal model wire transport machine grblhal)
+set(allowed_grblhal model gcode wire transport machine grblhal)
 set(allowed_serial model gcode wire transport emulator machine carvera grblhal serial)
-set(allowed_ui model formats gcode document library camimport job wire transport emulator machine carvera grblhal
-    serial ui)
+set(allowed_carverarack model gcode wire transport machine carvera serial carverarack)
+# What every room of the window may reach below it: the model and the neutral machine layers.
+set(below_ui model formats gcode document library camimport job wire transport machine serial)
+set(allowed_ui_common ${below_ui} ui_common)
+foreach(room connection table history job library)
+    set(allowed_ui_${room} ${below_ui} ui_common ui_${room})
+endforeach()
+set(allowed_ui_rack ${below_ui} carverarack ui_common ui_rack)
+set(allowed_ui_machine ${below_ui} ui_common ui_connection ui_machine)
+set(allowed_ui_shell ${below_ui} ui_common ui_connection ui_table ui_machine ui_history ui_job ui_rack ui_library
+    ui_shell)
 set(allowed_app model formats gcode document library camimport job wire transport emulator machine carvera
-    grblhal serial ui app)
+    grblhal serial carverarack ui_common ui_connection ui_table ui_machine ui_history ui_job ui_rack ui_library
+    ui_shell app)
 
 file(GLOB_RECURSE sources RELATIVE ${ROOT}
     ${ROOT}/model/*.h ${ROOT}/model/*.cpp ${ROOT}/serial/*.h ${ROOT}/serial/*.cpp
@@ -70,7 +86,7 @@ foreach(source IN LISTS sources)
         if(NOT theirs)
             list(APPEND problems "${source}: \"${included}\" is in no layer")
         elseif(NOT theirs IN_LIST allowed_${own})
-            list(APPEND problems "${source} (${own}) includes \"${included}\" (${theirs}), a layer above its own")
+            list(APPEND problems "${source} (${own}) includes \"${included}\" (${theirs}), a layer it may not reach (above its own, or beside it)")
         endif()
     endforeach()
 endforeach()
@@ -80,4 +96,4 @@ if(problems)
     list(JOIN problems "\n  " text)
     message(FATAL_ERROR "layers: ${files} files, ${checked} includes:\n  ${text}")
 endif()
-message(STATUS "layers: ${files} files, ${checked} includes, none reaches up")
+message(STATUS "layers: ${files} files, ${checked} includes, none reaches up or aside")

@@ -1040,6 +1040,57 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
 </context>
 <context>
+    <name>Toffee::CarveraConsole</name>
+    <message>
+        <source>The machine is halted: it refuses &quot;%1&quot; until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
+        <translation>Die Maschine ist angehalten: Sie lehnt „%1“ ab, bis sie entsperrt ist. Prüfen Sie die Maschine und verwenden Sie dann Maschine ▸ Entsperren ($X).</translation>
+    </message>
+    <message>
+        <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
+        <translation>%1 vermisst das Werkzeug: Die Maschine fährt zum Werkzeugtaster, und die gemessene TLO wird in der Tabelle gespeichert.</translation>
+    </message>
+    <message>
+        <source>The Carvera works in millimetres only: G20 (inches) halts it. Use G21.</source>
+        <translation>Die Carvera arbeitet nur in Millimetern: G20 (Zoll) lässt sie anhalten. Verwenden Sie G21.</translation>
+    </message>
+    <message>
+        <source>M491.1 runs a break test: the machine moves to the tool setter and probes the tool. Use Machine ▸ Break Test to have the result recorded in the table.</source>
+        <translation>M491.1 führt einen Bruchtest aus: Die Maschine fährt zum Werkzeugtaster und vermisst das Werkzeug. Verwenden Sie Maschine ▸ Bruchtest, damit das Ergebnis in der Tabelle gespeichert wird.</translation>
+    </message>
+    <message>
+        <source>M493.3 needs Z (the TLO) or H (the tool tip&apos;s height above Z0).</source>
+        <translation>M493.3 braucht Z (die TLO) oder H (die Höhe der Werkzeugspitze über Z0).</translation>
+    </message>
+    <message>
+        <source>Typed, M493.3 H can set a TLO more than 100 mm off: after an M493.3 Z the community firmware measures H from the TLO instead of the tool&apos;s height. Under &quot;Set the offset by hand&quot;, choose Gauge height above Z0: Toffee works the TLO out from the position and sends it as M493.3 Z.</source>
+        <translation>Von Hand eingegeben kann M493.3 H eine Längenkorrektur setzen, die um mehr als 100 mm falsch ist: Nach einem M493.3 Z misst die Community-Firmware H von der Längenkorrektur statt von der Höhe des Werkzeugs. Wählen Sie unter „Korrektur von Hand setzen“ „Lehrenhöhe über Z0“: Toffee berechnet die Längenkorrektur aus der Position und sendet sie als M493.3 Z.</translation>
+    </message>
+    <message>
+        <source>The tool length offset</source>
+        <translation>Die Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>%1 changes the tool length offset the next cut uses. The table records it as set by hand.</source>
+        <translation>%1 ändert die Werkzeuglängenkorrektur, die der nächste Schnitt verwendet. Die Tabelle speichert sie als von Hand gesetzt.</translation>
+    </message>
+    <message>
+        <source>M493.2 needs a tool (M493.2 T2): without one the machine halts.</source>
+        <translation>M493.2 braucht ein Werkzeug (M493.2 T2): Ohne Werkzeug hält die Maschine an.</translation>
+    </message>
+    <message>
+        <source>M6 needs a tool (M6 T2).</source>
+        <translation>M6 braucht ein Werkzeug (M6 T2).</translation>
+    </message>
+    <message>
+        <source>M493.2 makes T%1 the active tool but keeps the TLO in force now (another tool&apos;s, or none): T%1&apos;s own is not set. Probe T%1 or restore its TLO before cutting.</source>
+        <translation>M493.2 macht T%1 zum aktiven Werkzeug, behält aber die jetzt wirksame TL (die eines anderen Werkzeugs oder keine): Die eigene von T%1 ist nicht gesetzt. Vermessen Sie T%1 oder stellen Sie seine TL wieder her, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.</source>
+        <translation>M6 T%1 wechselt das Werkzeug: Die Maschine fährt und vermisst dann T%1 am Werkzeugtaster.</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::ConflictDialog</name>
     <message>
         <source>not measured</source>
@@ -1364,36 +1415,8 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Die Maschine ist angehalten: Sie lehnt „%1“ ab, bis sie entsperrt ist. Prüfen Sie die Maschine und verwenden Sie dann Maschine ▸ Entsperren ($X).</translation>
     </message>
     <message>
-        <source>The Carvera works in millimetres only: G20 (inches) halts it. Use G21.</source>
-        <translation>Die Carvera arbeitet nur in Millimetern: G20 (Zoll) lässt sie anhalten. Verwenden Sie G21.</translation>
-    </message>
-    <message>
-        <source>M491.1 runs a break test: the machine moves to the tool setter and probes the tool. Use Machine ▸ Break Test to have the result recorded in the table.</source>
-        <translation>M491.1 führt einen Bruchtest aus: Die Maschine fährt zum Werkzeugtaster und vermisst das Werkzeug. Verwenden Sie Maschine ▸ Bruchtest, damit das Ergebnis in der Tabelle gespeichert wird.</translation>
-    </message>
-    <message>
-        <source>M493.3 needs Z (the TLO) or H (the tool tip&apos;s height above Z0).</source>
-        <translation>M493.3 braucht Z (die TLO) oder H (die Höhe der Werkzeugspitze über Z0).</translation>
-    </message>
-    <message>
-        <source>The tool length offset</source>
-        <translation>Die Werkzeuglängenkorrektur</translation>
-    </message>
-    <message>
-        <source>%1 changes the tool length offset the next cut uses. The table records it as set by hand.</source>
-        <translation>%1 ändert die Werkzeuglängenkorrektur, die der nächste Schnitt verwendet. Die Tabelle speichert sie als von Hand gesetzt.</translation>
-    </message>
-    <message>
-        <source>M493.2 needs a tool (M493.2 T2): without one the machine halts.</source>
-        <translation>M493.2 braucht ein Werkzeug (M493.2 T2): Ohne Werkzeug hält die Maschine an.</translation>
-    </message>
-    <message>
         <source>M6 needs a tool (M6 T2).</source>
         <translation>M6 braucht ein Werkzeug (M6 T2).</translation>
-    </message>
-    <message>
-        <source>M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.</source>
-        <translation>M6 T%1 wechselt das Werkzeug: Die Maschine fährt und vermisst dann T%1 am Werkzeugtaster.</translation>
     </message>
     <message>
         <source>%1 starts the spindle.</source>
@@ -1416,14 +1439,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>„%1“ ist keine G-Code-Zeile, die Toffee lesen kann: %2</translation>
     </message>
     <message>
-        <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
-        <translation>%1 vermisst das Werkzeug: Die Maschine fährt zum Werkzeugtaster, und die gemessene TLO wird in der Tabelle gespeichert.</translation>
-    </message>
-    <message>
-        <source>Typed, M493.3 H can set a TLO more than 100 mm off: after an M493.3 Z the community firmware measures H from the TLO instead of the tool&apos;s height. Under &quot;Set the offset by hand&quot;, choose Gauge height above Z0: Toffee works the TLO out from the position and sends it as M493.3 Z.</source>
-        <translation>Von Hand eingegeben kann M493.3 H eine Längenkorrektur setzen, die um mehr als 100 mm falsch ist: Nach einem M493.3 Z misst die Community-Firmware H von der Längenkorrektur statt von der Höhe des Werkzeugs. Wählen Sie unter „Korrektur von Hand setzen“ „Lehrenhöhe über Z0“: Toffee berechnet die Längenkorrektur aus der Position und sendet sie als M493.3 Z.</translation>
-    </message>
-    <message>
         <source>%1 writes an offset into the controller (a tool&apos;s length or a work offset); nothing moves, but the next moves use it.</source>
         <translation>%1 schreibt einen Versatz in die Steuerung (eine Werkzeuglänge oder einen Nullpunkt); nichts bewegt sich, aber die nächsten Bewegungen verwenden ihn.</translation>
     </message>
@@ -1436,8 +1451,12 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>%1 setzt den wirksamen Werkzeuglängenversatz; nichts bewegt sich, aber die nächsten Bewegungen verwenden ihn.</translation>
     </message>
     <message>
-        <source>M493.2 makes T%1 the active tool but keeps the TLO in force now (another tool&apos;s, or none): T%1&apos;s own is not set. Probe T%1 or restore its TLO before cutting.</source>
-        <translation>M493.2 macht T%1 zum aktiven Werkzeug, behält aber die jetzt wirksame TL (die eines anderen Werkzeugs oder keine): Die eigene von T%1 ist nicht gesetzt. Vermessen Sie T%1 oder stellen Sie seine TL wieder her, bevor Sie schneiden.</translation>
+        <source>Toffee works in millimetres: after G20 the controller would read every later line in inches while Toffee shows millimetres. Use G21.</source>
+        <translation>Toffee arbeitet in Millimetern: Nach G20 würde die Steuerung jede weitere Zeile in Zoll lesen, während Toffee Millimeter zeigt. Verwenden Sie G21.</translation>
+    </message>
+    <message>
+        <source>M6 T%1 changes the tool.</source>
+        <translation>M6 T%1 wechselt das Werkzeug.</translation>
     </message>
 </context>
 <context>
@@ -3965,6 +3984,18 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>%1 keeps its tool setter itself: Toffee does not jog it. Use the machine&apos;s own controls.</source>
         <translation>%1 verwaltet seinen Werkzeugtaster selbst: Toffee verfährt sie nicht im Tippbetrieb. Verwenden Sie die Bedienelemente der Maschine.</translation>
+    </message>
+    <message>
+        <source>halt %1</source>
+        <translation>Halt %1</translation>
+    </message>
+    <message>
+        <source>The machine halted (reason %1).</source>
+        <translation>Die Maschine hat angehalten (Grund %1).</translation>
+    </message>
+    <message>
+        <source>Check the machine, then Unlock ($X).</source>
+        <translation>Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
     </message>
 </context>
 <context>

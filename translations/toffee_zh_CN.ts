@@ -1040,6 +1040,57 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
 </context>
 <context>
+    <name>Toffee::CarveraConsole</name>
+    <message>
+        <source>The machine is halted: it refuses &quot;%1&quot; until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
+        <translation>机床已停机：解锁之前它拒绝执行“%1”。请检查机床，然后使用“机床 ▸ 解锁”（$X）。</translation>
+    </message>
+    <message>
+        <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
+        <translation>%1 会对刀：机床移动到对刀仪，测得的 TLO 将记录到刀具表中。</translation>
+    </message>
+    <message>
+        <source>The Carvera works in millimetres only: G20 (inches) halts it. Use G21.</source>
+        <translation>Carvera 只使用毫米：G20（英寸）会使其停机。请使用 G21。</translation>
+    </message>
+    <message>
+        <source>M491.1 runs a break test: the machine moves to the tool setter and probes the tool. Use Machine ▸ Break Test to have the result recorded in the table.</source>
+        <translation>M491.1 执行断刀检测：机床移动到对刀仪并测量刀具。请使用“机床 ▸ 断刀检测”，以便将结果记录到刀具表中。</translation>
+    </message>
+    <message>
+        <source>M493.3 needs Z (the TLO) or H (the tool tip&apos;s height above Z0).</source>
+        <translation>M493.3 需要 Z（TLO）或 H（刀尖在 Z0 以上的高度）。</translation>
+    </message>
+    <message>
+        <source>Typed, M493.3 H can set a TLO more than 100 mm off: after an M493.3 Z the community firmware measures H from the TLO instead of the tool&apos;s height. Under &quot;Set the offset by hand&quot;, choose Gauge height above Z0: Toffee works the TLO out from the position and sends it as M493.3 Z.</source>
+        <translation>手动输入的 M493.3 H 可能使 TLO 偏差超过 100 mm：在 M493.3 Z 之后，社区固件从 TLO 而不是刀具高度起算 H。请在“手动设置补偿”中选择“Z0 以上的量规高度”：Toffee 会根据位置算出 TLO 并以 M493.3 Z 发送。</translation>
+    </message>
+    <message>
+        <source>The tool length offset</source>
+        <translation>刀具长度补偿</translation>
+    </message>
+    <message>
+        <source>%1 changes the tool length offset the next cut uses. The table records it as set by hand.</source>
+        <translation>%1 会更改下一次切削所用的刀具长度补偿。刀具表会将其记录为手动设置。</translation>
+    </message>
+    <message>
+        <source>M493.2 needs a tool (M493.2 T2): without one the machine halts.</source>
+        <translation>M493.2 需要指定刀具（M493.2 T2）：否则机床会停机。</translation>
+    </message>
+    <message>
+        <source>M6 needs a tool (M6 T2).</source>
+        <translation>M6 需要指定刀具（M6 T2）。</translation>
+    </message>
+    <message>
+        <source>M493.2 makes T%1 the active tool but keeps the TLO in force now (another tool&apos;s, or none): T%1&apos;s own is not set. Probe T%1 or restore its TLO before cutting.</source>
+        <translation>M493.2 将 T%1 设为当前刀具，但保留当前生效的 TLO（另一把刀具的，或没有）：T%1 自己的 TLO 未设置。切削前请测量 T%1 或恢复其 TLO。</translation>
+    </message>
+    <message>
+        <source>M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.</source>
+        <translation>M6 T%1 会换刀：机床会移动，然后在对刀仪上对 T%1 对刀。</translation>
+    </message>
+</context>
+<context>
     <name>Toffee::ConflictDialog</name>
     <message>
         <source>not measured</source>
@@ -1364,36 +1415,8 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>机床已停机：解锁之前它拒绝执行“%1”。请检查机床，然后使用“机床 ▸ 解锁”（$X）。</translation>
     </message>
     <message>
-        <source>The Carvera works in millimetres only: G20 (inches) halts it. Use G21.</source>
-        <translation>Carvera 只使用毫米：G20（英寸）会使其停机。请使用 G21。</translation>
-    </message>
-    <message>
-        <source>M491.1 runs a break test: the machine moves to the tool setter and probes the tool. Use Machine ▸ Break Test to have the result recorded in the table.</source>
-        <translation>M491.1 执行断刀检测：机床移动到对刀仪并测量刀具。请使用“机床 ▸ 断刀检测”，以便将结果记录到刀具表中。</translation>
-    </message>
-    <message>
-        <source>M493.3 needs Z (the TLO) or H (the tool tip&apos;s height above Z0).</source>
-        <translation>M493.3 需要 Z（TLO）或 H（刀尖在 Z0 以上的高度）。</translation>
-    </message>
-    <message>
-        <source>The tool length offset</source>
-        <translation>刀具长度补偿</translation>
-    </message>
-    <message>
-        <source>%1 changes the tool length offset the next cut uses. The table records it as set by hand.</source>
-        <translation>%1 会更改下一次切削所用的刀具长度补偿。刀具表会将其记录为手动设置。</translation>
-    </message>
-    <message>
-        <source>M493.2 needs a tool (M493.2 T2): without one the machine halts.</source>
-        <translation>M493.2 需要指定刀具（M493.2 T2）：否则机床会停机。</translation>
-    </message>
-    <message>
         <source>M6 needs a tool (M6 T2).</source>
         <translation>M6 需要指定刀具（M6 T2）。</translation>
-    </message>
-    <message>
-        <source>M6 T%1 changes the tool: the machine moves, and then probes T%1 on the tool setter.</source>
-        <translation>M6 T%1 会换刀：机床会移动，然后在对刀仪上对 T%1 对刀。</translation>
     </message>
     <message>
         <source>%1 starts the spindle.</source>
@@ -1416,14 +1439,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>“%1”不是 Toffee 能读取的 G 代码行：%2</translation>
     </message>
     <message>
-        <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
-        <translation>%1 会对刀：机床移动到对刀仪，测得的 TLO 将记录到刀具表中。</translation>
-    </message>
-    <message>
-        <source>Typed, M493.3 H can set a TLO more than 100 mm off: after an M493.3 Z the community firmware measures H from the TLO instead of the tool&apos;s height. Under &quot;Set the offset by hand&quot;, choose Gauge height above Z0: Toffee works the TLO out from the position and sends it as M493.3 Z.</source>
-        <translation>手动输入的 M493.3 H 可能使 TLO 偏差超过 100 mm：在 M493.3 Z 之后，社区固件从 TLO 而不是刀具高度起算 H。请在“手动设置补偿”中选择“Z0 以上的量规高度”：Toffee 会根据位置算出 TLO 并以 M493.3 Z 发送。</translation>
-    </message>
-    <message>
         <source>%1 writes an offset into the controller (a tool&apos;s length or a work offset); nothing moves, but the next moves use it.</source>
         <translation>%1 将一个偏置写入控制器（刀具长度或工件偏置）；机器不会移动，但之后的移动会使用它。</translation>
     </message>
@@ -1436,8 +1451,12 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>%1 设置当前生效的刀具长度偏置；机器不会移动，但之后的移动会使用它。</translation>
     </message>
     <message>
-        <source>M493.2 makes T%1 the active tool but keeps the TLO in force now (another tool&apos;s, or none): T%1&apos;s own is not set. Probe T%1 or restore its TLO before cutting.</source>
-        <translation>M493.2 将 T%1 设为当前刀具，但保留当前生效的 TLO（另一把刀具的，或没有）：T%1 自己的 TLO 未设置。切削前请测量 T%1 或恢复其 TLO。</translation>
+        <source>Toffee works in millimetres: after G20 the controller would read every later line in inches while Toffee shows millimetres. Use G21.</source>
+        <translation>Toffee 使用毫米：G20 之后，控制器会以英寸读取之后的每一行，而 Toffee 显示的是毫米。请使用 G21。</translation>
+    </message>
+    <message>
+        <source>M6 T%1 changes the tool.</source>
+        <translation>M6 T%1 更换刀具。</translation>
     </message>
 </context>
 <context>
@@ -3965,6 +3984,18 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>%1 keeps its tool setter itself: Toffee does not jog it. Use the machine&apos;s own controls.</source>
         <translation>%1 自行管理对刀仪：Toffee 不对其点动。请使用机器自身的控制。</translation>
+    </message>
+    <message>
+        <source>halt %1</source>
+        <translation>停机 %1</translation>
+    </message>
+    <message>
+        <source>The machine halted (reason %1).</source>
+        <translation>机床已停机（原因 %1）。</translation>
+    </message>
+    <message>
+        <source>Check the machine, then Unlock ($X).</source>
+        <translation>检查机床，然后解锁（$X）。</translation>
     </message>
 </context>
 <context>

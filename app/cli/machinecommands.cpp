@@ -22,11 +22,10 @@
 #include "model/library/weartrend.h"
 #include "model/limits.h"
 #include "model/numberformat.h"
-#include "serial/carvera/carverareplies.h"
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
+#include "serial/machine/offsetsync.h"
 #include "serial/machineconnection.h"
-#include "serial/offsetsync.h"
 #include "serial/transport/streamtransport.h"
 
 using namespace Qt::StringLiterals;
@@ -97,9 +96,11 @@ void printTlo(Invocation &call, const SessionResult &r, const QString &trendWarn
     call.out << Qt::endl;
 }
 
-void printStatus(Invocation &call, const MachineStatus &s, const FirmwareInfo &firmware,
-    const MachineIdentity &identity, const QString &machine)
+void printStatus(
+    Invocation &call, const MachineStatus &s, const MachineConnection &connection, const QString &machine)
 {
+    const FirmwareInfo firmware = connection.firmware();
+    const MachineIdentity identity = connection.identity();
     if (call.json) {
         printJson(call,
             QJsonObject { { u"controller"_s, controllerKindName(identity.controller) },
@@ -112,9 +113,10 @@ void printStatus(Invocation &call, const MachineStatus &s, const FirmwareInfo &f
         return;
     }
     call.out << s.state;
-    if (s.haltReason)
-        call.out << " (halted: " << haltReasonName(*s.haltReason) << ". " << haltRecovery(*s.haltReason)
-                 << ")";
+    if (s.haltReason) {
+        const HaltWords words = connection.haltWords(*s.haltReason);
+        call.out << " (halted: " << words.name << ". " << words.recovery << ")";
+    }
     if (s.tool)
         call.out << "  T" << *s.tool << "  TLO " << mm(s.tlo.value_or(0));
     call.out << "  MPos " << mm(s.mpos[0]) << ' ' << mm(s.mpos[1]) << ' ' << mm(s.mpos[2]) << "  WPos "
@@ -186,9 +188,8 @@ void MachineRun::operate()
     // A change that waits for a person (change-tool, a rack's drop of a tool changed by hand): refused
     // without a terminal, said with its limit on one.
     attendToolChanges(c.session(), m_call.err, &m_loop);
-    const auto status = printed([this](const SessionResult &r) {
-        printStatus(m_call, *r.status, m_connection.firmware(), m_connection.identity(), m_options.machine);
-    });
+    const auto status = printed(
+        [this](const SessionResult &r) { printStatus(m_call, *r.status, m_connection, m_options.machine); });
     bool started = true;
     if (command == u"status")
         started = c.status(status);
@@ -232,8 +233,7 @@ void MachineRun::operate()
     else if (command == u"unlock")
         started = c.unlock(printed([this](const SessionResult &r) {
             if (const auto now = r.status ? r.status : m_connection.link()->lastStatus())
-                printStatus(
-                    m_call, *now, m_connection.firmware(), m_connection.identity(), m_options.machine);
+                printStatus(m_call, *now, m_connection, m_options.machine);
             if (!r.message.isEmpty()) // what is in force now, and why
                 m_call.err << "toffee-cli: " << r.message << Qt::endl;
         }),

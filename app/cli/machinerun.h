@@ -31,8 +31,8 @@ namespace Toffee::Cli::Machine {
 [[nodiscard]] QJsonArray axes(const std::array<double, 3> &a);
 void printTlo(
     Invocation &call, const SessionResult &r, const QString &trendWarning = {}, const QString &history = {});
-void printStatus(Invocation &call, const MachineStatus &s, const FirmwareInfo &firmware,
-    const MachineIdentity &identity, const QString &machine);
+void printStatus(
+    Invocation &call, const MachineStatus &s, const MachineConnection &connection, const QString &machine);
 void printBreakTest(Invocation &call, const SessionResult &r);
 void printSelected(Invocation &call, const SessionResult &r);
 void printLinkTimes(Invocation &call, QList<double> times, const QString &link);

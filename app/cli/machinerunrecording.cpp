@@ -22,11 +22,10 @@
 #include "model/library/weartrend.h"
 #include "model/limits.h"
 #include "model/numberformat.h"
-#include "serial/carvera/carverareplies.h"
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
+#include "serial/machine/offsetsync.h"
 #include "serial/machineconnection.h"
-#include "serial/offsetsync.h"
 #include "serial/transport/streamtransport.h"
 
 using namespace Qt::StringLiterals;

@@ -9,7 +9,7 @@
 #include "model/job/toolfacts.h"
 #include "model/numberformat.h"
 #include "model/timetext.h"
-#include "serial/racksequence.h"
+#include "serial/carvera/rack/racksequence.h"
 
 using namespace Qt::StringLiterals;
 
@@ -80,17 +80,17 @@ void showRack(Invocation &call, const MachineOptions &o, const MachineConnection
                 { u"measured_at"_s, at.isValid() ? QJsonValue(at.toString(Qt::ISODate)) : QJsonValue() },
                 { u"reference_mz"_s, number(stored ? stored->referenceMz : std::nullopt) },
                 { u"set_by_hand"_s, byHand },
-                { u"tlo_source"_s, stored ? QJsonValue(QString(tloSourceName(stored->source))) : QJsonValue() },
-                { u"broken"_s, broken },
-                { u"in_spindle"_s, spindle == tool } });
+                { u"tlo_source"_s,
+                    stored ? QJsonValue(QString(tloSourceName(stored->source))) : QJsonValue() },
+                { u"broken"_s, broken }, { u"in_spindle"_s, spindle == tool } });
             continue;
         }
         call.out << "  slot " << tool << "  T" << tool << "  "
                  << (stored ? u"TLO "_s + mm(stored->tlo) + u" mm, "_s
                                 + (at.isValid() ? ageText(at, now) : u"undated"_s)
                             : u"no stored TLO"_s)
-                 << (byHand ? " (set by hand)" : "") << (pulled ? " (read from the controller)" : "") << (broken ? "  BROKEN" : "")
-                 << (spindle == tool ? "  (in the spindle)" : "") << Qt::endl;
+                 << (byHand ? " (set by hand)" : "") << (pulled ? " (read from the controller)" : "")
+                 << (broken ? "  BROKEN" : "") << (spindle == tool ? "  (in the spindle)" : "") << Qt::endl;
     }
     if (call.json)
         printJson(call,

@@ -10,14 +10,14 @@
 #include <QTimer>
 
 #include "serial/machineconnection.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
-#include "ui/connectionpanel.h"
-#include "ui/machinedock.h"
-#include "ui/mainwindow.h"
-#include "ui/recoveryprompt.h"
-#include "ui/selftest.h"
-#include "ui/translations.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
+#include "ui/common/translations.h"
+#include "ui/connection/connectionpanel.h"
+#include "ui/machine/machinedock.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/shell/recoveryprompt.h"
+#include "ui/shell/selftest.h"
 
 using namespace Qt::StringLiterals;
 

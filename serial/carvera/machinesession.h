@@ -10,6 +10,7 @@
 #include "model/limits.h"
 #include "model/recording.h"
 #include "model/result.h"
+#include "serial/carvera/carveraconsole.h"
 #include "serial/carvera/carverareplies.h"
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
@@ -64,6 +65,15 @@ public:
     void abort() override;
     [[nodiscard]] ReplyEnd consoleReplyEnd(QByteArrayView line) const override { return replyEndFor(line); }
     [[nodiscard]] std::optional<OffsetReport> offsetsIn(const QList<QByteArray> &reply) const override;
+    [[nodiscard]] ConsoleRules consoleRules() const override { return &CarveraConsole::rules; }
+    [[nodiscard]] std::optional<ProbeResult> probeIn(const QList<QByteArray> &reply) const override
+    {
+        return lastProbe(reply);
+    }
+    [[nodiscard]] HaltWords haltWords(int reason) const override
+    {
+        return { haltReasonName(reason), haltMeaning(reason), haltRecovery(reason) };
+    }
     [[nodiscard]] QString setTloCommand(double tlo) const override;
     [[nodiscard]] QString aboveZ0Command(double height) const override;
     [[nodiscard]] QString restoreCommand(int tool, double tlo) const override;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/emulatortransport.h"
+#include "serial/emulator/emulatortransport.h"
 
 #include "serial/emulator/carveraemulator.h"
 

@@ -27,6 +27,12 @@ QString toleranceText(double tolerance)
 
 MachineController::~MachineController() = default;
 
+HaltWords MachineController::neutralHaltWords(int reason)
+{
+    return { tr("halt %1").arg(reason), tr("The machine halted (reason %1).").arg(reason),
+        tr("Check the machine, then Unlock ($X).") };
+}
+
 void MachineController::readToolTable(Done done)
 {
     refuse(std::move(done),

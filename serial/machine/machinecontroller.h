@@ -13,6 +13,7 @@
 #include "model/recording.h"
 #include "model/result.h"
 #include "model/toolsetter.h"
+#include "serial/machine/consolecheck.h"
 #include "serial/machine/machinereplies.h"
 
 class QTimer;
@@ -73,6 +74,14 @@ struct PendingToolChange
 // caller records a whole success (SessionResult::recording). Each controller implements it in its own words
 // (MachineSession: the Carvera, over M491, M493 and M6); what one cannot do, it refuses by name, and
 // firmware() says so beforehand, so that no panel or command needs to ask which controller it has.
+// A halt reason in words: its name ("PROBE_FAIL (3)"), what it means, and what clears it.
+struct HaltWords
+{
+    QString name;
+    QString meaning;
+    QString recovery;
+};
+
 class MachineController : public QObject
 {
     Q_OBJECT
@@ -151,6 +160,17 @@ public:
         Q_UNUSED(reply)
         return std::nullopt;
     }
+    // A probe's result among the lines of a reply to a typed line (the Carvera's M491 prints it), if any.
+    [[nodiscard]] virtual std::optional<ProbeResult> probeIn(const QList<QByteArray> &reply) const
+    {
+        Q_UNUSED(reply)
+        return std::nullopt;
+    }
+    // A halt reason a status report gave (the Carvera's 1-41), in this controller's words.
+    [[nodiscard]] virtual HaltWords haltWords(int reason) const { return neutralHaltWords(reason); }
+    [[nodiscard]] static HaltWords neutralHaltWords(int reason);
+    // This family's own rules for a typed line, before every controller's (ConsoleCheck); none by default.
+    [[nodiscard]] virtual ConsoleRules consoleRules() const { return nullptr; }
     virtual void jog(const std::array<double, 3> &stepMm, double feed, Done done);
     [[nodiscard]] virtual bool keepsReference() const { return true; }
     virtual void adoptReference(std::optional<double> referenceMz) { Q_UNUSED(referenceMz) }

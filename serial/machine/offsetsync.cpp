@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/offsetsync.h"
+#include "serial/machine/offsetsync.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 // history library is busy, locked, tampered with or damaged — a real SQLite file locked by this process, a
 // real PostgreSQL server (PgCluster) with a second connection holding a row lock. Each time: the command ends
 // within its limit, the table file has the measurement, the measurement is kept on this computer and said so,
-// and it reaches the library exactly once when the fault is gone. Tampered rows and versions are refused by
-// name, never read into a wrong table, never crash.
+// and it reaches the library exactly once when the fault is gone. Tampered rows and versions:
+// tst_librarytampering; what both share: tests/app/libraryfaultsfixture.h.
 #include <csignal>
 
 #include <QDir>
@@ -17,132 +17,19 @@
 #include <QSqlQuery>
 #include <QTemporaryDir>
 
-#include "tests/support/pgcluster.h"
-#include "tests/support/processes.h"
+#include "tests/app/libraryfaultsfixture.h"
 
 using namespace Toffee::Test;
 using namespace Qt::StringLiterals;
 
-namespace {
-
-QJsonObject lastJson(const QByteArray &out)
-{
-    return QJsonDocument::fromJson(out.trimmed().split('\n').last()).object();
-}
-
-// A connection of this process's own, to hold locks or tamper with rows as another program would.
-class Connection
-{
-public:
-    explicit Connection(const QString &driver)
-        : m_name(u"tamper-"_s + QString::number(++s_count))
-    {
-        m_db = QSqlDatabase::addDatabase(driver, m_name);
-    }
-    ~Connection()
-    {
-        m_db.close();
-        m_db = QSqlDatabase();
-        QSqlDatabase::removeDatabase(m_name);
-    }
-    QSqlDatabase &db() { return m_db; }
-    bool exec(const QString &sql)
-    {
-        QSqlQuery query(m_db);
-        if (query.exec(sql))
-            return true;
-        qWarning() << sql << query.lastError().text();
-        return false;
-    }
-
-private:
-    static inline int s_count = 0;
-    QString m_name;
-    QSqlDatabase m_db;
-};
-
-} // namespace
-
-class TestLibraryFaults : public QObject
+class TestLibraryFaults : public QObject, public LibraryFaultsFixture
 {
     Q_OBJECT
 
-    PgCluster m_cluster;
-    QTemporaryDir m_dir;
-    int m_case = 0;
-    QString m_table; // this case's table file
-    QString m_sqlite; // this case's SQLite library
-
-    QString spoolFolder() const { return m_dir.filePath(u"data/Toffee/Toffee/outbox"_s); }
-    // What waits in the outbox folder, for any library (each has a folder of its own there).
-    QStringList spooled() const
-    {
-        QStringList files;
-        const QDir outbox(spoolFolder());
-        for (const QString &library : outbox.entryList({ u"library-*"_s }, QDir::Dirs))
-            files += QDir(outbox.filePath(library)).entryList({ u"*.json"_s }, QDir::Files, QDir::Name);
-        return files;
-    }
-    QString pgUrl() const { return m_cluster.url(u"shop"_s, u"tools"_s); }
-
-    // The table's T1 as the file holds it.
-    QJsonObject tableTool(int number) const
-    {
-        const QJsonArray tools
-            = QJsonDocument::fromJson(readFile(m_table)).object().value(u"tools"_s).toArray();
-        for (const QJsonValue &t : tools) {
-            if (t.toObject().value(u"number"_s).toInt() == number)
-                return t.toObject();
-        }
-        return {};
-    }
-
-    int events(const QString &library, const QString &machine, QByteArray *err = nullptr) const
-    {
-        const Run run = cli({ u"--json"_s, u"--library"_s, library, u"history"_s, u"--machine"_s, machine });
-        if (err)
-            *err = run.err;
-        return run.exitCode == 0 ? int(lastJson(run.out).value(u"events"_s).toArray().size()) : -1;
-    }
-
-    bool openPg(Connection &c)
-    {
-        c.db().setHostName(m_cluster.socketDir());
-        c.db().setPort(m_cluster.port());
-        c.db().setUserName(PgCluster::adminUser());
-        c.db().setDatabaseName(u"tools"_s);
-        return c.db().open();
-    }
-
 private Q_SLOTS:
-    void initTestCase()
-    {
-        QVERIFY(m_dir.isValid());
-        QString error;
-        QVERIFY2(m_cluster.start(&error), qPrintable(error));
-        QVERIFY(m_cluster.createRole(u"shop"_s, u"Sh0p-pw"_s, true, &error));
-        QVERIFY(m_cluster.createRole(u"viewer"_s, u"V1ew-pw"_s, true, &error));
-        QVERIFY(m_cluster.createDatabase(u"tools"_s, u"shop"_s, &error));
-        QVERIFY(m_cluster.writePassFile(m_dir.filePath(u"pgpass"_s),
-            { { u"*"_s, u"shop"_s, u"Sh0p-pw"_s }, { u"*"_s, u"viewer"_s, u"V1ew-pw"_s } }, &error));
-        qputenv("PGPASSFILE", m_dir.filePath(u"pgpass"_s).toLocal8Bit());
-        // The children's own folder (their outbox, their standard library) is the test's, not the user's.
-        qputenv("XDG_DATA_HOME", m_dir.filePath(u"data"_s).toLocal8Bit());
-        const Run put = cli({ u"--library"_s, pgUrl(), u"library"_s, u"put"_s, u"--machine"_s, u"C1"_s,
-            QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json") });
-        QVERIFY2(put.exitCode == 0, put.err.constData());
-    }
+    void initTestCase() { setUpCase(); }
 
-    void init()
-    {
-        ++m_case;
-        m_table = m_dir.filePath(u"table%1.json"_s.arg(m_case));
-        m_sqlite = m_dir.filePath(u"library%1.sqlite"_s.arg(m_case));
-        QFile::remove(m_table);
-        QVERIFY(QFile::copy(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json"), m_table));
-        QFile(m_table).setPermissions(QFile::ReadOwner | QFile::WriteOwner);
-        QDir(spoolFolder()).removeRecursively();
-    }
+    void init() { setUpEach(); }
 
     // The history library (SQLite) is locked by another program while the machine measures: the probe ends
     // at its limit with the measurement in the table and kept on this computer, and it is written once.
@@ -407,176 +294,6 @@ private Q_SLOTS:
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(run.err.contains("its table \"events\" is missing"), run.err.constData());
         QCOMPARE(spooled().size(), 1);
-    }
-
-    // A library whose schema version is not one Toffee writes is refused by name: no crash, no change.
-    void aTamperedSchemaVersionIsRefused_data()
-    {
-        QTest::addColumn<QString>("version");
-        QTest::addColumn<QString>("said");
-        QTest::newRow("-1") << u"-1"_s << u"\"-1\""_s;
-        QTest::newRow("2^63-1") << u"9223372036854775807"_s << u"\"9223372036854775807\""_s;
-        QTest::newRow("2.5") << u"2.5"_s << u"\"2.5\""_s;
-        QTest::newRow("text") << u"'two'"_s << u"\"two\""_s;
-        QTest::newRow("no row") << QString() << u"is empty"_s;
-    }
-    void aTamperedSchemaVersionIsRefused()
-    {
-        QFETCH(QString, version);
-        QFETCH(QString, said);
-        QCOMPARE(events(m_sqlite, u"Carvera"_s), 0);
-        {
-            Connection tamper(u"QSQLITE"_s);
-            tamper.db().setDatabaseName(m_sqlite);
-            QVERIFY(tamper.db().open());
-            QVERIFY(tamper.exec(u"DELETE FROM toffee_schema"_s));
-            if (!version.isEmpty())
-                QVERIFY(tamper.exec(u"INSERT INTO toffee_schema (version) VALUES (%1)"_s.arg(version)));
-        }
-        const QByteArray before = readFile(m_sqlite);
-        const QByteArray table = readFile(m_table);
-        for (const QStringList &command :
-            { QStringList { u"history"_s }, QStringList { u"library"_s, u"tables"_s },
-                QStringList { u"--emulator"_s, u"--table"_s, m_table, u"probe"_s } }) {
-            const Run run = cli(QStringList { u"--library"_s, m_sqlite } + command);
-            QCOMPARE(run.exitCode, 2);
-            QVERIFY2(run.err.contains("is damaged") && run.err.contains(said.toUtf8()), run.err.constData());
-        }
-        QCOMPARE(readFile(m_table), table); // nothing was sent to the machine
-        QCOMPARE(readFile(m_sqlite), before);
-    }
-
-    // A row whose data is another tool's, or not a tool, is refused by name: `library get` writes nothing
-    // over its output, and `library tables` still lists every other machine.
-    void aTamperedRowIsRefusedByName_data()
-    {
-        QTest::addColumn<bool>("shared");
-        QTest::addColumn<QString>("update");
-        QTest::addColumn<QString>("said");
-        for (const bool shared : { false, true }) {
-            const char *where = shared ? "PostgreSQL: " : "SQLite: ";
-            QTest::addRow("%sanother tool's data", where)
-                << shared
-                << u"UPDATE tools SET data = (SELECT data FROM tools WHERE machine = 'T' AND number = 3) "
-                   u"WHERE "
-                   "machine = 'T' AND number = 1"_s
-                << u"T1's row: its data is T3's, not T1's"_s;
-            QTest::addRow("%snot JSON", where)
-                << shared << u"UPDATE tools SET data = 'abc' WHERE machine = 'T' AND number = 1"_s
-                << u"T1's row:"_s;
-            QTest::addRow("%sa tool twice in its data", where)
-                << shared
-                << u"UPDATE tools SET data = replace(data, '\"number\": 1,', '\"number\": 1, \"number\": "
-                   u"7,') "
-                   "WHERE machine = 'T' AND number = 1"_s
-                << u"T1's row:"_s;
-        }
-        // Types PostgreSQL's columns would not take; SQLite's take anything.
-        QTest::newRow("SQLite: a number out of range")
-            << false << u"UPDATE tools SET number = 99999999999 WHERE machine = 'T' AND number = 2"_s
-            << u"a row's tool number is 99999999999"_s;
-        QTest::newRow("SQLite: a version that is text")
-            << false << u"UPDATE tools SET version = 'x' WHERE machine = 'T' AND number = 1"_s
-            << u"T1's row: its version is \"x\""_s;
-        QTest::newRow("SQLite: a deleted mark of 2")
-            << false << u"UPDATE tools SET deleted = 2 WHERE machine = 'T' AND number = 1"_s
-            << u"T1's row: \"deleted\" is 2"_s;
-        QTest::newRow("SQLite: units of neither")
-            << false << u"UPDATE machine_tables SET units = 'furlongs' WHERE machine = 'T'"_s
-            << u"its units are \"furlongs\""_s;
-        QTest::newRow("PostgreSQL: 100 MB of data")
-            << true << u"UPDATE tools SET data = repeat('x', 100000000) WHERE machine = 'T' AND number = 1"_s
-            << u"T1's row: its data is 100000000 characters long"_s;
-    }
-    void aTamperedRowIsRefusedByName()
-    {
-        QFETCH(bool, shared);
-        QFETCH(QString, update);
-        QFETCH(QString, said);
-        const QString library = shared ? pgUrl() : m_sqlite;
-        const QString machine = u"T%1"_s.arg(m_case);
-        for (const QString &name : QStringList { machine, machine + u"-after"_s }) {
-            const Run put = cli({ u"--library"_s, library, u"library"_s, u"put"_s, u"--machine"_s, name,
-                QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json") });
-            QVERIFY2(put.exitCode == 0, put.err.constData());
-        }
-        {
-            Connection tamper(shared ? u"QPSQL"_s : u"QSQLITE"_s);
-            if (shared)
-                QVERIFY(openPg(tamper));
-            else {
-                tamper.db().setDatabaseName(m_sqlite);
-                QVERIFY(tamper.db().open());
-                // As a program that does not care for the schema's checks would.
-                QVERIFY(tamper.exec(u"PRAGMA ignore_check_constraints = ON"_s));
-            }
-            QVERIFY(tamper.exec(QString(update).replace(u"'T'"_s, u"'"_s + machine + u"'"_s)));
-        }
-        const QString out = m_dir.filePath(u"got%1.json"_s.arg(m_case));
-        QFile file(out);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write("the operator's file\n");
-        file.close();
-        MeasuredRun run = cliWithPeak(
-            { u"--library"_s, library, u"library"_s, u"get"_s, u"--machine"_s, machine, u"-o"_s, out });
-        QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.contains(said.toUtf8()), run.err.constData());
-        QCOMPARE(readFile(out), QByteArray("the operator's file\n"));
-        QVERIFY2(run.peakKb < 150 * 1024, qPrintable(QString::number(run.peakKb))); // the row is not fetched
-        const Run tables = cli({ u"--json"_s, u"--library"_s, library, u"library"_s, u"tables"_s });
-        QCOMPARE(tables.exitCode, 0);
-        QStringList listed;
-        for (const QJsonValue &t : lastJson(tables.out).value(u"tables"_s).toArray())
-            listed << t.toObject().value(u"machine"_s).toString();
-        QVERIFY2(listed.contains(machine) && listed.contains(machine + u"-after"_s), tables.out.constData());
-        QVERIFY2(tables.err.contains(said.toUtf8()), tables.err.constData());
-    }
-
-    // Rows another program wrote into the history are named and left out; the rest is printed as it is.
-    void hostileHistoryRowsAreNamedNotPrinted()
-    {
-        QCOMPARE(events(m_sqlite, u"Carvera"_s), 0);
-        const Run probe = cli({ u"--library"_s, m_sqlite, u"--emulator"_s, u"probe"_s });
-        QCOMPARE(probe.exitCode, 0);
-        {
-            Connection tamper(u"QSQLITE"_s);
-            tamper.db().setDatabaseName(m_sqlite);
-            QVERIFY(tamper.db().open());
-            const QString insert
-                = u"INSERT INTO events (id, machine, tool, measured_at, kind, tlo) VALUES "_s;
-            QVERIFY(tamper.exec(
-                insert + u"('huge', 'Carvera', 1, '2026-11-25T10:00:00.000Z', 'probe', 1e308)"_s));
-            QVERIFY(
-                tamper.exec(insert + u"('inf', 'Carvera', 1, '2026-11-25T10:00:01.000Z', 'probe', 9e999)"_s));
-            QVERIFY(tamper.exec(
-                insert + u"('text', 'Carvera', 1, '2026-11-25T10:00:02.000Z', 'probe', 'abc')"_s));
-            QVERIFY(tamper.exec(
-                insert + u"('tool', 'Carvera', 99999999999, '2026-11-25T10:00:03.000Z', 'probe', 1)"_s));
-        }
-        const Run run = cli({ u"--library"_s, m_sqlite, u"history"_s });
-        QCOMPARE(run.exitCode, 0);
-        QVERIFY2(run.out.contains("1 event\n"), run.out.constData());
-        for (const char *named : { "event huge: its tlo is 1e+308", "event inf: its tlo is",
-                 "event text: its tlo is \"abc\"", "event tool: its tool is 99999999999" })
-            QVERIFY2(run.err.contains(named), run.err.constData());
-        QVERIFY(!run.out.contains("T1215752191"));
-        QVERIFY(!run.out.contains("inf"));
-    }
-
-    // A role that may only read gets Toffee's words before the machine moves, not the driver's.
-    void aReadOnlyRoleIsRefusedBeforeTheMachineMoves()
-    {
-        QString error;
-        QVERIFY2(m_cluster.grantReadOnly(u"viewer"_s, u"tools"_s, &error), qPrintable(error));
-        const QByteArray table = readFile(m_table);
-        const Run run = cli({ u"--library"_s, m_cluster.url(u"viewer"_s, u"tools"_s), u"--machine"_s, u"C1"_s,
-            u"--table"_s, m_table, u"--emulator"_s, u"probe"_s });
-        QCOMPARE(run.exitCode, 2);
-        QVERIFY2(
-            run.err.contains("read-only for viewer") && run.err.contains("Nothing was sent to the machine"),
-            run.err.constData());
-        QVERIFY(!run.err.contains("QPSQL"));
-        QCOMPARE(readFile(m_table), table);
     }
 };
 

@@ -3,8 +3,8 @@
 // text (the community firmware) and in Makera's frames (community and stock), the protocol found or forced,
 // the story of a tool (status, select-tool, probe, report, set-tlo, a passing break test) with the table file
 // read after each step; a forced protocol the machine does not speak, a bad address, nothing listening and a
-// machine that never answers the connect; and `discover`, which hears the machines' beacons, malformed ones
-// and floods sent by the test included.
+// machine that never answers the connect. `discover`: tst_wifidiscover; what both share:
+// tests/app/wificlirun.h.
 #include <memory>
 
 #include <QElapsedTimer>
@@ -17,73 +17,11 @@
 #include <QTemporaryDir>
 #include <QUdpSocket>
 
-#include "serial/transport/beaconlistener.h"
-#include "tests/support/processes.h"
-#include "tests/support/silentlistener.h"
+#include "tests/app/wificlirun.h"
 
 using namespace Toffee::Test;
 using namespace Qt::StringLiterals;
-
-namespace {
-
-QJsonObject json(const Run &run)
-{
-    return QJsonDocument::fromJson(run.out.trimmed().split('\n').last()).object();
-}
-
-QString fixed3(const QJsonValue &v)
-{
-    return QString::number(v.toDouble(), 'f', 3);
-}
-
-// A UDP port nothing uses now (never 3333, where a real machine may be heard): the system picks it.
-quint16 freeUdpPort()
-{
-    QUdpSocket socket;
-    return socket.bind(QHostAddress::AnyIPv4, 0) ? socket.localPort() : 0;
-}
-
-// A TCP port on 127.0.0.1 where nothing listens.
-quint16 closedTcpPort()
-{
-    QTcpServer server;
-    return server.listen(QHostAddress::LocalHost, 0) ? server.serverPort() : 0;
-}
-
-// toffee-cli started and left to run, so that several runs, or a run and what the test sends meanwhile,
-// overlap.
-std::unique_ptr<QProcess> startCli(const QStringList &arguments)
-{
-    auto process = std::make_unique<QProcess>();
-    process->start(QStringLiteral(TOFFEE_BIN_DIR "/toffee-cli"), arguments);
-    return process;
-}
-
-// Its end (waited for unless it came already), and how long it took since `clock` started.
-Run finish(QProcess &process, qint64 *elapsedMs = nullptr, const QElapsedTimer *clock = nullptr)
-{
-    Run run;
-    if (process.state() != QProcess::NotRunning && !process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        run.err = "TEST: toffee-cli did not finish";
-        return run;
-    }
-    if (elapsedMs && clock)
-        *elapsedMs = clock->elapsed();
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
-}
-
-// The machines a `discover --json` heard, by name.
-QJsonArray machines(const Run &run)
-{
-    return json(run)[u"machines"_s].toArray();
-}
-
-} // namespace
+using namespace Toffee::Test;
 
 class TestWifiCli : public QObject
 {
@@ -257,7 +195,8 @@ private Q_SLOTS:
         Run run = finish(*unansweredShort, &ms, &clock);
         QCOMPARE(run.exitCode, 5);
         QVERIFY2(ms >= 1000 && ms < 2500, qPrintable(QString::number(ms)));
-        QVERIFY2(json(run)[u"error"_s].toString().contains(u"did not answer within 1 s"_s), run.out.constData());
+        QVERIFY2(
+            json(run)[u"error"_s].toString().contains(u"did not answer within 1 s"_s), run.out.constData());
 
         // The words here are the session's own 5 s guard on opening, which fires a moment before the
         // transport's worded "did not answer within 5 s" (reported with issue 28); what is sure is the limit.
@@ -266,8 +205,9 @@ private Q_SLOTS:
         QVERIFY2(ms >= 5000 && ms < 6500, qPrintable(QString::number(ms)));
         QVERIFY(!json(run)[u"error"_s].toString().isEmpty());
 
-        // A protocol chosen is checked by the first question, harmless to every machine: plain text chosen for
-        // a framed machine is refused before a plain byte reaches it (it would fall deaf until restarted).
+        // A protocol chosen is checked by the first question, harmless to every machine: plain text chosen
+        // for a framed machine is refused before a plain byte reaches it (it would fall deaf until
+        // restarted).
         for (QProcess *process : { textToFramed.get(), textToStock.get() }) {
             run = finish(*process, &ms, &clock);
             QCOMPARE(run.exitCode, 5);
@@ -343,147 +283,6 @@ private Q_SLOTS:
         QVERIFY2(json(run)[u"error"_s].toString().startsWith(
                      u"Nothing answers at 127.0.0.1:%1 (the connection was refused)"_s.arg(closed)),
             run.out.constData());
-    }
-
-    // Two machines announce themselves: both heard, with the address and port to connect to; a client
-    // connected to one makes it busy, in JSON and in words.
-    void discoverHearsTheMachinesAndWhichIsBusy()
-    {
-        const quint16 udp = freeUdpPort();
-        QVERIFY(udp > 0);
-        QTemporaryDir dir;
-        Emulator one(dir.filePath(u"one"_s),
-            { u"--listen"_s, u"127.0.0.1:0"_s, u"--announce"_s, QString::number(udp), u"--name"_s,
-                u"Mill_One"_s });
-        Emulator two(dir.filePath(u"two"_s),
-            { u"--listen"_s, u"127.0.0.1:0"_s, u"--announce"_s, QString::number(udp), u"--name"_s,
-                u"Mill_Two"_s });
-        QVERIFY(!one.tcp().isEmpty() && !two.tcp().isEmpty());
-        const QStringList discover { u"discover"_s, u"--seconds"_s, u"2"_s, u"--discovery-port"_s,
-            QString::number(udp) };
-        const auto verify = [&](const Run &run, bool oneBusy) {
-            QVERIFY2(run.exitCode == 0, run.err.constData());
-            const QJsonArray heard = machines(run);
-            QCOMPARE(heard.size(), 2);
-            int i = 0;
-            for (const Emulator *e : { &one, &two }) {
-                const QJsonObject m = heard.at(i++).toObject();
-                QCOMPARE(m[u"name"_s].toString(), i == 1 ? u"Mill_One"_s : u"Mill_Two"_s);
-                QCOMPARE(m[u"address"_s].toString(), u"127.0.0.1"_s);
-                QCOMPARE(m[u"port"_s].toInt(), e->tcp().section(u':', -1).toInt());
-                QCOMPARE(m[u"busy"_s].toBool(), i == 1 && oneBusy);
-            }
-        };
-        verify(cli(QStringList { u"--json"_s } + discover), false);
-
-        QTcpSocket client; // another program, connected to Mill_One
-        client.connectToHost(QHostAddress::LocalHost, quint16(one.tcp().section(u':', -1).toUInt()));
-        QVERIFY(client.waitForConnected(3000));
-        verify(cli(QStringList { u"--json"_s } + discover), true);
-
-        const Run words = cli(discover);
-        QCOMPARE(words.exitCode, 0);
-        QCOMPARE(words.out,
-            "Mill_One  " + one.tcp().toUtf8() + "  busy: another program is connected to it\nMill_Two  "
-                + two.tcp().toUtf8() + "  free\n");
-        QVERIFY(words.err.isEmpty());
-    }
-
-    // Nothing heard is no failure of the command: an empty list and exit 0 (a script reads the list), and in
-    // words what to check.
-    void discoverSaysWhenNothingIsHeard()
-    {
-        const quint16 udp = freeUdpPort();
-        const QStringList discover { u"discover"_s, u"--seconds"_s, u"1"_s, u"--discovery-port"_s,
-            QString::number(udp) };
-        QElapsedTimer clock;
-        clock.start();
-        const auto inJson = startCli(QStringList { u"--json"_s } + discover);
-        const auto inWords = startCli(discover);
-        qint64 ms = 0;
-        Run run = finish(*inJson, &ms, &clock);
-        QCOMPARE(run.exitCode, 0);
-        QVERIFY2(ms >= 1000 && ms < 3000, qPrintable(QString::number(ms)));
-        QCOMPARE(run.out.trimmed(), QByteArray(R"({"dropped":0,"machines":[]})"));
-        run = finish(*inWords);
-        QCOMPARE(run.exitCode, 0);
-        QVERIFY2(run.out.startsWith(
-                     QByteArray("No Carvera heard on UDP port " + QByteArray::number(udp) + " in 1 s.")),
-            run.out.constData());
-        QVERIFY(run.out.contains(QByteArray("no firewall blocks UDP port " + QByteArray::number(udp))));
-    }
-
-    // What is no beacon (noise, a forged field, an escape sequence for the terminal, an oversized datagram)
-    // is counted, said on stderr and ignored; the machine beside it is heard.
-    void discoverIgnoresWhatIsNoBeacon()
-    {
-        const quint16 udp = freeUdpPort();
-        const auto process = startCli({ u"--json"_s, u"discover"_s, u"--seconds"_s, u"2"_s,
-            u"--discovery-port"_s, QString::number(udp) });
-        const QList<QByteArray> malformed { "garbage", "Evil,127.0.0.1,0,0", "Evil,127.0.0.1,2222,0,1",
-            "Evil\x1b[2J,127.0.0.1,2222,0", "Evil,localhost,2222,0", "Evil,127.0.0.1,2222,busy",
-            QByteArray(300, 'E'), QByteArray("Evil,127.0.0.1\0,2222,0", 22) };
-        QUdpSocket sender;
-        // Sent all the while it listens, since when it starts listening is its own affair.
-        while (!process->waitForFinished(100)) {
-            for (const QByteArray &datagram : malformed)
-                sender.writeDatagram(datagram, QHostAddress::LocalHost, udp);
-            sender.writeDatagram("Good_Mill,127.0.0.1,2222,0", QHostAddress::LocalHost, udp);
-        }
-        const Run run = finish(*process);
-        QCOMPARE(run.exitCode, 0);
-        const QJsonArray heard = machines(run);
-        QCOMPARE(heard.size(), 1);
-        QCOMPARE(heard.at(0)[u"name"_s].toString(), u"Good_Mill"_s);
-        QCOMPARE(heard.at(0)[u"port"_s].toInt(), 2222);
-        QVERIFY2(run.err.contains("were no Carvera's beacon and were ignored"), run.err.constData());
-    }
-
-    // A flood of 1000 names from one sender (a broken or hostile device, here 127.0.0.2) holds only that
-    // sender's share of the list: the real machine, announcing itself from its own address (127.0.0.1), is
-    // listed all the same, the dropped names are said, and the command still ends on time. 64 such names once
-    // filled the list and hid the machine, without a word.
-    void discoverKeepsTheRealMachineVisibleUnderAFlood()
-    {
-        const quint16 udp = freeUdpPort();
-        QElapsedTimer clock;
-        clock.start();
-        const auto process = startCli({ u"--json"_s, u"discover"_s, u"--seconds"_s, u"2"_s,
-            u"--discovery-port"_s, QString::number(udp) });
-        QUdpSocket flood;
-        QVERIFY(flood.bind(QHostAddress(u"127.0.0.2"_s), 0));
-        QUdpSocket machine;
-        int sent = 0;
-        QElapsedTimer beacon;
-        beacon.start();
-        while (!process->waitForFinished(20)) {
-            // 100 names at a turn, the 1000 over and over: whichever arrive once it listens are plenty.
-            for (int i = 0; i < 100; ++i, ++sent) {
-                const int n = sent % 1000;
-                flood.writeDatagram(u"Flood_%1,10.0.%2.%3,2222,0"_s.arg(n, 4, 10, QChar(u'0'))
-                                        .arg(n / 250)
-                                        .arg(n % 250)
-                                        .toLatin1(),
-                    QHostAddress::LocalHost, udp);
-            }
-            if (beacon.elapsed() > 200) { // a machine announces itself once a second; here more often
-                machine.writeDatagram("Good_Mill,127.0.0.1,2222,0", QHostAddress::LocalHost, udp);
-                beacon.restart();
-            }
-        }
-        qint64 ms = clock.elapsed();
-        const Run run = finish(*process);
-        QVERIFY2(sent >= 1000, qPrintable(QString::number(sent)));
-        QCOMPARE(run.exitCode, 0);
-        QVERIFY2(ms < 4000, qPrintable(QString::number(ms)));
-        const QJsonArray heard = machines(run);
-        QStringList names;
-        for (const QJsonValue &m : heard)
-            names << m[u"name"_s].toString();
-        QVERIFY2(names.contains(u"Good_Mill"_s), qPrintable(names.join(u' ')));
-        QCOMPARE(heard.size(), 1 + Toffee::BeaconListener::kMaxNamesPerSender);
-        QVERIFY(QJsonDocument::fromJson(run.out.trimmed()).object()[u"dropped"_s].toInt() > 900);
-        QVERIFY2(run.err.contains("announcement(s) were not listed"), run.err.constData());
     }
 
 private:

@@ -10,7 +10,7 @@
 #include <QTemporaryDir>
 
 #include "model/library/historyrecorder.h"
-#include "ui/historydock.h"
+#include "ui/history/historydock.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -15,8 +15,8 @@
 #include "model/formats/tablefile.h"
 #include "tests/support/processes.h"
 #include "tests/support/programs.h"
-#include "ui/jobcheckdialog.h"
-#include "ui/mainwindow.h"
+#include "ui/job/jobcheckdialog.h"
+#include "ui/shell/mainwindow.h"
 
 using namespace Qt::StringLiterals;
 using namespace Toffee;

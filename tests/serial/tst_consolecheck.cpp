@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The console's checks: what the panels refuse, it refuses; what moves the machine, it asks about first.
+// The console's checks: what the panels refuse, it refuses; what moves the machine, it asks about first. The
+// Carvera's own rules (CarveraConsole, what MachineSession gives) before every controller's; a controller
+// with no rules of its own (grblHAL) gets only those, in words true of it.
 #include <QTest>
 
-#include "serial/consolecheck.h"
+#include "serial/carvera/carveraconsole.h"
+#include "serial/machine/consolecheck.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
@@ -82,16 +85,58 @@ private Q_SLOTS:
         QFETCH(bool, halted);
         QFETCH(Verdict, verdict);
         QFETCH(QString, reason);
-        const ConsoleCheck check = ConsoleCheck::check(line, halted);
+        const ConsoleCheck check = ConsoleCheck::check(line, halted, &CarveraConsole::rules);
         QCOMPARE(check.verdict, verdict);
         QVERIFY2(check.reason.contains(reason), qPrintable(check.reason));
     }
 
     void onlyM4933IsRecordedAsAnOffset()
     {
-        QVERIFY(ConsoleCheck::check(u"M493.3 Z12.5"_s, false).setsTlo);
-        QVERIFY(!ConsoleCheck::check(u"M493.4"_s, false).setsTlo);
-        QVERIFY(!ConsoleCheck::check(u"M6 T2"_s, false).setsTlo);
+        const ConsoleRules carvera = &CarveraConsole::rules;
+        QVERIFY(ConsoleCheck::check(u"M493.3 Z12.5"_s, false, carvera).setsTlo);
+        QVERIFY(!ConsoleCheck::check(u"M493.4"_s, false, carvera).setsTlo);
+        QVERIFY(!ConsoleCheck::check(u"M6 T2"_s, false, carvera).setsTlo);
+        // Nor on a controller whose M493.3 is no command at all: nothing is recorded as its offset.
+        QVERIFY(!ConsoleCheck::check(u"M493.3 Z12.5"_s, false, nullptr).setsTlo);
+    }
+
+    // A controller with no rules of its own: none of the Carvera's words, its inches or its halted M-codes.
+    void judgesEachLineWithoutTheCarverasRules_data()
+    {
+        QTest::addColumn<QString>("line");
+        QTest::addColumn<bool>("halted");
+        QTest::addColumn<Verdict>("verdict");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("inches, in words not the Carvera's")
+            << u"G20"_s << false << Verdict::Refuse << u"Toffee works in millimetres"_s;
+        QTest::newRow("M6 asked about, not said to probe")
+            << u"M6 T2"_s << false << Verdict::Confirm << u"M6 T2 changes the tool."_s;
+        QTest::newRow("M6 with no tool") << u"M6"_s << false << Verdict::Refuse << u"M6 T2"_s;
+        QTest::newRow("a tool beyond the table")
+            << u"M6 T1000000"_s << false << Verdict::Refuse << u"not a tool number"_s;
+        QTest::newRow("tool table entry")
+            << u"G10 L1 P2 Z10"_s << false << Verdict::Confirm << u"writes an offset into the controller"_s;
+        QTest::newRow("rapid") << u"G0 Z10"_s << false << Verdict::Confirm << u"moves the machine"_s;
+        // Halted: no G-code or M-code at all (grblHAL's alarm locks them out), only Unlock.
+        QTest::newRow("spindle off while halted") << u"M5"_s << true << Verdict::Refuse << u"Unlock ($X)"_s;
+        QTest::newRow("unlock while halted") << u"$X"_s << true << Verdict::Send << QString();
+        // The Carvera's M-codes are not this controller's: sent for it to answer, asked about first when an
+        // axis word rides along (as any line with one is), never recorded as an offset.
+        QTest::newRow("the Carvera's M493.3")
+            << u"M493.3 Z-30.488"_s << false << Verdict::Confirm << u"moves the machine"_s;
+        QTest::newRow("the Carvera's M491.1") << u"M491.1 H0.01"_s << false << Verdict::Send << QString();
+    }
+
+    void judgesEachLineWithoutTheCarverasRules()
+    {
+        QFETCH(QString, line);
+        QFETCH(bool, halted);
+        QFETCH(Verdict, verdict);
+        QFETCH(QString, reason);
+        const ConsoleCheck check = ConsoleCheck::check(line, halted, nullptr);
+        QCOMPARE(check.verdict, verdict);
+        QVERIFY2(check.reason.contains(reason), qPrintable(check.reason));
+        QVERIFY(!check.measures);
     }
 };
 

@@ -7,10 +7,10 @@
 
 #include "model/numberformat.h"
 #include "model/tooltable.h"
+#include "serial/carvera/rack/racksequence.h"
 #include "serial/emulator/carveraemulator.h"
 #include "serial/machine/machinelink.h"
 #include "serial/machineconnection.h"
-#include "serial/racksequence.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -20,10 +20,10 @@
 
 #include "model/document/tooldocument.h"
 #include "model/library/historyrecorder.h"
-#include "ui/conflictdialog.h"
-#include "ui/machinetabledialog.h"
-#include "ui/mainwindow.h"
-#include "ui/tooltablepanel.h"
+#include "ui/library/conflictdialog.h"
+#include "ui/library/machinetabledialog.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/table/tooltablepanel.h"
 
 namespace Toffee::Test {
 

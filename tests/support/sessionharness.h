@@ -13,8 +13,8 @@
 
 #include "serial/carvera/machinesession.h"
 #include "serial/emulator/carveraemulator.h"
+#include "serial/emulator/emulatortransport.h"
 #include "serial/emulator/tcpserver.h"
-#include "serial/emulatortransport.h"
 #include "serial/machine/machinelink.h"
 #include "serial/transport/tcptransport.h"
 

@@ -8,6 +8,8 @@
 #include <QFileDialog>
 #include <QLabel>
 #include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -17,12 +19,31 @@
 #include "serial/emulator/carveraemulator.h"
 #include "serial/machineconnection.h"
 #include "tests/support/messageboxes.h"
-#include "ui/machinedock.h"
-#include "ui/mainwindow.h"
+#include "ui/machine/machinedock.h"
+#include "ui/shell/mainwindow.h"
 
 namespace Toffee::Test {
 
 using namespace Qt::StringLiterals;
+
+// The six-tool Carvera table every first run opens.
+inline const QString kExampleTable = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
+
+// A window test of its own: its settings and folders apart from the user's and from other tests
+// (QStandardPaths' test mode, under `application`). Call from initTestCase; startFresh from init, for a first
+// start's window.
+inline void isolateWindowTest(const QString &application)
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication::setOrganizationName(QStringLiteral("ToffeeTest"));
+    QApplication::setApplicationName(application);
+}
+
+// Each story starts from the defaults (a first start), whatever the last one remembered.
+inline void startFresh()
+{
+    QSettings().clear();
+}
 
 struct Station
 {

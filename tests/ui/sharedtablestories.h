@@ -12,13 +12,13 @@
 #include "serial/machineconnection.h"
 #include "tests/support/librarystation.h"
 #include "tests/support/messageboxes.h"
-#include "ui/historydock.h"
+#include "tests/support/station.h"
+#include "ui/history/historydock.h"
 
 namespace Toffee::Test {
 
 using namespace Qt::StringLiterals;
 
-inline const QString kExampleTable = QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json");
 inline const QString kMachine = QStringLiteral("Mill 1"); // the history's machine name as well (AppSettings)
 constexpr int kLiveMs = 1000; // the "within a second"
 

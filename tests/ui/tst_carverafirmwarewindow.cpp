@@ -21,7 +21,7 @@
 #include "tests/support/processes.h"
 #include "tests/support/station.h"
 #include "tests/support/windowsteps.h"
-#include "ui/consoledock.h"
+#include "ui/machine/consoledock.h"
 
 using namespace Toffee;
 using namespace Toffee::Test;

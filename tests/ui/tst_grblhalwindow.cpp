@@ -24,13 +24,13 @@
 #include "tests/support/processes.h"
 #include "tests/support/station.h"
 #include "tests/support/windowsteps.h"
-#include "ui/appsettings.h"
-#include "ui/connectionpanel.h"
-#include "ui/jobcheckdialog.h"
-#include "ui/offsetsyncdialog.h"
-#include "ui/rackpanel.h"
-#include "ui/toolsetterdialog.h"
-#include "ui/tooltablepanel.h"
+#include "ui/common/appsettings.h"
+#include "ui/connection/connectionpanel.h"
+#include "ui/job/jobcheckdialog.h"
+#include "ui/machine/offsetsyncdialog.h"
+#include "ui/machine/toolsetterdialog.h"
+#include "ui/rack/rackpanel.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Toffee::Test;

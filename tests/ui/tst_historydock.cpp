@@ -19,8 +19,8 @@
 
 #include "model/library/historyrecorder.h"
 #include "model/modules.h"
-#include "ui/appearance.h"
-#include "ui/historydock.h"
+#include "ui/common/appearance.h"
+#include "ui/history/historydock.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The preview of a CAM import (ui/importpreviewdialog.cpp): each tool with what happens to it, the counts,
-// findable widgets, and the keyboard.
+// The preview of a CAM import (ui/table/importpreviewdialog.cpp): each tool with what happens to it, the
+// counts, findable widgets, and the keyboard.
 #include <QApplication>
 #include <QDialogButtonBox>
 #include <QHeaderView>
@@ -11,7 +11,7 @@
 #include <QTreeWidget>
 
 #include "model/camimport/importpreview.h"
-#include "ui/importpreviewdialog.h"
+#include "ui/table/importpreviewdialog.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

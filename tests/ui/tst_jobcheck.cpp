@@ -28,10 +28,10 @@
 #include "model/document/tooldocument.h"
 #include "tests/support/programs.h"
 #include "tests/support/testclock.h"
-#include "ui/jobcheckdialog.h"
-#include "ui/jobpreparedialog.h"
-#include "ui/jobreportmodels.h"
-#include "ui/mainwindow.h"
+#include "ui/job/jobcheckdialog.h"
+#include "ui/job/jobpreparedialog.h"
+#include "ui/job/jobreportmodels.h"
+#include "ui/shell/mainwindow.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -16,10 +16,10 @@
 
 #include "model/document/tooldocument.h"
 #include "model/library/historyrecorder.h"
-#include "ui/appsettings.h"
-#include "ui/conflictdialog.h"
-#include "ui/historysettingsdialog.h"
-#include "ui/mainwindow.h"
+#include "ui/common/appsettings.h"
+#include "ui/history/historysettingsdialog.h"
+#include "ui/library/conflictdialog.h"
+#include "ui/shell/mainwindow.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -21,10 +21,10 @@
 #include "serial/emulator/carveraemulator.h"
 #include "serial/machineconnection.h"
 #include "tests/support/messageboxes.h"
-#include "ui/appsettings.h"
-#include "ui/consoledock.h"
-#include "ui/mainwindow.h"
-#include "ui/tooltablepanel.h"
+#include "ui/common/appsettings.h"
+#include "ui/machine/consoledock.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -26,12 +26,12 @@
 #include "model/library/library.h"
 #include "tests/support/messageboxes.h"
 #include "tests/support/station.h"
-#include "ui/historydock.h"
-#include "ui/jobcheckdialog.h"
-#include "ui/jobreportmodels.h"
-#include "ui/tlopanel.h"
-#include "ui/tooltablepanel.h"
-#include "ui/translations.h"
+#include "ui/common/translations.h"
+#include "ui/history/historydock.h"
+#include "ui/job/jobcheckdialog.h"
+#include "ui/job/jobreportmodels.h"
+#include "ui/machine/tlopanel.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -2,6 +2,7 @@
 
 #include <QAbstractButton>
 #include <QAbstractSpinBox>
+#include <QAbstractTextDocumentLayout>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -18,11 +19,13 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBlock>
 #include <QTextBrowser>
 #include <QTimer>
 #include <QToolButton>
@@ -33,11 +36,11 @@
 #include "model/modules.h"
 #include "tests/support/messageboxes.h"
 #include "tests/support/testtables.h"
-#include "ui/appsettings.h"
-#include "ui/exportdialog.h"
-#include "ui/guidedialog.h"
-#include "ui/mainwindow.h"
-#include "ui/tooltablepanel.h"
+#include "ui/common/appsettings.h"
+#include "ui/shell/guidedialog.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/table/exportdialog.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
@@ -109,8 +112,32 @@ private Q_SLOTS:
         QVERIFY2(
             image.isValid() && !image.value<QImage>().isNull(), "the guide's first screenshot is not shown");
         QVERIFY(guidePath().endsWith(u"/share/doc/toffee/guide/GUIDE.md"_s));
-        if (const QString folder = qEnvironmentVariable("TOFFEE_SCREENSHOTS"); !folder.isEmpty())
+        const QString folder = qEnvironmentVariable("TOFFEE_SCREENSHOTS");
+        if (!folder.isEmpty())
             QVERIFY(guide->grab().save(folder + u"/guide.png"_s));
+        // Every chapter is there and reached by scrolling, each one further down than the one before; with
+        // TOFFEE_SCREENSHOTS set, each page is saved as the reader sees it (docs/screenshots/guide-N.png).
+        const QStringList chapters { u"1. First start"_s, u"2. Reaching the machine"_s,
+            u"3. Probing a tool, and the reference"_s, u"4. Break tests, and what to do after one"_s,
+            u"5. Restoring a known TLO"_s, u"6. New cutters and tool life"_s,
+            u"7. Checking a job, and preparing it"_s, u"8. Tools from your CAM program"_s,
+            u"9. The Carvera's rack"_s, u"10. A shop's library"_s };
+        guide->resize(900, 700);
+        int previous = -1;
+        for (qsizetype i = 0; i < chapters.size(); ++i) {
+            const QTextCursor heading = browser->document()->find(chapters.at(i));
+            QVERIFY2(!heading.isNull(), qPrintable(chapters.at(i)));
+            const int top
+                = int(browser->document()->documentLayout()->blockBoundingRect(heading.block()).top());
+            QVERIFY2(top > previous, qPrintable(chapters.at(i)));
+            previous = top;
+            const int before = browser->verticalScrollBar()->value();
+            browser->verticalScrollBar()->setValue(top);
+            // The last chapters share the last page: one picture of it.
+            if (!folder.isEmpty() && (i == 0 || browser->verticalScrollBar()->value() != before))
+                QVERIFY(guide->grab().save(folder + u"/guide-%1.png"_s.arg(i + 1)));
+        }
+        QVERIFY(browser->verticalScrollBar()->value() > 0);
         Q_EMIT browser->anchorClicked(QUrl(u"WINDOW.md"_s));
         auto *note = guide->findChild<QLabel *>(u"guideNote"_s);
         QTRY_VERIFY(note->isVisible());

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The window and its files (ui/mainwindowfiles.cpp): edits a crash left behind, a full disk, a FIFO, a
+// The window and its files (ui/shell/mainwindowfiles.cpp): edits a crash left behind, a full disk, a FIFO, a
 // recovery folder of garbage, a file changed on disk.
 #include <sys/stat.h>
 
@@ -36,10 +36,10 @@
 #include "tests/support/fulldisk.h"
 #include "tests/support/messageboxes.h"
 #include "tests/support/testtables.h"
-#include "ui/exportdialog.h"
-#include "ui/mainwindow.h"
-#include "ui/recoveryprompt.h"
-#include "ui/tooltablepanel.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/shell/recoveryprompt.h"
+#include "ui/table/exportdialog.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// File ▸ Import of CAM libraries in the window (ui/mainwindowfiles.cpp): through the preview into the table
-// as one undo step, Cancel, and a malformed library refused with its place.
+// File ▸ Import of CAM libraries in the window (ui/shell/mainwindowfiles.cpp): through the preview into the
+// table as one undo step, Cancel, and a malformed library refused with its place.
 #include <QAction>
 #include <QApplication>
 #include <QFileDialog>
@@ -19,8 +19,8 @@
 #include "model/document/tooltablemodel.h"
 #include "tests/support/camfiles.h"
 #include "tests/support/messageboxes.h"
-#include "ui/importpreviewdialog.h"
-#include "ui/mainwindow.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/table/importpreviewdialog.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -9,11 +9,11 @@
 #include <QTableView>
 #include <QTest>
 
-#include "ui/consoledock.h"
-#include "ui/historydock.h"
-#include "ui/machinedock.h"
-#include "ui/mainwindow.h"
-#include "ui/tooltablepanel.h"
+#include "ui/history/historydock.h"
+#include "ui/machine/consoledock.h"
+#include "ui/machine/machinedock.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -14,8 +14,8 @@
 
 #include "model/numberformat.h"
 #include "tests/support/rackstation.h"
-#include "ui/appsettings.h"
-#include "ui/rackpanel.h"
+#include "ui/common/appsettings.h"
+#include "ui/rack/rackpanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

@@ -7,7 +7,7 @@
 #include <QStandardPaths>
 
 #include "tests/support/rackstation.h"
-#include "ui/rackpanel.h"
+#include "ui/rack/rackpanel.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;

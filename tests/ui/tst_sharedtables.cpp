@@ -20,7 +20,7 @@
 
 #include "model/formats/tablefile.h"
 #include "tests/ui/sharedtablestories.h"
-#include "ui/appsettings.h"
+#include "ui/common/appsettings.h"
 
 using namespace Toffee;
 using namespace Toffee::Test;

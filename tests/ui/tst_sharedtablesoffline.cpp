@@ -9,7 +9,7 @@
 
 #include "tests/support/pgcluster.h"
 #include "tests/ui/sharedtablestories.h"
-#include "ui/appsettings.h"
+#include "ui/common/appsettings.h"
 
 using namespace Toffee;
 using namespace Toffee::Test;

@@ -11,9 +11,9 @@
 
 #include "tests/support/pgcluster.h"
 #include "tests/ui/sharedtablestories.h"
-#include "ui/appsettings.h"
-#include "ui/historysettingsdialog.h"
-#include "ui/librarystatuslabel.h"
+#include "ui/common/appsettings.h"
+#include "ui/history/historysettingsdialog.h"
+#include "ui/library/librarystatuslabel.h"
 
 using namespace Toffee;
 using namespace Toffee::Test;

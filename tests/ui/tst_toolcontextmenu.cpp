@@ -19,7 +19,7 @@
 #include "serial/emulator/carveraemulator.h"
 #include "tests/support/messageboxes.h"
 #include "tests/support/station.h"
-#include "ui/tooltablepanel.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Toffee;
 using namespace Toffee::Test;

@@ -23,9 +23,9 @@
 #include "model/gcode/gcodeinterpreter.h"
 #include "model/job/jobchecker.h"
 #include "model/job/jobpreparer.h"
-#include "ui/appearance.h"
-#include "ui/mainwindow.h"
-#include "ui/translations.h"
+#include "ui/common/appearance.h"
+#include "ui/common/translations.h"
+#include "ui/shell/mainwindow.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
@@ -143,7 +143,8 @@ private Q_SLOTS:
                 continue;
             const QString context = xml.readElementText();
             ++contexts;
-            if (context.isEmpty()) { // lupdate could not tell whose tr() it was (an alias, D::tr): none at run time
+            if (context.isEmpty()) { // lupdate could not tell whose tr() it was (an alias, D::tr): none at
+                                     // run time
                 wrong << u"(a context without a name)"_s;
                 continue;
             }

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window over Wi-Fi, as an owner reaches a Carvera: the connection panel's Wi-Fi choice lists the
 // machines heard announcing themselves (name, address, busy), connects to one chosen or typed, remembers it,
-// names a busy machine before connecting; a link lost in the middle of a probe records nothing, offers to
-// reconnect, and on reconnecting says whether the probe happened. The emulator serves TCP in this process
+// names a busy machine before connecting, and keeps reading the strip while a box is open (a lost link:
+// tst_wifilostlink). The emulator serves TCP in this process
 // (its beacons to a port of the test's own); the Carvera's real firmware (TOFFEE_CARVERA_PEER), framed as
 // Makera's firmware, is found by its own beacon on UDP 3333, connected to, and probes and break-tests a tool.
 // With TOFFEE_SCREENSHOTS set, the window is saved there.
@@ -21,97 +21,20 @@
 #include <QTimer>
 #include <QUdpSocket>
 
-#include "serial/emulator/beaconsender.h"
-#include "serial/emulator/tcpserver.h"
-#include "serial/transport/beaconlistener.h"
-#include "tests/support/carverapeer.h"
-#include "tests/support/station.h"
-#include "tests/support/windowsteps.h"
-#include "ui/appsettings.h"
-#include "ui/connectionpanel.h"
+#include "tests/ui/networkmachine.h"
 
 using namespace Toffee;
 using namespace Toffee::Test;
 using namespace Qt::StringLiterals;
-
-namespace {
-
-// A UDP port nobody uses now: the test's own discovery port (never the machines' 3333).
-quint16 freeUdpPort()
-{
-    QUdpSocket probe;
-    if (!probe.bind(QHostAddress::LocalHost, 0))
-        qFatal("cannot bind a UDP port on 127.0.0.1");
-    return probe.localPort();
-}
-
-// A Carvera on the network, as this test's own: the emulator behind a TCP port, announcing itself.
-struct NetworkMachine
-{
-    CarveraEmulator emulator;
-    TcpServer server;
-    std::unique_ptr<BeaconSender> beacon;
-
-    NetworkMachine(const QString &name, quint16 discoveryPort, bool framed)
-        : server(&emulator, framed)
-    {
-        if (!server.listen(QHostAddress::LocalHost, 0))
-            qFatal("cannot listen on 127.0.0.1: %s", qPrintable(server.errorString()));
-        Beacon b;
-        b.name = name;
-        b.address = u"127.0.0.1"_s;
-        b.port = server.port();
-        beacon = std::make_unique<BeaconSender>(b, QHostAddress::LocalHost, discoveryPort);
-        QObject::connect(&server, &TcpServer::busyChanged, beacon.get(), &BeaconSender::setBusy);
-        beacon->start();
-    }
-    QString address() const { return u"127.0.0.1:"_s + QString::number(server.port()); }
-};
-
-ConnectionPanel *panelOf(Station &s)
-{
-    return s.window.findChild<ConnectionPanel *>();
-}
-
-// The Wi-Fi list's entries as the operator reads them.
-QStringList heard(Station &s)
-{
-    auto *combo = s.find<QComboBox>(u"wifiMachineCombo"_s);
-    QStringList items;
-    for (int i = 0; i < combo->count(); ++i)
-        items << combo->itemText(i);
-    return items;
-}
-
-void chooseHeard(Station &s, const QString &startsWith)
-{
-    auto *combo = s.find<QComboBox>(u"wifiMachineCombo"_s);
-    auto isHeard = [&] {
-        const QStringList items = heard(s); // one list: begin and end of the same one
-        return std::any_of(
-            items.cbegin(), items.cend(), [&](const QString &i) { return i.startsWith(startsWith); });
-    };
-    QTRY_VERIFY2_WITH_TIMEOUT(isHeard(), qPrintable(u"heard: "_s + heard(s).join(u" | "_s)), 10000);
-    for (int i = 0; i < combo->count(); ++i) {
-        if (combo->itemText(i).startsWith(startsWith))
-            combo->setCurrentIndex(i);
-    }
-}
-
-} // namespace
+using namespace Toffee::Test;
 
 class TestWifiWindow : public QObject
 {
     Q_OBJECT
 
 private Q_SLOTS:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QApplication::setOrganizationName(u"ToffeeTest"_s);
-        QApplication::setApplicationName(u"tst_wifiwindow"_s);
-    }
-    void init() { QSettings().clear(); }
+    void initTestCase() { Test::isolateWindowTest(u"tst_wifiwindow"_s); }
+    void init() { Test::startFresh(); }
 
     // Heard, chosen, connected, probed; the next start remembers the machine.
     void aMachineHeardIsConnectedByWifiAndRemembered()
@@ -303,137 +226,6 @@ private Q_SLOTS:
         // Busy with us now: not shown as another program's.
         QCOMPARE(s.find<QComboBox>(u"wifiMachineCombo"_s)->currentText(),
             u"Carvera_Busy — "_s + machine.address());
-    }
-
-    // The link goes while nothing runs: the window says so and offers to reconnect all the same.
-    void aLinkLostWhileIdle()
-    {
-        NetworkMachine machine(u"Carvera_Idle"_s, freeUdpPort(), false);
-        Station s;
-        ConnectionTarget target;
-        target.emulator = false;
-        target.host = u"127.0.0.1"_s;
-        target.tcpPort = machine.server.port();
-        s.window.connection()->connectTo(target);
-        QVERIFY(waitConnected(s));
-        QString lost;
-        answerBoxTitled(u"The link to the machine was lost"_s, u"reconnectButton"_s, &lost);
-        machine.server.dropAll();
-        QTRY_VERIFY_WITH_TIMEOUT(!lost.isEmpty(), 10000);
-        QVERIFY2(lost.contains(u"closed the connection"_s) && lost.contains(u"Nothing was running"_s),
-            qPrintable(lost));
-        QVERIFY(waitConnected(s));
-        QVERIFY(!s.window.connection()->interruption());
-    }
-
-    // What the machine holds after a lost link, against what it held before, in words.
-    void theVerdictAfterALostLink_data()
-    {
-        QTest::addColumn<double>("tloBefore");
-        QTest::addColumn<double>("tloNow");
-        QTest::addColumn<bool>("currentMzNow");
-        QTest::addColumn<QString>("says");
-        QTest::newRow("changed") << -30.2 << -30.488 << true << u"It ran on the machine"_s;
-        QTest::newRow("the same") << -30.2 << -30.2 << true << u"Nothing changed on the machine"_s;
-        QTest::newRow("restarted") << -30.2 << 0.0 << false << u"as after a restart"_s;
-        QTest::newRow("nothing before") << 0.0 << 0.0 << false << u"Nothing changed on the machine"_s;
-    }
-    void theVerdictAfterALostLink()
-    {
-        QFETCH(double, tloBefore);
-        QFETCH(double, tloNow);
-        QFETCH(bool, currentMzNow);
-        QFETCH(QString, says);
-        const MachineConnection::Interruption before { u"Probing T2…"_s, u"127.0.0.1:2222"_s, 2, tloBefore,
-            std::nullopt };
-        SessionResult now;
-        now.tool = 2;
-        now.tlo
-            = TloReading { tloNow, -115.34, currentMzNow ? std::optional(-115.34 + tloNow) : std::nullopt };
-        const QString verdict = MachineConnection::interruptionVerdict(before, now);
-        QVERIFY2(verdict.contains(says), qPrintable(verdict));
-        QVERIFY2(verdict.contains(u"Before \"Probing T2…\" the machine had T2"_s), qPrintable(verdict));
-    }
-
-    // The machine leaves the network in the middle of a probe: nothing recorded, a reconnect offered, and
-    // on reconnecting the window says whether the probe happened, from the offsets the machine reads back.
-    void aLinkLostMidProbe_data()
-    {
-        QTest::addColumn<bool>("probeRuns");
-        QTest::newRow("the machine went on and probed") << true;
-        QTest::newRow("the probe never reached the machine") << false;
-    }
-    void aLinkLostMidProbe()
-    {
-        QFETCH(bool, probeRuns);
-        NetworkMachine machine(u"Carvera_Lost"_s, freeUdpPort(), true);
-        Station s;
-        QVERIFY(s.window.openFile(QStringLiteral(TOFFEE_SOURCE_DIR "/resources/examples/example.json")));
-        ConnectionTarget target;
-        target.emulator = false;
-        target.host = u"127.0.0.1"_s;
-        target.tcpPort = machine.server.port();
-        QString refused;
-        QObject::connect(s.window.connection(), &MachineConnection::connectFailed, &s.window,
-            [&refused](const QString &m) { refused = m; });
-        answerBoxTitled(u"Cannot connect to the machine"_s, {}, &refused);
-        s.window.connection()->connectTo(target);
-        QVERIFY2(waitConnected(s) || refused.isEmpty(), qPrintable(refused));
-        QVERIFY(waitConnected(s));
-        QTRY_COMPARE(s.text(u"machineStateLabel"_s), u"Idle"_s);
-
-        // T1 measured first (the reference), then T2 goes in.
-        QVERIFY(s.window.connection()->selectTool(1, {}));
-        QVERIFY(waitIdle(s));
-        s.probe();
-        QVERIFY(waitIdle(s));
-        QVERIFY(s.window.connection()->selectTool(2, {}));
-        QVERIFY(waitIdle(s));
-        QTRY_COMPARE(s.text(u"activeToolLabel"_s), u"T2"_s);
-        const ToolTable before = s.table();
-        const double tloBefore = machine.emulator.tlo();
-
-        if (probeRuns) // a probe that takes a while, and the link drops in the middle of it
-            machine.emulator.setTiming({ 1500, 0, 0 });
-        else // the link drops as the probe's first command arrives
-            machine.emulator.injectFault(CarveraEmulator::Fault::CloseLink, "M491");
-
-        QString lost;
-        QString verdict;
-        answerNextBox(QMessageBox::Yes); // Probe T2?
-        // One box: the link was lost, nothing written, Reconnect? Then what the machine holds now.
-        answerBoxTitled(u"The link to the machine was lost"_s, u"reconnectButton"_s, &lost);
-        s.trigger(u"actionProbe"_s);
-        if (probeRuns) {
-            QTRY_VERIFY(machine.emulator.isBusy());
-            machine.server.dropAll();
-        }
-        QTRY_VERIFY_WITH_TIMEOUT(!lost.isEmpty(), 10000);
-        QVERIFY2(lost.contains(u"during \"Probing T2…\""_s) && lost.contains(u"Nothing of it was written"_s)
-                && lost.contains(u"Reconnect"_s),
-            qPrintable(lost));
-        QCOMPARE(s.table(), before); // nothing the machine did not confirm
-
-        answerBoxTitled(u"Connected again"_s, {}, &verdict);
-        refused.clear();
-        answerBoxTitled(u"Cannot connect to the machine"_s, {}, &refused);
-        QTRY_VERIFY_WITH_TIMEOUT(!verdict.isEmpty() || !refused.isEmpty(), 15000);
-        QVERIFY2(refused.isEmpty(), qPrintable(refused));
-        QVERIFY(waitConnected(s));
-        if (probeRuns) {
-            QTRY_VERIFY(!machine.emulator.isBusy());
-            QVERIFY(machine.emulator.tlo() != tloBefore);
-            QVERIFY2(verdict.contains(u"It ran on the machine"_s), qPrintable(verdict));
-        } else {
-            QCOMPARE(machine.emulator.tlo(), tloBefore);
-            QVERIFY2(verdict.contains(u"Nothing changed on the machine"_s), qPrintable(verdict));
-        }
-        QVERIFY2(verdict.contains(u"Before \"Probing T2…\" the machine had T2"_s), qPrintable(verdict));
-        QVERIFY(!s.window.connection()->interruption());
-        QCOMPARE(s.table(), before); // still nothing recorded: probing again records it
-        s.probe();
-        QVERIFY(waitIdle(s));
-        QCOMPARE(*s.table().find(2)->measuredTlo, machine.emulator.tlo());
     }
 
     // The Carvera's real firmware, framed as Makera's current firmware: found by its beacon on UDP 3333 (the

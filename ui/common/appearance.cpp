@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/appearance.h"
+#include "ui/common/appearance.h"
 
 #include <QApplication>
 #include <QEvent>

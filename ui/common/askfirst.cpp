@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/askfirst.h"
+#include "ui/common/askfirst.h"
 
 #include <QPushButton>
 

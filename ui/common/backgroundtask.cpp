@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/backgroundtask.h"
+#include "ui/common/backgroundtask.h"
 
 #include <QThread>
 #include <QTimer>

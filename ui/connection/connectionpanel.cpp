@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/connectionpanel.h"
-#include "ui/askfirst.h"
+#include "ui/connection/connectionpanel.h"
+#include "ui/common/askfirst.h"
 
 #include <QComboBox>
 #include <QGridLayout>
@@ -13,9 +13,9 @@
 
 #include "serial/machineconnection.h"
 #include "serial/transport/beaconlistener.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
-#include "ui/connectionpanelwifi.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
+#include "ui/connection/connectionpanelwifi.h"
 
 using namespace Qt::StringLiterals;
 

@@ -7,8 +7,8 @@
 
 #include "serial/machineconnection.h"
 #include "serial/transport/beaconlistener.h"
-#include "ui/connectionpanel.h"
-#include "ui/connectionpanelwifi.h"
+#include "ui/connection/connectionpanel.h"
+#include "ui/connection/connectionpanelwifi.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/historydock.h"
+#include "ui/history/historydock.h"
 
 #include <algorithm>
 
@@ -20,8 +20,8 @@
 #include "model/library/historyrecorder.h"
 #include "model/modules.h"
 #include "model/numberformat.h"
-#include "ui/appearance.h"
-#include "ui/historychart/historychart.h"
+#include "ui/common/appearance.h"
+#include "ui/history/chart/historychart.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/historysettingsdialog.h"
+#include "ui/history/historysettingsdialog.h"
 
 #include <QDialogButtonBox>
 #include <QFileDialog>
@@ -12,7 +12,7 @@
 #include <QSysInfo>
 
 #include "model/library/library.h"
-#include "ui/appsettings.h"
+#include "ui/common/appsettings.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/jobcheckdialog.h"
+#include "ui/job/jobcheckdialog.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -24,11 +24,11 @@
 #include "model/job/programexcerpt.h"
 #include "model/numberformat.h"
 #include "model/timetext.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
-#include "ui/backgroundtask.h"
-#include "ui/jobpreparedialog.h"
-#include "ui/jobreportmodels.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
+#include "ui/common/backgroundtask.h"
+#include "ui/job/jobpreparedialog.h"
+#include "ui/job/jobreportmodels.h"
 
 using namespace Qt::StringLiterals;
 

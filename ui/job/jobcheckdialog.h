@@ -7,7 +7,7 @@
 #include <QDialog>
 
 #include "model/job/jobreport.h"
-#include "ui/jobsources.h"
+#include "ui/job/jobsources.h"
 
 class QCheckBox;
 class QComboBox;

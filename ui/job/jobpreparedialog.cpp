@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/jobpreparedialog.h"
+#include "ui/job/jobpreparedialog.h"
 
 #include <QCheckBox>
 #include <QDialogButtonBox>
@@ -18,9 +18,9 @@
 #include "model/job/jobchecker.h"
 #include "model/job/jobprepare.h"
 #include "model/limits.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
-#include "ui/backgroundtask.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
+#include "ui/common/backgroundtask.h"
 
 using namespace Qt::StringLiterals;
 

@@ -7,7 +7,7 @@
 
 #include "model/gcode/dialect.h"
 #include "model/job/jobpreparer.h"
-#include "ui/jobsources.h"
+#include "ui/job/jobsources.h"
 
 class QCheckBox;
 class QDoubleSpinBox;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/jobreportmodels.h"
+#include "ui/job/jobreportmodels.h"
 
 #include <QBrush>
 #include <QColor>

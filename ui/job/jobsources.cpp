@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/jobsources.h"
+#include "ui/job/jobsources.h"
 
 #include <QFileInfo>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/conflictdialog.h"
+#include "ui/library/conflictdialog.h"
 
 #include <algorithm>
 
@@ -32,8 +32,8 @@ QString tloText(const Tool &tool, Units units)
     if (!tool.measuredTlo)
         return ConflictDialog::tr("not measured");
     const QString source = tool.tloSource == TloSource::Manual ? ConflictDialog::tr("set by hand")
-        : tool.tloSource == TloSource::Pulled                  ? ConflictDialog::tr("read from the controller")
-                                                               : ConflictDialog::tr("probed");
+        : tool.tloSource == TloSource::Pulled ? ConflictDialog::tr("read from the controller")
+                                              : ConflictDialog::tr("probed");
     const QString when = tool.measuredAt.isValid()
         ? QLocale().toString(tool.measuredAt.toLocalTime(), QLocale::ShortFormat)
         : ConflictDialog::tr("time unknown");
@@ -44,17 +44,21 @@ QString tloText(const Tool &tool, Units units)
 QList<std::pair<QString, QString>> fields(const Tool &tool, Units units)
 {
     return {
-        { ConflictDialog::tr("Description"), tool.description.isEmpty() ? ConflictDialog::tr("(none)") : tool.description },
+        { ConflictDialog::tr("Description"),
+            tool.description.isEmpty() ? ConflictDialog::tr("(none)") : tool.description },
         { ConflictDialog::tr("Pocket"), QString::number(tool.pocket) },
         { ConflictDialog::tr("TLO"), tloText(tool, units) },
         { ConflictDialog::tr("Length"), length(tool.lengthGeometry, units) },
         { ConflictDialog::tr("Length wear"), length(tool.lengthWear, units) },
         { ConflictDialog::tr("Radius"), length(tool.radiusGeometry, units) },
         { ConflictDialog::tr("Radius wear"), length(tool.radiusWear, units) },
-        { ConflictDialog::tr("Break test"), tool.breakTestFailed ? ConflictDialog::tr("failed") : ConflictDialog::tr("passed or not run") },
-        { ConflictDialog::tr("Reference MCS Z"), tool.referenceMz ? length(*tool.referenceMz, units) : ConflictDialog::tr("unknown") },
+        { ConflictDialog::tr("Break test"),
+            tool.breakTestFailed ? ConflictDialog::tr("failed") : ConflictDialog::tr("passed or not run") },
+        { ConflictDialog::tr("Reference MCS Z"),
+            tool.referenceMz ? length(*tool.referenceMz, units) : ConflictDialog::tr("unknown") },
         { ConflictDialog::tr("Notes"), tool.notes.isEmpty() ? ConflictDialog::tr("(none)") : tool.notes },
-        { ConflictDialog::tr("LinuxCNC fields"), tool.linuxCncExtra.isEmpty() ? ConflictDialog::tr("(none)") : tool.linuxCncExtra },
+        { ConflictDialog::tr("LinuxCNC fields"),
+            tool.linuxCncExtra.isEmpty() ? ConflictDialog::tr("(none)") : tool.linuxCncExtra },
     };
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/librarystatuslabel.h"
+#include "ui/library/librarystatuslabel.h"
 
 #include "model/library/historyrecorder.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/machinetabledialog.h"
+#include "ui/library/machinetabledialog.h"
 
 #include <QDialogButtonBox>
 #include <QLabel>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/breaktestpanel.h"
+#include "ui/machine/breaktestpanel.h"
 
 #include <cmath>
 
@@ -12,9 +12,9 @@
 
 #include "model/document/tooldocument.h"
 #include "serial/machineconnection.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
-#include "ui/brokentool.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
+#include "ui/machine/brokentool.h"
 
 using namespace Qt::StringLiterals;
 
@@ -128,8 +128,9 @@ QString BreakTestPanel::referenceWarning() const
             .arg(millimetres(*machine), millimetres(stored->tlo))
             .arg(*tool);
     if (stored->source == TloSource::Pulled)
-        return tr("T%1's TLO %2 was read from the controller's table (%3), not measured: if that value is not "
-                  "the tool's real length, the test reports the tool broken.")
+        return tr(
+            "T%1's TLO %2 was read from the controller's table (%3), not measured: if that value is not "
+            "the tool's real length, the test reports the tool broken.")
             .arg(*tool)
             .arg(millimetres(stored->tlo),
                 QLocale().toString(stored->measuredAt.toLocalTime(), QLocale::ShortFormat));

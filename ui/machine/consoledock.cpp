@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/consoledock.h"
+#include "ui/machine/consoledock.h"
 
 #include <QKeyEvent>
 #include <QLineEdit>
@@ -10,10 +10,9 @@
 
 #include "model/clock.h"
 #include "model/document/tooldocument.h"
-#include "serial/carvera/carverareplies.h"
-#include "serial/consolecheck.h"
+#include "serial/machine/consolecheck.h"
 #include "serial/machineconnection.h"
-#include "ui/appearance.h"
+#include "ui/common/appearance.h"
 
 using namespace Qt::StringLiterals;
 
@@ -121,7 +120,8 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
         return;
     }
     // The console is no back door: it refuses what the panels refuse, and asks before anything that moves.
-    const ConsoleCheck check = ConsoleCheck::check(command, m_connection->isHalted());
+    const ConsoleCheck check
+        = ConsoleCheck::check(command, m_connection->isHalted(), m_connection->session()->consoleRules());
     if (check.verdict == ConsoleCheck::Verdict::Refuse) {
         note(tr("not sent: %1").arg(check.reason));
         return;
@@ -175,12 +175,10 @@ void ConsoleDock::sendCommand(const QString &command, bool confirm)
         note(tr("the machine is busy with %1; wait for it").arg(m_connection->operation()));
 }
 
-bool ConsoleDock::probed(const CommandReply &reply)
+bool ConsoleDock::probed(const CommandReply &reply) const
 {
-    return std::any_of(reply.lines.cbegin(), reply.lines.cend(), [](const QByteArray &l) {
-        const auto p = parseProbeResult(l);
-        return p && p->triggered;
-    });
+    const auto probe = m_connection->session() ? m_connection->session()->probeIn(reply.lines) : std::nullopt;
+    return probe && probe->triggered;
 }
 
 // A probe typed here (M491, M6 T) is recorded like one from the panel: the offsets it left, for the tool in

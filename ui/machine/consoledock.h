@@ -37,7 +37,7 @@ private:
     void append(const QByteArray &line, bool outgoing);
     void note(const QString &text);
     void applyFilter();
-    [[nodiscard]] static bool probed(const CommandReply &reply);
+    [[nodiscard]] bool probed(const CommandReply &reply) const;
     void recordProbe(std::optional<int> tool);
 
     static constexpr int kMaxLines = 5000;

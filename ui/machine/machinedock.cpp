@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/machinedock.h"
+#include "ui/machine/machinedock.h"
 
 #include <QGroupBox>
 #include <QLabel>
@@ -9,11 +9,11 @@
 
 #include "serial/machine/machinecontroller.h"
 #include "serial/machineconnection.h"
-#include "ui/breaktestpanel.h"
-#include "ui/connectionpanel.h"
-#include "ui/offseteditor.h"
-#include "ui/probepanel.h"
-#include "ui/tlopanel.h"
+#include "ui/connection/connectionpanel.h"
+#include "ui/machine/breaktestpanel.h"
+#include "ui/machine/offseteditor.h"
+#include "ui/machine/probepanel.h"
+#include "ui/machine/tlopanel.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/offseteditor.h"
+#include "ui/machine/offseteditor.h"
 
 #include <cmath>
 
@@ -12,8 +12,8 @@
 
 #include "model/document/tooldocument.h"
 #include "serial/machineconnection.h"
-#include "ui/appearance.h"
-#include "ui/brokentool.h"
+#include "ui/common/appearance.h"
+#include "ui/machine/brokentool.h"
 
 using namespace Qt::StringLiterals;
 

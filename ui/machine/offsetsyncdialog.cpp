@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/offsetsyncdialog.h"
+#include "ui/machine/offsetsyncdialog.h"
 
 #include <QDialogButtonBox>
 #include <QHeaderView>

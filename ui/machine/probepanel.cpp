@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/probepanel.h"
+#include "ui/machine/probepanel.h"
 
 #include <cmath>
 
@@ -13,9 +13,9 @@
 #include "model/clock.h"
 #include "model/document/tooldocument.h"
 #include "serial/machineconnection.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
-#include "ui/brokentool.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
+#include "ui/machine/brokentool.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/tlopanel.h"
+#include "ui/machine/tlopanel.h"
 
 #include <cmath>
 
@@ -14,7 +14,7 @@
 #include "model/clock.h"
 #include "model/document/tooldocument.h"
 #include "serial/machineconnection.h"
-#include "ui/appearance.h"
+#include "ui/common/appearance.h"
 
 using namespace Qt::StringLiterals;
 
@@ -215,10 +215,12 @@ void TloPanel::showHalt()
                   .arg(m_activeTool && *m_activeTool >= 0 ? u"T"_s + QString::number(*m_activeTool)
                                                           : tr("the tool"),
                       m_machineTlo ? millimetres(*m_machineTlo) : tr("its TLO"), millimetres(*restore))
-            : !m_connection->haltSaid().isEmpty() ? tr("The machine said: “%1”").arg(m_connection->haltSaid())
-                + u'\n' + (reason ? haltRecovery(*reason) : tr("Check the machine, then Unlock ($X)."))
+            : !m_connection->haltSaid().isEmpty()
+            ? tr("The machine said: “%1”").arg(m_connection->haltSaid()) + u'\n'
+                + (reason ? m_connection->haltWords(*reason).recovery
+                          : tr("Check the machine, then Unlock ($X)."))
             : reason
-            ? haltMeaning(*reason) + u'\n' + haltRecovery(*reason)
+            ? m_connection->haltWords(*reason).meaning + u'\n' + m_connection->haltWords(*reason).recovery
             : tr("The machine reported an alarm.") + u'\n' + tr("Check the machine, then Unlock ($X).");
         m_halt->setText(
             why + u' ' + tr("Nothing that moves the machine or changes its offsets runs until then."));

@@ -7,7 +7,7 @@
 #include <QTimer>
 #include <QWidget>
 
-#include "serial/carvera/carverareplies.h"
+#include "serial/machine/machinereplies.h"
 
 class QLabel;
 class QPushButton;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/toolchangewait.h"
+#include "ui/machine/toolchangewait.h"
 
 #include <QMessageBox>
 #include <QPushButton>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/toolsetterdialog.h"
+#include "ui/machine/toolsetterdialog.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -15,7 +15,7 @@
 #include "model/limits.h"
 #include "model/numberformat.h"
 #include "serial/machineconnection.h"
-#include "ui/askfirst.h"
+#include "ui/common/askfirst.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/rackpanel.h"
+#include "ui/rack/rackpanel.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -15,8 +15,8 @@
 #include "model/document/tooldocument.h"
 #include "model/job/jobchecker.h"
 #include "serial/machineconnection.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
 
 using namespace Qt::StringLiterals;
 

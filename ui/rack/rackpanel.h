@@ -8,7 +8,7 @@
 #include <QPointer>
 #include <QWidget>
 
-#include "serial/racksequence.h"
+#include "serial/carvera/rack/racksequence.h"
 
 class QCheckBox;
 class QDoubleSpinBox;

@@ -2,7 +2,7 @@
 // Load Tool: a change to one tool (asked about first, naming what moves), measured or given its stored TLO,
 // and recorded; its Cancel, and the sequence's.
 #include "model/clock.h"
-#include "ui/rackpanel.h"
+#include "ui/rack/rackpanel.h"
 
 #include <QCheckBox>
 #include <QLabel>
@@ -15,7 +15,7 @@
 #include "model/numberformat.h"
 #include "model/timetext.h"
 #include "serial/machineconnection.h"
-#include "ui/appsettings.h"
+#include "ui/common/appsettings.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Measure Rack and Check Rack: a RackSequence asked about first, followed step by step, each measurement and
 // verdict recorded as it comes, and its end told in words.
-#include "ui/rackpanel.h"
+#include "ui/rack/rackpanel.h"
 
 #include <algorithm>
 

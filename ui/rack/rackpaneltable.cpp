@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Rack panel's table: a row per rack tool, with what the table knows of it and this session's result.
-#include "ui/rackpanel.h"
+#include "ui/rack/rackpanel.h"
 
 #include <QFont>
 #include <QHeaderView>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/aboutbox.h"
+#include "ui/shell/aboutbox.h"
 
 #include <QCoreApplication>
 #include <QMessageBox>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/guidedialog.h"
+#include "ui/shell/guidedialog.h"
 
 #include <QDesktopServices>
 #include <QDialogButtonBox>

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's machine tables in the library: File ▸ Open Machine Table…, Save to Library…, Save of such a
 // table (tool by tool over the versions read), and a table that may only be read.
-#include "ui/mainwindow.h"
+#include "ui/shell/mainwindow.h"
 
 #include <QDockWidget>
 
 #include "serial/machineconnection.h"
-#include "ui/machinedock.h"
-#include "ui/rackpanel.h"
+#include "ui/machine/machinedock.h"
+#include "ui/rack/rackpanel.h"
 
 #include <algorithm>
 
@@ -21,10 +21,10 @@
 #include "model/document/filewatcher.h"
 #include "model/document/tooldocument.h"
 #include "model/library/historyrecorder.h"
-#include "ui/appsettings.h"
-#include "ui/librarystatuslabel.h"
-#include "ui/machinetabledialog.h"
-#include "ui/tooltablepanel.h"
+#include "ui/common/appsettings.h"
+#include "ui/library/librarystatuslabel.h"
+#include "ui/library/machinetabledialog.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
 

@@ -2,7 +2,7 @@
 // Other stations' changes reaching an open machine table: taken in at once where this station has no
 // unsaved edit, put to the operator where both changed a tool; and the outbox's writes once the shared
 // library is back.
-#include "ui/mainwindow.h"
+#include "ui/shell/mainwindow.h"
 
 #include <QStatusBar>
 #include <QTimer>
@@ -10,9 +10,9 @@
 
 #include "model/document/tooldocument.h"
 #include "model/library/historyrecorder.h"
-#include "ui/appsettings.h"
-#include "ui/conflictdialog.h"
-#include "ui/tooltablepanel.h"
+#include "ui/common/appsettings.h"
+#include "ui/library/conflictdialog.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
 

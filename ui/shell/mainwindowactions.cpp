@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's menus, toolbar and their actions, each with its shortcut and icon.
-#include "ui/aboutbox.h"
-#include "ui/guidedialog.h"
-#include "ui/mainwindow.h"
+#include "ui/shell/aboutbox.h"
+#include "ui/shell/guidedialog.h"
+#include "ui/shell/mainwindow.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -29,20 +29,20 @@
 #include "model/document/tooldocument.h"
 #include "model/library/historyrecorder.h"
 #include "serial/machineconnection.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
-#include "ui/breaktestpanel.h"
-#include "ui/connectionpanel.h"
-#include "ui/consoledock.h"
-#include "ui/exportdialog.h"
-#include "ui/historydock.h"
-#include "ui/machinedock.h"
-#include "ui/probepanel.h"
-#include "ui/rackpanel.h"
-#include "ui/tlopanel.h"
-#include "ui/toolchangewait.h"
-#include "ui/toolcontextmenu.h"
-#include "ui/tooltablepanel.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
+#include "ui/connection/connectionpanel.h"
+#include "ui/history/historydock.h"
+#include "ui/machine/breaktestpanel.h"
+#include "ui/machine/consoledock.h"
+#include "ui/machine/machinedock.h"
+#include "ui/machine/probepanel.h"
+#include "ui/machine/tlopanel.h"
+#include "ui/machine/toolchangewait.h"
+#include "ui/rack/rackpanel.h"
+#include "ui/shell/toolcontextmenu.h"
+#include "ui/table/exportdialog.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
 

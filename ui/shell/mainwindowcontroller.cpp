@@ -3,8 +3,8 @@
 // and reference, given to it on connecting, and its own tool table pushed from the file or pulled into it
 // (Machine ▸ Push Offsets…, Pull Offsets…), each with a preview of the differences first.
 #include "model/clock.h"
-#include "ui/askfirst.h"
-#include "ui/mainwindow.h"
+#include "ui/common/askfirst.h"
+#include "ui/shell/mainwindow.h"
 
 #include <cmath>
 
@@ -17,13 +17,13 @@
 #include "model/library/historyrecorder.h"
 #include "model/library/library.h"
 #include "model/numberformat.h"
+#include "serial/machine/offsetsync.h"
 #include "serial/machineconnection.h"
-#include "serial/offsetsync.h"
-#include "ui/appsettings.h"
-#include "ui/connectionpanel.h"
-#include "ui/machinedock.h"
-#include "ui/offsetsyncdialog.h"
-#include "ui/toolsetterdialog.h"
+#include "ui/common/appsettings.h"
+#include "ui/connection/connectionpanel.h"
+#include "ui/machine/machinedock.h"
+#include "ui/machine/offsetsyncdialog.h"
+#include "ui/machine/toolsetterdialog.h"
 
 using namespace Qt::StringLiterals;
 

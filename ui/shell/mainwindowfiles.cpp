@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's file side: open, save, save as (with the question before a format that drops fields), import,
 // export, recent files, unsaved changes, and a file changed by another program.
-#include "ui/mainwindow.h"
+#include "ui/shell/mainwindow.h"
 
 #include <QFileDialog>
 #include <QFileInfo>
@@ -14,8 +14,8 @@
 #include "model/camimport/importpreview.h"
 #include "model/document/filewatcher.h"
 #include "model/document/tooldocument.h"
-#include "ui/appsettings.h"
-#include "ui/importpreviewdialog.h"
+#include "ui/common/appsettings.h"
+#include "ui/table/importpreviewdialog.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's history side: every recording goes to the history library, a probe off its tool's trend is
 // pointed out, and a library that cannot be written is told once while the measurements wait.
-#include "ui/mainwindow.h"
+#include "ui/shell/mainwindow.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -21,11 +21,11 @@
 #include "model/library/programuse.h"
 #include "model/library/weartrend.h"
 #include "serial/machineconnection.h"
-#include "ui/appsettings.h"
-#include "ui/historydock.h"
-#include "ui/historysettingsdialog.h"
-#include "ui/librarystatuslabel.h"
-#include "ui/tooltablepanel.h"
+#include "ui/common/appsettings.h"
+#include "ui/history/historydock.h"
+#include "ui/history/historysettingsdialog.h"
+#include "ui/library/librarystatuslabel.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's jobs: File ▸ Check Job…, and a program dropped on the window.
-#include "ui/mainwindow.h"
+#include "ui/shell/mainwindow.h"
 
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -12,8 +12,8 @@
 #include "model/formats/tablefile.h"
 #include "model/library/historyrecorder.h"
 #include "serial/machineconnection.h"
-#include "ui/appsettings.h"
-#include "ui/jobcheckdialog.h"
+#include "ui/common/appsettings.h"
+#include "ui/job/jobcheckdialog.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The table's own edits from the window: add a tool, remove tools (asked first when measured), a new cutter.
-#include "ui/mainwindow.h"
+#include "ui/shell/mainwindow.h"
 
 #include <QAction>
 #include <QApplication>
@@ -26,20 +26,20 @@
 #include "model/document/tooldocument.h"
 #include "model/library/historyrecorder.h"
 #include "serial/machineconnection.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
-#include "ui/breaktestpanel.h"
-#include "ui/connectionpanel.h"
-#include "ui/consoledock.h"
-#include "ui/exportdialog.h"
-#include "ui/historydock.h"
-#include "ui/machinedock.h"
-#include "ui/probepanel.h"
-#include "ui/rackpanel.h"
-#include "ui/tlopanel.h"
-#include "ui/toolchangewait.h"
-#include "ui/toolcontextmenu.h"
-#include "ui/tooltablepanel.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
+#include "ui/connection/connectionpanel.h"
+#include "ui/history/historydock.h"
+#include "ui/machine/breaktestpanel.h"
+#include "ui/machine/consoledock.h"
+#include "ui/machine/machinedock.h"
+#include "ui/machine/probepanel.h"
+#include "ui/machine/tlopanel.h"
+#include "ui/machine/toolchangewait.h"
+#include "ui/rack/rackpanel.h"
+#include "ui/shell/toolcontextmenu.h"
+#include "ui/table/exportdialog.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
 

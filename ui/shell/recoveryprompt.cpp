@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/recoveryprompt.h"
+#include "ui/shell/recoveryprompt.h"
 
 #include <QFileInfo>
 #include <QFontMetrics>
@@ -10,7 +10,7 @@
 
 #include "model/document/autosave.h"
 #include "model/document/tooldocument.h"
-#include "ui/mainwindow.h"
+#include "ui/shell/mainwindow.h"
 
 using namespace Qt::StringLiterals;
 

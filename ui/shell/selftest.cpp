@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/selftest.h"
+#include "ui/shell/selftest.h"
 
 #include <QImage>
 #include <QPixmap>
@@ -7,9 +7,9 @@
 #include "model/document/tooldocument.h"
 #include "model/numberformat.h"
 #include "serial/machineconnection.h"
-#include "ui/machinedock.h"
-#include "ui/mainwindow.h"
-#include "ui/probepanel.h"
+#include "ui/machine/machinedock.h"
+#include "ui/machine/probepanel.h"
+#include "ui/shell/mainwindow.h"
 
 using namespace Qt::StringLiterals;
 

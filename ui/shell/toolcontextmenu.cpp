@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/toolcontextmenu.h"
-#include "ui/askfirst.h"
+#include "ui/shell/toolcontextmenu.h"
+#include "ui/common/askfirst.h"
 
 #include <QAction>
 #include <QMainWindow>
@@ -13,10 +13,10 @@
 #include "model/document/tooldocument.h"
 #include "model/numberformat.h"
 #include "serial/machineconnection.h"
-#include "ui/machinedock.h"
-#include "ui/offseteditor.h"
-#include "ui/probepanel.h"
-#include "ui/tooltablepanel.h"
+#include "ui/machine/machinedock.h"
+#include "ui/machine/offseteditor.h"
+#include "ui/machine/probepanel.h"
+#include "ui/table/tooltablepanel.h"
 
 using namespace Qt::StringLiterals;
 

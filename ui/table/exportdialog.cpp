@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/exportdialog.h"
+#include "ui/table/exportdialog.h"
 
 #include <QClipboard>
 #include <QComboBox>
@@ -15,8 +15,8 @@
 
 #include "model/formats/fileio.h"
 #include "model/gcode/dialect.h"
-#include "ui/appearance.h"
-#include "ui/appsettings.h"
+#include "ui/common/appearance.h"
+#include "ui/common/appsettings.h"
 
 using namespace Qt::StringLiterals;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/importpreviewdialog.h"
+#include "ui/table/importpreviewdialog.h"
 
 #include <algorithm>
 

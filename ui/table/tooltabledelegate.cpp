@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/tooltabledelegate.h"
+#include "ui/table/tooltabledelegate.h"
 
 #include <QLineEdit>
 

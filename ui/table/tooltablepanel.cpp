@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/tooltablepanel.h"
+#include "ui/table/tooltablepanel.h"
 
 #include <algorithm>
 
@@ -14,7 +14,7 @@
 #include "model/document/tooltablemodel.h"
 #include "model/limits.h"
 #include "model/numberformat.h"
-#include "ui/tooltabledelegate.h"
+#include "ui/table/tooltabledelegate.h"
 
 using namespace Qt::StringLiterals;
 

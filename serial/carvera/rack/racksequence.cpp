@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "serial/racksequence.h"
+#include "serial/carvera/rack/racksequence.h"
 
 #include <algorithm>
 #include <cmath>

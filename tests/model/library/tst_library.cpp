@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The history library on real SQLite files: what it keeps, what it refuses, and that nothing is lost to a
-// killed writer, a second writer, a lock or a full disk.
+// The history library on real SQLite files: what it keeps, what it reads back, what it brings up to date and
+// what it refuses. That nothing is lost to a killed writer, a second writer, a lock or a full disk:
+// tst_librarywriters.
 #include <csignal>
 
 #include <QCryptographicHash>
@@ -14,71 +15,11 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "model/library/historyrecorder.h"
-#include "model/library/library.h"
-#include "model/library/spool.h"
-#include "model/toolsetter.h"
-#include "tests/support/fulldisk.h"
+#include "tests/model/library/libraryevents.h"
 
 using namespace Toffee;
 using namespace Qt::StringLiterals;
-
-namespace {
-
-QDateTime at(int minutes)
-{
-    return QDateTime(QDate(2026, 11, 23), QTime(8, 0), Qt::UTC).addSecs(minutes * 60).addMSecs(125);
-}
-
-HistoryEvent makeEvent(int tool, EventKind kind, int minutes, double tlo)
-{
-    HistoryEvent e;
-    e.id = HistoryEvent::newId();
-    e.machine = u"Carvera"_s;
-    e.tool = tool;
-    e.at = at(minutes);
-    e.kind = kind;
-    e.tlo = tlo;
-    return e;
-}
-
-QByteArray digest(const QString &path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {};
-    return QCryptographicHash::hash(file.readAll(), QCryptographicHash::Sha256);
-}
-
-// A second connection of the test's own, straight through Qt SQL.
-struct RawConnection
-{
-    QString name;
-    explicit RawConnection(const QString &path, const QString &id)
-        : name(id)
-    {
-        QSqlDatabase db = QSqlDatabase::addDatabase(u"QSQLITE"_s, name);
-        db.setDatabaseName(path);
-        db.open();
-    }
-    ~RawConnection()
-    {
-        QSqlDatabase::database(name, false).close();
-        QSqlDatabase::removeDatabase(name);
-    }
-    bool exec(const QString &sql) const
-    {
-        QSqlQuery query(QSqlDatabase::database(name));
-        return query.exec(sql);
-    }
-    QVariant value(const QString &sql) const
-    {
-        QSqlQuery query(QSqlDatabase::database(name));
-        return query.exec(sql) && query.next() ? query.value(0) : QVariant();
-    }
-};
-
-} // namespace
+using namespace Toffee::Test;
 
 class TestLibrary : public QObject
 {
@@ -276,10 +217,10 @@ private Q_SLOTS:
     }
 
     // A name stands for one machine: bound to the first identity it meets (new), the same again (same),
-    // another refused without a change (other, naming the one it is), bound anew only when the operator says it
-    // is the same machine reached another way. A version-4 library (no identities) is brought up to date with
-    // every event and machine kept, its machines bound to nothing until one is met; read-only, it is read and
-    // binds nothing.
+    // another refused without a change (other, naming the one it is), bound anew only when the operator says
+    // it is the same machine reached another way. A version-4 library (no identities) is brought up to date
+    // with every event and machine kept, its machines bound to nothing until one is met; read-only, it is
+    // read and binds nothing.
     void aNameStandsForOneMachine()
     {
         QTemporaryDir dir;
@@ -314,7 +255,8 @@ private Q_SLOTS:
         const auto other = l.bindMachine(u"Carvera"_s, u"grblhal:127.0.0.1:23"_s);
         QCOMPARE(other.value().kind, Kind::Other);
         QCOMPARE(other.value().boundTo, u"carvera:/dev/ttyACM0"_s);
-        QCOMPARE(l.bindMachine(u"Carvera"_s, u"carvera:/dev/ttyACM0"_s).value().kind, Kind::Same); // unchanged
+        QCOMPARE(
+            l.bindMachine(u"Carvera"_s, u"carvera:/dev/ttyACM0"_s).value().kind, Kind::Same); // unchanged
         QCOMPARE(l.bindMachine(u"LongMill"_s, u"grblhal:127.0.0.1:23"_s).value().kind, Kind::New);
         QCOMPARE(l.bindMachine(u"Carvera"_s, u"carvera:192.168.1.57:2222"_s, true).value().kind, Kind::Same);
         QCOMPARE(l.bindMachine(u"Carvera"_s, u"carvera:192.168.1.57:2222"_s).value().kind, Kind::Same);
@@ -401,152 +343,6 @@ private Q_SLOTS:
         QVERIFY(!LibraryLocation::parse(u"sqlite:"_s));
         QVERIFY(!LibraryLocation::parse(u"mysql://server/db"_s));
         QVERIFY(LibraryLocation::standard().path.endsWith(u"/library.sqlite"_s));
-    }
-
-    void aKilledWriterLeavesEveryCommittedEvent()
-    {
-        QTemporaryDir dir;
-        const QString path = dir.filePath(u"l.sqlite"_s);
-        QProcess worker;
-        worker.start(QStringLiteral(TOFFEE_WORKER), { path, u"Carvera"_s, u"5"_s, u"10000"_s });
-        QVERIFY(worker.waitForStarted());
-        QByteArray reported;
-        while (reported.count('\n') < 300 && worker.waitForReadyRead(20000))
-            reported += worker.readAllStandardOutput();
-        ::kill(pid_t(worker.processId()), SIGKILL);
-        QVERIFY(worker.waitForFinished());
-        QCOMPARE(worker.exitStatus(), QProcess::CrashExit); // killed before it wrote all 10,000
-        reported += worker.readAllStandardOutput();
-        QStringList ids = QString::fromLatin1(reported).split(u'\n', Qt::SkipEmptyParts);
-        if (!reported.endsWith('\n'))
-            ids.removeLast(); // a line cut by the kill
-        QVERIFY(ids.size() >= 300);
-        auto library = Library::open({ path });
-        QVERIFY2(library, qPrintable(library.error().message));
-        const auto events = library.value()->history({ u"Carvera"_s, 5, {}, 0 });
-        QVERIFY(events);
-        QSet<QString> present;
-        for (const HistoryEvent &e : events.value())
-            present.insert(e.id);
-        for (const QString &id : ids)
-            QVERIFY2(present.contains(id), qPrintable(id));
-        QVERIFY(events.value().size() < 10000);
-    }
-
-    void twoWritersAtOnceLoseNothing()
-    {
-        QTemporaryDir dir;
-        const QString path = dir.filePath(u"l.sqlite"_s);
-        QVERIFY(Library::open({ path })); // created before both start
-        QProcess a;
-        QProcess b;
-        a.start(QStringLiteral(TOFFEE_WORKER), { path, u"Carvera"_s, u"1"_s, u"1500"_s });
-        b.start(QStringLiteral(TOFFEE_WORKER), { path, u"Mill"_s, u"1"_s, u"1500"_s });
-        QVERIFY(a.waitForFinished(120000));
-        QVERIFY(b.waitForFinished(120000));
-        QCOMPARE(a.exitCode(), 0);
-        QCOMPARE(b.exitCode(), 0);
-        auto library = Library::open({ path });
-        QCOMPARE(library.value()->history({ u"Carvera"_s, 1, {}, 0 }).value().size(), 1500);
-        QCOMPARE(library.value()->history({ u"Mill"_s, 1, {}, 0 }).value().size(), 1500);
-    }
-
-    void aLockedLibraryKeepsTheEventsAndWritesThemLater()
-    {
-        QTemporaryDir dir;
-        const QString path = dir.filePath(u"l.sqlite"_s);
-        HistoryRecorder recorder;
-        QVERIFY(recorder.setLocation({ path }, Library::Options { 50 }));
-        QSignalSpy down(&recorder, &HistoryRecorder::unavailable);
-        QSignalSpy up(&recorder, &HistoryRecorder::available);
-        RawConnection other(path, u"raw-lock"_s);
-        QVERIFY(other.exec(u"BEGIN IMMEDIATE"_s)); // another program holds the write lock
-        recorder.record(makeEvent(7, EventKind::Probe, 0, -1.0));
-        recorder.record(makeEvent(7, EventKind::BreakTest, 1, -1.0));
-        QCOMPARE(recorder.pendingCount(), 2);
-        QCOMPARE(down.size(), 1); // told once, not per event
-        QVERIFY(down.front().front().toString().contains(path));
-        QVERIFY(!recorder.flush());
-        QCOMPARE(down.size(), 1);
-        QVERIFY(other.exec(u"ROLLBACK"_s));
-        QTRY_COMPARE_WITH_TIMEOUT(up.size(), 1, 3 * HistoryRecorder::kRetryMs); // the retry writes them
-        QCOMPARE(recorder.pendingCount(), 0);
-        QCOMPARE(recorder.library()->history({}).value().size(), 2);
-    }
-
-    // The window closes while the library is locked: what waited is in the spool's files, and the next
-    // recorder on that library writes it, once.
-    void eventsWaitingWhenTheRecorderGoesAreKeptAndWrittenOnce()
-    {
-        QTemporaryDir dir;
-        const QString path = dir.filePath(u"l.sqlite"_s);
-        const QString folder = dir.filePath(u"outbox"_s);
-        RawConnection other(path, u"raw-lock-close"_s);
-        {
-            HistoryRecorder recorder;
-            recorder.setSpoolFolder(folder);
-            QVERIFY(recorder.setLocation({ path }, Library::Options { 50 }));
-            QVERIFY(other.exec(u"BEGIN IMMEDIATE"_s));
-            recorder.record(makeEvent(3, EventKind::Probe, 0, -2.0));
-            recorder.record(makeEvent(3, EventKind::ManualSet, 1, -2.5));
-            QCOMPARE(recorder.pendingCount(), 2);
-            // Kept at once, not only when the window closes: a crash now loses nothing either.
-            QCOMPARE(Spool(folder).count({ path }), 2);
-        }
-        QCOMPARE(Spool(folder).count({ path }), 2);
-        QVERIFY(other.exec(u"ROLLBACK"_s));
-        for (int i = 0; i < 2; ++i) {
-            HistoryRecorder recorder;
-            recorder.setSpoolFolder(folder);
-            QVERIFY(recorder.setLocation({ path }));
-            QCOMPARE(recorder.pendingCount(), 0);
-            QCOMPARE(recorder.library()->history({}).value().size(), 2);
-        }
-        QCOMPARE(Spool(folder).count({ path }), 0);
-    }
-
-    // Another program drops the events table under the window: the events are kept, and the message says
-    // the library is damaged, in Toffee's words.
-    void aLibraryDamagedUnderTheRecorderKeepsTheEvents()
-    {
-        QTemporaryDir dir;
-        const QString path = dir.filePath(u"l.sqlite"_s);
-        const QString folder = dir.filePath(u"outbox"_s);
-        HistoryRecorder recorder;
-        recorder.setSpoolFolder(folder);
-        QVERIFY(recorder.setLocation({ path }));
-        QSignalSpy down(&recorder, &HistoryRecorder::unavailable);
-        {
-            RawConnection other(path, u"raw-drop"_s);
-            QVERIFY(other.exec(u"DROP TABLE events"_s));
-        }
-        recorder.record(makeEvent(4, EventKind::Probe, 0, -1.0));
-        QCOMPARE(down.size(), 1);
-        const QString said = down.front().front().toString();
-        QVERIFY2(said.contains(u"is damaged: its table \"events\" is missing"_s), qPrintable(said));
-        QCOMPARE(Spool(folder).count({ path }), 1);
-        QCOMPARE(recorder.pendingCount(), 1);
-    }
-
-    void aFullDiskKeepsTheEventsAndWritesThemWhenThereIsRoom()
-    {
-        Test::FullDisk disk(1024 * 1024);
-        const QString path = disk.path(u"l.sqlite"_s);
-        HistoryRecorder recorder;
-        QVERIFY(recorder.setLocation({ path }));
-        recorder.record(makeEvent(1, EventKind::Probe, 0, 0.0)); // the library and its WAL exist
-        QCOMPARE(recorder.pendingCount(), 0);
-        QSignalSpy down(&recorder, &HistoryRecorder::unavailable);
-        disk.fill();
-        for (int i = 1; i <= 200; ++i)
-            recorder.record(makeEvent(1, EventKind::Probe, i, -i * 0.001));
-        QCOMPARE(down.size(), 1);
-        QCOMPARE(recorder.pendingCount(), 200); // a failed batch is not half-written: all of it waits
-        QVERIFY2(down.front().front().toString().contains(path), qPrintable(down.front().front().toString()));
-        disk.free();
-        QVERIFY2(recorder.flush(), qPrintable(recorder.lastError()));
-        QCOMPARE(recorder.library()->history({}).value().size(), 201);
-        QCOMPARE(recorder.pendingCount(), 0);
     }
 };
 

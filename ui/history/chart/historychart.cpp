@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // toffee_historychart: one tool's TLO over time as a Qt Charts chart (historychart.h says why it is a
 // module).
-#include "ui/historychart/historychart.h"
+#include "ui/history/chart/historychart.h"
 
 #include <algorithm>
 #include <limits>
