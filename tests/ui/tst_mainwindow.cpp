@@ -92,6 +92,51 @@ private Q_SLOTS:
         QCOMPARE(text, u"Toffee "_s + QStringLiteral(TOFFEE_VERSION));
     }
 
+    // A TLO's marks are never cut off: set by hand and failed its break test, T1's cell shows the whole of
+    // "6.500 (by hand) — BROKEN?", whether the mark comes while the table is on screen or is already in the
+    // file opened before the window is (the firmware window's screenshot showed "BROKE…").
+    void aTlosMarksAreNeverCutOff_data()
+    {
+        QTest::addColumn<bool>("inTheFile");
+        QTest::newRow("recorded on screen") << false;
+        QTest::newRow("in the file opened") << true;
+    }
+    void aTlosMarksAreNeverCutOff()
+    {
+        QFETCH(bool, inTheFile);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"marked.json"_s);
+        QVERIFY(QFile::copy(kExample, path));
+        MainWindow window;
+        QVERIFY(window.openFile(path));
+        Tool t1 = *window.document()->table().find(1);
+        t1.measuredTlo = 6.5;
+        t1.tloSource = TloSource::Manual;
+        t1.breakTestFailed = true;
+        if (inTheFile) {
+            QVERIFY(window.document()->editTool(1, t1).ok());
+            QVERIFY(window.document()->save().ok());
+            QVERIFY(window.openFile(path)); // filled again while the window is not yet shown
+        }
+        window.resize(1280, 720);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        if (!inTheFile)
+            QVERIFY(window.document()->editTool(1, t1).ok());
+        auto *view = window.findChild<QTableView *>(u"toolTable"_s);
+        QModelIndex cell;
+        for (int row = 0; row < view->model()->rowCount() && !cell.isValid(); ++row) {
+            if (view->model()->index(row, ToolTableModel::NumberColumn).data().toInt() == 1)
+                cell = view->model()->index(row, ToolTableModel::MeasuredTloColumn);
+        }
+        QCOMPARE(cell.data().toString(), u"6.500 (by hand) — BROKEN?"_s);
+        // The text's own width and two characters of room: the item's size hint alone left "BROKE…".
+        const int needed = view->fontMetrics().horizontalAdvance(cell.data().toString())
+            + 2 * view->fontMetrics().averageCharWidth();
+        QTRY_VERIFY2(view->columnWidth(ToolTableModel::MeasuredTloColumn) >= needed,
+            qPrintable(u"%1 < %2"_s.arg(view->columnWidth(ToolTableModel::MeasuredTloColumn)).arg(needed)));
+    }
+
     // F1 opens the user's guide, found beside the program as installed (the build tree has it where the
     // package puts it), rendered with its screenshots; a link to a page not installed says so; a missing
     // guide is a message with where it was looked for, never an empty window.

@@ -84,7 +84,7 @@ ToolTablePanel::ToolTablePanel(ToolTableModel *model, QWidget *parent)
                 for (int row = topLeft.row(); row <= bottomRight.row(); ++row) {
                     const QModelIndex shown = m_proxy->mapFromSource(topLeft.model()->index(row, column));
                     if (shown.isValid())
-                        needed = std::max(needed, m_view->sizeHintForIndex(shown).width());
+                        needed = std::max(needed, widthFor(shown));
                 }
                 if (needed > m_view->columnWidth(column))
                     m_view->setColumnWidth(column, needed);
@@ -120,6 +120,13 @@ bool ToolTablePanel::isEditing() const
     return focus && focus != m_view && m_view->isAncestorOf(focus);
 }
 
+namespace {
+
+// The rows measured for a column's width: a real table has a few dozen; a hostile one is not measured whole.
+constexpr int kMeasuredRows = 2000;
+
+} // namespace
+
 void ToolTablePanel::fitColumns()
 {
     // Fit to the data, but keep free text from pushing the numbers off screen.
@@ -134,6 +141,25 @@ void ToolTablePanel::fitColumns()
         + 2 * text;
     m_view->setColumnWidth(ToolTableModel::MeasuredTloColumn,
         std::max(m_view->columnWidth(ToolTableModel::MeasuredTloColumn), tlo));
+    // resizeColumnsToContents measures only the rows on screen, none while the table is hidden: a mark
+    // already in the table when it was filled ("— BROKEN?") was cut off. Every row is measured for the marked
+    // columns.
+    for (const int column : { int(ToolTableModel::MeasuredTloColumn), int(ToolTableModel::ToolLifeColumn) }) {
+        int needed = m_view->columnWidth(column);
+        for (int row = 0; row < std::min(m_proxy->rowCount(), kMeasuredRows); ++row)
+            needed = std::max(needed, widthFor(m_proxy->index(row, column)));
+        m_view->setColumnWidth(column, needed);
+    }
+}
+
+// The width a cell's text needs whole: the item's size hint fell a few pixels short of what the style draws
+// it in ("6.500 (by hand) — BROKE…" in a column exactly as wide as the hint), so the text's own advance and
+// the same two characters of room the TLO column is given for "(by hand)".
+int ToolTablePanel::widthFor(const QModelIndex &index) const
+{
+    const int text = m_view->fontMetrics().horizontalAdvance(index.data().toString())
+        + 2 * m_view->fontMetrics().averageCharWidth();
+    return std::max(m_view->sizeHintForIndex(index).width(), text);
 }
 
 QList<int> ToolTablePanel::selectedToolNumbers() const

@@ -35,6 +35,7 @@ public:
 
 private:
     void fitColumns();
+    [[nodiscard]] int widthFor(const QModelIndex &index) const;
 
     ToolTableModel *m_model;
     QSortFilterProxyModel *m_proxy;
