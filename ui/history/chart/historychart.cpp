@@ -175,6 +175,9 @@ void addAxes(QChart *chart, const QList<QAbstractSeries *> &all, const HistoryCh
     time->setRange(
         QDateTime::fromMSecsSinceEpoch(qint64(x0 - xPad)), QDateTime::fromMSecsSinceEpoch(qint64(x1 + xPad)));
     tlo->setRange(y0 - yPad, y1 + yPad);
+    // Three ticks to start from: the panel is short at 1280×720, and Qt Charts cuts a label that does not fit
+    // between its neighbours to "..." (five ticks left every TLO unreadable there).
+    tlo->setTickCount(3);
     tlo->applyNiceNumbers(); // ticks at round millimetres, not at the data's own edges
     // Within a few days the dates repeat: show the times, with seconds within the hour. With nothing to
     // draw, no axes at all.
