@@ -274,7 +274,11 @@ private Q_SLOTS:
                            .arg(tloLabel->fontMetrics().horizontalAdvance(tloLabel->text()))));
         // The offset panel shows what grblHAL is sent, in its words.
         s.find<QDoubleSpinBox>(u"offsetValueSpin"_s)->setValue(15.5);
-        QTRY_COMPARE(s.text(u"offsetCommandPreview"_s), u"G10 L1 P2 Z15.5, G43 H2"_s);
+        // One command a line, each whole (it was cut to "G10 L1 P2 Z15.5, G43" at 1280 px).
+        auto *preview = s.find<QLabel>(u"offsetCommandPreview"_s);
+        QTRY_COMPARE(preview->text(), u"G10 L1 P2 Z15.5\nG43 H2"_s);
+        QTRY_VERIFY(preview->width() >= preview->fontMetrics().horizontalAdvance(u"G10 L1 P2 Z15.5"_s)
+            && preview->height() >= 2 * preview->fontMetrics().height());
         screenshot(s.window, u"grblhal-probed.png"_s);
 
         // 0.5 mm shorter: broken; the stored TLO kept.

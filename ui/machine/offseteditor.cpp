@@ -140,7 +140,8 @@ QString OffsetEditor::resultPreview() const
 
 void OffsetEditor::updatePreview()
 {
-    m_command->setText(commandPreview());
+    // One command a line: grblHAL's "G10 L1 P2 Z15.5, G43 H2" was cut to "…, G43" in the dock at 1280 px.
+    m_command->setText(commandPreview().replace(u", G43"_s, u"\nG43"_s));
     m_result->setText(resultPreview());
     const Mode mode = Mode(m_mode->currentData().toInt());
     const bool known = mode != ChangeTlo || m_currentTlo.has_value();
