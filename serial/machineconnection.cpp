@@ -265,6 +265,12 @@ void MachineConnection::stop()
         m_session->abort();
 }
 
+void MachineConnection::stopJog()
+{
+    if (m_session)
+        m_session->stopJog();
+}
+
 void MachineConnection::refreshOffsets()
 {
     report({});

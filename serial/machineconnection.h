@@ -133,6 +133,9 @@ public:
         const QByteArray &line, std::function<void(const CommandReply &, const SessionResult &)> done);
     // Stops whatever the machine does now (Ctrl-X); it halts, and Unlock follows.
     void stop();
+    // Stops a jog under way where the machine stands: without a halt where the controller has a jog cancel
+    // (grblHAL), else as stop().
+    void stopJog();
     // While a tool change waits for the person (waitingForOperator): the tool is in, go on (where the
     // controller takes that from here: resumesFromHere), or end the change (MachineController's).
     [[nodiscard]] bool resumesFromHere() const { return m_session && m_session->resumesFromHere(); }

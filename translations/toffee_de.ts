@@ -2322,6 +2322,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>grblHAL went into alarm while it jogged: check the machine, then Unlock.</source>
         <translation>grblHAL ging während des Tippbetriebs in Alarm: Prüfen Sie die Maschine, dann Entsperren.</translation>
     </message>
+    <message>
+        <source>The jog was stopped where the machine stands; it is ready (no alarm).</source>
+        <translation>Das Verfahren wurde dort angehalten, wo die Maschine steht; sie ist bereit (kein Alarm).</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::GuideDialog</name>
@@ -6891,10 +6895,6 @@ Sendet: %2</translation>
         <translation>Sto&amp;pp</translation>
     </message>
     <message>
-        <source>Stops the machine at once (it halts; Unlock follows).</source>
-        <translation>Hält die Maschine sofort an (sie stoppt; danach Entsperren).</translation>
-    </message>
-    <message>
         <source>&amp;Use X and Y Where It Stands</source>
         <translation>X und Y der Maschinenposition &amp;übernehmen</translation>
     </message>
@@ -6911,16 +6911,20 @@ Sendet: %2</translation>
         <translation>Die Maschine bewegt sich bei jedem Druck auf eine Tipptaste.</translation>
     </message>
     <message>
-        <source>Each press moves it by the jog step, at %1 mm/min, and Stop halts it. Keep hands clear.</source>
-        <translation>Jeder Druck bewegt sie um die Schrittweite mit %1 mm/min; Stopp hält sie an. Hände weg.</translation>
-    </message>
-    <message>
         <source>Jog</source>
         <translation>Verfahren</translation>
     </message>
     <message>
         <source>The setter&apos;s X and Y are where the machine stands: X %1, Y %2 mm.</source>
         <translation>X und Y des Tasters sind die Maschinenposition: X %1, Y %2 mm.</translation>
+    </message>
+    <message>
+        <source>Stops the jog at once where the machine stands.</source>
+        <translation>Hält das Verfahren sofort dort an, wo die Maschine steht.</translation>
+    </message>
+    <message>
+        <source>Each press moves it by the jog step, at %1 mm/min, and Stop stops it. Keep hands clear.</source>
+        <translation>Jeder Druck verfährt sie um die Schrittweite, mit %1 mm/min, und Stopp hält sie an. Hände weg von der Maschine.</translation>
     </message>
 </context>
 <context>

@@ -2322,6 +2322,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>grblHAL went into alarm while it jogged: check the machine, then Unlock.</source>
         <translation>grblHAL 在点动时进入报警：请检查机器，然后解锁。</translation>
     </message>
+    <message>
+        <source>The jog was stopped where the machine stands; it is ready (no alarm).</source>
+        <translation>点动已在机床当前位置停止；机床处于就绪状态（无报警）。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::GuideDialog</name>
@@ -6891,10 +6895,6 @@ Sends: %2</source>
         <translation>停止(&amp;P)</translation>
     </message>
     <message>
-        <source>Stops the machine at once (it halts; Unlock follows).</source>
-        <translation>立即停止机器（机器停机；随后需解锁）。</translation>
-    </message>
-    <message>
         <source>&amp;Use X and Y Where It Stands</source>
         <translation>使用机器当前位置的 X 和 Y(&amp;U)</translation>
     </message>
@@ -6911,16 +6911,20 @@ Sends: %2</source>
         <translation>每按一次点动按钮，机器都会移动。</translation>
     </message>
     <message>
-        <source>Each press moves it by the jog step, at %1 mm/min, and Stop halts it. Keep hands clear.</source>
-        <translation>每按一次移动一个步距，速度 %1 mm/min，停止可使其停机。请勿靠近。</translation>
-    </message>
-    <message>
         <source>Jog</source>
         <translation>点动</translation>
     </message>
     <message>
         <source>The setter&apos;s X and Y are where the machine stands: X %1, Y %2 mm.</source>
         <translation>对刀仪的 X 和 Y 为机器所在位置：X %1，Y %2 mm。</translation>
+    </message>
+    <message>
+        <source>Stops the jog at once where the machine stands.</source>
+        <translation>立即在机床当前位置停止点动。</translation>
+    </message>
+    <message>
+        <source>Each press moves it by the jog step, at %1 mm/min, and Stop stops it. Keep hands clear.</source>
+        <translation>每按一次，机床按点动步长以 %1 mm/min 移动，按“停止”即停下。请保持双手远离。</translation>
     </message>
 </context>
 <context>

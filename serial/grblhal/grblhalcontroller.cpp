@@ -388,4 +388,12 @@ void GrblHalController::abort()
 {
     m_link->sendRealtime('\x18');
 }
+
+void GrblHalController::stopJog()
+{
+    if (!m_jogging)
+        return abort();
+    m_jogCancelled = true;
+    m_link->sendRealtime('\x85');
+}
 } // namespace Toffee

@@ -53,6 +53,9 @@ public:
     void restoreTlo(int tool, double tlo, Done done) override;
     // Ctrl-X, grblHAL's soft reset: it stops at once, and forgets the offset in force.
     void abort() override;
+    // grblHAL's jog cancel (0x85): the jog decelerates to a stop and the machine stays ready, no alarm. With
+    // no jog under way, as abort().
+    void stopJog() override;
 
     [[nodiscard]] QString setTloCommand(double tlo) const override;
     [[nodiscard]] QString aboveZ0Command(double height) const override;
@@ -127,6 +130,8 @@ private:
 
     MachineLink *m_link;
     std::optional<int> m_tool;
+    bool m_jogging = false; // a jog is under way: stopJog cancels it
+    bool m_jogCancelled = false;
     FirmwareInfo m_firmware;
     GrblHal::BuildInfo m_build;
     std::optional<ToolSetter> m_setter;

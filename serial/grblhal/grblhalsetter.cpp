@@ -143,7 +143,17 @@ void GrblHalController::jog(const std::array<double, 3> &stepMm, double feed, Do
         return;
     }
     command += " F" + number(feed);
-    run(command, MachineLink::kDefaultTimeoutMs, done, [this, done](const CommandReply &) {
+    m_jogging = true;
+    m_jogCancelled = false;
+    const Done ended = [this, done](const SessionResult &r) {
+        m_jogging = false;
+        SessionResult result = r;
+        if (m_jogCancelled && result.ok())
+            result.message = tr("The jog was stopped where the machine stands; it is ready (no alarm).");
+        m_jogCancelled = false;
+        done(result);
+    };
+    run(command, MachineLink::kDefaultTimeoutMs, ended, [this, done = ended](const CommandReply &) {
         auto poll = std::make_shared<std::function<void()>>();
         // Each poll holds the function; it holds itself only weakly, so it goes with the last poll.
         *poll = [this, done, self = std::weak_ptr(poll)] {

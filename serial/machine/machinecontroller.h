@@ -143,9 +143,6 @@ public:
     [[nodiscard]] virtual bool needsToolSetter() const { return false; }
     virtual void setToolSetter(const ToolSetter &setter) { Q_UNUSED(setter) }
     [[nodiscard]] virtual std::optional<ToolSetter> toolSetter() const { return std::nullopt; }
-    // Moves the machine by `stepMm` (X, Y, Z, relative, at most kMaxJogStepMm each) at `feed` mm/min, to
-    // find where the setter is; done once it has stopped, with its status. Only a controller whose setter is
-    // Toffee's jogs; the others refuse.
     static constexpr double kMaxJogStepMm = 50.0;
     // A line the operator typed in the console: how this controller's reply to it ends, and the offsets the
     // reply reports (the Carvera's M493.3 and M493.4 print them), if any. Every line is answered with "ok" or
@@ -171,7 +168,13 @@ public:
     [[nodiscard]] static HaltWords neutralHaltWords(int reason);
     // This family's own rules for a typed line, before every controller's (ConsoleCheck); none by default.
     [[nodiscard]] virtual ConsoleRules consoleRules() const { return nullptr; }
+    // Moves the machine by `stepMm` (X, Y, Z, relative, at most kMaxJogStepMm each) at `feed` mm/min, to
+    // find where the setter is; done once it has stopped, with its status. Only a controller whose setter is
+    // Toffee's jogs; the others refuse.
     virtual void jog(const std::array<double, 3> &stepMm, double feed, Done done);
+    // Stops a jog under way where the machine stands. By default as abort() does (a halt, then Unlock); a
+    // controller with a jog cancel of its own stops it without a halt.
+    virtual void stopJog() { abort(); }
     [[nodiscard]] virtual bool keepsReference() const { return true; }
     virtual void adoptReference(std::optional<double> referenceMz) { Q_UNUSED(referenceMz) }
     // The reference Toffee keeps for such a controller, once measured or adopted; none for one that keeps its

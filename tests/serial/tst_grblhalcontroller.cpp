@@ -28,6 +28,9 @@ public:
     int tool = 2;
     double contactZ = -54.7; // where G38.2 says it touched (machine Z)
     int tableSize = 0; // a build with a tool table of this many tools lists each in $#
+    bool jogsUntilCancelled = false; // a jog runs (state Jog) until a jog cancel (0x85) stops it
+    bool jogging = false;
+    QByteArray realtime; // the real-time bytes received other than '?' (0x85 jog cancel, 0x18 reset)
 
     TablelessGrblHal()
     {
@@ -36,11 +39,20 @@ public:
             QTcpSocket *socket = server.nextPendingConnection();
             connect(socket, &QTcpSocket::readyRead, this, [this, socket] {
                 m_buffer += socket->readAll();
-                // '?' is a real-time command wherever it comes (in the first question's frame too).
+                // Real-time commands wherever they come (in the first question's frame too).
+                for (const char byte : { '\x85', '\x18' }) {
+                    for (qsizetype q; (q = m_buffer.indexOf(byte)) >= 0;) {
+                        m_buffer.remove(q, 1);
+                        realtime += byte;
+                        if (byte == '\x85')
+                            jogging = false;
+                    }
+                }
                 for (qsizetype q; (q = m_buffer.indexOf('?')) >= 0;) {
                     m_buffer.remove(q, 1);
-                    socket->write(QByteArray("<Idle|MPos:0.000,0.000,0.000|Bf:100,1023|FS:0,0|T:")
-                        + QByteArray::number(tool) + ">\r\n");
+                    socket->write(QByteArray(jogging ? "<Jog" : "<Idle")
+                        + "|MPos:0.000,0.000,0.000|Bf:100,1023|FS:0,0|T:" + QByteArray::number(tool)
+                        + ">\r\n");
                 }
                 for (;;) {
                     const qsizetype end = m_buffer.indexOf('\n');
@@ -79,6 +91,8 @@ private:
         }
         if (line.startsWith("G38.2"))
             return "[PRB:0.000,0.000," + QByteArray::number(contactZ, 'f', 3) + ":1]\r\nok\r\n";
+        if (line.startsWith("$J="))
+            jogging = jogsUntilCancelled;
         if (line.startsWith("G10 L1") || line.startsWith("G43 H"))
             return "error:38\r\n"; // no such tool: the build has no table
         return "ok\r\n";
@@ -236,6 +250,31 @@ private Q_SLOTS:
         QCOMPARE(std::count_if(machine.received.cbegin() + before, machine.received.cend(),
                      [](const QByteArray &l) { return l.startsWith("$J="); }),
             1);
+    }
+
+    // Stop during a jog is grblHAL's jog cancel (0x85), not a reset: the jog ends where the machine stands,
+    // said so, and the machine stays ready (no alarm, no Unlock). With no jog under way, Stop is a reset as
+    // before.
+    void stoppingAJogCancelsItWithoutAHalt()
+    {
+        TablelessGrblHal machine;
+        machine.jogsUntilCancelled = true;
+        Rig rig(machine);
+        GrblHalController &controller = rig.controller;
+        QVERIFY(await([&](auto done) { controller.connectToMachine(done); }).ok());
+        std::optional<SessionResult> jogged;
+        controller.jog({ 40.0, 0.0, 0.0 }, 100.0, [&jogged](const SessionResult &r) { jogged = r; });
+        QTRY_VERIFY(machine.jogging);
+        QTest::qWait(300); // still jogging: its state is read and it goes on
+        QVERIFY(!jogged);
+        controller.stopJog();
+        QTRY_VERIFY(jogged.has_value());
+        QVERIFY2(jogged->ok(), qPrintable(jogged->message));
+        QVERIFY2(
+            jogged->message.contains(u"stopped where the machine stands"_s), qPrintable(jogged->message));
+        QCOMPARE(machine.realtime, QByteArray("\x85"));
+        controller.stopJog(); // nothing jogs now: a reset, as Stop
+        QTRY_COMPARE(machine.realtime, QByteArray("\x85\x18"));
     }
 
     // A table of 300 tools is 300 lines of $#, more than a reply usually keeps: read whole, not "malformed".

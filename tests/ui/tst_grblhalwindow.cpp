@@ -203,7 +203,7 @@ private Q_SLOTS:
         QVERIFY(!s.table().find(1) || !s.table().find(1)->measuredTlo);
 
         // Machine ▸ Tool Setter…: kept for the machine in the library, given to the controller at once.
-        inNextDialog<ToolSetterDialog>([](ToolSetterDialog *d) {
+        inNextDialog<ToolSetterDialog>([&s](ToolSetterDialog *d) {
             d->findChild<QDoubleSpinBox *>(u"setterZMin"_s)->setValue(-120.0);
             d->findChild<QDoubleSpinBox *>(u"setterSeekFeed"_s)->setValue(3000.0);
             // A latch faster than the search is refused in the dialog, OK disabled, with why.
@@ -233,6 +233,20 @@ private Q_SLOTS:
             d->findChild<QPushButton *>(u"setterUseHere"_s)->click();
             QCOMPARE(d->findChild<QDoubleSpinBox *>(u"setterX"_s)->value(), 10.0);
             QCOMPARE(d->findChild<QDoubleSpinBox *>(u"setterY"_s)->value(), -1.0);
+            // Stop during a jog: grblHAL's jog cancel, where the machine stands, and it stays ready (no alarm
+            // to unlock, as the reset it was).
+            d->findChild<QComboBox *>(u"setterJogStep"_s)->setCurrentIndex(2); // 10 mm, 0.6 s at 1000 mm/min
+            QTRY_VERIFY(d->findChild<QPushButton *>(u"setterJogXPlus"_s)->isEnabled());
+            d->findChild<QPushButton *>(u"setterJogXPlus"_s)->click();
+            QTRY_VERIFY_WITH_TIMEOUT(s.window.connection()->link()->lastStatus()
+                    && s.window.connection()->link()->lastStatus()->state == u"Jog"_s,
+                5000);
+            d->findChild<QPushButton *>(u"setterJogStop"_s)->click();
+            auto *said = d->findChild<QLabel *>(u"setterJogResult"_s);
+            QTRY_VERIFY_WITH_TIMEOUT(said->text().contains(u"stopped where the machine stands"_s), 10000);
+            QVERIFY(!s.window.connection()->isHalted());
+            const double x = s.window.connection()->link()->lastStatus()->mpos[0];
+            QVERIFY2(x > 10.0 && x < 20.0, qPrintable(QString::number(x)));
             ok->click();
         });
         s.trigger(u"actionToolSetter"_s);

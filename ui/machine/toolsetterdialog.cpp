@@ -150,8 +150,8 @@ QWidget *ToolSetterDialog::machineBox(MachineConnection *connection)
     m_stop = new QPushButton(tr("Sto&p"), box);
     m_stop->setObjectName(u"setterJogStop"_s);
     m_stop->setAutoDefault(false);
-    m_stop->setToolTip(tr("Stops the machine at once (it halts; Unlock follows)."));
-    connect(m_stop, &QPushButton::clicked, m_connection, &MachineConnection::stop);
+    m_stop->setToolTip(tr("Stops the jog at once where the machine stands."));
+    connect(m_stop, &QPushButton::clicked, m_connection, &MachineConnection::stopJog);
     pad->addWidget(m_stop, 1, 3);
     m_useHere = new QPushButton(tr("&Use X and Y Where It Stands"), box);
     m_useHere->setObjectName(u"setterUseHere"_s);
@@ -201,7 +201,7 @@ void ToolSetterDialog::jog(int axis, double direction)
         m_jogAsked = askFirst(this,
             { QMessageBox::Question, tr("Jog the machine?"),
                 tr("The machine moves each time you press a jog button."),
-                tr("Each press moves it by the jog step, at %1 mm/min, and Stop halts it. Keep hands clear.")
+                tr("Each press moves it by the jog step, at %1 mm/min, and Stop stops it. Keep hands clear.")
                     .arg(formatNumber(kJogFeed, NumberFormat::upTo(0).inLocale())),
                 tr("Jog"), u"setterJogYesButton"_s, u"setterJogQuestion"_s });
         if (!m_jogAsked)
@@ -212,7 +212,7 @@ void ToolSetterDialog::jog(int axis, double direction)
     m_jogResult->clear();
     QPointer<ToolSetterDialog> self(this);
     m_connection->jog(step, kJogFeed, [self](const SessionResult &r) {
-        if (self && !r.ok())
+        if (self) // a refusal or a failure, or a jog stopped: said; a jog that ran its step says nothing
             self->m_jogResult->setText(r.message);
     });
 }
