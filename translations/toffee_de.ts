@@ -1042,10 +1042,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
 <context>
     <name>Toffee::CarveraConsole</name>
     <message>
-        <source>The machine is halted: it refuses &quot;%1&quot; until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
-        <translation>Die Maschine ist angehalten: Sie lehnt „%1“ ab, bis sie entsperrt ist. Prüfen Sie die Maschine und verwenden Sie dann Maschine ▸ Entsperren ($X).</translation>
-    </message>
-    <message>
         <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
         <translation>%1 vermisst das Werkzeug: Die Maschine fährt zum Werkzeugtaster, und die gemessene TLO wird in der Tabelle gespeichert.</translation>
     </message>
@@ -1076,10 +1072,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>M493.2 needs a tool (M493.2 T2): without one the machine halts.</source>
         <translation>M493.2 braucht ein Werkzeug (M493.2 T2): Ohne Werkzeug hält die Maschine an.</translation>
-    </message>
-    <message>
-        <source>M6 needs a tool (M6 T2).</source>
-        <translation>M6 braucht ein Werkzeug (M6 T2).</translation>
     </message>
     <message>
         <source>M493.2 makes T%1 the active tool but keeps the TLO in force now (another tool&apos;s, or none): T%1&apos;s own is not set. Probe T%1 or restore its TLO before cutting.</source>

@@ -1042,10 +1042,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
 <context>
     <name>Toffee::CarveraConsole</name>
     <message>
-        <source>The machine is halted: it refuses &quot;%1&quot; until it is unlocked. Check the machine, then use Machine ▸ Unlock ($X).</source>
-        <translation>机床已停机：解锁之前它拒绝执行“%1”。请检查机床，然后使用“机床 ▸ 解锁”（$X）。</translation>
-    </message>
-    <message>
         <source>%1 probes the tool: the machine moves to the tool setter, and the TLO it measures is recorded in the table.</source>
         <translation>%1 会对刀：机床移动到对刀仪，测得的 TLO 将记录到刀具表中。</translation>
     </message>
@@ -1076,10 +1072,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>M493.2 needs a tool (M493.2 T2): without one the machine halts.</source>
         <translation>M493.2 需要指定刀具（M493.2 T2）：否则机床会停机。</translation>
-    </message>
-    <message>
-        <source>M6 needs a tool (M6 T2).</source>
-        <translation>M6 需要指定刀具（M6 T2）。</translation>
     </message>
     <message>
         <source>M493.2 makes T%1 the active tool but keeps the TLO in force now (another tool&apos;s, or none): T%1&apos;s own is not set. Probe T%1 or restore its TLO before cutting.</source>

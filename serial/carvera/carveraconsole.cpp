@@ -12,18 +12,15 @@ namespace Toffee {
 std::optional<ConsoleCheck> CarveraConsole::rules(
     const GCodeBlock &block, const QString &trimmed, bool halted)
 {
-    // What the firmware still takes while halted; everything else would get "Alarm lock". The firmware looks
-    // at the first word only; the console asks that every word be one, so nothing else rides along.
+    // What the firmware still takes while halted, sent; anything else would get "Alarm lock", and is refused
+    // as on every controller. The firmware looks at the first word only; the console asks that every word be
+    // one, so nothing else rides along.
     if (halted) {
         const auto &ws = block.words;
-        if (block.isEmpty() || !std::all_of(ws.cbegin(), ws.cend(), [](const GCodeWord &w) {
-                return carveraRunsWhileHalted(w);
-            }))
-            return ConsoleCheck::refuse(tr(
-                "The machine is halted: it refuses \"%1\" until it is unlocked. Check the machine, then use "
-                "Machine ▸ Unlock ($X).")
-                                            .arg(trimmed));
-        return ConsoleCheck {};
+        const bool runs = !block.isEmpty() && std::all_of(ws.cbegin(), ws.cend(), [](const GCodeWord &w) {
+            return carveraRunsWhileHalted(w);
+        });
+        return runs ? std::optional(ConsoleCheck {}) : std::nullopt;
     }
     if (auto c = offsets(block, trimmed))
         return c;
@@ -86,7 +83,7 @@ std::optional<ConsoleCheck> CarveraConsole::toolChange(const GCodeBlock &block)
     const GCodeWord *t = block.find('T');
     const QString problem = ConsoleCheck::toolProblem(t,
         select ? tr("M493.2 needs a tool (M493.2 T2): without one the machine halts.")
-               : tr("M6 needs a tool (M6 T2)."));
+               : ConsoleCheck::tr("M6 needs a tool (M6 T2)."));
     if (!problem.isEmpty())
         return ConsoleCheck::refuse(problem);
     ConsoleCheck c = ConsoleCheck::confirm(select
