@@ -253,9 +253,9 @@ HaltWords MachineConnection::haltWords(int reason) const
 QString MachineConnection::haltedMessage() const
 {
     const QString said = m_haltSaid.isEmpty() ? QString() : tr("It said: \"%1\". ").arg(m_haltSaid);
+    const HaltWords words = m_haltReason ? haltWords(*m_haltReason) : HaltWords {};
     const QString reason = said
-        + (m_haltReason ? haltWords(*m_haltReason).name + u": "_s + haltWords(*m_haltReason).recovery
-                        : tr("Check the machine, then unlock it."));
+        + (m_haltReason ? words.name + u": "_s + words.recovery : tr("Check the machine, then unlock it."));
     return tr("The machine is halted (Alarm lock) and takes no command but Unlock. %1").arg(reason);
 }
 

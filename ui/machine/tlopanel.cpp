@@ -205,6 +205,7 @@ void TloPanel::showHalt()
     m_halt->setVisible(halted);
     if (halted) {
         const auto reason = m_connection->haltReason();
+        const HaltWords words = reason ? m_connection->haltWords(*reason) : HaltWords {};
         const auto restore = m_connection->session() ? m_connection->session()->tloToRestore() : std::nullopt;
         // After a failed break test the firmware keeps the length it measured in force: which one that is,
         // and what Unlock does about it.
@@ -215,12 +216,10 @@ void TloPanel::showHalt()
                   .arg(m_activeTool && *m_activeTool >= 0 ? u"T"_s + QString::number(*m_activeTool)
                                                           : tr("the tool"),
                       m_machineTlo ? millimetres(*m_machineTlo) : tr("its TLO"), millimetres(*restore))
-            : !m_connection->haltSaid().isEmpty()
-            ? tr("The machine said: “%1”").arg(m_connection->haltSaid()) + u'\n'
-                + (reason ? m_connection->haltWords(*reason).recovery
-                          : tr("Check the machine, then Unlock ($X)."))
+            : !m_connection->haltSaid().isEmpty() ? tr("The machine said: “%1”").arg(m_connection->haltSaid())
+                + u'\n' + (reason ? words.recovery : tr("Check the machine, then Unlock ($X)."))
             : reason
-            ? m_connection->haltWords(*reason).meaning + u'\n' + m_connection->haltWords(*reason).recovery
+            ? words.meaning + u'\n' + words.recovery
             : tr("The machine reported an alarm.") + u'\n' + tr("Check the machine, then Unlock ($X).");
         m_halt->setText(
             why + u' ' + tr("Nothing that moves the machine or changes its offsets runs until then."));
