@@ -6,6 +6,7 @@
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulator/emulatortransport.h"
 #include "serial/grblhal/grblhalcontroller.h"
+#include "serial/linuxcnc/linuxcnccontroller.h"
 #include "serial/transport/serialporttransport.h"
 #include "serial/transport/tcptransport.h"
 
@@ -31,6 +32,10 @@ std::unique_ptr<LineTransport> makeTransport(const ConnectionTarget &target)
             = std::make_unique<TcpTransport>(TcpTransport::Address { target.host, target.tcpPort });
         transport->setConnectTimeoutMs(target.timeoutMs);
         transport->setProtocol(protocol);
+        // linuxcncrsh answers nothing before its hello: chosen, it is asked nothing first; not yet known, a
+        // machine that answers nothing opens to be asked the hello.
+        transport->setAsksFirst(target.controller != ControllerKind::LinuxCnc);
+        transport->setOpensSilent(target.controller == ControllerKind::Auto);
         return transport;
     }
     auto transport = std::make_unique<SerialPortTransport>(target.port, target.baud);
@@ -42,13 +47,19 @@ std::unique_ptr<MachineController> makeController(MachineLink *link, ControllerK
 {
     if (kind == ControllerKind::GrblHal)
         return std::make_unique<GrblHalController>(link);
+    if (kind == ControllerKind::LinuxCnc)
+        return std::make_unique<LinuxCncController>(link);
     return std::make_unique<MachineSession>(link);
+}
+
+quint16 defaultTcpPort(ControllerKind kind)
+{
+    return kind == ControllerKind::LinuxCnc ? LinuxCnc::kDefaultPort : TcpTransport::kDefaultPort;
 }
 
 std::optional<ControllerKind> controllerKindFromName(const QString &name)
 {
-    for (const ControllerKind kind :
-        { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal }) {
+    for (const ControllerKind kind : controllerKinds()) {
         if (name == controllerKindName(kind))
             return kind;
     }

@@ -3,6 +3,7 @@
 
 #include "serial/carvera/carverareplies.h"
 #include "serial/grblhal/grblhalreplies.h"
+#include "serial/linuxcnc/linuxcncreplies.h"
 #include "serial/machine/machinelink.h"
 #include "serial/transport/linetransport.h"
 #include "serial/transport/streamtransport.h"
@@ -42,6 +43,8 @@ QString controllerKindName(ControllerKind kind)
         return u"carvera"_s;
     case ControllerKind::GrblHal:
         return u"grblhal"_s;
+    case ControllerKind::LinuxCnc:
+        return u"linuxcnc"_s;
     }
     return {};
 }
@@ -55,8 +58,26 @@ QString controllerKindTitle(ControllerKind kind)
         return u"Carvera"_s;
     case ControllerKind::GrblHal:
         return u"grblHAL"_s;
+    case ControllerKind::LinuxCnc:
+        return u"LinuxCNC"_s;
     }
     return {};
+}
+
+QList<ControllerKind> controllerKinds()
+{
+    return { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal,
+        ControllerKind::LinuxCnc };
+}
+
+bool keepsOwnReference(ControllerKind kind)
+{
+    return kind == ControllerKind::Carvera;
+}
+
+QString dialectKeyOf(ControllerKind kind)
+{
+    return kind == ControllerKind::Auto ? u"carvera"_s : controllerKindName(kind);
 }
 
 ControllerDetector::ControllerDetector(MachineLink *link, QObject *parent)
@@ -72,7 +93,9 @@ void ControllerDetector::detect(Done done)
     m_done = std::move(done);
     if (m_link->isOpen())
         return ask();
-    auto fail = [this](const QString &message) { finish(Error { message }); };
+    auto fail = [this](const QString &message) {
+        finish(Error { message });
+    };
     m_opening << connect(m_link, &MachineLink::opened, this, &ControllerDetector::ask);
     m_opening << connect(m_link->transport(), &LineTransport::errorOccurred, this, fail);
     m_opening << connect(m_link, &MachineLink::closed, this, fail);
@@ -99,10 +122,15 @@ void ControllerDetector::ask()
     const auto *stream = qobject_cast<const StreamTransport *>(m_link->transport());
     if (stream && stream->mode() == ConsoleStream::Mode::Framed)
         return finish(DetectedController { ControllerKind::Carvera, {}, {} });
+    // Nothing answered the transport's first question: a Carvera and grblHAL always do; LinuxCNC's console
+    // answers only after its hello.
+    if (stream && stream->openedSilent())
+        return askHello();
     m_link->send(
         "version", MachineLink::kDefaultTimeoutMs,
         [this](const CommandReply &reply) {
-            if (reply.status == CommandReply::Status::Timeout || reply.status == CommandReply::Status::LinkLost)
+            if (reply.status == CommandReply::Status::Timeout
+                || reply.status == CommandReply::Status::LinkLost)
                 return finish(Error { tr("%1 The controller was asked which it is (\"version\") and did not "
                                          "answer; nothing else was sent.")
                                           .arg(reply.message) });
@@ -129,15 +157,44 @@ void ControllerDetector::askBuild(const QString &versionAnswer)
             return finish(DetectedController { ControllerKind::GrblHal, firmware, build.info().buildName });
         }
         if (build.hasVersionAndOptions())
-            return finish(Error { tr("The controller answered $I as Grbl does but did not say it is grblHAL "
-                                     "([FIRMWARE:grblHAL]): it may be classic Grbl, which keeps no tool table. "
-                                     "Toffee manages Carvera and grblHAL machines; nothing else was sent.") });
-        finish(Error { tr("The controller is neither a Carvera nor grblHAL, the controllers Toffee manages: it "
-                          "answered \"version\" with %1 and \"$I\" with %2. Nothing else was sent. If it is "
-                          "one of them, choose it (Carvera or grblHAL; toffee-cli --controller) and connect "
-                          "again.")
-                           .arg(versionAnswer, said(reply)) });
+            return finish(
+                Error { tr("The controller answered $I as Grbl does but did not say it is grblHAL "
+                           "([FIRMWARE:grblHAL]): it may be classic Grbl, which keeps no tool table. "
+                           "Toffee manages Carvera and grblHAL machines; nothing else was sent.") });
+        finish(Error {
+            tr("The controller is not a Carvera, grblHAL or LinuxCNC, the controllers Toffee manages: it "
+               "answered \"version\" with %1 and \"$I\" with %2. Nothing else was sent. If it is "
+               "one of them, choose it (Carvera, grblHAL or LinuxCNC; toffee-cli --controller) and connect "
+               "again.")
+                .arg(versionAnswer, said(reply)) });
     });
+}
+
+void ControllerDetector::askHello()
+{
+    m_link->send(
+        LinuxCnc::kHello, MachineLink::kDefaultTimeoutMs,
+        [this](const CommandReply &reply) {
+            for (const QByteArray &line : reply.lines) {
+                if (LinuxCnc::isHelloAck(line) || LinuxCnc::isHelloNak(line)) {
+                    FirmwareInfo firmware;
+                    firmware.kind = FirmwareInfo::Kind::LinuxCnc;
+                    return finish(DetectedController { ControllerKind::LinuxCnc, firmware, {} });
+                }
+            }
+            if (reply.status == CommandReply::Status::Timeout
+                || reply.status == CommandReply::Status::LinkLost)
+                return finish(
+                    Error { tr("%1 The machine answered nothing: not to the Carvera's and grblHAL's "
+                               "first question, nor to LinuxCNC's hello. Check that it is switched on "
+                               "and has started, and the address and port.")
+                                .arg(reply.message) });
+            finish(Error {
+                tr("The controller is none of those Toffee manages: it answered LinuxCNC's hello with "
+                   "%1. Nothing else was sent.")
+                    .arg(said(reply)) });
+        },
+        ReplyEnd::Line);
 }
 
 void ControllerDetector::finish(const Result<DetectedController> &result)

@@ -14,12 +14,20 @@ namespace Toffee {
 class MachineLink;
 
 // Which controller the machine runs. Auto: found by asking (ControllerDetector), never assumed.
-enum class ControllerKind { Auto, Carvera, GrblHal };
+enum class ControllerKind { Auto, Carvera, GrblHal, LinuxCnc };
 
-// "carvera", "grblhal" (toffee-cli --controller, the settings, the JSON); "auto" for Auto.
+// "carvera", "grblhal", "linuxcnc" (toffee-cli --controller, the settings, the JSON); "auto" for Auto.
 [[nodiscard]] QString controllerKindName(ControllerKind kind);
-// "Carvera", "grblHAL", for people.
+// "Carvera", "grblHAL", "LinuxCNC", for people.
 [[nodiscard]] QString controllerKindTitle(ControllerKind kind);
+// Every controller Toffee manages, Auto first: what --controller, the settings and the window offer.
+[[nodiscard]] QList<ControllerKind> controllerKinds();
+// Whether the controller keeps its own reference tool (the Carvera's firmware); the others are given the one
+// Toffee kept for the machine (grblHAL, LinuxCNC: the first tool measured on it).
+[[nodiscard]] bool keepsOwnReference(ControllerKind kind);
+// The G-code dialect a machine with this controller's programs are checked in ("carvera", "grblhal",
+// "linuxcnc").
+[[nodiscard]] QString dialectKeyOf(ControllerKind kind);
 
 // What the questions found: the controller and what it said of itself.
 struct DetectedController
@@ -34,7 +42,9 @@ struct DetectedController
 // that speaks Makera's frames is a Carvera's. Otherwise, in plain text: `version`, which a Carvera answers
 // "version = …" and grblHAL refuses ("error:2"); then, refused, `$I`, which grblHAL answers with
 // [FIRMWARE:grblHAL]. Both are questions that change nothing on either (seen on the firmwares in
-// ../shared/peers; docs/ARCHITECTURE.md). Anything else is refused by what it said, and nothing more is sent.
+// ../shared/peers; docs/ARCHITECTURE.md). A network link whose first question got no answer at all is asked
+// LinuxCNC's `hello EMC toffee 1.0`, which linuxcncrsh answers HELLO ACK (a Carvera and grblHAL refuse it, seen
+// on their peers). Anything else is refused by what it said, and nothing more is sent.
 class ControllerDetector final : public QObject
 {
     Q_OBJECT
@@ -50,6 +60,7 @@ public:
 private:
     void ask();
     void askBuild(const QString &versionAnswer);
+    void askHello();
     void finish(const Result<DetectedController> &result);
 
     MachineLink *m_link;

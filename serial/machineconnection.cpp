@@ -8,6 +8,7 @@
 #include "serial/emulator/carveraemulator.h"
 #include "serial/emulator/emulatortransport.h"
 #include "serial/grblhal/grblhalcontroller.h"
+#include "serial/linuxcnc/linuxcnccontroller.h"
 #include "serial/transport/serialporttransport.h"
 #include "serial/transport/tcptransport.h"
 
@@ -167,6 +168,11 @@ void MachineConnection::startController(ControllerKind kind)
         }
     }
     m_session = makeController(m_link.get(), kind);
+    if (auto *linuxCnc = qobject_cast<LinuxCncController *>(m_session.get())) {
+        linuxCnc->setIniFile(m_target.linuxCncIni);
+        if (!m_target.enablePassword.isEmpty())
+            linuxCnc->setEnablePassword(m_target.enablePassword);
+    }
     if (m_target.setter)
         m_session->setToolSetter(*m_target.setter);
     if (!m_session->keepsReference())

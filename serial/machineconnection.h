@@ -41,6 +41,10 @@ struct ConnectionTarget
     std::optional<ToolSetter> setter;
     // For a controller that keeps no reference tool (grblHAL): the one Toffee kept for this machine.
     std::optional<double> reference;
+    // LinuxCNC: the INI it runs, on this computer (its tool table's file), and linuxcncrsh's enable password
+    // (empty: LinuxCNC's own default). The password is never printed or logged.
+    QString linuxCncIni;
+    QByteArray enablePassword;
 
     [[nodiscard]] bool isNetwork() const { return !emulator && !host.isEmpty(); }
     // The controller known before connecting: the one chosen, or the Carvera for the built-in emulator;
@@ -56,7 +60,10 @@ struct ConnectionTarget
 // The controller that speaks to the machine on `link`: the Carvera's (MachineSession) or grblHAL's.
 [[nodiscard]] std::unique_ptr<MachineController> makeController(
     MachineLink *link, ControllerKind kind = ControllerKind::Carvera);
-// "auto", "carvera", "grblhal" (toffee-cli --controller, the settings); nothing for another word.
+// The TCP port a controller's console listens on when the address gives none: linuxcncrsh's 5007 for LinuxCNC,
+// else the Carvera's 2222 (grblHAL's telnet port varies: give it).
+[[nodiscard]] quint16 defaultTcpPort(ControllerKind kind);
+// "auto", "carvera", "grblhal", "linuxcnc" (toffee-cli --controller, the settings); nothing for another word.
 [[nodiscard]] std::optional<ControllerKind> controllerKindFromName(const QString &name);
 
 // The window's one machine: it builds the transport, the link and the session for a target, keeps them for

@@ -24,6 +24,8 @@ QString MachineIdentity::title() const
         return tr("grblHAL at %1").arg(link);
     if (controller == ControllerKind::Carvera)
         return tr("the Carvera at %1").arg(link);
+    if (controller == ControllerKind::LinuxCnc)
+        return tr("LinuxCNC at %1").arg(link);
     return tr("the machine at %1").arg(link);
 }
 
@@ -31,7 +33,7 @@ QString MachineIdentity::defaultName() const
 {
     if (emulator)
         return u"Emulator"_s;
-    return controller == ControllerKind::GrblHal ? u"grblHAL"_s : u"Carvera"_s;
+    return controller == ControllerKind::Auto ? u"Carvera"_s : controllerKindTitle(controller);
 }
 
 MachineIdentity MachineIdentity::fromKey(const QString &key)

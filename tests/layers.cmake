@@ -2,11 +2,11 @@
 # Fails when a source file includes from a layer above its own. Run as
 #   cmake -DROOT=<source root> -P tests/layers.cmake
 # The layers, lowest first: model ← formats, gcode, library, camimport, job ← document; wire ← transport;
-# model, gcode, wire, transport ← emulator; transport ← machine ← carvera, grblhal (the two controllers, neither
-# reaching the other); emulator, carvera, grblhal ← serial ← carverarack (the Carvera's rack, run over a
+# model, gcode, wire, transport ← emulator; transport ← machine ← carvera, grblhal, linuxcnc (the controllers, none
+# reaching another; LinuxCNC's reads its tool.tbl with formats); emulator, carvera, grblhal, linuxcnc ← serial ← carverarack (the Carvera's rack, run over a
 # connection); then the window's rooms: common ← connection, table, history, job, library, rack (the rack alone
 # with carverarack) and machine (with connection) ← shell; app. The window reaches the controllers only through the
-# neutral layers (serial, machine): no room of it includes carvera or grblhal.
+# neutral layers (serial, machine): no room of it includes carvera, grblhal or linuxcnc.
 # Includes are written from the source root ("serial/carvera/machinesession.h"), so the first folders name the layer.
 
 cmake_minimum_required(VERSION 3.25)
@@ -20,7 +20,8 @@ function(layer_of path out)
     foreach(pair "model/document:document" "model/formats:formats" "model/gcode:gcode" "model/library:library"
             "model/camimport:camimport" "model/job:job" "model:model"
             "serial/wire:wire" "serial/transport:transport" "serial/emulator:emulator"
-            "serial/machine:machine" "serial/carvera/rack:carverarack" "serial/carvera:carvera" "serial/grblhal:grblhal" "serial:serial"
+            "serial/machine:machine" "serial/carvera/rack:carverarack" "serial/carvera:carvera" "serial/grblhal:grblhal" "serial/linuxcnc:linuxcnc"
+            "serial:serial"
             "ui/common:ui_common" "ui/connection:ui_connection" "ui/table:ui_table" "ui/machine:ui_machine"
             "ui/history:ui_history" "ui/job:ui_job" "ui/rack:ui_rack" "ui/library:ui_library" "ui/shell:ui_shell"
             "app:app")
@@ -49,7 +50,8 @@ set(allowed_emulator model gcode wire transport emulator)
 set(allowed_machine model gcode wire transport machine)
 set(allowed_carvera model gcode wire transport machine carvera)
 set(allowed_grblhal model gcode wire transport machine grblhal)
-set(allowed_serial model gcode wire transport emulator machine carvera grblhal serial)
+set(allowed_linuxcnc model formats gcode wire transport machine linuxcnc)
+set(allowed_serial model formats gcode wire transport emulator machine carvera grblhal linuxcnc serial)
 set(allowed_carverarack model gcode wire transport machine carvera serial carverarack)
 # What every room of the window may reach below it: the model and the neutral machine layers.
 set(below_ui model formats gcode document library camimport job wire transport machine serial)
@@ -62,7 +64,7 @@ set(allowed_ui_machine ${below_ui} ui_common ui_connection ui_machine)
 set(allowed_ui_shell ${below_ui} ui_common ui_connection ui_table ui_machine ui_history ui_job ui_rack ui_library
     ui_shell)
 set(allowed_app model formats gcode document library camimport job wire transport emulator machine carvera
-    grblhal serial carverarack ui_common ui_connection ui_table ui_machine ui_history ui_job ui_rack ui_library
+    grblhal linuxcnc serial carverarack ui_common ui_connection ui_table ui_machine ui_history ui_job ui_rack ui_library
     ui_shell app)
 
 file(GLOB_RECURSE sources RELATIVE ${ROOT}

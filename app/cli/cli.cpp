@@ -36,13 +36,17 @@ Tool tables:
 
 The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator) [--protocol P] [--table FILE]
                  COMMAND
-  --host                     the machine over Wi-Fi: its console on TCP port PORT (default 2222)
+  --host                     the machine over the network: its console on TCP port PORT (default 2222;
+                             LinuxCNC's linuxcncrsh 5007)
   --protocol auto|text|framed  plain text, or Makera's frames (its firmware from 1.0.4); auto finds out
-  --controller auto|carvera|grblhal
+  --controller auto|carvera|grblhal|linuxcnc
                              the controller the machine runs; auto (the default): found by asking it,
                              with questions that change nothing on any
+  --ini FILE                 LinuxCNC: the INI it runs, on this computer, whose tool table (tool.tbl) is
+                             read (linuxcncrsh cannot); found by itself when LinuxCNC runs here. Its enable
+                             password: TOFFEE_LINUXCNC_PASSWORD (default EMCTOO)
   --setter X,Y,ZMIN[,SEEK,LATCH[,BACKOFF]]
-                             grblHAL: the tool setter in machine coordinates (mm), the lowest Z to search to,
+                             grblHAL, LinuxCNC: the tool setter in machine coordinates (mm), the lowest Z to search to,
                              the feeds (mm/min, default 500 and 40) and the back-off between touches (2 mm)
   status                     state, active tool, TLO, positions
   report                     the tool length offsets (M493.4)
@@ -67,12 +71,12 @@ The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator
                              in a break test or older than --stale-days (7) is refused unless --anyway
   unlock                     clear a halt ($X)
   link-test --count N        N round trips; median, p99 and max in milliseconds
-  push-offsets --table FILE  grblHAL: every tool of the table with a TLO into the controller's own table
-                             (G10 L1 P Z R), read back with $#; tools beyond its table refused by name
-  pull-offsets --table FILE  grblHAL: the controller's table into the file (new tools added; a changed TLO
+  push-offsets --table FILE  grblHAL, LinuxCNC: every tool of the table with a TLO into the controller's
+                             own table (G10 L1 P Z), read back ($#; tool.tbl); tools beyond it refused by name
+  pull-offsets --table FILE  grblHAL, LinuxCNC: the controller's table into the file (new tools added; a changed TLO
                              marked as read from the controller, with a history event)
   probe, break-test, set-tlo, change-tool, restore, measure-rack and check-rack record every measurement in the
-  history library (--machine NAME; default Carvera, grblHAL or Emulator, as the machine is), and warn when a
+  history library (--machine NAME; default Carvera, grblHAL, LinuxCNC or Emulator, as the machine is), and warn when a
   probe is off its tool's wear trend. A name stands for one machine (its controller and how it is reached):
   another machine under it is refused, its reference and setter never applied; --same-machine says that it
   is the same machine reached another way
@@ -136,7 +140,7 @@ QString usage()
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
     u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s, u"library"_s,
     u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s, u"host"_s,
-    u"protocol"_s, u"seconds"_s, u"discovery-port"_s, u"controller"_s, u"setter"_s };
+    u"protocol"_s, u"seconds"_s, u"discovery-port"_s, u"controller"_s, u"setter"_s, u"ini"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"version"_s, u"emulator"_s, u"no-history"_s,
     u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s, u"same-machine"_s, u"anyway"_s };
 

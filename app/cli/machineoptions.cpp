@@ -41,19 +41,6 @@ Result<void> readTarget(const Invocation &call, MachineOptions &o)
     o.target.emulator = call.has(u"emulator"_s);
     o.target.port = call.option(u"port"_s);
     o.target.baud = SerialPortTransport::kDefaultBaud;
-    if (call.has(u"host"_s)) {
-        const QString host = call.option(u"host"_s).trimmed();
-        const auto address = TcpTransport::parseAddress(host);
-        // A bare IPv6 address is refused, since its last group cannot be told from a port: say how to write
-        // it.
-        if (!address && QHostAddress(host).protocol() == QAbstractSocket::IPv6Protocol)
-            return Error { address.error().message
-                + u" An IPv6 address goes in brackets: [%1], or [%1]:PORT with a port."_s.arg(host) };
-        if (!address)
-            return address.error();
-        o.target.host = address.value().host;
-        o.target.tcpPort = address.value().port;
-    }
     if (call.has(u"protocol"_s)) {
         const auto protocol = StreamTransport::parseProtocol(call.option(u"protocol"_s));
         if (!protocol)
@@ -65,12 +52,37 @@ Result<void> readTarget(const Invocation &call, MachineOptions &o)
     if (call.has(u"controller"_s)) {
         const auto kind = controllerKindFromName(call.option(u"controller"_s).trimmed());
         if (!kind)
-            return Error { u"--controller must be auto, carvera or grblhal."_s };
-        if (o.target.emulator && *kind == ControllerKind::GrblHal)
+            return Error { u"--controller must be auto, carvera, grblhal or linuxcnc."_s };
+        if (o.target.emulator && *kind != ControllerKind::Carvera && *kind != ControllerKind::Auto)
+            return Error { u"the built-in emulator is a Carvera; %1 is reached with --port or --host."_s.arg(
+                controllerKindTitle(*kind)) };
+        if (*kind == ControllerKind::LinuxCnc && call.has(u"port"_s))
             return Error {
-                u"the built-in emulator is a Carvera; grblHAL is reached with --port or --host."_s
+                u"LinuxCNC is reached over the network, through linuxcncrsh: give --host HOST[:PORT] "
+                "(port 5007 when not given)."_s
             };
         o.target.controller = *kind;
+    }
+    if (call.has(u"ini"_s)) {
+        if (o.target.controller != ControllerKind::LinuxCnc)
+            return Error { u"--ini is LinuxCNC's INI file: give it with --controller linuxcnc."_s };
+        o.target.linuxCncIni = call.option(u"ini"_s);
+    }
+    // linuxcncrsh's enable password: from the environment, never from the command line, where every user
+    // of the computer could read it.
+    o.target.enablePassword = qEnvironmentVariable("TOFFEE_LINUXCNC_PASSWORD").toUtf8();
+    if (call.has(u"host"_s)) {
+        const QString host = call.option(u"host"_s).trimmed();
+        const auto address = TcpTransport::parseAddress(host, defaultTcpPort(o.target.controller));
+        // A bare IPv6 address is refused, since its last group cannot be told from a port: say how to write
+        // it.
+        if (!address && QHostAddress(host).protocol() == QAbstractSocket::IPv6Protocol)
+            return Error { address.error().message
+                + u" An IPv6 address goes in brackets: [%1], or [%1]:PORT with a port."_s.arg(host) };
+        if (!address)
+            return address.error();
+        o.target.host = address.value().host;
+        o.target.tcpPort = address.value().port;
     }
     if (call.has(u"setter"_s)) {
         auto setter = ToolSetter::parse(call.option(u"setter"_s).trimmed());
@@ -272,7 +284,7 @@ Result<void> registerMachine(const Invocation &call, MachineOptions &o, Controll
         : o.target.isNetwork()                   ? o.target.name()
                                                  : o.target.port + u' ' + QString::number(o.target.baud);
     // The dialect its programs are checked in.
-    const QString dialect = kind == ControllerKind::GrblHal ? u"grblhal"_s : u"carvera"_s;
+    const QString dialect = dialectKeyOf(kind);
     if (auto added = o.library->addMachine({ o.machine, dialect, connection }); !added) {
         // Another program holds the library for now: the machine may still measure, and what it measures
         // is kept on this computer and sent later, as any measurement the library cannot take now.
@@ -292,7 +304,7 @@ Result<void> registerMachine(const Invocation &call, MachineOptions &o, Controll
 // makes its tool the reference. Its tool setter likewise: --setter, kept in the library, or the library's.
 Result<void> readReference(const Invocation &call, MachineOptions &o, ControllerKind kind)
 {
-    if (kind != ControllerKind::GrblHal)
+    if (keepsOwnReference(kind))
         return {};
     // The setter is the machine's: --setter is kept in the library for the next time, which it comes from
     // when not given.
@@ -403,7 +415,7 @@ Result<void> bindIdentity(const Invocation &call, MachineOptions &o)
     if (bound.value().kind == Kind::New) {
         o.newMachine = true;
         call.err << u"toffee-cli: \"%1\" is %2, new to the library"_s.arg(o.machine, o.identity.title())
-                 << (o.identity.controller == ControllerKind::GrblHal && !o.identity.emulator
+                 << (!keepsOwnReference(o.identity.controller) && !o.identity.emulator
                             ? u": it keeps no reference of its own, so the first tool it measures becomes "
                               "its reference."_s
                             : u"."_s)

@@ -34,7 +34,12 @@ namespace Toffee::Cli::Machine {
 
 bool MachineRun::pushOffsets()
 {
-    // What the controller held on connecting, to write only what differs and say what changed.
+    // What the controller held on connecting, to write only what differs and say what changed. A controller
+    // whose table could not be read (LinuxCNC's file out of reach) says why.
+    if (m_connection.firmware().hasToolTable() && !m_connection.connectResult().controllerTools) {
+        m_connection.readToolTable([this](const SessionResult &r) { finishWith(r); });
+        return true;
+    }
     const PushPlan plan = planPush(*m_options.table,
         m_connection.connectResult().controllerTools.value_or(QList<ControllerTool> {}),
         m_connection.firmware().toolTableSize);
@@ -44,10 +49,14 @@ bool MachineRun::pushOffsets()
         return true;
     }
     if (!plan.beyond().isEmpty()) {
+        const int size = m_connection.firmware().toolTableSize;
         finishWith(SessionResult::failed(SessionResult::Outcome::Refused,
-            u"%1 cannot go into the controller's table of %2 tools. Nothing was written: renumber them, or "
-            "remove their TLOs, and push again."_s.arg(plan.beyond().join(u", "_s))
-                .arg(m_connection.firmware().toolTableSize)));
+            (size > 0 ? u"%1 cannot go into the controller's table of %2 tools."_s
+                            .arg(plan.beyond().join(u", "_s))
+                            .arg(size)
+                      : u"%1 are not in the controller's tool table, and G10 L1 cannot add a tool."_s.arg(
+                          plan.beyond().join(u", "_s)))
+                + u" Nothing was written: renumber them, or remove their TLOs, and push again."_s));
         return true;
     }
     const auto report = [this, plan] {
@@ -70,8 +79,7 @@ bool MachineRun::pushOffsets()
             printJson(m_call, QJsonObject { { u"written"_s, written }, { u"read_back"_s, u"agrees"_s } });
         else
             m_call.out << plan.writes().size() << " of " << plan.entries.size()
-                       << " tools written into the controller's table and read back ($#): all agree."
-                       << Qt::endl;
+                       << " tools written into the controller's table and read back: all agree." << Qt::endl;
         finishWith(SessionResult {});
     };
     if (plan.writes().isEmpty()) {

@@ -139,13 +139,14 @@ void printSummary(Invocation &call, const RackSequence &sequence, const SessionR
 
 QJsonObject firmwareJson(const FirmwareInfo &f)
 {
-    static const char *const kKinds[] = { "unknown", "community", "stock", "grblhal" };
-    static_assert(std::size(kKinds) == size_t(FirmwareInfo::Kind::GrblHal) + 1);
+    static const char *const kKinds[] = { "unknown", "community", "stock", "grblhal", "linuxcnc" };
+    static_assert(std::size(kKinds) == size_t(FirmwareInfo::Kind::LinuxCnc) + 1);
     return { { u"kind"_s, QString::fromLatin1(kKinds[int(f.kind)]) },
         { u"controller"_s,
-            f.isGrblHal()       ? u"grblhal"_s
-                : f.isCarvera() ? u"carvera"_s
-                                : u"unknown"_s },
+            f.isGrblHal()        ? u"grblhal"_s
+                : f.isLinuxCnc() ? u"linuxcnc"_s
+                : f.isCarvera()  ? u"carvera"_s
+                                 : u"unknown"_s },
         { u"version"_s, f.version }, { u"break_test"_s, f.hasBreakTest() },
         { u"manual_offset"_s, f.hasManualOffset() }, { u"tool_table_size"_s, f.toolTableSize } };
 }

@@ -153,6 +153,14 @@ void MachineLink::requestStatus()
     sendRealtime('?');
 }
 
+void MachineLink::reportStatus(const MachineStatus &status)
+{
+    m_status = status;
+    m_statusClock.start();
+    m_statusRequested = false;
+    Q_EMIT statusChanged(status);
+}
+
 void MachineLink::startNext()
 {
     if (m_current || m_queue.isEmpty() || !isOpen())

@@ -95,6 +95,9 @@ public:
         qsizetype maxLines = kMaxReplyLines);
     void sendRealtime(char c);
     void requestStatus();
+    // A status learned by asking (a controller with no status report of its own: LinuxCNC's gets), taken and
+    // said as a report's would be.
+    void reportStatus(const MachineStatus &status);
     void setPollInterval(int ms); // 0: no polling
     // Scales every time limit, for tests that inject silence (1.0 = as given).
     void setTimeoutScale(double scale) { m_timeoutScale = scale; }

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+using namespace Qt::StringLiterals;
+
 namespace Toffee {
 
 TloReading TloReading::from(double tloInForce, const std::optional<OffsetReport> &report)
@@ -26,6 +28,8 @@ QString FirmwareInfo::description() const
         return tr("Makera stock firmware %1").arg(version);
     case Kind::GrblHal:
         return tr("grblHAL %1").arg(version);
+    case Kind::LinuxCnc:
+        return version.isEmpty() ? u"LinuxCNC"_s : tr("LinuxCNC %1").arg(version);
     case Kind::Unknown:
         break;
     }

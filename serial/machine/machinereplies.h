@@ -82,20 +82,28 @@ struct FirmwareInfo
     Q_DECLARE_TR_FUNCTIONS(Toffee::FirmwareInfo)
 
 public:
-    enum class Kind { Unknown, Community, Stock, GrblHal };
+    enum class Kind { Unknown, Community, Stock, GrblHal, LinuxCnc };
     Kind kind = Kind::Unknown;
     QString version; // as the machine printed it; empty when it did not say
     int toolTableSize = 0; // grblHAL: how many tools its own table holds (0: none; then G43.1 applies TLOs)
 
     [[nodiscard]] bool isCarvera() const { return kind == Kind::Community || kind == Kind::Stock; }
     [[nodiscard]] bool isGrblHal() const { return kind == Kind::GrblHal; }
+    [[nodiscard]] bool isLinuxCnc() const { return kind == Kind::LinuxCnc; }
     // A break test that compares and stops: the community firmware's M491.1; grblHAL's as Toffee runs it (a
     // probe compared here). Makera's stock M491.1 is a plain calibration that adopts whatever it measures.
-    [[nodiscard]] bool hasBreakTest() const { return kind == Kind::Community || kind == Kind::GrblHal; }
+    [[nodiscard]] bool hasBreakTest() const
+    {
+        return kind == Kind::Community || kind == Kind::GrblHal || kind == Kind::LinuxCnc;
+    }
     // A TLO can be set by hand: M493.3 (stock: ignored without a word), grblHAL's G10 L1 or G43.1.
     [[nodiscard]] bool hasManualOffset() const { return kind != Kind::Stock; }
     // The controller keeps a table of tools of its own (grblHAL built with N_TOOLS).
-    [[nodiscard]] bool hasToolTable() const { return kind == Kind::GrblHal && toolTableSize > 0; }
+    // LinuxCNC's tool.tbl, written with G10 L1 (read from the file: linuxcncrsh has no command for it).
+    [[nodiscard]] bool hasToolTable() const
+    {
+        return (kind == Kind::GrblHal && toolTableSize > 0) || kind == Kind::LinuxCnc;
+    }
     // The Carvera's automatic tool changer, with its rack of six.
     [[nodiscard]] bool hasRack() const { return isCarvera(); }
     // "Makera stock firmware 1.0.1", "grblHAL 1.1f.20260817", for people.

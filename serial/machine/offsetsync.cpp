@@ -50,7 +50,8 @@ PushPlan planPush(const ToolTable &table, const QList<ControllerTool> &held, int
             continue;
         PushedEntry row { tool.number, stored->tlo, heldFor(held, tool.number),
             std::max(0.0, toMillimetres(tool.totalRadius(), table.units())), PushedEntry::Action::Write };
-        if (tool.number < 1 || tool.number > tableSize)
+        // A table of a size holds T1 to its size; one that lists its tools (LinuxCNC's) holds those alone.
+        if (tableSize > 0 ? tool.number < 1 || tool.number > tableSize : !row.inController)
             row.action = PushedEntry::Action::Beyond;
         else if (row.inController && std::fabs(*row.inController - row.inFile) <= stored->sameWithin)
             row.action = PushedEntry::Action::Unchanged;

@@ -56,7 +56,8 @@ struct PushPlan
     [[nodiscard]] QStringList beyond() const; // "T17", …
 };
 
-// `held`: what the controller holds now (millimetres); `tableSize`: its table's last tool number.
+// `held`: what the controller holds now (millimetres); `tableSize`: its table's last tool number, or 0 for a
+// table that lists its tools (LinuxCNC's tool.tbl): a tool not held is beyond it.
 [[nodiscard]] PushPlan planPush(const ToolTable &table, const QList<ControllerTool> &held, int tableSize);
 
 } // namespace Toffee

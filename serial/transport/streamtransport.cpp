@@ -77,8 +77,14 @@ void StreamTransport::start(QIODevice *device)
     connect(device, &QIODevice::readyRead, this, &StreamTransport::readAvailable, Qt::UniqueConnection);
     m_tries = 0;
     m_phase = Phase::Probing;
+    m_silent = false;
+    m_heard = false;
     m_asText.reset(ConsoleStream::Mode::Text);
     m_asFrames.reset(ConsoleStream::Mode::Framed);
+    if (!m_asksFirst) {
+        m_silent = true;
+        return opened(ConsoleStream::Mode::Text);
+    }
     probe();
 }
 
@@ -136,6 +142,13 @@ void StreamTransport::timedOut()
         return;
     if (m_tries < kDetectTries)
         return probe();
+    if (m_opensSilent && !m_heard) {
+        // Nothing at all came back: a console that answers nothing unasked-for. The frame's bytes wait in its
+        // line buffer: a line end ends them, and the link opens in plain text for the next question.
+        m_device->write("\n");
+        m_silent = true;
+        return opened(ConsoleStream::Mode::Text);
+    }
     const QString message
         = tr("%1 did not answer within %2 s, in plain text or in Makera's frames. Check that the machine is "
              "switched on and has started, and the address or port.")
@@ -166,6 +179,7 @@ void StreamTransport::readAvailable()
 
 void StreamTransport::detect(QByteArrayView bytes)
 {
+    m_heard = m_heard || !bytes.isEmpty();
     if (m_phase == Phase::Probing) {
         // Any frame that passes its checks is the framed firmware's (its answer, or its boot lines).
         if (!m_asFrames.feed(bytes).isEmpty() || m_asFrames.frameCounts().frames > 0)

@@ -42,6 +42,14 @@ public:
     static constexpr qint64 kReadSliceBytes = 64 * 1024;
 
     void setProtocol(Protocol protocol) { m_protocol = protocol; }
+    // When the first question gets no answer at all: opens in plain text instead of failing, openedSilent()
+    // saying so (linuxcncrsh, LinuxCNC's console, answers nothing before its hello). For a controller not
+    // yet known on a network link.
+    void setOpensSilent(bool silent) { m_opensSilent = silent; }
+    // Asks no first question: opens at once in plain text (LinuxCNC chosen: its console takes no frame).
+    void setAsksFirst(bool asks) { m_asksFirst = asks; }
+    // The link opened without an answer to the first question (or without asking it).
+    [[nodiscard]] bool openedSilent() const { return m_silent; }
     [[nodiscard]] Protocol protocol() const { return m_protocol; }
     // What the link speaks once open (what the first question found).
     [[nodiscard]] ConsoleStream::Mode mode() const { return m_stream.mode(); }
@@ -99,6 +107,10 @@ private:
     ConsoleStream m_asFrames { ConsoleStream::Mode::Framed, kMaxLineBytes };
     QTimer m_timer;
     int m_tries = 0;
+    bool m_opensSilent = false;
+    bool m_asksFirst = true;
+    bool m_silent = false;
+    bool m_heard = false; // anything came while the first question was asked
     bool m_sliceQueued = false; // the next slice of what is waiting is to be read
     QList<LineAssembler::Line> m_queued; // read, not yet given to the receivers
     bool m_deliveryQueued = false;

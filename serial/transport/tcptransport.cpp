@@ -16,14 +16,14 @@ using namespace Qt::StringLiterals;
 
 namespace Toffee {
 
-Result<TcpTransport::Address> TcpTransport::parseAddress(const QString &text)
+Result<TcpTransport::Address> TcpTransport::parseAddress(const QString &text, quint16 defaultPort)
 {
     const QString trimmed = text.trimmed();
-    const auto refuse = [&trimmed] {
+    const auto refuse = [&trimmed, defaultPort] {
         return Error { TcpTransport::tr("\"%1\" is not a machine's address: give HOST or HOST:PORT (the port "
                                         "is %2 when not given), such as 192.168.1.57 or carvera.local:2222.")
                            .arg(trimmed)
-                           .arg(kDefaultPort) };
+                           .arg(defaultPort) };
     };
     QString host = trimmed;
     QString port;
@@ -50,7 +50,7 @@ Result<TcpTransport::Address> TcpTransport::parseAddress(const QString &text)
     if (host.isEmpty() || host.size() > 253
         || std::any_of(host.cbegin(), host.cend(), [](QChar c) { return c.unicode() < 0x21 || c.isSpace(); }))
         return refuse();
-    Address address { host, kDefaultPort };
+    Address address { host, defaultPort };
     if (hasPort) {
         bool ok = false;
         const uint value = port.toUInt(&ok);

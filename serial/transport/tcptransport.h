@@ -38,9 +38,11 @@ public:
         }
     };
     // "HOST", "HOST:PORT", "[IPv6]" or "[IPv6]:PORT".
-    [[nodiscard]] static Result<Address> parseAddress(const QString &text);
+    // `defaultPort`: the port when the text gives none (the Carvera's 2222; LinuxCNC's linuxcncrsh 5007).
+    [[nodiscard]] static Result<Address> parseAddress(const QString &text, quint16 defaultPort = kDefaultPort);
 
     explicit TcpTransport(const Address &address, QObject *parent = nullptr);
+    [[nodiscard]] const Address &address() const { return m_address; }
     ~TcpTransport() override;
 
     // 0: kConnectTimeoutMs.

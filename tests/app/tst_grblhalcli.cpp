@@ -329,7 +329,7 @@ private Q_SLOTS:
         QVERIFY2(run.err.contains("latch feed"), run.err.constData());
         run = cli({ u"--no-history"_s, u"--controller"_s, u"fanuc"_s, u"--emulator"_s, u"status"_s });
         QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.contains("auto, carvera or grblhal"), run.err.constData());
+        QVERIFY2(run.err.contains("auto, carvera, grblhal or linuxcnc"), run.err.constData());
         run = cli({ u"--no-history"_s, u"--controller"_s, u"grblhal"_s, u"--emulator"_s, u"status"_s });
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(run.err.contains("emulator is a Carvera"), run.err.constData());

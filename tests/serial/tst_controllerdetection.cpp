@@ -290,7 +290,7 @@ private Q_SLOTS:
         if (classicGrbl) {
             QVERIFY2(refused.message.contains(u"classic Grbl"_s), qPrintable(refused.message));
         } else {
-            QVERIFY2(refused.message.contains(u"neither a Carvera nor grblHAL"_s)
+            QVERIFY2(refused.message.contains(u"not a Carvera, grblHAL or LinuxCNC"_s)
                     && refused.message.contains(u"WELCOME TO ACME CNC"_s),
                 qPrintable(refused.message));
         }

@@ -70,8 +70,7 @@ ConnectionPanel::ConnectionPanel(MachineConnection *connection, QWidget *parent)
         m_baud->addItem(QString::number(baud), baud);
     m_controller->setObjectName(u"controllerCombo"_s);
     m_controller->setAccessibleName(tr("Controller the machine runs"));
-    for (const ControllerKind kind :
-        { ControllerKind::Auto, ControllerKind::Carvera, ControllerKind::GrblHal })
+    for (const ControllerKind kind : controllerKinds())
         m_controller->addItem(controllerKindTitle(kind), controllerKindName(kind));
     m_controller->setToolTip(tr("Which controller the machine runs. Automatic asks it with questions that "
                                 "change nothing on a Carvera or on grblHAL; a controller chosen is checked "

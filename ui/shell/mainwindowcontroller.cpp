@@ -33,19 +33,21 @@ namespace {
 
 QString controllerName(const MachineConnection *connection)
 {
-    return connection->firmware().isGrblHal() ? u"grblHAL"_s : connection->firmware().description();
+    return connection->firmware().isCarvera() || connection->firmware().kind == FirmwareInfo::Kind::Unknown
+        ? connection->firmware().description()
+        : controllerKindTitle(connection->controllerKind());
 }
 
 } // namespace
 
 void MainWindow::connectControllerSettings()
 {
-    // Once the controller is known, before anything of its own is sent: grblHAL's tool setter and the
+    // Once the controller is known, before anything of its own is sent: the tool setter and the
     // reference Toffee kept for the machine.
     m_connection->setPreparer([this](const MachineIdentity &identity, ConnectionTarget &target) {
         if (const QString refused = bindMachine(identity); !refused.isEmpty())
             return refused;
-        if (identity.controller == ControllerKind::GrblHal && !identity.emulator) {
+        if (!keepsOwnReference(identity.controller) && !identity.emulator) {
             target.setter = machineToolSetter();
             // A machine new to the library adopts no reference: its first probe makes one.
             target.reference = m_newMachine ? std::nullopt : keptReference();
@@ -159,7 +161,7 @@ void MainWindow::editToolSetter()
 
 void MainWindow::pushOffsets()
 {
-    // Read first, so that the preview shows what grblHAL holds now, not at connecting.
+    // Read first, so that the preview shows what the controller holds now, not at connecting.
     m_connection->readToolTable([this](const SessionResult &read) {
         if (!read.ok() || !read.controllerTools)
             return showError(tr("Cannot read the controller's tool table"), read.message);
@@ -170,7 +172,7 @@ void MainWindow::pushOffsets()
             OffsetDifference row { entry.tool, entry.inFile, entry.inController, false, {} };
             switch (entry.action) {
             case PushedEntry::Action::Beyond:
-                row.what = tr("beyond its table (T1 to T%1)").arg(size);
+                row.what = size > 0 ? tr("beyond its table (T1 to T%1)").arg(size) : tr("not in its table");
                 break;
             case PushedEntry::Action::Unchanged:
                 row.what = tr("unchanged");
@@ -183,12 +185,15 @@ void MainWindow::pushOffsets()
             rows.append(row);
         }
         const QList<ControllerTool> writes = plan.writes();
-        const QString refusal = plan.beyond().isEmpty()
-            ? QString()
-            : tr("%1 cannot go into grblHAL's table of %2 tools: nothing is pushed. Renumber them, or remove "
+        const QString refusal = plan.beyond().isEmpty() ? QString()
+            : size > 0
+            ? tr("%1 cannot go into %2's table of %3 tools: nothing is pushed. Renumber them, or remove "
                  "their TLOs, and push again.")
-                  .arg(plan.beyond().join(u", "_s))
-                  .arg(size);
+                  .arg(plan.beyond().join(u", "_s), controllerName(m_connection))
+                  .arg(size)
+            : tr("%1 are not in %2's tool table, and G10 L1 cannot add a tool: nothing is pushed. Add them "
+                 "to its table, or remove their TLOs, and push again.")
+                  .arg(plan.beyond().join(u", "_s), controllerName(m_connection));
         OffsetSyncDialog dialog(
             OffsetSyncDialog::Direction::Push, controllerName(m_connection), rows, refusal, this);
         if (dialog.exec() != QDialog::Accepted || writes.isEmpty())
@@ -196,8 +201,10 @@ void MainWindow::pushOffsets()
         m_connection->writeToolTable(writes, [this, count = writes.size()](const SessionResult &r) {
             if (!r.ok())
                 return showError(tr("The offsets were not all pushed"), r.message);
-            statusBar()->showMessage(
-                tr("Written into grblHAL's table and read back, all agreeing: %1 TLOs.").arg(count), 10000);
+            statusBar()->showMessage(tr("Written into %1's table and read back, all agreeing: %2 TLOs.")
+                                         .arg(controllerName(m_connection))
+                                         .arg(count),
+                10000);
         });
     });
 }

@@ -67,9 +67,8 @@ void MainWindow::connectHistory()
         if (state != MachineConnection::State::Connected)
             return;
         if (m_history->library()) {
-            const bool grblHal = m_connection->controllerKind() == ControllerKind::GrblHal;
-            (void)m_history->library()->addMachine(
-                { machineName(), grblHal ? u"grblhal"_s : u"carvera"_s, m_connection->description() });
+            (void)m_history->library()->addMachine({ machineName(),
+                dialectKeyOf(m_connection->controllerKind()), m_connection->description() });
         }
         refreshToolLife();
         showSelectedHistory();

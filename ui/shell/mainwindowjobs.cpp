@@ -56,6 +56,8 @@ JobCheckDialog *MainWindow::openJobCheck(const QString &path)
         sources.library.reset();
     if (m_connection->firmware().isGrblHal())
         sources.machineDialect = Dialect::GrblHal;
+    else if (m_connection->firmware().isLinuxCnc())
+        sources.machineDialect = Dialect::LinuxCnc;
     if (const MachineController *controller = m_connection->session()) {
         if (const auto table = controller->controllerTable()) {
             QHash<int, double> tlos;

@@ -146,9 +146,9 @@ void ToolContextMenu::makeActive(bool confirm)
     const int tool = selectedTool();
     if (tool < 0 || !m_connection->canOperate() || m_connection->activeTool() == tool)
         return;
-    const QString command = m_connection->controllerKind() == ControllerKind::GrblHal
-        ? u"M61 Q%1"_s.arg(tool)
-        : u"M493.2 T%1"_s.arg(tool);
+    const QString command = m_connection->controllerKind() == ControllerKind::Carvera
+        ? u"M493.2 T%1"_s.arg(tool)
+        : u"M61 Q%1"_s.arg(tool);
     if (confirm) {
         const bool inSpindle = askFirst(m_window,
             { QMessageBox::Question, tr("Make T%1 active?").arg(tool),

