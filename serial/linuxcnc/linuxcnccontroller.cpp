@@ -105,6 +105,13 @@ void LinuxCncController::mdi(const QByteArray &line, int timeoutMs, Done done, N
         return;
     }
     m_link->send(command, timeoutMs, [this, done, line, next = std::move(next)](const CommandReply &reply) {
+        // Stopped here (set abort): whatever the line's answer, it did not run to its end; nothing after it
+        // is sent.
+        if (m_abortedHere && reply.status != CommandReply::Status::LinkLost)
+            return done(SessionResult::failed(SessionResult::Outcome::MachineError,
+                tr("Stopped: LinuxCNC aborted \"%1\" where the machine stood. Nothing was measured or "
+                   "written; check where the spindle is before you go on.")
+                    .arg(QString::fromUtf8(line))));
         if (reply.status != CommandReply::Status::Refused) {
             if (!reply.ok())
                 return done(failure(reply));

@@ -111,8 +111,10 @@ void LinuxCncController::ready(
     readState(done, [this, done, what, next](const LinuxCnc::State &state) {
         if (const auto why = notReady(state, what))
             return done(SessionResult::failed(SessionResult::Outcome::Refused, *why));
-        if (state.enabled)
+        if (state.enabled) {
+            m_abortedHere = false;
             return next(state);
+        }
         // Toffee's own abort took the enable to a second connection: take it back.
         m_link->send("set enable " + m_enablePassword, MachineLink::kDefaultTimeoutMs,
             [this, done, state, next](const CommandReply &reply) {

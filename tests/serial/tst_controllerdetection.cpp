@@ -5,6 +5,7 @@
 // coolant, which the old framed status query toggled, stays off); a protocol chosen wrongly is refused before
 // it can leave the framed firmware deaf; a Carvera chosen for grblHAL, classic Grbl and a controller that is
 // neither are refused by name with nothing more sent.
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTcpSocket>
@@ -69,6 +70,38 @@ ConnectionTarget portTarget(const QString &port)
 
 // A machine on 127.0.0.1 that answers '?' with a status report and each line as `answer` says; it keeps
 // every line it was sent ('?' taken out, as a controller takes its real-time bytes).
+// A console that answers nothing unasked-for, as LinuxCNC's linuxcncrsh (2.9) does: only its hello, when
+// `answersHello`; every line it was sent is kept.
+class SilentConsole : public QObject
+{
+public:
+    QTcpServer server;
+    QList<QByteArray> lines;
+    bool answersHello = true;
+
+    SilentConsole()
+    {
+        server.listen(QHostAddress::LocalHost, 0);
+        connect(&server, &QTcpServer::newConnection, this, [this] {
+            QTcpSocket *socket = server.nextPendingConnection();
+            connect(socket, &QTcpSocket::readyRead, this, [this, socket] {
+                m_buffer += socket->readAll();
+                for (qsizetype end; (end = m_buffer.indexOf('\n')) >= 0;) {
+                    const QByteArray line = m_buffer.left(end);
+                    m_buffer.remove(0, end + 1);
+                    lines << line;
+                    if (answersHello && line == "hello EMC toffee 1.0")
+                        socket->write("HELLO ACK EMCNETSVR 1.1\r\n");
+                }
+            });
+        });
+    }
+    [[nodiscard]] quint16 port() const { return server.serverPort(); }
+
+private:
+    QByteArray m_buffer;
+};
+
 class OtherController : public QObject
 {
 public:
@@ -256,6 +289,44 @@ private Q_SLOTS:
         QCOMPARE(machine.lines.size(), 3);
         QCOMPARE(machine.lines.at(1), QByteArray("version"));
         QCOMPARE(machine.lines.at(2), QByteArray("$I"));
+    }
+
+    // A network machine that answers nothing to the first question is asked LinuxCNC's hello, and nothing
+    // else: linuxcncrsh answers it, and is LinuxCNC. One that answers nothing at all is said to, within the
+    // limits; with the Carvera chosen, the first question's silence fails as before, unasked.
+    void aSilentConsoleIsAskedLinuxCncsHelloAlone()
+    {
+        SilentConsole console;
+        MachineConnection connection;
+        QList<ControllerKind> prepared;
+        connection.setPreparer([&prepared](const MachineIdentity &identity, ConnectionTarget &) {
+            prepared << identity.controller;
+            return u"stop here"_s;
+        });
+        Outcome outcome = connectTo(connection, hostTarget(u"127.0.0.1:%1"_s.arg(console.port())));
+        QCOMPARE(prepared, QList<ControllerKind> { ControllerKind::LinuxCnc });
+        QCOMPARE(console.lines.size(), 2);
+        QVERIFY(console.lines.at(0).startsWith("\x86h")); // the first question's frame, ended by Toffee
+        QCOMPARE(console.lines.at(1), QByteArray("hello EMC toffee 1.0"));
+
+        console.answersHello = false;
+        console.lines.clear();
+        MachineConnection nothing;
+        QElapsedTimer clock;
+        clock.start();
+        outcome = connectTo(nothing, hostTarget(u"127.0.0.1:%1"_s.arg(console.port())));
+        QVERIFY(!outcome.connected);
+        QVERIFY2(outcome.message.contains(u"answered nothing"_s), qPrintable(outcome.message));
+        QVERIFY(clock.elapsed() < 15000);
+
+        console.lines.clear();
+        MachineConnection chosen;
+        ConnectionTarget carvera = hostTarget(u"127.0.0.1:%1"_s.arg(console.port()));
+        carvera.controller = ControllerKind::Carvera;
+        outcome = connectTo(chosen, carvera);
+        QVERIFY(!outcome.connected);
+        QVERIFY2(outcome.message.contains(u"did not answer within 3 s"_s), qPrintable(outcome.message));
+        QVERIFY(!console.lines.contains("hello EMC toffee 1.0"));
     }
 
     // Classic Grbl (it answers $I without [FIRMWARE:grblHAL]) and a controller that is neither: refused by

@@ -15,6 +15,7 @@
 #include "serial/machine/machinecontroller.h"
 #include "serial/machine/machinelink.h"
 #include "serial/machineconnection.h"
+#include "serial/transport/linetransport.h"
 #include "tests/support/linuxcncpeer.h"
 
 using namespace Toffee;
@@ -180,6 +181,119 @@ private Q_SLOTS:
         QVERIFY2(programCodes().contains("G43"), programCodes().constData());
         QCOMPARE(r.recording->tool, 2);
         m_peer->ask({ "set mdi G92.1", "set mdi G10 L2 P1 Z0" });
+        m_connection.disconnectFromMachine();
+        QVERIFY2(connectTo(m_connection, target(ControllerKind::LinuxCnc), &why), qPrintable(why));
+        QCOMPARE(m_connection.activeTool(), 2);
+    }
+
+    // T2 again, intact: passes. Worn 0.3 mm shorter: ToolBroken, nothing adopted in tool.tbl or in force, the
+    // spindle stopped and lifted.
+    void breakTestsCompareAndAdoptNothing()
+    {
+        SessionResult r = await([this](auto d) { return m_connection.breakTest(0.1, d, 5.0); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QVERIFY(std::fabs(r.breakTest->newTlo - 5.0) < 0.01);
+        QVERIFY(m_peer->setLength(2, 24.7));
+        r = await([this](auto d) { return m_connection.breakTest(0.1, d, 5.0); });
+        QCOMPARE(r.outcome, SessionResult::Outcome::ToolBroken);
+        QVERIFY2(r.message.contains(u"T2"_s) && r.message.contains(u"4.700"_s), qPrintable(r.message));
+        QCOMPARE(r.recording->breakTestFailed, true);
+        QVERIFY(std::fabs(*m_peer->tableZ(2) - 5.0) < 0.001);
+        QVERIFY(std::fabs(machineZ()) < 0.01);
+        // Below the firmware's smallest tolerance: refused before anything moves.
+        r = await([this](auto d) { return m_connection.breakTest(0.01, d, 5.0); });
+        QCOMPARE(r.outcome, SessionResult::Outcome::Refused);
+        QVERIFY(m_peer->setLength(2, 25.0));
+    }
+
+    // A TLO set by hand and one restored reach tool.tbl and the offset in force; M6 changes tools (the peer's
+    // change ends at once) and measures the new one.
+    void setRestoreSelectAndChange()
+    {
+        SessionResult r = await([this](auto d) { return m_connection.setTlo(5.5, d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QVERIFY(std::fabs(*m_peer->tableZ(2) - 5.5) < 0.001);
+        r = await([this](auto d) { return m_connection.restoreTlo(2, 5.0, d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QVERIFY(std::fabs(*m_peer->tableZ(2) - 5.0) < 0.001);
+        QCOMPARE(m_connection.session()->setTloCommand(1.25), u"G10 L1 P2 Z1.25, G43 H2"_s);
+        // An offset beyond any machine's: refused before anything is sent.
+        r = await([this](auto d) { return m_connection.setTlo(1e6, d); });
+        QCOMPARE(r.outcome, SessionResult::Outcome::Refused);
+        QVERIFY(std::fabs(*m_peer->tableZ(2) - 5.0) < 0.001);
+        r = await([this](auto d) { return m_connection.changeTool(3, d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(m_peer->get("tool"), QByteArray("3"));
+        QVERIFY2(std::fabs(r.tlo->tlo() - (-2.0)) < 0.01, qPrintable(QString::number(r.tlo->tlo())));
+        QVERIFY(std::fabs(*m_peer->tableZ(3) + 2.0) < 0.001);
+        // A tool LinuxCNC's table lacks is refused by LinuxCNC, in its words.
+        r = await([this](auto d) { return m_connection.selectTool(9, d); });
+        QCOMPARE(r.outcome, SessionResult::Outcome::MachineError);
+        QVERIFY2(r.message.contains(u"M61 Q9"_s), qPrintable(r.message));
+        QCOMPARE(m_peer->get("tool"), QByteArray("3"));
+    }
+
+    // Push: a tool not in LinuxCNC's table refuses the whole push by name; the others written and read back
+    // from the file. Pull reads the file as LinuxCNC rewrote it.
+    void pushIsAllOrNothingAndPullReadsTheFile()
+    {
+        const QByteArray before = m_peer->tableFile();
+        SessionResult r = await([this](auto d) {
+            return m_connection.writeToolTable({ { 1, 0.0, 1.5 }, { 4, 3.25, 1.0 }, { 12, 1.0, 1.0 } }, d);
+        });
+        QCOMPARE(r.outcome, SessionResult::Outcome::Refused);
+        QVERIFY2(r.message.contains(u"T12"_s) && !r.message.contains(u"T4,"_s), qPrintable(r.message));
+        QCOMPARE(m_peer->tableFile(), before);
+        r = await([this](auto d) {
+            return m_connection.writeToolTable({ { 1, 0.0, 1.5 }, { 4, 3.25, 1.0 } }, d);
+        });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QVERIFY(std::fabs(*m_peer->tableZ(4) - 3.25) < 0.001);
+        QVERIFY2(m_peer->tableFile().contains("2 mm ball end mill"), "LinuxCNC's remarks are kept");
+        r = await([this](auto d) { return m_connection.readToolTable(d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QList<ControllerTool> expected { { 1, 0.0, 1.5 }, { 2, 5.0, 3.0 }, { 3, -2.0, 5.0 },
+            { 4, 3.25, 1.0 } };
+        QCOMPARE(*r.controllerTools, expected);
+    }
+
+    // Stop during a probe: LinuxCNC aborts it (from a second connection, the first waiting for its line), the
+    // probe ends as a failure with nothing written, and the next operation takes the enable back.
+    void stopMidProbeAbortsIt()
+    {
+        const QByteArray before = m_peer->tableFile();
+        std::optional<SessionResult> result;
+        QVERIFY(m_connection.probe([&result](const SessionResult &r) { result = r; }));
+        QVERIFY(QTest::qWaitFor([this] { return machineZ() < -20.0; }, 20000));
+        m_connection.stop();
+        QVERIFY(QTest::qWaitFor([&result] { return result.has_value(); }, 20000));
+        QVERIFY2(result->message.startsWith(u"Stopped: LinuxCNC aborted"_s), qPrintable(result->message));
+        QVERIFY(!result->recording);
+        QCOMPARE(m_peer->tableFile(), before);
+        const double stoppedAt = machineZ();
+        QTest::qWait(500);
+        QCOMPARE(machineZ(), stoppedAt); // it stays where it stopped
+        const SessionResult again = await([this](auto d) { return m_connection.selectTool(3, d); });
+        QVERIFY2(again.ok(), qPrintable(again.message));
+    }
+
+    // The link lost mid-probe: the probe fails as a link failure within its limit, nothing recorded; LinuxCNC
+    // goes on to the end of its move.
+    void aLinkLostMidProbeRecordsNothing()
+    {
+        const QByteArray before = m_peer->tableFile();
+        std::optional<SessionResult> result;
+        QVERIFY(m_connection.probe([&result](const SessionResult &r) { result = r; }));
+        // Lifted first (the last test stopped it low), then on its way down to the setter.
+        QVERIFY(QTest::qWaitFor([this] { return machineZ() > -1.0; }, 20000));
+        QVERIFY(QTest::qWaitFor([this] { return machineZ() < -20.0; }, 20000));
+        m_connection.link()->transport()->close();
+        QVERIFY(QTest::qWaitFor([&result] { return result.has_value(); }, 10000));
+        QCOMPARE(result->outcome, SessionResult::Outcome::LinkFailure);
+        QVERIFY2(result->message.contains(u"G38.2"_s), qPrintable(result->message));
+        QVERIFY(!result->recording);
+        QCOMPARE(m_peer->tableFile(), before);
+        QVERIFY(QTest::qWaitFor([this] { return m_peer->get("program_status") == "IDLE"; }, 30000));
     }
 };
 
