@@ -70,6 +70,8 @@ The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator
                              when it was measured against the machine's reference; one set by hand, failed
                              in a break test or older than --stale-days (7) is refused unless --anyway
   unlock                     clear a halt ($X)
+  stop                       stop whatever the machine is doing, at once (the Carvera and grblHAL halt:
+                             unlock follows; LinuxCNC: set abort), then its status
   link-test --count N        N round trips; median, p99 and max in milliseconds
   push-offsets --table FILE  grblHAL, LinuxCNC: every tool of the table with a TLO into the controller's
                              own table (G10 L1 P Z), read back ($#; tool.tbl); tools beyond it refused by name

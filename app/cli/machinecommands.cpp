@@ -35,8 +35,11 @@ namespace Toffee::Cli {
 namespace {
 
 const QStringList kMachineCommands = { u"status"_s, u"report"_s, u"probe"_s, u"break-test"_s, u"set-tlo"_s,
-    u"select-tool"_s, u"change-tool"_s, u"restore"_s, u"unlock"_s, u"link-test"_s, u"rack"_s,
+    u"select-tool"_s, u"change-tool"_s, u"restore"_s, u"unlock"_s, u"stop"_s, u"link-test"_s, u"rack"_s,
     u"measure-rack"_s, u"check-rack"_s, u"push-offsets"_s, u"pull-offsets"_s };
+
+// After a stop, how long the machine is given to come to rest before its status is read.
+constexpr int kStopSettleMs = 300;
 
 } // namespace
 
@@ -238,7 +241,15 @@ void MachineRun::operate()
                 m_call.err << "toffee-cli: " << r.message << Qt::endl;
         }),
             brokenToolTloInSpindle());
-    else if (command == u"link-test")
+    else if (command == u"stop") {
+        // At once, whatever runs (another program's line too); then what the machine says it is doing.
+        c.stop();
+        QTimer::singleShot(kStopSettleMs, &m_connection, [this, status] {
+            if (!m_connection.status(status))
+                finishWith(SessionResult::failed(
+                    SessionResult::Outcome::MachineError, m_connection.haltedMessage()));
+        });
+    } else if (command == u"link-test")
         linkTest();
     else if (command == u"push-offsets")
         started = pushOffsets();

@@ -126,6 +126,8 @@ private:
     void afterHello(Done done);
     // The setter's cycle with the tool in the spindle: `next` gets the slow touch's machine Z.
     void measure(Done done, std::function<void(double contactMz)> next);
+    void probeReady(Done done);
+    void breakTestReady(double tolerance, Done done, std::optional<double> storedTlo);
     void touch(
         const QByteArray &probeLine, const ToolSetter &setter, Done done, std::function<void(double)> next);
     // Writes `tlo` for `tool` (G10 L1, then G43 H when it is in the spindle) and reads it back.

@@ -90,7 +90,7 @@ void LinuxCncController::measure(Done done, std::function<void(double)> next)
         return;
     }
     const ToolSetter setter = *m_setter;
-    ready(done, tr("probe"), [this, done, next, setter](const LinuxCnc::State &) {
+    {
         const int motion = MachineLink::kMotionTimeoutMs;
         const QList<QByteArray> approach { "M5", "G90 G53 G0 Z" + number(setter.safeZ),
             "G53 G0 X" + number(setter.x) + " Y" + number(setter.y) };
@@ -109,12 +109,18 @@ void LinuxCncController::measure(Done done, std::function<void(double)> next)
                     });
                 });
         });
-    });
+    }
 }
 
 void LinuxCncController::probe(Done done)
 {
     done = recording(std::move(done), RecordingKind::Probe);
+    // Ready first (estop, off, …: what to do comes before which tool), then the tool in the spindle.
+    ready(done, tr("probe"), [this, done](const LinuxCnc::State &) { probeReady(done); });
+}
+
+void LinuxCncController::probeReady(Done done)
+{
     const auto tool = spindleTool(done, tr("measure"));
     if (!tool)
         return;
@@ -142,6 +148,13 @@ void LinuxCncController::breakTest(double tolerance, Done done, std::optional<do
         refuse(done, valid.error().message);
         return;
     }
+    ready(done, tr("break-test"), [this, done, tolerance, storedTlo](const LinuxCnc::State &) {
+        breakTestReady(tolerance, done, storedTlo);
+    });
+}
+
+void LinuxCncController::breakTestReady(double tolerance, Done done, std::optional<double> storedTlo)
+{
     const auto tool = spindleTool(done, tr("break-test"));
     if (!tool)
         return;
