@@ -102,7 +102,9 @@ void MachineConnection::connectTo(const ConnectionTarget &target)
     connect(m_link.get(), &MachineLink::lineSent, this,
         [this](const QByteArray &l) { Q_EMIT consoleLine(l, true); });
     connect(m_link.get(), &MachineLink::lineReceived, this, [this](const QByteArray &l) {
-        if (m_link->grammar().classify(l) != ReplyKind::Status) // four a second would drown the console
+        // Status reports and the answers to status questions (LinuxCNC's gets): four a second would drown
+        // the console.
+        if (m_link->grammar().classify(l) != ReplyKind::Status && !m_link->isQuiet())
             Q_EMIT consoleLine(l, false);
     });
     connect(m_link.get(), &MachineLink::closed, this, [this](const QString &reason) {

@@ -127,7 +127,7 @@ bool MachineConnection::sendLine(
     // A script (M491, M6) ends with "Done ATC", a shell command perhaps with nothing: each as the firmware
     // answers it, so that no later "ok" is taken for this line's.
     m_link->send(
-        line, MachineLink::kMotionTimeoutMs,
+        m_session ? m_session->consoleCommand(line) : line, MachineLink::kMotionTimeoutMs,
         [this, done](const CommandReply &reply) {
             // Offsets the reply reports (an M493.3 or M493.4 typed by hand): the TLO in force is the status
             // report's, read next.

@@ -66,6 +66,7 @@ public:
     [[nodiscard]] ReplyEnd consoleReplyEnd(QByteArrayView line) const override { return replyEndFor(line); }
     [[nodiscard]] std::optional<OffsetReport> offsetsIn(const QList<QByteArray> &reply) const override;
     [[nodiscard]] ConsoleRules consoleRules() const override { return &CarveraConsole::rules; }
+    [[nodiscard]] QString consoleExample() const override { return QStringLiteral("M493.4"); }
     [[nodiscard]] std::optional<ProbeResult> probeIn(const QList<QByteArray> &reply) const override
     {
         return lastProbe(reply);

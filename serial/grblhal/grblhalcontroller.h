@@ -61,6 +61,7 @@ public:
     [[nodiscard]] QString aboveZ0Command(double height) const override;
     [[nodiscard]] QString restoreCommand(int tool, double tlo) const override;
     [[nodiscard]] bool needsToolSetter() const override { return true; }
+    [[nodiscard]] QString consoleExample() const override { return QStringLiteral("$#"); }
     void setToolSetter(const ToolSetter &setter) override { m_setter = setter; }
     void jog(const std::array<double, 3> &stepMm, double feed, Done done) override;
     [[nodiscard]] std::optional<ToolSetter> toolSetter() const override { return m_setter; }

@@ -142,20 +142,22 @@ void LinuxCncController::mdiChain(
 void LinuxCncController::get(const QByteArray &what, const QByteArray &keyword, Done done,
     std::function<void(const QByteArray &)> next)
 {
-    m_link->send(
-        "get " + what, MachineLink::kDefaultTimeoutMs,
-        [done, what, keyword, next](const CommandReply &reply) {
-            if (!reply.ok())
-                return done(failure(reply));
-            for (const QByteArray &line : reply.lines) {
-                if (const auto value = LinuxCnc::valueOf(line, keyword))
-                    return next(*value);
-            }
-            done(SessionResult::failed(SessionResult::Outcome::MachineError,
-                tr("linuxcncrsh answered \"get %1\" with something else (%2); is this LinuxCNC?")
-                    .arg(QString::fromUtf8(what), QString::fromUtf8(reply.lines.value(0).left(80)))));
-        },
-        ReplyEnd::Line);
+    auto answered = [done, what, keyword, next](const CommandReply &reply) {
+        if (!reply.ok())
+            return done(failure(reply));
+        for (const QByteArray &line : reply.lines) {
+            if (const auto value = LinuxCnc::valueOf(line, keyword))
+                return next(*value);
+        }
+        done(SessionResult::failed(SessionResult::Outcome::MachineError,
+            tr("linuxcncrsh answered \"get %1\" with something else (%2); is this LinuxCNC?")
+                .arg(QString::fromUtf8(what), QString::fromUtf8(reply.lines.value(0).left(80)))));
+    };
+    // The state asked for every half second is not said in the console.
+    if (m_polling)
+        m_link->sendQuietly("get " + what, MachineLink::kDefaultTimeoutMs, answered, ReplyEnd::Line);
+    else
+        m_link->send("get " + what, MachineLink::kDefaultTimeoutMs, answered, ReplyEnd::Line);
 }
 
 void LinuxCncController::connectToMachine(Done done)

@@ -73,6 +73,13 @@ public:
     [[nodiscard]] QString aboveZ0Command(double height) const override;
     [[nodiscard]] QString restoreCommand(int tool, double tlo) const override;
     [[nodiscard]] bool needsToolSetter() const override { return true; }
+    // A typed line is G-code for LinuxCNC's MDI: linuxcncrsh's own commands (set estop, shutdown, …) are not
+    // the console's to send.
+    [[nodiscard]] QByteArray consoleCommand(const QByteArray &typed) const override
+    {
+        return "set mdi " + typed;
+    }
+    [[nodiscard]] QString consoleExample() const override { return QStringLiteral("G43 H2"); }
     void setToolSetter(const ToolSetter &setter) override { m_setter = setter; }
     [[nodiscard]] std::optional<ToolSetter> toolSetter() const override { return m_setter; }
     [[nodiscard]] bool keepsReference() const override { return false; }

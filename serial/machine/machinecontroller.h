@@ -166,6 +166,11 @@ public:
     // A halt reason a status report gave (the Carvera's 1-41), in this controller's words.
     [[nodiscard]] virtual HaltWords haltWords(int reason) const { return neutralHaltWords(reason); }
     [[nodiscard]] static HaltWords neutralHaltWords(int reason);
+    // A line typed in the console as this controller takes it (linuxcncrsh takes G-code only as "set mdi …");
+    // as typed by default.
+    [[nodiscard]] virtual QByteArray consoleCommand(const QByteArray &typed) const { return typed; }
+    // A line worth typing on this controller, for the console's hint ("M493.4", "$#").
+    [[nodiscard]] virtual QString consoleExample() const { return QStringLiteral("G4 P0"); }
     // This family's own rules for a typed line, before every controller's (ConsoleCheck); none by default.
     [[nodiscard]] virtual ConsoleRules consoleRules() const { return nullptr; }
     // Moves the machine by `stepMm` (X, Y, Z, relative, at most kMaxJogStepMm each) at `feed` mm/min, to

@@ -122,16 +122,26 @@ void MachineLink::setPollInterval(int ms)
 void MachineLink::send(
     const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end, qsizetype maxLines)
 {
+    enqueue({ line, timeoutMs, std::move(handler), end, maxLines, false });
+}
+
+void MachineLink::enqueue(Pending pending)
+{
     if (!isOpen()) {
-        CommandReply reply { CommandReply::Status::LinkLost, line, {},
+        CommandReply reply { CommandReply::Status::LinkLost, pending.line, {},
             tr("Not connected to the machine; connect first.") };
         QMetaObject::invokeMethod(
-            this, [handler, reply] { handler(reply); }, Qt::QueuedConnection);
+            this, [handler = pending.handler, reply] { handler(reply); }, Qt::QueuedConnection);
         return;
     }
-    m_queue.append({ line, timeoutMs, std::move(handler), end, maxLines });
+    m_queue.append(std::move(pending));
     if (!m_current)
         startNext();
+}
+
+void MachineLink::sendQuietly(const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end)
+{
+    enqueue({ line, timeoutMs, std::move(handler), end, kMaxReplyLines, true });
 }
 
 void MachineLink::sendRealtime(char c)
@@ -173,7 +183,8 @@ void MachineLink::startNext()
     m_timeout.start(m_timeoutOverride > 0 ? m_timeoutOverride : int(m_current->timeoutMs * m_timeoutScale));
     if (m_current->end == ReplyEnd::Quiet)
         m_quiet.start(int(kQuietMs * m_timeoutScale));
-    Q_EMIT lineSent(m_current->line);
+    if (!m_current->quiet)
+        Q_EMIT lineSent(m_current->line);
     m_transport->writeLine(m_current->line);
 }
 

@@ -93,6 +93,12 @@ public:
     // (grblHAL's $# of a large tool table) asks for more.
     void send(const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end = ReplyEnd::Ok,
         qsizetype maxLines = kMaxReplyLines);
+    // A question the controller asks for its status (LinuxCNC's gets, every half second while idle): sent as
+    // send() does, but not said as sent (lineSent), and isQuiet() while its answer comes, so that the console
+    // is not drowned, as it is not by status reports.
+    void sendQuietly(
+        const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end = ReplyEnd::Ok);
+    [[nodiscard]] bool isQuiet() const { return m_current && m_current->quiet; }
     void sendRealtime(char c);
     void requestStatus();
     // A status learned by asking (a controller with no status report of its own: LinuxCNC's gets), taken and
@@ -141,8 +147,10 @@ private:
         ReplyHandler handler;
         ReplyEnd end = ReplyEnd::Ok;
         qsizetype maxLines = kMaxReplyLines;
+        bool quiet = false;
     };
 
+    void enqueue(Pending pending);
     void startNext();
     void handleLine(const QByteArray &line);
     // A line of the running command's reply, by how its reply ends.

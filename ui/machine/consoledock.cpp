@@ -11,6 +11,7 @@
 #include "model/clock.h"
 #include "model/document/tooldocument.h"
 #include "serial/machine/consolecheck.h"
+#include "serial/machine/machinecontroller.h"
 #include "serial/machineconnection.h"
 #include "ui/common/appearance.h"
 
@@ -37,7 +38,15 @@ ConsoleDock::ConsoleDock(MachineConnection *connection, ToolDocument *document, 
     m_filter->setClearButtonEnabled(true);
     m_command->setObjectName(u"consoleCommand"_s);
     m_command->setAccessibleName(tr("Command to send to the machine"));
-    m_command->setPlaceholderText(tr("Type a command (e.g. M493.4) and press Enter; ↑ ↓ for history"));
+    m_command->setPlaceholderText(tr("Type a command and press Enter; ↑ ↓ for history"));
+    // The hint names a line the connected controller takes.
+    connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State state) {
+        const MachineController *controller = m_connection->session();
+        m_command->setPlaceholderText(state == MachineConnection::State::Connected && controller
+                ? tr("Type a command (e.g. %1) and press Enter; ↑ ↓ for history")
+                      .arg(controller->consoleExample())
+                : tr("Type a command and press Enter; ↑ ↓ for history"));
+    });
     useMonospace(m_command);
     m_command->installEventFilter(this);
 

@@ -127,8 +127,14 @@ void ProbePanel::report(const SessionResult &result, const QString &title)
 
 void ProbePanel::probe(bool confirm)
 {
-    if (!m_connection->canOperate() || m_connection->activeTool() == Limits::kEmptySpindle)
+    if (!m_connection->canOperate())
         return;
+    // Pressed with nothing to measure (F5 with an empty spindle): said, not silently ignored.
+    if (m_connection->activeTool() == Limits::kEmptySpindle)
+        return report(SessionResult::failed(SessionResult::Outcome::Refused,
+                          tr("The machine says no tool is in the spindle (T0), so there is nothing to probe. "
+                             "Say which tool is in first (the table's context menu: Make Active).")),
+            tr("Nothing to probe"));
     const QString name = m_connection->activeToolName();
     // A controller that keeps no reference (grblHAL): the first tool measured on this machine becomes it.
     const QString reference = m_connection->probeMakesReference() ? u"\n\n"_s
