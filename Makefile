@@ -118,6 +118,8 @@ bench: build
 	$(BUILD_DIR)/bin/toffee-bench-wire
 	TOFFEE_GRBLHAL_PEER=$${TOFFEE_GRBLHAL_PEER:-$(wildcard $(CURDIR)/../shared/peers/grblhal/start)} \
 		$(BUILD_DIR)/bin/toffee-bench-grblhal-probe
+	TOFFEE_LINUXCNC_PEER=$${TOFFEE_LINUXCNC_PEER:-$(wildcard $(CURDIR)/../shared/peers/linuxcnc/start)} \
+		$(BUILD_DIR)/bin/toffee-bench-linuxcnc-probe
 	$(BUILD_DIR)/bin/toffee-cli --emulator link-test --count 10000
 	@link=$$(mktemp -u /tmp/toffee-bench-tty.XXXXXX); \
 	$(BUILD_DIR)/bin/toffee-emulator --link $$link > /dev/null & pid=$$!; \

@@ -1474,10 +1474,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>要发送给机床的命令</translation>
     </message>
     <message>
-        <source>Type a command (e.g. M493.4) and press Enter; ↑ ↓ for history</source>
-        <translation>输入命令（例如 M493.4）后按回车；↑ ↓ 查看历史</translation>
-    </message>
-    <message>
         <source>not connected; connect first</source>
         <translation>未连接；请先连接</translation>
     </message>
@@ -1533,6 +1529,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>T%1 was probed but not recorded: %2</source>
         <translation>T%1 已对刀，但未记录：%2</translation>
     </message>
+    <message>
+        <source>Type a command and press Enter; ↑ ↓ for history</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type a command (e.g. %1) and press Enter; ↑ ↓ for history</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ControllerDetector</name>
@@ -1557,8 +1561,16 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>控制器像 Grbl 一样回答了 $I，但没有表明自己是 grblHAL（[FIRMWARE:grblHAL]）：它可能是经典 Grbl，不保存刀具表。Toffee 管理 Carvera 和 grblHAL 机器；未发送其他任何内容。</translation>
     </message>
     <message>
-        <source>The controller is neither a Carvera nor grblHAL, the controllers Toffee manages: it answered &quot;version&quot; with %1 and &quot;$I&quot; with %2. Nothing else was sent. If it is one of them, choose it (Carvera or grblHAL; toffee-cli --controller) and connect again.</source>
-        <translation>该控制器既不是 Carvera 也不是 grblHAL（Toffee 管理的控制器）：它对“version”的回答是 %1，对“$I”的回答是 %2。未发送其他任何内容。如果它是其中之一，请选择它（Carvera 或 grblHAL；toffee-cli --controller）并重新连接。</translation>
+        <source>The controller is not a Carvera, grblHAL or LinuxCNC, the controllers Toffee manages: it answered &quot;version&quot; with %1 and &quot;$I&quot; with %2. Nothing else was sent. If it is one of them, choose it (Carvera, grblHAL or LinuxCNC; toffee-cli --controller) and connect again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 The machine answered nothing: not to the Carvera&apos;s and grblHAL&apos;s first question, nor to LinuxCNC&apos;s hello. Check that it is switched on and has started, and the address and port.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller is none of those Toffee manages: it answered LinuxCNC&apos;s hello with %1. Nothing else was sent.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1662,6 +1674,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Unknown firmware %1</source>
         <translation>未知固件 %1</translation>
+    </message>
+    <message>
+        <source>LinuxCNC %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3817,6 +3833,249 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
 </context>
 <context>
+    <name>Toffee::LinuxCncController</name>
+    <message>
+        <source>The line &quot;%1&quot; is too long for linuxcncrsh; nothing was sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped: LinuxCNC aborted &quot;%1&quot; where the machine stood. Nothing was measured or written; check where the spindle is before you go on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC refused &quot;%1&quot; and did not say why (get error: OK). Check LinuxCNC&apos;s own screen.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC refused &quot;%1&quot;: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linuxcncrsh answered &quot;get %1&quot; with something else (%2); is this LinuxCNC?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linuxcncrsh refused Toffee&apos;s hello (HELLO NAK): it was started with a connect password of its own (--connectpw), which Toffee does not know. Start it with the default (EMC), then connect again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC refused the enable password in this machine&apos;s settings (linuxcncrsh --enablepw). Set the right one, then connect again. Nothing was sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This LinuxCNC&apos;s machine units are %1 ([TRAJ] LINEAR_UNITS); Toffee reads and writes millimetres only. Nothing was sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>select a tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC was told T%1 is in the spindle but says T%2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>T%1 may be asked for at LinuxCNC&apos;s own screen (its manual tool change)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC changes to a tool, not to an empty spindle: use Select Tool with T0.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>change tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC ended the change to T%1 with T%2 in the spindle: nothing was measured.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s change was aborted (set abort): check what is in the spindle, then select it and restore or probe its TLO before cutting.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toffee cannot %1 now: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing was sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC is in estop. Release it at the machine (in AXIS: F1), then try again; Toffee never releases an estop itself.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s machine is off. Switch it on (in AXIS: F2), then try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC is not homed. Home every axis (in AXIS: Ctrl-Home), then try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC is running a program or a line (%1). Wait until it is idle, then try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC is in %1 mode; Toffee works through MDI and does not switch modes itself (a switch aborts whatever runs). Switch it to MDI (in AXIS: F5), then try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Another program took control of LinuxCNC (linuxcncrsh&apos;s enable) since Toffee connected. Make sure nobody else is driving it, then connect again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC is in inches (G20), where G10 and G38.2 take inches. Toffee works in millimetres: send G21, then try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC did not print what Toffee asked of it (%1); it said &quot;%2&quot;. Nothing was recorded.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot read LinuxCNC&apos;s INI %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linuxcncrsh cannot read LinuxCNC&apos;s tool table, so Toffee reads its file: give the INI LinuxCNC runs (toffee-cli --ini FILE) on the computer LinuxCNC runs on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot read LinuxCNC&apos;s tool table %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s tool table %1 could not be read: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC says no tool is in the spindle (T0), so there is nothing to %1. Say which tool is in (Select Tool, M61 Q&lt;n&gt;) first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The probe met nothing down to machine Z %1 mm: is a tool in the spindle, and is the setter where its settings say? Nothing was measured. (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The probe was already touching when the move began: the setter&apos;s input is triggered. Check the setter and its cable. Nothing was measured. (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s probe ended without a contact (#5070 = 0). Nothing was measured.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC reported the contact at machine Z %1 mm, outside the search from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toffee does not know where this machine&apos;s tool setter is. Set it first (Machine ▸ Tool Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates).</source>
+        <translation type="unfinished">Toffee 不知道这台机床的对刀仪在哪里。请先设置（机床 ▸ 对刀仪…，或用 toffee-cli --setter X,Y,ZMIN 以机床坐标指定）。</translation>
+    </message>
+    <message>
+        <source>probe</source>
+        <translation type="unfinished">探测</translation>
+    </message>
+    <message>
+        <source>measure</source>
+        <translation type="unfinished">测量</translation>
+    </message>
+    <message>
+        <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
+        <translation type="unfinished">T%1 是这台机床的基准刀具（其 TLO 为 0）：所有刀具都相对于它在机床 Z %2 mm 处的触碰点测量。</translation>
+    </message>
+    <message>
+        <source>break-test</source>
+        <translation type="unfinished">进行断刀检测</translation>
+    </message>
+    <message>
+        <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
+        <translation type="unfinished">这台机床还没有基准刀具，因此无法比较新的长度。请先对一把刀具对刀：第一把测量的刀具即成为基准。</translation>
+    </message>
+    <message>
+        <source>T%1 has no stored TLO to compare with, in the table or in LinuxCNC&apos;s own: probe it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is kept in the table and in LinuxCNC. Look at the tool and replace it before you cut.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>T%1&apos;s TLO</source>
+        <translation type="unfinished">T%1 的 TLO</translation>
+    </message>
+    <message>
+        <source>Nothing was written to LinuxCNC or recorded.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the offset in force reads %1 mm</source>
+        <translation type="unfinished">生效的补偿读数为 %1 mm</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds %2 for T%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC was given T%1&apos;s TLO %2 mm, but read back %3. Nothing was recorded; check LinuxCNC&apos;s tool table before you cut.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The TLO</source>
+        <translation type="unfinished">TLO</translation>
+    </message>
+    <message>
+        <source>set a TLO for</source>
+        <translation type="unfinished">设置 TLO</translation>
+    </message>
+    <message>
+        <source>set a TLO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The height above Z0</source>
+        <translation type="unfinished">Z0 以上的高度</translation>
+    </message>
+    <message>
+        <source>A TLO is restored for a tool, not for an empty spindle.</source>
+        <translation type="unfinished">TLO 只能为刀具恢复，不能为空主轴恢复。</translation>
+    </message>
+    <message>
+        <source>restore a TLO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (the TLO that puts the tip %2 mm above Z0, from where it is)</source>
+        <translation type="unfinished">%1（以当前位置为准，使刀尖位于 Z0 以上 %2 mm 的 TLO）</translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s tool table (%1) has no %2: G10 L1 cannot add a tool. Nothing was written: add them to LinuxCNC&apos;s table, or leave them out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>write LinuxCNC&apos;s table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Written before it: %1; not written: %2.</source>
+        <translation type="unfinished">此前已写入：%1；未写入：%2。</translation>
+    </message>
+    <message>
+        <source>T%1 reads %2, not %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s table does not read back as written: %1. %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>Toffee::MachineConnection</name>
     <message>
         <source>Reading the offsets…</source>
@@ -4050,6 +4309,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>the machine at %1</source>
         <translation>位于 %1 的机器</translation>
+    </message>
+    <message>
+        <source>LinuxCNC at %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4946,16 +5209,8 @@ Save anyway?</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <source>%1 cannot go into grblHAL&apos;s table of %2 tools: nothing is pushed. Renumber them, or remove their TLOs, and push again.</source>
-        <translation>%1 无法放入 grblHAL 的刀具表（共 %2 把刀具）：未推送任何内容。请为它们重新编号，或删除它们的 TLO，然后重新推送。</translation>
-    </message>
-    <message>
         <source>The offsets were not all pushed</source>
         <translation>并非所有补偿都已推送</translation>
-    </message>
-    <message>
-        <source>Written into grblHAL&apos;s table and read back, all agreeing: %1 TLOs.</source>
-        <translation>已写入 grblHAL 的刀具表并读回，全部一致：%1 个 TLO。</translation>
     </message>
     <message>
         <source>empty in the controller: left alone</source>
@@ -5120,6 +5375,22 @@ Save anyway?</source>
     <message>
         <source>the system&apos;s language</source>
         <translation>系统语言</translation>
+    </message>
+    <message>
+        <source>not in its table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot go into %2&apos;s table of %3 tools: nothing is pushed. Renumber them, or remove their TLOs, and push again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 are not in %2&apos;s tool table, and G10 L1 cannot add a tool: nothing is pushed. Add them to its table, or remove their TLOs, and push again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Written into %1&apos;s table and read back, all agreeing: %2 TLOs.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -5435,6 +5706,14 @@ Probe T%1 instead.</source>
     <message>
         <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured on the tool setter.</source>
         <translation>T%1 的 TLO 是从控制器的刀具表读取的，并未在对刀仪上测量。</translation>
+    </message>
+    <message>
+        <source>The machine says no tool is in the spindle (T0), so there is nothing to probe. Say which tool is in first (the table&apos;s context menu: Make Active).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing to probe</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -69,6 +69,11 @@ void sendWaiting(Library &library, QTextStream &err);
     const Invocation &call, const Library *library, const QString &machine);
 
 [[nodiscard]] Result<MachineOptions> readMachineOptions(const Invocation &call);
+// Parts of it (machinetarget.cpp): a decimal option's value; exactly one machine named; the target read from
+// --port, --host, --emulator, --protocol, --controller, --ini, --setter, --baud and --timeout.
+[[nodiscard]] std::optional<double> decimalOption(const Invocation &call, const QString &name);
+[[nodiscard]] Result<void> choosePort(const Invocation &call, MachineOptions &options);
+[[nodiscard]] Result<void> readTarget(const Invocation &call, MachineOptions &options);
 // Once the controller is known (MachineConnection's preparer), before anything of its own is sent: the
 // machine's name (--machine, else the identity's default), bound to its identity in the library (another
 // machine under the name is refused; one seen for the first time is said on stderr and adopts no reference),

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <QPointer>
+#include <QRandomGenerator>
 #include <QTcpSocket>
 #include <QTimer>
 
@@ -36,6 +37,7 @@ LinuxCncController::LinuxCncController(MachineLink *link, QObject *parent)
     // linuxcncrsh has no status report to poll: its state is asked for with gets, between commands.
     m_link->setPollInterval(0);
     m_firmware.kind = FirmwareInfo::Kind::LinuxCnc;
+    m_session = QByteArray::number(QRandomGenerator::global()->generate(), 36);
     m_poll = new QTimer(this);
     m_poll->setInterval(kPollIntervalMs);
     connect(m_poll, &QTimer::timeout, this, &LinuxCncController::poll);

@@ -135,8 +135,8 @@ private:
     void measure(Done done, std::function<void(double contactMz)> next);
     void probeReady(Done done);
     void breakTestReady(double tolerance, Done done, std::optional<double> storedTlo);
-    void touch(
-        const QByteArray &probeLine, const ToolSetter &setter, Done done, std::function<void(double)> next);
+    void touch(double from, double depth, double feed, const ToolSetter &setter, Done done,
+        std::function<void(double)> next);
     // Writes `tlo` for `tool` (G10 L1, then G43 H when it is in the spindle) and reads it back.
     void writeOffset(int tool, double tlo, Done done, std::function<void()> next);
     void writeEntries(const QList<ControllerTool> &tools, Done done);
@@ -163,6 +163,7 @@ private:
         = nullptr; // the state asked for while the link is idle (linuxcncrsh reports nothing itself)
     bool m_polling = false;
     quint64 m_printed = 0; // (DEBUG,…) lines asked for, to number them
+    QByteArray m_session; // this controller's own mark in them: another's left in the queue is never taken
     bool m_abortedHere = false; // our own abort took enable from this connection: take it back
 };
 

@@ -33,51 +33,70 @@ SessionResult LinuxCncController::tloResult(int tool, double tlo, std::optional<
     return result;
 }
 
-// One G38.2 (incremental: no work offset, G92 or TLO in force changes where it goes), then the contact's
-// machine Z printed back: #5063 is in the coordinates the probe ran in, and #<_abs_z> − #<_z> is every offset
-// in force.
-void LinuxCncController::touch(
-    const QByteArray &probeLine, const ToolSetter &setter, Done done, std::function<void(double)> next)
+// One G38.2 down from machine Z `from` by `depth` (incremental: no work offset, G92 or TLO in force changes
+// where it goes), then where it stopped and the contact's machine Z printed back: #5063 is in the coordinates
+// the probe ran in, and #<_abs_z> − #<_z> is every offset in force. LinuxCNC 2.9 answers a G38.2 that meets
+// nothing, or that starts with its input already triggered, with SET MDI ACK (the error waits in its queue)
+// and may leave #5063 and #5070 from an earlier probe: so the outcome is judged from where the machine
+// stopped. It did not move: already touching. It went the whole way, or #5070 is 0: nothing met. Otherwise
+// the contact must lie within the move.
+void LinuxCncController::touch(double from, double depth, double feed, const ToolSetter &setter, Done done,
+    std::function<void(double)> next)
 {
     const int motion = MachineLink::kMotionTimeoutMs;
-    // A probe that meets nothing (or starts touching) leaves G91 in force: G90 and a lift, whatever happened.
-    const Done lifted = [this, done, setter](const SessionResult &failed) {
-        SessionResult said = failed;
-        if (said.message.contains(u"without making contact"_s))
-            said.message
-                = tr("The probe met nothing down to machine Z %1 mm: is a tool in the spindle, and is "
-                     "the setter where its settings say? Nothing was measured. (%2)")
-                      .arg(mm(setter.zMin), failed.message);
-        else if (said.message.contains(u"already tripped"_s))
-            said.message = tr("The probe was already touching when the move began: the setter's input is "
-                              "triggered. Check the setter and its cable. Nothing was measured. (%1)")
-                               .arg(failed.message);
-        m_link->send(
-            "set mdi G90", MachineLink::kDefaultTimeoutMs, [this, done, said, setter](const CommandReply &) {
+    const double to = from - depth;
+    // Whatever happened, G90 back in force and the spindle lifted; but nothing moves after a Stop. LinuxCNC's
+    // own refusals of a probe said in words.
+    const Done lifted = [this, done, setter](const SessionResult &result) {
+        SessionResult failed = result;
+        if (result.message.contains(u"already tripped"_s)
+            || result.message.contains(u"during non-probe move"_s))
+            failed.message = tr("The probe was already touching, or touched something, before it probed (the "
+                                "setter's input triggered on the way to it or where it started): check the "
+                                "setter, its cable and the safe height. Nothing was measured. (%1)")
+                                 .arg(result.message);
+        if (m_abortedHere || !m_link->isOpen())
+            return done(failed);
+        m_link->send("set mdi G90", MachineLink::kDefaultTimeoutMs,
+            [this, done, failed, setter](const CommandReply &) {
                 m_link->send("set mdi G53 G0 Z" + number(setter.safeZ), MachineLink::kMotionTimeoutMs,
-                    [done, said](const CommandReply &) { done(said); });
+                    [done, failed](const CommandReply &) { done(failed); });
             });
     };
-    mdi(probeLine, motion, lifted, [this, done, setter, next](const CommandReply &) {
-        mdi("G90", MachineLink::kDefaultTimeoutMs, done, [this, done, setter, next](const CommandReply &) {
-            printFields("TOFFEE-PRB", "p=#5063 a=#<_abs_z> z=#<_z> ok=#5070", done,
-                [done, setter, next](const Fields &f) {
-                    // ok (#5070) is 0 when the probe was aborted: its ACK then proves nothing.
-                    if (f.at("ok") < 0.5)
-                        return done(SessionResult::failed(SessionResult::Outcome::MachineError,
-                            tr("LinuxCNC's probe ended without a contact (#5070 = 0). Nothing was "
-                               "measured.")));
-                    const double z = atResolution(f.at("p") + f.at("a") - f.at("z"));
-                    if (z < setter.zMin - 1.0 || z > setter.safeZ + 1.0)
-                        return done(SessionResult::failed(SessionResult::Outcome::MachineError,
-                            tr("LinuxCNC reported the contact at machine Z %1 mm, outside the search from %2 "
-                               "to "
-                               "%3 mm. Nothing was written or recorded; check the tool setter's settings and "
-                               "the machine.")
-                                .arg(mm(z), mm(setter.safeZ), mm(setter.zMin))));
-                    next(z);
-                });
-        });
+    const QByteArray line = "G91 G38.2 Z-" + number(depth) + " F" + number(feed);
+    mdi(line, motion, lifted, [this, lifted, from, to, next](const CommandReply &) {
+        mdi("G90", MachineLink::kDefaultTimeoutMs, lifted,
+            [this, lifted, from, to, next](const CommandReply &) {
+                printFields("TOFFEE-PRB", "p=#5063 a=#<_abs_z> z=#<_z> ok=#5070", lifted,
+                    [lifted, from, to, next](const Fields &f) {
+                        const double stopped = f.at("a");
+                        const double z = atResolution(f.at("p") + f.at("a") - f.at("z"));
+                        const double slack = 0.01;
+                        if (std::fabs(stopped - from) < 0.001)
+                            return lifted(SessionResult::failed(SessionResult::Outcome::MachineError,
+                                tr("The probe was already touching at machine Z %1 mm, before it moved: the "
+                                   "setter's "
+                                   "input is triggered there. Check the setter, its cable and the safe "
+                                   "height. "
+                                   "Nothing was measured.")
+                                    .arg(mm(from))));
+                        if (f.at("ok") < 0.5 || std::fabs(stopped - to) < 0.001)
+                            return lifted(SessionResult::failed(SessionResult::Outcome::MachineError,
+                                tr("The probe met nothing down to machine Z %1 mm: is a tool in the spindle, "
+                                   "and is "
+                                   "the setter where its settings say? Nothing was measured.")
+                                    .arg(mm(to))));
+                        if (z < to - slack || z > from + slack)
+                            return lifted(SessionResult::failed(SessionResult::Outcome::MachineError,
+                                tr("LinuxCNC reported the contact at machine Z %1 mm, outside the move from "
+                                   "%2 to "
+                                   "%3 mm. Nothing was written or recorded; check the tool setter's settings "
+                                   "and "
+                                   "the machine.")
+                                    .arg(mm(z), mm(from), mm(to))));
+                        next(z);
+                    });
+            });
     });
 }
 
@@ -95,17 +114,15 @@ void LinuxCncController::measure(Done done, std::function<void(double)> next)
         const QList<QByteArray> approach { "M5", "G90 G53 G0 Z" + number(setter.safeZ),
             "G53 G0 X" + number(setter.x) + " Y" + number(setter.y) };
         mdiChain(approach, motion, done, [this, done, next, setter, motion] {
-            const double depth = setter.safeZ - setter.zMin;
-            touch("G91 G38.2 Z-" + number(depth) + " F" + number(setter.seekFeed), setter, done,
+            touch(setter.safeZ, setter.safeZ - setter.zMin, setter.seekFeed, setter, done,
                 [this, done, next, setter, motion](double first) {
                     const double up = std::min(setter.safeZ, first + setter.backoff);
                     const double down = std::max(setter.zMin, first - setter.backoff);
                     mdi("G53 G0 Z" + number(up), motion, done, [=, this](const CommandReply &) {
-                        touch("G91 G38.2 Z-" + number(up - down) + " F" + number(setter.latchFeed), setter,
-                            done, [=, this](double contact) {
-                                mdi("G53 G0 Z" + number(setter.safeZ), motion, done,
-                                    [next, contact](const CommandReply &) { next(contact); });
-                            });
+                        touch(up, up - down, setter.latchFeed, setter, done, [=, this](double contact) {
+                            mdi("G53 G0 Z" + number(setter.safeZ), motion, done,
+                                [next, contact](const CommandReply &) { next(contact); });
+                        });
                     });
                 });
         });

@@ -130,7 +130,7 @@ void LinuxCncController::printFields(
     const QByteArray &name, const QByteArray &fields, Done done, std::function<void(const Fields &)> next)
 {
     // Numbered: a line of an earlier question left in the queue is never taken for this one's.
-    const QByteArray marker = name + '-' + QByteArray::number(++m_printed);
+    const QByteArray marker = name + '-' + m_session + '-' + QByteArray::number(++m_printed);
     mdi("(DEBUG," + marker + ' ' + fields + ')', MachineLink::kDefaultTimeoutMs, done,
         [this, marker, done, next](const CommandReply &) {
             // The queue is shared by every kind of message and every client: each get takes one message of

@@ -186,6 +186,38 @@ private Q_SLOTS:
         QCOMPARE(m_connection.activeTool(), 2);
     }
 
+    // A probe that meets nothing (the search ends above T2's contact at −75) and one that starts touching
+    // (the safe height below it): each said in words, nothing written, G90 back in force and the spindle
+    // lifted.
+    void aProbeThatMeetsNothingOrStartsTouchingIsSaid()
+    {
+        const QByteArray before = m_peer->tableFile();
+        ToolSetter shallow = setter();
+        shallow.zMin = -60;
+        m_connection.session()->setToolSetter(shallow);
+        SessionResult r = await([this](auto d) { return m_connection.probe(d); });
+        m_connection.session()->setToolSetter(setter());
+        QCOMPARE(r.outcome, SessionResult::Outcome::MachineError);
+        QVERIFY2(r.message.contains(u"met nothing down to machine Z -60.000"_s), qPrintable(r.message));
+        QVERIFY(!r.recording);
+        QVERIFY(!programCodes().simplified().split(' ').contains("G91"));
+        QVERIFY(std::fabs(machineZ()) < 0.01);
+        ToolSetter low = setter();
+        low.safeZ = -80; // T2 touches at −75: the setter triggers on the way down to the safe height
+        m_connection.session()->setToolSetter(low);
+        r = await([this](auto d) { return m_connection.probe(d); });
+        m_connection.session()->setToolSetter(setter());
+        QCOMPARE(r.outcome, SessionResult::Outcome::MachineError);
+        QVERIFY2(r.message.contains(u"already touching"_s), qPrintable(r.message));
+        QVERIFY(!programCodes().simplified().split(' ').contains("G91"));
+        QCOMPARE(m_peer->tableFile(), before);
+        // Lifted out of the setter by hand, as an operator would, for the next step.
+        QCOMPARE(m_peer->ask({ "set mdi G90 G53 G0 Z0" }), QList<QByteArray> { "SET MDI ACK" });
+        QString why;
+        m_connection.disconnectFromMachine();
+        QVERIFY2(connectTo(m_connection, target(ControllerKind::LinuxCnc), &why), qPrintable(why));
+    }
+
     // T2 again, intact: passes. Worn 0.3 mm shorter: ToolBroken, nothing adopted in tool.tbl or in force, the
     // spindle stopped and lifted.
     void breakTestsCompareAndAdoptNothing()

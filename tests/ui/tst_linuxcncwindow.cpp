@@ -12,6 +12,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableWidget>
@@ -21,6 +22,7 @@
 #include "tests/support/station.h"
 #include "tests/support/windowsteps.h"
 #include "ui/connection/connectionpanel.h"
+#include "ui/connection/linuxcncaccessdialog.h"
 #include "ui/machine/consoledock.h"
 #include "ui/machine/offsetsyncdialog.h"
 #include "ui/machine/toolsetterdialog.h"
@@ -69,6 +71,29 @@ private Q_SLOTS:
         s.find<QComboBox>(u"wifiMachineCombo"_s)->setEditText(peer.address());
         auto *controller = s.find<QComboBox>(u"controllerCombo"_s);
         QVERIFY(controller->findData(u"linuxcnc"_s) >= 0); // offered by name, found by asking here
+        // Machine ▸ LinuxCNC Access…: a wrong enable password, typed hidden, is refused by LinuxCNC by name.
+        inNextDialog<LinuxCncAccessDialog>([](LinuxCncAccessDialog *d) {
+            auto *password = d->findChild<QLineEdit *>(u"linuxCncPassword"_s);
+            QCOMPARE(password->echoMode(), QLineEdit::Password);
+            password->setText(u"not-it"_s);
+            d->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok)->click();
+        });
+        s.trigger(u"actionLinuxCncAccess"_s);
+        QSignalSpy failed(s.window.connection(), &MachineConnection::connectFailed);
+        QString refused;
+        QTimer::singleShot(300, [&refused] { answerAnyBox(&refused); });
+        QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 20000);
+        QVERIFY2(failed.front().front().toString().contains(u"refused the enable password"_s),
+            qPrintable(failed.front().front().toString()));
+        QVERIFY(!failed.front().front().toString().contains(u"not-it"_s));
+        QTRY_VERIFY(!refused.isEmpty());
+        inNextDialog<LinuxCncAccessDialog>([](LinuxCncAccessDialog *d) {
+            d->findChild<QLineEdit *>(u"linuxCncPassword"_s)->clear();
+            d->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok)->click();
+        });
+        s.trigger(u"actionLinuxCncAccess"_s);
+
         QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
         QVERIFY(waitConnected(s));
         QCOMPARE(s.window.connection()->controllerKind(), ControllerKind::LinuxCnc);

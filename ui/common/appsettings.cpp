@@ -28,6 +28,8 @@ const auto ConnectionHostName = u"machine/hostName"_s;
 // who never chose, which would now insist on a Carvera; automatic finds either.
 const auto ConnectionController = u"machine/controllerChoice"_s;
 const auto ToolSetters = u"machine/toolSetters"_s; // a group: one key per machine name
+const auto LinuxCncInis = u"machine/linuxcncIni"_s; // groups: one key per machine name
+const auto LinuxCncPasswords = u"machine/linuxcncEnable"_s;
 const auto Tolerance = u"machine/breakTestTolerance"_s;
 const auto DarkPalette = u"view/darkPalette"_s;
 const auto Language = u"view/language"_s;
@@ -130,6 +132,20 @@ std::optional<ToolSetter> AppSettings::toolSetter(const QString &machine) const
         return std::nullopt;
     auto setter = ToolSetter::parse(text);
     return setter ? std::optional(setter.value()) : std::nullopt;
+}
+
+AppSettings::LinuxCncAccess AppSettings::linuxCncAccess(const QString &machine) const
+{
+    const QString key = u'/' + QString::fromLatin1(machine.toUtf8().toHex());
+    return { m_settings.value(Key::LinuxCncInis + key).toString(),
+        m_settings.value(Key::LinuxCncPasswords + key).toString() };
+}
+
+void AppSettings::setLinuxCncAccess(const QString &machine, const LinuxCncAccess &access)
+{
+    const QString key = u'/' + QString::fromLatin1(machine.toUtf8().toHex());
+    m_settings.setValue(Key::LinuxCncInis + key, access.ini);
+    m_settings.setValue(Key::LinuxCncPasswords + key, access.enablePassword);
 }
 
 void AppSettings::setToolSetter(const QString &machine, const ToolSetter &setter)

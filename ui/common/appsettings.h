@@ -39,6 +39,15 @@ public:
     // A machine's tool setter, on this computer (the library keeps it too, when there is one).
     [[nodiscard]] std::optional<ToolSetter> toolSetter(const QString &machine) const;
     void setToolSetter(const QString &machine, const ToolSetter &setter);
+    // How a LinuxCNC machine is reached beyond its address, on this computer: the INI it runs (whose tool table
+    // Toffee reads) and linuxcncrsh's enable password (empty: LinuxCNC's default). Never shown or logged.
+    struct LinuxCncAccess
+    {
+        QString ini;
+        QString enablePassword;
+    };
+    [[nodiscard]] LinuxCncAccess linuxCncAccess(const QString &machine) const;
+    void setLinuxCncAccess(const QString &machine, const LinuxCncAccess &access);
     [[nodiscard]] QString connectionHost() const;
     void setConnectionHost(const QString &address);
     // The name the last machine on the network announced itself by (empty: typed, never heard), so that it

@@ -137,6 +137,7 @@ private:
     [[nodiscard]] QString bindMachine(const MachineIdentity &identity);
     [[nodiscard]] std::optional<ToolSetter> machineToolSetter() const;
     void editToolSetter();
+    void editLinuxCncAccess();
     void pushOffsets();
     void pullOffsets();
     void restoreWindowGeometry();

@@ -193,10 +193,11 @@ void MainWindow::createMachineActions()
     };
     connect(m_rackPanel, &RackPanel::stateChanged, this, rackState);
     rackState();
-    // What only a controller with a setter cycle of Toffee's and a table of its own (grblHAL) has.
+    // What only a controller with a setter cycle of Toffee's and a table of its own (grblHAL, LinuxCNC) has.
     machine->addSeparator();
     add(u"actionToolSetter"_s, tr("Tool &Setter…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T),
         [this] { editToolSetter(); });
+    add(u"actionLinuxCncAccess"_s, tr("&LinuxCNC Access…"), QKeySequence(), [this] { editLinuxCncAccess(); });
     m_pushOffsetsAction = add(u"actionPushOffsets"_s, tr("Push &Offsets to the Controller…"),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), [this] { pushOffsets(); });
     m_pullOffsetsAction = add(u"actionPullOffsets"_s, tr("P&ull Offsets from the Controller…"),

@@ -21,6 +21,7 @@
 #include "serial/machineconnection.h"
 #include "ui/common/appsettings.h"
 #include "ui/connection/connectionpanel.h"
+#include "ui/connection/linuxcncaccessdialog.h"
 #include "ui/machine/machinedock.h"
 #include "ui/machine/offsetsyncdialog.h"
 #include "ui/machine/toolsetterdialog.h"
@@ -51,6 +52,12 @@ void MainWindow::connectControllerSettings()
             target.setter = machineToolSetter();
             // A machine new to the library adopts no reference: its first probe makes one.
             target.reference = m_newMachine ? std::nullopt : keptReference();
+        }
+        if (identity.controller == ControllerKind::LinuxCnc) {
+            const AppSettings::LinuxCncAccess access
+                = AppSettings().linuxCncAccess(AppSettings().chosenMachineName());
+            target.linuxCncIni = access.ini;
+            target.enablePassword = access.enablePassword.toUtf8();
         }
         return QString();
     });
@@ -136,6 +143,21 @@ std::optional<ToolSetter> MainWindow::machineToolSetter() const
             return kept.value();
     }
     return AppSettings().toolSetter(machineName());
+}
+
+void MainWindow::editLinuxCncAccess()
+{
+    // Kept under the name the operator gave the machine, or, before any, for the machine without a name: the
+    // name a machine gets after its kind is known only once connected.
+    const QString machine = AppSettings().chosenMachineName();
+    LinuxCncAccessDialog dialog(
+        machine.isEmpty() ? tr("this machine") : machine, AppSettings().linuxCncAccess(machine), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    AppSettings().setLinuxCncAccess(machine, dialog.access());
+    statusBar()->showMessage(tr("The LinuxCNC access is kept on this computer; it applies from the next "
+                                "connection."),
+        10000);
 }
 
 void MainWindow::editToolSetter()
