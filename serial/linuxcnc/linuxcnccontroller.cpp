@@ -83,6 +83,13 @@ void LinuxCncController::set(const QByteArray &what, int timeoutMs, Done done, N
     });
 }
 
+void LinuxCncController::sendEnable(int timeoutMs, std::function<void(const CommandReply &)> handler)
+{
+    // The password is never shown: not in the console (a quiet line), not in any message (named without it).
+    m_link->sendQuietly(
+        "set enable " + m_enablePassword, timeoutMs, std::move(handler), ReplyEnd::Ok, "set enable …");
+}
+
 void LinuxCncController::lastError(std::function<void(const QString &)> next)
 {
     m_link->send(
@@ -201,7 +208,7 @@ void LinuxCncController::afterHello(Done done)
     const int limit = MachineLink::kDefaultTimeoutMs;
     set("verbose on", limit, done, [=, this](const CommandReply &) {
         set("echo off", limit, done, [=, this](const CommandReply &) {
-            m_link->send("set enable " + m_enablePassword, limit, [=, this](const CommandReply &enabled) {
+            sendEnable(limit, [=, this](const CommandReply &enabled) {
                 if (enabled.status == CommandReply::Status::Refused)
                     return done(SessionResult::failed(SessionResult::Outcome::Refused,
                         tr("LinuxCNC refused the enable password in this machine's settings (linuxcncrsh "

@@ -144,6 +144,7 @@ private:
     [[nodiscard]] SessionResult tloResult(int tool, double tlo, std::optional<double> contactMz) const;
     [[nodiscard]] MachineStatus statusOf(const LinuxCnc::State &state) const;
     void abortOnSecondConnection();
+    void sendEnable(int timeoutMs, std::function<void(const CommandReply &)> handler);
     void poll();
     static QByteArray number(double value);
     [[nodiscard]] static QString mm(double v);

@@ -116,13 +116,12 @@ void LinuxCncController::ready(
             return next(state);
         }
         // Toffee's own abort took the enable to a second connection: take it back.
-        m_link->send("set enable " + m_enablePassword, MachineLink::kDefaultTimeoutMs,
-            [this, done, state, next](const CommandReply &reply) {
-                if (!reply.ok())
-                    return done(failure(reply));
-                m_abortedHere = false;
-                next(state);
-            });
+        sendEnable(MachineLink::kDefaultTimeoutMs, [this, done, state, next](const CommandReply &reply) {
+            if (!reply.ok())
+                return done(failure(reply));
+            m_abortedHere = false;
+            next(state);
+        });
     });
 }
 

@@ -66,7 +66,7 @@ MachineLink::MachineLink(LineTransport *transport, QObject *parent)
     connect(&m_timeout, &QTimer::timeout, this, [this] {
         if (!m_current)
             return;
-        const QString command = QString::fromUtf8(m_current->line);
+        const QString command = QString::fromUtf8(m_current->named());
         const QString message
             = tr("The machine did not answer \"%1\" within %2 s. The link was closed, because a "
                  "late answer could be taken for the next command's. Reconnect, and check the "
@@ -122,13 +122,13 @@ void MachineLink::setPollInterval(int ms)
 void MachineLink::send(
     const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end, qsizetype maxLines)
 {
-    enqueue({ line, timeoutMs, std::move(handler), end, maxLines, false });
+    enqueue({ line, timeoutMs, std::move(handler), end, maxLines, false, {} });
 }
 
 void MachineLink::enqueue(Pending pending)
 {
     if (!isOpen()) {
-        CommandReply reply { CommandReply::Status::LinkLost, pending.line, {},
+        CommandReply reply { CommandReply::Status::LinkLost, pending.named(), {},
             tr("Not connected to the machine; connect first.") };
         QMetaObject::invokeMethod(
             this, [handler = pending.handler, reply] { handler(reply); }, Qt::QueuedConnection);
@@ -139,9 +139,10 @@ void MachineLink::enqueue(Pending pending)
         startNext();
 }
 
-void MachineLink::sendQuietly(const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end)
+void MachineLink::sendQuietly(
+    const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end, const QByteArray &shownAs)
 {
-    enqueue({ line, timeoutMs, std::move(handler), end, kMaxReplyLines, true });
+    enqueue({ line, timeoutMs, std::move(handler), end, kMaxReplyLines, true, shownAs });
 }
 
 void MachineLink::sendRealtime(char c)
@@ -229,7 +230,7 @@ void MachineLink::handleReplyLine(const QByteArray &line, ReplyKind kind)
         const QString said = excerpt(m_grammar.message(line));
         const QString meaning = m_grammar.refusalMeaning ? m_grammar.refusalMeaning(said) : QString();
         complete(CommandReply::Status::Refused,
-            tr("The machine refused \"%1\": %2").arg(QString::fromUtf8(m_current->line), said)
+            tr("The machine refused \"%1\": %2").arg(QString::fromUtf8(m_current->named()), said)
                 + (meaning.isEmpty() ? QString() : u' ' + meaning));
     } break;
     case ReplyKind::Alarm:
@@ -262,7 +263,7 @@ void MachineLink::complete(CommandReply::Status status, const QString &message)
     m_scriptRunning = false;
     Pending done = std::move(*m_current);
     m_current.reset();
-    CommandReply reply { status, done.line, std::move(m_lines), message, m_droppedLines };
+    CommandReply reply { status, done.named(), std::move(m_lines), message, m_droppedLines };
     m_lines.clear();
     m_droppedLines = 0;
     m_alarm.clear();
@@ -277,7 +278,7 @@ void MachineLink::failAll(CommandReply::Status status, const QString &message)
     const QList<Pending> queued = std::exchange(m_queue, {});
     for (const Pending &p : queued) {
         if (p.handler)
-            p.handler(CommandReply { status, p.line, {}, message });
+            p.handler(CommandReply { status, p.named(), {}, message });
     }
 }
 
@@ -288,7 +289,7 @@ void MachineLink::handleClosed()
     if (m_current) {
         complete(CommandReply::Status::LinkLost,
             tr("The connection to the machine was lost while it ran \"%1\": %2")
-                    .arg(QString::fromUtf8(m_current->line), reason)
+                    .arg(QString::fromUtf8(m_current->named()), reason)
                 + floodNote());
     }
     failAll(CommandReply::Status::LinkLost, tr("The connection to the machine was lost: %1").arg(reason));

@@ -96,8 +96,10 @@ public:
     // A question the controller asks for its status (LinuxCNC's gets, every half second while idle): sent as
     // send() does, but not said as sent (lineSent), and isQuiet() while its answer comes, so that the console
     // is not drowned, as it is not by status reports.
-    void sendQuietly(
-        const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end = ReplyEnd::Ok);
+    // `shownAs`: the line as every message and reply names it, when the line itself must not be shown (a
+    // password in it).
+    void sendQuietly(const QByteArray &line, int timeoutMs, ReplyHandler handler, ReplyEnd end = ReplyEnd::Ok,
+        const QByteArray &shownAs = {});
     [[nodiscard]] bool isQuiet() const { return m_current && m_current->quiet; }
     void sendRealtime(char c);
     void requestStatus();
@@ -148,6 +150,8 @@ private:
         ReplyEnd end = ReplyEnd::Ok;
         qsizetype maxLines = kMaxReplyLines;
         bool quiet = false;
+        QByteArray shown; // the line as messages name it, when not the line itself
+        [[nodiscard]] QByteArray named() const { return shown.isEmpty() ? line : shown; }
     };
 
     void enqueue(Pending pending);

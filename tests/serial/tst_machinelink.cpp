@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <optional>
+
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
@@ -79,6 +81,33 @@ private Q_SLOTS:
         QCOMPARE(f.replies.size(), 1);
         QVERIFY(f.replies.front().ok());
         QCOMPARE(f.replies.front().lines.size(), 3);
+    }
+
+    // A quiet line (a status question; a password in it) is written as given but never said as sent, and
+    // every message names it as it is shown: a timeout's, a refusal's, a reply's.
+    void aQuietLineIsWrittenButNeverShown()
+    {
+        Fixture f;
+        QSignalSpy sent(&f.link, &MachineLink::lineSent);
+        std::optional<CommandReply> refused;
+        f.link.sendQuietly(
+            "set enable secret", 5000, [&refused](const CommandReply &r) { refused = r; }, ReplyEnd::Ok,
+            "set enable …");
+        QCOMPARE(f.transport.written.last(), QByteArray("set enable secret"));
+        QVERIFY(f.link.isQuiet());
+        f.transport.reply("error:Unsupported command");
+        QTRY_VERIFY(refused.has_value());
+        QCOMPARE(refused->command, QByteArray("set enable …"));
+        QVERIFY2(!refused->message.contains(u"secret"_s) && refused->message.contains(u"set enable …"_s),
+            qPrintable(refused->message));
+        std::optional<CommandReply> late;
+        f.link.sendQuietly(
+            "set enable secret", 50, [&late](const CommandReply &r) { late = r; }, ReplyEnd::Ok,
+            "set enable …");
+        QTRY_VERIFY(late.has_value());
+        QCOMPARE(late->status, CommandReply::Status::Timeout);
+        QVERIFY2(!late->message.contains(u"secret"_s), qPrintable(late->message));
+        QCOMPARE(sent.size(), 0);
     }
 
     void sendsOneCommandAtATime()

@@ -87,6 +87,8 @@ private Q_SLOTS:
         QVERIFY2(failed.front().front().toString().contains(u"refused the enable password"_s),
             qPrintable(failed.front().front().toString()));
         QVERIFY(!failed.front().front().toString().contains(u"not-it"_s));
+        // Nor in the console: the enable line is never shown.
+        QVERIFY(!s.window.findChild<ConsoleDock *>()->lines().join(u'\n').contains(u"not-it"_s));
         QTRY_VERIFY(!refused.isEmpty());
         inNextDialog<LinuxCncAccessDialog>([](LinuxCncAccessDialog *d) {
             d->findChild<QLineEdit *>(u"linuxCncPassword"_s)->clear();
