@@ -197,7 +197,8 @@ void MainWindow::createMachineActions()
     machine->addSeparator();
     add(u"actionToolSetter"_s, tr("Tool &Setter…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T),
         [this] { editToolSetter(); });
-    add(u"actionLinuxCncAccess"_s, tr("&LinuxCNC Access…"), QKeySequence(), [this] { editLinuxCncAccess(); });
+    add(u"actionLinuxCncAccess"_s, tr("&LinuxCNC Access…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_X),
+        [this] { editLinuxCncAccess(); });
     m_pushOffsetsAction = add(u"actionPushOffsets"_s, tr("Push &Offsets to the Controller…"),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), [this] { pushOffsets(); });
     m_pullOffsetsAction = add(u"actionPullOffsets"_s, tr("P&ull Offsets from the Controller…"),
