@@ -3833,6 +3833,45 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
 </context>
 <context>
+    <name>Toffee::LinuxCncAccessDialog</name>
+    <message>
+        <source>LinuxCNC Access for %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>found by itself when LinuxCNC runs on this computer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s default (EMCTOO)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s INI</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC configurations (*.ini);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linuxcncrsh cannot read LinuxCNC&apos;s tool table, so Toffee reads the file its INI names ([EMCIO] TOOL_TABLE) for push, pull and the job check. Its enable password lets Toffee take control (linuxcncrsh --enablepw); it is kept on this computer and never shown or logged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;INI file:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Enable password:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>Toffee::LinuxCncController</name>
     <message>
         <source>The line &quot;%1&quot; is too long for linuxcncrsh; nothing was sent.</source>
@@ -3955,22 +3994,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The probe met nothing down to machine Z %1 mm: is a tool in the spindle, and is the setter where its settings say? Nothing was measured. (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The probe was already touching when the move began: the setter&apos;s input is triggered. Check the setter and its cable. Nothing was measured. (%1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>LinuxCNC&apos;s probe ended without a contact (#5070 = 0). Nothing was measured.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>LinuxCNC reported the contact at machine Z %1 mm, outside the search from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Toffee does not know where this machine&apos;s tool setter is. Set it first (Machine ▸ Tool Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates).</source>
         <translation type="unfinished">Toffee 不知道这台机床的对刀仪在哪里。请先设置（机床 ▸ 对刀仪…，或用 toffee-cli --setter X,Y,ZMIN 以机床坐标指定）。</translation>
     </message>
@@ -4072,6 +4095,22 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC&apos;s table does not read back as written: %1. %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The probe was already touching, or touched something, before it probed (the setter&apos;s input triggered on the way to it or where it started): check the setter, its cable and the safe height. Nothing was measured. (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The probe was already touching at machine Z %1 mm, before it moved: the setter&apos;s input is triggered there. Check the setter, its cable and the safe height. Nothing was measured.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The probe met nothing down to machine Z %1 mm: is a tool in the spindle, and is the setter where its settings say? Nothing was measured.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC reported the contact at machine Z %1 mm, outside the move from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5390,6 +5429,18 @@ Save anyway?</source>
     </message>
     <message>
         <source>Written into %1&apos;s table and read back, all agreeing: %2 TLOs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;LinuxCNC Access…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The LinuxCNC access is kept on this computer; it applies from the next connection.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

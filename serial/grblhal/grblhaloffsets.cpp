@@ -193,60 +193,36 @@ void GrblHalController::writeToolTable(const QList<ControllerTool> &tools, Done 
 
 void GrblHalController::writeEntries(const QList<ControllerTool> &tools, Done finished)
 {
-    auto remaining = std::make_shared<QList<ControllerTool>>(tools);
-    auto written = std::make_shared<QStringList>();
-    // A refusal half-way says exactly which entries changed before it and which did not.
-    const Done done = [finished, remaining, written](const SessionResult &r) {
-        if (r.ok() || (written->isEmpty() && remaining->isEmpty()))
-            return finished(r);
-        SessionResult partly = r;
-        QStringList notWritten;
-        for (const ControllerTool &t : std::as_const(*remaining))
-            notWritten << u"T%1"_s.arg(t.tool);
-        partly.message += u' '
-            + tr("Written before it: %1; not written: %2.")
-                  .arg(written->isEmpty() ? tr("nothing") : written->join(u", "_s),
-                      notWritten.isEmpty() ? tr("nothing") : notWritten.join(u", "_s));
-        finished(partly);
-    };
-    auto step = std::make_shared<std::function<void()>>();
-    // Each command's answer holds the function; it holds itself only weakly, so it goes with the last.
-    *step = [this, done, tools, remaining, written, self = std::weak_ptr(step)] {
-        if (remaining->isEmpty()) {
-            readParameters(done, [this, done, tools](const GrblHal::ParameterReport &report) {
-                QStringList differ;
-                for (const ControllerTool &t : tools) {
-                    const auto entry = report.tools.find(t.tool);
-                    if (entry == report.tools.end()
-                        || std::fabs(entry->second.offset.z() - t.tlo) > kReadBackTolerance)
-                        differ << tr("T%1 reads %2 mm, not %3 mm")
-                                      .arg(t.tool)
-                                      .arg(entry == report.tools.end() ? tr("nothing")
-                                                                       : mm(entry->second.offset.z()),
-                                          mm(t.tlo));
-                }
-                SessionResult result = tloResult(
-                    m_tool.value_or(Limits::kEmptySpindle), m_tloInForce.value_or(0.0), std::nullopt);
-                result.controllerTools = m_table;
-                if (!differ.isEmpty()) {
-                    result.outcome = SessionResult::Outcome::MachineError;
-                    result.message
-                        = tr("grblHAL's table does not read back as written: %1.").arg(differ.join(u"; "_s));
-                }
-                done(result);
-            });
-            return;
-        }
-        const ControllerTool t = remaining->first();
+    const WriteOne writeOne = [this](const ControllerTool &t, Done done, std::function<void()> next) {
         run("G10 L1 P" + QByteArray::number(t.tool) + " Z" + number(atResolution(t.tlo)) + " R"
                 + number(std::max(0.0, t.radius)),
-            MachineLink::kDefaultTimeoutMs, done,
-            [remaining, written, step = self.lock()](const CommandReply &) {
-                *written << u"T%1"_s.arg(remaining->takeFirst().tool);
-                (*step)();
-            });
+            MachineLink::kDefaultTimeoutMs, done, [next](const CommandReply &) { next(); });
     };
-    (*step)();
+    const auto verify = [this, tools](Done done) {
+        readParameters(done, [this, done, tools](const GrblHal::ParameterReport &report) {
+            QStringList differ;
+            for (const ControllerTool &t : tools) {
+                const auto entry = report.tools.find(t.tool);
+                if (entry == report.tools.end()
+                    || std::fabs(entry->second.offset.z() - t.tlo) > kReadBackTolerance)
+                    differ << tr("T%1 reads %2 mm, not %3 mm")
+                                  .arg(t.tool)
+                                  .arg(entry == report.tools.end() ? tr("nothing")
+                                                                   : mm(entry->second.offset.z()),
+                                      mm(t.tlo));
+            }
+            SessionResult result
+                = tloResult(m_tool.value_or(Limits::kEmptySpindle), m_tloInForce.value_or(0.0), std::nullopt);
+            result.controllerTools = m_table;
+            if (!differ.isEmpty()) {
+                result.outcome = SessionResult::Outcome::MachineError;
+                result.message
+                    = tr("grblHAL's table does not read back as written: %1.").arg(differ.join(u"; "_s));
+            }
+            done(result);
+        });
+    };
+    writeEach(tools, writeOne, verify, std::move(finished));
 }
 
 } // namespace Toffee

@@ -149,58 +149,35 @@ void LinuxCncController::writeToolTable(const QList<ControllerTool> &tools, Done
 
 void LinuxCncController::writeEntries(const QList<ControllerTool> &tools, Done finished)
 {
-    auto remaining = std::make_shared<QList<ControllerTool>>(tools);
-    auto written = std::make_shared<QStringList>();
-    const Done done = [finished, remaining, written](const SessionResult &r) {
-        if (r.ok() || (written->isEmpty() && remaining->isEmpty()))
-            return finished(r);
-        SessionResult partly = r;
-        QStringList notWritten;
-        for (const ControllerTool &t : std::as_const(*remaining))
-            notWritten << u"T%1"_s.arg(t.tool);
-        partly.message += u' '
-            + tr("Written before it: %1; not written: %2.")
-                  .arg(written->isEmpty() ? tr("nothing") : written->join(u", "_s),
-                      notWritten.isEmpty() ? tr("nothing") : notWritten.join(u", "_s));
-        finished(partly);
-    };
-    auto step = std::make_shared<std::function<void()>>();
-    *step = [this, done, tools, remaining, written, self = std::weak_ptr(step)] {
-        if (remaining->isEmpty()) {
-            readTableFile([this, done, tools](const QString &why) {
-                QStringList differ;
-                for (const ControllerTool &t : tools) {
-                    const auto held = m_table ? std::find_if(m_table->cbegin(), m_table->cend(),
-                                          [&t](const ControllerTool &h) { return h.tool == t.tool; })
-                                              : QList<ControllerTool>::const_iterator {};
-                    if (!m_table || held == m_table->cend()
-                        || std::fabs(held->tlo - t.tlo) > kReadBackTolerance)
-                        differ << tr("T%1 reads %2, not %3 mm")
-                                      .arg(t.tool)
-                                      .arg(m_table && held != m_table->cend() ? mm(held->tlo) : tr("nothing"),
-                                          mm(t.tlo));
-                }
-                SessionResult result = tloResult(
-                    m_tool.value_or(Limits::kEmptySpindle), m_tloInForce.value_or(0.0), std::nullopt);
-                result.controllerTools = m_table;
-                if (!differ.isEmpty()) {
-                    result.outcome = SessionResult::Outcome::MachineError;
-                    result.message = tr("LinuxCNC's table does not read back as written: %1. %2")
-                                         .arg(differ.join(u"; "_s), why);
-                }
-                done(result);
-            });
-            return;
-        }
-        const ControllerTool t = remaining->first();
+    const WriteOne writeOne = [this](const ControllerTool &t, Done done, std::function<void()> next) {
         mdi("G10 L1 P" + QByteArray::number(t.tool) + " Z" + number(atResolution(t.tlo)),
-            MachineLink::kDefaultTimeoutMs, done,
-            [remaining, written, step = self.lock()](const CommandReply &) {
-                *written << u"T%1"_s.arg(remaining->takeFirst().tool);
-                (*step)();
-            });
+            MachineLink::kDefaultTimeoutMs, done, [next](const CommandReply &) { next(); });
     };
-    (*step)();
+    const auto verify = [this, tools](Done done) {
+        readTableFile([this, done, tools](const QString &why) {
+            QStringList differ;
+            for (const ControllerTool &t : tools) {
+                const auto held = m_table ? std::find_if(m_table->cbegin(), m_table->cend(),
+                                      [&t](const ControllerTool &h) { return h.tool == t.tool; })
+                                          : QList<ControllerTool>::const_iterator {};
+                if (!m_table || held == m_table->cend() || std::fabs(held->tlo - t.tlo) > kReadBackTolerance)
+                    differ << tr("T%1 reads %2, not %3 mm")
+                                  .arg(t.tool)
+                                  .arg(m_table && held != m_table->cend() ? mm(held->tlo) : tr("nothing"),
+                                      mm(t.tlo));
+            }
+            SessionResult result
+                = tloResult(m_tool.value_or(Limits::kEmptySpindle), m_tloInForce.value_or(0.0), std::nullopt);
+            result.controllerTools = m_table;
+            if (!differ.isEmpty()) {
+                result.outcome = SessionResult::Outcome::MachineError;
+                result.message = tr("LinuxCNC's table does not read back as written: %1. %2")
+                                     .arg(differ.join(u"; "_s), why);
+            }
+            done(result);
+        });
+    };
+    writeEach(tools, writeOne, verify, std::move(finished));
 }
 
 } // namespace Toffee

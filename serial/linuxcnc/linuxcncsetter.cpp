@@ -194,23 +194,8 @@ void LinuxCncController::breakTestReady(double tolerance, Done done, std::option
         return;
     }
     measure(done, [this, done, tolerance, stored, tool = *tool](double contact) {
-        SessionResult result;
-        result.tool = tool;
-        result.tolerance = tolerance;
-        const double measured = atResolution(contact - *m_reference);
-        result.breakTest = BreakTestReading { atResolution(*stored), measured };
-        const double difference = std::fabs(measured - *stored);
-        if (difference > tolerance) {
-            result.outcome = SessionResult::Outcome::ToolBroken;
-            result.message
-                = tr("T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance "
-                     "%5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is "
-                     "kept in the table and in LinuxCNC. Look at the tool and replace it before you cut.")
-                      .arg(tool)
-                      .arg(mm(measured), mm(*stored), mm(difference),
-                          formatNumber(tolerance, NumberFormat::upTo(3)));
-        }
-        done(result);
+        done(breakVerdict(
+            tool, atResolution(*stored), atResolution(contact - *m_reference), tolerance, u"LinuxCNC"_s));
     });
 }
 

@@ -13,6 +13,8 @@
 #include "serial/machine/machinelink.h"
 #include "serial/transport/linetransport.h"
 
+using namespace Qt::StringLiterals;
+
 namespace Toffee {
 
 namespace {
@@ -107,6 +109,63 @@ MachineController::Done MachineController::recordingVerdict(Done done)
             r.breakTest->newTlo };
         done(recorded);
     };
+}
+
+SessionResult MachineController::breakVerdict(
+    int tool, double stored, double measured, double tolerance, const QString &keptIn)
+{
+    SessionResult result;
+    result.tool = tool;
+    result.tolerance = tolerance;
+    result.breakTest = BreakTestReading { stored, measured };
+    const double difference = std::fabs(measured - stored);
+    if (difference > tolerance) {
+        const auto mm = [](double v) {
+            return formatNumber(v, NumberFormat::fixed(3));
+        };
+        result.outcome = SessionResult::Outcome::ToolBroken;
+        result.message
+            = tr("T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the "
+                 "tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its "
+                 "stored TLO is kept in the table and in %6. Look at the tool and replace it before "
+                 "you cut.")
+                  .arg(tool)
+                  .arg(mm(measured), mm(stored), mm(difference),
+                      formatNumber(tolerance, NumberFormat::upTo(3)), keptIn);
+    }
+    return result;
+}
+
+void MachineController::writeEach(
+    const QList<ControllerTool> &tools, WriteOne writeOne, std::function<void(Done)> verify, Done finished)
+{
+    auto remaining = std::make_shared<QList<ControllerTool>>(tools);
+    auto written = std::make_shared<QStringList>();
+    // A refusal half-way says exactly which entries changed before it and which did not.
+    const Done done = [finished, remaining, written](const SessionResult &r) {
+        if (r.ok() || (written->isEmpty() && remaining->isEmpty()))
+            return finished(r);
+        SessionResult partly = r;
+        QStringList notWritten;
+        for (const ControllerTool &t : std::as_const(*remaining))
+            notWritten << u"T%1"_s.arg(t.tool);
+        partly.message += u' '
+            + tr("Written before it: %1; not written: %2.")
+                  .arg(written->isEmpty() ? tr("nothing") : written->join(u", "_s),
+                      notWritten.isEmpty() ? tr("nothing") : notWritten.join(u", "_s));
+        finished(partly);
+    };
+    auto step = std::make_shared<std::function<void()>>();
+    // Each write's answer holds the function; it holds itself only weakly, so it goes with the last.
+    *step = [done, writeOne, verify, remaining, written, self = std::weak_ptr(step)] {
+        if (remaining->isEmpty())
+            return verify(done);
+        writeOne(remaining->first(), done, [remaining, written, step = self.lock()] {
+            *written << u"T%1"_s.arg(remaining->takeFirst().tool);
+            (*step)();
+        });
+    };
+    (*step)();
 }
 
 void MachineController::jog(const std::array<double, 3> &stepMm, double feed, Done done)

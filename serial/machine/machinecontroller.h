@@ -249,6 +249,15 @@ protected:
     // A failed command as an operation's result: the link's failures as LinkFailure, the machine's as
     // MachineError.
     static SessionResult failure(const CommandReply &reply);
+    // A break test Toffee compares itself (grblHAL, LinuxCNC): `measured` against `stored` for `tool` at
+    // `tolerance`, broken when further apart, the stored TLO said to be kept in the table and in `keptIn`.
+    [[nodiscard]] static SessionResult breakVerdict(
+        int tool, double stored, double measured, double tolerance, const QString &keptIn);
+    // Writes `tools` one after another (`writeOne` calls its `next` once one is written), then `verify` ends
+    // it; a failure half-way says which were written before it and which were not.
+    using WriteOne = std::function<void(const ControllerTool &tool, Done done, std::function<void()> next)>;
+    static void writeEach(const QList<ControllerTool> &tools, WriteOne writeOne,
+        std::function<void(Done)> verify, Done finished);
     // `done`, with the recording a successful result carries: the TLO as `kind`, or a break test's verdict.
     [[nodiscard]] static Done recording(Done done, RecordingKind kind);
     [[nodiscard]] static Done recordingVerdict(Done done);
