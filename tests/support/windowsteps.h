@@ -9,6 +9,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QMessageBox>
+#include <QTableWidget>
 #include <QTest>
 #include <QTimer>
 
@@ -16,6 +17,19 @@
 #include "tests/support/station.h"
 
 namespace Toffee::Test {
+
+// A table's rows as "T2|15.300|7.000|written" (an offset preview's, a report's).
+inline QStringList rowsOf(QTableWidget *table)
+{
+    QStringList rows;
+    for (int r = 0; r < table->rowCount(); ++r) {
+        QStringList cells;
+        for (int c = 0; c < table->columnCount(); ++c)
+            cells << table->item(r, c)->text();
+        rows << cells.join(u'|');
+    }
+    return rows;
+}
 
 inline bool waitConnected(Station &s, int ms = 20000)
 {

@@ -38,19 +38,6 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-// The preview's rows as "T2|15.300|7.000|written".
-QStringList rowsOf(QTableWidget *table)
-{
-    QStringList rows;
-    for (int r = 0; r < table->rowCount(); ++r) {
-        QStringList cells;
-        for (int c = 0; c < table->columnCount(); ++c)
-            cells << table->item(r, c)->text();
-        rows << cells.join(u'|');
-    }
-    return rows;
-}
-
 void connectTo(Station &s, const GrblHalPeer &peer)
 {
     auto *panel = s.window.findChild<ConnectionPanel *>();

@@ -31,22 +31,6 @@ using namespace Toffee;
 using namespace Toffee::Test;
 using namespace Qt::StringLiterals;
 
-namespace {
-
-QStringList rowsOf(QTableWidget *table)
-{
-    QStringList rows;
-    for (int r = 0; r < table->rowCount(); ++r) {
-        QStringList cells;
-        for (int c = 0; c < table->columnCount(); ++c)
-            cells << table->item(r, c)->text();
-        rows << cells.join(u'|');
-    }
-    return rows;
-}
-
-} // namespace
-
 class TestLinuxCncWindow : public QObject
 {
     Q_OBJECT
