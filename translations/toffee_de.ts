@@ -1531,11 +1531,11 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>Type a command and press Enter; ↑ ↓ for history</source>
-        <translation type="unfinished"></translation>
+        <translation>Befehl eingeben und Enter drücken; ↑ ↓ für den Verlauf</translation>
     </message>
     <message>
         <source>Type a command (e.g. %1) and press Enter; ↑ ↓ for history</source>
-        <translation type="unfinished"></translation>
+        <translation>Befehl eingeben (z. B. %1) und Enter drücken; ↑ ↓ für den Verlauf</translation>
     </message>
 </context>
 <context>
@@ -1562,15 +1562,15 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>The controller is not a Carvera, grblHAL or LinuxCNC, the controllers Toffee manages: it answered &quot;version&quot; with %1 and &quot;$I&quot; with %2. Nothing else was sent. If it is one of them, choose it (Carvera, grblHAL or LinuxCNC; toffee-cli --controller) and connect again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Steuerung ist weder eine Carvera noch grblHAL noch LinuxCNC, die Steuerungen, die Toffee verwaltet: Sie beantwortete „version“ mit %1 und „$I“ mit %2. Sonst wurde nichts gesendet. Ist sie doch eine davon, wählen Sie sie (Carvera, grblHAL oder LinuxCNC; toffee-cli --controller) und verbinden Sie erneut.</translation>
     </message>
     <message>
         <source>%1 The machine answered nothing: not to the Carvera&apos;s and grblHAL&apos;s first question, nor to LinuxCNC&apos;s hello. Check that it is switched on and has started, and the address and port.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Die Maschine antwortete gar nicht: weder auf die erste Frage für Carvera und grblHAL noch auf das Hello von LinuxCNC. Prüfen Sie, ob sie eingeschaltet und hochgefahren ist, sowie Adresse und Port.</translation>
     </message>
     <message>
         <source>The controller is none of those Toffee manages: it answered LinuxCNC&apos;s hello with %1. Nothing else was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Steuerung ist keine derer, die Toffee verwaltet: Sie beantwortete das Hello von LinuxCNC mit %1. Sonst wurde nichts gesendet.</translation>
     </message>
 </context>
 <context>
@@ -1677,7 +1677,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>LinuxCNC %1</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC %1</translation>
     </message>
 </context>
 <context>
@@ -2207,10 +2207,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>Diese Maschine hat noch kein Referenzwerkzeug, daher lässt sich keine neue Länge vergleichen. Vermessen Sie zuerst ein Werkzeug: Das erste gemessene wird zur Referenz.</translation>
     </message>
     <message>
-        <source>T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is kept in the table and in grblHAL. Look at the tool and replace it before you cut.</source>
-        <translation>T%1 hat %2 mm gemessen, gegenüber seiner gespeicherten TLO %3 mm: %4 mm Abweichung, mehr als die Toleranz %5 mm. Es ist vielleicht gebrochen oder verschlissen. Die Spindel ist gestoppt und hochgefahren; seine gespeicherte TLO bleibt in der Tabelle und in grblHAL erhalten. Sehen Sie sich das Werkzeug an und ersetzen Sie es, bevor Sie zerspanen.</translation>
-    </message>
-    <message>
         <source>The TLO</source>
         <translation>Die TLO</translation>
     </message>
@@ -2301,10 +2297,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>writes its table</source>
         <translation>schreibt seine Tabelle</translation>
-    </message>
-    <message>
-        <source>Written before it: %1; not written: %2.</source>
-        <translation>Davor geschrieben: %1; nicht geschrieben: %2.</translation>
     </message>
     <message>
         <source>grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
@@ -3836,282 +3828,274 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <name>Toffee::LinuxCncAccessDialog</name>
     <message>
         <source>LinuxCNC Access for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC-Zugang für %1</translation>
     </message>
     <message>
         <source>found by itself when LinuxCNC runs on this computer</source>
-        <translation type="unfinished"></translation>
+        <translation>wird selbst gefunden, wenn LinuxCNC auf diesem Computer läuft</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s default (EMCTOO)</source>
-        <translation type="unfinished"></translation>
+        <translation>Voreinstellung von LinuxCNC (EMCTOO)</translation>
     </message>
     <message>
         <source>&amp;Browse…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Durchsuchen…</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s INI</source>
-        <translation type="unfinished"></translation>
+        <translation>INI-Datei von LinuxCNC</translation>
     </message>
     <message>
         <source>LinuxCNC configurations (*.ini);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC-Konfigurationen (*.ini);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>linuxcncrsh cannot read LinuxCNC&apos;s tool table, so Toffee reads the file its INI names ([EMCIO] TOOL_TABLE) for push, pull and the job check. Its enable password lets Toffee take control (linuxcncrsh --enablepw); it is kept on this computer and never shown or logged.</source>
-        <translation type="unfinished"></translation>
+        <translation>linuxcncrsh kann die Werkzeugtabelle von LinuxCNC nicht lesen; Toffee liest deshalb für Übertragen, Abholen und die Programmprüfung die Datei, die die INI nennt ([EMCIO] TOOL_TABLE). Mit dem Freigabepasswort übernimmt Toffee die Steuerung (linuxcncrsh --enablepw); es bleibt auf diesem Computer und wird nie angezeigt oder protokolliert.</translation>
     </message>
     <message>
         <source>&amp;INI file:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;INI-Datei:</translation>
     </message>
     <message>
         <source>&amp;Enable password:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Freigabepasswort:</translation>
     </message>
 </context>
 <context>
     <name>Toffee::LinuxCncController</name>
     <message>
         <source>The line &quot;%1&quot; is too long for linuxcncrsh; nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zeile „%1“ ist zu lang für linuxcncrsh; es wurde nichts gesendet.</translation>
     </message>
     <message>
         <source>Stopped: LinuxCNC aborted &quot;%1&quot; where the machine stood. Nothing was measured or written; check where the spindle is before you go on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Gestoppt: LinuxCNC hat „%1“ dort abgebrochen, wo die Maschine stand. Es wurde nichts gemessen oder geschrieben; prüfen Sie, wo die Spindel steht, bevor Sie weitermachen.</translation>
     </message>
     <message>
         <source>LinuxCNC refused &quot;%1&quot; and did not say why (get error: OK). Check LinuxCNC&apos;s own screen.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC lehnte „%1“ ab und sagte nicht, warum (get error: OK). Sehen Sie auf dem Bildschirm von LinuxCNC nach.</translation>
     </message>
     <message>
         <source>LinuxCNC refused &quot;%1&quot;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC lehnte „%1“ ab: %2</translation>
     </message>
     <message>
         <source>linuxcncrsh answered &quot;get %1&quot; with something else (%2); is this LinuxCNC?</source>
-        <translation type="unfinished"></translation>
+        <translation>linuxcncrsh beantwortete „get %1“ mit etwas anderem (%2); ist das LinuxCNC?</translation>
     </message>
     <message>
         <source>linuxcncrsh refused Toffee&apos;s hello (HELLO NAK): it was started with a connect password of its own (--connectpw), which Toffee does not know. Start it with the default (EMC), then connect again.</source>
-        <translation type="unfinished"></translation>
+        <translation>linuxcncrsh lehnte das Hello von Toffee ab (HELLO NAK): Es wurde mit einem eigenen Verbindungspasswort gestartet (--connectpw), das Toffee nicht kennt. Starten Sie es mit der Voreinstellung (EMC) und verbinden Sie erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC refused the enable password in this machine&apos;s settings (linuxcncrsh --enablepw). Set the right one, then connect again. Nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC lehnte das Freigabepasswort aus den Einstellungen dieser Maschine ab (linuxcncrsh --enablepw). Stellen Sie das richtige ein und verbinden Sie erneut. Es wurde nichts gesendet.</translation>
     </message>
     <message>
         <source>This LinuxCNC&apos;s machine units are %1 ([TRAJ] LINEAR_UNITS); Toffee reads and writes millimetres only. Nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Maschineneinheiten dieses LinuxCNC sind %1 ([TRAJ] LINEAR_UNITS); Toffee liest und schreibt nur Millimeter. Es wurde nichts gesendet.</translation>
     </message>
     <message>
         <source>select a tool</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Werkzeug wählen</translation>
     </message>
     <message>
         <source>LinuxCNC was told T%1 is in the spindle but says T%2.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC wurde gesagt, T%1 sei in der Spindel, meldet aber T%2.</translation>
     </message>
     <message>
         <source>T%1 may be asked for at LinuxCNC&apos;s own screen (its manual tool change)</source>
-        <translation type="unfinished"></translation>
+        <translation>T%1 wird womöglich am Bildschirm von LinuxCNC angefordert (sein manueller Werkzeugwechsel)</translation>
     </message>
     <message>
         <source>LinuxCNC changes to a tool, not to an empty spindle: use Select Tool with T0.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC wechselt zu einem Werkzeug, nicht zu einer leeren Spindel: Verwenden Sie „Werkzeug wählen“ mit T0.</translation>
     </message>
     <message>
         <source>change tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Werkzeuge wechseln</translation>
     </message>
     <message>
         <source>LinuxCNC ended the change to T%1 with T%2 in the spindle: nothing was measured.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC beendete den Wechsel zu T%1 mit T%2 in der Spindel: Es wurde nichts gemessen.</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s change was aborted (set abort): check what is in the spindle, then select it and restore or probe its TLO before cutting.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Wechsel in LinuxCNC wurde abgebrochen (set abort): Prüfen Sie, was in der Spindel steckt, wählen Sie es dann und stellen Sie seinen TLO wieder her oder tasten Sie es an, bevor Sie schneiden.</translation>
     </message>
     <message>
         <source>Toffee cannot %1 now: </source>
-        <translation type="unfinished"></translation>
+        <translation>Toffee kann jetzt nicht %1: </translation>
     </message>
     <message>
         <source>Nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es wurde nichts gesendet.</translation>
     </message>
     <message>
         <source>LinuxCNC is in estop. Release it at the machine (in AXIS: F1), then try again; Toffee never releases an estop itself.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC ist im Not-Aus (estop). Lösen Sie ihn an der Maschine (in AXIS: F1) und versuchen Sie es erneut; Toffee löst nie selbst einen Not-Aus.</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s machine is off. Switch it on (in AXIS: F2), then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Maschine von LinuxCNC ist aus. Schalten Sie sie ein (in AXIS: F2) und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC is not homed. Home every axis (in AXIS: Ctrl-Home), then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC ist nicht referenziert. Referenzieren Sie alle Achsen (in AXIS: Ctrl-Home) und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC is running a program or a line (%1). Wait until it is idle, then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC führt ein Programm oder eine Zeile aus (%1). Warten Sie, bis es ruht, und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC is in %1 mode; Toffee works through MDI and does not switch modes itself (a switch aborts whatever runs). Switch it to MDI (in AXIS: F5), then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC ist im Modus %1; Toffee arbeitet über MDI und wechselt den Modus nicht selbst (ein Wechsel bricht ab, was gerade läuft). Schalten Sie auf MDI (in AXIS: F5) und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>Another program took control of LinuxCNC (linuxcncrsh&apos;s enable) since Toffee connected. Make sure nobody else is driving it, then connect again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Seit Toffee verbunden ist, hat ein anderes Programm die Steuerung von LinuxCNC übernommen (die Freigabe von linuxcncrsh). Stellen Sie sicher, dass niemand sonst sie bedient, und verbinden Sie erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC is in inches (G20), where G10 and G38.2 take inches. Toffee works in millimetres: send G21, then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC ist in Zoll (G20), wo G10 und G38.2 Zoll erwarten. Toffee arbeitet in Millimetern: Senden Sie G21 und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC did not print what Toffee asked of it (%1); it said &quot;%2&quot;. Nothing was recorded.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC gab nicht aus, was Toffee erfragte (%1); es meldete „%2“. Es wurde nichts aufgezeichnet.</translation>
     </message>
     <message>
         <source>Cannot read LinuxCNC&apos;s INI %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Die INI-Datei von LinuxCNC %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
         <source>linuxcncrsh cannot read LinuxCNC&apos;s tool table, so Toffee reads its file: give the INI LinuxCNC runs (toffee-cli --ini FILE) on the computer LinuxCNC runs on.</source>
-        <translation type="unfinished"></translation>
+        <translation>linuxcncrsh kann die Werkzeugtabelle von LinuxCNC nicht lesen, deshalb liest Toffee ihre Datei: Geben Sie die INI an, mit der LinuxCNC läuft (toffee-cli --ini DATEI), auf dem Computer, auf dem LinuxCNC läuft.</translation>
     </message>
     <message>
         <source>Cannot read LinuxCNC&apos;s tool table %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Werkzeugtabelle von LinuxCNC %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s tool table %1 could not be read: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Werkzeugtabelle von LinuxCNC %1 ließ sich nicht lesen: %2</translation>
     </message>
     <message>
         <source>LinuxCNC says no tool is in the spindle (T0), so there is nothing to %1. Say which tool is in (Select Tool, M61 Q&lt;n&gt;) first.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC meldet kein Werkzeug in der Spindel (T0), also gibt es nichts zu %1. Sagen Sie zuerst, welches Werkzeug steckt („Werkzeug wählen“, M61 Q&lt;n&gt;).</translation>
     </message>
     <message>
         <source>Toffee does not know where this machine&apos;s tool setter is. Set it first (Machine ▸ Tool Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates).</source>
-        <translation type="unfinished">Toffee weiß nicht, wo der Werkzeugtaster dieser Maschine ist. Legen Sie ihn zuerst fest (Maschine ▸ Werkzeugtaster …, oder toffee-cli --setter X,Y,ZMIN in Maschinenkoordinaten).</translation>
+        <translation>Toffee weiß nicht, wo der Werkzeugtaster dieser Maschine ist. Legen Sie ihn zuerst fest (Maschine ▸ Werkzeugtaster …, oder toffee-cli --setter X,Y,ZMIN in Maschinenkoordinaten).</translation>
     </message>
     <message>
         <source>probe</source>
-        <translation type="unfinished">Messung</translation>
+        <translation>Messung</translation>
     </message>
     <message>
         <source>measure</source>
-        <translation type="unfinished">vermessen</translation>
+        <translation>vermessen</translation>
     </message>
     <message>
         <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
-        <translation type="unfinished">T%1 ist das Referenzwerkzeug dieser Maschine (seine TLO ist 0): Jedes Werkzeug wird gegen dessen Kontakt bei Maschinen-Z %2 mm gemessen.</translation>
+        <translation>T%1 ist das Referenzwerkzeug dieser Maschine (seine TLO ist 0): Jedes Werkzeug wird gegen dessen Kontakt bei Maschinen-Z %2 mm gemessen.</translation>
     </message>
     <message>
         <source>break-test</source>
-        <translation type="unfinished">auf Bruch prüfen</translation>
+        <translation>auf Bruch prüfen</translation>
     </message>
     <message>
         <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
-        <translation type="unfinished">Diese Maschine hat noch kein Referenzwerkzeug, daher lässt sich keine neue Länge vergleichen. Vermessen Sie zuerst ein Werkzeug: Das erste gemessene wird zur Referenz.</translation>
+        <translation>Diese Maschine hat noch kein Referenzwerkzeug, daher lässt sich keine neue Länge vergleichen. Vermessen Sie zuerst ein Werkzeug: Das erste gemessene wird zur Referenz.</translation>
     </message>
     <message>
         <source>T%1 has no stored TLO to compare with, in the table or in LinuxCNC&apos;s own: probe it first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is kept in the table and in LinuxCNC. Look at the tool and replace it before you cut.</source>
-        <translation type="unfinished"></translation>
+        <translation>T%1 hat keinen gespeicherten TLO zum Vergleich, weder in der Tabelle noch in der von LinuxCNC: Tasten Sie es zuerst an.</translation>
     </message>
     <message>
         <source>T%1&apos;s TLO</source>
-        <translation type="unfinished">Die TLO von T%1</translation>
+        <translation>Die TLO von T%1</translation>
     </message>
     <message>
         <source>Nothing was written to LinuxCNC or recorded.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es wurde nichts in LinuxCNC geschrieben oder aufgezeichnet.</translation>
     </message>
     <message>
         <source>the offset in force reads %1 mm</source>
-        <translation type="unfinished">die wirksame Korrektur lautet %1 mm</translation>
+        <translation>die wirksame Korrektur lautet %1 mm</translation>
     </message>
     <message>
         <source>nothing</source>
-        <translation type="unfinished">nichts</translation>
+        <translation>nichts</translation>
     </message>
     <message>
         <source>%1 holds %2 for T%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 enthält %2 für T%3</translation>
     </message>
     <message>
         <source>LinuxCNC was given T%1&apos;s TLO %2 mm, but read back %3. Nothing was recorded; check LinuxCNC&apos;s tool table before you cut.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC erhielt für T%1 den TLO %2 mm, zurückgelesen wurde aber: %3. Es wurde nichts aufgezeichnet; prüfen Sie die Werkzeugtabelle von LinuxCNC, bevor Sie schneiden.</translation>
     </message>
     <message>
         <source>The TLO</source>
-        <translation type="unfinished">Die TLO</translation>
+        <translation>Die TLO</translation>
     </message>
     <message>
         <source>set a TLO for</source>
-        <translation type="unfinished">mit einer TLO versehen</translation>
+        <translation>mit einer TLO versehen</translation>
     </message>
     <message>
         <source>set a TLO</source>
-        <translation type="unfinished"></translation>
+        <translation>einen TLO setzen</translation>
     </message>
     <message>
         <source>The height above Z0</source>
-        <translation type="unfinished">Die Höhe über Z0</translation>
+        <translation>Die Höhe über Z0</translation>
     </message>
     <message>
         <source>A TLO is restored for a tool, not for an empty spindle.</source>
-        <translation type="unfinished">Eine TLO wird für ein Werkzeug wiederhergestellt, nicht für eine leere Spindel.</translation>
+        <translation>Eine TLO wird für ein Werkzeug wiederhergestellt, nicht für eine leere Spindel.</translation>
     </message>
     <message>
         <source>restore a TLO</source>
-        <translation type="unfinished"></translation>
+        <translation>einen TLO wiederherstellen</translation>
     </message>
     <message>
         <source>%1 (the TLO that puts the tip %2 mm above Z0, from where it is)</source>
-        <translation type="unfinished">%1 (die TLO, die die Spitze von ihrer jetzigen Position aus %2 mm über Z0 setzt)</translation>
+        <translation>%1 (die TLO, die die Spitze von ihrer jetzigen Position aus %2 mm über Z0 setzt)</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s tool table (%1) has no %2: G10 L1 cannot add a tool. Nothing was written: add them to LinuxCNC&apos;s table, or leave them out.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Werkzeugtabelle von LinuxCNC (%1) enthält kein %2: G10 L1 kann kein Werkzeug hinzufügen. Es wurde nichts geschrieben: Fügen Sie sie der Tabelle von LinuxCNC hinzu oder lassen Sie sie weg.</translation>
     </message>
     <message>
         <source>write LinuxCNC&apos;s table</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Written before it: %1; not written: %2.</source>
-        <translation type="unfinished">Davor geschrieben: %1; nicht geschrieben: %2.</translation>
+        <translation>die Tabelle von LinuxCNC schreiben</translation>
     </message>
     <message>
         <source>T%1 reads %2, not %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>T%1 liest %2, nicht %3 mm</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s table does not read back as written: %1. %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Tabelle von LinuxCNC liest sich nicht so zurück, wie geschrieben: %1. %2</translation>
     </message>
     <message>
         <source>The probe was already touching, or touched something, before it probed (the setter&apos;s input triggered on the way to it or where it started): check the setter, its cable and the safe height. Nothing was measured. (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Taster berührte schon oder stieß an etwas, bevor er antastete (der Eingang des Werkzeugtasters löste auf dem Weg dorthin oder am Start aus): Prüfen Sie den Werkzeugtaster, sein Kabel und die sichere Höhe. Es wurde nichts gemessen. (%1)</translation>
     </message>
     <message>
         <source>The probe was already touching at machine Z %1 mm, before it moved: the setter&apos;s input is triggered there. Check the setter, its cable and the safe height. Nothing was measured.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Taster berührte schon bei Maschinen-Z %1 mm, bevor er sich bewegte: Der Eingang des Werkzeugtasters ist dort ausgelöst. Prüfen Sie den Werkzeugtaster, sein Kabel und die sichere Höhe. Es wurde nichts gemessen.</translation>
     </message>
     <message>
         <source>The probe met nothing down to machine Z %1 mm: is a tool in the spindle, and is the setter where its settings say? Nothing was measured.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Taster traf bis Maschinen-Z %1 mm auf nichts: Steckt ein Werkzeug in der Spindel, und steht der Werkzeugtaster dort, wo seine Einstellungen sagen? Es wurde nichts gemessen.</translation>
     </message>
     <message>
         <source>LinuxCNC reported the contact at machine Z %1 mm, outside the move from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC meldete die Berührung bei Maschinen-Z %1 mm, außerhalb der Bewegung von %2 bis %3 mm. Es wurde nichts geschrieben oder aufgezeichnet; prüfen Sie die Einstellungen des Werkzeugtasters und die Maschine.</translation>
     </message>
 </context>
 <context>
@@ -4291,6 +4275,18 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>Check the machine, then Unlock ($X).</source>
         <translation>Prüfen Sie die Maschine, dann Entsperren ($X).</translation>
     </message>
+    <message>
+        <source>T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is kept in the table and in %6. Look at the tool and replace it before you cut.</source>
+        <translation>T%1 ergab %2 mm gegenüber seinem gespeicherten TLO %3 mm: %4 mm Abstand, mehr als die Toleranz %5 mm. Es ist womöglich gebrochen oder verschlissen. Die Spindel ist gestoppt und angehoben; sein gespeicherter TLO bleibt in der Tabelle und in %6. Sehen Sie sich das Werkzeug an und ersetzen Sie es, bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>Written before it: %1; not written: %2.</source>
+        <translation>Davor geschrieben: %1; nicht geschrieben: %2.</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nichts</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -4351,7 +4347,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>LinuxCNC at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC unter %1</translation>
     </message>
 </context>
 <context>
@@ -5417,31 +5413,31 @@ Trotzdem speichern?</translation>
     </message>
     <message>
         <source>not in its table</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht in seiner Tabelle</translation>
     </message>
     <message>
         <source>%1 cannot go into %2&apos;s table of %3 tools: nothing is pushed. Renumber them, or remove their TLOs, and push again.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 passen nicht in die Tabelle von %2 mit %3 Werkzeugen: Es wird nichts übertragen. Nummerieren Sie sie um oder entfernen Sie ihre TLOs und übertragen Sie erneut.</translation>
     </message>
     <message>
         <source>%1 are not in %2&apos;s tool table, and G10 L1 cannot add a tool: nothing is pushed. Add them to its table, or remove their TLOs, and push again.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 stehen nicht in der Werkzeugtabelle von %2, und G10 L1 kann kein Werkzeug hinzufügen: Es wird nichts übertragen. Fügen Sie sie seiner Tabelle hinzu oder entfernen Sie ihre TLOs und übertragen Sie erneut.</translation>
     </message>
     <message>
         <source>Written into %1&apos;s table and read back, all agreeing: %2 TLOs.</source>
-        <translation type="unfinished"></translation>
+        <translation>In die Tabelle von %1 geschrieben und zurückgelesen, alle stimmen überein: %2 TLOs.</translation>
     </message>
     <message>
         <source>&amp;LinuxCNC Access…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;LinuxCNC-Zugang…</translation>
     </message>
     <message>
         <source>this machine</source>
-        <translation type="unfinished"></translation>
+        <translation>diese Maschine</translation>
     </message>
     <message>
         <source>The LinuxCNC access is kept on this computer; it applies from the next connection.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der LinuxCNC-Zugang bleibt auf diesem Computer; er gilt ab der nächsten Verbindung.</translation>
     </message>
 </context>
 <context>
@@ -5760,11 +5756,11 @@ Vermessen Sie T%1 stattdessen.</translation>
     </message>
     <message>
         <source>The machine says no tool is in the spindle (T0), so there is nothing to probe. Say which tool is in first (the table&apos;s context menu: Make Active).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Maschine meldet kein Werkzeug in der Spindel (T0), also gibt es nichts anzutasten. Sagen Sie zuerst, welches Werkzeug steckt (Kontextmenü der Tabelle: Aktiv setzen).</translation>
     </message>
     <message>
         <source>Nothing to probe</source>
-        <translation type="unfinished"></translation>
+        <translation>Nichts anzutasten</translation>
     </message>
 </context>
 <context>

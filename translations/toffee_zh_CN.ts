@@ -1531,11 +1531,11 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>Type a command and press Enter; ↑ ↓ for history</source>
-        <translation type="unfinished"></translation>
+        <translation>输入命令并按回车；↑ ↓ 查看历史</translation>
     </message>
     <message>
         <source>Type a command (e.g. %1) and press Enter; ↑ ↓ for history</source>
-        <translation type="unfinished"></translation>
+        <translation>输入命令（例如 %1）并按回车；↑ ↓ 查看历史</translation>
     </message>
 </context>
 <context>
@@ -1562,15 +1562,15 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>The controller is not a Carvera, grblHAL or LinuxCNC, the controllers Toffee manages: it answered &quot;version&quot; with %1 and &quot;$I&quot; with %2. Nothing else was sent. If it is one of them, choose it (Carvera, grblHAL or LinuxCNC; toffee-cli --controller) and connect again.</source>
-        <translation type="unfinished"></translation>
+        <translation>该控制器不是 Toffee 管理的 Carvera、grblHAL 或 LinuxCNC：它对 “version” 的回答是 %1，对 “$I” 的回答是 %2。未发送其他任何内容。如果它确实是其中之一，请选择它（Carvera、grblHAL 或 LinuxCNC；toffee-cli --controller）后重新连接。</translation>
     </message>
     <message>
         <source>%1 The machine answered nothing: not to the Carvera&apos;s and grblHAL&apos;s first question, nor to LinuxCNC&apos;s hello. Check that it is switched on and has started, and the address and port.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 机床没有任何回应：既没有回答 Carvera 和 grblHAL 的第一个问题，也没有回答 LinuxCNC 的 hello。请检查它是否已开机并启动完成，以及地址和端口。</translation>
     </message>
     <message>
         <source>The controller is none of those Toffee manages: it answered LinuxCNC&apos;s hello with %1. Nothing else was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>该控制器不是 Toffee 管理的任何一种：它对 LinuxCNC 的 hello 回答了 %1。未发送其他任何内容。</translation>
     </message>
 </context>
 <context>
@@ -1677,7 +1677,7 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC %1</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC %1</translation>
     </message>
 </context>
 <context>
@@ -2207,10 +2207,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>这台机床还没有基准刀具，因此无法比较新的长度。请先对一把刀具对刀：第一把测量的刀具即成为基准。</translation>
     </message>
     <message>
-        <source>T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is kept in the table and in grblHAL. Look at the tool and replace it before you cut.</source>
-        <translation>T%1 测得 %2 mm，其已存 TLO 为 %3 mm：相差 %4 mm，超过公差 %5 mm。刀具可能已断或磨损。主轴已停止并抬起；其已存 TLO 仍保留在刀具表和 grblHAL 中。请查看刀具，并在切削前更换它。</translation>
-    </message>
-    <message>
         <source>The TLO</source>
         <translation>TLO</translation>
     </message>
@@ -2301,10 +2297,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>writes its table</source>
         <translation>写入其刀具表</translation>
-    </message>
-    <message>
-        <source>Written before it: %1; not written: %2.</source>
-        <translation>此前已写入：%1；未写入：%2。</translation>
     </message>
     <message>
         <source>grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
@@ -3836,282 +3828,274 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <name>Toffee::LinuxCncAccessDialog</name>
     <message>
         <source>LinuxCNC Access for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 的 LinuxCNC 访问</translation>
     </message>
     <message>
         <source>found by itself when LinuxCNC runs on this computer</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 在本机运行时自动查找</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s default (EMCTOO)</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 的默认值（EMCTOO）</translation>
     </message>
     <message>
         <source>&amp;Browse…</source>
-        <translation type="unfinished"></translation>
+        <translation>浏览(&amp;B)…</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s INI</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 的 INI 文件</translation>
     </message>
     <message>
         <source>LinuxCNC configurations (*.ini);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 配置 (*.ini);;所有文件 (*)</translation>
     </message>
     <message>
         <source>linuxcncrsh cannot read LinuxCNC&apos;s tool table, so Toffee reads the file its INI names ([EMCIO] TOOL_TABLE) for push, pull and the job check. Its enable password lets Toffee take control (linuxcncrsh --enablepw); it is kept on this computer and never shown or logged.</source>
-        <translation type="unfinished"></translation>
+        <translation>linuxcncrsh 无法读取 LinuxCNC 的刀具表，因此 Toffee 在推送、拉取和程序检查时读取其 INI 指定的文件（[EMCIO] TOOL_TABLE）。启用密码让 Toffee 取得控制权（linuxcncrsh --enablepw）；它只保存在本机，从不显示或记录。</translation>
     </message>
     <message>
         <source>&amp;INI file:</source>
-        <translation type="unfinished"></translation>
+        <translation>INI 文件(&amp;I)：</translation>
     </message>
     <message>
         <source>&amp;Enable password:</source>
-        <translation type="unfinished"></translation>
+        <translation>启用密码(&amp;E)：</translation>
     </message>
 </context>
 <context>
     <name>Toffee::LinuxCncController</name>
     <message>
         <source>The line &quot;%1&quot; is too long for linuxcncrsh; nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>行 “%1” 对 linuxcncrsh 来说太长；未发送任何内容。</translation>
     </message>
     <message>
         <source>Stopped: LinuxCNC aborted &quot;%1&quot; where the machine stood. Nothing was measured or written; check where the spindle is before you go on.</source>
-        <translation type="unfinished"></translation>
+        <translation>已停止：LinuxCNC 在机床所在位置中止了 “%1”。未测量或写入任何数据；继续之前请检查主轴位置。</translation>
     </message>
     <message>
         <source>LinuxCNC refused &quot;%1&quot; and did not say why (get error: OK). Check LinuxCNC&apos;s own screen.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 拒绝了 “%1” 但未说明原因（get error: OK）。请查看 LinuxCNC 自己的界面。</translation>
     </message>
     <message>
         <source>LinuxCNC refused &quot;%1&quot;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 拒绝了 “%1”：%2</translation>
     </message>
     <message>
         <source>linuxcncrsh answered &quot;get %1&quot; with something else (%2); is this LinuxCNC?</source>
-        <translation type="unfinished"></translation>
+        <translation>linuxcncrsh 对 “get %1” 的回答不符（%2）；这是 LinuxCNC 吗？</translation>
     </message>
     <message>
         <source>linuxcncrsh refused Toffee&apos;s hello (HELLO NAK): it was started with a connect password of its own (--connectpw), which Toffee does not know. Start it with the default (EMC), then connect again.</source>
-        <translation type="unfinished"></translation>
+        <translation>linuxcncrsh 拒绝了 Toffee 的 hello（HELLO NAK）：它以 Toffee 不知道的自定义连接密码（--connectpw）启动。请用默认值（EMC）启动它，然后重新连接。</translation>
     </message>
     <message>
         <source>LinuxCNC refused the enable password in this machine&apos;s settings (linuxcncrsh --enablepw). Set the right one, then connect again. Nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 拒绝了本机床设置中的启用密码（linuxcncrsh --enablepw）。请设置正确的密码后重新连接。未发送任何内容。</translation>
     </message>
     <message>
         <source>This LinuxCNC&apos;s machine units are %1 ([TRAJ] LINEAR_UNITS); Toffee reads and writes millimetres only. Nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>此 LinuxCNC 的机床单位是 %1（[TRAJ] LINEAR_UNITS）；Toffee 只读写毫米。未发送任何内容。</translation>
     </message>
     <message>
         <source>select a tool</source>
-        <translation type="unfinished"></translation>
+        <translation>选择刀具</translation>
     </message>
     <message>
         <source>LinuxCNC was told T%1 is in the spindle but says T%2.</source>
-        <translation type="unfinished"></translation>
+        <translation>已告知 LinuxCNC 主轴上是 T%1，但它报告的是 T%2。</translation>
     </message>
     <message>
         <source>T%1 may be asked for at LinuxCNC&apos;s own screen (its manual tool change)</source>
-        <translation type="unfinished"></translation>
+        <translation>T%1 可能会在 LinuxCNC 自己的界面上要求更换（其手动换刀）</translation>
     </message>
     <message>
         <source>LinuxCNC changes to a tool, not to an empty spindle: use Select Tool with T0.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 只能换到某把刀具，不能换成空主轴：请用“选择刀具”并选 T0。</translation>
     </message>
     <message>
         <source>change tools</source>
-        <translation type="unfinished"></translation>
+        <translation>换刀</translation>
     </message>
     <message>
         <source>LinuxCNC ended the change to T%1 with T%2 in the spindle: nothing was measured.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 结束了换到 T%1 的换刀，但主轴上是 T%2：未测量任何数据。</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s change was aborted (set abort): check what is in the spindle, then select it and restore or probe its TLO before cutting.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 的换刀已中止（set abort）：请检查主轴上的刀具，然后选择它，并在切削前恢复或探测其 TLO。</translation>
     </message>
     <message>
         <source>Toffee cannot %1 now: </source>
-        <translation type="unfinished"></translation>
+        <translation>Toffee 现在无法%1：</translation>
     </message>
     <message>
         <source>Nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>未发送任何内容。</translation>
     </message>
     <message>
         <source>LinuxCNC is in estop. Release it at the machine (in AXIS: F1), then try again; Toffee never releases an estop itself.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 处于急停（estop）状态。请在机床上解除（AXIS 中按 F1）后重试；Toffee 从不自行解除急停。</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s machine is off. Switch it on (in AXIS: F2), then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 的机床处于关闭状态。请打开它（AXIS 中按 F2）后重试。</translation>
     </message>
     <message>
         <source>LinuxCNC is not homed. Home every axis (in AXIS: Ctrl-Home), then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 尚未回零。请让所有轴回零（AXIS 中按 Ctrl-Home）后重试。</translation>
     </message>
     <message>
         <source>LinuxCNC is running a program or a line (%1). Wait until it is idle, then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 正在运行程序或一行代码（%1）。请等待它空闲后重试。</translation>
     </message>
     <message>
         <source>LinuxCNC is in %1 mode; Toffee works through MDI and does not switch modes itself (a switch aborts whatever runs). Switch it to MDI (in AXIS: F5), then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 处于 %1 模式；Toffee 通过 MDI 工作，不会自行切换模式（切换会中止正在运行的内容）。请切换到 MDI（AXIS 中按 F5）后重试。</translation>
     </message>
     <message>
         <source>Another program took control of LinuxCNC (linuxcncrsh&apos;s enable) since Toffee connected. Make sure nobody else is driving it, then connect again.</source>
-        <translation type="unfinished"></translation>
+        <translation>自 Toffee 连接以来，另一个程序取得了 LinuxCNC 的控制权（linuxcncrsh 的 enable）。请确认没有其他人在操作它，然后重新连接。</translation>
     </message>
     <message>
         <source>LinuxCNC is in inches (G20), where G10 and G38.2 take inches. Toffee works in millimetres: send G21, then try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 处于英寸模式（G20），此时 G10 和 G38.2 使用英寸。Toffee 以毫米工作：请发送 G21 后重试。</translation>
     </message>
     <message>
         <source>LinuxCNC did not print what Toffee asked of it (%1); it said &quot;%2&quot;. Nothing was recorded.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 没有输出 Toffee 请求的内容（%1）；它返回 “%2”。未记录任何数据。</translation>
     </message>
     <message>
         <source>Cannot read LinuxCNC&apos;s INI %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法读取 LinuxCNC 的 INI 文件 %1：%2</translation>
     </message>
     <message>
         <source>linuxcncrsh cannot read LinuxCNC&apos;s tool table, so Toffee reads its file: give the INI LinuxCNC runs (toffee-cli --ini FILE) on the computer LinuxCNC runs on.</source>
-        <translation type="unfinished"></translation>
+        <translation>linuxcncrsh 无法读取 LinuxCNC 的刀具表，因此 Toffee 读取其文件：请在运行 LinuxCNC 的计算机上给出 LinuxCNC 使用的 INI 文件（toffee-cli --ini FILE）。</translation>
     </message>
     <message>
         <source>Cannot read LinuxCNC&apos;s tool table %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法读取 LinuxCNC 的刀具表 %1：%2</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s tool table %1 could not be read: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 的刀具表 %1 无法解析：%2</translation>
     </message>
     <message>
         <source>LinuxCNC says no tool is in the spindle (T0), so there is nothing to %1. Say which tool is in (Select Tool, M61 Q&lt;n&gt;) first.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 报告主轴上没有刀具（T0），因此没有可以%1的。请先说明装的是哪把刀（选择刀具，M61 Q&lt;n&gt;）。</translation>
     </message>
     <message>
         <source>Toffee does not know where this machine&apos;s tool setter is. Set it first (Machine ▸ Tool Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates).</source>
-        <translation type="unfinished">Toffee 不知道这台机床的对刀仪在哪里。请先设置（机床 ▸ 对刀仪…，或用 toffee-cli --setter X,Y,ZMIN 以机床坐标指定）。</translation>
+        <translation>Toffee 不知道这台机床的对刀仪在哪里。请先设置（机床 ▸ 对刀仪…，或用 toffee-cli --setter X,Y,ZMIN 以机床坐标指定）。</translation>
     </message>
     <message>
         <source>probe</source>
-        <translation type="unfinished">探测</translation>
+        <translation>探测</translation>
     </message>
     <message>
         <source>measure</source>
-        <translation type="unfinished">测量</translation>
+        <translation>测量</translation>
     </message>
     <message>
         <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
-        <translation type="unfinished">T%1 是这台机床的基准刀具（其 TLO 为 0）：所有刀具都相对于它在机床 Z %2 mm 处的触碰点测量。</translation>
+        <translation>T%1 是这台机床的基准刀具（其 TLO 为 0）：所有刀具都相对于它在机床 Z %2 mm 处的触碰点测量。</translation>
     </message>
     <message>
         <source>break-test</source>
-        <translation type="unfinished">进行断刀检测</translation>
+        <translation>进行断刀检测</translation>
     </message>
     <message>
         <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
-        <translation type="unfinished">这台机床还没有基准刀具，因此无法比较新的长度。请先对一把刀具对刀：第一把测量的刀具即成为基准。</translation>
+        <translation>这台机床还没有基准刀具，因此无法比较新的长度。请先对一把刀具对刀：第一把测量的刀具即成为基准。</translation>
     </message>
     <message>
         <source>T%1 has no stored TLO to compare with, in the table or in LinuxCNC&apos;s own: probe it first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is kept in the table and in LinuxCNC. Look at the tool and replace it before you cut.</source>
-        <translation type="unfinished"></translation>
+        <translation>T%1 没有可供比较的已存 TLO，刀具表和 LinuxCNC 自己的表中都没有：请先探测它。</translation>
     </message>
     <message>
         <source>T%1&apos;s TLO</source>
-        <translation type="unfinished">T%1 的 TLO</translation>
+        <translation>T%1 的 TLO</translation>
     </message>
     <message>
         <source>Nothing was written to LinuxCNC or recorded.</source>
-        <translation type="unfinished"></translation>
+        <translation>未向 LinuxCNC 写入或记录任何数据。</translation>
     </message>
     <message>
         <source>the offset in force reads %1 mm</source>
-        <translation type="unfinished">生效的补偿读数为 %1 mm</translation>
+        <translation>生效的补偿读数为 %1 mm</translation>
     </message>
     <message>
         <source>nothing</source>
-        <translation type="unfinished"></translation>
+        <translation>无</translation>
     </message>
     <message>
         <source>%1 holds %2 for T%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 中 T%3 的值为 %2</translation>
     </message>
     <message>
         <source>LinuxCNC was given T%1&apos;s TLO %2 mm, but read back %3. Nothing was recorded; check LinuxCNC&apos;s tool table before you cut.</source>
-        <translation type="unfinished"></translation>
+        <translation>已向 LinuxCNC 写入 T%1 的 TLO %2 mm，但读回的是 %3。未记录任何数据；切削前请检查 LinuxCNC 的刀具表。</translation>
     </message>
     <message>
         <source>The TLO</source>
-        <translation type="unfinished">TLO</translation>
+        <translation>TLO</translation>
     </message>
     <message>
         <source>set a TLO for</source>
-        <translation type="unfinished">设置 TLO</translation>
+        <translation>设置 TLO</translation>
     </message>
     <message>
         <source>set a TLO</source>
-        <translation type="unfinished"></translation>
+        <translation>设置 TLO</translation>
     </message>
     <message>
         <source>The height above Z0</source>
-        <translation type="unfinished">Z0 以上的高度</translation>
+        <translation>Z0 以上的高度</translation>
     </message>
     <message>
         <source>A TLO is restored for a tool, not for an empty spindle.</source>
-        <translation type="unfinished">TLO 只能为刀具恢复，不能为空主轴恢复。</translation>
+        <translation>TLO 只能为刀具恢复，不能为空主轴恢复。</translation>
     </message>
     <message>
         <source>restore a TLO</source>
-        <translation type="unfinished"></translation>
+        <translation>恢复 TLO</translation>
     </message>
     <message>
         <source>%1 (the TLO that puts the tip %2 mm above Z0, from where it is)</source>
-        <translation type="unfinished">%1（以当前位置为准，使刀尖位于 Z0 以上 %2 mm 的 TLO）</translation>
+        <translation>%1（以当前位置为准，使刀尖位于 Z0 以上 %2 mm 的 TLO）</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s tool table (%1) has no %2: G10 L1 cannot add a tool. Nothing was written: add them to LinuxCNC&apos;s table, or leave them out.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 的刀具表（%1）中没有 %2：G10 L1 无法新增刀具。未写入任何内容：请将它们加入 LinuxCNC 的刀具表，或将其排除。</translation>
     </message>
     <message>
         <source>write LinuxCNC&apos;s table</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Written before it: %1; not written: %2.</source>
-        <translation type="unfinished">此前已写入：%1；未写入：%2。</translation>
+        <translation>写入 LinuxCNC 的刀具表</translation>
     </message>
     <message>
         <source>T%1 reads %2, not %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>T%1 读回为 %2，而不是 %3 mm</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s table does not read back as written: %1. %2</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 的刀具表读回的内容与写入的不一致：%1。%2</translation>
     </message>
     <message>
         <source>The probe was already touching, or touched something, before it probed (the setter&apos;s input triggered on the way to it or where it started): check the setter, its cable and the safe height. Nothing was measured. (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>探测前探针已接触或碰到了东西（对刀仪输入在移动途中或起点就已触发）：请检查对刀仪、线缆和安全高度。未测量任何数据。（%1）</translation>
     </message>
     <message>
         <source>The probe was already touching at machine Z %1 mm, before it moved: the setter&apos;s input is triggered there. Check the setter, its cable and the safe height. Nothing was measured.</source>
-        <translation type="unfinished"></translation>
+        <translation>探针在移动前于机床 Z %1 mm 处已接触：对刀仪输入在该处已触发。请检查对刀仪、线缆和安全高度。未测量任何数据。</translation>
     </message>
     <message>
         <source>The probe met nothing down to machine Z %1 mm: is a tool in the spindle, and is the setter where its settings say? Nothing was measured.</source>
-        <translation type="unfinished"></translation>
+        <translation>探针一直到机床 Z %1 mm 都未接触到任何东西：主轴上是否装有刀具？对刀仪是否在设置所示的位置？未测量任何数据。</translation>
     </message>
     <message>
         <source>LinuxCNC reported the contact at machine Z %1 mm, outside the move from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 报告的接触点在机床 Z %1 mm，超出了从 %2 到 %3 mm 的移动范围。未写入或记录任何数据；请检查对刀仪设置和机床。</translation>
     </message>
 </context>
 <context>
@@ -4291,6 +4275,18 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>Check the machine, then Unlock ($X).</source>
         <translation>检查机床，然后解锁（$X）。</translation>
     </message>
+    <message>
+        <source>T%1 measured %2 mm against its stored TLO %3 mm: %4 mm apart, more than the tolerance %5 mm. It may be broken or worn. The spindle is stopped and lifted; its stored TLO is kept in the table and in %6. Look at the tool and replace it before you cut.</source>
+        <translation>T%1 测得 %2 mm，与其已存 TLO %3 mm 相差 %4 mm，超过公差 %5 mm。它可能已断裂或磨损。主轴已停止并抬起；其已存 TLO 保留在刀具表和 %6 中。切削前请检查刀具并更换。</translation>
+    </message>
+    <message>
+        <source>Written before it: %1; not written: %2.</source>
+        <translation>在此之前已写入：%1；未写入：%2。</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>无</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineDock</name>
@@ -4351,7 +4347,7 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>位于 %1 的 LinuxCNC</translation>
     </message>
 </context>
 <context>
@@ -5417,31 +5413,31 @@ Save anyway?</source>
     </message>
     <message>
         <source>not in its table</source>
-        <translation type="unfinished"></translation>
+        <translation>不在其刀具表中</translation>
     </message>
     <message>
         <source>%1 cannot go into %2&apos;s table of %3 tools: nothing is pushed. Renumber them, or remove their TLOs, and push again.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 无法放入 %2 的 %3 把刀具表中：不推送任何内容。请重新编号，或删除它们的 TLO 后再次推送。</translation>
     </message>
     <message>
         <source>%1 are not in %2&apos;s tool table, and G10 L1 cannot add a tool: nothing is pushed. Add them to its table, or remove their TLOs, and push again.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 不在 %2 的刀具表中，而 G10 L1 无法新增刀具：不推送任何内容。请将它们加入其刀具表，或删除它们的 TLO 后再次推送。</translation>
     </message>
     <message>
         <source>Written into %1&apos;s table and read back, all agreeing: %2 TLOs.</source>
-        <translation type="unfinished"></translation>
+        <translation>已写入 %1 的刀具表并读回，全部一致：%2 个 TLO。</translation>
     </message>
     <message>
         <source>&amp;LinuxCNC Access…</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 访问(&amp;L)…</translation>
     </message>
     <message>
         <source>this machine</source>
-        <translation type="unfinished"></translation>
+        <translation>本机床</translation>
     </message>
     <message>
         <source>The LinuxCNC access is kept on this computer; it applies from the next connection.</source>
-        <translation type="unfinished"></translation>
+        <translation>LinuxCNC 访问设置保存在本机；从下一次连接起生效。</translation>
     </message>
 </context>
 <context>
@@ -5760,11 +5756,11 @@ Probe T%1 instead.</source>
     </message>
     <message>
         <source>The machine says no tool is in the spindle (T0), so there is nothing to probe. Say which tool is in first (the table&apos;s context menu: Make Active).</source>
-        <translation type="unfinished"></translation>
+        <translation>机床报告主轴上没有刀具（T0），因此没有可探测的。请先说明装的是哪把刀（刀具表的右键菜单：设为当前刀具）。</translation>
     </message>
     <message>
         <source>Nothing to probe</source>
-        <translation type="unfinished"></translation>
+        <translation>没有可探测的刀具</translation>
     </message>
 </context>
 <context>
