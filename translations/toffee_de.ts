@@ -1562,15 +1562,15 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>The controller is not a Carvera, grblHAL or LinuxCNC, the controllers Toffee manages: it answered &quot;version&quot; with %1 and &quot;$I&quot; with %2. Nothing else was sent. If it is one of them, choose it (Carvera, grblHAL or LinuxCNC; toffee-cli --controller) and connect again.</source>
-        <translation>Die Steuerung ist weder eine Carvera noch grblHAL noch LinuxCNC, die Steuerungen, die Toffee verwaltet: Sie beantwortete „version“ mit %1 und „$I“ mit %2. Sonst wurde nichts gesendet. Ist sie doch eine davon, wählen Sie sie (Carvera, grblHAL oder LinuxCNC; toffee-cli --controller) und verbinden Sie erneut.</translation>
+        <translation>Die Steuerung ist weder eine Carvera noch grblHAL noch LinuxCNC, die Steuerungen, die Toffee verwaltet: Sie beantwortete „version“ mit %1 und „$I“ mit %2. Sonst wurde nichts gesendet. Ist sie doch eine davon, wählen Sie sie aus (Carvera, grblHAL oder LinuxCNC; toffee-cli --controller) und verbinden Sie erneut.</translation>
     </message>
     <message>
         <source>%1 The machine answered nothing: not to the Carvera&apos;s and grblHAL&apos;s first question, nor to LinuxCNC&apos;s hello. Check that it is switched on and has started, and the address and port.</source>
-        <translation>%1 Die Maschine antwortete gar nicht: weder auf die erste Frage für Carvera und grblHAL noch auf das Hello von LinuxCNC. Prüfen Sie, ob sie eingeschaltet und hochgefahren ist, sowie Adresse und Port.</translation>
+        <translation>%1 Die Maschine antwortete gar nicht: weder auf die erste Frage von Carvera und grblHAL noch auf das hello von LinuxCNC. Prüfen Sie, ob sie eingeschaltet und hochgefahren ist, sowie Adresse und Port.</translation>
     </message>
     <message>
         <source>The controller is none of those Toffee manages: it answered LinuxCNC&apos;s hello with %1. Nothing else was sent.</source>
-        <translation>Die Steuerung ist keine derer, die Toffee verwaltet: Sie beantwortete das Hello von LinuxCNC mit %1. Sonst wurde nichts gesendet.</translation>
+        <translation>Die Steuerung ist keine derer, die Toffee verwaltet: Sie beantwortete das hello von LinuxCNC mit %1. Sonst wurde nichts gesendet.</translation>
     </message>
 </context>
 <context>
@@ -3875,7 +3875,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>LinuxCNC refused &quot;%1&quot; and did not say why (get error: OK). Check LinuxCNC&apos;s own screen.</source>
-        <translation>LinuxCNC lehnte „%1“ ab und sagte nicht, warum (get error: OK). Sehen Sie auf dem Bildschirm von LinuxCNC nach.</translation>
+        <translation>LinuxCNC lehnte „%1“ ab und sagte nicht, warum (get error: OK). Sehen Sie auf dem Bildschirm von LinuxCNC selbst nach.</translation>
     </message>
     <message>
         <source>LinuxCNC refused &quot;%1&quot;: %2</source>
@@ -3887,7 +3887,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>linuxcncrsh refused Toffee&apos;s hello (HELLO NAK): it was started with a connect password of its own (--connectpw), which Toffee does not know. Start it with the default (EMC), then connect again.</source>
-        <translation>linuxcncrsh lehnte das Hello von Toffee ab (HELLO NAK): Es wurde mit einem eigenen Verbindungspasswort gestartet (--connectpw), das Toffee nicht kennt. Starten Sie es mit der Voreinstellung (EMC) und verbinden Sie erneut.</translation>
+        <translation>linuxcncrsh lehnte das hello von Toffee ab (HELLO NAK): Es wurde mit einem eigenen Verbindungspasswort gestartet (--connectpw), das Toffee nicht kennt. Starten Sie es mit der Voreinstellung (EMC) und verbinden Sie erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC refused the enable password in this machine&apos;s settings (linuxcncrsh --enablepw). Set the right one, then connect again. Nothing was sent.</source>
@@ -3899,15 +3899,15 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>select a tool</source>
-        <translation>ein Werkzeug wählen</translation>
+        <translation>das Werkzeug wählen</translation>
     </message>
     <message>
         <source>LinuxCNC was told T%1 is in the spindle but says T%2.</source>
-        <translation>LinuxCNC wurde gesagt, T%1 sei in der Spindel, meldet aber T%2.</translation>
+        <translation>LinuxCNC wurde mitgeteilt, dass T%1 in der Spindel ist, meldet aber T%2.</translation>
     </message>
     <message>
         <source>T%1 may be asked for at LinuxCNC&apos;s own screen (its manual tool change)</source>
-        <translation>T%1 wird womöglich am Bildschirm von LinuxCNC angefordert (sein manueller Werkzeugwechsel)</translation>
+        <translation>T%1 wird womöglich am Bildschirm von LinuxCNC selbst angefordert (sein manueller Werkzeugwechsel)</translation>
     </message>
     <message>
         <source>LinuxCNC changes to a tool, not to an empty spindle: use Select Tool with T0.</source>
@@ -3915,7 +3915,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>change tools</source>
-        <translation>Werkzeuge wechseln</translation>
+        <translation>das Werkzeug wechseln</translation>
     </message>
     <message>
         <source>LinuxCNC ended the change to T%1 with T%2 in the spindle: nothing was measured.</source>
@@ -3923,7 +3923,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>LinuxCNC&apos;s change was aborted (set abort): check what is in the spindle, then select it and restore or probe its TLO before cutting.</source>
-        <translation>Der Wechsel in LinuxCNC wurde abgebrochen (set abort): Prüfen Sie, was in der Spindel steckt, wählen Sie es dann und stellen Sie seinen TLO wieder her oder tasten Sie es an, bevor Sie schneiden.</translation>
+        <translation>Der Wechsel in LinuxCNC wurde abgebrochen (set abort): Prüfen Sie, was in der Spindel steckt, wählen Sie es dann und stellen Sie seine TLO wieder her oder messen Sie sie, bevor Sie zerspanen.</translation>
     </message>
     <message>
         <source>Toffee cannot %1 now: </source>
@@ -3935,7 +3935,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>LinuxCNC is in estop. Release it at the machine (in AXIS: F1), then try again; Toffee never releases an estop itself.</source>
-        <translation>LinuxCNC ist im Not-Aus (estop). Lösen Sie ihn an der Maschine (in AXIS: F1) und versuchen Sie es erneut; Toffee löst nie selbst einen Not-Aus.</translation>
+        <translation>LinuxCNC ist im Not-Aus (estop). Lösen Sie ihn an der Maschine (in AXIS: F1) und versuchen Sie es erneut; Toffee löst einen Not-Aus nie selbst.</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s machine is off. Switch it on (in AXIS: F2), then try again.</source>
@@ -3947,43 +3947,43 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>LinuxCNC is running a program or a line (%1). Wait until it is idle, then try again.</source>
-        <translation>LinuxCNC führt ein Programm oder eine Zeile aus (%1). Warten Sie, bis es ruht, und versuchen Sie es erneut.</translation>
+        <translation>LinuxCNC führt ein Programm oder eine Zeile aus (%1). Warten Sie, bis es im Leerlauf ist, und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC is in %1 mode; Toffee works through MDI and does not switch modes itself (a switch aborts whatever runs). Switch it to MDI (in AXIS: F5), then try again.</source>
-        <translation>LinuxCNC ist im Modus %1; Toffee arbeitet über MDI und wechselt den Modus nicht selbst (ein Wechsel bricht ab, was gerade läuft). Schalten Sie auf MDI (in AXIS: F5) und versuchen Sie es erneut.</translation>
+        <translation>LinuxCNC ist im Modus %1; Toffee arbeitet über MDI und wechselt den Modus nicht selbst (ein Wechsel bricht ab, was gerade läuft). Schalten Sie auf MDI um (in AXIS: F5) und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>Another program took control of LinuxCNC (linuxcncrsh&apos;s enable) since Toffee connected. Make sure nobody else is driving it, then connect again.</source>
-        <translation>Seit Toffee verbunden ist, hat ein anderes Programm die Steuerung von LinuxCNC übernommen (die Freigabe von linuxcncrsh). Stellen Sie sicher, dass niemand sonst sie bedient, und verbinden Sie erneut.</translation>
+        <translation>Seit Toffee verbunden ist, hat ein anderes Programm die Kontrolle über LinuxCNC übernommen (das enable von linuxcncrsh). Stellen Sie sicher, dass niemand sonst sie bedient, und verbinden Sie erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC is in inches (G20), where G10 and G38.2 take inches. Toffee works in millimetres: send G21, then try again.</source>
-        <translation>LinuxCNC ist in Zoll (G20), wo G10 und G38.2 Zoll erwarten. Toffee arbeitet in Millimetern: Senden Sie G21 und versuchen Sie es erneut.</translation>
+        <translation>LinuxCNC ist auf Zoll eingestellt (G20), sodass G10 und G38.2 Zoll erwarten. Toffee arbeitet in Millimetern: Senden Sie G21 und versuchen Sie es erneut.</translation>
     </message>
     <message>
         <source>LinuxCNC did not print what Toffee asked of it (%1); it said &quot;%2&quot;. Nothing was recorded.</source>
-        <translation>LinuxCNC gab nicht aus, was Toffee erfragte (%1); es meldete „%2“. Es wurde nichts aufgezeichnet.</translation>
+        <translation>LinuxCNC hat nicht ausgegeben, was Toffee abgefragt hat (%1); es meldete „%2“. Es wurde nichts aufgezeichnet.</translation>
     </message>
     <message>
         <source>Cannot read LinuxCNC&apos;s INI %1: %2</source>
-        <translation>Die INI-Datei von LinuxCNC %1 kann nicht gelesen werden: %2</translation>
+        <translation>Die INI-Datei %1 von LinuxCNC kann nicht gelesen werden: %2</translation>
     </message>
     <message>
         <source>linuxcncrsh cannot read LinuxCNC&apos;s tool table, so Toffee reads its file: give the INI LinuxCNC runs (toffee-cli --ini FILE) on the computer LinuxCNC runs on.</source>
-        <translation>linuxcncrsh kann die Werkzeugtabelle von LinuxCNC nicht lesen, deshalb liest Toffee ihre Datei: Geben Sie die INI an, mit der LinuxCNC läuft (toffee-cli --ini DATEI), auf dem Computer, auf dem LinuxCNC läuft.</translation>
+        <translation>linuxcncrsh kann die Werkzeugtabelle von LinuxCNC nicht lesen, deshalb liest Toffee deren Datei: Geben Sie die INI an, mit der LinuxCNC läuft (toffee-cli --ini FILE), auf dem Computer, auf dem LinuxCNC läuft.</translation>
     </message>
     <message>
         <source>Cannot read LinuxCNC&apos;s tool table %1: %2</source>
-        <translation>Die Werkzeugtabelle von LinuxCNC %1 kann nicht gelesen werden: %2</translation>
+        <translation>Die Werkzeugtabelle %1 von LinuxCNC kann nicht gelesen werden: %2</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s tool table %1 could not be read: %2</source>
-        <translation>Die Werkzeugtabelle von LinuxCNC %1 ließ sich nicht lesen: %2</translation>
+        <translation>Die Werkzeugtabelle %1 von LinuxCNC ließ sich nicht lesen: %2</translation>
     </message>
     <message>
         <source>LinuxCNC says no tool is in the spindle (T0), so there is nothing to %1. Say which tool is in (Select Tool, M61 Q&lt;n&gt;) first.</source>
-        <translation>LinuxCNC meldet kein Werkzeug in der Spindel (T0), also gibt es nichts zu %1. Sagen Sie zuerst, welches Werkzeug steckt („Werkzeug wählen“, M61 Q&lt;n&gt;).</translation>
+        <translation>LinuxCNC meldet kein Werkzeug in der Spindel (T0), daher lässt sich nichts %1. Geben Sie zuerst an, welches Werkzeug eingesetzt ist („Werkzeug wählen“, M61 Q&lt;n&gt;).</translation>
     </message>
     <message>
         <source>Toffee does not know where this machine&apos;s tool setter is. Set it first (Machine ▸ Tool Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates).</source>
@@ -3991,7 +3991,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>probe</source>
-        <translation>Messung</translation>
+        <translation>antasten</translation>
     </message>
     <message>
         <source>measure</source>
@@ -4011,7 +4011,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>T%1 has no stored TLO to compare with, in the table or in LinuxCNC&apos;s own: probe it first.</source>
-        <translation>T%1 hat keinen gespeicherten TLO zum Vergleich, weder in der Tabelle noch in der von LinuxCNC: Tasten Sie es zuerst an.</translation>
+        <translation>T%1 hat keine gespeicherte TLO zum Vergleich, weder in der Tabelle noch in der von LinuxCNC: Vermessen Sie es zuerst.</translation>
     </message>
     <message>
         <source>T%1&apos;s TLO</source>
@@ -4023,7 +4023,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>the offset in force reads %1 mm</source>
-        <translation>die wirksame Korrektur lautet %1 mm</translation>
+        <translation>der wirksame Versatz lautet %1 mm</translation>
     </message>
     <message>
         <source>nothing</source>
@@ -4035,7 +4035,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>LinuxCNC was given T%1&apos;s TLO %2 mm, but read back %3. Nothing was recorded; check LinuxCNC&apos;s tool table before you cut.</source>
-        <translation>LinuxCNC erhielt für T%1 den TLO %2 mm, zurückgelesen wurde aber: %3. Es wurde nichts aufgezeichnet; prüfen Sie die Werkzeugtabelle von LinuxCNC, bevor Sie schneiden.</translation>
+        <translation>LinuxCNC erhielt die TLO %2 mm für T%1, zurückgelesen wurde aber: %3. Es wurde nichts aufgezeichnet; prüfen Sie die Werkzeugtabelle von LinuxCNC, bevor Sie zerspanen.</translation>
     </message>
     <message>
         <source>The TLO</source>
@@ -4047,7 +4047,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>set a TLO</source>
-        <translation>einen TLO setzen</translation>
+        <translation>die TLO setzen</translation>
     </message>
     <message>
         <source>The height above Z0</source>
@@ -4059,7 +4059,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>restore a TLO</source>
-        <translation>einen TLO wiederherstellen</translation>
+        <translation>die TLO wiederherstellen</translation>
     </message>
     <message>
         <source>%1 (the TLO that puts the tip %2 mm above Z0, from where it is)</source>
@@ -4067,7 +4067,7 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>LinuxCNC&apos;s tool table (%1) has no %2: G10 L1 cannot add a tool. Nothing was written: add them to LinuxCNC&apos;s table, or leave them out.</source>
-        <translation>Die Werkzeugtabelle von LinuxCNC (%1) enthält kein %2: G10 L1 kann kein Werkzeug hinzufügen. Es wurde nichts geschrieben: Fügen Sie sie der Tabelle von LinuxCNC hinzu oder lassen Sie sie weg.</translation>
+        <translation>Die Werkzeugtabelle von LinuxCNC (%1) enthält %2 nicht: G10 L1 kann kein Werkzeug hinzufügen. Es wurde nichts geschrieben: Fügen Sie sie der Tabelle von LinuxCNC hinzu oder lassen Sie sie weg.</translation>
     </message>
     <message>
         <source>write LinuxCNC&apos;s table</source>
@@ -4075,11 +4075,11 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     </message>
     <message>
         <source>T%1 reads %2, not %3 mm</source>
-        <translation>T%1 liest %2, nicht %3 mm</translation>
+        <translation>T%1 lautet %2, nicht %3 mm</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s table does not read back as written: %1. %2</source>
-        <translation>Die Tabelle von LinuxCNC liest sich nicht so zurück, wie geschrieben: %1. %2</translation>
+        <translation>Die Tabelle von LinuxCNC stimmt beim Zurücklesen nicht mit dem Geschriebenen überein: %1. %2</translation>
     </message>
     <message>
         <source>The probe was already touching, or touched something, before it probed (the setter&apos;s input triggered on the way to it or where it started): check the setter, its cable and the safe height. Nothing was measured. (%1)</source>
@@ -5756,7 +5756,7 @@ Vermessen Sie T%1 stattdessen.</translation>
     </message>
     <message>
         <source>The machine says no tool is in the spindle (T0), so there is nothing to probe. Say which tool is in first (the table&apos;s context menu: Make Active).</source>
-        <translation>Die Maschine meldet kein Werkzeug in der Spindel (T0), also gibt es nichts anzutasten. Sagen Sie zuerst, welches Werkzeug steckt (Kontextmenü der Tabelle: Aktiv setzen).</translation>
+        <translation>Die Maschine meldet kein Werkzeug in der Spindel (T0), also gibt es nichts anzutasten. Geben Sie zuerst an, welches Werkzeug eingesetzt ist (Kontextmenü der Tabelle: Aktiv machen).</translation>
     </message>
     <message>
         <source>Nothing to probe</source>

@@ -1562,7 +1562,7 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>The controller is not a Carvera, grblHAL or LinuxCNC, the controllers Toffee manages: it answered &quot;version&quot; with %1 and &quot;$I&quot; with %2. Nothing else was sent. If it is one of them, choose it (Carvera, grblHAL or LinuxCNC; toffee-cli --controller) and connect again.</source>
-        <translation>该控制器不是 Toffee 管理的 Carvera、grblHAL 或 LinuxCNC：它对 “version” 的回答是 %1，对 “$I” 的回答是 %2。未发送其他任何内容。如果它确实是其中之一，请选择它（Carvera、grblHAL 或 LinuxCNC；toffee-cli --controller）后重新连接。</translation>
+        <translation>该控制器不是 Toffee 管理的 Carvera、grblHAL 或 LinuxCNC：它对“version”的回答是 %1，对“$I”的回答是 %2。未发送其他任何内容。如果它确实是其中之一，请选择它（Carvera、grblHAL 或 LinuxCNC；toffee-cli --controller）后重新连接。</translation>
     </message>
     <message>
         <source>%1 The machine answered nothing: not to the Carvera&apos;s and grblHAL&apos;s first question, nor to LinuxCNC&apos;s hello. Check that it is switched on and has started, and the address and port.</source>
@@ -3867,27 +3867,27 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <name>Toffee::LinuxCncController</name>
     <message>
         <source>The line &quot;%1&quot; is too long for linuxcncrsh; nothing was sent.</source>
-        <translation>行 “%1” 对 linuxcncrsh 来说太长；未发送任何内容。</translation>
+        <translation>“%1”这一行对 linuxcncrsh 来说太长；未发送任何内容。</translation>
     </message>
     <message>
         <source>Stopped: LinuxCNC aborted &quot;%1&quot; where the machine stood. Nothing was measured or written; check where the spindle is before you go on.</source>
-        <translation>已停止：LinuxCNC 在机床所在位置中止了 “%1”。未测量或写入任何数据；继续之前请检查主轴位置。</translation>
+        <translation>已停止：LinuxCNC 在机床当时所在的位置中止了“%1”。未测量也未写入任何内容；继续之前请检查主轴的位置。</translation>
     </message>
     <message>
         <source>LinuxCNC refused &quot;%1&quot; and did not say why (get error: OK). Check LinuxCNC&apos;s own screen.</source>
-        <translation>LinuxCNC 拒绝了 “%1” 但未说明原因（get error: OK）。请查看 LinuxCNC 自己的界面。</translation>
+        <translation>LinuxCNC 拒绝了“%1”，但未说明原因（get error: OK）。请查看 LinuxCNC 自己的界面。</translation>
     </message>
     <message>
         <source>LinuxCNC refused &quot;%1&quot;: %2</source>
-        <translation>LinuxCNC 拒绝了 “%1”：%2</translation>
+        <translation>LinuxCNC 拒绝了“%1”：%2</translation>
     </message>
     <message>
         <source>linuxcncrsh answered &quot;get %1&quot; with something else (%2); is this LinuxCNC?</source>
-        <translation>linuxcncrsh 对 “get %1” 的回答不符（%2）；这是 LinuxCNC 吗？</translation>
+        <translation>linuxcncrsh 对“get %1”的回答不符（%2）；这是 LinuxCNC 吗？</translation>
     </message>
     <message>
         <source>linuxcncrsh refused Toffee&apos;s hello (HELLO NAK): it was started with a connect password of its own (--connectpw), which Toffee does not know. Start it with the default (EMC), then connect again.</source>
-        <translation>linuxcncrsh 拒绝了 Toffee 的 hello（HELLO NAK）：它以 Toffee 不知道的自定义连接密码（--connectpw）启动。请用默认值（EMC）启动它，然后重新连接。</translation>
+        <translation>linuxcncrsh 拒绝了 Toffee 的 hello（HELLO NAK）：它启动时使用了自定义的连接密码（--connectpw），Toffee 不知道该密码。请用默认密码（EMC）启动它，然后重新连接。</translation>
     </message>
     <message>
         <source>LinuxCNC refused the enable password in this machine&apos;s settings (linuxcncrsh --enablepw). Set the right one, then connect again. Nothing was sent.</source>
@@ -3907,11 +3907,11 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>T%1 may be asked for at LinuxCNC&apos;s own screen (its manual tool change)</source>
-        <translation>T%1 可能会在 LinuxCNC 自己的界面上要求更换（其手动换刀）</translation>
+        <translation>LinuxCNC 自己的界面可能会要求装入 T%1（其手动换刀）</translation>
     </message>
     <message>
         <source>LinuxCNC changes to a tool, not to an empty spindle: use Select Tool with T0.</source>
-        <translation>LinuxCNC 只能换到某把刀具，不能换成空主轴：请用“选择刀具”并选 T0。</translation>
+        <translation>LinuxCNC 只能换到某把刀具，不能换成空主轴：请使用“选择刀具”并选 T0。</translation>
     </message>
     <message>
         <source>change tools</source>
@@ -3923,7 +3923,7 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC&apos;s change was aborted (set abort): check what is in the spindle, then select it and restore or probe its TLO before cutting.</source>
-        <translation>LinuxCNC 的换刀已中止（set abort）：请检查主轴上的刀具，然后选择它，并在切削前恢复或探测其 TLO。</translation>
+        <translation>LinuxCNC 的换刀已中止（set abort）：请检查主轴上装的是什么，然后选择它，并在切削前恢复或测量其 TLO。</translation>
     </message>
     <message>
         <source>Toffee cannot %1 now: </source>
@@ -3935,11 +3935,11 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC is in estop. Release it at the machine (in AXIS: F1), then try again; Toffee never releases an estop itself.</source>
-        <translation>LinuxCNC 处于急停（estop）状态。请在机床上解除（AXIS 中按 F1）后重试；Toffee 从不自行解除急停。</translation>
+        <translation>LinuxCNC 处于急停（estop）状态。请在机床上解除急停（AXIS 中按 F1）后重试；Toffee 从不自行解除急停。</translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s machine is off. Switch it on (in AXIS: F2), then try again.</source>
-        <translation>LinuxCNC 的机床处于关闭状态。请打开它（AXIS 中按 F2）后重试。</translation>
+        <translation>LinuxCNC 的机床处于关闭状态。请将其开启（AXIS 中按 F2）后重试。</translation>
     </message>
     <message>
         <source>LinuxCNC is not homed. Home every axis (in AXIS: Ctrl-Home), then try again.</source>
@@ -3947,11 +3947,11 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC is running a program or a line (%1). Wait until it is idle, then try again.</source>
-        <translation>LinuxCNC 正在运行程序或一行代码（%1）。请等待它空闲后重试。</translation>
+        <translation>LinuxCNC 正在运行程序或单行代码（%1）。请等它空闲后重试。</translation>
     </message>
     <message>
         <source>LinuxCNC is in %1 mode; Toffee works through MDI and does not switch modes itself (a switch aborts whatever runs). Switch it to MDI (in AXIS: F5), then try again.</source>
-        <translation>LinuxCNC 处于 %1 模式；Toffee 通过 MDI 工作，不会自行切换模式（切换会中止正在运行的内容）。请切换到 MDI（AXIS 中按 F5）后重试。</translation>
+        <translation>LinuxCNC 处于 %1 模式；Toffee 通过 MDI 工作，不会自行切换模式（切换会中止正在运行的任何内容）。请切换到 MDI（AXIS 中按 F5）后重试。</translation>
     </message>
     <message>
         <source>Another program took control of LinuxCNC (linuxcncrsh&apos;s enable) since Toffee connected. Make sure nobody else is driving it, then connect again.</source>
@@ -3959,11 +3959,11 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC is in inches (G20), where G10 and G38.2 take inches. Toffee works in millimetres: send G21, then try again.</source>
-        <translation>LinuxCNC 处于英寸模式（G20），此时 G10 和 G38.2 使用英寸。Toffee 以毫米工作：请发送 G21 后重试。</translation>
+        <translation>LinuxCNC 处于英寸模式（G20），此时 G10 和 G38.2 以英寸计。Toffee 以毫米工作：请发送 G21 后重试。</translation>
     </message>
     <message>
         <source>LinuxCNC did not print what Toffee asked of it (%1); it said &quot;%2&quot;. Nothing was recorded.</source>
-        <translation>LinuxCNC 没有输出 Toffee 请求的内容（%1）；它返回 “%2”。未记录任何数据。</translation>
+        <translation>LinuxCNC 没有输出 Toffee 请求的内容（%1）；它返回的是“%2”。未记录任何内容。</translation>
     </message>
     <message>
         <source>Cannot read LinuxCNC&apos;s INI %1: %2</source>
@@ -3971,7 +3971,7 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>linuxcncrsh cannot read LinuxCNC&apos;s tool table, so Toffee reads its file: give the INI LinuxCNC runs (toffee-cli --ini FILE) on the computer LinuxCNC runs on.</source>
-        <translation>linuxcncrsh 无法读取 LinuxCNC 的刀具表，因此 Toffee 读取其文件：请在运行 LinuxCNC 的计算机上给出 LinuxCNC 使用的 INI 文件（toffee-cli --ini FILE）。</translation>
+        <translation>linuxcncrsh 无法读取 LinuxCNC 的刀具表，因此 Toffee 直接读取其文件：请在运行 LinuxCNC 的计算机上指定 LinuxCNC 所用的 INI 文件（toffee-cli --ini FILE）。</translation>
     </message>
     <message>
         <source>Cannot read LinuxCNC&apos;s tool table %1: %2</source>
@@ -3979,11 +3979,11 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC&apos;s tool table %1 could not be read: %2</source>
-        <translation>LinuxCNC 的刀具表 %1 无法解析：%2</translation>
+        <translation>LinuxCNC 的刀具表 %1 读取失败：%2</translation>
     </message>
     <message>
         <source>LinuxCNC says no tool is in the spindle (T0), so there is nothing to %1. Say which tool is in (Select Tool, M61 Q&lt;n&gt;) first.</source>
-        <translation>LinuxCNC 报告主轴上没有刀具（T0），因此没有可以%1的。请先说明装的是哪把刀（选择刀具，M61 Q&lt;n&gt;）。</translation>
+        <translation>LinuxCNC 报告主轴上没有刀具（T0），因此无法%1。请先指明装的是哪把刀具（选择刀具，M61 Q&lt;n&gt;）。</translation>
     </message>
     <message>
         <source>Toffee does not know where this machine&apos;s tool setter is. Set it first (Machine ▸ Tool Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates).</source>
@@ -3999,7 +3999,7 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
-        <translation>T%1 是这台机床的基准刀具（其 TLO 为 0）：所有刀具都相对于它在机床 Z %2 mm 处的触碰点测量。</translation>
+        <translation>T%1 是这台机床的基准刀具（其 TLO 为 0）：所有刀具都相对于它在机床 Z %2 mm 处的接触点测量。</translation>
     </message>
     <message>
         <source>break-test</source>
@@ -4007,11 +4007,11 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
-        <translation>这台机床还没有基准刀具，因此无法比较新的长度。请先对一把刀具对刀：第一把测量的刀具即成为基准。</translation>
+        <translation>这台机床还没有基准刀具，因此无法比较新的长度。请先测量一把刀具：第一把测量的刀具即成为基准。</translation>
     </message>
     <message>
         <source>T%1 has no stored TLO to compare with, in the table or in LinuxCNC&apos;s own: probe it first.</source>
-        <translation>T%1 没有可供比较的已存 TLO，刀具表和 LinuxCNC 自己的表中都没有：请先探测它。</translation>
+        <translation>T%1 没有可供比较的已存 TLO，刀具表和 LinuxCNC 自己的表中都没有：请先测量它。</translation>
     </message>
     <message>
         <source>T%1&apos;s TLO</source>
@@ -4019,11 +4019,11 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>Nothing was written to LinuxCNC or recorded.</source>
-        <translation>未向 LinuxCNC 写入或记录任何数据。</translation>
+        <translation>未写入 LinuxCNC，也未记录任何内容。</translation>
     </message>
     <message>
         <source>the offset in force reads %1 mm</source>
-        <translation>生效的补偿读数为 %1 mm</translation>
+        <translation>当前生效的补偿读数为 %1 mm</translation>
     </message>
     <message>
         <source>nothing</source>
@@ -4035,7 +4035,7 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC was given T%1&apos;s TLO %2 mm, but read back %3. Nothing was recorded; check LinuxCNC&apos;s tool table before you cut.</source>
-        <translation>已向 LinuxCNC 写入 T%1 的 TLO %2 mm，但读回的是 %3。未记录任何数据；切削前请检查 LinuxCNC 的刀具表。</translation>
+        <translation>已向 LinuxCNC 写入 T%1 的 TLO %2 mm，但读回的是：%3。未记录任何内容；切削前请检查 LinuxCNC 的刀具表。</translation>
     </message>
     <message>
         <source>The TLO</source>
@@ -4067,7 +4067,7 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     </message>
     <message>
         <source>LinuxCNC&apos;s tool table (%1) has no %2: G10 L1 cannot add a tool. Nothing was written: add them to LinuxCNC&apos;s table, or leave them out.</source>
-        <translation>LinuxCNC 的刀具表（%1）中没有 %2：G10 L1 无法新增刀具。未写入任何内容：请将它们加入 LinuxCNC 的刀具表，或将其排除。</translation>
+        <translation>LinuxCNC 的刀具表（%1）中没有 %2：G10 L1 无法新增刀具。未写入任何内容：请将它们加入 LinuxCNC 的刀具表，或将其略去。</translation>
     </message>
     <message>
         <source>write LinuxCNC&apos;s table</source>
@@ -5417,11 +5417,11 @@ Save anyway?</source>
     </message>
     <message>
         <source>%1 cannot go into %2&apos;s table of %3 tools: nothing is pushed. Renumber them, or remove their TLOs, and push again.</source>
-        <translation>%1 无法放入 %2 的 %3 把刀具表中：不推送任何内容。请重新编号，或删除它们的 TLO 后再次推送。</translation>
+        <translation>%1 无法放入 %2 的刀具表（共 %3 把刀具）：未推送任何内容。请为它们重新编号，或删除它们的 TLO，然后再次推送。</translation>
     </message>
     <message>
         <source>%1 are not in %2&apos;s tool table, and G10 L1 cannot add a tool: nothing is pushed. Add them to its table, or remove their TLOs, and push again.</source>
-        <translation>%1 不在 %2 的刀具表中，而 G10 L1 无法新增刀具：不推送任何内容。请将它们加入其刀具表，或删除它们的 TLO 后再次推送。</translation>
+        <translation>%1 不在 %2 的刀具表中，而 G10 L1 无法新增刀具：未推送任何内容。请将它们加入其刀具表，或删除它们的 TLO，然后再次推送。</translation>
     </message>
     <message>
         <source>Written into %1&apos;s table and read back, all agreeing: %2 TLOs.</source>
@@ -5756,7 +5756,7 @@ Probe T%1 instead.</source>
     </message>
     <message>
         <source>The machine says no tool is in the spindle (T0), so there is nothing to probe. Say which tool is in first (the table&apos;s context menu: Make Active).</source>
-        <translation>机床报告主轴上没有刀具（T0），因此没有可探测的。请先说明装的是哪把刀（刀具表的右键菜单：设为当前刀具）。</translation>
+        <translation>机床报告主轴上没有刀具（T0），因此没有可探测的刀具。请先指明装的是哪把刀具（刀具表的右键菜单：设为当前刀具）。</translation>
     </message>
     <message>
         <source>Nothing to probe</source>

@@ -2,11 +2,14 @@
 // The reply parsers on whatever a port may deliver: each line is classified and offered to every parser.
 // Promised: no crash; a parser takes only a line of its own kind; every number it returns is finite; a
 // TLO report's values are ones a machine can have; a tool number is one a Carvera can report (-1, an empty
-// spindle, to 999999); a halt reason can be named.
+// spindle, to 999999); a halt reason can be named. LinuxCNC's (linuxcncrsh) the same: a line is one kind at
+// most, a value read follows its keyword, a (DEBUG,…) line's fields are finite numbers, a position three
+// finite ones.
 #include <cmath>
 
 #include "model/textparsing.h"
 #include "serial/carvera/carverareplies.h"
+#include "serial/linuxcnc/linuxcncreplies.h"
 #include "tests/fuzz/fuzzcheck.h"
 
 using namespace Toffee;
@@ -62,12 +65,40 @@ void checkLine(QByteArrayView line)
     }
 }
 
+void checkLinuxCncLine(QByteArrayView line)
+{
+    const QString shown = QString::fromUtf8(line);
+    const ReplyKind kind = LinuxCnc::classify(line);
+    TOFFEE_FUZZ_CHECK(!(LinuxCnc::isHelloAck(line) && LinuxCnc::isHelloNak(line)), shown);
+    if (LinuxCnc::isHelloAck(line))
+        TOFFEE_FUZZ_CHECK(kind == ReplyKind::Ok, shown);
+    if (const auto value = LinuxCnc::valueOf(line, "TOOL"))
+        TOFFEE_FUZZ_CHECK(line.trimmed().startsWith("TOOL") && value->size() < line.size(), shown);
+    if (const auto xyz = LinuxCnc::position(line)) {
+        for (double v : *xyz)
+            TOFFEE_FUZZ_CHECK(finite(v), shown);
+    }
+    const int homed = LinuxCnc::homedJoints(line);
+    TOFFEE_FUZZ_CHECK(homed >= 0 && homed <= 3, shown);
+    const QByteArrayView words = line.trimmed();
+    const QByteArrayView marker = words.left(words.indexOf(' ') < 0 ? words.size() : words.indexOf(' '));
+    if (const auto fields = LinuxCnc::displayFields(line, marker)) {
+        for (const auto &[name, value] : *fields)
+            TOFFEE_FUZZ_CHECK(!name.isEmpty() && finite(value), shown);
+    }
+    (void)LinuxCnc::inInches(line);
+    (void)LinuxCnc::toolTableOfIni(line.toByteArray(), QStringLiteral("/x/y.ini"));
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     // As the link sees them: lines cut at LF, a CR before it dropped by the transport.
-    for (QByteArrayView line : splitView(Fuzz::bytes(data, size), '\n'))
-        checkLine(line.endsWith('\r') ? line.chopped(1) : line);
+    for (QByteArrayView line : splitView(Fuzz::bytes(data, size), '\n')) {
+        const QByteArrayView one = line.endsWith('\r') ? line.chopped(1) : line;
+        checkLine(one);
+        checkLinuxCncLine(one);
+    }
     return 0;
 }

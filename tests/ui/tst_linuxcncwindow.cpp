@@ -5,9 +5,12 @@
 // probed (the first the reference) into the table and into LinuxCNC's tool.tbl, a break test that finds a
 // tool 0.4 mm shorter with nothing overwritten, Push Offsets and Pull Offsets through their previews. With
 // TOFFEE_SCREENSHOTS set, the window and the previews are saved there.
+#include <algorithm>
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -16,6 +19,7 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableWidget>
+#include <QTemporaryDir>
 
 #include "tests/support/linuxcncpeer.h"
 #include "tests/support/messageboxes.h"
@@ -23,6 +27,7 @@
 #include "tests/support/windowsteps.h"
 #include "ui/connection/connectionpanel.h"
 #include "ui/connection/linuxcncaccessdialog.h"
+#include "ui/job/jobcheckdialog.h"
 #include "ui/machine/consoledock.h"
 #include "ui/machine/offsetsyncdialog.h"
 #include "ui/machine/toolsetterdialog.h"
@@ -60,6 +65,7 @@ private Q_SLOTS:
             auto *password = d->findChild<QLineEdit *>(u"linuxCncPassword"_s);
             QCOMPARE(password->echoMode(), QLineEdit::Password);
             password->setText(u"not-it"_s);
+            screenshot(*d, u"linuxcnc-access.png"_s);
             d->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok)->click();
         });
         s.trigger(u"actionLinuxCncAccess"_s);
@@ -162,11 +168,33 @@ private Q_SLOTS:
         QCOMPARE(peer.tableZ(2), std::optional(15.3));
         QVERIFY(!s.find<QAction>(u"actionMeasureRack"_s)->isEnabled());
 
-        // Someone sets T1 at LinuxCNC's screen: Push writes the file's back, after its preview.
+        // Someone sets T1 at LinuxCNC's screen: Check Job, in LinuxCNC's dialect, warns that its table
+        // differs from the file; Push writes the file's back, after its preview, and the job checks clean of
+        // it.
         QCOMPARE(peer.ask({ "set mdi G10 L1 P1 Z7" }), QList<QByteArray> { "SET MDI ACK" });
         s.window.connection()->disconnectFromMachine();
         QTest::mouseClick(s.find<QPushButton>(u"connectButton"_s), Qt::LeftButton);
         QVERIFY(waitConnected(s));
+        QTemporaryDir dir;
+        const QString program = dir.filePath(u"job.ngc"_s);
+        {
+            QFile f(program);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("G21 G90\nM6 T1\nG43 H1\nG1 Z-1 F100\nM30\n");
+        }
+        const auto differs = [&s, &program] {
+            JobCheckDialog *check = s.window.openJobCheck(program);
+            if (!QTest::qWaitFor([check] { return check->report().has_value() && !check->isRunning(); }))
+                return -1;
+            const JobReport report = *check->report();
+            check->close();
+            if (report.dialect != Dialect::LinuxCnc)
+                return -2;
+            return int(std::count_if(report.findings.cbegin(), report.findings.cend(), [](const Finding &f) {
+                return f.kind == FindingKind::ControllerTableDiffers && f.tool == 1;
+            }));
+        };
+        QCOMPARE(differs(), 1);
         QVERIFY(s.find<QAction>(u"actionPushOffsets"_s)->isEnabled());
         QStringList pushRows;
         inNextDialog<OffsetSyncDialog>([&](OffsetSyncDialog *d) {
@@ -178,6 +206,7 @@ private Q_SLOTS:
         QVERIFY(waitIdle(s, 60000));
         QVERIFY2(pushRows.contains(u"T1|0.000|7.000|written"_s), qPrintable(pushRows.join(u'\n')));
         QCOMPARE(peer.tableZ(1), std::optional(0.0));
+        QCOMPARE(differs(), 0);
 
         // Pull: T2 set at LinuxCNC's screen comes in as set there, after its preview.
         QCOMPARE(peer.ask({ "set mdi G10 L1 P2 Z14.9" }), QList<QByteArray> { "SET MDI ACK" });
