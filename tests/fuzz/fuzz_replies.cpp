@@ -81,7 +81,7 @@ void checkLinuxCncLine(QByteArrayView line)
     const int homed = LinuxCnc::homedJoints(line);
     TOFFEE_FUZZ_CHECK(homed >= 0 && homed <= 3, shown);
     const QByteArrayView words = line.trimmed();
-    const QByteArrayView marker = words.left(words.indexOf(' ') < 0 ? words.size() : words.indexOf(' '));
+    const QByteArrayView marker = words.first(words.indexOf(' ') < 0 ? words.size() : words.indexOf(' '));
     if (const auto fields = LinuxCnc::displayFields(line, marker)) {
         for (const auto &[name, value] : *fields)
             TOFFEE_FUZZ_CHECK(!name.isEmpty() && finite(value), shown);

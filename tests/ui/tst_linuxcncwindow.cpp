@@ -11,6 +11,7 @@
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -64,6 +65,11 @@ private Q_SLOTS:
         inNextDialog<LinuxCncAccessDialog>([](LinuxCncAccessDialog *d) {
             auto *password = d->findChild<QLineEdit *>(u"linuxCncPassword"_s);
             QCOMPARE(password->echoMode(), QLineEdit::Password);
+            // Every label reaches its field by its mnemonic (no "&" shown as text).
+            for (QLabel *label : d->findChildren<QLabel *>()) {
+                if (label->text().contains(u'&'))
+                    QVERIFY2(label->buddy(), qPrintable(label->text()));
+            }
             password->setText(u"not-it"_s);
             screenshot(*d, u"linuxcnc-access.png"_s);
             d->findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok)->click();

@@ -44,7 +44,10 @@ LinuxCncAccessDialog::LinuxCncAccessDialog(
            "(linuxcncrsh --enablepw); it is kept on this computer and never shown or logged."));
     explain->setWordWrap(true);
     auto *form = new QFormLayout;
-    form->addRow(tr("&INI file:"), iniRow);
+    // A row of a field and its button: the label is given its buddy, so that Alt+I reaches the field.
+    auto *iniLabel = new QLabel(tr("&INI file:"));
+    iniLabel->setBuddy(m_ini);
+    form->addRow(iniLabel, iniRow);
     form->addRow(tr("&Enable password:"), m_password);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
