@@ -110,12 +110,12 @@ void LinuxCncController::measure(Done done, std::function<void(double)> next)
     }
     const ToolSetter setter = *m_setter;
     {
-        const int motion = MachineLink::kMotionTimeoutMs;
+        constexpr int motion = MachineLink::kMotionTimeoutMs;
         const QList<QByteArray> approach { "M5", "G90 G53 G0 Z" + number(setter.safeZ),
             "G53 G0 X" + number(setter.x) + " Y" + number(setter.y) };
-        mdiChain(approach, motion, done, [this, done, next, setter, motion] {
+        mdiChain(approach, motion, done, [this, done, next, setter] {
             touch(setter.safeZ, setter.safeZ - setter.zMin, setter.seekFeed, setter, done,
-                [this, done, next, setter, motion](double first) {
+                [this, done, next, setter](double first) {
                     const double up = std::min(setter.safeZ, first + setter.backoff);
                     const double down = std::max(setter.zMin, first - setter.backoff);
                     mdi("G53 G0 Z" + number(up), motion, done, [=, this](const CommandReply &) {
