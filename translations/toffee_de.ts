@@ -2203,10 +2203,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>auf Bruch prüfen</translation>
     </message>
     <message>
-        <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
-        <translation>Diese Maschine hat noch kein Referenzwerkzeug, daher lässt sich keine neue Länge vergleichen. Vermessen Sie zuerst ein Werkzeug: Das erste gemessene wird zur Referenz.</translation>
-    </message>
-    <message>
         <source>The TLO</source>
         <translation>Die TLO</translation>
     </message>
@@ -2257,10 +2253,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>grblHAL&apos;s offsets ($#) could not be read whole: lines were malformed or repeated (%1). Nothing was changed; check the connection and try again.</source>
         <translation>Die Korrekturen von grblHAL ($#) ließen sich nicht vollständig lesen: Zeilen waren fehlerhaft oder doppelt (%1). Nichts wurde geändert; prüfen Sie die Verbindung und versuchen Sie es erneut.</translation>
-    </message>
-    <message>
-        <source>T%1 has no stored TLO to compare with, in the table or in grblHAL&apos;s own: probe it first.</source>
-        <translation>T%1 hat keine gespeicherte TLO zum Vergleich, weder in der Tabelle noch in der von grblHAL: Messen Sie es zuerst.</translation>
     </message>
     <message>
         <source>T%1 is put in by hand (grblHAL&apos;s manual tool change)</source>
@@ -4006,14 +3998,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>auf Bruch prüfen</translation>
     </message>
     <message>
-        <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
-        <translation>Diese Maschine hat noch kein Referenzwerkzeug, daher lässt sich keine neue Länge vergleichen. Vermessen Sie zuerst ein Werkzeug: Das erste gemessene wird zur Referenz.</translation>
-    </message>
-    <message>
-        <source>T%1 has no stored TLO to compare with, in the table or in LinuxCNC&apos;s own: probe it first.</source>
-        <translation>T%1 hat keine gespeicherte TLO zum Vergleich, weder in der Tabelle noch in der von LinuxCNC: Vermessen Sie es zuerst.</translation>
-    </message>
-    <message>
         <source>T%1&apos;s TLO</source>
         <translation>Die TLO von T%1</translation>
     </message>
@@ -4286,6 +4270,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>nothing</source>
         <translation>nichts</translation>
+    </message>
+    <message>
+        <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
+        <translation>Diese Maschine hat noch kein Referenzwerkzeug, daher lässt sich keine neue Länge vergleichen. Vermessen Sie zuerst ein Werkzeug: Das erste gemessene wird zur Referenz.</translation>
+    </message>
+    <message>
+        <source>T%1 has no stored TLO to compare with, in the table or in %2&apos;s own: probe it first.</source>
+        <translation>T%1 hat keine gespeicherte TLO zum Vergleich, weder in der Tabelle noch in der von %2: Messen Sie es zuerst.</translation>
     </message>
 </context>
 <context>

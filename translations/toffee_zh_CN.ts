@@ -2203,10 +2203,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>进行断刀检测</translation>
     </message>
     <message>
-        <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
-        <translation>这台机床还没有基准刀具，因此无法比较新的长度。请先对一把刀具对刀：第一把测量的刀具即成为基准。</translation>
-    </message>
-    <message>
         <source>The TLO</source>
         <translation>TLO</translation>
     </message>
@@ -2257,10 +2253,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>grblHAL&apos;s offsets ($#) could not be read whole: lines were malformed or repeated (%1). Nothing was changed; check the connection and try again.</source>
         <translation>无法完整读取 grblHAL 的补偿（$#）：有行格式错误或重复（%1）。未做任何更改；请检查连接后重试。</translation>
-    </message>
-    <message>
-        <source>T%1 has no stored TLO to compare with, in the table or in grblHAL&apos;s own: probe it first.</source>
-        <translation>T%1 没有可供比较的已存 TLO（刀具表和 grblHAL 自己的表中都没有）：请先测量它。</translation>
     </message>
     <message>
         <source>T%1 is put in by hand (grblHAL&apos;s manual tool change)</source>
@@ -4006,14 +3998,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>进行断刀检测</translation>
     </message>
     <message>
-        <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
-        <translation>这台机床还没有基准刀具，因此无法比较新的长度。请先测量一把刀具：第一把测量的刀具即成为基准。</translation>
-    </message>
-    <message>
-        <source>T%1 has no stored TLO to compare with, in the table or in LinuxCNC&apos;s own: probe it first.</source>
-        <translation>T%1 没有可供比较的已存 TLO，刀具表和 LinuxCNC 自己的表中都没有：请先测量它。</translation>
-    </message>
-    <message>
         <source>T%1&apos;s TLO</source>
         <translation>T%1 的 TLO</translation>
     </message>
@@ -4286,6 +4270,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>nothing</source>
         <translation>无</translation>
+    </message>
+    <message>
+        <source>This machine has no reference tool yet, so a new length cannot be compared. Probe a tool first: the first one measured becomes the reference.</source>
+        <translation>这台机床还没有基准刀具，因此无法比较新的长度。请先对一把刀具对刀：第一把测量的刀具即成为基准。</translation>
+    </message>
+    <message>
+        <source>T%1 has no stored TLO to compare with, in the table or in %2&apos;s own: probe it first.</source>
+        <translation>T%1 没有可供比较的已存 TLO（刀具表和 %2 自己的表中都没有）：请先测量它。</translation>
     </message>
 </context>
 <context>

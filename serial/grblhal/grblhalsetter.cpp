@@ -214,25 +214,9 @@ void GrblHalController::breakTest(double tolerance, Done done, std::optional<dou
     const auto tool = spindleTool(done, tr("break-test"));
     if (!tool)
         return;
-    if (!m_reference) {
-        refuse(done,
-            tr("This machine has no reference tool yet, so a new length cannot be compared. Probe a tool "
-               "first: the first one measured becomes the reference."));
+    const auto stored = breakBaseline(done, *tool, m_reference.has_value(), storedTlo, m_table, u"grblHAL"_s);
+    if (!stored)
         return;
-    }
-    // The stored TLO: the table's; else the controller's own entry for the tool, unless it is empty (0.000,
-    // as pull-offsets reads it). Never the offset in force, which after M61 is another tool's.
-    std::optional<double> stored = storedTlo;
-    for (const ControllerTool &entry : std::as_const(m_table)) {
-        if (!stored && entry.tool == *tool && fitsTable(*tool) && std::fabs(entry.tlo) >= kReadBackTolerance)
-            stored = entry.tlo;
-    }
-    if (!stored) {
-        refuse(done,
-            tr("T%1 has no stored TLO to compare with, in the table or in grblHAL's own: probe it first.")
-                .arg(*tool));
-        return;
-    }
     measure(done, [this, done, tolerance, stored, tool = *tool](double contact) {
         done(breakVerdict(
             tool, atResolution(*stored), atResolution(contact - *m_reference), tolerance, u"grblHAL"_s));

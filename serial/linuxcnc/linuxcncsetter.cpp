@@ -175,24 +175,10 @@ void LinuxCncController::breakTestReady(double tolerance, Done done, std::option
     const auto tool = spindleTool(done, tr("break-test"));
     if (!tool)
         return;
-    if (!m_reference) {
-        refuse(done,
-            tr("This machine has no reference tool yet, so a new length cannot be compared. Probe a tool "
-               "first: the first one measured becomes the reference."));
+    const auto stored = breakBaseline(done, *tool, m_reference.has_value(), storedTlo,
+        m_table.value_or(QList<ControllerTool> {}), u"LinuxCNC"_s);
+    if (!stored)
         return;
-    }
-    // The stored TLO: the table's; else LinuxCNC's own entry for the tool (its file), unless it is empty.
-    std::optional<double> stored = storedTlo;
-    for (const ControllerTool &entry : m_table.value_or(QList<ControllerTool> {})) {
-        if (!stored && entry.tool == *tool && std::fabs(entry.tlo) >= kReadBackTolerance)
-            stored = entry.tlo;
-    }
-    if (!stored) {
-        refuse(done,
-            tr("T%1 has no stored TLO to compare with, in the table or in LinuxCNC's own: probe it first.")
-                .arg(*tool));
-        return;
-    }
     measure(done, [this, done, tolerance, stored, tool = *tool](double contact) {
         done(breakVerdict(
             tool, atResolution(*stored), atResolution(contact - *m_reference), tolerance, u"LinuxCNC"_s));

@@ -136,6 +136,28 @@ SessionResult MachineController::breakVerdict(
     return result;
 }
 
+std::optional<double> MachineController::breakBaseline(const Done &done, int tool, bool hasReference,
+    std::optional<double> storedTlo, const QList<ControllerTool> &table, const QString &controller)
+{
+    if (!hasReference) {
+        refuse(done,
+            tr("This machine has no reference tool yet, so a new length cannot be compared. Probe a tool "
+               "first: the first one measured becomes the reference."));
+        return std::nullopt;
+    }
+    constexpr double kEmpty = 0.0005; // what reads back as 0.000
+    for (const ControllerTool &entry : table) {
+        if (!storedTlo && entry.tool == tool && std::fabs(entry.tlo) >= kEmpty)
+            storedTlo = entry.tlo;
+    }
+    if (!storedTlo)
+        refuse(done,
+            tr("T%1 has no stored TLO to compare with, in the table or in %2's own: probe it first.")
+                .arg(tool)
+                .arg(controller));
+    return storedTlo;
+}
+
 void MachineController::writeEach(
     const QList<ControllerTool> &tools, WriteOne writeOne, std::function<void(Done)> verify, Done finished)
 {

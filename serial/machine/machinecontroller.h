@@ -253,6 +253,12 @@ protected:
     // `tolerance`, broken when further apart, the stored TLO said to be kept in the table and in `keptIn`.
     [[nodiscard]] static SessionResult breakVerdict(
         int tool, double stored, double measured, double tolerance, const QString &keptIn);
+    // What such a break test compares with, or `done` refused: the machine's reference must be kept
+    // (`hasReference`), and a stored TLO found: the table's (`storedTlo`), else the controller's own entry
+    // for `tool` in `table` unless it is empty (0.000, as pull-offsets reads it); never the offset in force,
+    // which after M61 is another tool's. `controller` names it ("grblHAL").
+    [[nodiscard]] static std::optional<double> breakBaseline(const Done &done, int tool, bool hasReference,
+        std::optional<double> storedTlo, const QList<ControllerTool> &table, const QString &controller);
     // Writes `tools` one after another (`writeOne` calls its `next` once one is written), then `verify` ends
     // it; a failure half-way says which were written before it and which were not.
     using WriteOne = std::function<void(const ControllerTool &tool, Done done, std::function<void()> next)>;
