@@ -40,6 +40,14 @@ ToolSetter setter()
     return s;
 }
 
+// The same setter searching at 600 mm/min: 6 s from −20 to T3's contact, time enough to act mid-search.
+ToolSetter slowSearch()
+{
+    ToolSetter s = setter();
+    s.seekFeed = 600;
+    return s;
+}
+
 SessionResult await(const std::function<bool(MachineConnection::Done)> &start, int limitMs = 120000)
 {
     std::optional<SessionResult> result;
@@ -294,9 +302,12 @@ private Q_SLOTS:
     void stopMidProbeAbortsIt()
     {
         const QByteArray before = m_peer->tableFile();
+        // A slow search (T3 touches at −82): the stop lands while it goes down, however loaded the computer.
+        m_connection.session()->setToolSetter(slowSearch());
         std::optional<SessionResult> result;
         QVERIFY(m_connection.probe([&result](const SessionResult &r) { result = r; }));
-        QVERIFY(QTest::qWaitFor([this] { return machineZ() < -20.0; }, 20000));
+        QVERIFY(QTest::qWaitFor([&] { return result.has_value() || machineZ() < -20.0; }, 30000));
+        QVERIFY2(!result, qPrintable(result->message));
         m_connection.stop();
         QVERIFY(QTest::qWaitFor([&result] { return result.has_value(); }, 20000));
         QVERIFY2(result->message.startsWith(u"Stopped: LinuxCNC aborted"_s), qPrintable(result->message));
@@ -314,11 +325,13 @@ private Q_SLOTS:
     void aLinkLostMidProbeRecordsNothing()
     {
         const QByteArray before = m_peer->tableFile();
+        m_connection.session()->setToolSetter(slowSearch());
         std::optional<SessionResult> result;
         QVERIFY(m_connection.probe([&result](const SessionResult &r) { result = r; }));
         // Lifted first (the last test stopped it low), then on its way down to the setter.
-        QVERIFY(QTest::qWaitFor([this] { return machineZ() > -1.0; }, 20000));
-        QVERIFY(QTest::qWaitFor([this] { return machineZ() < -20.0; }, 20000));
+        QVERIFY(QTest::qWaitFor([&] { return result.has_value() || machineZ() > -1.0; }, 30000));
+        QVERIFY(QTest::qWaitFor([&] { return result.has_value() || machineZ() < -20.0; }, 30000));
+        QVERIFY2(!result, qPrintable(result->message));
         m_connection.link()->transport()->close();
         QVERIFY(QTest::qWaitFor([&result] { return result.has_value(); }, 10000));
         QCOMPARE(result->outcome, SessionResult::Outcome::LinkFailure);
