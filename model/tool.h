@@ -7,6 +7,8 @@
 #include <QDateTime>
 #include <QString>
 
+#include "model/probing.h"
+
 namespace Toffee {
 
 // Where a tool's stored TLO came from: the tool setter; an offset the operator set on the machine by hand
@@ -52,6 +54,10 @@ struct Tool
     // many programs, on one cutter. Empty: no limit.
     std::optional<double> lifeLimitMinutes = std::nullopt;
     std::optional<int> lifeLimitUses = std::nullopt;
+    // Its cutting edges (a CAM library's flute count, or typed): one touch each on the setter by default.
+    std::optional<int> flutes = std::nullopt;
+    // How it is measured on the tool setter (off-centre, touches, latch feed, spread limit).
+    ProbeSettings probing = {};
 
     // At a micrometre's thousandth: 41.3 − 0.02 is 41.28, not 41.279999999999994.
     [[nodiscard]] double totalLength() const { return std::round((lengthGeometry + lengthWear) * 1e6) / 1e6; }

@@ -160,6 +160,12 @@ Result<void> ToolTable::recordMeasurement(
     return contains(number) ? replace(number, tool) : insert(tool);
 }
 
+ProbePlan ToolTable::probePlan(int number) const
+{
+    const Tool *tool = find(number);
+    return tool ? ProbePlan::of(tool->probing, tool->flutes, m_units) : ProbePlan {};
+}
+
 std::optional<StoredTlo> ToolTable::storedTlo(int number) const
 {
     const Tool *tool = find(number);

@@ -84,6 +84,9 @@ public:
     // table's units (the one place a length crosses from a table to a machine). Nothing when the tool is not
     // in the table or has no TLO.
     [[nodiscard]] std::optional<StoredTlo> storedTlo(int number) const;
+    // How tool `number` is probed, in millimetres as a machine takes it (ProbePlan::of); the plain plan for a
+    // tool the table lacks.
+    [[nodiscard]] ProbePlan probePlan(int number) const;
     // Marks tool `number` as failed (or passed) by a break test, adding the tool when the table has none.
     Result<void> recordBreakTest(int number, bool failed);
     // Another cutter in tool `number`'s pocket: the old cutter's TLO (with its time, source and reference),

@@ -127,7 +127,8 @@ bool isPlainlyValid(const Tool &tool, Units units)
         || (tool.lifeLimitMinutes
             && (!std::isfinite(*tool.lifeLimitMinutes) || *tool.lifeLimitMinutes <= 0.0
                 || *tool.lifeLimitMinutes > kMaxLifeMinutes))
-        || (tool.lifeLimitUses && (*tool.lifeLimitUses < 1 || *tool.lifeLimitUses > kMaxLifeUses)))
+        || (tool.lifeLimitUses && (*tool.lifeLimitUses < 1 || *tool.lifeLimitUses > kMaxLifeUses))
+        || tool.flutes || !tool.probing.isDefault())
         return false;
     for (QChar c : tool.description) {
         if (c.unicode() < 0x20 || (c.unicode() >= 0x7f && c.category() == QChar::Other_Control))
@@ -212,6 +213,11 @@ Result<void> validateTool(const Tool &tool, Units units)
         return Error { prefix
             + tr("a life limit in uses must be a whole number from 1 to %1; leave it empty for none.")
                   .arg(kMaxLifeUses) };
+    if (tool.flutes && (*tool.flutes < 1 || *tool.flutes > ProbeSettings::kMaxFlutes))
+        return Error { prefix
+            + tr("a cutter has 1 to %1 cutting edges; leave it empty when unknown.").arg(ProbeSettings::kMaxFlutes) };
+    if (auto r = tool.probing.validate(units); !r)
+        return Error { prefix + r.error().message };
     return {};
 }
 

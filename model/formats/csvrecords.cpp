@@ -134,4 +134,39 @@ Result<void> nextCsvRecord(CsvCursor &in, CsvRecord &record, qsizetype maxFields
     }
 }
 
+// The file's text after the byte-order mark spreadsheets write, once it is known to be UTF-8.
+Result<QByteArrayView> csvText(const QByteArray &data)
+{
+    QByteArrayView all(data);
+    if (all.startsWith("\xEF\xBB\xBF"))
+        all = all.sliced(3);
+    if (const qsizetype bad = firstInvalidUtf8(all); bad >= 0) {
+        if (all.at(bad) == '\0')
+            return Error { tr("the file holds binary data; it is not a CSV table."), lineAt(all, bad) };
+        return Error { tr("the file is not UTF-8 text; save it from the spreadsheet as \"CSV UTF-8\"."),
+            lineAt(all, bad) };
+    }
+    return all;
+}
+
+char separatorOf(QByteArrayView all)
+{
+    const qsizetype firstBreak = all.indexOf('\n');
+    const QByteArrayView headerLine = firstBreak < 0 ? all : all.first(firstBreak);
+    return !headerLine.contains(',') && headerLine.contains(';') ? ';' : ',';
+}
+
+Result<void> readCsvHeader(CsvCursor &in, CsvRecord &header, qsizetype maxFields)
+{
+    do {
+        if (auto r = nextCsvRecord(in, header, maxFields, true); !r)
+            return r;
+    } while (header.isBlank() && !in.atEnd());
+    if (header.isBlank())
+        return Error { tr("the file is empty; a CSV tool table starts with a header row such as "
+                          "\"number,pocket,description,...\"."),
+            1 };
+    return {};
+}
+
 } // namespace Toffee

@@ -51,4 +51,11 @@ struct CsvCursor
 [[nodiscard]] Result<void> nextCsvRecord(
     CsvCursor &in, CsvRecord &record, qsizetype maxFields, bool header = false);
 
+// The header: the first record that is not an empty line, at most `maxFields` fields.
+[[nodiscard]] Result<void> readCsvHeader(CsvCursor &in, CsvRecord &header, qsizetype maxFields);
+// The file's text after the byte-order mark spreadsheets write, or why it is no text (binary, not UTF-8).
+[[nodiscard]] Result<QByteArrayView> csvText(const QByteArray &data);
+// ';' when the header has it and no ',': how a spreadsheet whose decimal mark is the comma saves.
+[[nodiscard]] char separatorOf(QByteArrayView all);
+
 } // namespace Toffee

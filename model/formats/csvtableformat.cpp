@@ -40,6 +40,13 @@ enum Column {
     OverallLengthColumn,
     LifeLimitMinutesColumn,
     LifeLimitUsesColumn,
+    FlutesColumn,
+    ProbeXColumn,
+    ProbeYColumn,
+    ProbeTouchesColumn,
+    ProbeTurnColumn,
+    ProbeLatchFeedColumn,
+    SpreadLimitColumn,
     ColumnCount
 };
 
@@ -63,6 +70,13 @@ constexpr const char *kColumnNames[ColumnCount] = {
     "overall_length",
     "life_limit_minutes",
     "life_limit_uses",
+    "flutes",
+    "probe_x",
+    "probe_y",
+    "probe_touches",
+    "probe_turn",
+    "probe_latch_feed",
+    "spread_limit",
 };
 
 QString fromUtf8(QByteArrayView v)
@@ -73,41 +87,12 @@ QString fromUtf8(QByteArrayView v)
 // Which field of a row holds each column; -1 for a column the file does not have.
 using ColumnMap = std::array<int, ColumnCount>;
 
-// The file's text after the byte-order mark spreadsheets write, once it is known to be UTF-8.
-Result<QByteArrayView> csvText(const QByteArray &data)
+QString allColumnNames()
 {
-    QByteArrayView all(data);
-    if (all.startsWith("\xEF\xBB\xBF"))
-        all = all.sliced(3);
-    if (const qsizetype bad = firstInvalidUtf8(all); bad >= 0) {
-        if (all.at(bad) == '\0')
-            return Error { tr("the file holds binary data; it is not a CSV table."), lineAt(all, bad) };
-        return Error { tr("the file is not UTF-8 text; save it from the spreadsheet as \"CSV UTF-8\"."),
-            lineAt(all, bad) };
-    }
-    return all;
-}
-
-// ';' when the header has it and no ',': how a spreadsheet whose decimal mark is the comma saves.
-char separatorOf(QByteArrayView all)
-{
-    const qsizetype firstBreak = all.indexOf('\n');
-    const QByteArrayView headerLine = firstBreak < 0 ? all : all.first(firstBreak);
-    return !headerLine.contains(',') && headerLine.contains(';') ? ';' : ',';
-}
-
-// The header: the first record that is not an empty line.
-Result<void> readHeader(CsvCursor &in, CsvRecord &header)
-{
-    do {
-        if (auto r = nextCsvRecord(in, header, ColumnCount, true); !r)
-            return r;
-    } while (header.isBlank() && !in.atEnd());
-    if (header.isBlank())
-        return Error { tr("the file is empty; a CSV tool table starts with a header row such as "
-                          "\"number,pocket,description,...\"."),
-            1 };
-    return {};
+    QStringList names;
+    for (const char *name : kColumnNames)
+        names << QLatin1StringView(name);
+    return names.join(u", "_s);
 }
 
 Result<ColumnMap> mapColumns(const CsvRecord &header)
@@ -119,13 +104,9 @@ Result<ColumnMap> mapColumns(const CsvRecord &header)
         const auto found = std::find_if(
             std::begin(kColumnNames), std::end(kColumnNames), [&name](const char *n) { return name == n; });
         if (found == std::end(kColumnNames))
-            return Error {
-                tr("unknown column \"%1\" in the header; the columns are number, pocket, description, "
-                   "length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, "
-                   "measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.")
-                    .arg(excerpt(header.fields.at(i))),
-                header.line
-            };
+            return Error { tr("unknown column \"%1\" in the header; the columns are %2.")
+                               .arg(excerpt(header.fields.at(i)), allColumnNames()),
+                header.line };
         const auto column = found - std::begin(kColumnNames);
         if (columnOf[column] >= 0)
             return Error {
@@ -236,6 +217,27 @@ void readMarks(Row &row, Tool &tool)
         tool.referenceMz = decimal(row, ReferenceMzColumn, 0.0);
 }
 
+// How the tool is probed: empty cells are the defaults; probe_turn is "no" for touches on the same edge.
+void readProbing(Row &row, Tool &tool)
+{
+    const auto optionalInteger = [&row](Column c) {
+        return row.cell(c).isEmpty() ? std::nullopt : std::optional<int>(integer(row, c, 0));
+    };
+    const auto optionalDecimal = [&row](Column c) {
+        return row.cell(c).isEmpty() ? std::nullopt : std::optional<double>(decimal(row, c, 0.0));
+    };
+    tool.flutes = optionalInteger(FlutesColumn);
+    tool.probing.offsetX = decimal(row, ProbeXColumn, 0.0);
+    tool.probing.offsetY = decimal(row, ProbeYColumn, 0.0);
+    tool.probing.touches = optionalInteger(ProbeTouchesColumn);
+    if (const QByteArrayView turn = row.cell(ProbeTurnColumn); turn == "no")
+        tool.probing.turn = false;
+    else if (!turn.isEmpty() && turn != "yes" && row.problem.isEmpty())
+        row.problem = tr("probe_turn \"%1\" must be yes, no or empty.").arg(excerpt(turn));
+    tool.probing.latchFeed = optionalDecimal(ProbeLatchFeedColumn);
+    tool.probing.spreadLimit = optionalDecimal(SpreadLimitColumn);
+}
+
 // The fields are read in the order of the columns, so that a row with two faults reports the first.
 Tool toolFrom(Row &row)
 {
@@ -258,6 +260,7 @@ Tool toolFrom(Row &row)
         tool.lifeLimitMinutes = decimal(row, LifeLimitMinutesColumn, 0.0);
     if (!row.cell(LifeLimitUsesColumn).isEmpty())
         tool.lifeLimitUses = integer(row, LifeLimitUsesColumn, 0);
+    readProbing(row, tool);
     return tool;
 }
 
@@ -332,6 +335,29 @@ void appendField(QByteArray &out, const QString &text)
     out += '"';
 }
 
+// The probing columns, each empty at its default.
+void appendProbing(QByteArray &out, const Tool &tool)
+{
+    const ProbeSettings &p = tool.probing;
+    out += ',';
+    if (tool.flutes)
+        out += QByteArray::number(*tool.flutes);
+    for (double v : { p.offsetX, p.offsetY }) {
+        out += ',';
+        if (v != 0.0)
+            appendNumber(out, v);
+    }
+    out += ',';
+    if (p.touches)
+        out += QByteArray::number(*p.touches);
+    out += p.turn ? "," : ",no";
+    for (const std::optional<double> &v : { p.latchFeed, p.spreadLimit }) {
+        out += ',';
+        if (v)
+            appendNumber(out, *v);
+    }
+}
+
 } // namespace
 
 Result<ToolTable> readCsvTable(const QByteArray &data)
@@ -341,7 +367,7 @@ Result<ToolTable> readCsvTable(const QByteArray &data)
         return text.error();
     CsvCursor in(text.value(), separatorOf(text.value()));
     CsvRecord header;
-    if (auto r = readHeader(in, header); !r)
+    if (auto r = readCsvHeader(in, header, ColumnCount); !r)
         return r.error();
     const auto columnOf = mapColumns(header);
     if (!columnOf)
@@ -400,6 +426,7 @@ bool writeCsvTable(const ToolTable &table, const ByteSink &sink)
         out += ',';
         if (tool.lifeLimitUses)
             out += QByteArray::number(*tool.lifeLimitUses);
+        appendProbing(out, tool);
         out += '\n';
         if (!w.next())
             return false;

@@ -28,8 +28,9 @@ namespace {
 // "overall_length") and the tool life's limits ("life_limit_minutes", "life_limit_uses"); written only when a
 // tool has one, for the same reason. Version 4 added "tlo_source": "pulled" (a TLO read from the controller's
 // table); written only when a tool has one, so that an older Toffee says it is newer rather than refusing a
-// word it does not know.
-constexpr int kJsonVersion = 4;
+// word it does not know. Version 5 added how a tool is probed ("flutes", "probe_x", "probe_y", "probe_touches",
+// "probe_turn", "probe_latch_feed", "spread_limit"); written only when a tool has one of them.
+constexpr int kJsonVersion = 5;
 const auto kFormatId = "toffee-tool-table"_L1;
 
 // What the table's own fields said so far.
@@ -220,6 +221,30 @@ Result<ToolTable> readJsonTable(const QByteArray &data)
     return tools.build(*table.units);
 }
 
+namespace {
+
+// How the tool is probed, each key only when it is not the default.
+void appendProbing(QByteArray &out, const Tool &tool)
+{
+    const ProbeSettings &p = tool.probing;
+    if (tool.flutes)
+        out += ", \"flutes\": " + QByteArray::number(*tool.flutes);
+    if (p.offsetX != 0.0)
+        appendField(out, JsonKey::ProbeX, p.offsetX);
+    if (p.offsetY != 0.0)
+        appendField(out, JsonKey::ProbeY, p.offsetY);
+    if (p.touches)
+        out += ", \"probe_touches\": " + QByteArray::number(*p.touches);
+    if (!p.turn)
+        out += ", \"probe_turn\": false";
+    if (p.latchFeed)
+        appendField(out, JsonKey::ProbeLatchFeed, *p.latchFeed);
+    if (p.spreadLimit)
+        appendField(out, JsonKey::SpreadLimit, *p.spreadLimit);
+}
+
+} // namespace
+
 bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
 {
     ChunkedWriter w(sink);
@@ -232,7 +257,9 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
     out += "{\n  \"format\": \"toffee-tool-table\",\n  \"version\": ";
     const bool pulled = std::any_of(table.tools().cbegin(), table.tools().cend(),
         [](const Tool &t) { return t.tloSource == TloSource::Pulled; });
-    out += QByteArray::number(pulled ? kJsonVersion : cutters ? 3 : marks ? 2 : 1);
+    const bool probing = std::any_of(table.tools().cbegin(), table.tools().cend(),
+        [](const Tool &t) { return t.flutes || !t.probing.isDefault(); });
+    out += QByteArray::number(probing ? kJsonVersion : pulled ? 4 : cutters ? 3 : marks ? 2 : 1);
     out += ",\n  \"units\": \"";
     out += unitsSymbol(table.units()).toLatin1();
     out += "\",\n  \"tools\": [";
@@ -286,6 +313,7 @@ bool writeJsonTable(const ToolTable &table, const ByteSink &sink)
             out += ", \"life_limit_uses\": ";
             out += QByteArray::number(*tool.lifeLimitUses);
         }
+        appendProbing(out, tool);
         out += '}';
         if (!w.next())
             return false;

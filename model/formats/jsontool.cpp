@@ -101,10 +101,10 @@ bool tloSource(JsonScanner &json, const Scalar &v, QLatin1StringView key, TloSou
     return true;
 }
 
-bool breakTestFailed(JsonScanner &json, const Scalar &v, bool &out)
+bool boolean(JsonScanner &json, const Scalar &v, QLatin1StringView key, bool &out)
 {
     if (v.kind != Scalar::Bool)
-        return json.fail(tr("\"break_test_failed\" must be true or false."));
+        return json.fail(tr("\"%1\" must be true or false.").arg(key));
     out = v.number != 0.0;
     return true;
 }
@@ -129,12 +129,20 @@ enum class ToolKey {
     OverallLength,
     LifeLimitMinutes,
     LifeLimitUses,
+    Flutes,
+    ProbeX,
+    ProbeY,
+    ProbeTouches,
+    ProbeTurn,
+    ProbeLatchFeed,
+    SpreadLimit,
 };
 constexpr QLatin1StringView kToolKeys[] = { JsonKey::Number, JsonKey::Pocket, JsonKey::Description,
     JsonKey::LengthGeometry, JsonKey::LengthWear, JsonKey::RadiusGeometry, JsonKey::RadiusWear,
     JsonKey::MeasuredTlo, JsonKey::MeasuredAt, JsonKey::Notes, JsonKey::TloSource, JsonKey::BreakTestFailed,
     JsonKey::ReferenceMz, JsonKey::LinuxCnc, JsonKey::CutterType, JsonKey::OverallLength,
-    JsonKey::LifeLimitMinutes, JsonKey::LifeLimitUses };
+    JsonKey::LifeLimitMinutes, JsonKey::LifeLimitUses, JsonKey::Flutes, JsonKey::ProbeX, JsonKey::ProbeY,
+    JsonKey::ProbeTouches, JsonKey::ProbeTurn, JsonKey::ProbeLatchFeed, JsonKey::SpreadLimit };
 
 constexpr quint32 seenBit(ToolKey key)
 {
@@ -169,7 +177,7 @@ bool readToolField(JsonScanner &json, ToolKey key, const Scalar &v, Tool &tool)
     case ToolKey::TloSource:
         return tloSource(json, v, k, tool.tloSource);
     case ToolKey::BreakTestFailed:
-        return breakTestFailed(json, v, tool.breakTestFailed);
+        return boolean(json, v, k, tool.breakTestFailed);
     case ToolKey::ReferenceMz:
         return optionalDecimal(json, v, k, tool.referenceMz);
     case ToolKey::LinuxCnc:
@@ -182,6 +190,20 @@ bool readToolField(JsonScanner &json, ToolKey key, const Scalar &v, Tool &tool)
         return optionalDecimal(json, v, k, tool.lifeLimitMinutes);
     case ToolKey::LifeLimitUses:
         return optionalWholeNumber(json, v, k, tool.lifeLimitUses);
+    case ToolKey::Flutes:
+        return optionalWholeNumber(json, v, k, tool.flutes);
+    case ToolKey::ProbeX:
+        return decimal(json, v, k, tool.probing.offsetX);
+    case ToolKey::ProbeY:
+        return decimal(json, v, k, tool.probing.offsetY);
+    case ToolKey::ProbeTouches:
+        return optionalWholeNumber(json, v, k, tool.probing.touches);
+    case ToolKey::ProbeTurn:
+        return boolean(json, v, k, tool.probing.turn);
+    case ToolKey::ProbeLatchFeed:
+        return optionalDecimal(json, v, k, tool.probing.latchFeed);
+    case ToolKey::SpreadLimit:
+        return optionalDecimal(json, v, k, tool.probing.spreadLimit);
     }
     Q_UNREACHABLE();
     return false;

@@ -33,6 +33,13 @@ inline constexpr QLatin1StringView CutterType("cutter_type");
 inline constexpr QLatin1StringView OverallLength("overall_length");
 inline constexpr QLatin1StringView LifeLimitMinutes("life_limit_minutes");
 inline constexpr QLatin1StringView LifeLimitUses("life_limit_uses");
+inline constexpr QLatin1StringView Flutes("flutes");
+inline constexpr QLatin1StringView ProbeX("probe_x");
+inline constexpr QLatin1StringView ProbeY("probe_y");
+inline constexpr QLatin1StringView ProbeTouches("probe_touches");
+inline constexpr QLatin1StringView ProbeTurn("probe_turn");
+inline constexpr QLatin1StringView ProbeLatchFeed("probe_latch_feed");
+inline constexpr QLatin1StringView SpreadLimit("spread_limit");
 } // namespace JsonKey
 
 // One tool object, `json` at its '{'. False when it is not a tool Toffee reads, the reason in `json.error()`.

@@ -108,6 +108,7 @@ QStringList formatLosses(const ToolTable &table, TableFormat format)
     bool notes = false;
     bool life = false;
     bool cutter = false;
+    bool probing = false;
     QStringList broken;
     for (const Tool &tool : table.tools()) {
         if (tool.breakTestFailed)
@@ -117,6 +118,7 @@ QStringList formatLosses(const ToolTable &table, TableFormat format)
         notes = notes || !tool.notes.isEmpty();
         life = life || tool.lifeLimitMinutes || tool.lifeLimitUses;
         cutter = cutter || !tool.cutterType.isEmpty() || tool.overallLength;
+        probing = probing || tool.flutes || !tool.probing.isDefault();
     }
     QStringList losses;
     if (!broken.isEmpty())
@@ -134,6 +136,10 @@ QStringList formatLosses(const ToolTable &table, TableFormat format)
     if (cutter)
         losses << tr("A LinuxCNC table has no place for the cutter's type and overall length: they are not "
                      "saved, and an import can then tell a new cutter only by its diameter.");
+    if (probing)
+        losses << tr("A LinuxCNC table has no place for how a tool is probed (its edges, touches, touch-off "
+                     "point, latch feed and spread limit): they are not saved, and each tool is then probed "
+                     "once at the setter's centre.");
     if (table.units() == Units::Inch)
         losses << tr("A LinuxCNC table does not record its units: the numbers are written in inches.");
     return losses;

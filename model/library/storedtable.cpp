@@ -109,7 +109,8 @@ const QList<Field> &fields()
               field(&Tool::lengthWear), field(&Tool::radiusGeometry), field(&Tool::radiusWear),
               field(&Tool::notes), field(&Tool::linuxCncExtra), field(&Tool::breakTestFailed),
               field(&Tool::cutterType), field(&Tool::overallLength), field(&Tool::lifeLimitMinutes),
-              field(&Tool::lifeLimitUses), [](Tool &into, const Tool &from, const Tool &base) {
+              field(&Tool::lifeLimitUses), field(&Tool::flutes), field(&Tool::probing),
+              [](Tool &into, const Tool &from, const Tool &base) {
                   const auto tlo = [](const Tool &t) {
                       return std::tuple(t.measuredTlo, t.measuredAt, t.tloSource, t.referenceMz);
                   };
