@@ -4,6 +4,7 @@
 #include <optional>
 
 #include <QDateTime>
+#include <QList>
 
 #include "model/clock.h"
 #include "model/tool.h"
@@ -34,6 +35,9 @@ struct Recording
     std::optional<double> tolerance = std::nullopt;
     std::optional<double> oldTlo = std::nullopt;
     std::optional<double> newTlo = std::nullopt;
+    // Each touch's machine Z when the tool was touched more than once (one per cutting edge): the TLO is the
+    // highest's, and how far they lie apart is the spread the history trends.
+    QList<double> touches = {};
 
     // Another cutter went into `tool` now: the old cutter's TLO and the reference it was measured against.
     [[nodiscard]] static Recording newCutter(

@@ -9,6 +9,7 @@
 #include "model/library/rowreader.h"
 #include "model/limits.h"
 #include "model/numberformat.h"
+#include "model/textparsing.h"
 #include "model/toolvalidation.h"
 #include "model/translate.h"
 
@@ -117,13 +118,16 @@ HistoryEvent historyEvent(const Recording &r, const QString &machine)
     e.oldTlo = r.oldTlo;
     e.newTlo = r.newTlo;
     e.failed = r.breakTestFailed;
+    if (r.touches.size() > 1)
+        e.touches = r.touches;
     return e;
 }
 
 QByteArray eventsAsCsv(const QList<HistoryEvent> &events)
 {
     QByteArray out
-        = "id,machine,tool,measured_at,kind,tlo,reference_mz,current_mz,tolerance,old_tlo,new_tlo,failed\n";
+        = "id,machine,tool,measured_at,kind,tlo,reference_mz,current_mz,tolerance,old_tlo,new_tlo,failed,"
+          "touches,spread\n";
     auto number = [&out](std::optional<double> v) {
         out += ',';
         if (v)
@@ -142,7 +146,40 @@ QByteArray eventsAsCsv(const QList<HistoryEvent> &events)
         out += ',';
         if (e.failed)
             out += *e.failed ? '1' : '0';
+        out += ',' + touchesText(e.touches).toLatin1();
+        number(e.spread());
         out += '\n';
+    }
+    return out;
+}
+
+std::optional<double> HistoryEvent::spread() const
+{
+    return touches.size() > 1 ? std::optional<double>(spreadOf(touches)) : std::nullopt;
+}
+
+QString touchesText(const QList<double> &touches)
+{
+    QByteArray out;
+    for (double z : touches) {
+        if (!out.isEmpty())
+            out += ' ';
+        appendNumber(out, z);
+    }
+    return out.isEmpty() ? u""_s : QString::fromLatin1(out); // never null: the column is NOT NULL
+}
+
+std::optional<QList<double>> touchesFromText(const QString &text)
+{
+    QList<double> out;
+    const QStringList parts = text.split(u' ', Qt::SkipEmptyParts);
+    if (parts.size() > ProbeSettings::kMaxTouches || parts.size() == 1)
+        return std::nullopt;
+    for (const QString &part : parts) {
+        const auto z = parseDecimal(QByteArrayView(part.toLatin1()));
+        if (!z || !std::isfinite(*z) || std::fabs(*z) > kMaxMachineMillimetres)
+            return std::nullopt;
+        out << *z;
     }
     return out;
 }

@@ -40,6 +40,12 @@ struct HistoryEvent
     std::optional<double> oldTlo; // a break test's: what it compared against ...
     std::optional<double> newTlo; // ... and what it measured
     std::optional<bool> failed; // a break test's verdict
+    // Each touch's machine Z when the tool was touched more than once (one per cutting edge): tlo is the
+    // highest's. Empty for one touch.
+    QList<double> touches = {};
+
+    // How far the touches lie apart (the longest edge from the shortest); none for one touch.
+    [[nodiscard]] std::optional<double> spread() const;
 
     [[nodiscard]] static QString newId();
     friend bool operator==(const HistoryEvent &, const HistoryEvent &) = default;
@@ -57,6 +63,11 @@ struct HistoryEvent
 
 // The history's view of an operation the window or toffee-cli recorded, on `machine`.
 [[nodiscard]] HistoryEvent historyEvent(const Recording &recording, const QString &machine);
+
+// Touches as the library keeps them: each machine Z, space-separated ("-80 -79.972"); and back, nothing when
+// the text is not such a list of at most ProbeSettings::kMaxTouches numbers a machine reads.
+[[nodiscard]] QString touchesText(const QList<double> &touches);
+[[nodiscard]] std::optional<QList<double>> touchesFromText(const QString &text);
 
 // Events as CSV, a header line and a row each, every column of the library's events table (docs/LIBRARY.md).
 [[nodiscard]] QByteArray eventsAsCsv(const QList<HistoryEvent> &events);
@@ -84,6 +95,17 @@ struct MachineRecord
     QString dialect; // as toffee-cli names it: carvera, fanuc, …
     QString connection; // "emulator", "/dev/ttyUSB0 115200", …
     friend bool operator==(const MachineRecord &, const MachineRecord &) = default;
+};
+
+// How well a machine's tool setter repeats (toffee-cli measure-repeatability): one tool touched several times
+// on the same edge, each touch's machine Z. Its spread is the smallest difference a break test can trust.
+struct SetterRepeatability
+{
+    int tool = 0;
+    QDateTime at; // UTC
+    QList<double> touches;
+    [[nodiscard]] double spread() const;
+    friend bool operator==(const SetterRepeatability &, const SetterRepeatability &) = default;
 };
 
 // Which events to read: all of them, or one machine's, one tool's, since a time.

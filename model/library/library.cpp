@@ -24,7 +24,8 @@ namespace Toffee {
 namespace {
 
 const QString kEventColumns
-    = u"id, machine, tool, measured_at, kind, tlo, reference_mz, current_mz, tolerance, old_tlo, new_tlo, failed"_s;
+    = u"id, machine, tool, measured_at, kind, tlo, reference_mz, current_mz, tolerance, old_tlo, new_tlo, failed, "
+      u"touches, spread"_s;
 
 QString timeText(const QDateTime &at)
 {
@@ -199,7 +200,7 @@ Result<int> Library::append(const QList<HistoryEvent> &events)
             machines.append(e.machine);
     }
     const QString sql = u"INSERT INTO events ("_s + kEventColumns
-        + u") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (id) DO NOTHING"_s;
+        + u") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (id) DO NOTHING"_s;
     return insertAll(
         sql, machines, events.size(),
         [&events](QSqlQuery &query, qsizetype i) {
@@ -212,6 +213,8 @@ Result<int> Library::append(const QList<HistoryEvent> &events)
             for (const auto &value : { e.tlo, e.referenceMz, e.currentMz, e.tolerance, e.oldTlo, e.newTlo })
                 query.addBindValue(nullable(value));
             query.addBindValue(e.failed ? QVariant(int(*e.failed)) : QVariant(QMetaType::fromType<int>()));
+            query.addBindValue(touchesText(e.touches));
+            query.addBindValue(nullable(e.spread()));
             return tr("Recording T%1's %2").arg(e.tool).arg(eventKindName(e.kind));
         },
         [this, &events](const QList<qsizetype> &inserted) {
@@ -270,7 +273,12 @@ Result<QList<HistoryEvent>> Library::history(const HistoryQuery &q, QStringList 
         }
         where << u"kind IN ("_s + marks.join(u", "_s) + u")"_s;
     }
-    QString sql = u"SELECT "_s + kEventColumns + u" FROM events"_s;
+    // A library read as it is (read-only, not brought up to date) may be from before touches were kept.
+    const auto version = schemaVersion();
+    const bool touchesKept = !version || version.value() >= kTouchesVersion;
+    QString sql = u"SELECT "_s
+        + (touchesKept ? kEventColumns : QString(kEventColumns).replace(u"touches, spread"_s, u"'', NULL"_s))
+        + u" FROM events"_s;
     if (!where.isEmpty())
         sql += u" WHERE "_s + where.join(u" AND "_s);
     // The newest `limit`, read newest first and turned round.

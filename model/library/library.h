@@ -36,7 +36,8 @@ class Library
 
 public:
     // The schema this Toffee writes. A library with a higher version is refused, never altered.
-    static constexpr int kSchemaVersion = 5;
+    static constexpr int kSchemaVersion = 6;
+    static constexpr int kTouchesVersion = 6; // events keep each touch and their spread from here on
     // The channel a shared library's changes are announced on; the payload names the machine, the station and
     // the time (LibraryWatcher::announced).
     static constexpr QLatin1StringView kChannel { "toffee_library" };
@@ -92,6 +93,9 @@ public:
     // machine added when new. Nothing when never set.
     [[nodiscard]] Result<void> setToolSetter(const QString &machine, const ToolSetter &setter);
     [[nodiscard]] Result<std::optional<ToolSetter>> toolSetter(const QString &machine) const;
+    // The machine's setter repeatability, the newest measured (libraryrepeatability.cpp); none before one.
+    [[nodiscard]] Result<void> setRepeatability(const QString &machine, const SetterRepeatability &measured);
+    [[nodiscard]] Result<std::optional<SetterRepeatability>> repeatability(const QString &machine) const;
     // Which machine a name stands for: `identity` (MachineIdentity::key(): the controller and how it is
     // reached). A name bound to nothing yet (new, or kept by a library older than identities) is bound to it
     // now: New. The same identity: Same. Another: Other, with the one it is bound to, and nothing changed

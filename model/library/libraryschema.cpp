@@ -78,6 +78,13 @@ const QList<QStringList> kMigrations = {
         // empty for a name no station has bound yet (every machine of an older library).
         u"ALTER TABLE machines ADD COLUMN identity TEXT NOT NULL DEFAULT ''"_s,
     },
+    {
+        // A tool touched once per cutting edge: each touch's machine Z (space-separated, empty for one touch)
+        // and their spread; and each machine's setter repeatability (measure-repeatability), as JSON.
+        u"ALTER TABLE events ADD COLUMN touches TEXT NOT NULL DEFAULT ''"_s,
+        u"ALTER TABLE events ADD COLUMN spread DOUBLE PRECISION"_s,
+        u"ALTER TABLE machines ADD COLUMN repeatability TEXT NOT NULL DEFAULT ''"_s,
+    },
 };
 
 // PostgreSQL before 14 is past its end of life; ON CONFLICT and pg_notify are older than that.
@@ -86,10 +93,11 @@ constexpr int kOldestServer = 140000;
 // Every table of the schema this Toffee writes, with the columns it reads and writes: a library that lacks
 // one was damaged, or altered by another program, and is not written into.
 const QList<std::pair<QString, QStringList>> kTables = {
-    { u"machines"_s, { u"name"_s, u"dialect"_s, u"connection"_s, u"setter"_s } },
+    { u"machines"_s, { u"name"_s, u"dialect"_s, u"connection"_s, u"setter"_s, u"repeatability"_s } },
     { u"events"_s,
         { u"id"_s, u"machine"_s, u"tool"_s, u"measured_at"_s, u"kind"_s, u"tlo"_s, u"reference_mz"_s,
-            u"current_mz"_s, u"tolerance"_s, u"old_tlo"_s, u"new_tlo"_s, u"failed"_s } },
+            u"current_mz"_s, u"tolerance"_s, u"old_tlo"_s, u"new_tlo"_s, u"failed"_s, u"touches"_s,
+            u"spread"_s } },
     { u"tool_use"_s,
         { u"id"_s, u"machine"_s, u"tool"_s, u"recorded_at"_s, u"program"_s, u"cutting_seconds"_s,
             u"feed_path_mm"_s } },
@@ -266,12 +274,16 @@ Error Library::damaged(const QString &why) const
 Result<void> Library::checkTables() const
 {
     const QSqlDatabase db = database();
+    // A library read as it is, from before touches were kept, is read without them.
+    const auto version = schemaVersion();
+    const bool beforeTouches = m_readOnly && version && version.value() < kTouchesVersion;
+    const QStringList sinceTouches { u"touches"_s, u"spread"_s, u"repeatability"_s };
     for (const auto &[table, columns] : kTables) {
         const QSqlRecord record = db.record(table);
         if (record.isEmpty())
             return damaged(tr("its table \"%1\" is missing").arg(table));
         for (const QString &column : columns) {
-            if (record.indexOf(column) < 0)
+            if (record.indexOf(column) < 0 && !(beforeTouches && sinceTouches.contains(column)))
                 return damaged(
                     tr("its table \"%1\" was altered: it has no column \"%2\"").arg(table, column));
         }

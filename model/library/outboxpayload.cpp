@@ -45,7 +45,8 @@ QByteArray eventsPayload(const QList<HistoryEvent> &events)
             { u"tlo"_s, number(e.tlo) }, { u"reference_mz"_s, number(e.referenceMz) },
             { u"current_mz"_s, number(e.currentMz) }, { u"tolerance"_s, number(e.tolerance) },
             { u"old_tlo"_s, number(e.oldTlo) }, { u"new_tlo"_s, number(e.newTlo) },
-            { u"failed"_s, e.failed ? QJsonValue(*e.failed) : QJsonValue() } });
+            { u"failed"_s, e.failed ? QJsonValue(*e.failed) : QJsonValue() },
+            { u"touches"_s, touchesText(e.touches) } });
     return QJsonDocument(list).toJson(QJsonDocument::Compact);
 }
 
@@ -82,6 +83,13 @@ Result<HistoryEvent> eventFromJson(const QJsonValue &value)
     e.newTlo = numberFrom(o.value(u"new_tlo"_s));
     if (o.value(u"failed"_s).isBool())
         e.failed = o.value(u"failed"_s).toBool();
+    // An older station's entry has no touches; a damaged one is refused.
+    if (const QJsonValue touches = o.value(u"touches"_s); !touches.isUndefined()) {
+        const auto read = touches.isString() ? touchesFromText(touches.toString()) : std::nullopt;
+        if (!read)
+            return unreadable();
+        e.touches = *read;
+    }
     // Held to what the history takes (validateEvent): an entry altered on the disk is refused, not sent.
     if (auto valid = validateEvent(e); !valid)
         return valid.error();

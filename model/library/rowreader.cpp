@@ -164,6 +164,9 @@ Result<void> RowReader::checkEvent(const HistoryEvent &e)
     }
     if (e.tolerance && *e.tolerance < 0)
         return refuse(tr("its tolerance is negative"));
+    if (e.touches.size() == 1 || e.touches.size() > ProbeSettings::kMaxTouches
+        || !touchesFromText(touchesText(e.touches)))
+        return refuse(tr("its touches are not 2 to %1 machine positions").arg(ProbeSettings::kMaxTouches));
     return {};
 }
 
@@ -216,6 +219,13 @@ Result<HistoryEvent> RowReader::event(const QVariantList &row)
         if (!failed || (*failed != 0 && *failed != 1))
             return refuse(tr("\"failed\" is %1, not 0 or 1").arg(shown(row.at(11))));
         e.failed = *failed == 1;
+    }
+    // The spread (column 13) is the touches' own, kept for whoever reads the library with SQL.
+    if (!row.at(12).isNull() && !row.at(12).toString().isEmpty()) {
+        const auto touches = isText(row.at(12)) ? touchesFromText(row.at(12).toString()) : std::nullopt;
+        if (!touches)
+            return refuse(tr("its touches are %1, not machine positions").arg(shown(row.at(12))));
+        e.touches = *touches;
     }
     if (auto checked = checkEvent(e); !checked)
         return checked.error();

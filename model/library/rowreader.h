@@ -42,7 +42,7 @@ public:
 
     // The events table's columns, in the order of docs/LIBRARY.md (id, machine, tool, measured_at, kind, tlo,
     // reference_mz, current_mz, tolerance, old_tlo, new_tlo, failed).
-    static constexpr int kEventColumns = 12;
+    static constexpr int kEventColumns = 14;
     [[nodiscard]] static Result<HistoryEvent> event(const QVariantList &row);
     // An event as Toffee would write it: what is read back from a row, an outbox, or a file is held to it.
     [[nodiscard]] static Result<void> checkEvent(const HistoryEvent &event);

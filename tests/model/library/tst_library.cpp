@@ -13,6 +13,7 @@
 #include <QSqlQuery>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTimeZone>
 #include <QTest>
 
 #include "tests/model/library/libraryevents.h"
@@ -120,6 +121,32 @@ private Q_SLOTS:
         QVERIFY(library.value()->uses(u"Carvera"_s, 4).value().isEmpty());
     }
 
+    // A machine's setter repeatability is kept with it, the newest only; a value another program garbled is
+    // said, not guessed at.
+    void aMachinesSetterRepeatabilityIsKept()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(u"l.sqlite"_s);
+        auto library = Library::open({ path });
+        QVERIFY(library);
+        QCOMPARE(library.value()->repeatability(u"Router"_s).value(), std::nullopt);
+        const SetterRepeatability measured { 3, QDateTime(QDate(2026, 11, 29), QTime(8, 0), QTimeZone::utc()),
+            { -80.0, -79.998, -80.002 } };
+        QVERIFY(library.value()->setRepeatability(u"Router"_s, measured));
+        QCOMPARE(library.value()->repeatability(u"Router"_s).value(), std::optional(measured));
+        QCOMPARE(library.value()->repeatability(u"Router"_s).value()->spread(), 0.004);
+        QVERIFY(!library.value()->setRepeatability(u"Router"_s, { 3, measured.at, { -80.0 } }));
+        library.value().reset();
+        {
+            RawConnection raw(path, u"raw-rep"_s);
+            QVERIFY(raw.exec(u"UPDATE machines SET repeatability = '{\"tool\": 3}' WHERE name = 'Router'"_s));
+        }
+        library = Library::open({ path });
+        const auto garbled = library.value()->repeatability(u"Router"_s);
+        QVERIFY(!garbled);
+        QVERIFY2(garbled.error().message.contains(u"measure it again"_s), qPrintable(garbled.error().message));
+    }
+
     void aVersionTwoLibraryIsBroughtUpToDateAndKeepsEachMachinesToolSetter()
     {
         QTemporaryDir dir;
@@ -131,6 +158,9 @@ private Q_SLOTS:
         {
             // As Toffee wrote it before machines had a tool setter (or an identity).
             RawConnection raw(path, u"raw-v2"_s);
+            QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN repeatability"_s));
+            QVERIFY(raw.exec(u"ALTER TABLE events DROP COLUMN touches"_s));
+            QVERIFY(raw.exec(u"ALTER TABLE events DROP COLUMN spread"_s));
             QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN setter"_s));
             QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN identity"_s));
             QVERIFY(raw.exec(u"UPDATE toffee_schema SET version = 2"_s));
@@ -174,6 +204,7 @@ private Q_SLOTS:
         {
             // As Toffee wrote it before a new cutter was an event: its CHECK refuses the kind.
             RawConnection raw(path, u"raw-v3"_s);
+            QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN repeatability"_s));
             QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN identity"_s));
             QVERIFY(raw.exec(u"DROP TABLE events"_s));
             QVERIFY(
@@ -234,6 +265,9 @@ private Q_SLOTS:
         {
             // As Toffee wrote it before machines had an identity.
             RawConnection raw(path, u"raw-v4"_s);
+            QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN repeatability"_s));
+            QVERIFY(raw.exec(u"ALTER TABLE events DROP COLUMN touches"_s));
+            QVERIFY(raw.exec(u"ALTER TABLE events DROP COLUMN spread"_s));
             QVERIFY(raw.exec(u"ALTER TABLE machines DROP COLUMN identity"_s));
             QVERIFY(raw.exec(u"UPDATE toffee_schema SET version = 4"_s));
         }
