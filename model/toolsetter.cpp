@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "model/toolsetter.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -87,6 +88,41 @@ Result<void> ToolSetter::validate() const
         return Error { tr("The back-off between the two touches must be more than 0 and at most %1 mm.")
                            .arg(mm(kMaxBackoff)) };
     return {};
+}
+
+Result<SetterCycle> SetterCycle::of(const ToolSetter &setter, const ProbePlan &plan)
+{
+    if (auto valid = plan.validate(); !valid)
+        return valid.error();
+    SetterCycle cycle { setter, plan };
+    if (auto valid = cycle.setter.validate(); !valid)
+        return valid.error();
+    if (cycle.latchFeed() > setter.seekFeed)
+        return Error { tr("The tool's latch feed (%1 mm/min) must not be faster than the setter's search feed (%2 "
+                          "mm/min).")
+                           .arg(mm(cycle.latchFeed()), mm(setter.seekFeed)) };
+    for (double v : { cycle.x(), cycle.y() }) {
+        if (std::fabs(v) > Limits::kMaxMachineOffsetMm)
+            return Error { tr("The tool's touch-off point (X %1, Y %2 mm) lies beyond the machine's coordinates.")
+                               .arg(mm(cycle.x()), mm(cycle.y())) };
+    }
+    return cycle;
+}
+
+double SetterCycle::liftBetween(double contact) const
+{
+    return std::min(setter.safeZ, contact + kEdgeClearance);
+}
+
+QString SetterCycle::cannotTurnNote(const QString &controller) const
+{
+    if (plan.touches < 2 || !plan.turn)
+        return {};
+    return tr("%1 cannot turn its spindle to an angle, so the %2 touches met the setter wherever the spindle "
+              "stood: their spread is the setter's repeatability and the cutter's runout there, not each "
+              "edge's.")
+        .arg(controller)
+        .arg(plan.touches);
 }
 
 } // namespace Toffee

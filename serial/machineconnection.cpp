@@ -177,6 +177,7 @@ void MachineConnection::startController(ControllerKind kind)
     }
     if (m_target.setter)
         m_session->setToolSetter(*m_target.setter);
+    m_session->setProbePlans(m_probePlans);
     if (!m_session->keepsReference())
         m_session->adoptReference(m_target.reference);
     connect(m_session.get(), &MachineController::waitingForOperator, this,
@@ -330,6 +331,13 @@ void MachineConnection::disconnectFromMachine()
     teardown();
     if (wasConnected)
         Q_EMIT disconnected(tr("as asked."));
+}
+
+void MachineConnection::setProbePlans(std::function<ProbePlan(int tool)> plans)
+{
+    m_probePlans = std::move(plans);
+    if (m_session)
+        m_session->setProbePlans(m_probePlans);
 }
 
 } // namespace Toffee

@@ -100,6 +100,9 @@ public:
     [[nodiscard]] QString description() const;
     // Null while disconnected.
     [[nodiscard]] MachineController *session() const { return m_session.get(); }
+    // How each tool is probed (MachineController::setProbePlans), for this connection's controllers now and
+    // after a reconnect: the window's and toffee-cli's table, with a command's own overrides.
+    void setProbePlans(std::function<ProbePlan(int tool)> plans);
     [[nodiscard]] MachineLink *link() const { return m_link.get(); }
     // The built-in emulator while connected to it, else null (for tests and the self-test).
     [[nodiscard]] CarveraEmulator *emulator() const;
@@ -245,6 +248,7 @@ private:
     std::unique_ptr<LineTransport> m_transport;
     std::unique_ptr<MachineLink> m_link;
     std::unique_ptr<MachineController> m_session;
+    std::function<ProbePlan(int tool)> m_probePlans;
     std::unique_ptr<ControllerDetector> m_detector;
     Preparer m_prepare;
     ControllerKind m_kind = ControllerKind::Auto;

@@ -363,4 +363,25 @@ std::optional<ProbeResult> lastProbe(const QList<QByteArray> &lines)
     return found;
 }
 
+RepeatedMeasurement repeatedMeasurement(const QList<QByteArray> &lines)
+{
+    RepeatedMeasurement out;
+    for (const QByteArray &raw : lines) {
+        const QByteArray line = raw.trimmed();
+        const bool each = line.startsWith("TLO value from measurement ");
+        const bool used = line.startsWith("Using TLO value from measurement ");
+        if (!each && !used)
+            continue;
+        const qsizetype colon = line.lastIndexOf(':');
+        const auto value = colon < 0 ? std::nullopt : parseDecimal(line.mid(colon + 1).trimmed());
+        if (!value || !std::isfinite(*value) || std::fabs(*value) > kMaxMachineMillimetres)
+            continue;
+        if (each)
+            out.tlos << *value;
+        else
+            out.using_ = *value;
+    }
+    return out;
+}
+
 } // namespace Toffee

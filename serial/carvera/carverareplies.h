@@ -36,6 +36,15 @@ namespace Toffee {
 // A probe's result among a script's lines: the last one (the firmware probes fast, then slowly, and takes the
 // second).
 [[nodiscard]] std::optional<ProbeResult> lastProbe(const QList<QByteArray> &lines);
+// M491 R<n>'s summary (the community firmware's M493.1 R<n>, ATCHandler.cpp): "TLO value from measurement
+// %d: %.3f" for each pass, oldest first, and "Using TLO value from measurement %d: %.3f" (the highest, the
+// longest edge's; the firmware then stores the lowest, the shortest edge's). Empty when the reply has none.
+struct RepeatedMeasurement
+{
+    QList<double> tlos; // each pass's TLO, in the order made
+    std::optional<double> using_;
+};
+[[nodiscard]] RepeatedMeasurement repeatedMeasurement(const QList<QByteArray> &lines);
 // Refuses values beyond kMaxMachineMillimetres, like parseTloReport.
 [[nodiscard]] std::optional<BreakTestReading> parseBreakTest(QByteArrayView line);
 

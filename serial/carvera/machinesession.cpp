@@ -191,11 +191,43 @@ void MachineSession::probe(Done done)
     measure(recording(std::move(done), RecordingKind::Probe));
 }
 
+// M491 as the tool's plan says: R<n> for its touches, X and Y for its touch-off point (the community firmware's;
+// Makera's measures once at the centre). The firmware's latch feed is its own setting.
 void MachineSession::measure(Done done)
 {
+    const int tool = m_tool.value_or(Limits::kEmptySpindle);
+    const ProbePlan plan = probePlan(tool);
+    QByteArray command = "M491";
+    QStringList notes;
+    if (plan.touches > 1 || plan.isOffCentre()) {
+        if (m_firmware.kind == FirmwareInfo::Kind::Stock)
+            return refuse(done,
+                tr("Makera's firmware measures a tool once, at the setter's centre (its M491 takes no R, X or "
+                   "Y): T%1's settings (%2) need the community firmware. Nothing was sent.")
+                    .arg(tool)
+                    .arg(plan.summary()));
+        if (auto valid = plan.validate(); !valid)
+            return refuse(done, tr("T%1 cannot be probed so: %2 Nothing was sent.").arg(tool).arg(valid.error().message));
+        if (plan.touches > 1) {
+            command += " R" + QByteArray::number(plan.touches);
+            if (plan.turn)
+                notes << tr("Between its %1 touches the firmware lifts 25 mm for you to turn the cutter to its "
+                            "next edge by hand.")
+                             .arg(plan.touches);
+        }
+        if (plan.offsetX != 0.0)
+            command += " X" + number(plan.offsetX);
+        if (plan.offsetY != 0.0)
+            command += " Y" + number(plan.offsetY);
+    }
+    if (plan.latchFeed)
+        notes << tr("The firmware touches at its own latch feed (atc.probe.slow_rate_mm_m in its config), not "
+                    "T%1's %2 mm/min.")
+                     .arg(tool)
+                     .arg(millimetres(*plan.latchFeed, false));
     run(
-        "M491", MachineLink::kMotionTimeoutMs, done,
-        [this, done](const CommandReply &reply) {
+        command, MachineLink::kMotionTimeoutMs, done,
+        [this, done, plan, tool, notes](const CommandReply &reply) {
             const auto probe = lastProbe(reply.lines);
             if (!probe || !probe->triggered) {
                 SessionResult bad;
@@ -207,8 +239,10 @@ void MachineSession::measure(Done done)
                 done(bad);
                 return;
             }
+            if (plan.touches > 1)
+                return takeLongestEdge(tool, plan, repeatedMeasurement(reply.lines), notes, done);
             readOffsets(
-                [done](const SessionResult &r) {
+                [done, notes](const SessionResult &r) {
                     // After a probe, current - reference is the TLO: when the machine's two reports disagree,
                     // neither is recorded.
                     if (r.ok() && r.tlo && r.tlo->referenceMz && !r.tlo->currentMz) {
@@ -222,11 +256,66 @@ void MachineSession::measure(Done done)
                         done(bad);
                         return;
                     }
-                    done(r);
+                    SessionResult noted = r;
+                    noted.message = QStringList(notes).join(u' ');
+                    done(noted);
                 },
                 SessionResult {});
         },
         ReplyEnd::Script);
+}
+
+// After M491 R<n>: each pass's TLO from the firmware's summary, their machine Z against its reference. The
+// firmware prints the longest edge's as "Using" but keeps the shortest edge's in force (ATCHandler.cpp: the
+// lowest contact): Toffee sets the longest edge's (M493.3 Z), so that no edge cuts deeper than the offset says,
+// and reads it back.
+void MachineSession::takeLongestEdge(
+    int tool, const ProbePlan &plan, const RepeatedMeasurement &measured, const QStringList &notes, Done done)
+{
+    if (measured.tlos.size() != plan.touches) {
+        return done(SessionResult::failed(SessionResult::Outcome::MachineError,
+            tr("The firmware printed %1 of the %2 measurements it was asked for (M491 R%2). Nothing was "
+               "recorded; check the offsets (Report) before you cut.")
+                .arg(measured.tlos.size())
+                .arg(plan.touches)));
+    }
+    const double longest = *std::max_element(measured.tlos.cbegin(), measured.tlos.cend());
+    readOffsets(
+        [this, done, tool, plan, measured, notes, longest](const SessionResult &r) {
+            if (!r.ok() || !r.tlo)
+                return done(r);
+            if (!r.tlo->referenceMz)
+                return done(SessionResult::failed(SessionResult::Outcome::MachineError,
+                    tr("The firmware reported no reference tool offset, so its %1 measurements cannot be put "
+                       "in machine coordinates. Nothing was recorded.")
+                        .arg(plan.touches)));
+            const double reference = *r.tlo->referenceMz;
+            QList<double> touches;
+            for (double tlo : measured.tlos)
+                touches << std::round((tlo + reference) * 1000.0) / 1000.0;
+            const auto finish = [done, tool, plan, touches, reference, longest, notes](const SessionResult &set,
+                                    const QString &corrected) {
+                if (!set.ok())
+                    return done(set);
+                SessionResult result = set;
+                result.tool = tool;
+                result.tlo = TloReading { longest, reference, longest + reference, touches };
+                // The finding first: it is what the operator must act on.
+                QStringList all { spreadFinding(tool, touches, plan), corrected };
+                all << notes;
+                all.removeAll(QString());
+                result.message = all.join(u' ');
+                done(result);
+            };
+            if (std::fabs(r.tlo->tlo() - longest) <= 0.0005)
+                return finish(r, {});
+            const QString corrected
+                = tr("Toffee set the longest edge's TLO (%2 mm) where the firmware kept the shortest's (%1 mm): "
+                     "no edge cuts deeper than the offset says.")
+                      .arg(millimetres(r.tlo->tlo(), false), millimetres(longest, false));
+            setTloTo(longest, [finish, corrected](const SessionResult &set) { finish(set, corrected); });
+        },
+        SessionResult {});
 }
 
 MachineSession::Done MachineSession::expectingTlo(double tlo, Done done)

@@ -94,6 +94,8 @@ private:
     // The offsets after an operation: the TLO in force from a fresh status report, the reference (and the
     // current MCS Z, when it agrees) from M493.4.
     void readOffsets(Done done, SessionResult result);
+    void takeLongestEdge(int tool, const ProbePlan &plan, const RepeatedMeasurement &measured,
+        const QStringList &notes, Done done);
     // M493.3 Z<tlo>, then the offsets: the machine must report that TLO in force.
     void setTloTo(double tlo, Done done);
     // Why a TLO cannot be set now: the spindle is empty.

@@ -39,6 +39,13 @@ void MachineSession::breakTest(double tolerance, Done done, std::optional<double
                "TLO "
                "with the table.")
                 .arg(*m_tool));
+    // M491.1 takes no X or Y: a face mill touched at its recessed centre would measure another length.
+    if (m_tool && probePlan(*m_tool).isOffCentre())
+        return refuse(done,
+            tr("The firmware's break test (M491.1) touches at the setter's centre only, and T%1 is measured "
+               "off-centre: probe it (M491 with its settings) and compare the TLO with the table instead. "
+               "Nothing was sent.")
+                .arg(*m_tool));
     if (storedTlo) {
         if (auto r = validateOffset(tr("The stored TLO"), *storedTlo); !r)
             return refuse(done, r.error().message);

@@ -156,6 +156,7 @@ void CarveraEmulator::takeProbe(const GCodeBlock &, const QByteArray &)
 // M493.2 T: the tool changes, the TLO in force does not (it is the previous tool's until measured or set).
 void CarveraEmulator::selectTool(const GCodeBlock &block, const QByteArray &)
 {
+    m_oneOff = { 0.0, 0.0 }; // M493.2 ends M491's one-off touch-off point, as M6 does
     const auto t = block.value('T');
     if (!t)
         return haltWith("ERROR: No tool was set!", HaltReason::AtcNoTool);
@@ -262,9 +263,11 @@ void CarveraEmulator::calibrate(Calibration kind, double tolerance, int repeats)
         echo("M5");
     echo("M497.3");
     echo("G53 G0 Z" + fixed(kClearanceZ));
-    echo("G53 G0 X" + fixed(m_setter[0]) + " Y" + fixed(m_setter[1]));
+    const double atX = m_setter[0] + m_oneOff[0];
+    const double atY = m_setter[1] + m_oneOff[1];
+    echo("G53 G0 X" + fixed(atX) + " Y" + fixed(atY));
     say("G38.6 Z" + fixed(kZTravelLimit) + " F600.000");
-    m_mpos = { m_setter[0], m_setter[1], kClearanceZ };
+    m_mpos = { atX, atY, kClearanceZ };
     const double trigger = kNoseTriggerZ + toolLength(m_tool);
     const bool fail = probeFails(trigger);
     if (repeats > 0) {
@@ -275,11 +278,11 @@ void CarveraEmulator::calibrate(Calibration kind, double tolerance, int repeats)
     later(m_timing.probeMs, [=, this] {
         if (fail)
             return failProbe();
-        say("[PRB:" + fixed(m_setter[0]) + ',' + fixed(m_setter[1]) + ',' + fixed(trigger - 0.01) + ":1]");
+        say("[PRB:" + fixed(atX) + ',' + fixed(atY) + ',' + fixed(trigger - 0.01) + ":1]");
         say("ok");
         echo("G91 G0 Z2.000");
         say("G38.6 Z-3.000 F150.000");
-        say("[PRB:" + fixed(m_setter[0]) + ',' + fixed(m_setter[1]) + ',' + fixed(trigger) + ":1]");
+        say("[PRB:" + fixed(atX) + ',' + fixed(atY) + ',' + fixed(trigger) + ":1]");
         say("ok");
         m_lastProbeZ = trigger;
         m_mpos[2] = trigger;

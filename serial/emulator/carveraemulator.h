@@ -65,7 +65,7 @@ public:
     static constexpr char kStockVersion[] = "1.0.1";
     // Makera's current firmware, which frames every byte (its version when the emulator speaks frames).
     static constexpr char kFramedStockVersion[] = "1.0.5";
-    static constexpr int kMaxRepeats = 10; // M491 R<n>
+    static constexpr int kMaxRepeats = 255; // M491 R<n>: the firmware keeps n in a byte
     // What the firmware prints after each halt; its numbers mean nothing (the firmware's own build prints a
     // host address there).
     static constexpr char kHaltLine[] = "Halt Happened at Line: 0,percent: 0, time: 0";
@@ -244,6 +244,8 @@ private:
     std::array<double, 3> m_mpos { -2.0, -2.0, -2.0 };
     std::array<double, 3> m_wcs { 0.0, 0.0, 0.0 }; // G54, zero as on a fresh C1
     std::array<double, 2> m_setter { -4.965, -54.48 };
+    // M491 X<dx> Y<dy>: the one-off touch-off point from the setter's, until the next M491 (community only).
+    std::array<double, 2> m_oneOff { 0.0, 0.0 };
     int m_tool = 1;
     double m_refMz = kFactoryReferenceMz;
     double m_curMz = 0.0; // "current tool offset": the tool's MCS Z on the setter, or Z after M493.3 Z

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "model/limits.h"
 #include "model/numberformat.h"
@@ -177,11 +176,19 @@ void CarveraEmulator::probeTool(const GCodeBlock &block, const QByteArray &line)
 {
     const GCodeWord *r = block.find('R');
     if (r && m_firmware != Firmware::Stock
-        && (r->bare || r->value != std::floor(r->value) || r->value < 1 || r->value > kMaxRepeats))
+        && (r->bare || r->value != std::floor(r->value) || r->value > kMaxRepeats))
         return refuse(line);
+    m_oneOff = { 0.0, 0.0 };
+    if (m_firmware != Firmware::Stock) {
+        for (int axis = 0; axis < 2; ++axis) {
+            if (const auto v = block.value(axis == 0 ? 'X' : 'Y'))
+                m_oneOff[size_t(axis)] = *v;
+        }
+    }
     saveXy();
-    if (!r || m_firmware == Firmware::Stock)
-        return calibrate(Calibration::Measure, 0.0); // the stock firmware has no repeats and ignores R
+    // The stock firmware has no repeats and ignores R; the community's takes R0 and below as one.
+    if (!r || m_firmware == Firmware::Stock || r->value <= 1)
+        return calibrate(Calibration::Measure, 0.0);
     calibrate(Calibration::Measure, 0.0, int(r->value));
 }
 
@@ -201,25 +208,49 @@ void CarveraEmulator::breakTest(const GCodeBlock &block, const QByteArray &line)
     calibrate(Calibration::BreakTest, tolerance);
 }
 
-// One measurement of M491 R<n> per probing cycle; after the last, the mean becomes the tool's. The lines'
-// wording is Toffee's assumption: the source only says it prints each value, the spread and the value used.
+// M491 R<n> as the community firmware runs it (ATCHandler.cpp): each pass a fast and a slow probe and M493.1,
+// then 25 mm up for the operator to turn the cutter; after the last, M493.1 R<n> prints every pass's TLO, the
+// highest as "Using", the spread as "Max delta", and keeps the LOWEST contact's TLO (the shortest edge's).
+// The edge numbers come out as the firmware's do (equal values: "1, n").
 void CarveraEmulator::measureRepeatedly(Repeats repeats)
 {
     later(m_timing.probeMs, [this, r = std::move(repeats)]() mutable {
         const qsizetype i = r.triggers.size();
         const double trigger = r.trigger + m_repeatability * kRepeatSpread[size_t(i) % kRepeatSpread.size()];
-        say("[PRB:" + fixed(m_setter[0]) + ',' + fixed(m_setter[1]) + ',' + fixed(trigger) + ":1]");
+        const QByteArray xy = fixed(m_setter[0] + m_oneOff[0]) + ',' + fixed(m_setter[1] + m_oneOff[1]);
+        say("[PRB:" + xy + ',' + fixed(trigger - 0.01) + ":1]");
+        say("ok");
+        echo("G91 G0 Z2.000");
+        say("G38.6 Z-3.000 F150.000");
+        say("[PRB:" + xy + ',' + fixed(trigger) + ":1]");
+        say("ok");
         m_lastProbeZ = trigger;
         r.triggers.append(trigger);
-        say("TLO measurement " + QByteArray::number(i + 1) + " of " + QByteArray::number(r.count) + ": "
-            + fixed(trigger - m_refMz));
-        if (r.triggers.size() < r.count)
+        if (r.triggers.size() < r.count) {
+            echo("M493.1");
+            echo("G91 G0 Z25.000");
+            echo("G53 G0 X" + fixed(m_setter[0] + m_oneOff[0]) + " Y" + fixed(m_setter[1] + m_oneOff[1]));
+            say("G38.6 Z" + fixed(kZTravelLimit) + " F600.000");
             return measureRepeatedly(std::move(r));
-        const auto [low, high] = std::minmax_element(r.triggers.cbegin(), r.triggers.cend());
-        const double mean = std::accumulate(r.triggers.cbegin(), r.triggers.cend(), 0.0) / r.count;
+        }
+        say("M493.1 R" + QByteArray::number(r.count));
+        say("------------------ Measurements--------------------");
+        for (qsizetype n = 0; n < r.triggers.size(); ++n)
+            say("TLO value from measurement " + QByteArray::number(n + 1) + ": " + fixed(r.triggers[n] - m_refMz));
+        const auto high = std::max_element(r.triggers.cbegin(), r.triggers.cend());
+        const auto low = std::min_element(r.triggers.crbegin(), r.triggers.crend());
+        const qsizetype highIndex = high - r.triggers.cbegin() + 1;
+        const qsizetype lowIndex = r.triggers.size() - (low - r.triggers.crbegin());
+        say("------------------ Results------------------------------");
+        say("Using TLO value from measurement " + QByteArray::number(highIndex) + ": " + fixed(*high - m_refMz));
         say("Max delta: " + fixed(*high - *low));
-        say("Using TLO: " + fixed(mean - m_refMz));
-        takeTlo(mean);
+        say("Lowest cutting edge: " + QByteArray::number(highIndex)
+            + ", Highest cutting edge: " + QByteArray::number(lowIndex));
+        say("-----------------------------------------------------------");
+        say("ok");
+        takeTlo(*low);
+        echo("G53 G0 Z" + fixed(kClearanceZ));
+        m_mpos[2] = kClearanceZ;
         returnTo(r.startX, r.startY);
     });
 }
@@ -234,6 +265,7 @@ void CarveraEmulator::changeTool(const GCodeBlock &block, const QByteArray &line
     const auto h = block.value('H');
     if (!t || !plausible(h))
         return refuse(line);
+    m_oneOff = { 0.0, 0.0 };
     if (!isToolNumber(*t))
         return invalidTool(*t);
     const int n = int(*t);

@@ -115,8 +115,13 @@ private:
     void writeEntries(const QList<ControllerTool> &tools, Done done);
     // $I (which must say grblHAL), $G and $#, after the status read on connecting.
     void readBuild(Done done, const MachineStatus &status);
-    // The setter's cycle with the tool in the spindle: `next` gets the slow touch's machine Z.
-    void measure(Done done, std::function<void(double contactMz)> next);
+    // The setter's cycle with `tool` in the spindle, as its probe plan says: `next` gets each slow touch's
+    // machine Z.
+    void measure(int tool, Done done, std::function<void(QList<double> contactsMz)> next);
+    void touchEach(const SetterCycle &cycle, double wco, QList<double> contacts, Done done,
+        std::function<void(QList<double>)> next);
+    [[nodiscard]] static std::optional<double> contactIn(
+        const CommandReply &reply, const ToolSetter &setter, const Done &done);
     // Writes `tlo` for `tool` (table entry and G43 H, or G43.1) and reads it back: `next` once it holds.
     void writeOffset(int tool, double tlo, Done done, std::function<void(const QString &note)> next);
     // The tool in the spindle, or a refusal for T0.

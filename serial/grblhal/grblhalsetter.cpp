@@ -26,7 +26,7 @@ std::optional<int> GrblHalController::spindleTool(const Done &done, const QStrin
     return std::nullopt;
 }
 
-void GrblHalController::measure(Done done, std::function<void(double)> next)
+void GrblHalController::measure(int tool, Done done, std::function<void(QList<double>)> next)
 {
     if (!m_setter) {
         refuse(done,
@@ -34,8 +34,12 @@ void GrblHalController::measure(Done done, std::function<void(double)> next)
                "Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates)."));
         return;
     }
-    const ToolSetter setter = *m_setter;
-    readModal(done, [this, done, next, setter](const Modal &modal) {
+    const auto cycle = SetterCycle::of(*m_setter, probePlan(tool));
+    if (!cycle) {
+        refuse(done, tr("T%1 cannot be probed so: %2 Nothing was sent.").arg(tool).arg(cycle.error().message));
+        return;
+    }
+    readModal(done, [this, done, next, cycle = cycle.value()](const Modal &modal) {
         if (modal.inches) {
             refuse(done,
                 tr("grblHAL is in inches (G20), where its G10 and G38.2 take inches. Toffee %1 in "
@@ -43,7 +47,7 @@ void GrblHalController::measure(Done done, std::function<void(double)> next)
                     .arg(tr("probes")));
             return;
         }
-        readParameters(done, [this, done, next, setter, modal](const GrblHal::ParameterReport &report) {
+        readParameters(done, [this, done, next, cycle, modal](const GrblHal::ParameterReport &report) {
             // G38.2 takes work coordinates: the machine Z wanted, less the offset in force (the coordinate
             // system's, G92's and the tool's), which is what grblHAL's WCO is.
             double wco = report.toolLengthOffset ? report.toolLengthOffset->z() : 0.0;
@@ -52,72 +56,79 @@ void GrblHalController::measure(Done done, std::function<void(double)> next)
                 wco += it->z();
             if (const auto it = report.workOffsets.find(u"G92"_s); it != report.workOffsets.end())
                 wco += it->z();
-            const auto work = [wco](double machineZ) {
-                return number(machineZ - wco);
-            };
             const int motion = MachineLink::kMotionTimeoutMs;
-            auto touch = [done, setter](const CommandReply &reply) -> std::optional<double> {
-                std::optional<GrblHal::ProbeReport> found;
-                for (const QByteArray &line : reply.lines) {
-                    if (auto p = GrblHal::parseProbeReport(line))
-                        found = p;
-                }
-                if (!found || !found->touched) {
-                    SessionResult result;
-                    result.outcome = SessionResult::Outcome::MachineError;
-                    result.message = tr("The probe did not report a touch. Nothing was measured.");
-                    done(result);
-                    return std::nullopt;
-                }
-                // A contact outside the search (from the safe height down to the setter's lowest Z) is no
-                // contact the cycle can make: a reply to trust no further.
-                const double z = found->position.z();
-                if (z < setter.zMin - 1.0 || z > setter.safeZ + 1.0) {
-                    done(SessionResult::failed(SessionResult::Outcome::MachineError,
-                        tr("grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to "
-                           "%3 "
-                           "mm. Nothing was written or recorded; check the tool setter's settings and the "
-                           "machine.")
-                            .arg(mm(z), mm(setter.safeZ), mm(setter.zMin))));
-                    return std::nullopt;
-                }
-                return z;
-            };
+            const ToolSetter &setter = cycle.setter;
             run("M5", MachineLink::kDefaultTimeoutMs, done, [=, this](const CommandReply &) {
                 run("G53 G0 Z" + number(setter.safeZ), motion, done, [=, this](const CommandReply &) {
-                    run("G53 G0 X" + number(setter.x) + " Y" + number(setter.y), motion, done,
-                        [=, this](const CommandReply &) {
-                            run("G38.2 Z" + work(setter.zMin) + " F" + number(setter.seekFeed), motion, done,
-                                [=, this](const CommandReply &fast) {
-                                    const auto first = touch(fast);
-                                    if (!first)
-                                        return;
-                                    const double up = std::min(setter.safeZ, *first + setter.backoff);
-                                    const double down = std::max(setter.zMin, *first - setter.backoff);
-                                    run("G53 G0 Z" + number(up), motion, done,
-                                        [=, this](const CommandReply &) {
-                                            run("G38.2 Z" + work(down) + " F" + number(setter.latchFeed),
-                                                motion, done, [=, this](const CommandReply &slow) {
-                                                    const auto contact = touch(slow);
-                                                    if (!contact)
-                                                        return;
-                                                    run("G53 G0 Z" + number(setter.safeZ), motion, done,
-                                                        [=, this](const CommandReply &) {
-                                                            // "ok" to a move means queued; G4 P0's comes once
-                                                            // the machine has stopped, lifted.
-                                                            run("G4 P0", motion, done,
-                                                                [next, contact](const CommandReply &) {
-                                                                    next(atResolution(*contact));
-                                                                });
-                                                        });
-                                                });
-                                        });
-                                });
-                        });
+                    run("G53 G0 X" + number(cycle.x()) + " Y" + number(cycle.y()), motion, done,
+                        [=, this](const CommandReply &) { touchEach(cycle, wco, {}, done, next); });
                 });
             });
         });
     });
+}
+
+// The contact in a G38.2's reply, or `done` with why there is none to trust.
+std::optional<double> GrblHalController::contactIn(
+    const CommandReply &reply, const ToolSetter &setter, const Done &done)
+{
+    std::optional<GrblHal::ProbeReport> found;
+    for (const QByteArray &line : reply.lines) {
+        if (auto p = GrblHal::parseProbeReport(line))
+            found = p;
+    }
+    if (!found || !found->touched) {
+        done(SessionResult::failed(SessionResult::Outcome::MachineError,
+            tr("The probe did not report a touch. Nothing was measured.")));
+        return std::nullopt;
+    }
+    // A contact outside the search (from the safe height down to the setter's lowest Z) is no contact the
+    // cycle can make: a reply to trust no further.
+    const double z = found->position.z();
+    if (z < setter.zMin - 1.0 || z > setter.safeZ + 1.0) {
+        done(SessionResult::failed(SessionResult::Outcome::MachineError,
+            tr("grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to %3 mm. Nothing "
+               "was written or recorded; check the tool setter's settings and the machine.")
+                .arg(mm(z), mm(setter.safeZ), mm(setter.zMin))));
+        return std::nullopt;
+    }
+    return z;
+}
+
+// One touch (the search down, back off, the slow touch), then the next from clear of the setter, until the
+// plan's touches are made; then lifted to the safe height, and `next` gets every contact's machine Z.
+void GrblHalController::touchEach(
+    const SetterCycle &cycle, double wco, QList<double> contacts, Done done, std::function<void(QList<double>)> next)
+{
+    const auto work = [wco](double machineZ) { return number(machineZ - wco); };
+    const int motion = MachineLink::kMotionTimeoutMs;
+    const ToolSetter &setter = cycle.setter;
+    run("G38.2 Z" + work(setter.zMin) + " F" + number(setter.seekFeed), motion, done,
+        [=, this](const CommandReply &fast) {
+            const auto first = contactIn(fast, setter, done);
+            if (!first)
+                return;
+            const double up = std::min(setter.safeZ, *first + setter.backoff);
+            const double down = std::max(setter.zMin, *first - setter.backoff);
+            run("G53 G0 Z" + number(up), motion, done, [=, this](const CommandReply &) {
+                run("G38.2 Z" + work(down) + " F" + number(cycle.latchFeed()), motion, done,
+                    [=, this](const CommandReply &slow) {
+                        const auto contact = contactIn(slow, setter, done);
+                        if (!contact)
+                            return;
+                        QList<double> all = contacts;
+                        all << atResolution(*contact);
+                        const bool more = all.size() < cycle.plan.touches;
+                        const double lift = more ? cycle.liftBetween(*contact) : setter.safeZ;
+                        run("G53 G0 Z" + number(lift), motion, done, [=, this](const CommandReply &) {
+                            if (more)
+                                return touchEach(cycle, wco, all, done, next);
+                            // "ok" to a move means queued; G4 P0's comes once the machine has stopped, lifted.
+                            run("G4 P0", motion, done, [next, all](const CommandReply &) { next(all); });
+                        });
+                    });
+            });
+        });
 }
 
 // A jog ($J=, relative, in millimetres whatever G20/G21 is in force): grblHAL answers "ok" as it starts, so
@@ -183,11 +194,12 @@ void GrblHalController::probe(Done done)
     const auto tool = spindleTool(done, tr("measure"));
     if (!tool)
         return;
-    measure(done, [this, done, tool = *tool](double contact) {
+    measure(*tool, done, [this, done, tool = *tool](const QList<double> &touches) {
+        const double contact = highestTouch(touches);
         const bool first = !m_reference;
         const double reference = m_reference.value_or(contact);
         const double tlo = atResolution(contact - reference);
-        writeOffset(tool, tlo, done, [this, done, tool, tlo, contact, first, reference](const QString &note) {
+        writeOffset(tool, tlo, done, [this, done, tool, tlo, contact, first, reference, touches](const QString &note) {
             m_reference = reference;
             SessionResult result = tloResult(tool, tlo, contact);
             QStringList notes;
@@ -198,6 +210,13 @@ void GrblHalController::probe(Done done)
                              .arg(mm(reference));
             if (!note.isEmpty())
                 notes << note;
+            if (touches.size() > 1) {
+                result.tlo->touches = touches;
+                const SetterCycle cycle { *m_setter, probePlan(tool) };
+                notes.prepend(spreadFinding(tool, touches, cycle.plan)); // the finding first
+                notes << cycle.cannotTurnNote(u"grblHAL"_s);
+            }
+            notes.removeAll(QString());
             result.message = notes.join(u' ');
             done(result);
         });
@@ -217,9 +236,9 @@ void GrblHalController::breakTest(double tolerance, Done done, std::optional<dou
     const auto stored = breakBaseline(done, *tool, m_reference.has_value(), storedTlo, m_table, u"grblHAL"_s);
     if (!stored)
         return;
-    measure(done, [this, done, tolerance, stored, tool = *tool](double contact) {
-        done(breakVerdict(
-            tool, atResolution(*stored), atResolution(contact - *m_reference), tolerance, u"grblHAL"_s));
+    measure(*tool, done, [this, done, tolerance, stored, tool = *tool](const QList<double> &touches) {
+        done(breakVerdict(tool, atResolution(*stored), atResolution(highestTouch(touches) - *m_reference),
+            tolerance, u"grblHAL"_s, touches));
     });
 }
 

@@ -132,7 +132,9 @@ private:
     void locateTable(Done done, std::function<void()> next);
     void afterHello(Done done);
     // The setter's cycle with the tool in the spindle: `next` gets the slow touch's machine Z.
-    void measure(Done done, std::function<void(double contactMz)> next);
+    void measure(int tool, Done done, std::function<void(QList<double> contactsMz)> next);
+    void touchEach(const SetterCycle &cycle, double from, QList<double> contacts, Done done,
+        std::function<void(QList<double>)> next);
     void probeReady(Done done);
     void breakTestReady(double tolerance, Done done, std::optional<double> storedTlo);
     void touch(double from, double depth, double feed, const ToolSetter &setter, Done done,

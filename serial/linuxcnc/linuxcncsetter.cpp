@@ -100,7 +100,7 @@ void LinuxCncController::touch(double from, double depth, double feed, const Too
     });
 }
 
-void LinuxCncController::measure(Done done, std::function<void(double)> next)
+void LinuxCncController::measure(int tool, Done done, std::function<void(QList<double>)> next)
 {
     if (!m_setter) {
         refuse(done,
@@ -108,25 +108,41 @@ void LinuxCncController::measure(Done done, std::function<void(double)> next)
                "Setter…, or toffee-cli --setter X,Y,ZMIN in machine coordinates)."));
         return;
     }
-    const ToolSetter setter = *m_setter;
-    {
-        constexpr int motion = MachineLink::kMotionTimeoutMs;
-        const QList<QByteArray> approach { "M5", "G90 G53 G0 Z" + number(setter.safeZ),
-            "G53 G0 X" + number(setter.x) + " Y" + number(setter.y) };
-        mdiChain(approach, motion, done, [this, done, next, setter] {
-            touch(setter.safeZ, setter.safeZ - setter.zMin, setter.seekFeed, setter, done,
-                [this, done, next, setter](double first) {
-                    const double up = std::min(setter.safeZ, first + setter.backoff);
-                    const double down = std::max(setter.zMin, first - setter.backoff);
-                    mdi("G53 G0 Z" + number(up), motion, done, [=, this](const CommandReply &) {
-                        touch(up, up - down, setter.latchFeed, setter, done, [=, this](double contact) {
-                            mdi("G53 G0 Z" + number(setter.safeZ), motion, done,
-                                [next, contact](const CommandReply &) { next(contact); });
-                        });
-                    });
-                });
-        });
+    const auto cycle = SetterCycle::of(*m_setter, probePlan(tool));
+    if (!cycle) {
+        refuse(done, tr("T%1 cannot be probed so: %2 Nothing was sent.").arg(tool).arg(cycle.error().message));
+        return;
     }
+    const QList<QByteArray> approach { "M5", "G90 G53 G0 Z" + number(cycle.value().setter.safeZ),
+        "G53 G0 X" + number(cycle.value().x()) + " Y" + number(cycle.value().y()) };
+    mdiChain(approach, MachineLink::kMotionTimeoutMs, done,
+        [this, done, next, cycle = cycle.value()] { touchEach(cycle, cycle.setter.safeZ, {}, done, next); });
+}
+
+// One touch from machine Z `from` (the search down, back off, the slow touch), then the next from clear of
+// the setter, until the plan's touches are made; then lifted, and `next` gets every contact's machine Z.
+void LinuxCncController::touchEach(const SetterCycle &cycle, double from, QList<double> contacts, Done done,
+    std::function<void(QList<double>)> next)
+{
+    constexpr int motion = MachineLink::kMotionTimeoutMs;
+    const ToolSetter &setter = cycle.setter;
+    touch(from, from - setter.zMin, setter.seekFeed, setter, done, [=, this](double first) {
+        const double up = std::min(setter.safeZ, first + setter.backoff);
+        const double down = std::max(setter.zMin, first - setter.backoff);
+        mdi("G53 G0 Z" + number(up), motion, done, [=, this](const CommandReply &) {
+            touch(up, up - down, cycle.latchFeed(), setter, done, [=, this](double contact) {
+                QList<double> all = contacts;
+                all << contact;
+                const bool more = all.size() < cycle.plan.touches;
+                const double lift = more ? cycle.liftBetween(contact) : setter.safeZ;
+                mdi("G53 G0 Z" + number(lift), motion, done, [=, this](const CommandReply &) {
+                    if (more)
+                        return touchEach(cycle, lift, all, done, next);
+                    next(all);
+                });
+            });
+        });
+    });
 }
 
 void LinuxCncController::probe(Done done)
@@ -141,18 +157,28 @@ void LinuxCncController::probeReady(Done done)
     const auto tool = spindleTool(done, tr("measure"));
     if (!tool)
         return;
-    measure(done, [this, done, tool = *tool](double contact) {
+    measure(*tool, done, [this, done, tool = *tool](const QList<double> &touches) {
+        const double contact = highestTouch(touches);
         const bool first = !m_reference;
         const double reference = m_reference.value_or(contact);
         const double tlo = atResolution(contact - reference);
-        writeOffset(tool, tlo, done, [this, done, tool, tlo, contact, first, reference] {
+        writeOffset(tool, tlo, done, [this, done, tool, tlo, contact, first, reference, touches] {
             m_reference = reference;
             SessionResult result = tloResult(tool, tlo, contact);
+            QStringList notes;
             if (first)
-                result.message = tr("T%1 is this machine's reference tool (its TLO is 0): every tool is "
-                                    "measured against its contact at machine Z %2 mm.")
-                                     .arg(tool)
-                                     .arg(mm(reference));
+                notes << tr("T%1 is this machine's reference tool (its TLO is 0): every tool is "
+                            "measured against its contact at machine Z %2 mm.")
+                             .arg(tool)
+                             .arg(mm(reference));
+            if (touches.size() > 1) {
+                result.tlo->touches = touches;
+                const SetterCycle cycle { *m_setter, probePlan(tool) };
+                notes.prepend(spreadFinding(tool, touches, cycle.plan)); // the finding first
+                notes << cycle.cannotTurnNote(u"LinuxCNC"_s);
+            }
+            notes.removeAll(QString());
+            result.message = notes.join(u' ');
             done(result);
         });
     });
@@ -179,9 +205,9 @@ void LinuxCncController::breakTestReady(double tolerance, Done done, std::option
         m_table.value_or(QList<ControllerTool> {}), u"LinuxCNC"_s);
     if (!stored)
         return;
-    measure(done, [this, done, tolerance, stored, tool = *tool](double contact) {
-        done(breakVerdict(
-            tool, atResolution(*stored), atResolution(contact - *m_reference), tolerance, u"LinuxCNC"_s));
+    measure(*tool, done, [this, done, tolerance, stored, tool = *tool](const QList<double> &touches) {
+        done(breakVerdict(tool, atResolution(*stored), atResolution(highestTouch(touches) - *m_reference),
+            tolerance, u"LinuxCNC"_s, touches));
     });
 }
 

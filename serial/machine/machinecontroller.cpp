@@ -93,6 +93,7 @@ MachineController::Done MachineController::recording(Done done, RecordingKind ki
         const TloSource source = kind == RecordingKind::Probe ? TloSource::Probe : TloSource::Manual;
         recorded.recording = Recording { *r.tool, r.tlo->tlo(), source, r.tlo->knownReferenceMz(),
             std::nullopt, Clock::now(), kind, r.tlo->knownCurrentMz() };
+        recorded.recording->touches = r.tlo->touches;
         done(recorded);
     };
 }
@@ -106,18 +107,30 @@ MachineController::Done MachineController::recordingVerdict(Done done)
         SessionResult recorded = r;
         recorded.recording = Recording { *r.tool, std::nullopt, TloSource::Probe, std::nullopt, broken,
             Clock::now(), RecordingKind::BreakTest, std::nullopt, r.tolerance, r.breakTest->oldTlo,
-            r.breakTest->newTlo };
+            r.breakTest->newTlo, r.breakTest->touches };
         done(recorded);
     };
 }
 
-SessionResult MachineController::breakVerdict(
-    int tool, double stored, double measured, double tolerance, const QString &keptIn)
+QString MachineController::spreadFinding(int tool, const QList<double> &touches, const ProbePlan &plan)
+{
+    const double spread = spreadOf(touches);
+    if (touches.size() < 2 || !plan.spreadLimit || spread <= *plan.spreadLimit + 1e-9)
+        return {};
+    const auto mm = [](double v) { return formatNumber(v, NumberFormat::fixed(3)); };
+    return tr("T%1's edges differ by %2 mm (its limit %3 mm): runout or a chipped edge. Look at the cutter and "
+              "how it sits in its holder before it cuts.")
+        .arg(tool)
+        .arg(mm(spread), mm(*plan.spreadLimit));
+}
+
+SessionResult MachineController::breakVerdict(int tool, double stored, double measured, double tolerance,
+    const QString &keptIn, const QList<double> &touches) const
 {
     SessionResult result;
     result.tool = tool;
     result.tolerance = tolerance;
-    result.breakTest = BreakTestReading { stored, measured };
+    result.breakTest = BreakTestReading { stored, measured, touches.size() > 1 ? touches : QList<double> {} };
     const double difference = std::fabs(measured - stored);
     if (difference > tolerance) {
         const auto mm = [](double v) {
@@ -132,6 +145,10 @@ SessionResult MachineController::breakVerdict(
                   .arg(tool)
                   .arg(mm(measured), mm(stored), mm(difference),
                       formatNumber(tolerance, NumberFormat::upTo(3)), keptIn);
+    }
+    if (const QString spread = spreadFinding(tool, touches, probePlan(tool)); !spread.isEmpty()) {
+        result.outcome = SessionResult::Outcome::ToolBroken;
+        result.message = QString(result.message + u' ' + spread).trimmed();
     }
     return result;
 }

@@ -10,6 +10,7 @@
 #include <QObject>
 
 #include "model/limits.h"
+#include "model/probing.h"
 #include "model/recording.h"
 #include "model/result.h"
 #include "model/toolsetter.h"
@@ -141,6 +142,15 @@ public:
     // (grblHAL) is given the reference Toffee kept for the machine (the first tool measured on it), before
     // connecting: its TLOs are measured against it, and a probe without one makes the tool the reference.
     [[nodiscard]] virtual bool needsToolSetter() const { return false; }
+    // How each tool is probed (the table's settings, ToolTable::probePlan, or a command's own): every probe
+    // and break test of a tool, whichever operation starts it (a change measures too), asks here. Plain (one
+    // touch at the centre) when nobody said.
+    using ProbePlans = std::function<ProbePlan(int tool)>;
+    void setProbePlans(ProbePlans plans) { m_probePlans = std::move(plans); }
+    [[nodiscard]] ProbePlan probePlan(int tool) const { return m_probePlans ? m_probePlans(tool) : ProbePlan {}; }
+    // What a spread of `touches` wider than the plan's limit says ("T3's edges differ by 0.060 mm: runout or
+    // a chipped edge…"); empty within it, or without a limit.
+    [[nodiscard]] static QString spreadFinding(int tool, const QList<double> &touches, const ProbePlan &plan);
     virtual void setToolSetter(const ToolSetter &setter) { Q_UNUSED(setter) }
     [[nodiscard]] virtual std::optional<ToolSetter> toolSetter() const { return std::nullopt; }
     static constexpr double kMaxJogStepMm = 50.0;
@@ -251,8 +261,10 @@ protected:
     static SessionResult failure(const CommandReply &reply);
     // A break test Toffee compares itself (grblHAL, LinuxCNC): `measured` against `stored` for `tool` at
     // `tolerance`, broken when further apart, the stored TLO said to be kept in the table and in `keptIn`.
-    [[nodiscard]] static SessionResult breakVerdict(
-        int tool, double stored, double measured, double tolerance, const QString &keptIn);
+    // With several `touches` (measured is the highest's), edges further apart than the tool's spread limit
+    // are broken too: a chipped edge.
+    [[nodiscard]] SessionResult breakVerdict(int tool, double stored, double measured, double tolerance,
+        const QString &keptIn, const QList<double> &touches = {}) const;
     // What such a break test compares with, or `done` refused: the machine's reference must be kept
     // (`hasReference`), and a stored TLO found: the table's (`storedTlo`), else the controller's own entry
     // for `tool` in `table` unless it is empty (0.000, as pull-offsets reads it); never the offset in force,
@@ -275,6 +287,7 @@ private:
 
     QString m_operatorAbsent;
     std::optional<PendingToolChange> m_change;
+    ProbePlans m_probePlans;
 };
 
 } // namespace Toffee

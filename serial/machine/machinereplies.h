@@ -9,6 +9,7 @@
 
 #include <QByteArrayView>
 #include <QCoreApplication>
+#include <QList>
 #include <QString>
 
 #include "model/limits.h"
@@ -47,6 +48,9 @@ struct TloReading
     double tloInForce = 0.0;
     std::optional<double> referenceMz;
     std::optional<double> currentMz;
+    // Each touch's machine Z, in the order made, when the tool was touched more than once (the Carvera's
+    // M491 R; Toffee's cycle with a tool's touches): currentMz is the highest, the longest edge's.
+    QList<double> touches = {};
 
     // At the machine's resolution (it reports 0.001 mm): never -33.388000000000005.
     [[nodiscard]] double tlo() const { return std::round(tloInForce * 1000.0) / 1000.0; }
@@ -68,6 +72,7 @@ struct BreakTestReading
 {
     double oldTlo = 0.0;
     double newTlo = 0.0;
+    QList<double> touches = {}; // as TloReading's: newTlo is the highest touch's
 };
 
 // Which controller and firmware the machine runs, and what it can do, as it said on connecting. The Carvera

@@ -99,34 +99,57 @@ private Q_SLOTS:
         }
     }
 
+    // As the community firmware runs M491 R<n> (ATCHandler.cpp, seen on it): a pass per measurement, 25 mm up
+    // between them, then M493.1 R<n>'s summary; the "Using" line is the highest contact's (the longest edge),
+    // but the TLO kept is the lowest's (the shortest edge).
     void repeatsAMeasurement()
     {
         CarveraEmulator emulator;
         command(emulator, "M493.2 T2");
         emulator.setRepeatability(0.01);
         const Lines out = command(emulator, "M491 R3");
-        const qsizetype first = out.indexOf("TLO measurement 1 of 3: 9.652");
+        QCOMPARE(out.count("G91 G0 Z25.000"), 2);
+        QVERIFY(out.contains("[PRB:-4.965,-54.480,-105.678:1]"));
+        const qsizetype first = out.indexOf("M493.1 R3");
         QVERIFY2(first > 0, out.join('\n').constData());
-        QCOMPARE(out.at(first - 1), QByteArray("[PRB:-4.965,-54.480,-105.688:1]"));
-        const Lines tail { "TLO measurement 1 of 3: 9.652", "[PRB:-4.965,-54.480,-105.678:1]",
-            "TLO measurement 2 of 3: 9.662", "[PRB:-4.965,-54.480,-105.698:1]",
-            "TLO measurement 3 of 3: 9.642", "Max delta: 0.020", "Using TLO: 9.652",
+        const Lines tail { "M493.1 R3", "------------------ Measurements--------------------",
+            "TLO value from measurement 1: 9.652", "TLO value from measurement 2: 9.662",
+            "TLO value from measurement 3: 9.642", "------------------ Results------------------------------",
+            "Using TLO value from measurement 2: 9.662", "Max delta: 0.020",
+            "Lowest cutting edge: 2, Highest cutting edge: 3",
+            "-----------------------------------------------------------", "ok", "G53 G0 Z-3.000", "ok",
             "Return to XY position: X-2.000 Y-2.000", "Done ATC" };
         QCOMPARE(out.mid(first), tail);
-        QVERIFY(near(emulator.tlo(), 9.652));
+        QVERIFY(near(emulator.tlo(), 9.642));
         QVERIFY(!out.contains("M493.1 R1"));
+        // Equal passes: the firmware's edge numbers come out "1, n".
+        emulator.setRepeatability(0.0);
+        QVERIFY(command(emulator, "M491 R2").contains("Lowest cutting edge: 1, Highest cutting edge: 2"));
+    }
+
+    // M491 X<dx> Y<dy>: the touch-off point moves from the setter's, for that M491 only.
+    void touchesOffCentre()
+    {
+        CarveraEmulator emulator;
+        command(emulator, "M493.2 T2");
+        Lines out = command(emulator, "M491 X-5 Y-3");
+        QVERIFY2(out.contains("G53 G0 X-9.965 Y-57.480"), out.join('\n').constData());
+        QVERIFY(out.contains("[PRB:-9.965,-57.480,-105.688:1]"));
+        out = command(emulator, "M491");
+        QVERIFY(out.contains("G53 G0 X-4.965 Y-54.480"));
     }
 
     void refusesRepeatsOutOfRange()
     {
         CarveraEmulator emulator;
-        for (const QByteArray line : { "M491 R0", "M491 R11", "M491 R2.5", "M491 R" })
+        for (const QByteArray line : { "M491 R256", "M491 R2.5", "M491 R" })
             QCOMPARE(command(emulator, line), Lines { "error:Unsupported command - " + line });
         QVERIFY(!emulator.isHalted());
+        QVERIFY(command(emulator, "M491 R0").contains("M493.1 R1")); // the firmware takes R0 as one
         emulator.setFirmware(Firmware::Stock); // R ignored: one plain measurement
         const Lines out = command(emulator, "M491 R11");
         QVERIFY(out.contains("M493.1 R1"));
-        QVERIFY(!out.join('\n').contains("TLO measurement"));
+        QVERIFY(!out.join('\n').contains("TLO value from measurement"));
     }
 
     void changesARackToolAndAlwaysMeasuresIt()

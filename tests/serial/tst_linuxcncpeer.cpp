@@ -273,6 +273,39 @@ private Q_SLOTS:
         QCOMPARE(m_peer->get("tool"), QByteArray("3"));
     }
 
+    // T3 as a face mill: three touches 5 mm off the setter's centre, each said, the TLO from the highest; the
+    // same length every time here (LinuxCNC's setter has one per tool), so the spread is the latch's own.
+    // LinuxCNC cannot turn the spindle to an angle: said. A break test touches as often.
+    void aToolTouchedOnEachEdgeOffCentre()
+    {
+        ProbePlan plan;
+        plan.touches = 3;
+        plan.offsetX = 5.0;
+        plan.spreadLimit = 0.05;
+        m_connection.setProbePlans([plan](int tool) { return tool == 3 ? plan : ProbePlan {}; });
+        SessionResult r = await([this](auto d) { return m_connection.probe(d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(r.tlo->touches.size(), 3);
+        QVERIFY2(spreadOf(r.tlo->touches) <= 0.004, qPrintable(QString::number(spreadOf(r.tlo->touches))));
+        QCOMPARE(*r.tlo->currentMz, highestTouch(r.tlo->touches));
+        QVERIFY(std::fabs(r.tlo->tlo() + 2.0) < 0.01);
+        QCOMPARE(r.recording->touches, r.tlo->touches);
+        QVERIFY2(r.message.contains(u"LinuxCNC cannot turn its spindle"_s), qPrintable(r.message));
+        QVERIFY2(!r.message.contains(u"edges differ"_s), qPrintable(r.message));
+        const QList<QByteArray> xyz = m_peer->get("abs_act_pos").simplified().split(' ');
+        QVERIFY2(std::fabs(xyz.value(0).toDouble() - 15.0) < 0.01, m_peer->get("abs_act_pos").constData());
+        QVERIFY(std::fabs(machineZ()) < 0.01);
+        r = await([this](auto d) { return m_connection.breakTest(0.1, d, -2.0); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
+        QCOMPARE(r.breakTest->touches.size(), 3);
+        // A touch-off point beyond the machine: refused before anything moves.
+        plan.offsetX = 150.0;
+        m_connection.setProbePlans([plan](int) { return plan; });
+        r = await([this](auto d) { return m_connection.probe(d); });
+        QCOMPARE(r.outcome, SessionResult::Outcome::Refused);
+        m_connection.setProbePlans(nullptr);
+    }
+
     // Push: a tool not in LinuxCNC's table refuses the whole push by name; the others written and read back
     // from the file. Pull reads the file as LinuxCNC rewrote it.
     void pushIsAllOrNothingAndPullReadsTheFile()

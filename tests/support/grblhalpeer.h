@@ -169,6 +169,9 @@ public:
         return writeSetterFile(text);
     }
 
+    // The setter file as written ("T3 20 20.03 20.06": one length per cutting edge, taken in turn).
+    bool writeSetterText(const QByteArray &text) { return writeSetterFile(text); }
+
     void stop()
     {
         if (m_process.state() == QProcess::NotRunning)
