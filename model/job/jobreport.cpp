@@ -26,6 +26,7 @@ Severity findingSeverity(FindingKind kind)
     case FindingKind::ProgramSetsTlo:
     case FindingKind::ControllerTableDiffers:
     case FindingKind::LifeExceeded:
+    case FindingKind::SpreadExceeded:
         return Severity::Warning;
     }
     return Severity::Error;
@@ -64,6 +65,8 @@ QString findingKey(FindingKind kind)
         return u"controller_table_differs"_s;
     case FindingKind::LifeExceeded:
         return u"life_exceeded"_s;
+    case FindingKind::SpreadExceeded:
+        return u"spread_exceeded"_s;
     }
     return {};
 }

@@ -32,6 +32,7 @@ enum class FindingKind : quint8 {
     ProgramSetsTlo, // the Carvera program sets a tool's TLO to another value than the table's (warning)
     ControllerTableDiffers, // grblHAL's own table holds another TLO for the tool than the file (warning)
     LifeExceeded, // the program takes the tool past its life limit (minutes of cutting or uses) (warning)
+    SpreadExceeded, // its last measurement's edges lay further apart than its spread limit (warning)
 };
 
 [[nodiscard]] Severity findingSeverity(FindingKind kind);

@@ -163,6 +163,12 @@ void JobChecker::toolFindings(const JobTool &tool)
     judgeTool(tool.number, facts,
         [this, &tool](FindingKind kind, const auto &message) { noteForTool(kind, tool, message()); });
     lifeFinding(tool, facts);
+    if (facts.spreadLimit && facts.lastSpread && *facts.lastSpread > *facts.spreadLimit + 1e-9)
+        noteForTool(FindingKind::SpreadExceeded, tool,
+            tr("T%1's edges differed by %2 when it was last measured, more than its limit %3: runout or a "
+               "chipped edge. Look at the cutter and how it sits in its holder before it cuts.")
+                .arg(tool.number)
+                .arg(millimetres(*facts.lastSpread), millimetres(*facts.spreadLimit)));
 }
 
 // As FANUC's tool-life management counts: the minutes of cutting and the programs since the cutter went in,

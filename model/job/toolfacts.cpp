@@ -88,6 +88,7 @@ QHash<int, ToolFacts> factsFromTable(const ToolTable &table)
         f.broken = tool.breakTestFailed;
         f.lifeLimitMinutes = tool.lifeLimitMinutes;
         f.lifeLimitUses = tool.lifeLimitUses;
+        f.spreadLimit = table.probePlan(tool.number).spreadLimit;
     }
     return facts;
 }
@@ -186,6 +187,10 @@ Result<void> addLibraryFacts(
         }
         const auto &m = measured.value();
         const auto &t = tested.value();
+        // The newest touches on each edge: a probe's, or a later break test's.
+        const HistoryEvent *newestMeasured = t && (!m || t->at > m->at) ? &*t : m ? &*m : nullptr;
+        if (newestMeasured)
+            f.lastSpread = newestMeasured->spread();
         if (!t || !t->failed.value_or(false))
             continue;
         // Only a probe clears a failed break test (an offset set by hand does not: the tool was not

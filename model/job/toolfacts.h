@@ -43,6 +43,10 @@ struct ToolFacts
     std::optional<double> lifeLimitMinutes;
     std::optional<int> lifeLimitUses;
     UsedLife used;
+    // The tool's spread limit (millimetres), and the spread of its newest measurement touched on each edge
+    // (the history's probe or break test), when it has them.
+    std::optional<double> spreadLimit;
+    std::optional<double> lastSpread;
 
     // Measured within `staleDays` of `now`, and not after it (Clock::isInFuture: beyond the clocks' skew).
     [[nodiscard]] bool isFresh(const QDateTime &now, int staleDays) const;
