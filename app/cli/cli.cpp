@@ -22,6 +22,12 @@ Tool tables:
   new-cutter N --table FILE  another cutter in T N's pocket: its TLO, length, wear and break mark end (the
                              TLO kept in the history as the old cutter's, --machine NAME); measure it before
                              it cuts
+  probing N --table FILE [--set SETTINGS]
+                             how T N is measured on the tool setter, shown or set: "X 20, Y 0" (the
+                             touch-off point from the setter's centre, in the table's units), "4 edges"
+                             (one touch each by default), "3 touches", "same edge" (no turn between touches),
+                             "latch 20" (the slow touch's feed per minute), "spread 0.03" (edges further
+                             apart are a finding); --set "" for one touch at the centre
   export --dialect D TABLE   the program that loads TABLE into a controller (--tool N for one tool)
   simulate --dialect D PROGRAM [--table FILE] [--samples N]
                              run PROGRAM as controller D would: where each move ends, and the offsets after
@@ -52,6 +58,14 @@ The machine: toffee-cli (--port DEV [--baud N] | --host HOST[:PORT] | --emulator
   report                     the tool length offsets (M493.4)
   probe                      measure the current tool on the tool setter (M491); the machine moves
   break-test [--tolerance H] re-measure and compare with the stored TLO (M491.1; H >= %1, default %2)
+  probe, break-test, change-tool: as --table's tool settings say (toffee-cli probing), or for this command
+  --touches N                touch N times (one per cutting edge), the TLO from the longest; each touch and
+                             their spread printed (JSON: "touches", "spread") and kept in the history
+  --offset X,Y               touch off X,Y mm from the setter's centre (a face mill's edge)
+  measure-repeatability N --touches K
+                             touch T N (in the spindle) K times on the same edge: the setter's spread, and
+                             the smallest break-test tolerance it can trust, kept for the machine; the tool's
+                             TLO recorded as a probe's; the machine moves
   set-tlo --z V              set the TLO directly, in millimetres whatever the table's units (M493.3 Z)
   set-tlo --above-z0 H       set the TLO from the current position, the tip H above work Z0 (M493.3 Z)
   select-tool N              make tool N active without a change (M493.2 T)
@@ -142,7 +156,8 @@ QString usage()
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
     u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s, u"library"_s,
     u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s, u"host"_s,
-    u"protocol"_s, u"seconds"_s, u"discovery-port"_s, u"controller"_s, u"setter"_s, u"ini"_s };
+    u"protocol"_s, u"seconds"_s, u"discovery-port"_s, u"controller"_s, u"setter"_s, u"ini"_s,
+    u"touches"_s, u"offset"_s, u"set"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"version"_s, u"emulator"_s, u"no-history"_s,
     u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s, u"same-machine"_s, u"anyway"_s };
 
@@ -212,6 +227,7 @@ const std::pair<QStringView, Command> kTableCommands[] = {
     { u"show", showTable },
     { u"convert", convertTable },
     { u"new-cutter", newCutter },
+    { u"probing", probingSettings },
     { u"export", exportOffsets },
     { u"simulate", simulateProgram },
     { u"import", importTools },

@@ -42,6 +42,7 @@ void printJson(Invocation &call, const QJsonObject &object);
 int showTable(Invocation &call);
 int convertTable(Invocation &call);
 int newCutter(Invocation &call);
+int probingSettings(Invocation &call);
 int importTools(Invocation &call);
 int exportOffsets(Invocation &call);
 int simulateProgram(Invocation &call);

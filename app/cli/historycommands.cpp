@@ -41,6 +41,13 @@ QJsonObject eventJson(const HistoryEvent &e)
         o.insert(u"new_tlo"_s, jsonNumber(e.newTlo));
         o.insert(u"failed"_s, e.failed ? QJsonValue(*e.failed) : QJsonValue());
     }
+    if (!e.touches.isEmpty()) {
+        QJsonArray touches;
+        for (double z : e.touches)
+            touches.append(z);
+        o.insert(u"touches"_s, touches);
+        o.insert(u"spread"_s, jsonNumber(e.spread()));
+    }
     return o;
 }
 
@@ -55,6 +62,8 @@ void printText(Invocation &call, const QList<HistoryEvent> &events)
             call.out << "  old cutter's TLO " << formatNumber(*e.oldTlo, NumberFormat::fixed(3)) << " ended";
         if (e.kind == EventKind::BreakTest && e.failed)
             call.out << (*e.failed ? "  FAILED" : "  passed");
+        if (const auto spread = e.spread())
+            call.out << "  " << e.touches.size() << " touches, spread " << formatNumber(*spread, NumberFormat::fixed(3));
         call.out << '\n';
     }
     call.out << events.size() << (events.size() == 1 ? " event" : " events") << Qt::endl;

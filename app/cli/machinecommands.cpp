@@ -36,7 +36,7 @@ namespace {
 
 const QStringList kMachineCommands = { u"status"_s, u"report"_s, u"probe"_s, u"break-test"_s, u"set-tlo"_s,
     u"select-tool"_s, u"change-tool"_s, u"restore"_s, u"unlock"_s, u"stop"_s, u"link-test"_s, u"rack"_s,
-    u"measure-rack"_s, u"check-rack"_s, u"push-offsets"_s, u"pull-offsets"_s };
+    u"measure-rack"_s, u"check-rack"_s, u"push-offsets"_s, u"pull-offsets"_s, u"measure-repeatability"_s };
 
 // After a stop, how long the machine is given to come to rest before its status is read.
 constexpr int kStopSettleMs = 300;
@@ -72,6 +72,31 @@ QJsonArray axes(const std::array<double, 3> &a)
     return { a[0], a[1], a[2] };
 }
 
+namespace {
+
+// Each touch's machine Z and their spread, in the JSON (an empty list and null for one touch) and after the
+// line printed ("4 touches, spread 0.060 mm").
+void addTouches(QJsonObject &o, const QList<double> &touches)
+{
+    QJsonArray list;
+    for (double z : touches)
+        list.append(z);
+    o.insert(u"touches"_s, list);
+    o.insert(u"spread"_s, touches.size() > 1 ? QJsonValue(spreadOf(touches)) : QJsonValue());
+}
+
+QString touchesLine(const QList<double> &touches)
+{
+    if (touches.size() < 2)
+        return {};
+    QStringList each;
+    for (double z : touches)
+        each << mm(z);
+    return u"; %1 touches at machine Z %2, spread %3 mm"_s.arg(touches.size()).arg(each.join(u", "_s), mm(spreadOf(touches)));
+}
+
+} // namespace
+
 void printTlo(Invocation &call, const SessionResult &r, const QString &trendWarning, const QString &history)
 {
     const int tool = r.tool.value_or(-1);
@@ -83,6 +108,9 @@ void printTlo(Invocation &call, const SessionResult &r, const QString &trendWarn
     if (call.json) {
         QJsonObject o { { u"tool"_s, tool }, { u"reference_mz"_s, json(r.tlo->referenceMz) },
             { u"current_mz"_s, json(r.tlo->currentMz) }, { u"tlo"_s, r.tlo->tlo() } };
+        addTouches(o, r.tlo->touches);
+        if (!r.message.isEmpty())
+            o.insert(u"note"_s, r.message);
         if (!trendWarning.isEmpty())
             o.insert(u"trend_warning"_s, trendWarning);
         if (!history.isEmpty())
@@ -96,7 +124,7 @@ void printTlo(Invocation &call, const SessionResult &r, const QString &trendWarn
                  << mm(*r.tlo->referenceMz) << ")";
     else if (r.tlo->referenceMz)
         call.out << " (reference MCS Z " << mm(*r.tlo->referenceMz) << ")";
-    call.out << Qt::endl;
+    call.out << touchesLine(r.tlo->touches) << Qt::endl;
 }
 
 void printStatus(
@@ -135,14 +163,15 @@ void printBreakTest(Invocation &call, const SessionResult &r)
     const double diff = std::fabs(r.breakTest->newTlo - r.breakTest->oldTlo);
     const bool broken = r.outcome == SessionResult::Outcome::ToolBroken;
     if (call.json) {
-        printJson(call,
-            QJsonObject { { u"old_tlo"_s, r.breakTest->oldTlo }, { u"new_tlo"_s, r.breakTest->newTlo },
-                { u"difference"_s, diff }, { u"tolerance"_s, r.tolerance }, { u"broken"_s, broken } });
+        QJsonObject o { { u"old_tlo"_s, r.breakTest->oldTlo }, { u"new_tlo"_s, r.breakTest->newTlo },
+            { u"difference"_s, diff }, { u"tolerance"_s, r.tolerance }, { u"broken"_s, broken } };
+        addTouches(o, r.breakTest->touches);
+        printJson(call, o);
     } else {
         call.out << "T" << r.tool.value_or(-1) << ": old TLO " << mm(r.breakTest->oldTlo) << ", new "
                  << mm(r.breakTest->newTlo) << ", difference " << mm(diff) << " (tolerance "
                  << formatNumber(r.tolerance, NumberFormat::upTo(3)) << "): " << (broken ? "BROKEN" : "OK")
-                 << Qt::endl;
+                 << touchesLine(r.breakTest->touches) << Qt::endl;
     }
     if (broken)
         call.err << "toffee-cli: " << r.message << Qt::endl;
@@ -200,6 +229,8 @@ void MachineRun::operate()
         started = c.report(printed([this](const SessionResult &r) { printTlo(m_call, r); }));
     else if (command == u"probe")
         started = c.probe(recorded());
+    else if (command == u"measure-repeatability")
+        started = measureRepeatability();
     else if (command == u"change-tool")
         started = c.changeTool(m_options.tool, recorded(), storedTloForChange(m_call, m_options, c));
     else if (isRackCommand(command) && !c.firmware().hasRack())

@@ -24,7 +24,8 @@ namespace {
 
 bool wantsTool(const Invocation &call)
 {
-    return call.command == u"select-tool" || call.command == u"change-tool" || call.command == u"restore";
+    return call.command == u"select-tool" || call.command == u"change-tool" || call.command == u"restore"
+        || call.command == u"measure-repeatability";
 }
 
 Result<void> countArguments(const Invocation &call, MachineOptions &)
@@ -68,6 +69,28 @@ Result<void> readCommandOptions(const Invocation &call, MachineOptions &o)
             return r;
         (name == u"z" ? o.z : o.aboveZ0) = *v;
     }
+    if (call.has(u"touches"_s)) {
+        const auto n = parseInteger(call.option(u"touches"_s).toUtf8());
+        if (!n || *n < 1 || *n > ProbeSettings::kMaxTouches)
+            return Error { u"--touches must be a whole number from 1 to %1."_s.arg(ProbeSettings::kMaxTouches) };
+        o.touches = int(*n);
+    }
+    if (call.has(u"offset"_s)) {
+        const QStringList xy = call.option(u"offset"_s).split(u',');
+        const auto x = parseDecimal(xy.value(0).trimmed().toUtf8());
+        const auto y = parseDecimal(xy.value(1).trimmed().toUtf8());
+        if (xy.size() != 2 || !x || !y)
+            return Error { u"--offset must be X,Y in millimetres from the setter's centre, such as 20,0."_s };
+        o.offset = std::pair(*x, *y);
+    }
+    if (call.command == u"measure-repeatability") {
+        if (!o.touches || *o.touches < 2)
+            return Error { u"measure-repeatability needs --touches K, 2 to %1: the touches the setter's spread is "
+                           "measured over."_s.arg(ProbeSettings::kMaxTouches) };
+        o.sameEdge = true;
+    }
+    if (auto valid = o.probePlan(0).validate(); !valid)
+        return Error { valid.error().message };
     if (call.command == u"link-test" && call.has(u"count"_s)) {
         const auto c = parseInteger(call.option(u"count"_s).toUtf8());
         if (!c || *c < 1 || *c > 10000000)
@@ -161,7 +184,7 @@ Result<void> openHistory(const Invocation &call, MachineOptions &o)
     // Only what records needs the library: status, report, select-tool, unlock and link-test work without
     // one.
     static const QStringList kRecording = { u"probe"_s, u"break-test"_s, u"set-tlo"_s, u"change-tool"_s,
-        u"restore"_s, u"measure-rack"_s, u"check-rack"_s, u"pull-offsets"_s };
+        u"restore"_s, u"measure-rack"_s, u"check-rack"_s, u"pull-offsets"_s, u"measure-repeatability"_s };
     const bool unlock = call.command == u"unlock"_s;
     if (!kRecording.contains(call.command) && !unlock)
         return {};
@@ -370,6 +393,18 @@ Result<MachineOptions> readMachineOptions(const Invocation &call)
             return r.error();
     }
     return o;
+}
+
+ProbePlan MachineOptions::probePlan(int tool) const
+{
+    ProbePlan plan = table ? table->probePlan(tool) : ProbePlan {};
+    if (touches)
+        plan.touches = *touches;
+    if (offset)
+        std::tie(plan.offsetX, plan.offsetY) = *offset;
+    if (sameEdge)
+        plan.turn = false;
+    return plan;
 }
 
 } // namespace Toffee::Cli

@@ -36,6 +36,14 @@ struct MachineOptions
     QList<int> rack; // --rack: the tools the machine's rack holds (1-6, a C1's, by default)
     bool useStoredTlo = false; // change-tool: a manual change takes the tool's fresh stored TLO
     int staleDays = 7; // --stale-days: what "fresh" means
+    // probe, break-test, change-tool: --touches N and --offset X,Y for this command, over the tool's own
+    // settings (the table's).
+    std::optional<int> touches;
+    std::optional<std::pair<double, double>> offset;
+    bool sameEdge = false; // measure-repeatability: every touch on the same edge
+
+    // How `tool` is probed: the table's settings, with this command's overrides.
+    [[nodiscard]] ProbePlan probePlan(int tool) const;
 };
 
 // The rack commands (rack, measure-rack, check-rack) on a connected machine. `record` keeps a measurement or

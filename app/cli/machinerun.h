@@ -57,6 +57,7 @@ public:
             target.reference = m_options.target.reference;
             return QString();
         });
+        m_connection.setProbePlans([this](int tool) { return m_options.probePlan(tool); });
         QObject::connect(
             &m_connection, &MachineConnection::stateChanged, &m_loop, [this](MachineConnection::State state) {
                 if (state == MachineConnection::State::Connected && !std::exchange(m_started, true))
@@ -112,6 +113,9 @@ private:
     [[nodiscard]] Done printed(std::function<void(const SessionResult &)> print);
     // A probe or a manual offset: recorded, then printed.
     [[nodiscard]] Done recorded();
+    // measure-repeatability: the tool in the spindle touched K times on one edge, probed and recorded as a
+    // probe, and the setter's spread kept for the machine (machinerunrecording.cpp).
+    [[nodiscard]] bool measureRepeatability();
 
     Invocation &m_call;
     MachineOptions m_options;

@@ -177,8 +177,53 @@ MachineRun::Done MachineRun::recorded()
         }
         if (record(r))
             printTlo(m_call, r, m_trendWarning, m_history);
+        // What the operation found besides its numbers (the reference made, edges too far apart), on stderr.
+        if (!r.message.isEmpty())
+            m_call.err << "toffee-cli: note: " << r.message << Qt::endl;
         finishWith(r);
     };
+}
+
+bool MachineRun::measureRepeatability()
+{
+    const int tool = m_options.tool;
+    if (m_connection.activeTool() != tool) {
+        finishWith(SessionResult::failed(SessionResult::Outcome::Refused,
+            u"The machine says T%1 is in the spindle, not T%2: put T%2 in (select-tool %2) first. Nothing was "
+            "sent."_s.arg(m_connection.activeTool().value_or(Limits::kEmptySpindle))
+                .arg(tool)));
+        return true;
+    }
+    return m_connection.probe([this, tool](const SessionResult &r) {
+        if (!r.ok() || !r.tlo)
+            return finishWith(r);
+        (void)record(r);
+        SetterRepeatability measured { tool, r.recording ? r.recording->at : Clock::now(), r.tlo->touches };
+        const double spread = measured.spread();
+        // Twice the spread, and never below the firmware's smallest: the tolerance a break test can trust here.
+        const double trusted = std::max(Limits::kMinBreakTolerance, std::ceil(2.0 * spread * 1000.0) / 1000.0);
+        QString kept = u"not_recorded"_s;
+        if (m_options.library) {
+            auto saved = m_options.library->setRepeatability(m_options.machine, measured);
+            kept = saved ? u"recorded"_s : u"not_recorded"_s;
+            if (!saved)
+                m_call.err << "toffee-cli: the setter's repeatability was not kept: " << saved.error().message
+                           << Qt::endl;
+        }
+        if (m_call.json) {
+            QJsonArray touches;
+            for (double z : measured.touches)
+                touches.append(z);
+            printJson(m_call,
+                QJsonObject { { u"tool"_s, tool }, { u"touches"_s, touches }, { u"spread"_s, spread },
+                    { u"smallest_tolerance"_s, trusted }, { u"tlo"_s, r.tlo->tlo() }, { u"history"_s, kept } });
+        } else {
+            m_call.out << "T" << tool << " touched " << measured.touches.size() << " times on the same edge: the setter "
+                       << "repeats within " << mm(spread) << " mm; a break test can trust a tolerance of "
+                       << mm(trusted) << " mm or more." << Qt::endl;
+        }
+        finishWith(r);
+    });
 }
 
 } // namespace Toffee::Cli::Machine

@@ -189,6 +189,50 @@ private Q_SLOTS:
         QVERIFY(tool(1)[u"break_test_failed"_s].toBool());
         QCOMPARE(json(machine({ u"status"_s }))[u"halt_reason"_s].toInt(), 4); // the firmware's own verdict
     }
+
+    // The firmware's own repeats and one-off touch-off point: M491 R3 (its summary read, every pass a touch,
+    // the TLO the firmware keeps equal to Toffee's, which is the longest edge's), M491 X-5 Y-3, and an X the
+    // machine cannot reach (its soft limit) said in its words, nothing recorded.
+    void theFirmwareTouchesEachEdgeAndOffCentre()
+    {
+        CarveraPeer peer;
+        QVERIFY2(peer.started(), qPrintable(peer.errors()));
+        m_port = peer.uart();
+        QFile::remove(table());
+        {
+            QFile file(table());
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(R"({"format": "toffee-tool-table", "version": 5, "units": "mm", "tools": [
+{"number": 1, "pocket": 1, "flutes": 3, "spread_limit": 0.02}]})");
+        }
+        QCOMPARE(machine({ u"select-tool"_s, u"1"_s }).exitCode, 0);
+        // Three edges: M491 R3.
+        Run run = machine({ u"probe"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        const QJsonArray touches = json(run)[u"touches"_s].toArray();
+        QCOMPARE(touches.size(), 3);
+        for (const QJsonValue &z : touches)
+            QCOMPARE(fixed3(z), u"-108.425"_s); // the simulator's setter gives every pass the same length
+        QCOMPARE(json(run)[u"spread"_s].toDouble(), 0.0);
+        QCOMPARE(fixed3(json(run)[u"tlo"_s]), u"6.915"_s);
+        // What the firmware keeps in force is Toffee's TLO.
+        QCOMPARE(fixed3(json(machine({ u"status"_s }))[u"tlo"_s]), u"6.915"_s);
+        QCOMPARE(fixed3(tool(1)[u"measured_tlo"_s]), u"6.915"_s);
+        QVERIFY2(run.err.contains("lifts 25 mm for you to turn the cutter to its next edge"), run.err.constData());
+        // Off centre, within the machine: one touch at X−5 Y−3 from the setter.
+        run = machine({ u"probe"_s, u"--touches"_s, u"1"_s, u"--offset"_s, u"-5,-3"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QCOMPARE(fixed3(json(run)[u"tlo"_s]), u"6.915"_s);
+        QCOMPARE(json(run)[u"touches"_s].toArray().size(), 0);
+        const Run report = cli({ u"--port"_s, m_port, u"report"_s }, 30000);
+        QVERIFY2(report.exitCode == 0, report.err.constData());
+        // Beyond the machine's X travel (this C1's soft limit): the firmware halts, said, nothing recorded.
+        const QByteArray before = readFile(table());
+        run = machine({ u"probe"_s, u"--touches"_s, u"1"_s, u"--offset"_s, u"10,0"_s });
+        QCOMPARE(run.exitCode, 4);
+        QVERIFY2(run.err.contains("Soft Endstop X"), run.err.constData());
+        QCOMPARE(readFile(table()), before);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCarveraFirmwareCli)

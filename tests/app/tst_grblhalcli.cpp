@@ -5,6 +5,8 @@
 // restart and a restore, a break test that passes and one that finds a tool 0.5 mm shorter with nothing
 // overwritten, a probe that touches nothing, a TLO set by hand, push and pull. The table file, the history
 // and the controller are checked at each step.
+#include <cmath>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
