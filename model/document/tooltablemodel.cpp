@@ -103,6 +103,8 @@ QVariant ToolTableModel::data(const QModelIndex &index, int role) const
             return {};
         return ToolLife::usedText(tool, u);
     }
+    case ProbingColumn:
+        return ProbeSettings::text(tool.probing, tool.flutes, m_table.units());
     case NotesColumn:
         return role == Qt::DisplayRole ? QString(tool.notes).replace(u'\n', u' ') : tool.notes;
     default:
@@ -168,6 +170,8 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
         return tr("TLO recorded");
     case ToolLifeColumn:
         return tr("Tool life");
+    case ProbingColumn:
+        return tr("Probing");
     case NotesColumn:
         return tr("Notes");
     default:
@@ -240,6 +244,14 @@ Result<Tool> ToolTableModel::editedTool(const Tool &tool, int column, const QVar
     case ToolLifeColumn:
         parsed = ToolLife::parseLimit(text, edited);
         break;
+    case ProbingColumn: {
+        const auto settings = ProbeSettings::parse(text, m_table.units());
+        if (!settings)
+            return settings.error();
+        edited.probing = settings.value().settings;
+        edited.flutes = settings.value().flutes;
+        break;
+    }
     default:
         return Error { tr("this column cannot be edited.") };
     }

@@ -34,6 +34,8 @@ public:
         // What the cutter has cut since it went in (the history library's program runs), against its life
         // limit; the limit is what is edited ("90 min, 40 uses").
         ToolLifeColumn,
+        // How the tool is measured on the setter ("X 20, 4 edges, spread 0.03"; empty: once at the centre).
+        ProbingColumn,
         NotesColumn,
         ColumnCount
     };

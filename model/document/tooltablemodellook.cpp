@@ -21,7 +21,7 @@ namespace Toffee {
 QVariant ToolTableModel::decoration(const Tool &tool, int column, int role) const
 {
     if (role == Qt::TextAlignmentRole) {
-        const bool text = column == DescriptionColumn || column == NotesColumn;
+        const bool text = column == DescriptionColumn || column == NotesColumn || column == ProbingColumn;
         return QVariant::fromValue(Qt::AlignVCenter | (text ? Qt::AlignLeft : Qt::AlignRight));
     }
     // A tool that failed its break test stands out on every column until it is probed again; a TLO never
@@ -35,6 +35,13 @@ QVariant ToolTableModel::decoration(const Tool &tool, int column, int role) cons
         return QColor(0xb0, 0x50, 0x00); // stale: measure it again before trusting it
     if (role == Qt::ToolTipRole && column == MeasuredTloColumn)
         return tloToolTip(tool);
+    if (role == Qt::ToolTipRole && column == ProbingColumn) {
+        const ProbePlan plan = ProbePlan::of(tool.probing, tool.flutes, m_table.units());
+        return plan.isPlain() ? tr("T%1 is touched once at the setter's centre. Type \"X 20, 4 edges, spread 0.03\" "
+                                   "for a face mill touched on each edge, off-centre.")
+                                    .arg(tool.number)
+                              : tr("T%1 is probed so: %2.").arg(tool.number).arg(plan.summary());
+    }
     if (column == ToolLifeColumn && (role == Qt::ForegroundRole || role == Qt::ToolTipRole)) {
         const UsedLife used = m_usedLife.value(tool.number);
         const LifeState state = ToolLife::state(tool, used);

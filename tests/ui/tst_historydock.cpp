@@ -180,7 +180,8 @@ private Q_SLOTS:
         auto *model = dock.findChild<QTableView *>(u"historyTable"_s)->model();
         QCOMPARE(model->rowCount(), 9);
         QCOMPARE(model->index(0, 1).data().toString(), u"set by hand"_s);
-        QCOMPARE(model->index(1, 8).data().toString(), u"BROKEN?"_s);
+        QCOMPARE(model->index(1, 9).data().toString(), u"BROKEN?"_s);
+        QVERIFY(model->index(1, 8).data().toString().isEmpty()); // one touch: no spread
         QVERIFY(!dock.grab().isNull());
     }
 
@@ -209,9 +210,10 @@ private Q_SLOTS:
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = file.readAll().split('\n');
         QCOMPARE(lines.front(),
-            "id,machine,tool,measured_at,kind,tlo,reference_mz,current_mz,tolerance,old_tlo,new_tlo,failed");
+            "id,machine,tool,measured_at,kind,tlo,reference_mz,current_mz,tolerance,old_tlo,new_tlo,failed,touches,"
+            "spread");
         QCOMPARE(lines.size(), 11); // the header, nine events, and the last line's end
-        QVERIFY(lines.at(8).contains(",break_test,-33.41,,,0.1,-33.41,-33.91,1"));
+        QVERIFY(lines.at(8).contains(",break_test,-33.41,,,0.1,-33.41,-33.91,1,,"));
         // A folder where the file should be: the export fails with the system's reason, nothing written.
         QVERIFY(!dock.exportCsv(m_dir.path()));
     }

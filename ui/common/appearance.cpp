@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/common/appearance.h"
 
+#include <algorithm>
+
+
 #include <QApplication>
 #include <QEvent>
+#include <QLabel>
 #include <QLocale>
 #include <QPalette>
 #include <QStyle>
@@ -100,6 +104,15 @@ void explainDisabled(QWidget *widget, const QString &why)
     if (!widget->property(kOwn).isValid())
         widget->setProperty(kOwn, widget->toolTip());
     widget->setToolTip(why.isEmpty() ? widget->property(kOwn).toString() : why);
+}
+
+void fitWrappedLabel(QLabel *label, int width)
+{
+    if (label->isHidden())
+        return;
+    const int height = label->text().isEmpty() ? 0 : label->heightForWidth(std::max(200, width));
+    if (height >= 0 && height != label->height())
+        label->setFixedHeight(height);
 }
 
 } // namespace Toffee

@@ -89,7 +89,7 @@ QString lengthCell(std::optional<double> v)
 class HistoryTableModel final : public QAbstractTableModel
 {
 public:
-    enum Column { Time, Kind, Tlo, Reference, Current, Tolerance, OldTlo, NewTlo, Verdict, ColumnCount };
+    enum Column { Time, Kind, Tlo, Reference, Current, Tolerance, OldTlo, NewTlo, Spread, Verdict, ColumnCount };
 
     explicit HistoryTableModel(QObject *parent)
         : QAbstractTableModel(parent)
@@ -115,7 +115,8 @@ public:
             return {};
         const QString names[] = { HistoryDock::tr("Time"), HistoryDock::tr("Kind"), HistoryDock::tr("TLO"),
             HistoryDock::tr("Reference Z"), HistoryDock::tr("Current Z"), HistoryDock::tr("Tolerance"),
-            HistoryDock::tr("Old TLO"), HistoryDock::tr("New TLO"), HistoryDock::tr("Result") };
+            HistoryDock::tr("Old TLO"), HistoryDock::tr("New TLO"), HistoryDock::tr("Spread"),
+            HistoryDock::tr("Result") };
         return section >= 0 && section < ColumnCount ? names[section] : QVariant();
     }
     QVariant data(const QModelIndex &index, int role) const override
@@ -124,11 +125,19 @@ public:
             return {};
         const HistoryEvent &e = m_events->at(m_events->size() - 1 - index.row()); // newest first
         if (role == Qt::TextAlignmentRole)
-            return index.column() >= Tlo && index.column() <= NewTlo
+            return index.column() >= Tlo && index.column() <= Spread
                 ? QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter)
                 : QVariant();
         if (role == Qt::ForegroundRole && index.column() == Verdict && e.failed.value_or(false))
             return m_alarm;
+        if (role == Qt::ToolTipRole && index.column() == Spread && e.spread()) {
+            QStringList each;
+            for (double z : e.touches)
+                each << formatNumber(z, NumberFormat::fixed(3).inLocale());
+            return HistoryDock::tr("%1 touches, at machine Z %2 mm: the TLO is the highest's (the longest edge)")
+                .arg(e.touches.size())
+                .arg(each.join(u", "_s));
+        }
         if (role != Qt::DisplayRole)
             return {};
         switch (index.column()) {
@@ -148,6 +157,8 @@ public:
             return lengthCell(e.oldTlo);
         case NewTlo:
             return lengthCell(e.newTlo);
+        case Spread:
+            return lengthCell(e.spread());
         case Verdict:
             return !e.failed ? QString() : *e.failed ? HistoryDock::tr("BROKEN?") : HistoryDock::tr("passed");
         default:

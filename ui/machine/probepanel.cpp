@@ -68,7 +68,7 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     // A result belongs to the connection it came on: connected again, the window says what became of it.
     connect(m_connection, &MachineConnection::stateChanged, this, [this](MachineConnection::State state) {
         if (state == MachineConnection::State::Connecting)
-            m_result->clear();
+            setResult({});
     });
     connect(m_connection, &MachineConnection::busyChanged, this, &ProbePanel::updateState);
     connect(m_connection, &MachineConnection::haltedChanged, this, &ProbePanel::updateState);
@@ -76,7 +76,7 @@ ProbePanel::ProbePanel(MachineConnection *connection, ToolDocument *document, QW
     // The last probe's line is only true until the next operation changes the offsets.
     connect(m_connection, &MachineConnection::busyChanged, this, [this](bool busy) {
         if (busy)
-            m_result->clear();
+            setResult({});
     });
     connect(m_document->model(), &QAbstractItemModel::dataChanged, this, &ProbePanel::updateState);
     updateState();
@@ -116,7 +116,7 @@ void ProbePanel::report(const SessionResult &result, const QString &title)
 {
     if (result.ok())
         return;
-    m_result->setText(result.message);
+    setResult(result.message);
     // Stopped because the operator quit: the window is gone, and no box pops up after it. The link went: the
     // window says so itself, and offers to reconnect.
     if (!window()->isVisible() || m_connection->linkLostDuringOperation())
@@ -142,18 +142,23 @@ void ProbePanel::probe(bool confirm)
                  "after it gets its length against %1's. Probe the tool you mean to keep as the reference.")
                   .arg(name)
                                                                   : QString();
+    // A tool measured its own way (the table's Probing column) says how, before anything moves.
+    const ProbePlan plan = m_connection->activeTool()
+        ? m_document->table().probePlan(*m_connection->activeTool())
+        : ProbePlan {};
+    const QString how = plan.isPlain() ? QString() : u"\n\n"_s + tr("As its settings say: %1.").arg(plan.summary());
     if (confirm
         && QMessageBox::question(this, tr("Probe %1?").arg(name),
                tr("The machine will move: up to clearance, over the tool setter, then down until "
                   "%1 touches it. Keep hands clear.\n\nThe machine says %1 is in the spindle: the "
                   "measurement is recorded as %1's TLO.\n\nProbe now?")
                        .arg(name)
-                   + reference
+                   + how + reference
                    + brokenParagraph(brokenToolWarning(m_document, m_connection, BrokenToolAction::Probe)),
                QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Yes)
         return;
-    m_result->clear();
+    setResult({});
     m_connection->probe([this](const SessionResult &r) {
         if (r.ok()) {
             const int number = r.tool.value_or(-1);
@@ -161,7 +166,7 @@ void ProbePanel::probe(bool confirm)
                                         : Result<void>(Error { tr("there is no tool in the spindle.") });
             // What the controller adds (grblHAL: "T1 is this machine's reference tool…") is said too.
             const QString said = r.message.isEmpty() ? QString() : u" "_s + r.message;
-            m_result->setText(recorded ? tr("T%1 measured: TLO %2, recorded in the table.")
+            setResult(recorded ? tr("T%1 measured: TLO %2, recorded in the table.")
                                              .arg(number)
                                              .arg(millimetres(r.tlo->tlo()))
                         + said
@@ -261,7 +266,7 @@ void ProbePanel::restore(bool confirm)
         if (r.recording)
             (void)m_document->record(*r.recording); // the history's restore; the table already holds the TLO
         if (r.ok())
-            m_result->setText(tr("T%1 is active with TLO %2.").arg(number).arg(millimetres(r.tlo->tlo())));
+            setResult(tr("T%1 is active with TLO %2.").arg(number).arg(millimetres(r.tlo->tlo())));
         report(r, tr("Restoring failed"));
         Q_EMIT finished(r);
     });
@@ -270,6 +275,19 @@ void ProbePanel::restore(bool confirm)
 void ProbePanel::cancel()
 {
     m_connection->stop();
+}
+
+void ProbePanel::setResult(const QString &text)
+{
+    m_result->setText(text);
+    fitWrappedLabel(m_result, m_result->width());
+}
+
+void ProbePanel::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    const QMargins margins = layout() ? layout()->contentsMargins() : QMargins();
+    fitWrappedLabel(m_result, width() - margins.left() - margins.right());
 }
 
 } // namespace Toffee

@@ -32,7 +32,12 @@ public:
 Q_SIGNALS:
     void finished(const Toffee::SessionResult &result);
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
+    // The result's words, the label as tall as they need (fitWrappedLabel).
+    void setResult(const QString &text);
     void updateState();
     void report(const SessionResult &result, const QString &title);
 

@@ -336,14 +336,9 @@ void TloPanel::resizeEvent(QResizeEvent *event)
 
 void TloPanel::fitHalt()
 {
-    if (m_halt->isHidden())
-        return;
     // The banner spans the strip (its margins aside); its height is what its words need at that width.
     const QMargins margins = layout() ? layout()->contentsMargins() : QMargins();
-    const int width = std::max(200, this->width() - margins.left() - margins.right());
-    const int height = m_halt->heightForWidth(width);
-    if (height > 0 && height != m_halt->height())
-        m_halt->setFixedHeight(height);
+    fitWrappedLabel(m_halt, this->width() - margins.left() - margins.right());
 }
 
 void TloPanel::unlock(bool confirm)
