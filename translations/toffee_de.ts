@@ -427,20 +427,12 @@
         <translation>Eine LinuxCNC-Tabelle kann kein Werkzeug markieren, das seinen Bruchtest nicht bestanden hat: %1 wäre nicht mehr markiert.</translation>
     </message>
     <message>
-        <source>&quot;break_test_failed&quot; must be true or false.</source>
-        <translation>&quot;break_test_failed&quot; muss true oder false sein.</translation>
-    </message>
-    <message>
         <source>break_test &quot;%1&quot; must be failed, passed or empty.</source>
         <translation>break_test &quot;%1&quot; muss failed, passed oder leer sein.</translation>
     </message>
     <message>
         <source>reference MCS Z</source>
         <translation>Referenz-MCS-Z</translation>
-    </message>
-    <message>
-        <source>unknown column &quot;%1&quot; in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
-        <translation>unbekannte Spalte „%1“ in der Kopfzeile; die Spalten sind number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units und linuxcnc.</translation>
     </message>
     <message>
         <source>%1 is %2 %3; it cannot be negative.</source>
@@ -881,6 +873,26 @@
     <message>
         <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured: it is measured at its change.</source>
         <translation>Die TLO von T%1 wurde aus der Tabelle der Steuerung gelesen, nicht gemessen: T%1 wird beim Wechsel gemessen.</translation>
+    </message>
+    <message>
+        <source>a cutter has 1 to %1 cutting edges; leave it empty when unknown.</source>
+        <translation>ein Fräser hat 1 bis %1 Schneiden; leer lassen, wenn unbekannt.</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for how a tool is probed (its edges, touches, touch-off point, latch feed and spread limit): they are not saved, and each tool is then probed once at the setter&apos;s centre.</source>
+        <translation>Eine LinuxCNC-Tabelle hat keinen Platz dafür, wie ein Werkzeug angetastet wird (Schneiden, Antastungen, Antastpunkt, Feinvorschub und Streuungsgrenze): Das wird nicht gespeichert, und jedes Werkzeug wird dann einmal in der Mitte des Längenmessgeräts angetastet.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be true or false.</source>
+        <translation>„%1“ muss true oder false sein.</translation>
+    </message>
+    <message>
+        <source>unknown column &quot;%1&quot; in the header; the columns are %2.</source>
+        <translation>unbekannte Spalte „%1“ in der Kopfzeile; die Spalten sind %2.</translation>
+    </message>
+    <message>
+        <source>probe_turn &quot;%1&quot; must be yes, no or empty.</source>
+        <translation>probe_turn „%1“ muss yes, no oder leer sein.</translation>
     </message>
 </context>
 <context>
@@ -2318,6 +2330,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>The jog was stopped where the machine stands; it is ready (no alarm).</source>
         <translation>Das Verfahren wurde dort angehalten, wo die Maschine steht; sie ist bereit (kein Alarm).</translation>
     </message>
+    <message>
+        <source>T%1 cannot be probed so: %2 Nothing was sent.</source>
+        <translation>T%1 kann so nicht angetastet werden: %2 Es wurde nichts gesendet.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::GuideDialog</name>
@@ -2487,6 +2503,14 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Old cutter</source>
         <translation>Alter Fräser</translation>
+    </message>
+    <message>
+        <source>Spread</source>
+        <translation>Streuung</translation>
+    </message>
+    <message>
+        <source>%1 touches, at machine Z %2 mm: the TLO is the highest&apos;s (the longest edge)</source>
+        <translation>%1 Antastungen bei Maschinen-Z %2 mm: Die TLO ist die der höchsten (der längsten Schneide)</translation>
     </message>
 </context>
 <context>
@@ -3068,6 +3092,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured on the tool setter: probe it before the job.</source>
         <translation>Die TLO von T%1 wurde aus der Tabelle der Steuerung gelesen, nicht am Werkzeugtaster gemessen: Messen Sie T%1 vor dem Auftrag.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s edges differed by %2 when it was last measured, more than its limit %3: runout or a chipped edge. Look at the cutter and how it sits in its holder before it cuts.</source>
+        <translation>Die Schneiden von T%1 lagen bei der letzten Messung %2 auseinander, mehr als ihre Grenze %3: Rundlauffehler oder eine ausgebrochene Schneide. Prüfen Sie den Fräser und seinen Sitz im Halter, bevor er schneidet.</translation>
     </message>
 </context>
 <context>
@@ -3710,6 +3738,18 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>Keeping which machine %1 is</source>
         <translation>Speichern, welche Maschine %1 ist</translation>
     </message>
+    <message>
+        <source>A setter&apos;s repeatability takes 2 to %1 touches, each a machine position, and a time.</source>
+        <translation>Die Wiederholgenauigkeit eines Längenmessgeräts braucht 2 bis %1 Antastungen, jede eine Maschinenposition, und eine Zeit.</translation>
+    </message>
+    <message>
+        <source>Keeping %1&apos;s setter repeatability</source>
+        <translation>Die Wiederholgenauigkeit des Längenmessgeräts von %1 speichern</translation>
+    </message>
+    <message>
+        <source>%1&apos;s setter repeatability in the library does not read; measure it again (toffee-cli measure-repeatability).</source>
+        <translation>Die Wiederholgenauigkeit des Längenmessgeräts von %1 in der Bibliothek ist nicht lesbar; messen Sie sie erneut (toffee-cli measure-repeatability).</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
@@ -4081,6 +4121,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>LinuxCNC reported the contact at machine Z %1 mm, outside the move from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
         <translation>LinuxCNC meldete die Berührung bei Maschinen-Z %1 mm, außerhalb der Bewegung von %2 bis %3 mm. Es wurde nichts geschrieben oder aufgezeichnet; prüfen Sie die Einstellungen des Werkzeugtasters und die Maschine.</translation>
     </message>
+    <message>
+        <source>T%1 cannot be probed so: %2 Nothing was sent.</source>
+        <translation>T%1 kann so nicht angetastet werden: %2 Es wurde nichts gesendet.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineConnection</name>
@@ -4278,6 +4322,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>T%1 has no stored TLO to compare with, in the table or in %2&apos;s own: probe it first.</source>
         <translation>T%1 hat keine gespeicherte TLO zum Vergleich, weder in der Tabelle noch in der von %2: Messen Sie es zuerst.</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s edges differ by %2 mm (its limit %3 mm): runout or a chipped edge. Look at the cutter and how it sits in its holder before it cuts.</source>
+        <translation>Die Schneiden von T%1 liegen %2 mm auseinander (Grenze %3 mm): Rundlauffehler oder eine ausgebrochene Schneide. Prüfen Sie den Fräser und seinen Sitz im Halter, bevor er schneidet.</translation>
     </message>
 </context>
 <context>
@@ -4554,6 +4602,38 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>Unlocked. The TLO in force is %1 mm, as the machine left it: after a failed break test, the length the test measured. No stored TLO of T%2 was known here to set back (toffee-cli: --table FILE, or the history that recorded the test). Probe T%2, or set its TLO, before it cuts.</source>
         <translation>Entsperrt. Die wirksame TL ist %1 mm, wie die Maschine sie ließ: nach einem fehlgeschlagenen Bruchtest die vom Test gemessene Länge. Keine gespeicherte TL von T%2 war hier bekannt, um sie zurückzusetzen (toffee-cli: --table DATEI oder der Verlauf, der den Test aufzeichnete). Vermessen Sie T%2 oder setzen Sie seine TL, bevor es schneidet.</translation>
+    </message>
+    <message>
+        <source>Makera&apos;s firmware measures a tool once, at the setter&apos;s centre (its M491 takes no R, X or Y): T%1&apos;s settings (%2) need the community firmware. Nothing was sent.</source>
+        <translation>Die Firmware von Makera misst ein Werkzeug einmal, in der Mitte des Längenmessgeräts (ihr M491 kennt kein R, X oder Y): Die Einstellungen von T%1 (%2) brauchen die Community-Firmware. Es wurde nichts gesendet.</translation>
+    </message>
+    <message>
+        <source>T%1 cannot be probed so: %2 Nothing was sent.</source>
+        <translation>T%1 kann so nicht angetastet werden: %2 Es wurde nichts gesendet.</translation>
+    </message>
+    <message>
+        <source>Between its %1 touches the firmware lifts 25 mm for you to turn the cutter to its next edge by hand.</source>
+        <translation>Zwischen den %1 Antastungen hebt die Firmware um 25 mm an, damit Sie den Fräser von Hand zur nächsten Schneide drehen.</translation>
+    </message>
+    <message>
+        <source>The firmware touches at its own latch feed (atc.probe.slow_rate_mm_m in its config), not T%1&apos;s %2 mm/min.</source>
+        <translation>Die Firmware tastet mit ihrem eigenen Feinvorschub an (atc.probe.slow_rate_mm_m in ihrer Konfiguration), nicht mit den %2 mm/min von T%1.</translation>
+    </message>
+    <message>
+        <source>The firmware printed %1 of the %2 measurements it was asked for (M491 R%2). Nothing was recorded; check the offsets (Report) before you cut.</source>
+        <translation>Die Firmware gab %1 der %2 verlangten Messungen aus (M491 R%2). Es wurde nichts aufgezeichnet; prüfen Sie die Offsets (Bericht), bevor Sie schneiden.</translation>
+    </message>
+    <message>
+        <source>The firmware reported no reference tool offset, so its %1 measurements cannot be put in machine coordinates. Nothing was recorded.</source>
+        <translation>Die Firmware meldete keinen Referenzwerkzeug-Offset, daher können ihre %1 Messungen nicht in Maschinenkoordinaten umgerechnet werden. Es wurde nichts aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>Toffee set the longest edge&apos;s TLO (%2 mm) where the firmware kept the shortest&apos;s (%1 mm): no edge cuts deeper than the offset says.</source>
+        <translation>Toffee hat die TLO der längsten Schneide (%2 mm) gesetzt, wo die Firmware die der kürzesten (%1 mm) behielt: Keine Schneide schneidet tiefer, als der Offset sagt.</translation>
+    </message>
+    <message>
+        <source>The firmware&apos;s break test (M491.1) touches at the setter&apos;s centre only, and T%1 is measured off-centre: probe it (M491 with its settings) and compare the TLO with the table instead. Nothing was sent.</source>
+        <translation>Der Bruchtest der Firmware (M491.1) tastet nur in der Mitte des Längenmessgeräts an, und T%1 wird außermittig gemessen: Tasten Sie es stattdessen an (M491 mit seinen Einstellungen) und vergleichen Sie die TLO mit der Tabelle. Es wurde nichts gesendet.</translation>
     </message>
 </context>
 <context>
@@ -5754,6 +5834,120 @@ Vermessen Sie T%1 stattdessen.</translation>
         <source>Nothing to probe</source>
         <translation>Nichts anzutasten</translation>
     </message>
+    <message>
+        <source>As its settings say: %1.</source>
+        <translation>Wie seine Einstellungen sagen: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ProbePlan</name>
+    <message>
+        <source>%1 touches</source>
+        <translation>%1 Antastungen</translation>
+    </message>
+    <message>
+        <source>X %1 Y %2 mm from the setter&apos;s centre</source>
+        <translation>X %1 Y %2 mm von der Mitte des Längenmessgeräts</translation>
+    </message>
+    <message>
+        <source>latch at %1 mm/min</source>
+        <translation>Feinvorschub %1 mm/min</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ProbeSettings</name>
+    <message>
+        <source>A touch-off point lies at most %1 %2 from the setter&apos;s centre in X and Y.</source>
+        <translation>Ein Antastpunkt liegt in X und Y höchstens %1 %2 von der Mitte des Längenmessgeräts.</translation>
+    </message>
+    <message>
+        <source>A tool is touched 1 to %1 times.</source>
+        <translation>Ein Werkzeug wird 1- bis %1-mal angetastet.</translation>
+    </message>
+    <message>
+        <source>A latch feed must be more than 0 and at most %1 %2/min.</source>
+        <translation>Ein Feinvorschub muss größer als 0 und höchstens %1 %2/min sein.</translation>
+    </message>
+    <message>
+        <source>A spread limit must be more than 0 and at most %1 %2.</source>
+        <translation>Eine Streuungsgrenze muss größer als 0 und höchstens %1 %2 sein.</translation>
+    </message>
+    <message>
+        <source>X %1</source>
+        <translation>X %1</translation>
+    </message>
+    <message>
+        <source>Y %1</source>
+        <translation>Y %1</translation>
+    </message>
+    <message>
+        <source>1 edge</source>
+        <translation>1 Schneide</translation>
+    </message>
+    <message>
+        <source>%1 edges</source>
+        <translation>%1 Schneiden</translation>
+    </message>
+    <message>
+        <source>1 touch</source>
+        <translation>1 Antastung</translation>
+    </message>
+    <message>
+        <source>%1 touches</source>
+        <translation>%1 Antastungen</translation>
+    </message>
+    <message>
+        <source>same edge</source>
+        <translation>gleiche Schneide</translation>
+    </message>
+    <message>
+        <source>latch %1</source>
+        <translation>Feinvorschub %1</translation>
+    </message>
+    <message>
+        <source>spread %1</source>
+        <translation>Streuung %1</translation>
+    </message>
+    <message>
+        <source>Type how the tool is measured, any of: &quot;X 30&quot; and &quot;Y 0&quot; (the touch-off point from the setter&apos;s centre), &quot;4 edges&quot;, &quot;4 touches&quot;, &quot;same edge&quot; (no turn between touches), &quot;latch 20&quot; (the slow touch&apos;s feed per minute), &quot;spread 0.02&quot; (the widest spread that is no finding), separated by commas; empty for one touch at the centre.</source>
+        <translation>Geben Sie ein, wie das Werkzeug gemessen wird, beliebig aus: „X 30“ und „Y 0“ (der Antastpunkt von der Mitte des Längenmessgeräts), „4 Schneiden“, „4 Antastungen“, „gleiche Schneide“ (keine Drehung zwischen Antastungen), „Feinvorschub 20“ (der Vorschub der langsamen Antastung pro Minute), „Streuung 0.02“ (die größte Streuung, die kein Befund ist), durch Kommas getrennt; leer für eine Antastung in der Mitte.</translation>
+    </message>
+    <message>
+        <source>touches</source>
+        <translation>Antastungen</translation>
+    </message>
+    <message>
+        <source>touch</source>
+        <translation>Antastung</translation>
+    </message>
+    <message>
+        <source>edges</source>
+        <translation>Schneiden</translation>
+    </message>
+    <message>
+        <source>edge</source>
+        <translation>Schneide</translation>
+    </message>
+    <message>
+        <source>flutes</source>
+        <translation>Zähne</translation>
+    </message>
+    <message>
+        <source>latch</source>
+        <translation>Feinvorschub</translation>
+    </message>
+    <message>
+        <source>spread</source>
+        <translation>Streuung</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a probing setting. %2</source>
+        <translation>„%1“ ist keine Antasteinstellung. %2</translation>
+    </message>
+    <message>
+        <source>A cutter has 1 to %1 cutting edges.</source>
+        <translation>Ein Fräser hat 1 bis %1 Schneiden.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ProgramUse</name>
@@ -6398,6 +6592,14 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
         <source>its feed path is %1, not a length</source>
         <translation>sein Vorschubweg ist %1, keine Länge</translation>
     </message>
+    <message>
+        <source>its touches are not 2 to %1 machine positions</source>
+        <translation>seine Antastungen sind nicht 2 bis %1 Maschinenpositionen</translation>
+    </message>
+    <message>
+        <source>its touches are %1, not machine positions</source>
+        <translation>seine Antastungen sind %1, keine Maschinenpositionen</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::SelfTest</name>
@@ -6463,6 +6665,21 @@ verwenden, wenn sie nicht veraltet ist (ohne Vermessen)</translation>
     <message>
         <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
         <translation>Der Anschluss %1 ist ausgefallen (%2); die Verbindung wurde geschlossen. Prüfen Sie das Kabel und verbinden Sie erneut.</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::SetterCycle</name>
+    <message>
+        <source>The tool&apos;s latch feed (%1 mm/min) must not be faster than the setter&apos;s search feed (%2 mm/min).</source>
+        <translation>Der Feinvorschub des Werkzeugs (%1 mm/min) darf nicht schneller sein als der Suchvorschub des Längenmessgeräts (%2 mm/min).</translation>
+    </message>
+    <message>
+        <source>The tool&apos;s touch-off point (X %1, Y %2 mm) lies beyond the machine&apos;s coordinates.</source>
+        <translation>Der Antastpunkt des Werkzeugs (X %1, Y %2 mm) liegt außerhalb der Maschinenkoordinaten.</translation>
+    </message>
+    <message>
+        <source>%1 cannot turn its spindle to an angle, so the %2 touches met the setter wherever the spindle stood: their spread is the setter&apos;s repeatability and the cutter&apos;s runout there, not each edge&apos;s.</source>
+        <translation>%1 kann seine Spindel nicht auf einen Winkel drehen, daher trafen die %2 Antastungen das Längenmessgerät, wo die Spindel stand: Ihre Streuung ist die Wiederholgenauigkeit des Geräts und der Rundlauf des Fräsers dort, nicht die jeder Schneide.</translation>
     </message>
 </context>
 <context>
@@ -7389,6 +7606,18 @@ Sendet: %2</translation>
     <message>
         <source>T%1&apos;s TLO %2 was read from the controller&apos;s own table (Pull Offsets), not measured by Toffee. A break test compares against it.</source>
         <translation>Die TLO %2 von T%1 wurde aus der eigenen Tabelle der Steuerung gelesen (Korrekturen von der Steuerung übernehmen), nicht von Toffee gemessen. Ein Bruchtest vergleicht mit ihr.</translation>
+    </message>
+    <message>
+        <source>Probing</source>
+        <translation>Antasten</translation>
+    </message>
+    <message>
+        <source>T%1 is touched once at the setter&apos;s centre. Type &quot;X 20, 4 edges, spread 0.03&quot; for a face mill touched on each edge, off-centre.</source>
+        <translation>T%1 wird einmal in der Mitte des Längenmessgeräts angetastet. Geben Sie „X 20, 4 Schneiden, Streuung 0.03“ ein für einen Planfräser, der außermittig an jeder Schneide angetastet wird.</translation>
+    </message>
+    <message>
+        <source>T%1 is probed so: %2.</source>
+        <translation>T%1 wird so angetastet: %2.</translation>
     </message>
 </context>
 <context>

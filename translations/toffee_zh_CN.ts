@@ -427,20 +427,12 @@
         <translation>LinuxCNC 刀具表无法标记未通过断刀检测的刀具：%1 将不再被标记。</translation>
     </message>
     <message>
-        <source>&quot;break_test_failed&quot; must be true or false.</source>
-        <translation>&quot;break_test_failed&quot; 必须是 true 或 false。</translation>
-    </message>
-    <message>
         <source>break_test &quot;%1&quot; must be failed, passed or empty.</source>
         <translation>break_test &quot;%1&quot; 必须是 failed、passed 或留空。</translation>
     </message>
     <message>
         <source>reference MCS Z</source>
         <translation>基准 MCS Z</translation>
-    </message>
-    <message>
-        <source>unknown column &quot;%1&quot; in the header; the columns are number, pocket, description, length_geometry, length_wear, radius_geometry, radius_wear, measured_tlo, measured_at, notes, tlo_source, break_test, reference_mz, units and linuxcnc.</source>
-        <translation>表头中有未知列“%1”；可用的列为 number、pocket、description、length_geometry、length_wear、radius_geometry、radius_wear、measured_tlo、measured_at、notes、tlo_source、break_test、reference_mz、units 和 linuxcnc。</translation>
     </message>
     <message>
         <source>%1 is %2 %3; it cannot be negative.</source>
@@ -881,6 +873,26 @@
     <message>
         <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured: it is measured at its change.</source>
         <translation>T%1 的 TLO 是从控制器的刀具表读取的，并非测量所得：换刀时将进行测量。</translation>
+    </message>
+    <message>
+        <source>a cutter has 1 to %1 cutting edges; leave it empty when unknown.</source>
+        <translation>刀具有 1 到 %1 个刃；未知时留空。</translation>
+    </message>
+    <message>
+        <source>A LinuxCNC table has no place for how a tool is probed (its edges, touches, touch-off point, latch feed and spread limit): they are not saved, and each tool is then probed once at the setter&apos;s centre.</source>
+        <translation>LinuxCNC 刀具表无法保存刀具的测量方式（刃数、触碰次数、触碰点、慢速进给和差值上限）：这些不会保存，之后每把刀具只在对刀仪中心测量一次。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be true or false.</source>
+        <translation>“%1”必须为 true 或 false。</translation>
+    </message>
+    <message>
+        <source>unknown column &quot;%1&quot; in the header; the columns are %2.</source>
+        <translation>表头中有未知列“%1”；可用的列为 %2。</translation>
+    </message>
+    <message>
+        <source>probe_turn &quot;%1&quot; must be yes, no or empty.</source>
+        <translation>probe_turn“%1”必须为 yes、no 或留空。</translation>
     </message>
 </context>
 <context>
@@ -2318,6 +2330,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>The jog was stopped where the machine stands; it is ready (no alarm).</source>
         <translation>点动已在机床当前位置停止；机床处于就绪状态（无报警）。</translation>
     </message>
+    <message>
+        <source>T%1 cannot be probed so: %2 Nothing was sent.</source>
+        <translation>T%1 无法这样测量：%2 未发送任何内容。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::GuideDialog</name>
@@ -2487,6 +2503,14 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Old cutter</source>
         <translation>旧刀具</translation>
+    </message>
+    <message>
+        <source>Spread</source>
+        <translation>差值</translation>
+    </message>
+    <message>
+        <source>%1 touches, at machine Z %2 mm: the TLO is the highest&apos;s (the longest edge)</source>
+        <translation>%1 次触碰，机床 Z 为 %2 mm：TLO 取最高一次（最长的刃）</translation>
     </message>
 </context>
 <context>
@@ -3068,6 +3092,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>T%1&apos;s TLO was read from the controller&apos;s table, not measured on the tool setter: probe it before the job.</source>
         <translation>T%1 的 TLO 是从控制器的刀具表读取的，并未在对刀仪上测量：请在加工前测量。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s edges differed by %2 when it was last measured, more than its limit %3: runout or a chipped edge. Look at the cutter and how it sits in its holder before it cuts.</source>
+        <translation>T%1 上次测量时各刃相差 %2，超过其上限 %3：跳动或崩刃。切削前请检查刀具及其在刀柄中的安装。</translation>
     </message>
 </context>
 <context>
@@ -3710,6 +3738,18 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>Keeping which machine %1 is</source>
         <translation>保存 %1 是哪台机器</translation>
     </message>
+    <message>
+        <source>A setter&apos;s repeatability takes 2 to %1 touches, each a machine position, and a time.</source>
+        <translation>对刀仪的重复精度需要 2 到 %1 次触碰（每次为一个机床位置）和一个时间。</translation>
+    </message>
+    <message>
+        <source>Keeping %1&apos;s setter repeatability</source>
+        <translation>保存 %1 的对刀仪重复精度</translation>
+    </message>
+    <message>
+        <source>%1&apos;s setter repeatability in the library does not read; measure it again (toffee-cli measure-repeatability).</source>
+        <translation>库中 %1 的对刀仪重复精度无法读取；请重新测量（toffee-cli measure-repeatability）。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::LibraryLocation</name>
@@ -4081,6 +4121,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>LinuxCNC reported the contact at machine Z %1 mm, outside the move from %2 to %3 mm. Nothing was written or recorded; check the tool setter&apos;s settings and the machine.</source>
         <translation>LinuxCNC 报告的接触点在机床 Z %1 mm，超出了从 %2 到 %3 mm 的移动范围。未写入或记录任何数据；请检查对刀仪设置和机床。</translation>
     </message>
+    <message>
+        <source>T%1 cannot be probed so: %2 Nothing was sent.</source>
+        <translation>T%1 无法这样测量：%2 未发送任何内容。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineConnection</name>
@@ -4278,6 +4322,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>T%1 has no stored TLO to compare with, in the table or in %2&apos;s own: probe it first.</source>
         <translation>T%1 没有可供比较的已存 TLO（刀具表和 %2 自己的表中都没有）：请先测量它。</translation>
+    </message>
+    <message>
+        <source>T%1&apos;s edges differ by %2 mm (its limit %3 mm): runout or a chipped edge. Look at the cutter and how it sits in its holder before it cuts.</source>
+        <translation>T%1 各刃相差 %2 mm（上限 %3 mm）：跳动或崩刃。切削前请检查刀具及其在刀柄中的安装。</translation>
     </message>
 </context>
 <context>
@@ -4554,6 +4602,38 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>Unlocked. The TLO in force is %1 mm, as the machine left it: after a failed break test, the length the test measured. No stored TLO of T%2 was known here to set back (toffee-cli: --table FILE, or the history that recorded the test). Probe T%2, or set its TLO, before it cuts.</source>
         <translation>已解锁。当前生效的 TLO 为 %1 mm，即机器保留的值：断刀检测失败后，为检测测得的长度。此处不知道 T%2 存储的 TLO，无法恢复（toffee-cli：--table 文件，或记录该检测的历史）。切削前请测量 T%2 或设置其 TLO。</translation>
+    </message>
+    <message>
+        <source>Makera&apos;s firmware measures a tool once, at the setter&apos;s centre (its M491 takes no R, X or Y): T%1&apos;s settings (%2) need the community firmware. Nothing was sent.</source>
+        <translation>Makera 固件只在对刀仪中心测量一次（其 M491 不接受 R、X 或 Y）：T%1 的设置（%2）需要社区固件。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>T%1 cannot be probed so: %2 Nothing was sent.</source>
+        <translation>T%1 无法这样测量：%2 未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Between its %1 touches the firmware lifts 25 mm for you to turn the cutter to its next edge by hand.</source>
+        <translation>在 %1 次触碰之间，固件会抬起 25 mm，供您手动将刀具转到下一个刃。</translation>
+    </message>
+    <message>
+        <source>The firmware touches at its own latch feed (atc.probe.slow_rate_mm_m in its config), not T%1&apos;s %2 mm/min.</source>
+        <translation>固件使用其自身的慢速进给（配置中的 atc.probe.slow_rate_mm_m）触碰，而不是 T%1 的 %2 mm/min。</translation>
+    </message>
+    <message>
+        <source>The firmware printed %1 of the %2 measurements it was asked for (M491 R%2). Nothing was recorded; check the offsets (Report) before you cut.</source>
+        <translation>固件只输出了所要求的 %2 次测量中的 %1 次（M491 R%2）。未记录任何内容；切削前请检查偏置（报告）。</translation>
+    </message>
+    <message>
+        <source>The firmware reported no reference tool offset, so its %1 measurements cannot be put in machine coordinates. Nothing was recorded.</source>
+        <translation>固件未报告基准刀具偏置，因此其 %1 次测量无法换算为机床坐标。未记录任何内容。</translation>
+    </message>
+    <message>
+        <source>Toffee set the longest edge&apos;s TLO (%2 mm) where the firmware kept the shortest&apos;s (%1 mm): no edge cuts deeper than the offset says.</source>
+        <translation>固件保留了最短刃的 TLO（%1 mm），Toffee 已改设为最长刃的 TLO（%2 mm）：任何刃的切深都不会超过偏置所示。</translation>
+    </message>
+    <message>
+        <source>The firmware&apos;s break test (M491.1) touches at the setter&apos;s centre only, and T%1 is measured off-centre: probe it (M491 with its settings) and compare the TLO with the table instead. Nothing was sent.</source>
+        <translation>固件的断刀检测（M491.1）只在对刀仪中心触碰，而 T%1 需偏心测量：请改为测量它（按其设置使用 M491）并将 TLO 与刀具表比较。未发送任何内容。</translation>
     </message>
 </context>
 <context>
@@ -5754,6 +5834,120 @@ Probe T%1 instead.</source>
         <source>Nothing to probe</source>
         <translation>没有可探测的刀具</translation>
     </message>
+    <message>
+        <source>As its settings say: %1.</source>
+        <translation>按其设置：%1。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ProbePlan</name>
+    <message>
+        <source>%1 touches</source>
+        <translation>%1 次触碰</translation>
+    </message>
+    <message>
+        <source>X %1 Y %2 mm from the setter&apos;s centre</source>
+        <translation>距对刀仪中心 X %1 Y %2 mm</translation>
+    </message>
+    <message>
+        <source>latch at %1 mm/min</source>
+        <translation>慢速进给 %1 mm/min</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::ProbeSettings</name>
+    <message>
+        <source>A touch-off point lies at most %1 %2 from the setter&apos;s centre in X and Y.</source>
+        <translation>触碰点在 X 和 Y 方向距对刀仪中心最多 %1 %2。</translation>
+    </message>
+    <message>
+        <source>A tool is touched 1 to %1 times.</source>
+        <translation>刀具触碰 1 到 %1 次。</translation>
+    </message>
+    <message>
+        <source>A latch feed must be more than 0 and at most %1 %2/min.</source>
+        <translation>慢速进给必须大于 0 且不超过 %1 %2/min。</translation>
+    </message>
+    <message>
+        <source>A spread limit must be more than 0 and at most %1 %2.</source>
+        <translation>差值上限必须大于 0 且不超过 %1 %2。</translation>
+    </message>
+    <message>
+        <source>X %1</source>
+        <translation>X %1</translation>
+    </message>
+    <message>
+        <source>Y %1</source>
+        <translation>Y %1</translation>
+    </message>
+    <message>
+        <source>1 edge</source>
+        <translation>1 刃</translation>
+    </message>
+    <message>
+        <source>%1 edges</source>
+        <translation>%1 刃</translation>
+    </message>
+    <message>
+        <source>1 touch</source>
+        <translation>1 次触碰</translation>
+    </message>
+    <message>
+        <source>%1 touches</source>
+        <translation>%1 次触碰</translation>
+    </message>
+    <message>
+        <source>same edge</source>
+        <translation>同一刃</translation>
+    </message>
+    <message>
+        <source>latch %1</source>
+        <translation>慢速进给 %1</translation>
+    </message>
+    <message>
+        <source>spread %1</source>
+        <translation>差值 %1</translation>
+    </message>
+    <message>
+        <source>Type how the tool is measured, any of: &quot;X 30&quot; and &quot;Y 0&quot; (the touch-off point from the setter&apos;s centre), &quot;4 edges&quot;, &quot;4 touches&quot;, &quot;same edge&quot; (no turn between touches), &quot;latch 20&quot; (the slow touch&apos;s feed per minute), &quot;spread 0.02&quot; (the widest spread that is no finding), separated by commas; empty for one touch at the centre.</source>
+        <translation>输入刀具的测量方式，可任选：“X 30”和“Y 0”（触碰点距对刀仪中心的距离）、“4 刃”、“4 次触碰”、“同一刃”（触碰之间不转动）、“慢速进给 20”（慢速触碰每分钟的进给）、“差值 0.02”（不算异常的最大差值），用逗号分隔；留空则在中心触碰一次。</translation>
+    </message>
+    <message>
+        <source>touches</source>
+        <translation>次触碰</translation>
+    </message>
+    <message>
+        <source>touch</source>
+        <translation>次</translation>
+    </message>
+    <message>
+        <source>edges</source>
+        <translation>刃</translation>
+    </message>
+    <message>
+        <source>edge</source>
+        <translation>个刃</translation>
+    </message>
+    <message>
+        <source>flutes</source>
+        <translation>齿</translation>
+    </message>
+    <message>
+        <source>latch</source>
+        <translation>慢速进给</translation>
+    </message>
+    <message>
+        <source>spread</source>
+        <translation>差值</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a probing setting. %2</source>
+        <translation>“%1”不是测量设置。%2</translation>
+    </message>
+    <message>
+        <source>A cutter has 1 to %1 cutting edges.</source>
+        <translation>刀具有 1 到 %1 个刃。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::ProgramUse</name>
@@ -6398,6 +6592,14 @@ when it is fresh (no probe)</source>
         <source>its feed path is %1, not a length</source>
         <translation>其进给路径为 %1，不是长度</translation>
     </message>
+    <message>
+        <source>its touches are not 2 to %1 machine positions</source>
+        <translation>其触碰不是 2 到 %1 个机床位置</translation>
+    </message>
+    <message>
+        <source>its touches are %1, not machine positions</source>
+        <translation>其触碰为 %1，不是机床位置</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::SelfTest</name>
@@ -6463,6 +6665,21 @@ when it is fresh (no probe)</source>
     <message>
         <source>The port %1 failed (%2); the link was closed. Check the cable and connect again.</source>
         <translation>端口 %1 出错（%2）；连接已关闭。请检查线缆后重新连接。</translation>
+    </message>
+</context>
+<context>
+    <name>Toffee::SetterCycle</name>
+    <message>
+        <source>The tool&apos;s latch feed (%1 mm/min) must not be faster than the setter&apos;s search feed (%2 mm/min).</source>
+        <translation>刀具的慢速进给（%1 mm/min）不得快于对刀仪的搜索进给（%2 mm/min）。</translation>
+    </message>
+    <message>
+        <source>The tool&apos;s touch-off point (X %1, Y %2 mm) lies beyond the machine&apos;s coordinates.</source>
+        <translation>刀具的触碰点（X %1、Y %2 mm）超出机床坐标范围。</translation>
+    </message>
+    <message>
+        <source>%1 cannot turn its spindle to an angle, so the %2 touches met the setter wherever the spindle stood: their spread is the setter&apos;s repeatability and the cutter&apos;s runout there, not each edge&apos;s.</source>
+        <translation>%1 无法将主轴转到指定角度，因此 %2 次触碰都在主轴停留的位置碰到对刀仪：其差值是对刀仪的重复精度和刀具在该处的跳动，而不是各刃的差值。</translation>
     </message>
 </context>
 <context>
@@ -7389,6 +7606,18 @@ Sends: %2</source>
     <message>
         <source>T%1&apos;s TLO %2 was read from the controller&apos;s own table (Pull Offsets), not measured by Toffee. A break test compares against it.</source>
         <translation>T%1 的 TLO %2 是从控制器自身的刀具表读取的（拉取偏置），并非 Toffee 测量。断刀检测会与它比较。</translation>
+    </message>
+    <message>
+        <source>Probing</source>
+        <translation>测量方式</translation>
+    </message>
+    <message>
+        <source>T%1 is touched once at the setter&apos;s centre. Type &quot;X 20, 4 edges, spread 0.03&quot; for a face mill touched on each edge, off-centre.</source>
+        <translation>T%1 在对刀仪中心触碰一次。输入“X 20, 4 刃, 差值 0.03”可让面铣刀在偏心位置逐刃触碰。</translation>
+    </message>
+    <message>
+        <source>T%1 is probed so: %2.</source>
+        <translation>T%1 的测量方式：%2。</translation>
     </message>
 </context>
 <context>
