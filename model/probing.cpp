@@ -36,10 +36,13 @@ Result<void> validateMillimetres(const ProbePlan &p, const QString &unit, Units 
 {
     const double offMax = fromMillimetres(kMaxOffCentreMm, units);
     if (!inRange(p.offsetX, -offMax, offMax) || !inRange(p.offsetY, -offMax, offMax))
-        return Error { ProbeSettings::tr("A touch-off point lies at most %1 %2 from the setter's centre in X and Y.")
+        return Error { ProbeSettings::tr(
+            "A touch-off point lies at most %1 %2 from the setter's centre in X and Y.")
                            .arg(shown(offMax, units), unit) };
     if (p.touches < 1 || p.touches > ProbeSettings::kMaxTouches)
-        return Error { ProbeSettings::tr("A tool is touched 1 to %1 times.").arg(ProbeSettings::kMaxTouches) };
+        return Error {
+            ProbeSettings::tr("A tool is touched 1 to %1 times.").arg(ProbeSettings::kMaxTouches)
+        };
     const double feedMax = fromMillimetres(ToolSetter::kMaxFeed, units);
     if (p.latchFeed && !inRange(*p.latchFeed, 1e-9, feedMax))
         return Error { ProbeSettings::tr("A latch feed must be more than 0 and at most %1 %2/min.")
@@ -99,13 +102,16 @@ QString ProbeSettings::text(const ProbeSettings &s, std::optional<int> flutes, U
 
 Result<ProbeSettings::Parsed> ProbeSettings::parse(const QString &text, Units units)
 {
-    const QString how = tr("Type how the tool is measured, any of: \"X 30\" and \"Y 0\" (the touch-off point from "
-                           "the setter's centre), \"4 edges\", \"4 touches\", \"same edge\" (no turn between "
-                           "touches), \"latch 20\" (the slow touch's feed per minute), \"spread 0.02\" (the widest "
-                           "spread that is no finding), separated by commas; empty for one touch at the centre.");
+    const QString how
+        = tr("Type how the tool is measured, any of: \"X 30\" and \"Y 0\" (the touch-off point from "
+             "the setter's centre), \"4 edges\", \"4 touches\", \"same edge\" (no turn between "
+             "touches), \"latch 20\" (the slow touch's feed per minute), \"spread 0.02\" (the widest "
+             "spread that is no finding), separated by commas; empty for one touch at the centre.");
     Parsed out;
     bool seen[7] = {};
-    const auto once = [&seen](int which) { return !std::exchange(seen[which], true); };
+    const auto once = [&seen](int which) {
+        return !std::exchange(seen[which], true);
+    };
     // A word and a number, either way round: "X 30", "4 touches", "latch 20".
     static const QRegularExpression wordNumber(
         u"^\\s*([^\\s0-9+\\-.,]+(?:\\s+[^\\s0-9+\\-.,]+)?)\\s*([+\\-]?[0-9]+(?:\\.[0-9]+)?)\\s*$"_s);
@@ -129,7 +135,9 @@ Result<ProbeSettings::Parsed> ProbeSettings::parse(const QString &text, Units un
         const QString piece = raw.simplified();
         if (piece.isEmpty())
             continue;
-        const auto fail = [&] { return Error { tr("\"%1\" is not a probing setting. %2").arg(excerpt(piece), how) }; };
+        const auto fail = [&] {
+            return Error { tr("\"%1\" is not a probing setting. %2").arg(excerpt(piece), how) };
+        };
         if (is(piece, kSameEdge)) {
             if (!once(0))
                 return fail();
@@ -199,7 +207,8 @@ QString ProbePlan::summary() const
     if (touches > 1)
         parts << tr("%1 touches").arg(touches);
     if (isOffCentre())
-        parts << tr("X %1 Y %2 mm from the setter's centre").arg(shown(offsetX, Units::Millimetre), shown(offsetY, Units::Millimetre));
+        parts << tr("X %1 Y %2 mm from the setter's centre")
+                     .arg(shown(offsetX, Units::Millimetre), shown(offsetY, Units::Millimetre));
     if (latchFeed)
         parts << tr("latch at %1 mm/min").arg(shown(*latchFeed, Units::Millimetre));
     return parts.join(u", "_s);

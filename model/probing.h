@@ -12,11 +12,11 @@
 
 namespace Toffee {
 
-// How one tool is measured on the tool setter, kept with it in the table, lengths in the table's units. A face
-// mill or fly cutter touches off-centre (its centre is recessed); a cutter with several edges is touched once
-// per edge, the spindle turned by 360°/touches between touches where the controller can, and the spread
-// between them is its runout or a chipped edge; a fragile tool gets a slower latch. The defaults are one touch
-// at the centre at the setter's own feed, which is how every tool was measured before.
+// How one tool is measured on the tool setter, kept with it in the table, lengths in the table's units. A
+// face mill or fly cutter touches off-centre (its centre is recessed); a cutter with several edges is touched
+// once per edge, the spindle turned by 360°/touches between touches where the controller can, and the spread
+// between them is its runout or a chipped edge; a fragile tool gets a slower latch. The defaults are one
+// touch at the centre at the setter's own feed, which is how every tool was measured before.
 struct ProbeSettings
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::ProbeSettings)
@@ -38,8 +38,9 @@ public:
     // Every value in range for a table in `units` (offsets within the geometry limit, 1 to kMaxTouches
     // touches, a latch feed the setter takes, a spread limit above 0), else what is wrong.
     [[nodiscard]] Result<void> validate(Units units) const;
-    // "X 30, 4 touches, latch 20, spread 0.02", "X 12.5, Y -3, same edge": how the settings are typed and shown,
-    // the tool's flute count with them ("4 edges"); empty for the defaults. parse() reads it back, any order.
+    // "X 30, 4 touches, latch 20, spread 0.02", "X 12.5, Y -3, same edge": how the settings are typed and
+    // shown, the tool's flute count with them ("4 edges"); empty for the defaults. parse() reads it back, any
+    // order.
     [[nodiscard]] static QString text(const ProbeSettings &settings, std::optional<int> flutes, Units units);
     struct Parsed;
     [[nodiscard]] static Result<Parsed> parse(const QString &text, Units units);
@@ -66,10 +67,12 @@ public:
     std::optional<double> latchFeed;
     std::optional<double> spreadLimit;
 
-    [[nodiscard]] static ProbePlan of(
-        const ProbeSettings &settings, std::optional<int> flutes, Units units);
+    [[nodiscard]] static ProbePlan of(const ProbeSettings &settings, std::optional<int> flutes, Units units);
     // One touch at the setter's centre at its own feed: the cycle as it was before settings.
-    [[nodiscard]] bool isPlain() const { return offsetX == 0.0 && offsetY == 0.0 && touches == 1 && !latchFeed; }
+    [[nodiscard]] bool isPlain() const
+    {
+        return offsetX == 0.0 && offsetY == 0.0 && touches == 1 && !latchFeed;
+    }
     [[nodiscard]] bool isOffCentre() const { return offsetX != 0.0 || offsetY != 0.0; }
     // In range (as ProbeSettings::validate, in millimetres), else what is wrong.
     [[nodiscard]] Result<void> validate() const;

@@ -98,12 +98,14 @@ Result<SetterCycle> SetterCycle::of(const ToolSetter &setter, const ProbePlan &p
     if (auto valid = cycle.setter.validate(); !valid)
         return valid.error();
     if (cycle.latchFeed() > setter.seekFeed)
-        return Error { tr("The tool's latch feed (%1 mm/min) must not be faster than the setter's search feed (%2 "
-                          "mm/min).")
+        return Error { tr(
+            "The tool's latch feed (%1 mm/min) must not be faster than the setter's search feed (%2 "
+            "mm/min).")
                            .arg(mm(cycle.latchFeed()), mm(setter.seekFeed)) };
     for (double v : { cycle.x(), cycle.y() }) {
         if (std::fabs(v) > Limits::kMaxMachineOffsetMm)
-            return Error { tr("The tool's touch-off point (X %1, Y %2 mm) lies beyond the machine's coordinates.")
+            return Error { tr(
+                "The tool's touch-off point (X %1, Y %2 mm) lies beyond the machine's coordinates.")
                                .arg(mm(cycle.x()), mm(cycle.y())) };
     }
     return cycle;

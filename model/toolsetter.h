@@ -42,9 +42,9 @@ public:
 };
 
 // Toffee's setter cycle for one tool: the setter and the tool's plan together, checked, with where the cycle
-// goes. The cycle: lift to safeZ, move over (x, y) (the setter's centre plus the plan's offset), then for each
-// touch: G38.2 down to zMin at the seek feed, back off by backoff, G38.2 again at the latch feed, and between
-// touches lift clear of the setter (kEdgeClearance above the contact) for the spindle to turn.
+// goes. The cycle: lift to safeZ, move over (x, y) (the setter's centre plus the plan's offset), then for
+// each touch: G38.2 down to zMin at the seek feed, back off by backoff, G38.2 again at the latch feed, and
+// between touches lift clear of the setter (kEdgeClearance above the contact) for the spindle to turn.
 struct SetterCycle
 {
     Q_DECLARE_TR_FUNCTIONS(Toffee::SetterCycle)

@@ -215,7 +215,8 @@ Result<void> validateTool(const Tool &tool, Units units)
                   .arg(kMaxLifeUses) };
     if (tool.flutes && (*tool.flutes < 1 || *tool.flutes > ProbeSettings::kMaxFlutes))
         return Error { prefix
-            + tr("a cutter has 1 to %1 cutting edges; leave it empty when unknown.").arg(ProbeSettings::kMaxFlutes) };
+            + tr("a cutter has 1 to %1 cutting edges; leave it empty when unknown.")
+                  .arg(ProbeSettings::kMaxFlutes) };
     if (auto r = tool.probing.validate(units); !r)
         return Error { prefix + r.error().message };
     return {};

@@ -60,8 +60,8 @@ struct ConnectionTarget
 // The controller that speaks to the machine on `link`: the Carvera's (MachineSession) or grblHAL's.
 [[nodiscard]] std::unique_ptr<MachineController> makeController(
     MachineLink *link, ControllerKind kind = ControllerKind::Carvera);
-// The TCP port a controller's console listens on when the address gives none: linuxcncrsh's 5007 for LinuxCNC,
-// else the Carvera's 2222 (grblHAL's telnet port varies: give it).
+// The TCP port a controller's console listens on when the address gives none: linuxcncrsh's 5007 for
+// LinuxCNC, else the Carvera's 2222 (grblHAL's telnet port varies: give it).
 [[nodiscard]] quint16 defaultTcpPort(ControllerKind kind);
 // "auto", "carvera", "grblhal", "linuxcnc" (toffee-cli --controller, the settings); nothing for another word.
 [[nodiscard]] std::optional<ControllerKind> controllerKindFromName(const QString &name);

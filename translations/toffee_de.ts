@@ -2512,6 +2512,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>%1 touches, at machine Z %2 mm: the TLO is the highest&apos;s (the longest edge)</source>
         <translation>%1 Antastungen bei Maschinen-Z %2 mm: Die TLO ist die der höchsten (der längsten Schneide)</translation>
     </message>
+    <message>
+        <source>Each edge</source>
+        <translation>Jede Schneide</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryRecorder</name>

@@ -2512,6 +2512,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>%1 touches, at machine Z %2 mm: the TLO is the highest&apos;s (the longest edge)</source>
         <translation>%1 次触碰，机床 Z 为 %2 mm：TLO 取最高一次（最长的刃）</translation>
     </message>
+    <message>
+        <source>Each edge</source>
+        <translation>各刃</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::HistoryRecorder</name>

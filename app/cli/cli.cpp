@@ -156,8 +156,8 @@ QString usage()
 const QSet<QString> kValueOptions = { u"to"_s, u"units"_s, u"port"_s, u"baud"_s, u"table"_s, u"tolerance"_s,
     u"z"_s, u"above-z0"_s, u"count"_s, u"timeout"_s, u"dialect"_s, u"samples"_s, u"tool"_s, u"library"_s,
     u"machine"_s, u"since"_s, u"program"_s, u"z-floor"_s, u"stale-days"_s, u"output"_s, u"rack"_s, u"host"_s,
-    u"protocol"_s, u"seconds"_s, u"discovery-port"_s, u"controller"_s, u"setter"_s, u"ini"_s,
-    u"touches"_s, u"offset"_s, u"set"_s };
+    u"protocol"_s, u"seconds"_s, u"discovery-port"_s, u"controller"_s, u"setter"_s, u"ini"_s, u"touches"_s,
+    u"offset"_s, u"set"_s };
 const QSet<QString> kFlagOptions = { u"json"_s, u"help"_s, u"version"_s, u"emulator"_s, u"no-history"_s,
     u"csv"_s, u"use-stored-tlo"_s, u"break-test"_s, u"same-machine"_s, u"anyway"_s };
 

@@ -63,7 +63,8 @@ void printText(Invocation &call, const QList<HistoryEvent> &events)
         if (e.kind == EventKind::BreakTest && e.failed)
             call.out << (*e.failed ? "  FAILED" : "  passed");
         if (const auto spread = e.spread())
-            call.out << "  " << e.touches.size() << " touches, spread " << formatNumber(*spread, NumberFormat::fixed(3));
+            call.out << "  " << e.touches.size() << " touches, spread "
+                     << formatNumber(*spread, NumberFormat::fixed(3));
         call.out << '\n';
     }
     call.out << events.size() << (events.size() == 1 ? " event" : " events") << Qt::endl;

@@ -92,7 +92,8 @@ QString touchesLine(const QList<double> &touches)
     QStringList each;
     for (double z : touches)
         each << mm(z);
-    return u"; %1 touches at machine Z %2, spread %3 mm"_s.arg(touches.size()).arg(each.join(u", "_s), mm(spreadOf(touches)));
+    return u"; %1 touches at machine Z %2, spread %3 mm"_s.arg(touches.size())
+        .arg(each.join(u", "_s), mm(spreadOf(touches)));
 }
 
 } // namespace
@@ -248,7 +249,8 @@ void MachineRun::operate()
     else if (command == u"set-tlo")
         started = m_options.z ? c.setTlo(*m_options.z, recorded())
                               : c.setTloAboveZ0(*m_options.aboveZ0, recorded());
-    else if (command == u"break-test")
+    else if (command == u"break-test") {
+        warnBelowRepeatability();
         started = c.breakTest(m_options.tolerance, printed([this](const SessionResult &r) {
             printBreakTest(m_call, r);
             if (r.breakTest)
@@ -259,7 +261,7 @@ void MachineRun::operate()
                            << mm(r.breakTest->oldTlo) << ") or probe the tool." << Qt::endl;
         }),
             storedTloInSpindle());
-    else if (command == u"restore")
+    } else if (command == u"restore")
         started = restore();
     else if (command == u"select-tool")
         started = c.selectTool(

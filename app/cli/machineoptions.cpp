@@ -72,7 +72,8 @@ Result<void> readCommandOptions(const Invocation &call, MachineOptions &o)
     if (call.has(u"touches"_s)) {
         const auto n = parseInteger(call.option(u"touches"_s).toUtf8());
         if (!n || *n < 1 || *n > ProbeSettings::kMaxTouches)
-            return Error { u"--touches must be a whole number from 1 to %1."_s.arg(ProbeSettings::kMaxTouches) };
+            return Error { u"--touches must be a whole number from 1 to %1."_s.arg(
+                ProbeSettings::kMaxTouches) };
         o.touches = int(*n);
     }
     if (call.has(u"offset"_s)) {
@@ -85,8 +86,10 @@ Result<void> readCommandOptions(const Invocation &call, MachineOptions &o)
     }
     if (call.command == u"measure-repeatability") {
         if (!o.touches || *o.touches < 2)
-            return Error { u"measure-repeatability needs --touches K, 2 to %1: the touches the setter's spread is "
-                           "measured over."_s.arg(ProbeSettings::kMaxTouches) };
+            return Error {
+                u"measure-repeatability needs --touches K, 2 to %1: the touches the setter's spread is "
+                "measured over."_s.arg(ProbeSettings::kMaxTouches)
+            };
         o.sameEdge = true;
     }
     if (auto valid = o.probePlan(0).validate(); !valid)

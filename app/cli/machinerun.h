@@ -116,6 +116,8 @@ private:
     // measure-repeatability: the tool in the spindle touched K times on one edge, probed and recorded as a
     // probe, and the setter's spread kept for the machine (machinerunrecording.cpp).
     [[nodiscard]] bool measureRepeatability();
+    // break-test: a tolerance finer than the machine's setter repeats (its kept repeatability) is said.
+    void warnBelowRepeatability();
 
     Invocation &m_call;
     MachineOptions m_options;

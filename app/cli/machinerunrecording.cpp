@@ -184,12 +184,23 @@ MachineRun::Done MachineRun::recorded()
     };
 }
 
+namespace {
+
+// Twice the setter's spread, and never below the firmware's smallest: the tolerance a break test can trust.
+double trustedTolerance(double spread)
+{
+    return std::max(Limits::kMinBreakTolerance, std::ceil(2.0 * spread * 1000.0 - 1e-6) / 1000.0);
+}
+
+} // namespace
+
 bool MachineRun::measureRepeatability()
 {
     const int tool = m_options.tool;
     if (m_connection.activeTool() != tool) {
         finishWith(SessionResult::failed(SessionResult::Outcome::Refused,
-            u"The machine says T%1 is in the spindle, not T%2: put T%2 in (select-tool %2) first. Nothing was "
+            u"The machine says T%1 is in the spindle, not T%2: put T%2 in (select-tool %2) first. Nothing "
+            u"was "
             "sent."_s.arg(m_connection.activeTool().value_or(Limits::kEmptySpindle))
                 .arg(tool)));
         return true;
@@ -200,8 +211,7 @@ bool MachineRun::measureRepeatability()
         (void)record(r);
         SetterRepeatability measured { tool, r.recording ? r.recording->at : Clock::now(), r.tlo->touches };
         const double spread = measured.spread();
-        // Twice the spread, and never below the firmware's smallest: the tolerance a break test can trust here.
-        const double trusted = std::max(Limits::kMinBreakTolerance, std::ceil(2.0 * spread * 1000.0) / 1000.0);
+        const double trusted = trustedTolerance(spread);
         QString kept = u"not_recorded"_s;
         if (m_options.library) {
             auto saved = m_options.library->setRepeatability(m_options.machine, measured);
@@ -216,14 +226,31 @@ bool MachineRun::measureRepeatability()
                 touches.append(z);
             printJson(m_call,
                 QJsonObject { { u"tool"_s, tool }, { u"touches"_s, touches }, { u"spread"_s, spread },
-                    { u"smallest_tolerance"_s, trusted }, { u"tlo"_s, r.tlo->tlo() }, { u"history"_s, kept } });
+                    { u"smallest_tolerance"_s, trusted }, { u"tlo"_s, r.tlo->tlo() },
+                    { u"history"_s, kept } });
         } else {
-            m_call.out << "T" << tool << " touched " << measured.touches.size() << " times on the same edge: the setter "
+            m_call.out << "T" << tool << " touched " << measured.touches.size()
+                       << " times on the same edge: the setter "
                        << "repeats within " << mm(spread) << " mm; a break test can trust a tolerance of "
                        << mm(trusted) << " mm or more." << Qt::endl;
         }
         finishWith(r);
     });
+}
+
+void MachineRun::warnBelowRepeatability()
+{
+    if (!m_options.library)
+        return;
+    const auto kept = m_options.library->repeatability(m_options.machine);
+    if (!kept || !kept.value())
+        return;
+    const double trusted = trustedTolerance(kept.value()->spread());
+    if (m_options.tolerance + 1e-9 < trusted)
+        m_call.err << "toffee-cli: note: " << m_options.machine << "'s tool setter repeats within "
+                   << mm(kept.value()->spread()) << " mm (measure-repeatability): a tolerance of "
+                   << mm(m_options.tolerance) << " mm may find an intact tool broken; " << mm(trusted)
+                   << " mm or more is one it can trust." << Qt::endl;
 }
 
 } // namespace Toffee::Cli::Machine

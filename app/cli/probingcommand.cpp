@@ -38,7 +38,8 @@ int probingSettings(Invocation &call)
         // The file must be able to keep them, or nothing is written.
         if (*format == TableFormat::LinuxCnc)
             return fail(call,
-                u"%1 is a LinuxCNC table, which has no place for how a tool is probed: keep the settings in a "
+                u"%1 is a LinuxCNC table, which has no place for how a tool is probed: keep the settings in "
+                u"a "
                 "Toffee table (.json or .csv). Nothing was changed."_s.arg(path),
                 BadInput);
         const auto parsed = ProbeSettings::parse(call.option(u"set"_s), units);

@@ -37,10 +37,11 @@ QVariant ToolTableModel::decoration(const Tool &tool, int column, int role) cons
         return tloToolTip(tool);
     if (role == Qt::ToolTipRole && column == ProbingColumn) {
         const ProbePlan plan = ProbePlan::of(tool.probing, tool.flutes, m_table.units());
-        return plan.isPlain() ? tr("T%1 is touched once at the setter's centre. Type \"X 20, 4 edges, spread 0.03\" "
-                                   "for a face mill touched on each edge, off-centre.")
-                                    .arg(tool.number)
-                              : tr("T%1 is probed so: %2.").arg(tool.number).arg(plan.summary());
+        return plan.isPlain()
+            ? tr("T%1 is touched once at the setter's centre. Type \"X 20, 4 edges, spread 0.03\" "
+                 "for a face mill touched on each edge, off-centre.")
+                  .arg(tool.number)
+            : tr("T%1 is probed so: %2.").arg(tool.number).arg(plan.summary());
     }
     if (column == ToolLifeColumn && (role == Qt::ForegroundRole || role == Qt::ToolTipRole)) {
         const UsedLife used = m_usedLife.value(tool.number);

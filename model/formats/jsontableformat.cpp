@@ -28,8 +28,9 @@ namespace {
 // "overall_length") and the tool life's limits ("life_limit_minutes", "life_limit_uses"); written only when a
 // tool has one, for the same reason. Version 4 added "tlo_source": "pulled" (a TLO read from the controller's
 // table); written only when a tool has one, so that an older Toffee says it is newer rather than refusing a
-// word it does not know. Version 5 added how a tool is probed ("flutes", "probe_x", "probe_y", "probe_touches",
-// "probe_turn", "probe_latch_feed", "spread_limit"); written only when a tool has one of them.
+// word it does not know. Version 5 added how a tool is probed ("flutes", "probe_x", "probe_y",
+// "probe_touches", "probe_turn", "probe_latch_feed", "spread_limit"); written only when a tool has one of
+// them.
 constexpr int kJsonVersion = 5;
 const auto kFormatId = "toffee-tool-table"_L1;
 

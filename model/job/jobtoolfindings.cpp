@@ -101,8 +101,9 @@ template<typename Found> void JobChecker::judgeTool(int n, const ToolFacts &fact
         });
     } else if (tlos && facts.source == TloSource::Pulled) {
         found(FindingKind::NotMeasured, [n] {
-            return tr("T%1's TLO was read from the controller's table, not measured on the tool setter: probe "
-                      "it before the job.")
+            return tr(
+                "T%1's TLO was read from the controller's table, not measured on the tool setter: probe "
+                "it before the job.")
                 .arg(n);
         });
     } else if (Clock::isInFuture(facts.measuredAt, m_setup.now)) {

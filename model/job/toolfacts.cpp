@@ -31,10 +31,9 @@ Result<double> restorableTlo(int tool, const ToolFacts &facts, const QDateTime &
             tr("T%1's TLO was set by hand, not measured: it is measured at its change.").arg(tool)
         };
     if (facts.source == TloSource::Pulled)
-        return Error {
-            tr("T%1's TLO was read from the controller's table, not measured: it is measured at its change.")
-                .arg(tool)
-        };
+        return Error { tr(
+            "T%1's TLO was read from the controller's table, not measured: it is measured at its change.")
+                           .arg(tool) };
     if (facts.broken)
         return Error { tr("T%1 failed its last break test: it is measured at its change.").arg(tool) };
     if (Clock::isInFuture(facts.measuredAt, now))

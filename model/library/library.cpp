@@ -23,9 +23,9 @@ namespace Toffee {
 
 namespace {
 
-const QString kEventColumns
-    = u"id, machine, tool, measured_at, kind, tlo, reference_mz, current_mz, tolerance, old_tlo, new_tlo, failed, "
-      u"touches, spread"_s;
+const QString kEventColumns = u"id, machine, tool, measured_at, kind, tlo, reference_mz, current_mz, "
+                              u"tolerance, old_tlo, new_tlo, failed, "
+                              u"touches, spread"_s;
 
 QString timeText(const QDateTime &at)
 {
@@ -110,7 +110,8 @@ Result<std::optional<ToolSetter>> Library::toolSetter(const QString &machine) co
     return std::optional<ToolSetter>(setter.value());
 }
 
-Result<Library::MachineBinding> Library::bindMachine(const QString &machine, const QString &identity, bool rebind)
+Result<Library::MachineBinding> Library::bindMachine(
+    const QString &machine, const QString &identity, bool rebind)
 {
     QString bound;
     {
@@ -127,7 +128,8 @@ Result<Library::MachineBinding> Library::bindMachine(const QString &machine, con
         return MachineBinding { MachineBinding::Kind::Same, {} };
     if (!bound.isEmpty() && !rebind)
         return MachineBinding { MachineBinding::Kind::Other, bound };
-    const MachineBinding result { bound.isEmpty() ? MachineBinding::Kind::New : MachineBinding::Kind::Same, {} };
+    const MachineBinding result { bound.isEmpty() ? MachineBinding::Kind::New : MachineBinding::Kind::Same,
+        {} };
     if (isReadOnly())
         return result;
     QSqlQuery query(database());

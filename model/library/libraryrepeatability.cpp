@@ -24,8 +24,10 @@ Result<void> Library::setRepeatability(const QString &machine, const SetterRepea
 {
     if (auto writable = checkWritable(); !writable)
         return writable;
-    if (measured.touches.size() < 2 || !touchesFromText(touchesText(measured.touches)) || !measured.at.isValid())
-        return Error { tr("A setter's repeatability takes 2 to %1 touches, each a machine position, and a time.")
+    if (measured.touches.size() < 2 || !touchesFromText(touchesText(measured.touches))
+        || !measured.at.isValid())
+        return Error { tr(
+            "A setter's repeatability takes 2 to %1 touches, each a machine position, and a time.")
                            .arg(ProbeSettings::kMaxTouches) };
     QJsonArray touches;
     for (double z : measured.touches)
@@ -33,8 +35,9 @@ Result<void> Library::setRepeatability(const QString &machine, const SetterRepea
     const QJsonObject o { { u"tool"_s, measured.tool },
         { u"at"_s, measured.at.toUTC().toString(Qt::ISODateWithMs) }, { u"touches"_s, touches } };
     QSqlQuery query(database());
-    query.prepare(u"INSERT INTO machines (name, repeatability) VALUES (?, ?) ON CONFLICT (name) DO UPDATE SET "
-                  "repeatability = excluded.repeatability"_s);
+    query.prepare(
+        u"INSERT INTO machines (name, repeatability) VALUES (?, ?) ON CONFLICT (name) DO UPDATE SET "
+        "repeatability = excluded.repeatability"_s);
     query.addBindValue(machine);
     query.addBindValue(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)));
     if (!query.exec())

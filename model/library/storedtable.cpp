@@ -104,21 +104,20 @@ template<typename Member> Field field(Member member)
 const QList<Field> &fields()
 {
     // A TLO goes with when and against what it was measured, and whether it was probed: one field.
-    static const QList<Field> all
-        = { field(&Tool::pocket), field(&Tool::description), field(&Tool::lengthGeometry),
-              field(&Tool::lengthWear), field(&Tool::radiusGeometry), field(&Tool::radiusWear),
-              field(&Tool::notes), field(&Tool::linuxCncExtra), field(&Tool::breakTestFailed),
-              field(&Tool::cutterType), field(&Tool::overallLength), field(&Tool::lifeLimitMinutes),
-              field(&Tool::lifeLimitUses), field(&Tool::flutes), field(&Tool::probing),
-              [](Tool &into, const Tool &from, const Tool &base) {
-                  const auto tlo = [](const Tool &t) {
-                      return std::tuple(t.measuredTlo, t.measuredAt, t.tloSource, t.referenceMz);
-                  };
-                  if (tlo(from) == tlo(base))
-                      return false;
-                  std::tie(into.measuredTlo, into.measuredAt, into.tloSource, into.referenceMz) = tlo(from);
-                  return true;
-              } };
+    static const QList<Field> all = { field(&Tool::pocket), field(&Tool::description),
+        field(&Tool::lengthGeometry), field(&Tool::lengthWear), field(&Tool::radiusGeometry),
+        field(&Tool::radiusWear), field(&Tool::notes), field(&Tool::linuxCncExtra),
+        field(&Tool::breakTestFailed), field(&Tool::cutterType), field(&Tool::overallLength),
+        field(&Tool::lifeLimitMinutes), field(&Tool::lifeLimitUses), field(&Tool::flutes),
+        field(&Tool::probing), [](Tool &into, const Tool &from, const Tool &base) {
+            const auto tlo = [](const Tool &t) {
+                return std::tuple(t.measuredTlo, t.measuredAt, t.tloSource, t.referenceMz);
+            };
+            if (tlo(from) == tlo(base))
+                return false;
+            std::tie(into.measuredTlo, into.measuredAt, into.tloSource, into.referenceMz) = tlo(from);
+            return true;
+        } };
     return all;
 }
 

@@ -191,8 +191,8 @@ void MachineSession::probe(Done done)
     measure(recording(std::move(done), RecordingKind::Probe));
 }
 
-// M491 as the tool's plan says: R<n> for its touches, X and Y for its touch-off point (the community firmware's;
-// Makera's measures once at the centre). The firmware's latch feed is its own setting.
+// M491 as the tool's plan says: R<n> for its touches, X and Y for its touch-off point (the community
+// firmware's; Makera's measures once at the centre). The firmware's latch feed is its own setting.
 void MachineSession::measure(Done done)
 {
     const int tool = m_tool.value_or(Limits::kEmptySpindle);
@@ -202,17 +202,20 @@ void MachineSession::measure(Done done)
     if (plan.touches > 1 || plan.isOffCentre()) {
         if (m_firmware.kind == FirmwareInfo::Kind::Stock)
             return refuse(done,
-                tr("Makera's firmware measures a tool once, at the setter's centre (its M491 takes no R, X or "
+                tr("Makera's firmware measures a tool once, at the setter's centre (its M491 takes no R, X "
+                   "or "
                    "Y): T%1's settings (%2) need the community firmware. Nothing was sent.")
                     .arg(tool)
                     .arg(plan.summary()));
         if (auto valid = plan.validate(); !valid)
-            return refuse(done, tr("T%1 cannot be probed so: %2 Nothing was sent.").arg(tool).arg(valid.error().message));
+            return refuse(done,
+                tr("T%1 cannot be probed so: %2 Nothing was sent.").arg(tool).arg(valid.error().message));
         if (plan.touches > 1) {
             command += " R" + QByteArray::number(plan.touches);
             if (plan.turn)
-                notes << tr("Between its %1 touches the firmware lifts 25 mm for you to turn the cutter to its "
-                            "next edge by hand.")
+                notes << tr(
+                    "Between its %1 touches the firmware lifts 25 mm for you to turn the cutter to its "
+                    "next edge by hand.")
                              .arg(plan.touches);
         }
         if (plan.offsetX != 0.0)
@@ -221,8 +224,9 @@ void MachineSession::measure(Done done)
             command += " Y" + number(plan.offsetY);
     }
     if (plan.latchFeed)
-        notes << tr("The firmware touches at its own latch feed (atc.probe.slow_rate_mm_m in its config), not "
-                    "T%1's %2 mm/min.")
+        notes << tr(
+            "The firmware touches at its own latch feed (atc.probe.slow_rate_mm_m in its config), not "
+            "T%1's %2 mm/min.")
                      .arg(tool)
                      .arg(millimetres(*plan.latchFeed, false));
     run(
@@ -267,8 +271,8 @@ void MachineSession::measure(Done done)
 
 // After M491 R<n>: each pass's TLO from the firmware's summary, their machine Z against its reference. The
 // firmware prints the longest edge's as "Using" but keeps the shortest edge's in force (ATCHandler.cpp: the
-// lowest contact): Toffee sets the longest edge's (M493.3 Z), so that no edge cuts deeper than the offset says,
-// and reads it back.
+// lowest contact): Toffee sets the longest edge's (M493.3 Z), so that no edge cuts deeper than the offset
+// says, and reads it back.
 void MachineSession::takeLongestEdge(
     int tool, const ProbePlan &plan, const RepeatedMeasurement &measured, const QStringList &notes, Done done)
 {
@@ -293,8 +297,8 @@ void MachineSession::takeLongestEdge(
             QList<double> touches;
             for (double tlo : measured.tlos)
                 touches << std::round((tlo + reference) * 1000.0) / 1000.0;
-            const auto finish = [done, tool, plan, touches, reference, longest, notes](const SessionResult &set,
-                                    const QString &corrected) {
+            const auto finish = [done, tool, plan, touches, reference, longest, notes](
+                                    const SessionResult &set, const QString &corrected) {
                 if (!set.ok())
                     return done(set);
                 SessionResult result = set;
@@ -309,10 +313,10 @@ void MachineSession::takeLongestEdge(
             };
             if (std::fabs(r.tlo->tlo() - longest) <= 0.0005)
                 return finish(r, {});
-            const QString corrected
-                = tr("Toffee set the longest edge's TLO (%2 mm) where the firmware kept the shortest's (%1 mm): "
-                     "no edge cuts deeper than the offset says.")
-                      .arg(millimetres(r.tlo->tlo(), false), millimetres(longest, false));
+            const QString corrected = tr(
+                "Toffee set the longest edge's TLO (%2 mm) where the firmware kept the shortest's (%1 mm): "
+                "no edge cuts deeper than the offset says.")
+                                          .arg(millimetres(r.tlo->tlo(), false), millimetres(longest, false));
             setTloTo(longest, [finish, corrected](const SessionResult &set) { finish(set, corrected); });
         },
         SessionResult {});

@@ -236,13 +236,15 @@ void CarveraEmulator::measureRepeatedly(Repeats repeats)
         say("M493.1 R" + QByteArray::number(r.count));
         say("------------------ Measurements--------------------");
         for (qsizetype n = 0; n < r.triggers.size(); ++n)
-            say("TLO value from measurement " + QByteArray::number(n + 1) + ": " + fixed(r.triggers[n] - m_refMz));
+            say("TLO value from measurement " + QByteArray::number(n + 1) + ": "
+                + fixed(r.triggers[n] - m_refMz));
         const auto high = std::max_element(r.triggers.cbegin(), r.triggers.cend());
         const auto low = std::min_element(r.triggers.crbegin(), r.triggers.crend());
         const qsizetype highIndex = high - r.triggers.cbegin() + 1;
         const qsizetype lowIndex = r.triggers.size() - (low - r.triggers.crbegin());
         say("------------------ Results------------------------------");
-        say("Using TLO value from measurement " + QByteArray::number(highIndex) + ": " + fixed(*high - m_refMz));
+        say("Using TLO value from measurement " + QByteArray::number(highIndex) + ": "
+            + fixed(*high - m_refMz));
         say("Max delta: " + fixed(*high - *low));
         say("Lowest cutting edge: " + QByteArray::number(highIndex)
             + ", Highest cutting edge: " + QByteArray::number(lowIndex));

@@ -36,7 +36,8 @@ void GrblHalController::measure(int tool, Done done, std::function<void(QList<do
     }
     const auto cycle = SetterCycle::of(*m_setter, probePlan(tool));
     if (!cycle) {
-        refuse(done, tr("T%1 cannot be probed so: %2 Nothing was sent.").arg(tool).arg(cycle.error().message));
+        refuse(
+            done, tr("T%1 cannot be probed so: %2 Nothing was sent.").arg(tool).arg(cycle.error().message));
         return;
     }
     readModal(done, [this, done, next, cycle = cycle.value()](const Modal &modal) {
@@ -87,7 +88,8 @@ std::optional<double> GrblHalController::contactIn(
     const double z = found->position.z();
     if (z < setter.zMin - 1.0 || z > setter.safeZ + 1.0) {
         done(SessionResult::failed(SessionResult::Outcome::MachineError,
-            tr("grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to %3 mm. Nothing "
+            tr("grblHAL reported the contact at machine Z %1 mm, outside the search from %2 to %3 mm. "
+               "Nothing "
                "was written or recorded; check the tool setter's settings and the machine.")
                 .arg(mm(z), mm(setter.safeZ), mm(setter.zMin))));
         return std::nullopt;
@@ -97,10 +99,12 @@ std::optional<double> GrblHalController::contactIn(
 
 // One touch (the search down, back off, the slow touch), then the next from clear of the setter, until the
 // plan's touches are made; then lifted to the safe height, and `next` gets every contact's machine Z.
-void GrblHalController::touchEach(
-    const SetterCycle &cycle, double wco, QList<double> contacts, Done done, std::function<void(QList<double>)> next)
+void GrblHalController::touchEach(const SetterCycle &cycle, double wco, QList<double> contacts, Done done,
+    std::function<void(QList<double>)> next)
 {
-    const auto work = [wco](double machineZ) { return number(machineZ - wco); };
+    const auto work = [wco](double machineZ) {
+        return number(machineZ - wco);
+    };
     const int motion = MachineLink::kMotionTimeoutMs;
     const ToolSetter &setter = cycle.setter;
     run("G38.2 Z" + work(setter.zMin) + " F" + number(setter.seekFeed), motion, done,
@@ -123,7 +127,8 @@ void GrblHalController::touchEach(
                         run("G53 G0 Z" + number(lift), motion, done, [=, this](const CommandReply &) {
                             if (more)
                                 return touchEach(cycle, wco, all, done, next);
-                            // "ok" to a move means queued; G4 P0's comes once the machine has stopped, lifted.
+                            // "ok" to a move means queued; G4 P0's comes once the machine has stopped,
+                            // lifted.
                             run("G4 P0", motion, done, [next, all](const CommandReply &) { next(all); });
                         });
                     });
@@ -199,27 +204,28 @@ void GrblHalController::probe(Done done)
         const bool first = !m_reference;
         const double reference = m_reference.value_or(contact);
         const double tlo = atResolution(contact - reference);
-        writeOffset(tool, tlo, done, [this, done, tool, tlo, contact, first, reference, touches](const QString &note) {
-            m_reference = reference;
-            SessionResult result = tloResult(tool, tlo, contact);
-            QStringList notes;
-            if (first)
-                notes << tr("T%1 is this machine's reference tool (its TLO is 0): every tool is measured "
-                            "against its contact at machine Z %2 mm.")
-                             .arg(tool)
-                             .arg(mm(reference));
-            if (!note.isEmpty())
-                notes << note;
-            if (touches.size() > 1) {
-                result.tlo->touches = touches;
-                const SetterCycle cycle { *m_setter, probePlan(tool) };
-                notes.prepend(spreadFinding(tool, touches, cycle.plan)); // the finding first
-                notes << cycle.cannotTurnNote(u"grblHAL"_s);
-            }
-            notes.removeAll(QString());
-            result.message = notes.join(u' ');
-            done(result);
-        });
+        writeOffset(tool, tlo, done,
+            [this, done, tool, tlo, contact, first, reference, touches](const QString &note) {
+                m_reference = reference;
+                SessionResult result = tloResult(tool, tlo, contact);
+                QStringList notes;
+                if (first)
+                    notes << tr("T%1 is this machine's reference tool (its TLO is 0): every tool is measured "
+                                "against its contact at machine Z %2 mm.")
+                                 .arg(tool)
+                                 .arg(mm(reference));
+                if (!note.isEmpty())
+                    notes << note;
+                if (touches.size() > 1) {
+                    result.tlo->touches = touches;
+                    const SetterCycle cycle { *m_setter, probePlan(tool) };
+                    notes.prepend(spreadFinding(tool, touches, cycle.plan)); // the finding first
+                    notes << cycle.cannotTurnNote(u"grblHAL"_s);
+                }
+                notes.removeAll(QString());
+                result.message = notes.join(u' ');
+                done(result);
+            });
     });
 }
 

@@ -110,7 +110,8 @@ void LinuxCncController::measure(int tool, Done done, std::function<void(QList<d
     }
     const auto cycle = SetterCycle::of(*m_setter, probePlan(tool));
     if (!cycle) {
-        refuse(done, tr("T%1 cannot be probed so: %2 Nothing was sent.").arg(tool).arg(cycle.error().message));
+        refuse(
+            done, tr("T%1 cannot be probed so: %2 Nothing was sent.").arg(tool).arg(cycle.error().message));
         return;
     }
     const QList<QByteArray> approach { "M5", "G90 G53 G0 Z" + number(cycle.value().setter.safeZ),

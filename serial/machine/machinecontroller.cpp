@@ -117,9 +117,12 @@ QString MachineController::spreadFinding(int tool, const QList<double> &touches,
     const double spread = spreadOf(touches);
     if (touches.size() < 2 || !plan.spreadLimit || spread <= *plan.spreadLimit + 1e-9)
         return {};
-    const auto mm = [](double v) { return formatNumber(v, NumberFormat::fixed(3)); };
-    return tr("T%1's edges differ by %2 mm (its limit %3 mm): runout or a chipped edge. Look at the cutter and "
-              "how it sits in its holder before it cuts.")
+    const auto mm = [](double v) {
+        return formatNumber(v, NumberFormat::fixed(3));
+    };
+    return tr(
+        "T%1's edges differ by %2 mm (its limit %3 mm): runout or a chipped edge. Look at the cutter and "
+        "how it sits in its holder before it cuts.")
         .arg(tool)
         .arg(mm(spread), mm(*plan.spreadLimit));
 }

@@ -147,7 +147,10 @@ public:
     // touch at the centre) when nobody said.
     using ProbePlans = std::function<ProbePlan(int tool)>;
     void setProbePlans(ProbePlans plans) { m_probePlans = std::move(plans); }
-    [[nodiscard]] ProbePlan probePlan(int tool) const { return m_probePlans ? m_probePlans(tool) : ProbePlan {}; }
+    [[nodiscard]] ProbePlan probePlan(int tool) const
+    {
+        return m_probePlans ? m_probePlans(tool) : ProbePlan {};
+    }
     // What a spread of `touches` wider than the plan's limit says ("T3's edges differ by 0.060 mm: runout or
     // a chipped edge…"); empty within it, or without a limit.
     [[nodiscard]] static QString spreadFinding(int tool, const QList<double> &touches, const ProbePlan &plan);

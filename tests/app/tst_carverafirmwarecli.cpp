@@ -218,7 +218,8 @@ private Q_SLOTS:
         // What the firmware keeps in force is Toffee's TLO.
         QCOMPARE(fixed3(json(machine({ u"status"_s }))[u"tlo"_s]), u"6.915"_s);
         QCOMPARE(fixed3(tool(1)[u"measured_tlo"_s]), u"6.915"_s);
-        QVERIFY2(run.err.contains("lifts 25 mm for you to turn the cutter to its next edge"), run.err.constData());
+        QVERIFY2(
+            run.err.contains("lifts 25 mm for you to turn the cutter to its next edge"), run.err.constData());
         // Off centre, within the machine: one touch at X−5 Y−3 from the setter.
         run = machine({ u"probe"_s, u"--touches"_s, u"1"_s, u"--offset"_s, u"-5,-3"_s });
         QVERIFY2(run.exitCode == 0, run.err.constData());

@@ -44,8 +44,8 @@ class TestGrblHalCli : public QObject
     Run machine(const QStringList &arguments, const QString &tablePath = {})
     {
         return cli(QStringList { u"--json"_s, u"--library"_s, m_dir.filePath(u"library.sqlite"_s),
-                       u"--machine"_s, u"LongMill"_s, u"--setter"_s, kSetter,
-                       u"--table"_s, tablePath.isEmpty() ? table() : tablePath }
+                       u"--machine"_s, u"LongMill"_s, u"--setter"_s, kSetter, u"--table"_s,
+                       tablePath.isEmpty() ? table() : tablePath }
                 + m_target + arguments,
             90000);
     }
@@ -292,7 +292,8 @@ private Q_SLOTS:
         const QString path = m_dir.filePath(u"pty.json"_s);
         QVERIFY(writeEmptyTable(path));
         // No controller chosen: found by asking, on a serial port as on any.
-        Run run = cli(QStringList { u"--json"_s, u"--no-history"_s } + m_target + QStringList { u"status"_s });
+        Run run
+            = cli(QStringList { u"--json"_s, u"--no-history"_s } + m_target + QStringList { u"status"_s });
         QVERIFY2(run.exitCode == 0, run.err.constData());
         QCOMPARE(json(run)[u"controller"_s].toString(), u"grblhal"_s);
         QCOMPARE(json(run)[u"firmware"_s][u"controller"_s].toString(), u"grblhal"_s);
@@ -302,7 +303,8 @@ private Q_SLOTS:
         // recorded, nothing written.
         run = machine({ u"probe"_s }, path);
         QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.contains("The library's machine \"LongMill\" is grblHAL \xe2\x80\x9cLongMill\xe2\x80\x9d")
+        QVERIFY2(
+            run.err.contains("The library's machine \"LongMill\" is grblHAL \xe2\x80\x9cLongMill\xe2\x80\x9d")
                 && run.err.contains(QByteArray(QByteArray("this is grblHAL at ") + peer.pty().toUtf8()))
                 && run.err.contains("--same-machine"),
             run.err.constData());

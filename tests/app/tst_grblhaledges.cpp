@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // toffee-cli against grblHAL itself (TOFFEE_GRBLHAL_PEER), measuring like a machinist: a face mill's settings
 // in the table (toffee-cli probing), its four edges touched off-centre (the peer's setter gives each approach
-// the next edge's length), every touch and the spread in the JSON and the history, the spread beyond the tool's
-// limit said by the probe, failed by the break test and warned by the job check, the setter's repeatability
-// measured and kept, and one command's --touches and --offset over the table's.
+// the next edge's length), every touch and the spread in the JSON and the history, the spread beyond the
+// tool's limit said by the probe, failed by the break test and warned by the job check, the setter's
+// repeatability measured and kept, and one command's --touches and --offset over the table's.
 #include <cmath>
 
 #include <QJsonArray>
@@ -68,9 +68,9 @@ private Q_SLOTS:
     }
 
     // A face mill's four edges, touched 20 mm off the setter's centre as its settings in the table say: the
-    // peer's setter gives each approach the next edge's length (20, 20.03, 20.06, 20). Every touch printed and
-    // kept in the history, the TLO from the longest edge, the spread beyond the tool's limit said; a break test
-    // finds the chipped edge; one command's --touches and --offset override the table's.
+    // peer's setter gives each approach the next edge's length (20, 20.03, 20.06, 20). Every touch printed
+    // and kept in the history, the TLO from the longest edge, the spread beyond the tool's limit said; a
+    // break test finds the chipped edge; one command's --touches and --offset override the table's.
     void aFaceMillIsTouchedOnEachEdgeOffCentre()
     {
         QTemporaryDir state;
@@ -100,8 +100,9 @@ private Q_SLOTS:
         // Added by hand, then its settings: four edges, 20 mm off centre, edges apart by 0.03 at most.
         QFile file(path);
         QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write(R"({"format": "toffee-tool-table", "version": 1, "units": "mm", "tools": [)"
-                   R"({"number": 1, "measured_tlo": 0, "reference_mz": -70}, {"number": 3, "description": "50 mm face mill"}]})");
+        file.write(
+            R"({"format": "toffee-tool-table", "version": 1, "units": "mm", "tools": [)"
+            R"({"number": 1, "measured_tlo": 0, "reference_mz": -70}, {"number": 3, "description": "50 mm face mill"}]})");
         file.close();
         settings = cli({ u"--json"_s, u"probing"_s, u"3"_s, u"--table"_s, path, u"--set"_s,
             u"X 20, 4 edges, spread 0.03"_s });
@@ -127,7 +128,8 @@ private Q_SLOTS:
         QVERIFY(std::fabs(json(r)[u"tlo"_s].toDouble() - (zs[2] + 70.0)) < 1e-9);
         QCOMPARE(toolIn(path, 3)[u"measured_tlo"_s].toDouble(), json(r)[u"tlo"_s].toDouble());
         QCOMPARE(peer.tableZ(3), std::optional(json(r)[u"tlo"_s].toDouble()));
-        QVERIFY2(r.err.contains("T3's edges differ by 0.06") && r.err.contains("chipped edge"), r.err.constData());
+        QVERIFY2(
+            r.err.contains("T3's edges differ by 0.06") && r.err.contains("chipped edge"), r.err.constData());
         QVERIFY2(r.err.contains("cannot turn its spindle"), r.err.constData());
         // Off centre: the spindle stands at X 20 over the setter's centre at 0.
         QVERIFY2(std::fabs(machineX(peer) - 20.0) < 0.01, peer.status().constData());
@@ -145,9 +147,10 @@ private Q_SLOTS:
         QVERIFY(nc.open(QIODevice::WriteOnly));
         nc.write("G21 G90\nM6 T3\nG43 H3\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG1 X50\nM30\n");
         nc.close();
-        const Run check = cli({ u"--json"_s, u"--library"_s, library, u"job"_s, u"check"_s, program, u"--table"_s,
-            path, u"--machine"_s, u"Router"_s, u"--rack"_s, u"none"_s });
-        QVERIFY2(check.out.contains("\"spread_exceeded\"") && check.out.contains("T3's edges differed by 0.06"),
+        const Run check = cli({ u"--json"_s, u"--library"_s, library, u"job"_s, u"check"_s, program,
+            u"--table"_s, path, u"--machine"_s, u"Router"_s, u"--rack"_s, u"none"_s });
+        QVERIFY2(
+            check.out.contains("\"spread_exceeded\"") && check.out.contains("T3's edges differed by 0.06"),
             check.out.constData());
 
         // A break test touches every edge too: within the tolerance, but the edges' spread is a chipped edge.
@@ -179,8 +182,17 @@ private Q_SLOTS:
         r = run({ u"probe"_s, u"--touches"_s, u"40"_s });
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("--touches"), r.err.constData());
-    }
 
+        // A setter that repeats within 0.06 (here T3's edges stand in for it): a break test finer than twice
+        // that is said to be one that may find an intact tool broken.
+        r = run({ u"measure-repeatability"_s, u"3"_s, u"--touches"_s, u"3"_s });
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY(std::fabs(json(r)[u"smallest_tolerance"_s].toDouble() - 0.12) < 0.011);
+        r = run({ u"break-test"_s, u"--tolerance"_s, u"0.05"_s, u"--touches"_s, u"1"_s });
+        QVERIFY2(r.err.contains("may find an intact tool broken"), r.err.constData());
+        r = run({ u"break-test"_s, u"--tolerance"_s, u"0.5"_s, u"--touches"_s, u"1"_s });
+        QVERIFY2(!r.err.contains("may find an intact tool broken"), r.err.constData());
+    }
 };
 
 QTEST_GUILESS_MAIN(TestGrblHalEdges)

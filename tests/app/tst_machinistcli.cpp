@@ -300,7 +300,9 @@ private Q_SLOTS:
         QVERIFY(saveTableFile(csv, tools, TableFormat::Csv).ok());
         QVERIFY(Test::readFile(csv).startsWith("number,"));
         QVERIFY(Test::readFile(csv).split('\n').front().endsWith(
-            "cutter_type,overall_length,life_limit_minutes,life_limit_uses"));
+            "cutter_type,overall_length,life_limit_minutes,life_limit_uses,flutes,probe_x,probe_y,probe_"
+            "touches,"
+            "probe_turn,probe_latch_feed,spread_limit"));
         QCOMPARE(loadTableFile(csv).value().find(3)->lifeLimitUses, std::optional(40));
         Run run = cli({ u"--json"_s, u"show"_s, csv });
         const QJsonObject shown = json(run).value(u"tools"_s).toArray().at(1).toObject();

@@ -4,7 +4,7 @@
 // TLO report's values are ones a machine can have; a tool number is one a Carvera can report (-1, an empty
 // spindle, to 999999); a halt reason can be named. LinuxCNC's (linuxcncrsh) the same: a line is one kind at
 // most, a value read follows its keyword, a (DEBUG,…) line's fields are finite numbers, a position three
-// finite ones.
+// finite ones. M491 R's summary, read from the whole reply: each pass a finite TLO a machine can have.
 #include <cmath>
 
 #include "model/textparsing.h"
@@ -95,10 +95,19 @@ void checkLinuxCncLine(QByteArrayView line)
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     // As the link sees them: lines cut at LF, a CR before it dropped by the transport.
+    QList<QByteArray> reply;
     for (QByteArrayView line : splitView(Fuzz::bytes(data, size), '\n')) {
         const QByteArrayView one = line.endsWith('\r') ? line.chopped(1) : line;
         checkLine(one);
         checkLinuxCncLine(one);
+        reply.append(one.toByteArray());
     }
+    const RepeatedMeasurement repeated = repeatedMeasurement(reply);
+    for (double tlo : repeated.tlos)
+        TOFFEE_FUZZ_CHECK(
+            std::isfinite(tlo) && std::fabs(tlo) <= kMaxMachineMillimetres, QString::number(tlo));
+    TOFFEE_FUZZ_CHECK(repeated.tlos.size() <= reply.size(), QString::number(repeated.tlos.size()));
+    if (repeated.using_)
+        TOFFEE_FUZZ_CHECK(std::isfinite(*repeated.using_), QString::number(*repeated.using_));
     return 0;
 }

@@ -35,11 +35,13 @@ class TestProbing : public QObject
 private Q_SLOTS:
     void typedSettingsAreReadBackAsShown()
     {
-        const auto parsed = ProbeSettings::parse(u"X 20, y -2.5, 4 edges, latch 20, spread 0.03"_s, Units::Millimetre);
+        const auto parsed
+            = ProbeSettings::parse(u"X 20, y -2.5, 4 edges, latch 20, spread 0.03"_s, Units::Millimetre);
         QVERIFY2(parsed, qPrintable(parsed ? QString() : parsed.error().message));
         QCOMPARE(parsed.value().flutes, 4);
         QCOMPARE(parsed.value().settings, faceMill().probing);
-        const QString shown = ProbeSettings::text(parsed.value().settings, parsed.value().flutes, Units::Millimetre);
+        const QString shown
+            = ProbeSettings::text(parsed.value().settings, parsed.value().flutes, Units::Millimetre);
         QCOMPARE(shown, u"X 20, Y -2.5, 4 edges, latch 20, spread 0.03"_s);
         const auto again = ProbeSettings::parse(shown, Units::Millimetre);
         QVERIFY(again);
@@ -67,7 +69,9 @@ private Q_SLOTS:
             QVERIFY2(!parsed, qPrintable(text));
             QVERIFY2(!parsed.error().message.isEmpty(), qPrintable(text));
         }
-        QVERIFY(ProbeSettings::parse(u"4 wobbles"_s, Units::Millimetre).error().message.contains(u"\"4 touches\""_s));
+        QVERIFY(ProbeSettings::parse(u"4 wobbles"_s, Units::Millimetre)
+                    .error()
+                    .message.contains(u"\"4 touches\""_s));
         // An inch table's limits are its own: 150 mm is 5.9 in.
         QVERIFY(ProbeSettings::parse(u"X 3.9"_s, Units::Inch));
         QVERIFY(!ProbeSettings::parse(u"X 4"_s, Units::Inch));
@@ -100,7 +104,8 @@ private Q_SLOTS:
         QCOMPARE(plan.touches, 4);
         QVERIFY(!plan.isPlain());
         QVERIFY(inches.probePlan(9).isPlain());
-        QCOMPARE(plan.summary(), u"4 touches, X 25.4 Y 0 mm from the setter's centre, latch at 50.8 mm/min"_s);
+        QCOMPARE(
+            plan.summary(), u"4 touches, X 25.4 Y 0 mm from the setter's centre, latch at 50.8 mm/min"_s);
     }
 
     void theLongestEdgeAndTheSpread()

@@ -209,11 +209,13 @@ private Q_SLOTS:
         QVERIFY(!probed.recording);
         QCOMPARE(writes(), 0);
 
-        // A setter set that deep would let the contact through: the TLO itself is then refused.
+        // A setter set that deep (beyond any machine's coordinates) is refused before anything moves.
         machine.contactZ = -99000.0;
         controller.setToolSetter(ToolSetter { 0.0, 0.0, -99999.0, 3000.0, 300.0, 2.0, 0.0 });
+        const qsizetype sentBefore = machine.received.size();
         const SessionResult deep = await([&](auto done) { controller.probe(done); });
-        QCOMPARE(deep.outcome, SessionResult::Outcome::MachineError);
+        QCOMPARE(deep.outcome, SessionResult::Outcome::Refused);
+        QCOMPARE(machine.received.size(), sentBefore);
         QVERIFY2(deep.message.contains(u"from -999.999 to 999.999 mm"_s), qPrintable(deep.message));
         QVERIFY(!deep.recording);
         QCOMPARE(writes(), 0);

@@ -304,6 +304,9 @@ private Q_SLOTS:
         r = await([this](auto d) { return m_connection.probe(d); });
         QCOMPARE(r.outcome, SessionResult::Outcome::Refused);
         m_connection.setProbePlans(nullptr);
+        // T3's TLO back to the change's −2.000 (the latch's last micrometres aside), for the steps after.
+        r = await([this](auto d) { return m_connection.restoreTlo(3, -2.0, d); });
+        QVERIFY2(r.ok(), qPrintable(r.message));
     }
 
     // Push: a tool not in LinuxCNC's table refuses the whole push by name; the others written and read back

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One tool's history in the window: the chart for no, one and many measurements, a failed break test in red,
 // the trend and its band, the table, and the CSV export.
+#include <algorithm>
+#include <cmath>
+
 #include <QAreaSeries>
 #include <QChart>
 #include <QChartView>
@@ -87,7 +90,13 @@ private Q_SLOTS:
         events.append(makeEvent(2, 140, EventKind::ManualSet, -30.488));
         for (int i = 0; i < 10000; ++i) // T3: ten thousand
             events.append(makeEvent(3, i, EventKind::Probe, -20.0 - (i % 97) * 0.001));
-        QCOMPARE(m_recorder.library()->append(events).value(), 10010);
+        // T4, a face mill touched on four edges twice: the second time one edge 0.08 short.
+        for (int i = 0; i < 2; ++i) {
+            HistoryEvent e = makeEvent(4, i * 24, EventKind::Probe, -5.0);
+            e.touches = { -120.0, -120.02, -120.01, i == 0 ? -120.015 : -120.08 };
+            events.append(e);
+        }
+        QCOMPARE(m_recorder.library()->append(events).value(), 10012);
     }
 
     // First, before the chart module is loaded by any other test: without it, the panel says what is wrong
@@ -116,6 +125,29 @@ private Q_SLOTS:
         QVERIFY(dock.findChild<QPushButton *>(u"historyCopyButton"_s)->isEnabled());
         QVERIFY(chartOf(dock));
         QCOMPARE(series(chartOf(dock), u"Probes"_s)->points().size(), 1);
+    }
+
+    // A tool touched on each edge: the Spread column, each touch in its tooltip, and every edge's TLO drawn
+    // beside the measurement (the highest at the TLO), so that a growing spread is seen.
+    void showsEachEdgeAndTheSpread()
+    {
+        HistoryDock dock(&m_recorder);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
+        dock.showTool(4, u"Carvera"_s, 0.1);
+        auto *model = dock.findChild<QTableView *>(u"historyTable"_s)->model();
+        QCOMPARE(model->rowCount(), 2);
+        QCOMPARE(model->headerData(8, Qt::Horizontal).toString(), u"Spread"_s);
+        QCOMPARE(model->index(0, 8).data().toString(), u"0.080"_s); // newest first
+        QCOMPARE(model->index(1, 8).data().toString(), u"0.020"_s);
+        QVERIFY2(model->index(0, 8).data(Qt::ToolTipRole).toString().contains(u"-120.080"_s),
+            qPrintable(model->index(0, 8).data(Qt::ToolTipRole).toString()));
+        const QList<QPointF> edges = series(chartOf(dock), u"Each edge"_s)->points();
+        QCOMPARE(edges.size(), 8);
+        const auto [low, high] = std::minmax_element(
+            edges.cbegin(), edges.cend(), [](const QPointF &a, const QPointF &b) { return a.y() < b.y(); });
+        QVERIFY(std::fabs(high->y() - (-5.0)) < 1e-9);
+        QVERIFY(std::fabs(low->y() - (-5.08)) < 1e-9);
     }
 
     void saysWhatToDoWithNoToolAndWithNoMeasurement()
@@ -210,7 +242,8 @@ private Q_SLOTS:
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = file.readAll().split('\n');
         QCOMPARE(lines.front(),
-            "id,machine,tool,measured_at,kind,tlo,reference_mz,current_mz,tolerance,old_tlo,new_tlo,failed,touches,"
+            "id,machine,tool,measured_at,kind,tlo,reference_mz,current_mz,tolerance,old_tlo,new_tlo,failed,"
+            "touches,"
             "spread");
         QCOMPARE(lines.size(), 11); // the header, nine events, and the last line's end
         QVERIFY(lines.at(8).contains(",break_test,-33.41,,,0.1,-33.41,-33.91,1,,"));

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // An operator's story through the real window (offscreen) on the built-in emulator (the community firmware's
-// M491 R<n> and X, as the firmware runs them): T1 becomes a face mill measured 20 mm off the setter's centre on
-// its four edges, typed into its Probing cell; the probe's question says so, the machine is sent M491 R4 X20,
-// the table takes the longest edge's TLO (the firmware kept the shortest's: set right), the spread beyond the
-// tool's limit is said, and the History panel shows it with each touch. Undo takes the settings back.
+// M491 R<n> and X, as the firmware runs them): T1 becomes a face mill measured 20 mm off the setter's centre
+// on its four edges, typed into its Probing cell; the probe's question says so, the machine is sent M491 R4
+// X20, the table takes the longest edge's TLO (the firmware kept the shortest's: set right), the spread
+// beyond the tool's limit is said, and the History panel shows it with each touch. Undo takes the settings
+// back.
 #include <QApplication>
 #include <QMessageBox>
 #include <QPushButton>
@@ -42,7 +43,8 @@ private Q_SLOTS:
         QApplication::processEvents();
 
         // Typed into T1's Probing cell from the keyboard.
-        view->setCurrentIndex(view->model()->index(view->currentIndex().row(), ToolTableModel::ProbingColumn));
+        view->setCurrentIndex(
+            view->model()->index(view->currentIndex().row(), ToolTableModel::ProbingColumn));
         view->setFocus();
         QTest::keyClick(view, Qt::Key_F2);
         QWidget *editor = view->indexWidget(view->currentIndex());
@@ -56,13 +58,15 @@ private Q_SLOTS:
         auto *model = s.window.document()->model();
         QString refusal;
         answerNextBox(QMessageBox::Ok, &refusal);
-        QVERIFY(!model->setData(model->index(model->rowOfTool(1), ToolTableModel::ProbingColumn), u"X 500"_s));
+        QVERIFY(
+            !model->setData(model->index(model->rowOfTool(1), ToolTableModel::ProbingColumn), u"X 500"_s));
         QVERIFY2(refusal.contains(u"from the setter's centre"_s), qPrintable(refusal));
         QCOMPARE(s.cell(1, ToolTableModel::ProbingColumn), u"X 20, 4 edges, spread 0.01"_s);
 
         // The probe's question says how T1 is measured; the machine is sent the firmware's own M491.
         const QString question = s.probe();
-        QVERIFY2(question.contains(u"4 touches, X 20 Y 0 mm from the setter's centre"_s), qPrintable(question));
+        QVERIFY2(
+            question.contains(u"4 touches, X 20 Y 0 mm from the setter's centre"_s), qPrintable(question));
         QVERIFY2(s.sent.contains("M491 R4 X20"), s.sent.join(" / ").constData());
         const Tool *t1 = s.table().find(1);
         QVERIFY(t1->measuredTlo);

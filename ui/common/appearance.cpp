@@ -3,7 +3,6 @@
 
 #include <algorithm>
 
-
 #include <QApplication>
 #include <QEvent>
 #include <QLabel>

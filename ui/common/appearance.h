@@ -23,8 +23,8 @@ void useMonospace(QWidget *widget);
 void takeWheelOnlyWhenFocused(QWidget *field);
 // Shows `why` as the tooltip of a widget that cannot act now, and its own tooltip again once it can.
 void explainDisabled(QWidget *widget, const QString &why);
-// A word-wrapped label given the height its words need at `width` (a panel in a scroll area otherwise clips it);
-// call it when the text or the width changes.
+// A word-wrapped label given the height its words need at `width` (a panel in a scroll area otherwise clips
+// it); call it when the text or the width changes.
 void fitWrappedLabel(QLabel *label, int width);
 // The red that reads as an alarm on this palette, light or dark.
 [[nodiscard]] QColor alarmColor(const QPalette &palette);

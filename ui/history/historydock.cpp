@@ -89,7 +89,19 @@ QString lengthCell(std::optional<double> v)
 class HistoryTableModel final : public QAbstractTableModel
 {
 public:
-    enum Column { Time, Kind, Tlo, Reference, Current, Tolerance, OldTlo, NewTlo, Spread, Verdict, ColumnCount };
+    enum Column {
+        Time,
+        Kind,
+        Tlo,
+        Reference,
+        Current,
+        Tolerance,
+        OldTlo,
+        NewTlo,
+        Spread,
+        Verdict,
+        ColumnCount
+    };
 
     explicit HistoryTableModel(QObject *parent)
         : QAbstractTableModel(parent)
@@ -134,7 +146,8 @@ public:
             QStringList each;
             for (double z : e.touches)
                 each << formatNumber(z, NumberFormat::fixed(3).inLocale());
-            return HistoryDock::tr("%1 touches, at machine Z %2 mm: the TLO is the highest's (the longest edge)")
+            return HistoryDock::tr(
+                "%1 touches, at machine Z %2 mm: the TLO is the highest's (the longest edge)")
                 .arg(e.touches.size())
                 .arg(each.join(u", "_s));
         }
@@ -306,7 +319,8 @@ void HistoryDock::fillChart(const std::optional<WearTrend> &trend, const QList<T
     }
     HistoryChartInput input { &m_events, trend, points, m_tolerance, palette(), alarmColor(palette()),
         { tr("Probes"), tr("Break test passed"), tr("Break test failed"), tr("Set by hand"), tr("Old cutter"),
-            tr("Wear trend"), tr("± %1 mm").arg(formatNumber(m_tolerance, NumberFormat::upTo(3).inLocale())),
+            tr("Wear trend"), tr("Each edge"),
+            tr("± %1 mm").arg(formatNumber(m_tolerance, NumberFormat::upTo(3).inLocale())),
             m_events.isEmpty() && m_tool >= 0 ? tr("No measurements of T%1 yet").arg(m_tool) : QString(),
             tr("TLO (mm)") } };
     module.value().fill(m_view, input);

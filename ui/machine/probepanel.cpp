@@ -146,7 +146,8 @@ void ProbePanel::probe(bool confirm)
     const ProbePlan plan = m_connection->activeTool()
         ? m_document->table().probePlan(*m_connection->activeTool())
         : ProbePlan {};
-    const QString how = plan.isPlain() ? QString() : u"\n\n"_s + tr("As its settings say: %1.").arg(plan.summary());
+    const QString how
+        = plan.isPlain() ? QString() : u"\n\n"_s + tr("As its settings say: %1.").arg(plan.summary());
     if (confirm
         && QMessageBox::question(this, tr("Probe %1?").arg(name),
                tr("The machine will move: up to clearance, over the tool setter, then down until "
@@ -167,11 +168,11 @@ void ProbePanel::probe(bool confirm)
             // What the controller adds (grblHAL: "T1 is this machine's reference tool…") is said too.
             const QString said = r.message.isEmpty() ? QString() : u" "_s + r.message;
             setResult(recorded ? tr("T%1 measured: TLO %2, recorded in the table.")
-                                             .arg(number)
-                                             .arg(millimetres(r.tlo->tlo()))
+                                     .arg(number)
+                                     .arg(millimetres(r.tlo->tlo()))
                         + said
-                                       : tr("Measured TLO %1, but it could not be recorded: %2")
-                                             .arg(millimetres(r.tlo->tlo()), recorded.error().message));
+                               : tr("Measured TLO %1, but it could not be recorded: %2")
+                                     .arg(millimetres(r.tlo->tlo()), recorded.error().message));
         }
         report(r, tr("Probing failed"));
         Q_EMIT finished(r);

@@ -77,7 +77,8 @@ void MainWindow::build()
     m_tablePanel = new ToolTablePanel(m_document->model(), this);
     m_connection = new MachineConnection(this);
     // Every probe and break test measures a tool as the open table's settings say (its Probing column).
-    m_connection->setProbePlans([document = m_document](int tool) { return document->table().probePlan(tool); });
+    m_connection->setProbePlans(
+        [document = m_document](int tool) { return document->table().probePlan(tool); });
     m_machineDock = new MachineDock(m_connection, m_document, this);
     m_consoleDock = new ConsoleDock(m_connection, m_document, this);
     m_fileWatcher = new FileWatcher(this);

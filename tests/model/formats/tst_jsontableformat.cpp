@@ -98,7 +98,7 @@ private Q_SLOTS:
             << QByteArray(R"({"format": "toffee-tool-table", "version": 1.5, "units": "mm", "tools": []})")
             << 1 << u"\"version\""_s;
         QTest::newRow("newer version")
-            << QByteArray(R"({"format": "toffee-tool-table", "version": 5, "units": "mm", "tools": []})") << 1
+            << QByteArray(R"({"format": "toffee-tool-table", "version": 6, "units": "mm", "tools": []})") << 1
             << u"newer Toffee"_s;
         QTest::newRow("unknown units")
             << QByteArray(R"({"format": "toffee-tool-table", "version": 1, "units": "cm", "tools": []})") << 1

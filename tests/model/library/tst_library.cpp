@@ -13,8 +13,8 @@
 #include <QSqlQuery>
 #include <QStandardPaths>
 #include <QTemporaryDir>
-#include <QTimeZone>
 #include <QTest>
+#include <QTimeZone>
 
 #include "tests/model/library/libraryevents.h"
 
@@ -144,7 +144,8 @@ private Q_SLOTS:
         library = Library::open({ path });
         const auto garbled = library.value()->repeatability(u"Router"_s);
         QVERIFY(!garbled);
-        QVERIFY2(garbled.error().message.contains(u"measure it again"_s), qPrintable(garbled.error().message));
+        QVERIFY2(
+            garbled.error().message.contains(u"measure it again"_s), qPrintable(garbled.error().message));
     }
 
     void aVersionTwoLibraryIsBroughtUpToDateAndKeepsEachMachinesToolSetter()

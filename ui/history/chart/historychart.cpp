@@ -92,6 +92,22 @@ QList<QAbstractSeries *> measurementSeries(const HistoryChartInput &in, QList<QP
     }
     probes->replace(probeTimes);
     QList<QAbstractSeries *> out { probes, passed, failed, manual };
+    // A tool touched on each edge: every edge's TLO at its measurement (the measurement's is the highest's),
+    // so that the spread and how it grows over time are seen beside the TLO.
+    QList<QPointF> edges;
+    for (const HistoryEvent &e : *in.events) {
+        const std::optional<double> tlo = e.kind == EventKind::BreakTest ? e.newTlo : e.tlo;
+        if (e.touches.size() < 2 || !tlo)
+            continue;
+        const double highest = highestTouch(e.touches);
+        for (double z : e.touches)
+            edges.append({ qreal(e.at.toMSecsSinceEpoch()), *tlo - (highest - z) });
+    }
+    if (!edges.isEmpty()) {
+        auto *each = markers(in.words.edges, MarkerShape::Circle, in.palette.color(QPalette::Mid), 5);
+        each->replace(edges);
+        out.prepend(each); // beneath the measurements' own markers
+    }
     if (old->count() > 0)
         out.append(old);
     else

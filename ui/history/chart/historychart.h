@@ -27,6 +27,7 @@ struct HistoryChartWords
     QString manual;
     QString oldCutter; // probes of a cutter a new cutter ended
     QString trend;
+    QString edges; // each touch of a tool touched once per cutting edge
     QString band; // "± 0.1 mm"
     QString title; // empty: none
     QString tloAxis;
