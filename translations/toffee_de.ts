@@ -2207,10 +2207,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>vermessen</translation>
     </message>
     <message>
-        <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
-        <translation>T%1 ist das Referenzwerkzeug dieser Maschine (seine TLO ist 0): Jedes Werkzeug wird gegen dessen Kontakt bei Maschinen-Z %2 mm gemessen.</translation>
-    </message>
-    <message>
         <source>break-test</source>
         <translation>auf Bruch prüfen</translation>
     </message>
@@ -4034,10 +4030,6 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <translation>vermessen</translation>
     </message>
     <message>
-        <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
-        <translation>T%1 ist das Referenzwerkzeug dieser Maschine (seine TLO ist 0): Jedes Werkzeug wird gegen dessen Kontakt bei Maschinen-Z %2 mm gemessen.</translation>
-    </message>
-    <message>
         <source>break-test</source>
         <translation>auf Bruch prüfen</translation>
     </message>
@@ -4330,6 +4322,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
     <message>
         <source>T%1&apos;s edges differ by %2 mm (its limit %3 mm): runout or a chipped edge. Look at the cutter and how it sits in its holder before it cuts.</source>
         <translation>Die Schneiden von T%1 liegen %2 mm auseinander (Grenze %3 mm): Rundlauffehler oder eine ausgebrochene Schneide. Prüfen Sie den Fräser und seinen Sitz im Halter, bevor er schneidet.</translation>
+    </message>
+    <message>
+        <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
+        <translation>T%1 ist das Referenzwerkzeug dieser Maschine (seine TLO ist 0): Jedes Werkzeug wird gegen dessen Kontakt bei Maschinen-Z %2 mm gemessen.</translation>
     </message>
 </context>
 <context>

@@ -2207,10 +2207,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>测量</translation>
     </message>
     <message>
-        <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
-        <translation>T%1 是这台机床的基准刀具（其 TLO 为 0）：所有刀具都相对于它在机床 Z %2 mm 处的触碰点测量。</translation>
-    </message>
-    <message>
         <source>break-test</source>
         <translation>进行断刀检测</translation>
     </message>
@@ -4034,10 +4030,6 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <translation>测量</translation>
     </message>
     <message>
-        <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
-        <translation>T%1 是这台机床的基准刀具（其 TLO 为 0）：所有刀具都相对于它在机床 Z %2 mm 处的接触点测量。</translation>
-    </message>
-    <message>
         <source>break-test</source>
         <translation>进行断刀检测</translation>
     </message>
@@ -4330,6 +4322,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
     <message>
         <source>T%1&apos;s edges differ by %2 mm (its limit %3 mm): runout or a chipped edge. Look at the cutter and how it sits in its holder before it cuts.</source>
         <translation>T%1 各刃相差 %2 mm（上限 %3 mm）：跳动或崩刃。切削前请检查刀具及其在刀柄中的安装。</translation>
+    </message>
+    <message>
+        <source>T%1 is this machine&apos;s reference tool (its TLO is 0): every tool is measured against its contact at machine Z %2 mm.</source>
+        <translation>T%1 是这台机床的基准刀具（其 TLO 为 0）：每把刀具都以它在机床 Z %2 mm 处的接触点为基准测量。</translation>
     </message>
 </context>
 <context>

@@ -208,22 +208,8 @@ void GrblHalController::probe(Done done)
             [this, done, tool, tlo, contact, first, reference, touches](const QString &note) {
                 m_reference = reference;
                 SessionResult result = tloResult(tool, tlo, contact);
-                QStringList notes;
-                if (first)
-                    notes << tr("T%1 is this machine's reference tool (its TLO is 0): every tool is measured "
-                                "against its contact at machine Z %2 mm.")
-                                 .arg(tool)
-                                 .arg(mm(reference));
-                if (!note.isEmpty())
-                    notes << note;
-                if (touches.size() > 1) {
-                    result.tlo->touches = touches;
-                    const SetterCycle cycle { *m_setter, probePlan(tool) };
-                    notes.prepend(spreadFinding(tool, touches, cycle.plan)); // the finding first
-                    notes << cycle.cannotTurnNote(u"grblHAL"_s);
-                }
-                notes.removeAll(QString());
-                result.message = notes.join(u' ');
+                describeOwnProbe(result, tool, first ? std::optional(reference) : std::nullopt, note, touches,
+                    *m_setter, u"grblHAL"_s);
                 done(result);
             });
     });

@@ -166,20 +166,8 @@ void LinuxCncController::probeReady(Done done)
         writeOffset(tool, tlo, done, [this, done, tool, tlo, contact, first, reference, touches] {
             m_reference = reference;
             SessionResult result = tloResult(tool, tlo, contact);
-            QStringList notes;
-            if (first)
-                notes << tr("T%1 is this machine's reference tool (its TLO is 0): every tool is "
-                            "measured against its contact at machine Z %2 mm.")
-                             .arg(tool)
-                             .arg(mm(reference));
-            if (touches.size() > 1) {
-                result.tlo->touches = touches;
-                const SetterCycle cycle { *m_setter, probePlan(tool) };
-                notes.prepend(spreadFinding(tool, touches, cycle.plan)); // the finding first
-                notes << cycle.cannotTurnNote(u"LinuxCNC"_s);
-            }
-            notes.removeAll(QString());
-            result.message = notes.join(u' ');
+            describeOwnProbe(result, tool, first ? std::optional(reference) : std::nullopt, {}, touches,
+                *m_setter, u"LinuxCNC"_s);
             done(result);
         });
     });

@@ -154,6 +154,12 @@ public:
     // What a spread of `touches` wider than the plan's limit says ("T3's edges differ by 0.060 mm: runout or
     // a chipped edge…"); empty within it, or without a limit.
     [[nodiscard]] static QString spreadFinding(int tool, const QList<double> &touches, const ProbePlan &plan);
+    // A probe of Toffee's own setter cycle (grblHAL, LinuxCNC) for `tool`, its TLO written: `result` takes
+    // its touches, and its words: a spread beyond the limit first, the reference it made (`madeReference`),
+    // the controller's own `note`, and that `controller` cannot turn its spindle (ownsetter.cpp).
+    void describeOwnProbe(SessionResult &result, int tool, std::optional<double> madeReference,
+        const QString &note, const QList<double> &touches, const ToolSetter &setter,
+        const QString &controller) const;
     virtual void setToolSetter(const ToolSetter &setter) { Q_UNUSED(setter) }
     [[nodiscard]] virtual std::optional<ToolSetter> toolSetter() const { return std::nullopt; }
     static constexpr double kMaxJogStepMm = 50.0;
