@@ -4635,6 +4635,10 @@ Lizenziert unter der GNU General Public License, Version 3 oder später.</transl
         <source>The firmware&apos;s break test (M491.1) touches at the setter&apos;s centre only, and T%1 is measured off-centre: probe it (M491 with its settings) and compare the TLO with the table instead. Nothing was sent.</source>
         <translation>Der Bruchtest der Firmware (M491.1) tastet nur in der Mitte des Längenmessgeräts an, und T%1 wird außermittig gemessen: Tasten Sie es stattdessen an (M491 mit seinen Einstellungen) und vergleichen Sie die TLO mit der Tabelle. Es wurde nichts gesendet.</translation>
     </message>
+    <message>
+        <source>The firmware&apos;s break test touched T%1 once, at one edge, not the %2 touches its settings ask for: probe it to compare every edge.</source>
+        <translation>Der Bruchtest der Firmware hat T%1 einmal angetastet, an einer Schneide, nicht %2-mal, wie seine Einstellungen verlangen: Tasten Sie es an, um jede Schneide zu vergleichen.</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineTableDialog</name>

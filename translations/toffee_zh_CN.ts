@@ -4635,6 +4635,10 @@ Licensed under the GNU General Public License, version 3 or later.</source>
         <source>The firmware&apos;s break test (M491.1) touches at the setter&apos;s centre only, and T%1 is measured off-centre: probe it (M491 with its settings) and compare the TLO with the table instead. Nothing was sent.</source>
         <translation>固件的断刀检测（M491.1）只在对刀仪中心触碰，而 T%1 需偏心测量：请改为测量它（按其设置使用 M491）并将 TLO 与刀具表比较。未发送任何内容。</translation>
     </message>
+    <message>
+        <source>The firmware&apos;s break test touched T%1 once, at one edge, not the %2 touches its settings ask for: probe it to compare every edge.</source>
+        <translation>固件的断刀检测只在一个刃上触碰了 T%1 一次，而不是其设置要求的 %2 次：请测量它以比较每个刃。</translation>
+    </message>
 </context>
 <context>
     <name>Toffee::MachineTableDialog</name>

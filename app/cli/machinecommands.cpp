@@ -176,6 +176,8 @@ void printBreakTest(Invocation &call, const SessionResult &r)
     }
     if (broken)
         call.err << "toffee-cli: " << r.message << Qt::endl;
+    else if (!r.message.isEmpty())
+        call.err << "toffee-cli: note: " << r.message << Qt::endl;
 }
 
 void printSelected(Invocation &call, const SessionResult &r)

@@ -158,6 +158,12 @@ void MachineSession::runBreakTest(double tolerance, Done done, std::optional<dou
                                      .arg(millimetres(reading->newTlo, false))
                                      .arg(millimetres(reading->oldTlo, false))
                                      .arg(toleranceText(tolerance));
+            } else if (const int touches = probePlan(m_tool.value_or(0)).touches; touches > 1) {
+                // M491.1 takes no R: said, so that one touch is not taken for every edge's.
+                result.message = tr("The firmware's break test touched T%1 once, at one edge, not the %2 "
+                                    "touches its settings ask for: probe it to compare every edge.")
+                                     .arg(m_tool.value_or(-1))
+                                     .arg(touches);
             }
             done(result);
         },

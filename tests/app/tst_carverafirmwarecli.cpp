@@ -220,6 +220,10 @@ private Q_SLOTS:
         QCOMPARE(fixed3(tool(1)[u"measured_tlo"_s]), u"6.915"_s);
         QVERIFY2(
             run.err.contains("lifts 25 mm for you to turn the cutter to its next edge"), run.err.constData());
+        // The firmware's break test touches once: said, the verdict its own.
+        run = machine({ u"break-test"_s });
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        QVERIFY2(run.err.contains("touched T1 once, at one edge, not the 3 touches"), run.err.constData());
         // Off centre, within the machine: one touch at X−5 Y−3 from the setter.
         run = machine({ u"probe"_s, u"--touches"_s, u"1"_s, u"--offset"_s, u"-5,-3"_s });
         QVERIFY2(run.exitCode == 0, run.err.constData());
