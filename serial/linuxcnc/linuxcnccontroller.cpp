@@ -149,9 +149,14 @@ void LinuxCncController::mdiChain(
 }
 
 void LinuxCncController::get(const QByteArray &what, const QByteArray &keyword, Done done,
-    std::function<void(const QByteArray &)> next)
+    std::function<void(const QByteArray &)> next, bool again)
 {
-    auto answered = [done, what, keyword, next](const CommandReply &reply) {
+    auto answered = [this, done, what, keyword, next, again](const CommandReply &reply) {
+        // Right after an abort linuxcncrsh may refuse a get once (GET NAK, seen under a slow, sanitized
+        // build): a read changes nothing, so it is asked once more before it counts as refused.
+        if (reply.status == CommandReply::Status::Refused && !again && m_link->isOpen())
+            return QTimer::singleShot(kGetRetryMs, this,
+                [this, what, keyword, done, next] { get(what, keyword, done, next, true); });
         if (!reply.ok())
             return done(failure(reply));
         for (const QByteArray &line : reply.lines) {

@@ -112,9 +112,11 @@ private:
     // `set mdi <line>`, which returns once the line has run: a NAK fails with `get error`'s words.
     void mdi(const QByteArray &line, int timeoutMs, Done done, Next next);
     void mdiChain(const QList<QByteArray> &lines, int timeoutMs, Done done, std::function<void()> next);
-    // `get <what>`: `next` with the answer's value (after its keyword).
+    // `get <what>`: `next` with the answer's value (after its keyword); a refusal is asked again once
+    // (`again`), kGetRetryMs later.
+    static constexpr int kGetRetryMs = 200;
     void get(const QByteArray &what, const QByteArray &keyword, Done done,
-        std::function<void(const QByteArray &value)> next);
+        std::function<void(const QByteArray &value)> next, bool again = false);
     // What LinuxCNC's error queue holds now, one message (empty when it says OK).
     void lastError(std::function<void(const QString &error)> next);
     // Prints `fields` with (DEBUG,<name>-<n> …) and reads them back from the operator display.
